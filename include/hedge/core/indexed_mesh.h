@@ -1,0 +1,36 @@
+// The indexed form: what engines and files hold. Readers fill it, writers read it, and
+// SurfaceMesh is built from it and exported to it.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "hedge/core/vec.h"
+
+namespace hedge {
+
+//! An indexed polygon mesh.
+//!  - positions: #V positions.
+//!  - indices: the corners of all faces, face after face, each a vertex index into positions.
+//!  - face_sizes: #F corner counts; empty means every face is a triangle (indices.size() % 3 == 0).
+//!  - texcoords / normals: optional attribute pools; texcoord_indices / normal_indices give one pool
+//!    index per corner (same length as indices), as OBJ's v/vt/vn does. Empty when absent.
+//!    A per-vertex attribute (PLY normals) is expressed with the corner index equal to the vertex index.
+struct IndexedMesh {
+  std::vector<Vec3> positions;
+  std::vector<std::uint32_t> indices;
+  std::vector<std::uint32_t> face_sizes;
+
+  std::vector<Vec2> texcoords;
+  std::vector<std::uint32_t> texcoord_indices;
+  std::vector<Vec3> normals;
+  std::vector<std::uint32_t> normal_indices;
+
+  //! Number of faces, whether or not face_sizes is used.
+  std::size_t face_count() const {
+    return face_sizes.empty() ? indices.size() / 3 : face_sizes.size();
+  }
+  bool is_triangles() const { return face_sizes.empty(); }
+};
+
+}  // namespace hedge

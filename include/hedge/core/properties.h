@@ -1,0 +1,189 @@
+// Named, typed per-element arrays. A PropertyContainer holds every array of one element kind
+// (vertices, half-edges, edges or faces) and keeps them the same length as the element count.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <typeinfo>
+#include <utility>
+#include <vector>
+
+#include "hedge/core/handles.h"
+#include "hedge/error.h"
+
+namespace hedge {
+
+class BasePropertyArray {
+ public:
+  explicit BasePropertyArray(std::string name) : name_(std::move(name)) {}
+  virtual ~BasePropertyArray() = default;
+  BasePropertyArray(const BasePropertyArray&) = default;
+  BasePropertyArray& operator=(const BasePropertyArray&) = default;
+
+  const std::string& name() const { return name_; }
+  virtual const std::type_info& type() const = 0;
+  virtual void resize(std::size_t n) = 0;
+  virtual void reserve(std::size_t n) = 0;
+  virtual void shrink_to_fit() = 0;
+  //! Copies element `from` onto element `to` (used when an element is duplicated).
+  virtual void copy(std::size_t from, std::size_t to) = 0;
+  //! Keeps element i at new_index[i], dropping elements whose new index is invalid; new size n.
+  virtual void compact(const std::vector<Index>& new_index, std::size_t n) = 0;
+  virtual std::unique_ptr<BasePropertyArray> clone() const = 0;
+  //! Bytes held by this array (its capacity), for memory accounting.
+  virtual std::size_t bytes() const = 0;
+
+ private:
+  std::string name_;
+};
+
+template <typename T>
+class PropertyArray final : public BasePropertyArray {
+  static_assert(!std::is_same_v<T, bool>, "use std::uint8_t for flags: std::vector<bool> has no references");
+
+ public:
+  PropertyArray(std::string name, T default_value)
+      : BasePropertyArray(std::move(name)), default_(std::move(default_value)) {}
+
+  const std::type_info& type() const override { return typeid(T); }
+  void resize(std::size_t n) override { data_.resize(n, default_); }
+  void reserve(std::size_t n) override { data_.reserve(n); }
+  void shrink_to_fit() override { data_.shrink_to_fit(); }
+  void copy(std::size_t from, std::size_t to) override { data_[to] = data_[from]; }
+  void compact(const std::vector<Index>& new_index, std::size_t n) override {
+    std::vector<T> out(n, default_);
+    for (std::size_t i = 0; i < data_.size() && i < new_index.size(); ++i)
+      if (new_index[i] != kInvalidIndex) out[new_index[i]] = std::move(data_[i]);
+    data_.swap(out);
+  }
+  std::unique_ptr<BasePropertyArray> clone() const override {
+    return std::make_unique<PropertyArray<T>>(*this);
+  }
+  std::size_t bytes() const override { return data_.capacity() * sizeof(T); }
+
+  std::vector<T>& vector() { return data_; }
+  const std::vector<T>& vector() const { return data_; }
+  T& operator[](std::size_t i) { return data_[i]; }
+  const T& operator[](std::size_t i) const { return data_[i]; }
+  const T& default_value() const { return default_; }
+
+ private:
+  std::vector<T> data_;
+  T default_;
+};
+
+//! A typed view of one property array, indexed by the element handle type H.
+//! Cheap to copy; stays valid while the property exists (the mesh may grow).
+template <typename H, typename T>
+class Property {
+ public:
+  Property() = default;
+  explicit Property(PropertyArray<T>* array) : array_(array) {}
+
+  explicit operator bool() const { return array_ != nullptr; }
+  T& operator[](H h) { return (*array_)[h.idx()]; }
+  const T& operator[](H h) const { return (*array_)[h.idx()]; }
+  std::vector<T>& vector() { return array_->vector(); }
+  const std::vector<T>& vector() const { return array_->vector(); }
+  const std::string& name() const { return array_->name(); }
+  PropertyArray<T>* array() const { return array_; }
+
+ private:
+  PropertyArray<T>* array_ = nullptr;
+};
+
+template <typename T> using VertexProperty = Property<Vertex, T>;
+template <typename T> using HalfedgeProperty = Property<Halfedge, T>;
+template <typename T> using EdgeProperty = Property<Edge, T>;
+template <typename T> using FaceProperty = Property<Face, T>;
+
+//! Every property array of one element kind.
+class PropertyContainer {
+ public:
+  PropertyContainer() = default;
+  PropertyContainer(const PropertyContainer& o) : size_(o.size_) {
+    arrays_.reserve(o.arrays_.size());
+    for (const auto& a : o.arrays_) arrays_.push_back(a->clone());
+  }
+  PropertyContainer& operator=(const PropertyContainer& o) {
+    if (this != &o) {
+      PropertyContainer copy(o);
+      *this = std::move(copy);
+    }
+    return *this;
+  }
+  PropertyContainer(PropertyContainer&&) noexcept = default;
+  PropertyContainer& operator=(PropertyContainer&&) noexcept = default;
+
+  std::size_t size() const { return size_; }
+
+  //! Adds a property. Throws InvalidInputError if one of that name exists already.
+  template <typename T>
+  PropertyArray<T>* add(std::string_view name, T default_value) {
+    if (find_base(name))
+      throw InvalidInputError("a property named '" + std::string(name) + "' exists already");
+    auto array = std::make_unique<PropertyArray<T>>(std::string(name), std::move(default_value));
+    array->resize(size_);
+    auto* raw = array.get();
+    arrays_.push_back(std::move(array));
+    return raw;
+  }
+  //! The property of that name and type, or nullptr.
+  template <typename T>
+  PropertyArray<T>* get(std::string_view name) const {
+    BasePropertyArray* a = find_base(name);
+    if (!a || a->type() != typeid(T)) return nullptr;
+    return static_cast<PropertyArray<T>*>(a);
+  }
+  BasePropertyArray* find_base(std::string_view name) const {
+    for (const auto& a : arrays_)
+      if (a->name() == name) return a.get();
+    return nullptr;
+  }
+  //! Removes the property; returns false if there is none of that name.
+  bool remove(std::string_view name) {
+    auto it = std::find_if(arrays_.begin(), arrays_.end(), [&](const auto& a) { return a->name() == name; });
+    if (it == arrays_.end()) return false;
+    arrays_.erase(it);
+    return true;
+  }
+  std::vector<std::string> names() const {
+    std::vector<std::string> out;
+    for (const auto& a : arrays_) out.push_back(a->name());
+    return out;
+  }
+
+  void resize(std::size_t n) {
+    for (auto& a : arrays_) a->resize(n);
+    size_ = n;
+  }
+  void reserve(std::size_t n) {
+    for (auto& a : arrays_) a->reserve(n);
+  }
+  void push_back() { resize(size_ + 1); }
+  void copy(std::size_t from, std::size_t to) {
+    for (auto& a : arrays_) a->copy(from, to);
+  }
+  void compact(const std::vector<Index>& new_index, std::size_t n) {
+    for (auto& a : arrays_) a->compact(new_index, n);
+    size_ = n;
+  }
+  void shrink_to_fit() {
+    for (auto& a : arrays_) a->shrink_to_fit();
+  }
+  std::size_t bytes() const {
+    std::size_t b = 0;
+    for (const auto& a : arrays_) b += a->bytes();
+    return b;
+  }
+
+ private:
+  std::vector<std::unique_ptr<BasePropertyArray>> arrays_;
+  std::size_t size_ = 0;
+};
+
+}  // namespace hedge

@@ -1,0 +1,282 @@
+// SurfaceMesh: a polygon half-edge mesh with real boundary half-edges.
+//
+// Storage (see docs/design.md):
+//  - half-edges come in pairs: twin(h) = h ^ 1, edge(h) = h >> 1; no twin or edge array exists;
+//  - each half-edge stores the vertex it points to, the next half-edge in its face (or boundary
+//    loop) and its face (invalid on a boundary half-edge); prev is derived, not stored;
+//  - each vertex stores one outgoing half-edge, a boundary one when the vertex is on a boundary;
+//  - each face stores one half-edge; the face's corners start at that half-edge's target vertex;
+//  - deletion is a bit per element; garbage_collection() compacts.
+// Positions are the float x3 vertex property "v:position".
+#pragma once
+
+#include <cstddef>
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hedge/core/handles.h"
+#include "hedge/core/properties.h"
+#include "hedge/core/ranges.h"
+#include "hedge/core/vec.h"
+
+namespace hedge {
+
+//! Old-to-new index maps returned by garbage_collection(); removed elements map to kInvalidIndex.
+struct GarbageMaps {
+  std::vector<Index> vertices;
+  std::vector<Index> halfedges;
+  std::vector<Index> edges;
+  std::vector<Index> faces;
+};
+
+class SurfaceMesh;
+
+class SurfaceMesh {
+ public:
+  SurfaceMesh();
+  SurfaceMesh(const SurfaceMesh& other);
+  SurfaceMesh& operator=(const SurfaceMesh& other);
+  SurfaceMesh(SurfaceMesh&& other) noexcept;
+  SurfaceMesh& operator=(SurfaceMesh&& other) noexcept;
+  ~SurfaceMesh() = default;
+
+  // ---- Counts. n_* count live elements; *_size count storage slots including deleted ones. ----
+  std::size_t n_vertices() const { return vertices_size() - deleted_vertices_; }
+  std::size_t n_edges() const { return edges_size() - deleted_edges_; }
+  std::size_t n_halfedges() const { return 2 * n_edges(); }
+  std::size_t n_faces() const { return faces_size() - deleted_faces_; }
+  std::size_t vertices_size() const { return v_halfedge_.size(); }
+  std::size_t halfedges_size() const { return h_vertex_.size(); }
+  std::size_t edges_size() const { return h_vertex_.size() / 2; }
+  std::size_t faces_size() const { return f_halfedge_.size(); }
+  bool is_empty() const { return n_vertices() == 0; }
+  bool has_garbage() const { return deleted_vertices_ + deleted_edges_ + deleted_faces_ > 0; }
+
+  // ---- Connectivity, O(1) unless noted. ----
+  static Halfedge twin(Halfedge h) { return Halfedge(h.idx() ^ 1u); }
+  static Edge edge(Halfedge h) { return Edge(h.idx() >> 1); }
+  //! Half-edge i (0 or 1) of e; halfedge(e, 0) points from vertex(e, 0) to vertex(e, 1).
+  static Halfedge halfedge(Edge e, unsigned i) { return Halfedge((e.idx() << 1) | (i & 1u)); }
+
+  Vertex to_vertex(Halfedge h) const { return h_vertex_[h.idx()]; }
+  Vertex from_vertex(Halfedge h) const { return h_vertex_[h.idx() ^ 1u]; }
+  Halfedge next(Halfedge h) const { return h_next_[h.idx()]; }
+  //! The half-edge before h in its face or boundary loop. prev is not stored: this walks the
+  //! face of an interior half-edge (O(face degree); two steps on a triangle) and rotates about the
+  //! origin of a boundary half-edge (O(valence)).
+  Halfedge prev(Halfedge h) const;
+  Face face(Halfedge h) const { return h_face_[h.idx()]; }
+  Halfedge halfedge(Vertex v) const { return v_halfedge_[v.idx()]; }
+  Halfedge halfedge(Face f) const { return f_halfedge_[f.idx()]; }
+  Vertex vertex(Edge e, unsigned i) const { return to_vertex(halfedge(e, i ^ 1u)); }
+  //! Face i (0 or 1) of e; invalid on the boundary side.
+  Face face(Edge e, unsigned i) const { return face(halfedge(e, i)); }
+  //! Clockwise neighbour of outgoing half-edge h about its origin: O(1).
+  Halfedge rotate_cw(Halfedge h) const { return next(twin(h)); }
+  //! Counter-clockwise neighbour of outgoing half-edge h about its origin: costs one prev().
+  Halfedge rotate_ccw(Halfedge h) const { return twin(prev(h)); }
+
+  bool is_boundary(Halfedge h) const { return !face(h).is_valid(); }
+  bool is_boundary(Edge e) const { return is_boundary(halfedge(e, 0)) || is_boundary(halfedge(e, 1)); }
+  //! True if v lies on a boundary or is isolated. O(1): a boundary vertex's half-edge is a boundary one.
+  bool is_boundary(Vertex v) const {
+    Halfedge h = halfedge(v);
+    return !h.is_valid() || is_boundary(h);
+  }
+  //! True if any edge of f is on the boundary. O(face degree).
+  bool is_boundary(Face f) const;
+  bool is_isolated(Vertex v) const { return !halfedge(v).is_valid(); }
+  //! True if the faces about v form one fan (at most one boundary gap). O(valence).
+  //! Meshes built by hedge are always manifold; this is for checking edited or foreign meshes.
+  bool is_manifold(Vertex v) const;
+  //! Number of edges at v. O(valence).
+  std::size_t valence(Vertex v) const;
+  //! Number of corners of f. O(face degree).
+  std::size_t valence(Face f) const;
+  //! True if every live face is a triangle. O(#faces).
+  bool is_triangle_mesh() const;
+  //! True if every live face is a quad. O(#faces).
+  bool is_quad_mesh() const;
+  //! The half-edge from a to b, or an invalid handle. O(valence of a).
+  Halfedge find_halfedge(Vertex a, Vertex b) const;
+  //! The edge between a and b, or an invalid handle. O(valence of a).
+  Edge find_edge(Vertex a, Vertex b) const;
+
+  // ---- Deletion state. ----
+  bool is_deleted(Vertex v) const { return v_deleted_[v.idx()]; }
+  bool is_deleted(Edge e) const { return e_deleted_[e.idx()]; }
+  bool is_deleted(Halfedge h) const { return e_deleted_[h.idx() >> 1]; }
+  bool is_deleted(Face f) const { return f_deleted_[f.idx()]; }
+  //! True if the handle indexes a slot of this mesh (deleted or not).
+  bool is_valid(Vertex v) const { return v.idx() < vertices_size(); }
+  bool is_valid(Halfedge h) const { return h.idx() < halfedges_size(); }
+  bool is_valid(Edge e) const { return e.idx() < edges_size(); }
+  bool is_valid(Face f) const { return f.idx() < faces_size(); }
+
+  // ---- Positions. ----
+  Vec3& position(Vertex v) { return positions_[v]; }
+  const Vec3& position(Vertex v) const { return positions_[v]; }
+  VertexProperty<Vec3> positions() const { return positions_; }
+
+  // ---- Properties. Names starting with "v:", "h:", "e:", "f:" are by convention hedge's own. ----
+  template <typename T>
+  VertexProperty<T> add_vertex_property(std::string_view name, T def = T()) {
+    return VertexProperty<T>(vprops_.add<T>(name, std::move(def)));
+  }
+  template <typename T>
+  HalfedgeProperty<T> add_halfedge_property(std::string_view name, T def = T()) {
+    return HalfedgeProperty<T>(hprops_.add<T>(name, std::move(def)));
+  }
+  template <typename T>
+  EdgeProperty<T> add_edge_property(std::string_view name, T def = T()) {
+    return EdgeProperty<T>(eprops_.add<T>(name, std::move(def)));
+  }
+  template <typename T>
+  FaceProperty<T> add_face_property(std::string_view name, T def = T()) {
+    return FaceProperty<T>(fprops_.add<T>(name, std::move(def)));
+  }
+  //! The property of that name and type; an empty (false) Property if there is none.
+  template <typename T>
+  VertexProperty<T> get_vertex_property(std::string_view name) const {
+    return VertexProperty<T>(vprops_.get<T>(name));
+  }
+  template <typename T>
+  HalfedgeProperty<T> get_halfedge_property(std::string_view name) const {
+    return HalfedgeProperty<T>(hprops_.get<T>(name));
+  }
+  template <typename T>
+  EdgeProperty<T> get_edge_property(std::string_view name) const {
+    return EdgeProperty<T>(eprops_.get<T>(name));
+  }
+  template <typename T>
+  FaceProperty<T> get_face_property(std::string_view name) const {
+    return FaceProperty<T>(fprops_.get<T>(name));
+  }
+  //! Get the property, adding it if it does not exist.
+  template <typename T>
+  VertexProperty<T> vertex_property(std::string_view name, T def = T()) {
+    auto p = get_vertex_property<T>(name);
+    return p ? p : add_vertex_property<T>(name, std::move(def));
+  }
+  template <typename T>
+  HalfedgeProperty<T> halfedge_property(std::string_view name, T def = T()) {
+    auto p = get_halfedge_property<T>(name);
+    return p ? p : add_halfedge_property<T>(name, std::move(def));
+  }
+  template <typename T>
+  EdgeProperty<T> edge_property(std::string_view name, T def = T()) {
+    auto p = get_edge_property<T>(name);
+    return p ? p : add_edge_property<T>(name, std::move(def));
+  }
+  template <typename T>
+  FaceProperty<T> face_property(std::string_view name, T def = T()) {
+    auto p = get_face_property<T>(name);
+    return p ? p : add_face_property<T>(name, std::move(def));
+  }
+  //! Removes a property; "v:position" cannot be removed. Returns false if nothing was removed.
+  bool remove_vertex_property(std::string_view name);
+  bool remove_halfedge_property(std::string_view name) { return hprops_.remove(name); }
+  bool remove_edge_property(std::string_view name) { return eprops_.remove(name); }
+  bool remove_face_property(std::string_view name) { return fprops_.remove(name); }
+  std::vector<std::string> vertex_property_names() const { return vprops_.names(); }
+  std::vector<std::string> halfedge_property_names() const { return hprops_.names(); }
+  std::vector<std::string> edge_property_names() const { return eprops_.names(); }
+  std::vector<std::string> face_property_names() const { return fprops_.names(); }
+
+  // ---- Element ranges (skip deleted elements). ----
+  ElementRange<Vertex> vertices() const { return {v_deleted_, vertices_size()}; }
+  ElementRange<Halfedge> halfedges() const { return {e_deleted_, halfedges_size(), 1}; }
+  ElementRange<Edge> edges() const { return {e_deleted_, edges_size()}; }
+  ElementRange<Face> faces() const { return {f_deleted_, faces_size()}; }
+
+  // ---- Circulators (cheap ranges for range-for). The default vertex order is clockwise, which
+  // costs O(1) a step; the *_ccw variants cost one prev() a step. ----
+  //! Outgoing half-edges of v, clockwise.
+  VertexCirculator<SurfaceMesh, HalfedgeOf> halfedges(Vertex v) const { return {this, halfedge(v)}; }
+  VertexCirculator<SurfaceMesh, HalfedgeOf, true> halfedges_ccw(Vertex v) const { return {this, halfedge(v)}; }
+  //! Neighbouring vertices of v, clockwise.
+  VertexCirculator<SurfaceMesh, TargetOf> vertices(Vertex v) const { return {this, halfedge(v)}; }
+  VertexCirculator<SurfaceMesh, TargetOf, true> vertices_ccw(Vertex v) const { return {this, halfedge(v)}; }
+  //! Incident faces of v, clockwise (boundary gaps skipped).
+  VertexCirculator<SurfaceMesh, FaceOf> faces(Vertex v) const { return {this, halfedge(v)}; }
+  VertexCirculator<SurfaceMesh, FaceOf, true> faces_ccw(Vertex v) const { return {this, halfedge(v)}; }
+  //! Incident edges of v, clockwise.
+  VertexCirculator<SurfaceMesh, EdgeOf> edges(Vertex v) const { return {this, halfedge(v)}; }
+  //! Half-edges of f in order (counter-clockwise for a CCW-oriented face).
+  LoopCirculator<SurfaceMesh, HalfedgeOf> halfedges(Face f) const { return {this, halfedge(f)}; }
+  //! Corners of f in order, starting at the target of halfedge(f).
+  LoopCirculator<SurfaceMesh, TargetOf> vertices(Face f) const { return {this, halfedge(f)}; }
+  //! Edges of f in order.
+  LoopCirculator<SurfaceMesh, EdgeOf> edges(Face f) const { return {this, halfedge(f)}; }
+  //! Faces across the edges of f (the boundary side skipped).
+  LoopCirculator<SurfaceMesh, TwinFaceOf> faces(Face f) const { return {this, halfedge(f)}; }
+  //! The half-edges of the face or boundary loop that h belongs to, starting at h.
+  LoopCirculator<SurfaceMesh, HalfedgeOf> loop(Halfedge h) const { return {this, h}; }
+  //! The two vertices of e.
+  std::array<Vertex, 2> vertices(Edge e) const { return {vertex(e, 0), vertex(e, 1)}; }
+  //! The faces on either side of e: one or two (a boundary side is left out).
+  FixedList<Face, 2> faces(Edge e) const;
+  //! Edges sharing a vertex with e, e itself excluded. O(valence of both ends).
+  std::vector<Edge> adjacent_edges(Edge e) const;
+  //! One boundary half-edge per boundary loop. O(#half-edges).
+  std::vector<Halfedge> boundary_loops() const;
+
+  // ---- Low-level construction and editing. These keep no invariant by themselves: they are the
+  // building blocks of builders and local operations, which restore validity before returning. ----
+  Vertex add_vertex(const Vec3& p);
+  //! Appends an edge (two half-edges) from a to b, all links unset. Returns halfedge(e, 0).
+  Halfedge new_edge(Vertex a, Vertex b);
+  Face new_face();
+  void set_vertex(Halfedge h, Vertex v) { h_vertex_[h.idx()] = v; }
+  void set_next(Halfedge h, Halfedge n) { h_next_[h.idx()] = n; }
+  void set_face(Halfedge h, Face f) { h_face_[h.idx()] = f; }
+  void set_halfedge(Vertex v, Halfedge h) { v_halfedge_[v.idx()] = h; }
+  void set_halfedge(Face f, Halfedge h) { f_halfedge_[f.idx()] = h; }
+  //! Makes v's half-edge a boundary one if v has an outgoing boundary half-edge. O(valence).
+  void adjust_outgoing_halfedge(Vertex v);
+  //! Mark elements deleted; their storage stays until garbage_collection().
+  void mark_deleted(Vertex v);
+  void mark_deleted(Edge e);
+  void mark_deleted(Face f);
+  //! Reserve storage for n_v vertices, n_e edges and n_f faces.
+  void reserve(std::size_t n_v, std::size_t n_e, std::size_t n_f);
+  //! Resizes every element array (connectivity set to invalid). Used by builders.
+  void resize(std::size_t n_v, std::size_t n_e, std::size_t n_f);
+  //! Removes deleted elements and compacts every array and property. Returns old-to-new maps so
+  //! that handles held elsewhere (engine buffers) can be remapped. O(#elements).
+  GarbageMaps garbage_collection();
+  //! Releases spare capacity of every array.
+  void shrink_to_fit();
+  //! Heap bytes held by connectivity, flags and all properties (capacity, not size).
+  std::size_t memory_bytes() const;
+
+  // ---- Checking. ----
+  //! Every broken invariant, one line each; empty means valid. O(#elements). See docs/design.md.
+  std::vector<std::string> validate() const;
+
+  // Raw arrays for tight loops and bindings (read-only).
+  const std::vector<Vertex>& halfedge_vertex_array() const { return h_vertex_; }
+  const std::vector<Halfedge>& halfedge_next_array() const { return h_next_; }
+  const std::vector<Face>& halfedge_face_array() const { return h_face_; }
+
+ private:
+  friend class MeshBuilder;
+
+  std::vector<Vertex> h_vertex_;
+  std::vector<Halfedge> h_next_;
+  std::vector<Face> h_face_;
+  std::vector<Halfedge> v_halfedge_;
+  std::vector<Halfedge> f_halfedge_;
+  std::vector<bool> v_deleted_, e_deleted_, f_deleted_;
+  std::size_t deleted_vertices_ = 0, deleted_edges_ = 0, deleted_faces_ = 0;
+
+  PropertyContainer vprops_, hprops_, eprops_, fprops_;
+  VertexProperty<Vec3> positions_;
+};
+
+}  // namespace hedge
+
+

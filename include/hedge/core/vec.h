@@ -1,0 +1,67 @@
+// Small fixed-size vectors used for positions and attributes. Float storage, as engines use;
+// algorithms that need precision convert to double where they accumulate.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+
+namespace hedge {
+
+template <typename T, int N>
+struct VecN;
+
+template <typename T>
+struct VecN<T, 2> {
+  T x{}, y{};
+  constexpr T& operator[](std::size_t i) { return i == 0 ? x : y; }
+  constexpr const T& operator[](std::size_t i) const { return i == 0 ? x : y; }
+  friend constexpr bool operator==(const VecN&, const VecN&) = default;
+};
+
+template <typename T>
+struct VecN<T, 3> {
+  T x{}, y{}, z{};
+  constexpr T& operator[](std::size_t i) { return i == 0 ? x : (i == 1 ? y : z); }
+  constexpr const T& operator[](std::size_t i) const { return i == 0 ? x : (i == 1 ? y : z); }
+  friend constexpr bool operator==(const VecN&, const VecN&) = default;
+
+  constexpr VecN& operator+=(const VecN& o) { x += o.x; y += o.y; z += o.z; return *this; }
+  constexpr VecN& operator-=(const VecN& o) { x -= o.x; y -= o.y; z -= o.z; return *this; }
+  constexpr VecN& operator*=(T s) { x *= s; y *= s; z *= s; return *this; }
+  friend constexpr VecN operator+(VecN a, const VecN& b) { return a += b; }
+  friend constexpr VecN operator-(VecN a, const VecN& b) { return a -= b; }
+  friend constexpr VecN operator*(VecN a, T s) { return a *= s; }
+  friend constexpr VecN operator*(T s, VecN a) { return a *= s; }
+  friend constexpr VecN operator/(VecN a, T s) { return a *= T(1) / s; }
+  friend constexpr VecN operator-(const VecN& a) { return {-a.x, -a.y, -a.z}; }
+};
+
+using Vec2 = VecN<float, 2>;
+using Vec3 = VecN<float, 3>;
+using Vec3d = VecN<double, 3>;
+
+template <typename T>
+constexpr T dot(const VecN<T, 3>& a, const VecN<T, 3>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+template <typename T>
+constexpr VecN<T, 3> cross(const VecN<T, 3>& a, const VecN<T, 3>& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+template <typename T>
+inline T norm(const VecN<T, 3>& a) { return std::sqrt(dot(a, a)); }
+template <typename T>
+inline VecN<T, 3> normalize(const VecN<T, 3>& a) {
+  T n = norm(a);
+  return n > T(0) ? a / n : a;
+}
+inline Vec3d to_double(const Vec3& v) { return {v.x, v.y, v.z}; }
+inline Vec3 to_float(const Vec3d& v) {
+  return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
+}
+template <typename T, int N>
+inline bool is_finite(const VecN<T, N>& v) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (!std::isfinite(v[i])) return false;
+  return true;
+}
+
+}  // namespace hedge

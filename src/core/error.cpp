@@ -1,0 +1,28 @@
+#include "hedge/error.h"
+
+#include <utility>
+
+namespace hedge {
+
+namespace {
+std::string io_message(const std::string& path, std::uint64_t line, std::int64_t offset,
+                       const std::string& message) {
+  std::string where = path.empty() ? std::string("<memory>") : path;
+  if (line > 0) where += ":" + std::to_string(line);
+  if (offset >= 0) where += " (byte " + std::to_string(offset) + ")";
+  return where + ": " + message;
+}
+}  // namespace
+
+IoError::IoError(std::string path, std::uint64_t line, std::int64_t byte_offset,
+                 const std::string& message)
+    : Error(io_message(path, line, byte_offset, message)),
+      path_(std::move(path)),
+      line_(line),
+      byte_offset_(byte_offset) {}
+
+TopologyError::TopologyError(const std::string& message, std::vector<std::uint32_t> vertices,
+                             std::vector<std::uint32_t> faces)
+    : Error(message), vertices_(std::move(vertices)), faces_(std::move(faces)) {}
+
+}  // namespace hedge
