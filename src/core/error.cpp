@@ -7,10 +7,12 @@ namespace hedge {
 namespace {
 std::string io_message(const std::string& path, std::uint64_t line, std::int64_t offset,
                        const std::string& message) {
+  // Appended piecewise: g++ 12 warns falsely (-Wrestrict) on chained temporaries here.
   std::string where = path.empty() ? std::string("<memory>") : path;
-  if (line > 0) where += ":" + std::to_string(line);
-  if (offset >= 0) where += " (byte " + std::to_string(offset) + ")";
-  return where + ": " + message;
+  if (line > 0) where.append(":").append(std::to_string(line));
+  if (offset >= 0) where.append(" (byte ").append(std::to_string(offset)).append(")");
+  where.append(": ").append(message);
+  return where;
 }
 }  // namespace
 

@@ -1,0 +1,306 @@
+#include "hedge/core/surface_mesh.h"
+
+#include <utility>
+
+namespace hedge {
+
+namespace {
+constexpr const char* kPositionName = "v:position";
+}
+
+SurfaceMesh::SurfaceMesh() { positions_ = VertexProperty<Vec3>(vprops_.add<Vec3>(kPositionName, Vec3{})); }
+
+SurfaceMesh::SurfaceMesh(const SurfaceMesh& o)
+    : h_vertex_(o.h_vertex_),
+      h_next_(o.h_next_),
+      h_face_(o.h_face_),
+      v_halfedge_(o.v_halfedge_),
+      f_halfedge_(o.f_halfedge_),
+      v_deleted_(o.v_deleted_),
+      e_deleted_(o.e_deleted_),
+      f_deleted_(o.f_deleted_),
+      deleted_vertices_(o.deleted_vertices_),
+      deleted_edges_(o.deleted_edges_),
+      deleted_faces_(o.deleted_faces_),
+      vprops_(o.vprops_),
+      hprops_(o.hprops_),
+      eprops_(o.eprops_),
+      fprops_(o.fprops_),
+      positions_(vprops_.get<Vec3>(kPositionName)) {}
+
+SurfaceMesh& SurfaceMesh::operator=(const SurfaceMesh& o) {
+  if (this != &o) {
+    SurfaceMesh copy(o);
+    *this = std::move(copy);
+  }
+  return *this;
+}
+
+// Property arrays live behind unique_ptrs, so moving the containers keeps positions_ valid.
+SurfaceMesh::SurfaceMesh(SurfaceMesh&& o) noexcept = default;
+SurfaceMesh& SurfaceMesh::operator=(SurfaceMesh&& o) noexcept = default;
+
+Halfedge SurfaceMesh::prev(Halfedge h) const {
+  if (!is_boundary(h)) {
+    Halfedge p = h;
+    for (Halfedge n = next(p); n != h; n = next(n)) p = n;
+    return p;
+  }
+  // About the origin: the incoming half-edge whose next is h.
+  Halfedge g = twin(h);
+  while (next(g) != h) g = twin(next(g));
+  return g;
+}
+
+bool SurfaceMesh::is_boundary(Face f) const {
+  for (Halfedge h : halfedges(f))
+    if (is_boundary(twin(h))) return true;
+  return false;
+}
+
+bool SurfaceMesh::is_manifold(Vertex v) const {
+  std::size_t gaps = 0;
+  for (Halfedge h : halfedges(v))
+    if (is_boundary(h)) ++gaps;
+  return gaps < 2;
+}
+
+std::size_t SurfaceMesh::valence(Vertex v) const { return halfedges(v).count(); }
+std::size_t SurfaceMesh::valence(Face f) const { return halfedges(f).count(); }
+
+bool SurfaceMesh::is_triangle_mesh() const {
+  for (Face f : faces()) {
+    Halfedge h = halfedge(f);
+    if (next(next(next(h))) != h) return false;
+  }
+  return true;
+}
+
+bool SurfaceMesh::is_quad_mesh() const {
+  for (Face f : faces()) {
+    Halfedge h = halfedge(f);
+    if (next(next(next(next(h)))) != h) return false;
+  }
+  return true;
+}
+
+Halfedge SurfaceMesh::find_halfedge(Vertex a, Vertex b) const {
+  for (Halfedge h : halfedges(a))
+    if (to_vertex(h) == b) return h;
+  return Halfedge();
+}
+
+Edge SurfaceMesh::find_edge(Vertex a, Vertex b) const {
+  Halfedge h = find_halfedge(a, b);
+  return h.is_valid() ? edge(h) : Edge();
+}
+
+FixedList<Face, 2> SurfaceMesh::faces(Edge e) const {
+  FixedList<Face, 2> out;
+  for (unsigned i = 0; i < 2; ++i)
+    if (Face f = face(e, i); f.is_valid()) out.push_back(f);
+  return out;
+}
+
+std::vector<Edge> SurfaceMesh::adjacent_edges(Edge e) const {
+  std::vector<Edge> out;
+  for (unsigned i = 0; i < 2; ++i)
+    for (Edge a : edges(vertex(e, i)))
+      if (a != e) out.push_back(a);
+  return out;
+}
+
+std::vector<Halfedge> SurfaceMesh::boundary_loops() const {
+  std::vector<Halfedge> loops;
+  std::vector<bool> seen(halfedges_size(), false);
+  for (Halfedge h : halfedges()) {
+    if (!is_boundary(h) || seen[h.idx()]) continue;
+    loops.push_back(h);
+    Halfedge g = h;
+    // A damaged mesh could hold an open chain; the step limit keeps this finite.
+    for (std::size_t steps = 0; steps <= halfedges_size() && !seen[g.idx()]; ++steps) {
+      seen[g.idx()] = true;
+      g = next(g);
+    }
+  }
+  return loops;
+}
+
+bool SurfaceMesh::remove_vertex_property(std::string_view name) {
+  if (name == kPositionName) return false;
+  return vprops_.remove(name);
+}
+
+Vertex SurfaceMesh::add_vertex(const Vec3& point) {
+  const Vec3 p = point;  // point may live in the position array that is about to grow
+  Vertex v(static_cast<Index>(vertices_size()));
+  v_halfedge_.push_back(Halfedge());
+  v_deleted_.push_back(false);
+  vprops_.push_back();
+  positions_[v] = p;
+  return v;
+}
+
+Halfedge SurfaceMesh::new_edge(Vertex a, Vertex b) {
+  Halfedge h(static_cast<Index>(halfedges_size()));
+  h_vertex_.push_back(b);
+  h_vertex_.push_back(a);
+  h_next_.resize(h_next_.size() + 2);
+  h_face_.resize(h_face_.size() + 2);
+  e_deleted_.push_back(false);
+  hprops_.resize(halfedges_size());
+  eprops_.push_back();
+  return h;
+}
+
+Face SurfaceMesh::new_face() {
+  Face f(static_cast<Index>(faces_size()));
+  f_halfedge_.push_back(Halfedge());
+  f_deleted_.push_back(false);
+  fprops_.push_back();
+  return f;
+}
+
+void SurfaceMesh::adjust_outgoing_halfedge(Vertex v) {
+  for (Halfedge h : halfedges(v)) {
+    if (is_boundary(h)) {
+      set_halfedge(v, h);
+      return;
+    }
+  }
+}
+
+void SurfaceMesh::mark_deleted(Vertex v) {
+  if (!v_deleted_[v.idx()]) {
+    v_deleted_[v.idx()] = true;
+    ++deleted_vertices_;
+  }
+}
+void SurfaceMesh::mark_deleted(Edge e) {
+  if (!e_deleted_[e.idx()]) {
+    e_deleted_[e.idx()] = true;
+    ++deleted_edges_;
+  }
+}
+void SurfaceMesh::mark_deleted(Face f) {
+  if (!f_deleted_[f.idx()]) {
+    f_deleted_[f.idx()] = true;
+    ++deleted_faces_;
+  }
+}
+
+void SurfaceMesh::reserve(std::size_t n_v, std::size_t n_e, std::size_t n_f) {
+  v_halfedge_.reserve(n_v);
+  v_deleted_.reserve(n_v);
+  vprops_.reserve(n_v);
+  h_vertex_.reserve(2 * n_e);
+  h_next_.reserve(2 * n_e);
+  h_face_.reserve(2 * n_e);
+  e_deleted_.reserve(n_e);
+  hprops_.reserve(2 * n_e);
+  eprops_.reserve(n_e);
+  f_halfedge_.reserve(n_f);
+  f_deleted_.reserve(n_f);
+  fprops_.reserve(n_f);
+}
+
+void SurfaceMesh::resize(std::size_t n_v, std::size_t n_e, std::size_t n_f) {
+  v_halfedge_.resize(n_v);
+  v_deleted_.resize(n_v, false);
+  vprops_.resize(n_v);
+  h_vertex_.resize(2 * n_e);
+  h_next_.resize(2 * n_e);
+  h_face_.resize(2 * n_e);
+  e_deleted_.resize(n_e, false);
+  hprops_.resize(2 * n_e);
+  eprops_.resize(n_e);
+  f_halfedge_.resize(n_f);
+  f_deleted_.resize(n_f, false);
+  fprops_.resize(n_f);
+}
+
+namespace {
+// Old-to-new map keeping the elements that are not deleted, in order.
+std::vector<Index> keep_map(const std::vector<bool>& deleted, std::size_t& kept) {
+  std::vector<Index> map(deleted.size(), kInvalidIndex);
+  Index n = 0;
+  for (std::size_t i = 0; i < deleted.size(); ++i)
+    if (!deleted[i]) map[i] = n++;
+  kept = n;
+  return map;
+}
+
+template <typename H>
+H remap(H h, const std::vector<Index>& map) {
+  return h.is_valid() && h.idx() < map.size() ? H(map[h.idx()]) : H();
+}
+
+template <typename T>
+void compact_vector(std::vector<T>& v, const std::vector<Index>& map, std::size_t n) {
+  std::vector<T> out(n);
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (map[i] != kInvalidIndex) out[map[i]] = v[i];
+  v.swap(out);
+}
+}  // namespace
+
+GarbageMaps SurfaceMesh::garbage_collection() {
+  GarbageMaps maps;
+  std::size_t nv = 0, ne = 0, nf = 0;
+  maps.vertices = keep_map(v_deleted_, nv);
+  maps.edges = keep_map(e_deleted_, ne);
+  maps.faces = keep_map(f_deleted_, nf);
+  maps.halfedges.assign(halfedges_size(), kInvalidIndex);
+  for (std::size_t e = 0; e < maps.edges.size(); ++e) {
+    if (maps.edges[e] == kInvalidIndex) continue;
+    maps.halfedges[2 * e] = 2 * maps.edges[e];
+    maps.halfedges[2 * e + 1] = 2 * maps.edges[e] + 1;
+  }
+  if (!has_garbage()) return maps;
+
+  for (auto& v : h_vertex_) v = remap(v, maps.vertices);
+  for (auto& h : h_next_) h = remap(h, maps.halfedges);
+  for (auto& f : h_face_) f = remap(f, maps.faces);
+  for (auto& h : v_halfedge_) h = remap(h, maps.halfedges);
+  for (auto& h : f_halfedge_) h = remap(h, maps.halfedges);
+
+  compact_vector(h_vertex_, maps.halfedges, 2 * ne);
+  compact_vector(h_next_, maps.halfedges, 2 * ne);
+  compact_vector(h_face_, maps.halfedges, 2 * ne);
+  compact_vector(v_halfedge_, maps.vertices, nv);
+  compact_vector(f_halfedge_, maps.faces, nf);
+  vprops_.compact(maps.vertices, nv);
+  hprops_.compact(maps.halfedges, 2 * ne);
+  eprops_.compact(maps.edges, ne);
+  fprops_.compact(maps.faces, nf);
+  v_deleted_.assign(nv, false);
+  e_deleted_.assign(ne, false);
+  f_deleted_.assign(nf, false);
+  deleted_vertices_ = deleted_edges_ = deleted_faces_ = 0;
+  return maps;
+}
+
+void SurfaceMesh::shrink_to_fit() {
+  h_vertex_.shrink_to_fit();
+  h_next_.shrink_to_fit();
+  h_face_.shrink_to_fit();
+  v_halfedge_.shrink_to_fit();
+  f_halfedge_.shrink_to_fit();
+  v_deleted_.shrink_to_fit();
+  e_deleted_.shrink_to_fit();
+  f_deleted_.shrink_to_fit();
+  vprops_.shrink_to_fit();
+  hprops_.shrink_to_fit();
+  eprops_.shrink_to_fit();
+  fprops_.shrink_to_fit();
+}
+
+std::size_t SurfaceMesh::memory_bytes() const {
+  auto bits = [](const std::vector<bool>& b) { return (b.capacity() + 7) / 8; };
+  return h_vertex_.capacity() * sizeof(Vertex) + h_next_.capacity() * sizeof(Halfedge) +
+         h_face_.capacity() * sizeof(Face) + v_halfedge_.capacity() * sizeof(Halfedge) +
+         f_halfedge_.capacity() * sizeof(Halfedge) + bits(v_deleted_) + bits(e_deleted_) +
+         bits(f_deleted_) + vprops_.bytes() + hprops_.bytes() + eprops_.bytes() + fprops_.bytes();
+}
+
+}  // namespace hedge

@@ -1,0 +1,189 @@
+// SurfaceMesh::validate(): checks every invariant of docs/design.md and names what is broken.
+#include <algorithm>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "hedge/core/surface_mesh.h"
+
+namespace hedge {
+
+namespace {
+
+constexpr std::size_t kMaxProblems = 1000;
+
+class Report {
+ public:
+  void add(std::string s) {
+    if (lines_.size() < kMaxProblems) lines_.push_back(std::move(s));
+    else ++dropped_;
+  }
+  std::vector<std::string> finish() {
+    if (dropped_ > 0) lines_.push_back("... and " + std::to_string(dropped_) + " more problems");
+    return std::move(lines_);
+  }
+  bool empty() const { return lines_.empty(); }
+
+ private:
+  std::vector<std::string> lines_;
+  std::size_t dropped_ = 0;
+};
+
+std::string str(Vertex v) { return "vertex " + (v.is_valid() ? std::to_string(v.idx()) : "<invalid>"); }
+std::string str(Halfedge h) { return "halfedge " + (h.is_valid() ? std::to_string(h.idx()) : "<invalid>"); }
+std::string str(Face f) { return "face " + (f.is_valid() ? std::to_string(f.idx()) : "<invalid>"); }
+
+struct DisjointSets {
+  explicit DisjointSets(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), Index(0)); }
+  Index find(Index i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void unite(Index a, Index b) { parent[find(a)] = find(b); }
+  std::vector<Index> parent;
+};
+
+}  // namespace
+
+std::vector<std::string> SurfaceMesh::validate() const {
+  Report r;
+  const std::size_t nh = halfedges_size(), nv = vertices_size(), nf = faces_size();
+
+  // Sizes and cached counters.
+  if (h_next_.size() != nh || h_face_.size() != nh || e_deleted_.size() * 2 != nh)
+    r.add("half-edge arrays have inconsistent sizes");
+  if (v_deleted_.size() != nv || f_deleted_.size() != nf)
+    r.add("deletion flags and element arrays have inconsistent sizes");
+  if (!r.empty()) return r.finish();
+  auto count_set = [](const std::vector<bool>& b) { return static_cast<std::size_t>(std::count(b.begin(), b.end(), true)); };
+  if (count_set(v_deleted_) != deleted_vertices_ || count_set(e_deleted_) != deleted_edges_ ||
+      count_set(f_deleted_) != deleted_faces_)
+    r.add("cached deleted-element counts disagree with the deletion flags");
+
+  auto live_v = [&](Vertex v) { return v.is_valid() && v.idx() < nv && !is_deleted(v); };
+  auto live_h = [&](Halfedge h) { return h.is_valid() && h.idx() < nh && !is_deleted(h); };
+  auto live_f = [&](Face f) { return f.is_valid() && f.idx() < nf && !is_deleted(f); };
+
+  // Per half-edge references; links are only followed once every reference is known to be live.
+  std::vector<Index> predecessors(nh, 0);
+  std::size_t bad_refs = 0;
+  for (Halfedge h : halfedges()) {
+    bool ok = true;
+    if (!live_v(to_vertex(h))) { r.add(str(h) + " points to dead or invalid " + str(to_vertex(h))); ok = false; }
+    if (!live_h(next(h))) { r.add(str(h) + " has dead or invalid next " + str(next(h))); ok = false; }
+    if (face(h).is_valid() && !live_f(face(h))) { r.add(str(h) + " lies in dead or invalid " + str(face(h))); ok = false; }
+    if (!ok) { ++bad_refs; continue; }
+    ++predecessors[next(h).idx()];
+  }
+  for (Vertex v : vertices()) {
+    Halfedge h = halfedge(v);
+    if (h.is_valid() && !live_h(h)) { r.add(str(v) + " has dead or invalid " + str(h)); ++bad_refs; }
+  }
+  for (Face f : faces()) {
+    if (!live_h(halfedge(f))) { r.add(str(f) + " has dead or invalid " + str(halfedge(f))); ++bad_refs; }
+  }
+  if (bad_refs > 0) return r.finish();
+
+  // Twin involution, next/prev inverse, and loop consistency.
+  for (Halfedge h : halfedges()) {
+    if (to_vertex(h) == from_vertex(h)) r.add(str(h) + " is a loop at " + str(to_vertex(h)));
+    if (predecessors[h.idx()] != 1)
+      r.add(str(h) + " is the next of " + std::to_string(predecessors[h.idx()]) + " half-edges, expected 1 (next/prev not inverse)");
+    Halfedge n = next(h);
+    if (from_vertex(n) != to_vertex(h))
+      r.add(str(h) + " ends at " + str(to_vertex(h)) + " but its next " + str(n) + " starts at " + str(from_vertex(n)));
+    if (face(n) != face(h)) r.add(str(h) + " and its next " + str(n) + " lie in different faces");
+    if (is_boundary(h) && is_boundary(twin(h))) r.add(str(h) + " and its twin are both boundary: a dangling edge");
+  }
+  if (!r.empty()) return r.finish();
+
+  // Face cycles: closed (guaranteed now that next is a permutation), each holds its face, >= 3 sides.
+  for (Face f : faces()) {
+    Halfedge h0 = halfedge(f);
+    if (face(h0) != f) { r.add(str(f) + ": its " + str(h0) + " belongs to " + str(face(h0))); continue; }
+    std::size_t n = 0;
+    for (Halfedge h = h0; n <= nh; h = next(h)) {
+      ++n;
+      if (next(h) == h0) break;
+    }
+    if (n < 3) r.add(str(f) + " has " + std::to_string(n) + " sides, expected at least 3");
+  }
+  // Every half-edge of a face reaches that face's cycle: the face's half-edge count must add up.
+  {
+    std::vector<std::size_t> in_face(nf, 0), cycle(nf, 0);
+    for (Halfedge h : halfedges())
+      if (face(h).is_valid()) ++in_face[face(h).idx()];
+    for (Face f : faces()) cycle[f.idx()] = halfedges(f).count();
+    for (Face f : faces())
+      if (in_face[f.idx()] != cycle[f.idx()])
+        r.add(str(f) + " is named by " + std::to_string(in_face[f.idx()]) + " half-edges but its cycle has " +
+              std::to_string(cycle[f.idx()]) + " (two cycles share one face)");
+  }
+
+  // Vertices: outgoing half-edge, boundary preference, one fan, isolated vertices unreferenced.
+  std::vector<Index> outgoing(nv, 0);
+  std::vector<bool> has_boundary_out(nv, false);
+  for (Halfedge h : halfedges()) {
+    Vertex v = from_vertex(h);
+    ++outgoing[v.idx()];
+    if (is_boundary(h)) has_boundary_out[v.idx()] = true;
+  }
+  for (Vertex v : vertices()) {
+    Halfedge h = halfedge(v);
+    if (!h.is_valid()) {
+      if (outgoing[v.idx()] > 0) r.add(str(v) + " is marked isolated but has " + std::to_string(outgoing[v.idx()]) + " outgoing half-edges");
+      continue;
+    }
+    if (from_vertex(h) != v) { r.add(str(v) + ": its " + str(h) + " does not start there"); continue; }
+    if (has_boundary_out[v.idx()] && !is_boundary(h))
+      r.add(str(v) + " is on a boundary but its half-edge " + str(h) + " is not a boundary one");
+    std::size_t fan = 0;
+    Halfedge g = h;
+    do {
+      ++fan;
+      g = rotate_cw(g);
+    } while (g != h && fan <= outgoing[v.idx()]);
+    if (fan != outgoing[v.idx()])
+      r.add(str(v) + " is non-manifold: rotation visits " + std::to_string(fan) + " of its " +
+            std::to_string(outgoing[v.idx()]) + " outgoing half-edges");
+  }
+
+  // No two edges join the same pair of vertices.
+  {
+    // Sort-free check: for each vertex, its outgoing targets must be distinct.
+    std::vector<Index> mark(nv, kInvalidIndex);
+    for (Vertex v : vertices()) {
+      if (!halfedge(v).is_valid()) continue;
+      for (Halfedge h : halfedges(v)) {
+        Vertex w = to_vertex(h);
+        if (mark[w.idx()] == v.idx()) r.add("two edges join " + str(v) + " and " + str(w));
+        mark[w.idx()] = v.idx();
+      }
+    }
+  }
+
+  // Euler characteristic per connected component: an orientable surface with b boundary loops has
+  // V - E + F = 2 - 2g - b with g >= 0, so chi + b is even and at most 2.
+  if (r.empty()) {
+    DisjointSets ds(nv);
+    for (Edge e : edges()) ds.unite(vertex(e, 0).idx(), vertex(e, 1).idx());
+    struct Tally { long long chi = 0; long long loops = 0; bool used = false; };
+    std::vector<Tally> comp(nv);
+    for (Vertex v : vertices())
+      if (halfedge(v).is_valid()) { auto& t = comp[ds.find(v.idx())]; t.chi += 1; t.used = true; }
+    for (Edge e : edges()) comp[ds.find(vertex(e, 0).idx())].chi -= 1;
+    for (Face f : faces()) comp[ds.find(to_vertex(halfedge(f)).idx())].chi += 1;
+    for (Halfedge h : boundary_loops()) comp[ds.find(to_vertex(h).idx())].loops += 1;
+    for (Index i = 0; i < nv; ++i) {
+      const Tally& t = comp[i];
+      if (!t.used) continue;
+      long long s = t.chi + t.loops;
+      if (s > 2 || (s % 2) != 0)
+        r.add("component of " + str(Vertex(i)) + " has Euler characteristic " + std::to_string(t.chi) + " with " +
+              std::to_string(t.loops) + " boundary loops: not an orientable surface (chi + loops must be even and <= 2)");
+    }
+  }
+  return r.finish();
+}
+
+}  // namespace hedge

@@ -1,0 +1,109 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hedge/core/build.h"
+#include "test_meshes.h"
+
+namespace hedge {
+namespace {
+
+double area(const IndexedMesh& m) {
+  double a = 0;
+  for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+    Vec3d p = to_double(m.positions[m.indices[t]]), q = to_double(m.positions[m.indices[t + 1]]),
+          r = to_double(m.positions[m.indices[t + 2]]);
+    a += 0.5 * norm(cross(q - p, r - p));
+  }
+  return a;
+}
+
+TEST(Export, RoundTripKeepsTrianglesAndPolygons) {
+  for (const IndexedMesh& in : {test::tetrahedron(), test::article_example(), test::cube(), test::grid(3, false)}) {
+    SurfaceMesh m = build(in);
+    IndexedMesh out = to_indexed(m);
+    EXPECT_EQ(out.positions, in.positions);
+    EXPECT_EQ(out.indices, in.indices);
+    EXPECT_EQ(out.face_sizes, in.face_sizes);
+    EXPECT_TRUE(m.validate().empty());
+  }
+}
+
+TEST(Export, ClockwiseReversesEveryFaceKeepingItsFirstCorner) {
+  SurfaceMesh m = build(test::tetrahedron());
+  ExportOptions o;
+  o.winding = Winding::cw;
+  IndexedMesh out = to_indexed(m, o);
+  IndexedMesh in = test::tetrahedron();
+  for (std::size_t t = 0; t < in.indices.size(); t += 3) {
+    EXPECT_EQ(out.indices[t], in.indices[t]);
+    EXPECT_EQ(out.indices[t + 1], in.indices[t + 2]);
+    EXPECT_EQ(out.indices[t + 2], in.indices[t + 1]);
+  }
+  // Importing the clockwise buffers reversed again gives the same mesh.
+  BuildOptions bo;
+  IndexedMesh back = out;
+  for (std::size_t t = 0; t < back.indices.size(); t += 3) std::swap(back.indices[t + 1], back.indices[t + 2]);
+  EXPECT_EQ(to_indexed(build(back, bo)).indices, in.indices);
+}
+
+TEST(Export, FanAndEarTriangulation) {
+  SurfaceMesh cube = build(test::cube());
+  ExportOptions o;
+  o.triangulation = Triangulation::fan;
+  IndexedMesh fan = to_indexed(cube, o);
+  EXPECT_TRUE(fan.face_sizes.empty());
+  EXPECT_EQ(fan.indices.size(), 36u);
+  EXPECT_NEAR(area(fan), 6.0, 1e-9);
+
+  // A concave "L" hexagon: a fan from corner 0 would leave the polygon, ear clipping does not.
+  IndexedMesh l;
+  l.positions = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
+  l.indices = {1, 2, 3, 4, 5, 0};  // a fan from (2,0) crosses the notch
+  l.face_sizes = {6};
+  SurfaceMesh lm = build(l);
+  o.triangulation = Triangulation::ear;
+  IndexedMesh ear = to_indexed(lm, o);
+  EXPECT_EQ(ear.indices.size(), 12u);
+  EXPECT_NEAR(area(ear), 3.0, 1e-9);
+  // Every ear keeps the polygon's orientation (+z).
+  for (std::size_t t = 0; t < ear.indices.size(); t += 3) {
+    Vec3 p = ear.positions[ear.indices[t]], q = ear.positions[ear.indices[t + 1]], r = ear.positions[ear.indices[t + 2]];
+    EXPECT_GT(cross(q - p, r - p).z, 0.0f);
+  }
+  o.triangulation = Triangulation::fan;
+  EXPECT_GT(area(to_indexed(lm, o)), 3.0 + 1e-6);  // the fan overlaps itself: area is wrong
+}
+
+TEST(Export, DeletedVerticesAreSkippedAndMapped) {
+  IndexedMesh in = test::tetrahedron();
+  in.positions.insert(in.positions.begin(), Vec3{9, 9, 9});  // isolated vertex 0
+  for (auto& i : in.indices) ++i;
+  SurfaceMesh m = build(in);
+  m.mark_deleted(Vertex(0));
+  std::vector<Index> map;
+  IndexedMesh out = to_indexed(m, {}, &map);
+  EXPECT_EQ(out.positions.size(), 4u);
+  EXPECT_EQ(map[0], kInvalidIndex);
+  EXPECT_EQ(map[1], 0u);
+  EXPECT_EQ(out.indices, test::tetrahedron().indices);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Export, CornerAttributesAreDeduplicated) {
+  IndexedMesh in = test::cube();
+  in.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (std::size_t c = 0; c < in.indices.size(); ++c) in.texcoord_indices.push_back(static_cast<Index>(c % 4));
+  SurfaceMesh m = build(in);
+  IndexedMesh out = to_indexed(m);
+  EXPECT_EQ(out.texcoords.size(), 4u);
+  ASSERT_EQ(out.texcoord_indices.size(), 24u);
+  for (std::size_t c = 0; c < 24; ++c) EXPECT_EQ(out.texcoords[out.texcoord_indices[c]], in.texcoords[c % 4]);
+  ExportOptions o;
+  o.corner_attributes = false;
+  EXPECT_TRUE(to_indexed(m, o).texcoord_indices.empty());
+  EXPECT_TRUE(m.validate().empty());
+}
+
+}  // namespace
+}  // namespace hedge
