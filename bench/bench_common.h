@@ -1,0 +1,144 @@
+// Shared by the peer comparison (peers) and the Google Benchmark binary (hedge_bench).
+//
+// This header includes no hedge header on purpose: the OpenMesh and CGAL translation units include
+// it, and they must not be recompiled when hedge's headers change.
+//
+// A library taking part ("backend") is a build function plus a table of named operations. Adding an
+// operation to the comparison means: one entry in kOps (peers.cpp), and one function per backend,
+// registered in that backend's `ops` map (peer_hedge.cpp, peer_openmesh.cpp, peer_cgal.cpp). A
+// backend without the entry shows "n/a" for it.
+#pragma once
+
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace bench {
+
+//! What every structure is built from: the same in-memory arrays for all (file parsing excluded).
+struct Input {
+  std::string name;
+  std::vector<float> xyz;          //!< 3 #V floats
+  std::vector<std::uint32_t> tri;  //!< 3 #F vertex indices, counter-clockwise
+  bool closed = false;             //!< every edge has exactly two faces, traversed in opposite directions
+  std::size_t n_vertices() const { return xyz.size() / 3; }
+  std::size_t n_faces() const { return tri.size() / 3; }
+};
+
+//! Arrays owned by the runner, sized before timing, so no operation allocates while timed.
+struct Scratch {
+  std::vector<float> face_normal;    //!< 3 #F
+  std::vector<float> vertex_normal;  //!< 3 #V: an operation's per-vertex output, compared across backends
+  void resize(const Input& in) {
+    face_normal.assign(3 * in.n_faces(), 0.0f);
+    vertex_normal.assign(3 * in.n_vertices(), 0.0f);
+  }
+};
+
+//! A mesh built by one backend, type-erased.
+struct MeshBox {
+  virtual ~MeshBox() = default;
+  virtual std::size_t n_vertices() const = 0;
+  virtual std::size_t n_faces() const = 0;
+  //! The library's own account of its memory, when it has one (0 otherwise).
+  virtual std::size_t own_memory_bytes() const { return 0; }
+};
+
+//! What an operation sees.
+struct Context {
+  const Input& input;
+  MeshBox* mesh;                 //!< the reference mesh, or the prepared working copy
+  Scratch& scratch;
+  std::unique_ptr<MeshBox> out;  //!< whatever the timed part produced; destroyed after the timer stops
+};
+
+struct OpImpl {
+  //! Untimed, before every repetition. May return a private working mesh (e.g. a copy for an
+  //! editing operation); null means: run on the reference mesh.
+  std::unique_ptr<MeshBox> (*prepare)(const MeshBox& reference) = nullptr;
+  //! Timed. Returns a checksum that must agree across backends (see OpSpec in peers.cpp).
+  double (*run)(Context& ctx) = nullptr;
+};
+
+struct Backend {
+  std::string label;  //!< column title
+  std::string key;    //!< JSON key
+  std::string notes;  //!< configuration worth stating (kernel, build path, ...)
+  std::unique_ptr<MeshBox> (*build)(const Input& input) = nullptr;
+  std::map<std::string, OpImpl> ops;
+};
+
+Backend hedge_backend();
+Backend openmesh_backend();
+Backend cgal_backend();
+
+// ---- Arithmetic shared by every backend, so that each computes exactly the same thing. ----
+
+struct F3 {
+  float x, y, z;
+};
+inline F3 operator-(F3 a, F3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline F3& operator+=(F3& a, F3 b) {
+  a.x += b.x;
+  a.y += b.y;
+  a.z += b.z;
+  return a;
+}
+inline F3 cross(F3 a, F3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+//! Twice the area times the unit normal: summing these gives area-weighted vertex normals.
+inline F3 area_normal(F3 p0, F3 p1, F3 p2) { return cross(p1 - p0, p2 - p0); }
+inline F3 normalized(F3 a) {
+  float n = std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+  return n > 0.0f ? F3{a.x / n, a.y / n, a.z / n} : a;
+}
+inline void store(float* out, std::size_t i, F3 v) {
+  out[3 * i] = v.x;
+  out[3 * i + 1] = v.y;
+  out[3 * i + 2] = v.z;
+}
+inline F3 load(const float* in, std::size_t i) { return {in[3 * i], in[3 * i + 1], in[3 * i + 2]}; }
+inline double abs_sum(F3 v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); }
+
+//! One-ring accumulation: per vertex, the sum of its neighbours' coordinates (double); the
+//! checksum is the total over all vertices. Identical across backends up to summation order.
+struct RingSum {
+  double x = 0, y = 0, z = 0;
+  void add(float px, float py, float pz) {
+    x += px;
+    y += py;
+    z += pz;
+  }
+  double total() const { return x + y + z; }
+};
+
+// ---- Time. ----
+inline std::int64_t now_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+// ---- Inputs (bench_input.cpp; these use hedge's readers). ----
+
+//! Reads a triangle mesh file through hedge::io::read_indexed_file (PLY tristrips are decoded
+//! there). Throws std::runtime_error for a file with non-triangle faces.
+Input load_input(const std::string& path);
+//! 1-to-4 midpoint subdivision on the index arrays (edge midpoints shared between the two faces).
+Input subdivide(const Input& in);
+//! True if every edge of `in` has exactly two faces that traverse it in opposite directions.
+bool is_closed(const Input& in);
+//! A mesh list entry: "file" or "file:subN" (N rounds of subdivision). Sets Input::closed.
+Input load_spec(const std::string& spec);
+//! The repository root: `hint` if not empty, else the first folder from the working directory
+//! upward holding include/hedge, else the source folder this was configured from.
+std::string find_root(const std::string& hint);
+//! The default mesh list and a note on where it came from: ../shared/meshes relative to the root
+//! (armadillo, igea, armadillo subdivided twice), else the repository's data/ meshes. Empty when
+//! neither exists.
+std::vector<std::string> default_mesh_specs(const std::string& root, std::string& note);
+
+}  // namespace bench
