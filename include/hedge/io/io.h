@@ -22,27 +22,66 @@ Format format_from_path(const std::string& path);
 struct WriteOptions {
   //! PLY and STL: binary (little endian) when true, ASCII when false. Ignored for OBJ and OFF.
   bool binary = true;
-  //! Significant digits of ASCII coordinates (9 keeps every float exact).
+  //! Significant digits of ASCII coordinates. 9 or more writes the shortest text that reads back to
+  //! the same float (so every float survives a round trip); fewer rounds to that many digits.
   int precision = 9;
 };
 
 // Per-format readers. `name` is used in error messages. Parsing works on the whole file in memory.
+//
+// Every reader returns a mesh whose indices are all in range and whose coordinates are all finite,
+// with face_sizes empty when every face is a triangle. It costs O(file size) time and allocates no
+// more than the file's size can justify, whatever counts a header claims.
+// \throw IoError on malformed input: what() is "name:line: message" for text ("name (byte N):
+// message" for binary data) and says what was expected and what was found. Elements are numbered
+// from 0 in messages, as in the IndexedMesh ("face 12" is the 13th face).
+
+//! OBJ: v (w and vertex colours ignored), vt, vn, f in the v, v/vt, v//vn, v/vt/vn forms with
+//! negative (relative) indices, polygons, comments, backslash continuations; o, g, s, usemtl,
+//! mtllib, l, p and the other statements of the specification are ignored, an unknown keyword is
+//! an error. Texture coordinates (normals) are kept only when every corner of every face has one;
+//! if only some corners do, the attribute is dropped without an error.
 IndexedMesh read_obj(std::string_view data, const std::string& name = {});
+//! OFF, COFF, NOFF, CNOFF, STOFF... ('#' comments, counts possibly on the header line, optional
+//! header keyword). Vertex normals and colours and face colours are skipped. One record per line.
 IndexedMesh read_off(std::string_view data, const std::string& name = {});
+//! PLY: ascii, binary_little_endian, binary_big_endian, any element order. Reads vertex x y z (any
+//! numeric type), nx ny nz and u v (or s t, texture_u texture_v) as per-vertex attributes (corner
+//! index arrays equal to the vertex indices), the face element's vertex_indices / vertex_index
+//! list, and tristrips (-1 restarts; every other triangle flipped; triangles with a repeated index
+//! dropped). Other elements and properties, lists included, are skipped.
 IndexedMesh read_ply(std::string_view data, const std::string& name = {});
+//! STL, ASCII or binary: the triangle soup as stored (3 vertices per triangle, no welding; see
+//! default_build_options). A file whose size is 84 + 50 n, n being the count at byte 80, is binary
+//! even when its header starts with "solid".
 IndexedMesh read_stl(std::string_view data, const std::string& name = {});
 IndexedMesh read_indexed(std::string_view data, Format format, const std::string& name = {});
 
-// Per-format writers into a string (the atomic file writers wrap these).
+// Per-format writers into a string (the atomic file writers wrap these). O(mesh size).
+// Coordinates are written so that they read back bit for bit (see WriteOptions::precision).
+// \throw InvalidInputError when the mesh is inconsistent: face sizes not adding up to the index
+//        count, a face without corners, an index out of its pool, attribute index arrays of the
+//        wrong length.
+
+//! OBJ: v, then vt and vn when the mesh has those corner attributes, and f with v/vt/vn corners.
 std::string write_obj(const IndexedMesh& mesh, const WriteOptions& options = {});
+//! OFF: positions and polygons; attributes are not written.
 std::string write_off(const IndexedMesh& mesh, const WriteOptions& options = {});
+//! PLY with float x y z; nx ny nz (u v) only when every vertex's corners agree on one normal
+//! (texture coordinate), since PLY stores them per vertex. Polygons as a uchar (uint above 255
+//! corners) list of uint.
 std::string write_ply(const IndexedMesh& mesh, const WriteOptions& options = {});
+//! STL: polygons fanned into triangles, facet normals computed (zero for a degenerate triangle).
+//! The binary header never starts with "solid".
 std::string write_stl(const IndexedMesh& mesh, const WriteOptions& options = {});
 std::string write_indexed(const IndexedMesh& mesh, Format format, const WriteOptions& options = {});
 
 //! Reads a whole file. \throw IoError if it cannot be opened or read.
 std::string read_file(const std::string& path);
-//! Writes `bytes` to `path` atomically (temporary file in the same folder, then rename).
+//! Writes `bytes` to `path` atomically: a uniquely named temporary file in the same folder is
+//! written, flushed to disk and renamed over the target, which keeps its permissions. On any
+//! failure the temporary file is removed and the target is left as it was.
+//! \throw IoError naming the path and the system's reason.
 void write_file_atomic(const std::string& path, std::string_view bytes);
 
 //! Reads a file of any supported format into the indexed form (format from the extension).

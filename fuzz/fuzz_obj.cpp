@@ -1,0 +1,6 @@
+// libFuzzer target for the OBJ reader.
+#include "fuzz_common.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return hedge::fuzz::run(data, size, hedge::io::Format::obj);
+}

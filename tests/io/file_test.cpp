@@ -1,0 +1,293 @@
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <array>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "hedge/core/build.h"
+#include "hedge/error.h"
+#include "hedge/io/io.h"
+
+namespace hedge::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string data_path(const std::string& name) { return std::string(HEDGE_DATA_DIR) + "/" + name; }
+
+// A fresh folder per test, removed afterwards.
+class FileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::random_device rd;
+    dir_ = fs::temp_directory_path() / ("hedge_io_test_" + std::to_string(rd()) + std::to_string(rd()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::permissions(dir_, fs::perms::owner_all, fs::perm_options::add, ec);
+    fs::remove_all(dir_, ec);
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::vector<std::string> listing() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+  static void put(const std::string& p, const std::string& bytes) {
+    std::ofstream(p, std::ios::binary) << bytes;
+  }
+
+  fs::path dir_;
+};
+
+TEST(FormatFromPath, ExtensionsAreCaseInsensitive) {
+  EXPECT_EQ(format_from_path("a/b/mesh.obj"), Format::obj);
+  EXPECT_EQ(format_from_path("MESH.OFF"), Format::off);
+  EXPECT_EQ(format_from_path("x.y.Ply"), Format::ply);
+  EXPECT_EQ(format_from_path("/abs/part.StL"), Format::stl);
+  EXPECT_THROW(format_from_path("mesh.gltf"), IoError);
+  EXPECT_THROW(format_from_path("dir.obj/mesh"), IoError);
+  EXPECT_THROW(format_from_path("obj"), IoError);
+  try {
+    format_from_path("model.3ds");
+  } catch (const IoError& e) {
+    EXPECT_EQ(e.path(), "model.3ds");
+    EXPECT_NE(std::string(e.what()).find("unknown file extension"), std::string::npos);
+  }
+}
+
+TEST(DefaultBuildOptions, RepairEverywhereAndWeldOnlyStl) {
+  for (Format f : {Format::obj, Format::off, Format::ply, Format::stl}) {
+    const BuildOptions o = default_build_options(f);
+    EXPECT_EQ(o.policy, TopologyPolicy::repair);
+    EXPECT_EQ(o.weld, f == Format::stl ? Weld::exact : Weld::none);
+  }
+}
+
+TEST(ReadIndexed, DispatchesOnTheFormat) {
+  const std::string off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  EXPECT_EQ(read_indexed(off, Format::off).indices, (std::vector<std::uint32_t>{0, 1, 2}));
+  EXPECT_THROW(read_indexed(off, Format::obj), IoError);
+  EXPECT_THROW(read_indexed(off, Format::ply), IoError);
+  IndexedMesh m = read_indexed(off, Format::off);
+  for (Format f : {Format::obj, Format::off, Format::ply, Format::stl})
+    EXPECT_EQ(read_indexed(write_indexed(m, f), f).positions, m.positions);
+}
+
+TEST_F(FileTest, ReadFileErrors) {
+  try {
+    read_file(path("missing.obj"));
+    ADD_FAILURE();
+  } catch (const IoError& e) {
+    EXPECT_EQ(e.path(), path("missing.obj"));
+    EXPECT_NE(std::string(e.what()).find("cannot open"), std::string::npos);
+  }
+  EXPECT_THROW(read_file(dir_.string()), IoError);
+  EXPECT_THROW(read_indexed_file(path("missing.off")), IoError);
+}
+
+TEST_F(FileTest, ReadFileReturnsEveryByte) {
+  std::string bytes(200000, '\0');
+  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<char>(i * 7 + i / 251);
+  put(path("blob.bin"), bytes);
+  EXPECT_EQ(read_file(path("blob.bin")), bytes);
+  put(path("empty.bin"), "");
+  EXPECT_EQ(read_file(path("empty.bin")), "");
+}
+
+TEST_F(FileTest, AtomicWriteCreatesAndReplaces) {
+  write_file_atomic(path("a.txt"), "first");
+  EXPECT_EQ(read_file(path("a.txt")), "first");
+  write_file_atomic(path("a.txt"), "second, longer");
+  EXPECT_EQ(read_file(path("a.txt")), "second, longer");
+  EXPECT_EQ(listing(), (std::vector<std::string>{"a.txt"}));  // no temporary left behind
+}
+
+TEST_F(FileTest, AtomicWriteKeepsThePermissionsOfTheFileItReplaces) {
+  put(path("p.txt"), "old");
+  fs::permissions(path("p.txt"), fs::perms::owner_read | fs::perms::owner_write);
+  write_file_atomic(path("p.txt"), "new");
+  EXPECT_EQ(fs::status(path("p.txt")).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::owner_write);
+}
+
+TEST_F(FileTest, AtomicWriteIntoAMissingFolderCreatesNothing) {
+  const std::string target = path("no/such/dir/mesh.obj");
+  try {
+    write_file_atomic(target, "data");
+    ADD_FAILURE();
+  } catch (const IoError& e) {
+    EXPECT_EQ(e.path(), target);
+    EXPECT_NE(std::string(e.what()).find("cannot create a temporary file"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(path("no")));
+  EXPECT_TRUE(listing().empty());
+}
+
+TEST_F(FileTest, AtomicWriteOverADirectoryFailsAndLeavesIt) {
+  fs::create_directories(path("target.obj"));
+  put(path("target.obj/inside.txt"), "keep");
+  EXPECT_THROW(write_file_atomic(path("target.obj"), "data"), IoError);
+  EXPECT_TRUE(fs::is_directory(path("target.obj")));
+  EXPECT_EQ(read_file(path("target.obj/inside.txt")), "keep");
+  EXPECT_EQ(listing(), (std::vector<std::string>{"target.obj"}));  // the temporary was removed
+}
+
+TEST_F(FileTest, AtomicWriteThatFailsHalfwayLeavesTheOldFileIntact) {
+  put(path("mesh.off"), "old contents");
+  // A file size limit makes write() fail after the first kilobyte, with the temporary file open:
+  // the failure happens in the middle of writing, where a non-atomic writer would have truncated
+  // the target already. (Running as root, a permission trick would not fail.)
+  rlimit old_limit{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &old_limit), 0);
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit small = old_limit;
+  small.rlim_cur = 1024;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  bool threw = false;
+  try {
+    write_file_atomic(path("mesh.off"), std::string(100000, 'x'));
+  } catch (const IoError& e) {
+    threw = true;
+    EXPECT_NE(std::string(e.what()).find("write error"), std::string::npos) << e.what();
+  }
+  setrlimit(RLIMIT_FSIZE, &old_limit);
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_TRUE(threw);
+  EXPECT_EQ(read_file(path("mesh.off")), "old contents");
+  EXPECT_EQ(listing(), (std::vector<std::string>{"mesh.off"}));
+}
+
+TEST_F(FileTest, IndexedFilesInEveryFormat) {
+  const IndexedMesh m = read_indexed_file(data_path("fandisk_quads.off"));
+  for (const char* ext : {"obj", "off", "ply"}) {
+    SCOPED_TRACE(ext);
+    const std::string p = path(std::string("m.") + ext);
+    write_indexed_file(m, p);
+    const IndexedMesh back = read_indexed_file(p);
+    EXPECT_EQ(back.positions, m.positions);
+    EXPECT_EQ(back.indices, m.indices);
+    EXPECT_EQ(back.face_sizes, m.face_sizes);
+  }
+  write_indexed_file(m, path("m.stl"));
+  const IndexedMesh stl = read_indexed_file(path("m.stl"));
+  EXPECT_EQ(stl.face_count(), 2 * m.face_count());  // quads fanned into two triangles
+  EXPECT_THROW(write_indexed_file(m, path("m.xyz")), IoError);
+  EXPECT_FALSE(fs::exists(path("m.xyz")));
+}
+
+TEST_F(FileTest, ErrorsFromFilesNameThePath) {
+  put(path("bad.obj"), "v 0 0 0\nv 1 0 0\nf 1 2 x\n");
+  try {
+    read_indexed_file(path("bad.obj"));
+    ADD_FAILURE();
+  } catch (const IoError& e) {
+    EXPECT_EQ(e.path(), path("bad.obj"));
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(std::string(e.what()), path("bad.obj") + ":3: expected a vertex index after 'f', got 'x'");
+  }
+}
+
+TEST(ReadMesh, BuildsWithTheFormatDefaults) {
+  BuildReport report;
+  const SurfaceMesh tet = read_mesh(data_path("tet.obj"), &report);
+  EXPECT_EQ(tet.n_vertices(), 4u);
+  EXPECT_EQ(tet.n_faces(), 4u);
+  EXPECT_EQ(report.repairs(), 0u);
+  // STL: 60 soup corners welded exactly into the icosahedron's 12 vertices.
+  const SurfaceMesh ico = read_mesh(data_path("icosahedron_binary.stl"), &report);
+  EXPECT_EQ(ico.n_vertices(), 12u);
+  EXPECT_EQ(ico.n_faces(), 20u);
+  EXPECT_EQ(report.welded_vertices, 48u);
+  // Explicit options override the defaults.
+  BuildOptions none;
+  none.policy = TopologyPolicy::repair;
+  EXPECT_EQ(read_mesh(data_path("icosahedron_binary.stl"), none).n_vertices(), 60u);
+  EXPECT_THROW(read_mesh(data_path("hourglass_ico.obj"), BuildOptions{}), TopologyError);
+}
+
+TEST(ReadMesh, EveryDataFileLoadsWithRepair) {
+  for (const auto& entry : fs::directory_iterator(HEDGE_DATA_DIR)) {
+    const std::string p = entry.path().string();
+    const std::string ext = entry.path().extension().string();
+    if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl") continue;
+    SCOPED_TRACE(p);
+    BuildReport report;
+    const IndexedMesh input = read_indexed_file(p);
+    const SurfaceMesh m = read_mesh(p, &report);
+    EXPECT_GT(m.n_faces(), 0u);
+    EXPECT_LE(m.n_faces(), input.face_count());
+    EXPECT_EQ(m.n_faces() + report.degenerate_faces, input.face_count());
+  }
+  BuildReport spider;
+  read_mesh(data_path("Spider_binary.stl"), &spider);
+  EXPECT_GT(spider.repairs(), 0u);
+  EXPECT_GT(spider.degenerate_faces, 0u);
+}
+
+// Faces as position triples, each rotated to start at its smallest corner, sorted: equal for two
+// meshes with the same positions and oriented connectivity, whatever their vertex order.
+std::vector<std::array<std::tuple<float, float, float>, 3>> canonical_triangles(const IndexedMesh& m) {
+  std::vector<std::array<std::tuple<float, float, float>, 3>> out;
+  for (std::size_t t = 0; t < m.face_count(); ++t) {
+    std::array<std::tuple<float, float, float>, 3> tri;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& p = m.positions[m.indices[3 * t + static_cast<std::size_t>(k)]];
+      tri[static_cast<std::size_t>(k)] = {p.x, p.y, p.z};
+    }
+    std::rotate(tri.begin(), std::min_element(tri.begin(), tri.end()), tri.end());
+    out.push_back(tri);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST_F(FileTest, RoundTripThroughEveryFormatKeepsPositionsAndConnectivity) {
+  const std::string start = data_path("spot_triangulated.obj");
+  const IndexedMesh original = read_indexed_file(start);
+  SurfaceMesh mesh = read_mesh(start);
+  for (const char* ext : {"off", "ply", "stl", "obj"}) {
+    SCOPED_TRACE(ext);
+    const std::string p = path(std::string("step.") + ext);
+    write_mesh(mesh, p);
+    mesh = read_mesh(p);
+    EXPECT_EQ(mesh.n_vertices(), original.positions.size());
+    EXPECT_EQ(mesh.n_faces(), original.face_count());
+  }
+  const IndexedMesh final_mesh = read_indexed_file(path("step.obj"));
+  EXPECT_EQ(final_mesh.positions.size(), original.positions.size());
+  std::vector<Vec3> a = original.positions, b = final_mesh.positions;
+  auto less = [](const Vec3& u, const Vec3& v) { return std::tie(u.x, u.y, u.z) < std::tie(v.x, v.y, v.z); };
+  std::sort(a.begin(), a.end(), less);
+  std::sort(b.begin(), b.end(), less);
+  EXPECT_EQ(a, b);
+  EXPECT_TRUE(canonical_triangles(final_mesh) == canonical_triangles(original));
+}
+
+TEST_F(FileTest, WriteMeshTriangulatesForStl) {
+  const SurfaceMesh m = read_mesh(data_path("spot_control_mesh.obj"));
+  write_mesh(m, path("cage.stl"));
+  // 4 triangles, 160 quads and 16 pentagons: 4 + 320 + 48 triangles.
+  EXPECT_EQ(read_indexed_file(path("cage.stl")).face_count(), 372u);
+  write_mesh(m, path("cage.obj"));
+  const IndexedMesh obj = read_indexed_file(path("cage.obj"));
+  EXPECT_EQ(obj.face_count(), 180u);
+  EXPECT_EQ(obj.texcoord_indices.size(), obj.indices.size());
+  WriteOptions ascii;
+  ascii.binary = false;
+  write_mesh(m, path("cage.ply"), ascii);
+  EXPECT_EQ(read_file(path("cage.ply")).find("format ascii 1.0"), 4u);
+}
+
+}  // namespace
+}  // namespace hedge::io
