@@ -1,0 +1,60 @@
+# Build dependencies of hedge, in one place. Source this file, then call
+#   hedge_install_deps GROUP...
+# Groups:
+#   core   compiler, CMake and Ninja: enough to build the library
+#   cli    what the hedge command-line tool needs
+#   test   the unit tests
+#   bench  the benchmarks
+#   peers  other mesh libraries the benchmarks compare against (large)
+#   fuzz   the libFuzzer targets
+# Only missing packages are installed; when everything is present nothing is run, so the check is
+# fast on a machine that is already set up. Debian 12 (apt-get) is assumed.
+
+hedge_deps_packages() {
+  local group
+  for group in "$@"; do
+    case "$group" in
+      core) echo cmake g++ ninja-build ;;
+      cli) echo libcli11-dev nlohmann-json3-dev ;;
+      test) echo libgtest-dev nlohmann-json3-dev ;;
+      bench) echo libbenchmark-dev ;;
+      peers) echo libopenmesh-dev libcgal-dev libeigen3-dev libmeshoptimizer-dev ;;
+      fuzz) echo clang libclang-rt-14-dev ;;
+      *)
+        echo "deps.sh: unknown dependency group '$group'" >&2
+        return 1
+        ;;
+    esac
+  done
+}
+
+hedge_package_installed() {
+  dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q 'install ok installed'
+}
+
+hedge_install_deps() {
+  local packages pkg
+  local -a missing=()
+  packages=$(hedge_deps_packages "$@") || return 1
+  # shellcheck disable=SC2086  # the package list is split on whitespace on purpose
+  for pkg in $(printf '%s\n' $packages | sort -u); do
+    hedge_package_installed "$pkg" || missing+=("$pkg")
+  done
+  if [ "${#missing[@]}" -eq 0 ]; then
+    return 0
+  fi
+
+  local -a sudo=()
+  if [ "$(id -u)" -ne 0 ]; then
+    if command -v sudo >/dev/null 2>&1; then
+      sudo=(sudo)
+    else
+      echo "deps.sh: missing packages (${missing[*]}) and not root; install them with apt-get" >&2
+      return 1
+    fi
+  fi
+  echo "==> Installing: ${missing[*]}"
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q || return 1
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive \
+    apt-get install -y -q --no-install-recommends "${missing[@]}" </dev/null || return 1
+}

@@ -1,0 +1,327 @@
+// Runs the built hedge CLI as a user would and checks exit codes, output and error messages.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kData = HEDGE_DATA_DIR;
+
+std::string data(const std::string& name) { return kData + "/" + name; }
+
+struct Result {
+  int code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) {
+    if (c == '\'') {
+      q += "'\\''";
+    } else {
+      q += c;
+    }
+  }
+  return q + "'";
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> result;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) result.push_back(line);
+  return result;
+}
+
+class HedgeCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("hedge_cli_test_" + std::to_string(::getpid()) + "_" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path tmp(const std::string& name) const { return dir_ / name; }
+
+  //! Runs hedge with `args`; stdout and stderr are captured separately, stdin is empty.
+  Result run(const std::vector<std::string>& args) const {
+    std::string command = shell_quote(HEDGE_CLI_PATH);
+    for (const std::string& a : args) command += " " + shell_quote(a);
+    const fs::path out = tmp("stdout.txt"), err = tmp("stderr.txt");
+    command += " </dev/null >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string());
+    const int status = std::system(command.c_str());
+    Result r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = read_text(out);
+    r.err = read_text(err);
+    return r;
+  }
+
+  json run_json(const std::vector<std::string>& args) const {
+    const Result r = run(args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(json::accept(r.out)) << r.out;
+    return json::accept(r.out) ? json::parse(r.out) : json::object();
+  }
+
+  //! A data error: exit 1 and exactly one "hedge: error: ..." line on stderr that names `file`.
+  void expect_data_error(const std::vector<std::string>& args, const std::string& file) const {
+    const Result r = run(args);
+    EXPECT_EQ(r.code, 1);
+    const auto err = lines(r.err);
+    ASSERT_EQ(err.size(), 1u) << r.err;
+    EXPECT_EQ(err[0].rfind("hedge: error: ", 0), 0u) << err[0];
+    EXPECT_NE(err[0].find(file), std::string::npos) << err[0];
+  }
+
+  //! A usage error: exit 2 and exactly one "hedge: error: ..." line on stderr.
+  void expect_usage_error(const std::vector<std::string>& args) const {
+    const Result r = run(args);
+    EXPECT_EQ(r.code, 2);
+    const auto err = lines(r.err);
+    ASSERT_EQ(err.size(), 1u) << r.err;
+    EXPECT_EQ(err[0].rfind("hedge: error: ", 0), 0u) << err[0];
+  }
+
+  fs::path dir_;
+};
+
+std::size_t total_repairs(const json& j) {
+  std::size_t n = 0;
+  for (const char* key : {"degenerate_faces", "repeated_corners", "reoriented_faces", "non_manifold_edges",
+                          "non_manifold_vertices", "duplicated_vertices"}) {
+    n += j["repairs"][key].get<std::size_t>();
+  }
+  return n;
+}
+
+TEST_F(HedgeCli, InfoJsonHasEveryKeyWithTheTetrahedronsValues) {
+  const std::string file = data("tet.obj");
+  const json j = run_json({"info", file, "--json"});
+  for (const char* key :
+       {"file", "vertices", "edges", "faces", "halfedges", "boundary_loops", "components",
+        "euler_characteristic", "genus", "is_triangle_mesh", "is_manifold", "valid", "problems", "repairs"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  for (const char* key :
+       {"welded_vertices", "degenerate_faces", "repeated_corners", "reoriented_faces", "non_manifold_edges",
+        "non_manifold_vertices", "duplicated_vertices", "isolated_vertices"}) {
+    ASSERT_TRUE(j["repairs"].contains(key)) << key;
+    EXPECT_EQ(j["repairs"][key], 0) << key;
+  }
+  EXPECT_EQ(j["file"], file);
+  EXPECT_EQ(j["vertices"], 4);
+  EXPECT_EQ(j["edges"], 6);
+  EXPECT_EQ(j["faces"], 4);
+  EXPECT_EQ(j["halfedges"], 12);
+  EXPECT_EQ(j["boundary_loops"], 0);
+  EXPECT_EQ(j["components"], 1);
+  EXPECT_EQ(j["euler_characteristic"], 2);
+  EXPECT_EQ(j["genus"], 0);
+  EXPECT_EQ(j["is_triangle_mesh"], true);
+  EXPECT_EQ(j["is_manifold"], true);
+  EXPECT_EQ(j["valid"], true);
+  EXPECT_TRUE(j["problems"].is_array());
+  EXPECT_TRUE(j["problems"].empty());
+}
+
+TEST_F(HedgeCli, InfoTextListsTheCounts) {
+  const Result r = run({"info", data("tet.obj")});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_NE(r.out.find("vertices"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Euler characteristic"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("repairs"), std::string::npos) << r.out;
+}
+
+TEST_F(HedgeCli, InfoOnAPolygonMesh) {
+  const json j = run_json({"info", data("spot_control_mesh.obj"), "--json"});
+  EXPECT_EQ(j["vertices"], 188);
+  EXPECT_EQ(j["faces"], 180);
+  EXPECT_EQ(j["is_triangle_mesh"], false);
+  EXPECT_EQ(j["boundary_loops"], 0);
+  EXPECT_EQ(j["genus"], 0);
+  EXPECT_EQ(j["valid"], true);
+}
+
+TEST_F(HedgeCli, InfoComputesTheGenus) {
+  const json torus = run_json({"info", data("bob_small.ply"), "--json"});
+  EXPECT_EQ(torus["euler_characteristic"], 0);
+  EXPECT_EQ(torus["genus"], 1);
+  const json anchor = run_json({"info", data("anchor.off"), "--json"});
+  EXPECT_EQ(anchor["genus"], 4);
+}
+
+TEST_F(HedgeCli, GenusIsNullForAnOpenMesh) {
+  const json j = run_json({"info", data("degtri_four.off"), "--json"});
+  EXPECT_TRUE(j["genus"].is_null());
+  EXPECT_GE(j["boundary_loops"], 1);
+}
+
+TEST_F(HedgeCli, DefectMeshesReportRepairs) {
+  const json cube = run_json({"info", data("cube-minimal-degenerated.obj"), "--json"});
+  EXPECT_GT(total_repairs(cube), 0u);
+  EXPECT_EQ(cube["valid"], true);
+  EXPECT_EQ(cube["is_manifold"], true);
+
+  const json sheets = run_json({"info", data("triple_vierbein.obj"), "--json"});
+  EXPECT_GT(sheets["repairs"]["non_manifold_edges"].get<int>(), 0);
+  EXPECT_GT(sheets["repairs"]["non_manifold_vertices"].get<int>(), 0);
+}
+
+TEST_F(HedgeCli, StlIsWeldedAndCanBeLeftUnwelded) {
+  const json welded = run_json({"info", data("icosahedron_binary.stl"), "--json"});
+  EXPECT_EQ(welded["vertices"], 12);
+  EXPECT_EQ(welded["faces"], 20);
+  EXPECT_EQ(welded["genus"], 0);
+  const json soup = run_json({"info", data("icosahedron_binary.stl"), "--json", "--weld", "none"});
+  EXPECT_EQ(soup["vertices"], 60);
+  EXPECT_EQ(soup["components"], 20);
+  EXPECT_TRUE(soup["genus"].is_null());
+}
+
+TEST_F(HedgeCli, StrictInfoRejectsADefectMesh) {
+  expect_data_error({"info", data("cube-minimal-degenerated.obj"), "--strict"},
+                    "cube-minimal-degenerated.obj");
+}
+
+TEST_F(HedgeCli, ValidateExitCodes) {
+  const Result ok = run({"validate", data("tet.obj")});
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  EXPECT_NE(ok.out.find("valid"), std::string::npos);
+
+  const json j = run_json({"validate", data("spot_control_mesh.obj"), "--json"});
+  EXPECT_EQ(j["valid"], true);
+  EXPECT_TRUE(j["problems"].empty());
+
+  const Result strict = run({"validate", data("triple_vierbein.obj"), "--strict"});
+  EXPECT_EQ(strict.code, 1);
+  EXPECT_NE(strict.out.find("invalid"), std::string::npos) << strict.out;
+  EXPECT_NE(strict.out.find("topology error"), std::string::npos) << strict.out;
+
+  const Result strict_json = run({"validate", data("triple_vierbein.obj"), "--strict", "--json"});
+  EXPECT_EQ(strict_json.code, 1);
+  ASSERT_TRUE(json::accept(strict_json.out)) << strict_json.out;
+  const json sj = json::parse(strict_json.out);
+  EXPECT_EQ(sj["valid"], false);
+  EXPECT_FALSE(sj["problems"].empty());
+}
+
+TEST_F(HedgeCli, ConvertWritesAReadableFileInEveryFormat) {
+  for (const std::string ext : {"ply", "off", "obj", "stl"}) {
+    for (const bool ascii : {false, true}) {
+      const fs::path out = tmp("sub/dir/spot." + ext);
+      std::vector<std::string> args = {"convert", data("spot_control_mesh.obj"), out.string()};
+      if (ascii) args.push_back("--ascii");
+      const Result r = run(args);
+      ASSERT_EQ(r.code, 0) << ext << ": " << r.err;
+      EXPECT_NE(r.out.find("converted"), std::string::npos) << r.out;
+      ASSERT_TRUE(fs::exists(out)) << out;
+
+      const json j = run_json({"info", out.string(), "--json"});
+      EXPECT_EQ(j["valid"], true) << ext;
+      EXPECT_EQ(j["vertices"], 188) << ext;
+      EXPECT_EQ(j["genus"], 0) << ext;
+      if (ext == "stl") {
+        EXPECT_EQ(j["is_triangle_mesh"], true);  // STL holds triangles only
+      } else {
+        EXPECT_EQ(j["faces"], 180) << ext;
+      }
+      fs::remove(out);
+    }
+  }
+}
+
+TEST_F(HedgeCli, ConvertAsciiPly) {
+  const fs::path out = tmp("tet.ply");
+  ASSERT_EQ(run({"convert", data("tet.obj"), out.string(), "--ascii"}).code, 0);
+  EXPECT_EQ(read_text(out).rfind("ply\nformat ascii", 0), 0u);
+  const fs::path bin = tmp("tet-bin.ply");
+  ASSERT_EQ(run({"convert", data("tet.obj"), bin.string()}).code, 0);
+  EXPECT_EQ(read_text(bin).rfind("ply\nformat binary_little_endian", 0), 0u);
+}
+
+TEST_F(HedgeCli, MalformedFilesAreDataErrors) {
+  const fs::path obj = tmp("broken.obj");
+  write_text(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 zz\n");
+  expect_data_error({"info", obj.string()}, "broken.obj");
+  expect_data_error({"validate", obj.string()}, "broken.obj");
+  expect_data_error({"convert", obj.string(), tmp("x.ply").string()}, "broken.obj");
+  EXPECT_FALSE(fs::exists(tmp("x.ply")));
+
+  const fs::path range = tmp("out_of_range.obj");
+  write_text(range, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+  expect_data_error({"info", range.string()}, "out_of_range.obj");
+
+  const fs::path off = tmp("truncated.off");
+  write_text(off, "OFF\n4 2 0\n0 0 0\n1 0 0\n");
+  expect_data_error({"info", off.string(), "--json"}, "truncated.off");
+
+  const fs::path ply = tmp("garbage.ply");
+  write_text(ply, std::string("ply\nformat binary_little_endian 1.0\nelement vertex 1000000\n") +
+                      "property float x\nproperty float y\nproperty float z\nend_header\n\x01\x02");
+  expect_data_error({"info", ply.string()}, "garbage.ply");
+
+  const fs::path stl = tmp("short.stl");
+  write_text(stl, std::string(84, '\0').replace(80, 1, "\x05"));
+  expect_data_error({"info", stl.string()}, "short.stl");
+}
+
+TEST_F(HedgeCli, MissingFileAndUnknownExtensionAreDataErrors) {
+  expect_data_error({"info", tmp("missing.obj").string()}, "missing.obj");
+  const fs::path xyz = tmp("mesh.xyz");
+  write_text(xyz, "1 2 3\n");
+  expect_data_error({"info", xyz.string()}, "mesh.xyz");
+  expect_data_error({"convert", data("tet.obj"), tmp("out.xyz").string()}, "out.xyz");
+  EXPECT_FALSE(fs::exists(tmp("out.xyz")));
+}
+
+TEST_F(HedgeCli, UsageErrorsExitWithTwo) {
+  expect_usage_error({});
+  expect_usage_error({"frobnicate"});
+  expect_usage_error({"info"});
+  expect_usage_error({"convert", data("tet.obj")});
+  expect_usage_error({"info", data("tet.obj"), "--weld", "sometimes"});
+  expect_usage_error({"info", data("tet.obj"), "--weld-eps", "-1"});
+  expect_usage_error({"info", data("tet.obj"), "--no-such-flag"});
+}
+
+TEST_F(HedgeCli, HelpAndVersion) {
+  const Result help = run({"--help"});
+  EXPECT_EQ(help.code, 0);
+  for (const char* command : {"info", "validate", "convert"}) {
+    EXPECT_NE(help.out.find(command), std::string::npos) << command;
+  }
+  const Result sub = run({"info", "--help"});
+  EXPECT_EQ(sub.code, 0);
+  EXPECT_NE(sub.out.find("--json"), std::string::npos) << sub.out;
+  const Result version = run({"--version"});
+  EXPECT_EQ(version.code, 0);
+  EXPECT_FALSE(version.out.empty());
+}
+
+}  // namespace

@@ -1,0 +1,52 @@
+// hedge convert IN OUT: read, build (repairing unless --strict) and write; formats by extension.
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "commands.h"
+#include "load.h"
+
+namespace hedge::cli {
+
+namespace {
+
+struct ConvertOptions {
+  std::string input;
+  std::string output;
+  bool ascii = false;
+  LoadOptions load;
+};
+
+int run_convert(const ConvertOptions& options) {
+  // Check the output's extension before spending time on the input.
+  const io::Format out_format = io::format_from_path(options.output);
+  const LoadedMesh loaded = load_mesh(options.input, options.load);
+
+  const std::filesystem::path parent = std::filesystem::path(options.output).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+  io::WriteOptions write;
+  write.binary = !options.ascii;
+  io::write_mesh(loaded.mesh, options.output, write);
+
+  const bool has_encoding = out_format == io::Format::ply || out_format == io::Format::stl;
+  std::cout << "converted " << options.input << " -> " << options.output << " (" << format_name(out_format)
+            << (has_encoding ? (options.ascii ? ", ascii" : ", binary") : "")
+            << "): " << loaded.mesh.n_vertices() << " vertices, " << loaded.mesh.n_faces() << " faces, "
+            << loaded.report.repairs() << " repairs\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_convert_command(CLI::App& parent) {
+  auto options = std::make_shared<ConvertOptions>();
+  CLI::App* app =
+      parent.add_subcommand("convert", "Convert between OBJ, OFF, PLY and STL (formats from the extensions)");
+  app->add_option("IN", options->input, "Input mesh file")->required();
+  app->add_option("OUT", options->output, "Output mesh file; missing folders are created")->required();
+  app->add_flag("--ascii", options->ascii, "Write PLY and STL as text instead of binary");
+  add_load_options(*app, options->load);
+  return {app, [options] { return run_convert(*options); }};
+}
+
+}  // namespace hedge::cli

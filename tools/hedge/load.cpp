@@ -1,0 +1,73 @@
+#include "load.h"
+
+#include <map>
+
+#include "hedge/error.h"
+
+namespace hedge::cli {
+
+namespace {
+
+const std::map<std::string, Weld>& weld_modes() {
+  static const std::map<std::string, Weld> modes{
+      {"none", Weld::none}, {"exact", Weld::exact}, {"epsilon", Weld::epsilon}};
+  return modes;
+}
+
+}  // namespace
+
+void add_load_options(CLI::App& command, LoadOptions& options) {
+  command.add_flag("--strict", options.strict,
+                   "Reject input that is not a clean oriented 2-manifold instead of repairing it");
+  command.add_option("--weld", options.weld, "Merge vertices: none, exact (equal positions) or epsilon")
+      ->check(CLI::IsMember({"none", "exact", "epsilon"}));
+  command
+      .add_option("--weld-eps", options.weld_eps,
+                  "Welding tolerance relative to the bounding-box diagonal (implies --weld epsilon)")
+      ->check(CLI::NonNegativeNumber);
+}
+
+BuildOptions build_options(io::Format format, const LoadOptions& options) {
+  BuildOptions build = io::default_build_options(format);
+  if (options.strict) build.policy = TopologyPolicy::strict;
+  if (!options.weld.empty()) {
+    build.weld = weld_modes().at(options.weld);
+  } else if (options.weld_eps >= 0.0) {
+    build.weld = Weld::epsilon;
+  }
+  if (options.weld_eps >= 0.0) build.weld_epsilon = options.weld_eps;
+  return build;
+}
+
+LoadedMesh load_mesh(const std::string& path, const LoadOptions& options) {
+  LoadedMesh loaded;
+  loaded.format = io::format_from_path(path);
+  try {
+    loaded.mesh = io::read_mesh(path, build_options(loaded.format, options), &loaded.report);
+  } catch (const IoError&) {
+    throw;  // already names the file
+  } catch (const TopologyError& e) {
+    throw TopologyError(path + ": " + e.what(), e.vertices(), e.faces());
+  } catch (const InvalidInputError& e) {
+    throw InvalidInputError(path + ": " + e.what());
+  } catch (const Error& e) {
+    throw Error(path + ": " + e.what());
+  }
+  return loaded;
+}
+
+const char* format_name(io::Format format) {
+  switch (format) {
+    case io::Format::obj:
+      return "obj";
+    case io::Format::off:
+      return "off";
+    case io::Format::ply:
+      return "ply";
+    case io::Format::stl:
+      return "stl";
+  }
+  return "unknown";
+}
+
+}  // namespace hedge::cli

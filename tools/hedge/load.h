@@ -1,0 +1,39 @@
+// Loading a mesh file with the command line's repair and welding choices.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "hedge/core/build.h"
+#include "hedge/core/surface_mesh.h"
+#include "hedge/io/io.h"
+
+namespace hedge::cli {
+
+struct LoadOptions {
+  bool strict = false;     //!< TopologyPolicy::strict instead of repairing
+  std::string weld;        //!< "none", "exact", "epsilon"; empty keeps the format's default
+  double weld_eps = -1.0;  //!< relative welding tolerance; negative when not given
+};
+
+//! Adds --strict, --weld and --weld-eps to a subcommand.
+void add_load_options(CLI::App& command, LoadOptions& options);
+
+//! The build options for `format` after applying the command line's choices. --weld-eps without
+//! --weld implies --weld epsilon.
+BuildOptions build_options(io::Format format, const LoadOptions& options);
+
+struct LoadedMesh {
+  SurfaceMesh mesh;
+  BuildReport report;
+  io::Format format = io::Format::obj;
+};
+
+//! Reads and builds `path`. Errors that do not name the file already (topology, invalid input) are
+//! rethrown with "path: " in front, keeping their type.
+LoadedMesh load_mesh(const std::string& path, const LoadOptions& options);
+
+//! Lower-case name of a format ("obj", "off", "ply", "stl").
+const char* format_name(io::Format format);
+
+}  // namespace hedge::cli

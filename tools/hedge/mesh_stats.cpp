@@ -1,0 +1,109 @@
+#include "mesh_stats.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace hedge::cli {
+
+namespace {
+
+// Union-find with path halving; union by index keeps it simple and is fast enough for a CLI.
+class DisjointSets {
+ public:
+  explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), Index{0}); }
+  Index find(Index i) {
+    while (parent_[i] != i) {
+      parent_[i] = parent_[parent_[i]];
+      i = parent_[i];
+    }
+    return i;
+  }
+  void unite(Index a, Index b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<Index> parent_;
+};
+
+}  // namespace
+
+std::size_t count_components(const SurfaceMesh& mesh) {
+  DisjointSets sets(mesh.vertices_size());
+  for (Edge e : mesh.edges()) sets.unite(mesh.vertex(e, 0).idx(), mesh.vertex(e, 1).idx());
+  std::size_t components = 0;
+  for (Vertex v : mesh.vertices()) {
+    if (!mesh.is_isolated(v) && sets.find(v.idx()) == v.idx()) ++components;
+  }
+  return components;
+}
+
+MeshStats compute_stats(const SurfaceMesh& mesh) {
+  MeshStats s;
+  s.vertices = mesh.n_vertices();
+  s.edges = mesh.n_edges();
+  s.faces = mesh.n_faces();
+  s.halfedges = mesh.n_halfedges();
+  s.problems = mesh.validate();
+  s.euler_characteristic = static_cast<std::int64_t>(s.vertices) - static_cast<std::int64_t>(s.edges) +
+                           static_cast<std::int64_t>(s.faces);
+  s.is_triangle_mesh = s.faces > 0 && mesh.is_triangle_mesh();
+  s.is_quad_mesh = s.faces > 0 && mesh.is_quad_mesh();
+
+  // The queries below walk the connectivity; on a broken mesh they could go astray, so they are
+  // left at their defaults unless validate() found nothing.
+  if (!s.problems.empty()) return s;
+  s.boundary_loops = mesh.boundary_loops().size();
+  s.components = count_components(mesh);
+  s.is_manifold = true;
+  for (Vertex v : mesh.vertices()) {
+    if (mesh.is_isolated(v)) {
+      ++s.isolated_vertices;
+    } else if (!mesh.is_manifold(v)) {
+      s.is_manifold = false;
+    }
+  }
+  s.is_closed = s.faces > 0 && s.boundary_loops == 0;
+  const std::int64_t surface_chi = s.euler_characteristic - static_cast<std::int64_t>(s.isolated_vertices);
+  if (s.is_closed && s.components == 1 && surface_chi <= 2 && surface_chi % 2 == 0) {
+    s.genus = (2 - surface_chi) / 2;
+  }
+  return s;
+}
+
+std::vector<std::pair<const char*, std::size_t>> repair_counts(const BuildReport& r) {
+  return {{"welded_vertices", r.welded_vertices},         {"degenerate_faces", r.degenerate_faces},
+          {"repeated_corners", r.repeated_corners},       {"reoriented_faces", r.reoriented_faces},
+          {"non_manifold_edges", r.non_manifold_edges},   {"non_manifold_vertices", r.non_manifold_vertices},
+          {"duplicated_vertices", r.duplicated_vertices}, {"isolated_vertices", r.isolated_vertices}};
+}
+
+nlohmann::json repairs_json(const BuildReport& report) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, count] : repair_counts(report)) j[name] = count;
+  return j;
+}
+
+nlohmann::json stats_json(const MeshStats& s) {
+  nlohmann::json j;
+  j["vertices"] = s.vertices;
+  j["edges"] = s.edges;
+  j["faces"] = s.faces;
+  j["halfedges"] = s.halfedges;
+  j["boundary_loops"] = s.boundary_loops;
+  j["components"] = s.components;
+  j["isolated_vertices"] = s.isolated_vertices;
+  j["euler_characteristic"] = s.euler_characteristic;
+  j["genus"] = s.genus ? nlohmann::json(*s.genus) : nlohmann::json(nullptr);
+  j["is_closed"] = s.is_closed;
+  j["is_triangle_mesh"] = s.is_triangle_mesh;
+  j["is_quad_mesh"] = s.is_quad_mesh;
+  j["is_manifold"] = s.is_manifold;
+  j["valid"] = s.problems.empty();
+  j["problems"] = s.problems;
+  return j;
+}
+
+}  // namespace hedge::cli
