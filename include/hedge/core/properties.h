@@ -34,6 +34,14 @@ class BasePropertyArray {
   //! Keeps element i at new_index[i], dropping elements whose new index is invalid; new size n.
   virtual void compact(const std::vector<Index>& new_index, std::size_t n) = 0;
   virtual std::unique_ptr<BasePropertyArray> clone() const = 0;
+  //! A new, empty array of the same name, type and default value.
+  virtual std::unique_ptr<BasePropertyArray> empty_clone() const = 0;
+  //! Sets element dst to the weighted combination of elements src[0..n) (weights sum to 1).
+  //! Types with + and scalar * (floats, doubles, Vec2, Vec3, ...) blend linearly; any other type
+  //! takes the value of the source with the largest weight.
+  virtual void interpolate(std::size_t dst, const Index* src, const float* weights, std::size_t n) = 0;
+  //! Copies element si of `other` (an array of the same type) onto element di of this one.
+  virtual void copy_from(const BasePropertyArray& other, std::size_t si, std::size_t di) = 0;
   //! Bytes held by this array (its capacity), for memory accounting.
   virtual std::size_t bytes() const = 0;
 
@@ -62,6 +70,25 @@ class PropertyArray final : public BasePropertyArray {
   }
   std::unique_ptr<BasePropertyArray> clone() const override {
     return std::make_unique<PropertyArray<T>>(*this);
+  }
+  std::unique_ptr<BasePropertyArray> empty_clone() const override {
+    return std::make_unique<PropertyArray<T>>(name(), default_);
+  }
+  void interpolate(std::size_t dst, const Index* src, const float* w, std::size_t n) override {
+    if (n == 0) return;
+    if constexpr (!std::is_integral_v<T> && requires(T a, float f) { a = a * f + a * f; }) {
+      T acc = data_[src[0]] * w[0];
+      for (std::size_t i = 1; i < n; ++i) acc = acc + data_[src[i]] * w[i];
+      data_[dst] = acc;
+    } else {
+      std::size_t best = 0;
+      for (std::size_t i = 1; i < n; ++i)
+        if (w[i] > w[best]) best = i;
+      data_[dst] = data_[src[best]];
+    }
+  }
+  void copy_from(const BasePropertyArray& other, std::size_t si, std::size_t di) override {
+    data_[di] = static_cast<const PropertyArray<T>&>(other).data_[si];
   }
   std::size_t bytes() const override { return data_.capacity() * sizeof(T); }
 
@@ -171,6 +198,28 @@ class PropertyContainer {
   void compact(const std::vector<Index>& new_index, std::size_t n) {
     for (auto& a : arrays_) a->compact(new_index, n);
     size_ = n;
+  }
+  //! Interpolates every property onto element dst (see BasePropertyArray::interpolate).
+  void interpolate(std::size_t dst, const Index* src, const float* weights, std::size_t n) {
+    for (auto& a : arrays_) a->interpolate(dst, src, weights, n);
+  }
+  //! Adds, empty, every array of `other` that this container lacks (same name and type).
+  void add_missing_from(const PropertyContainer& other) {
+    for (const auto& a : other.arrays_) {
+      BasePropertyArray* mine = find_base(a->name());
+      if (mine && mine->type() == a->type()) continue;
+      if (mine) remove(a->name());
+      auto copy = a->empty_clone();
+      copy->resize(size_);
+      arrays_.push_back(std::move(copy));
+    }
+  }
+  //! Copies element si of `other` onto element di, for every array both containers hold.
+  void copy_element_from(const PropertyContainer& other, std::size_t si, std::size_t di) {
+    for (auto& a : arrays_) {
+      BasePropertyArray* src = other.find_base(a->name());
+      if (src && src->type() == a->type()) a->copy_from(*src, si, di);
+    }
   }
   void shrink_to_fit() {
     for (auto& a : arrays_) a->shrink_to_fit();

@@ -241,6 +241,15 @@ class SurfaceMesh {
   void mark_deleted(Vertex v);
   void mark_deleted(Edge e);
   void mark_deleted(Face f);
+  //! Property containers, for operations that carry every property of an element along.
+  PropertyContainer& vertex_properties() { return vprops_; }
+  PropertyContainer& halfedge_properties() { return hprops_; }
+  PropertyContainer& edge_properties() { return eprops_; }
+  PropertyContainer& face_properties() { return fprops_; }
+  const PropertyContainer& vertex_properties() const { return vprops_; }
+  const PropertyContainer& halfedge_properties() const { return hprops_; }
+  const PropertyContainer& edge_properties() const { return eprops_; }
+  const PropertyContainer& face_properties() const { return fprops_; }
   //! Reserve storage for n_v vertices, n_e edges and n_f faces.
   void reserve(std::size_t n_v, std::size_t n_e, std::size_t n_f);
   //! Resizes every element array (connectivity set to invalid). Used by builders.

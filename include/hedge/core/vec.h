@@ -16,6 +16,14 @@ struct VecN<T, 2> {
   constexpr T& operator[](std::size_t i) { return i == 0 ? x : y; }
   constexpr const T& operator[](std::size_t i) const { return i == 0 ? x : y; }
   friend constexpr bool operator==(const VecN&, const VecN&) = default;
+
+  constexpr VecN& operator+=(const VecN& o) { x += o.x; y += o.y; return *this; }
+  constexpr VecN& operator-=(const VecN& o) { x -= o.x; y -= o.y; return *this; }
+  constexpr VecN& operator*=(T s) { x *= s; y *= s; return *this; }
+  friend constexpr VecN operator+(VecN a, const VecN& b) { return a += b; }
+  friend constexpr VecN operator-(VecN a, const VecN& b) { return a -= b; }
+  friend constexpr VecN operator*(VecN a, T s) { return a *= s; }
+  friend constexpr VecN operator*(T s, VecN a) { return a *= s; }
 };
 
 template <typename T>

@@ -1,0 +1,57 @@
+// Seeded random sequences of local operations: the stress driver behind the test suite, the
+// `hedge stress` command and the operation benchmarks.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hedge/core/surface_mesh.h"
+
+namespace hedge {
+
+enum class EditKind : int {
+  split_edge,
+  collapse,
+  flip,
+  split_face,
+  cut_face,         //!< split_face(f, h0, h1) on a polygon
+  remove_face,      //!< remove_face, then add_face with the same corners when possible
+  remove_vertex,    //!< remove_vertex, then fill_hole on the hole it leaves
+  count
+};
+inline constexpr std::size_t kEditKinds = static_cast<std::size_t>(EditKind::count);
+const char* edit_name(EditKind k);
+
+struct RandomEditOptions {
+  std::uint64_t seed = 1;
+  std::size_t operations = 1000;
+  //! Run validate() after every n-th operation (1: after each); 0 validates only at the end.
+  std::size_t validate_every = 0;
+  //! Compact with garbage_collection() after every n-th operation; 0 never.
+  std::size_t collect_every = 5000;
+};
+
+struct RandomEditReport {
+  std::array<std::size_t, kEditKinds> applied{};
+  std::array<std::size_t, kEditKinds> refused{};
+  //! Operations after which V - E + F differed from what the operation predicts.
+  std::size_t euler_mismatches = 0;
+  //! False if any validation failed; problems holds the first failing report.
+  bool valid = true;
+  std::size_t first_invalid_operation = 0;
+  EditKind first_invalid_kind = EditKind::count;  //!< the operation after which validation failed
+  std::vector<std::string> problems;
+  std::size_t total_applied() const;
+  std::size_t total_refused() const;
+};
+
+//! Applies `options.operations` random operations chosen with a seeded generator (the same seed
+//! gives the same sequence on every platform). Each pick is checked with the operation's
+//! predicate; a refused pick is counted and must leave the mesh unchanged. The mesh size is kept
+//! within a factor of four of its start by steering between splits and collapses.
+//! Stops early when validation fails. O(operations x valence), plus O(n) per validation.
+RandomEditReport random_edits(SurfaceMesh& mesh, const RandomEditOptions& options);
+
+}  // namespace hedge

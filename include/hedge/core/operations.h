@@ -1,0 +1,101 @@
+// Local topology edits on a SurfaceMesh.
+//
+// Every operation that can be illegal has a public predicate (can_*) and returns an empty result
+// (an invalid handle, false, or an empty list) when refused; a refused operation leaves the mesh
+// exactly as it was. Each costs O(1) or O(valence) unless noted. Properties follow the edits:
+//  - vertex properties of a new vertex are interpolated from the vertices around it (blended for
+//    float-like types, taken from the nearest source otherwise; see BasePropertyArray::interpolate);
+//  - corner (half-edge) properties such as "h:texcoord" are interpolated along a split edge and
+//    copied to the corners a face is split into;
+//  - face properties are copied to the faces a face is split into; edge properties are copied to
+//    the two halves of a split edge.
+// Deleted elements stay in storage until garbage_collection().
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "hedge/core/surface_mesh.h"
+
+namespace hedge {
+
+//! True if e can be split (e is live). O(1).
+bool can_split_edge(const SurfaceMesh& mesh, Edge e);
+//! Inserts a vertex at `point` on e (the original's SplitHalfEdge). A triangle on either side is
+//! split into two triangles; a polygon simply gains the vertex. `point` may lie anywhere, even off
+//! the segment; interpolation uses its projection onto the edge, clamped to the segment.
+//! \return the new vertex; halfedge(e, 0) now runs from vertex(e, 0) to it. Invalid if refused.
+Vertex split_edge(SurfaceMesh& mesh, Edge e, const Vec3& point);
+
+//! True if collapsing h keeps the mesh a valid, manifold surface: the link condition holds (the
+//! ends share no neighbour but the tips of the triangles on h), the faces on h are distinct, no
+//! interior vertex is left with valence below 3 (which also refuses the collapse of a
+//! tetrahedron), no edge is left with a boundary on both sides, and an interior edge does not join
+//! two boundary vertices. O(valence).
+bool can_collapse(const SurfaceMesh& mesh, Halfedge h);
+//! Merges from_vertex(h) into to_vertex(h) (the original's EdgeCollapse); the caller chooses the
+//! survivor by choosing the direction of h, and keeps or sets its position. Triangles on h vanish
+//! and their two other edges merge. \return the surviving vertex, invalid if refused. O(valence).
+Vertex collapse(SurfaceMesh& mesh, Halfedge h);
+
+//! True if e is interior, both its faces are triangles, its tips differ and are not joined by an
+//! edge already, and neither end is an interior vertex of valence 3. O(valence).
+bool can_flip(const SurfaceMesh& mesh, Edge e);
+//! Turns e to join the two tips of its triangles (the article's EdgeFlip). \return e, invalid if refused.
+Edge flip(SurfaceMesh& mesh, Edge e);
+
+//! True if f is live. O(1).
+bool can_split_face(const SurfaceMesh& mesh, Face f);
+//! Inserts a vertex at `point` into f and connects it to every corner (the original's SplitFace):
+//! a triangle becomes 3 triangles, an n-gon n triangles. The new vertex's properties are
+//! interpolated with barycentric weights on a triangle and equal weights on a polygon.
+//! \return the new vertex, invalid if refused. O(face degree).
+Vertex split_face(SurfaceMesh& mesh, Face f, const Vec3& point);
+
+//! True if h0 and h1 lie in the same live face, their targets are not adjacent in it, and no edge
+//! joins them yet. O(face degree + valence).
+bool can_split_face(const SurfaceMesh& mesh, Halfedge h0, Halfedge h1);
+//! Cuts the face of h0 and h1 along a new edge from to_vertex(h0) to to_vertex(h1).
+//! \return the new half-edge from to_vertex(h0) to to_vertex(h1), invalid if refused.
+Halfedge split_face(SurfaceMesh& mesh, Halfedge h0, Halfedge h1);
+
+//! Splits every live face at its centroid (the original's split-all-faces). \return the new vertices. O(n).
+std::vector<Vertex> split_all_faces(SurfaceMesh& mesh);
+
+//! True if a face with these corners can be added while every vertex and edge stays manifold:
+//! at least 3 distinct live vertices; each existing edge free on the new face's side; each
+//! non-isolated vertex on a boundary, with the new face entering its boundary gap. O(n valence).
+bool can_add_face(const SurfaceMesh& mesh, std::span<const Vertex> vertices);
+//! Adds a face with the given corners (counter-clockwise); boundaries are relinked.
+//! \attention Vertices stay manifold, so a face that would meet the mesh at a vertex only (no
+//! shared edge there) is refused. Building face by face therefore needs an order in which each
+//! face meets the faces before it along edges (breadth-first over adjacency); for bulk input in any
+//! order, use build(), which is also O(n) instead of O(n valence).
+//! \return the new face, invalid if refused.
+Face add_face(SurfaceMesh& mesh, std::span<const Vertex> vertices);
+
+//! True if removing f leaves every vertex manifold (a vertex already on a boundary must share a
+//! boundary edge with f). O(face degree).
+bool can_remove_face(const SurfaceMesh& mesh, Face f);
+//! Removes f; edges left with no face are removed, and so are vertices left with no edge.
+//! \return false if refused.
+bool remove_face(SurfaceMesh& mesh, Face f);
+
+//! True if removing v with its faces leaves every remaining vertex manifold. O(valence^2).
+bool can_remove_vertex(const SurfaceMesh& mesh, Vertex v);
+//! Removes v, its faces, and what they leave unused. \return false if refused.
+bool remove_vertex(SurfaceMesh& mesh, Vertex v);
+
+//! Fills the boundary loop of boundary half-edge h with triangles, choosing each time the shortest
+//! diagonal that does not exist yet; a loop that cannot be triangulated that way keeps one
+//! polygon for its rest. \return the new faces, empty if h is not a live boundary half-edge.
+//! O(loop length^2).
+std::vector<Face> fill_hole(SurfaceMesh& mesh, Halfedge h);
+
+//! Copies `faces` out as a new SurfaceMesh with all their properties, and removes them from
+//! `mesh`. Vertices of `mesh` that the removal leaves pinched (two fans) are split, so both
+//! meshes stay manifold. `vertex_origin`, if given, receives new-mesh vertex -> source vertex.
+//! Deleted or repeated faces are ignored. O(size of the set + its one-ring).
+SurfaceMesh detach_faces(SurfaceMesh& mesh, std::span<const Face> faces, std::vector<Vertex>* vertex_origin = nullptr);
+
+}  // namespace hedge

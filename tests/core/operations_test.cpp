@@ -1,0 +1,493 @@
+#include "hedge/core/operations.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "hedge/core/build.h"
+#include "test_meshes.h"
+
+namespace hedge {
+namespace {
+
+struct Counts {
+  long long v, e, f;
+  long long chi() const { return v - e + f; }
+};
+Counts counts(const SurfaceMesh& m) {
+  return {static_cast<long long>(m.n_vertices()), static_cast<long long>(m.n_edges()),
+          static_cast<long long>(m.n_faces())};
+}
+
+// Everything observable about a mesh: connectivity, deletion state, positions and a test property.
+struct Snapshot {
+  std::vector<Vertex> hv;
+  std::vector<Halfedge> hn;
+  std::vector<Face> hf;
+  std::vector<Halfedge> vh, fh;
+  std::vector<bool> vdel, edel, fdel;
+  std::vector<Vec3> pos;
+  std::vector<Vec2> uv;
+  std::vector<float> weight;
+  bool operator==(const Snapshot&) const = default;
+};
+Snapshot snapshot(const SurfaceMesh& m) {
+  Snapshot s;
+  s.hv = m.halfedge_vertex_array();
+  s.hn = m.halfedge_next_array();
+  s.hf = m.halfedge_face_array();
+  for (Index i = 0; i < m.vertices_size(); ++i) {
+    s.vh.push_back(m.halfedge(Vertex(i)));
+    s.vdel.push_back(m.is_deleted(Vertex(i)));
+    s.pos.push_back(m.position(Vertex(i)));
+  }
+  for (Index i = 0; i < m.faces_size(); ++i) {
+    s.fh.push_back(m.halfedge(Face(i)));
+    s.fdel.push_back(m.is_deleted(Face(i)));
+  }
+  for (Index i = 0; i < m.edges_size(); ++i) s.edel.push_back(m.is_deleted(Edge(i)));
+  if (auto uv = m.get_halfedge_property<Vec2>("h:texcoord")) s.uv = uv.vector();
+  if (auto w = m.get_vertex_property<float>("v:weight")) s.weight = w.vector();
+  return s;
+}
+
+// A grid whose corners carry their xy position as texcoord, and vertices a weight = x.
+SurfaceMesh textured_grid(int n, bool tri) {
+  IndexedMesh in = test::grid(n, tri);
+  for (Index i : in.indices) {
+    in.texcoord_indices.push_back(static_cast<Index>(in.texcoords.size()));
+    in.texcoords.push_back({in.positions[i].x, in.positions[i].y});
+  }
+  SurfaceMesh m = build(in);
+  auto w = m.add_vertex_property<float>("v:weight");
+  for (Vertex v : m.vertices()) w[v] = m.position(v).x;
+  return m;
+}
+
+void expect_corner_uv_matches_position(const SurfaceMesh& m) {
+  auto uv = m.get_halfedge_property<Vec2>("h:texcoord");
+  for (Face f : m.faces())
+    for (Halfedge h : m.halfedges(f)) {
+      const Vec3 p = m.position(m.to_vertex(h));
+      EXPECT_NEAR(uv[h].x, p.x, 1e-5f);
+      EXPECT_NEAR(uv[h].y, p.y, 1e-5f);
+    }
+}
+
+TEST(SplitEdge, InteriorEdgeSplitsBothTriangles) {
+  SurfaceMesh m = textured_grid(2, true);
+  Counts before = counts(m);
+  Edge e = m.find_edge(Vertex(0), Vertex(4));  // a diagonal
+  ASSERT_TRUE(e.is_valid());
+  ASSERT_FALSE(m.is_boundary(e));
+  Vertex v = split_edge(m, e, {0.5f, 0.5f, 0});
+  ASSERT_TRUE(v.is_valid());
+  Counts after = counts(m);
+  EXPECT_EQ(after.v, before.v + 1);
+  EXPECT_EQ(after.e, before.e + 3);
+  EXPECT_EQ(after.f, before.f + 2);
+  EXPECT_EQ(m.valence(v), 4u);
+  EXPECT_NEAR(m.get_vertex_property<float>("v:weight")[v], 0.5f, 1e-6f);
+  expect_corner_uv_matches_position(m);
+  EXPECT_TRUE(m.is_triangle_mesh());
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(SplitEdge, BoundaryEdgeSplitsOneTriangle) {
+  SurfaceMesh m = textured_grid(2, true);
+  Counts before = counts(m);
+  Edge e = m.find_edge(Vertex(0), Vertex(1));
+  ASSERT_TRUE(m.is_boundary(e));
+  Vertex v = split_edge(m, e, {0.25f, 0, 0});
+  ASSERT_TRUE(v.is_valid());
+  EXPECT_EQ(counts(m).v, before.v + 1);
+  EXPECT_EQ(counts(m).e, before.e + 2);
+  EXPECT_EQ(counts(m).f, before.f + 1);
+  EXPECT_TRUE(m.is_boundary(v));
+  EXPECT_TRUE(m.is_boundary(m.halfedge(v)));
+  expect_corner_uv_matches_position(m);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(SplitEdge, PolygonGainsTheVertexAndOffSegmentPointsWork) {
+  SurfaceMesh m = build(test::cube());
+  Counts before = counts(m);
+  Vertex v = split_edge(m, Edge(0), {5, 5, 5});  // far off the segment
+  ASSERT_TRUE(v.is_valid());
+  EXPECT_EQ(m.position(v), (Vec3{5, 5, 5}));
+  EXPECT_EQ(counts(m).v, before.v + 1);
+  EXPECT_EQ(counts(m).e, before.e + 1);
+  EXPECT_EQ(counts(m).f, before.f);
+  std::size_t pentagons = 0;
+  for (Face f : m.faces()) pentagons += m.valence(f) == 5;
+  EXPECT_EQ(pentagons, 2u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(SplitEdge, RepeatedSplitsKeepNoState) {
+  // The original guarded SplitHalfEdge with a recursion lock; here each call is independent.
+  SurfaceMesh m = build(test::tetrahedron());
+  for (int i = 0; i < 50; ++i) {
+    Edge e(static_cast<Index>(i % m.edges_size()));
+    Vec3 a = m.position(m.vertex(e, 0)), b = m.position(m.vertex(e, 1));
+    ASSERT_TRUE(split_edge(m, e, (a + b) * 0.5f).is_valid());
+    ASSERT_TRUE(m.validate().empty());
+  }
+  EXPECT_EQ(counts(m).chi(), 2);
+  EXPECT_FALSE(split_edge(m, Edge(9999), {}).is_valid());
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Collapse, InteriorEdgeKeepsTheChosenVertex) {
+  SurfaceMesh m = textured_grid(4, true);
+  Counts before = counts(m);
+  Halfedge h = m.find_halfedge(Vertex(6), Vertex(12));  // interior diagonal, both interior
+  ASSERT_TRUE(h.is_valid());
+  ASSERT_TRUE(can_collapse(m, h));
+  Vertex kept = collapse(m, h);
+  EXPECT_EQ(kept, Vertex(12));
+  EXPECT_TRUE(m.is_deleted(Vertex(6)));
+  EXPECT_EQ(counts(m).v, before.v - 1);
+  EXPECT_EQ(counts(m).e, before.e - 3);
+  EXPECT_EQ(counts(m).f, before.f - 2);
+  EXPECT_TRUE(m.validate().empty());
+  m.garbage_collection();
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Collapse, BoundaryEdgeAndVertexNearBoundary) {
+  SurfaceMesh m = build(test::grid(4, true));
+  Halfedge b = m.find_halfedge(Vertex(1), Vertex(2));
+  ASSERT_TRUE(m.is_boundary(m.edge(b)));
+  Counts before = counts(m);
+  ASSERT_TRUE(collapse(m, b).is_valid());
+  EXPECT_EQ(counts(m).f, before.f - 1);
+  EXPECT_EQ(counts(m).chi(), before.chi());
+  EXPECT_TRUE(m.validate().empty());
+  // Interior vertex 6 into boundary vertex 5... (5 is on the left column? no: row 1, column 0 is 5)
+  Halfedge h = m.find_halfedge(Vertex(6), Vertex(5));
+  ASSERT_TRUE(h.is_valid());
+  EXPECT_TRUE(can_collapse(m, h));
+  EXPECT_TRUE(collapse(m, h).is_valid());
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Collapse, RefusalsLeaveTheMeshUntouched) {
+  // Every edge of a tetrahedron: collapsing would leave a doubled triangle.
+  SurfaceMesh tet = build(test::tetrahedron());
+  Snapshot s = snapshot(tet);
+  for (Halfedge h : tet.halfedges()) {
+    EXPECT_FALSE(can_collapse(tet, h));
+    EXPECT_FALSE(collapse(tet, h).is_valid());
+  }
+  EXPECT_TRUE(snapshot(tet) == s);
+
+  // An interior edge joining two boundary vertices would pinch the surface.
+  SurfaceMesh grid = textured_grid(2, true);
+  Snapshot g = snapshot(grid);
+  Halfedge pinch = grid.find_halfedge(Vertex(1), Vertex(4));
+  Halfedge pinch2 = grid.find_halfedge(Vertex(3), Vertex(1));
+  for (Halfedge h : {pinch, pinch2}) {
+    if (!h.is_valid()) continue;
+    if (!grid.is_boundary(grid.edge(h)) && grid.is_boundary(grid.from_vertex(h)) && grid.is_boundary(grid.to_vertex(h))) {
+      EXPECT_FALSE(collapse(grid, h).is_valid());
+    }
+  }
+  // A lone triangle: any collapse would leave a dangling edge.
+  IndexedMesh tri;
+  tri.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  tri.indices = {0, 1, 2};
+  SurfaceMesh t = build(tri);
+  Snapshot ts = snapshot(t);
+  for (Halfedge h : t.halfedges()) EXPECT_FALSE(collapse(t, h).is_valid());
+  EXPECT_TRUE(snapshot(t) == ts);
+  EXPECT_TRUE(snapshot(grid) == g);
+  EXPECT_TRUE(grid.validate().empty());
+}
+
+TEST(Collapse, LinkConditionRefusesClosingATriangularHole) {
+  // A tetrahedron without one face: the hole's edges join vertices whose third common neighbour
+  // lies across the hole, not on a triangle of the edge.
+  IndexedMesh in = test::tetrahedron();
+  in.indices.resize(9);
+  SurfaceMesh m = build(in);
+  ASSERT_EQ(m.boundary_loops().size(), 1u);
+  Snapshot s = snapshot(m);
+  for (Halfedge h : m.halfedges())
+    if (m.is_boundary(m.edge(h))) EXPECT_FALSE(collapse(m, h).is_valid());
+  EXPECT_TRUE(snapshot(m) == s);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Collapse, EveryEdgeOfATriangulatedCube) {
+  IndexedMesh cube = test::cube();
+  IndexedMesh tri;
+  tri.positions = cube.positions;
+  for (std::size_t f = 0; f < 6; ++f) {
+    const Index* q = &cube.indices[4 * f];
+    tri.indices.insert(tri.indices.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+  }
+  SurfaceMesh m = build(tri);
+  std::size_t refused = 0, done = 0;
+  for (Halfedge h : m.halfedges()) {
+    SurfaceMesh copy = m;
+    Snapshot s = snapshot(copy);
+    if (collapse(copy, h).is_valid()) {
+      ++done;
+      EXPECT_TRUE(copy.validate().empty());
+      EXPECT_EQ(counts(copy).chi(), 2);
+      EXPECT_EQ(copy.n_vertices(), 7u);
+    } else {
+      ++refused;
+      EXPECT_TRUE(snapshot(copy) == s);
+    }
+  }
+  EXPECT_EQ(done + refused, m.n_halfedges());
+  EXPECT_GT(done, 0u);
+}
+
+TEST(Collapse, UntilRefusedEndsValid) {
+  SurfaceMesh m = build(test::grid(6, true));
+  bool any = true;
+  while (any) {
+    any = false;
+    for (Halfedge h : m.halfedges())
+      if (can_collapse(m, h)) {
+        collapse(m, h);
+        any = true;
+        ASSERT_TRUE(m.validate().empty());
+      }
+  }
+  EXPECT_EQ(counts(m).chi(), 1);
+  EXPECT_LE(m.n_faces(), 2u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Flip, TurnsTheDiagonalAndBack) {
+  SurfaceMesh m = textured_grid(1, true);  // two triangles 0-1-3, 0-3-2
+  Edge e = m.find_edge(Vertex(0), Vertex(3));
+  ASSERT_TRUE(can_flip(m, e));
+  ASSERT_EQ(flip(m, e), e);
+  EXPECT_TRUE(m.find_edge(Vertex(1), Vertex(2)).is_valid());
+  EXPECT_FALSE(m.find_edge(Vertex(0), Vertex(3)).is_valid());
+  expect_corner_uv_matches_position(m);
+  EXPECT_TRUE(m.validate().empty());
+  ASSERT_EQ(flip(m, e), e);
+  EXPECT_TRUE(m.find_edge(Vertex(0), Vertex(3)).is_valid());
+  expect_corner_uv_matches_position(m);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Flip, Refusals) {
+  SurfaceMesh tet = build(test::tetrahedron());
+  Snapshot s = snapshot(tet);
+  for (Edge e : tet.edges()) EXPECT_FALSE(flip(tet, e).is_valid());  // the flipped edge exists
+  EXPECT_TRUE(snapshot(tet) == s);
+  SurfaceMesh quads = build(test::grid(2, false));
+  Snapshot q = snapshot(quads);
+  for (Edge e : quads.edges()) EXPECT_FALSE(flip(quads, e).is_valid());  // not triangles / boundary
+  EXPECT_TRUE(snapshot(quads) == q);
+  EXPECT_TRUE(quads.validate().empty());
+}
+
+TEST(SplitFace, TriangleAndPolygon) {
+  SurfaceMesh m = textured_grid(1, true);
+  Counts before = counts(m);
+  Vertex v = split_face(m, Face(0), {0.6f, 0.3f, 0});
+  ASSERT_TRUE(v.is_valid());
+  EXPECT_EQ(counts(m).v, before.v + 1);
+  EXPECT_EQ(counts(m).e, before.e + 3);
+  EXPECT_EQ(counts(m).f, before.f + 2);
+  EXPECT_EQ(m.valence(v), 3u);
+  EXPECT_NEAR(m.get_vertex_property<float>("v:weight")[v], 0.6f, 1e-5f);  // barycentric blend of x
+  expect_corner_uv_matches_position(m);
+  EXPECT_TRUE(m.validate().empty());
+
+  SurfaceMesh c = build(test::cube());
+  auto label = c.add_face_property<int>("f:label", 0);
+  label[Face(2)] = 7;
+  v = split_face(c, Face(2), {0.5f, 0, 0.5f});
+  EXPECT_EQ(c.valence(v), 4u);
+  EXPECT_EQ(c.n_faces(), 9u);
+  std::size_t labelled = 0;
+  for (Face f : c.faces(v)) labelled += label[f] == 7;
+  EXPECT_EQ(labelled, 4u);
+  EXPECT_TRUE(c.validate().empty());
+}
+
+TEST(SplitFace, CutAlongDiagonal) {
+  SurfaceMesh m = textured_grid(1, false);  // one quad
+  Halfedge h0 = m.halfedge(Face(0));
+  Halfedge adjacent = m.next(h0);
+  Snapshot s = snapshot(m);
+  EXPECT_FALSE(split_face(m, h0, adjacent).is_valid());
+  EXPECT_FALSE(split_face(m, h0, h0).is_valid());
+  EXPECT_TRUE(snapshot(m) == s);
+  Halfedge h1 = m.next(m.next(h0));
+  Halfedge n = split_face(m, h0, h1);
+  ASSERT_TRUE(n.is_valid());
+  EXPECT_EQ(m.from_vertex(n), m.to_vertex(h0));
+  EXPECT_EQ(m.to_vertex(n), m.to_vertex(h1));
+  EXPECT_TRUE(m.is_triangle_mesh());
+  EXPECT_EQ(m.n_faces(), 2u);
+  expect_corner_uv_matches_position(m);
+  EXPECT_TRUE(m.validate().empty());
+  // The diagonal now exists: cutting again is refused.
+  EXPECT_FALSE(can_split_face(m, m.prev(n), m.next(n)));
+}
+
+TEST(SplitFace, SplitAllFacesTriplesTriangles) {
+  SurfaceMesh m = build(test::tetrahedron());
+  auto added = split_all_faces(m);
+  EXPECT_EQ(added.size(), 4u);
+  EXPECT_EQ(m.n_faces(), 12u);
+  EXPECT_EQ(counts(m).chi(), 2);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(AddRemoveFace, RemoveThenAddRestores) {
+  SurfaceMesh m = build(test::tetrahedron());
+  std::vector<Vertex> corners;
+  for (Vertex v : m.vertices(Face(1))) corners.push_back(v);
+  ASSERT_TRUE(remove_face(m, Face(1)));
+  EXPECT_EQ(m.boundary_loops().size(), 1u);
+  EXPECT_EQ(m.n_faces(), 3u);
+  EXPECT_TRUE(m.validate().empty());
+  Face f = add_face(m, corners);
+  ASSERT_TRUE(f.is_valid());
+  EXPECT_TRUE(m.boundary_loops().empty());
+  EXPECT_EQ(counts(m).chi(), 2);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(AddRemoveFace, BuildFaceByFaceMatchesBulkBuild) {
+  // add_face keeps every vertex manifold, so a face must meet the mesh along an edge (a face
+  // touching it at a vertex only is refused until a neighbour joins them): add faces in
+  // breadth-first order over their adjacency, deferring those not attachable yet.
+  IndexedMesh in = test::grid(4, true);
+  SurfaceMesh bulk = build(in);
+  std::vector<std::size_t> pending;
+  std::vector<bool> queued(bulk.faces_size(), false);
+  pending.push_back(0);
+  queued[0] = true;
+  for (std::size_t i = 0; i < pending.size(); ++i)
+    for (Face g : bulk.faces(Face(static_cast<Index>(pending[i]))))
+      if (!queued[g.idx()]) {
+        queued[g.idx()] = true;
+        pending.push_back(g.idx());
+      }
+  ASSERT_EQ(pending.size(), bulk.n_faces());
+  for (auto& t : pending) t *= 3;
+  SurfaceMesh m;
+  for (const Vec3& p : in.positions) m.add_vertex(p);
+  while (!pending.empty()) {
+    std::vector<std::size_t> later;
+    for (std::size_t t : pending) {
+      Vertex tri[3] = {Vertex(in.indices[t]), Vertex(in.indices[t + 1]), Vertex(in.indices[t + 2])};
+      if (add_face(m, tri).is_valid()) ASSERT_TRUE(m.validate().empty()) << "after face " << t / 3;
+      else later.push_back(t);
+    }
+    ASSERT_LT(later.size(), pending.size());
+    pending.swap(later);
+  }
+  EXPECT_EQ(m.n_edges(), bulk.n_edges());
+  EXPECT_EQ(m.n_faces(), bulk.n_faces());
+  EXPECT_EQ(m.boundary_loops().size(), 1u);
+  for (std::size_t t = 0; t < in.indices.size(); t += 3) {
+    Halfedge h = m.find_halfedge(Vertex(in.indices[t]), Vertex(in.indices[t + 1]));
+    ASSERT_TRUE(h.is_valid());
+    EXPECT_FALSE(m.is_boundary(h));
+    EXPECT_EQ(m.to_vertex(m.next(h)), Vertex(in.indices[t + 2]));
+  }
+}
+
+TEST(AddRemoveFace, RefusesNonManifoldResults) {
+  IndexedMesh in;
+  in.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}, {0, 1, 0}};
+  in.indices = {0, 1, 2};
+  SurfaceMesh m = build(in);
+  Snapshot s = snapshot(m);
+  Vertex bowtie[3] = {Vertex(0), Vertex(3), Vertex(4)};  // touches the triangle at vertex 0 only
+  EXPECT_FALSE(can_add_face(m, bowtie));
+  EXPECT_FALSE(add_face(m, bowtie).is_valid());
+  Vertex same_side[3] = {Vertex(0), Vertex(1), Vertex(5)};  // edge 0->1 already has its face
+  EXPECT_FALSE(add_face(m, same_side).is_valid());
+  Vertex repeated[3] = {Vertex(0), Vertex(1), Vertex(1)};
+  EXPECT_FALSE(add_face(m, repeated).is_valid());
+  EXPECT_TRUE(snapshot(m) == s);
+  // Across the free side of edge 1-0 is fine.
+  Vertex ok[3] = {Vertex(1), Vertex(0), Vertex(4)};
+  EXPECT_TRUE(add_face(m, ok).is_valid());
+  EXPECT_TRUE(m.validate().empty());
+  // Removing a face that touches the boundary only at a corner would pinch it: refused.
+  SurfaceMesh g = build(test::grid(3, false));
+  Face centre(4);
+  EXPECT_TRUE(can_remove_face(g, centre));
+  ASSERT_TRUE(remove_face(g, centre));
+  Snapshot gs = snapshot(g);
+  EXPECT_FALSE(remove_face(g, Face(0)));  // corner quad meets the new hole at a vertex only
+  EXPECT_TRUE(snapshot(g) == gs);
+  EXPECT_TRUE(g.validate().empty());
+}
+
+TEST(RemoveVertex, InteriorVertexLeavesAHoleThatFillHoleCloses) {
+  SurfaceMesh m = build(test::grid(4, true));
+  Counts before = counts(m);
+  Vertex v(12);  // the centre
+  std::size_t ring = m.valence(v);
+  Halfedge outer = m.next(m.halfedge(v));
+  ASSERT_TRUE(remove_vertex(m, v));
+  EXPECT_TRUE(m.is_deleted(v));
+  EXPECT_EQ(m.boundary_loops().size(), 2u);
+  EXPECT_EQ(counts(m).f, before.f - static_cast<long long>(ring));
+  EXPECT_TRUE(m.validate().empty());
+  auto faces = fill_hole(m, outer);
+  EXPECT_EQ(faces.size(), ring - 2);
+  EXPECT_EQ(m.boundary_loops().size(), 1u);
+  EXPECT_EQ(counts(m).chi(), before.chi() - 1 + 1);
+  EXPECT_TRUE(m.is_triangle_mesh());
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(FillHole, OuterLoopOfAGridMakesASphere) {
+  SurfaceMesh m = build(test::grid(3, false));
+  auto loops = m.boundary_loops();
+  ASSERT_EQ(loops.size(), 1u);
+  auto faces = fill_hole(m, loops[0]);
+  EXPECT_FALSE(faces.empty());
+  EXPECT_TRUE(m.boundary_loops().empty());
+  EXPECT_EQ(counts(m).chi(), 2);
+  EXPECT_TRUE(m.validate().empty());
+  EXPECT_TRUE(fill_hole(m, m.halfedge(Face(0))).empty());  // not a boundary half-edge
+}
+
+TEST(DetachFaces, CopiesPropertiesAndSplitsPinchedVertices) {
+  SurfaceMesh m = textured_grid(3, false);
+  auto label = m.add_face_property<int>("f:label", 0);
+  for (Face f : m.faces()) label[f] = static_cast<int>(f.idx()) + 100;
+  // Faces 0 and 4 touch at one vertex (5): the piece has two fans there.
+  std::vector<Face> set = {Face(0), Face(4)};
+  std::vector<Vertex> origin;
+  SurfaceMesh piece = detach_faces(m, set, &origin);
+  EXPECT_EQ(piece.n_faces(), 2u);
+  EXPECT_EQ(piece.n_vertices(), 8u);  // vertex 5 split in two
+  EXPECT_TRUE(piece.validate().empty());
+  auto plabel = piece.get_face_property<int>("f:label");
+  ASSERT_TRUE(plabel);
+  EXPECT_EQ(plabel[Face(0)], 100);
+  EXPECT_EQ(plabel[Face(1)], 104);
+  expect_corner_uv_matches_position(piece);
+  for (Vertex v : piece.vertices()) EXPECT_EQ(piece.position(v), m.position(origin[v.idx()]));
+  auto w = piece.get_vertex_property<float>("v:weight");
+  for (Vertex v : piece.vertices()) EXPECT_EQ(w[v], m.position(origin[v.idx()]).x);
+  // The source lost both faces; vertex 5 is pinched there too (faces 1, 3 remain on one side,
+  // and the removal leaves two gaps), so it is split.
+  EXPECT_EQ(m.n_faces(), 7u);
+  EXPECT_TRUE(m.validate().empty());
+  for (Vertex v : m.vertices()) EXPECT_TRUE(m.is_manifold(v));
+  m.garbage_collection();
+  EXPECT_TRUE(m.validate().empty());
+}
+
+}  // namespace
+}  // namespace hedge
