@@ -231,6 +231,35 @@ TEST_F(HedgeCli, ValidateExitCodes) {
   EXPECT_FALSE(sj["problems"].empty());
 }
 
+TEST_F(HedgeCli, EveryDataMeshIsValidAfterRepair) {
+  for (const auto& entry : fs::directory_iterator(kData)) {
+    const std::string ext = entry.path().extension().string();
+    if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl") continue;
+    const Result r = run({"validate", entry.path().string()});
+    EXPECT_EQ(r.code, 0) << entry.path() << ": " << r.out << r.err;
+  }
+}
+
+TEST_F(HedgeCli, StressReportsAppliedAndRefusedOperations) {
+  const json j = run_json({"stress", data("spot_control_mesh.obj"), "--ops", "1500", "--seed", "5", "--json"});
+  EXPECT_EQ(j["valid"], true);
+  EXPECT_TRUE(j["problems"].empty());
+  std::size_t applied = 0, refused = 0;
+  for (const auto& [name, n] : j["applied"].items()) applied += n.get<std::size_t>();
+  for (const auto& [name, n] : j["refused"].items()) refused += n.get<std::size_t>();
+  EXPECT_EQ(applied + refused, 1500u);
+  EXPECT_GT(j["applied"]["collapse"].get<std::size_t>(), 0u);
+  EXPECT_GT(j["applied"]["split_edge"].get<std::size_t>(), 0u);
+  // The same seed gives the same report.
+  const json again = run_json({"stress", data("spot_control_mesh.obj"), "--ops", "1500", "--seed", "5", "--json"});
+  EXPECT_EQ(again["applied"], j["applied"]);
+  EXPECT_EQ(again["faces"], j["faces"]);
+  const Result text = run({"stress", data("anchor.off"), "--ops", "500"});
+  EXPECT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("collapse"), std::string::npos);
+  expect_usage_error({"stress", data("anchor.off"), "--ops", "lots"});
+}
+
 TEST_F(HedgeCli, ConvertWritesAReadableFileInEveryFormat) {
   for (const std::string ext : {"ply", "off", "obj", "stl"}) {
     for (const bool ascii : {false, true}) {

@@ -32,7 +32,7 @@ int report_error(const std::string& message, int exit_code) {
 
 int main(int argc, char** argv) {
   using namespace hedge::cli;
-  CLI::App app{"hedge: inspect, check and convert polygon meshes (OBJ, OFF, PLY, STL)", "hedge"};
+  CLI::App app{"hedge: inspect, check, convert and edit polygon meshes (OBJ, OFF, PLY, STL)", "hedge"};
   app.set_version_flag("--version", HEDGE_VERSION);
   app.require_subcommand(1);
 
@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
       add_info_command(app),
       add_validate_command(app),
       add_convert_command(app),
+      add_stress_command(app),
   };
 
   try {
