@@ -95,15 +95,9 @@ Edge SurfaceMesh::find_edge(Vertex a, Vertex b) const {
   return h.is_valid() ? edge(h) : Edge();
 }
 
-FixedList<Face, 2> SurfaceMesh::faces(Edge e) const {
-  FixedList<Face, 2> out;
-  for (unsigned i = 0; i < 2; ++i)
-    if (Face f = face(e, i); f.is_valid()) out.push_back(f);
-  return out;
-}
-
 std::vector<Edge> SurfaceMesh::adjacent_edges(Edge e) const {
   std::vector<Edge> out;
+  out.reserve(12);
   for (unsigned i = 0; i < 2; ++i)
     for (Edge a : edges(vertex(e, i)))
       if (a != e) out.push_back(a);

@@ -124,6 +124,23 @@ TEST(SplitEdge, PolygonGainsTheVertexAndOffSegmentPointsWork) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+TEST(SplitEdge, UserInterpolationPolicy) {
+  SurfaceMesh m = textured_grid(2, true);
+  auto w = m.get_vertex_property<float>("v:weight");
+  // Keep the largest weight instead of blending (e.g. a "distance to the impact" field).
+  w.set_interpolator([](const float* values, const float*, std::size_t n) { return *std::max_element(values, values + n); });
+  auto tag = m.add_vertex_property<int>("v:tag", 0);
+  tag[Vertex(0)] = 3;
+  tag[Vertex(4)] = 9;
+  Vertex v = split_edge(m, m.find_edge(Vertex(0), Vertex(4)), {0.2f, 0.2f, 0});
+  EXPECT_EQ(w[v], 1.0f);     // max(x of vertex 0, x of vertex 4)
+  EXPECT_EQ(tag[v], 3);      // integers take the nearest source (vertex 0 at 20%)
+  w.set_interpolator({});
+  Vertex u = split_edge(m, m.find_edge(Vertex(1), Vertex(2)), {1.5f, 0, 0});
+  EXPECT_NEAR(w[u], 1.5f, 1e-6f);
+  EXPECT_TRUE(m.validate().empty());
+}
+
 TEST(SplitEdge, RepeatedSplitsKeepNoState) {
   // The original guarded SplitHalfEdge with a recursion lock; here each call is independent.
   SurfaceMesh m = build(test::tetrahedron());

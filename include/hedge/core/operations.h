@@ -4,7 +4,8 @@
 // (an invalid handle, false, or an empty list) when refused; a refused operation leaves the mesh
 // exactly as it was. Each costs O(1) or O(valence) unless noted. Properties follow the edits:
 //  - vertex properties of a new vertex are interpolated from the vertices around it (blended for
-//    float-like types, taken from the nearest source otherwise; see BasePropertyArray::interpolate);
+//    float-like types, taken from the nearest source otherwise; see BasePropertyArray::interpolate),
+//    or by a policy of the user's set per property with Property::set_interpolator();
 //  - corner (half-edge) properties such as "h:texcoord" are interpolated along a split edge and
 //    copied to the corners a face is split into;
 //  - face properties are copied to the faces a face is split into; edge properties are copied to

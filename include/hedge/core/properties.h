@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -54,6 +55,9 @@ class PropertyArray final : public BasePropertyArray {
   static_assert(!std::is_same_v<T, bool>, "use std::uint8_t for flags: std::vector<bool> has no references");
 
  public:
+  //! A user policy for new elements: the value from the sources' values and weights (n of each).
+  using Interpolator = std::function<T(const T* values, const float* weights, std::size_t n)>;
+
   PropertyArray(std::string name, T default_value)
       : BasePropertyArray(std::move(name)), default_(std::move(default_value)) {}
 
@@ -76,6 +80,18 @@ class PropertyArray final : public BasePropertyArray {
   }
   void interpolate(std::size_t dst, const Index* src, const float* w, std::size_t n) override {
     if (n == 0) return;
+    if (interpolator_) {
+      T values[16];
+      std::vector<T> many;
+      T* v = values;
+      if (n > 16) {
+        many.resize(n);
+        v = many.data();
+      }
+      for (std::size_t i = 0; i < n; ++i) v[i] = data_[src[i]];
+      data_[dst] = interpolator_(v, w, n);
+      return;
+    }
     if constexpr (!std::is_integral_v<T> && requires(T a, float f) { a = a * f + a * f; }) {
       T acc = data_[src[0]] * w[0];
       for (std::size_t i = 1; i < n; ++i) acc = acc + data_[src[i]] * w[i];
@@ -97,10 +113,13 @@ class PropertyArray final : public BasePropertyArray {
   T& operator[](std::size_t i) { return data_[i]; }
   const T& operator[](std::size_t i) const { return data_[i]; }
   const T& default_value() const { return default_; }
+  //! Replaces the default interpolation of this property; an empty function restores it.
+  void set_interpolator(Interpolator f) { interpolator_ = std::move(f); }
 
  private:
   std::vector<T> data_;
   T default_;
+  Interpolator interpolator_;
 };
 
 //! A typed view of one property array, indexed by the element handle type H.
@@ -118,6 +137,8 @@ class Property {
   const std::vector<T>& vector() const { return array_->vector(); }
   const std::string& name() const { return array_->name(); }
   PropertyArray<T>* array() const { return array_; }
+  //! How the operations fill this property on new elements (see PropertyArray::set_interpolator).
+  void set_interpolator(typename PropertyArray<T>::Interpolator f) { array_->set_interpolator(std::move(f)); }
 
  private:
   PropertyArray<T>* array_ = nullptr;

@@ -218,7 +218,12 @@ class SurfaceMesh {
   //! The two vertices of e.
   std::array<Vertex, 2> vertices(Edge e) const { return {vertex(e, 0), vertex(e, 1)}; }
   //! The faces on either side of e: one or two (a boundary side is left out).
-  FixedList<Face, 2> faces(Edge e) const;
+  FixedList<Face, 2> faces(Edge e) const {
+    FixedList<Face, 2> out;
+    if (Face f = face(e, 0); f.is_valid()) out.push_back(f);
+    if (Face f = face(e, 1); f.is_valid()) out.push_back(f);
+    return out;
+  }
   //! Edges sharing a vertex with e, e itself excluded. O(valence of both ends).
   std::vector<Edge> adjacent_edges(Edge e) const;
   //! One boundary half-edge per boundary loop. O(#half-edges).
