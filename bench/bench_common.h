@@ -63,6 +63,10 @@ struct OpImpl {
   std::unique_ptr<MeshBox> (*prepare)(const MeshBox& reference) = nullptr;
   //! Timed. Returns a checksum that must agree across backends (see OpSpec in peers.cpp).
   double (*run)(Context& ctx) = nullptr;
+  //! Untimed, after the warm-up run of an editing operation: the library's own validity checks on
+  //! the edited mesh, plus its element counts against the reference mesh and `checksum` (what run
+  //! returned). Returns an empty string if all is well, else what is wrong.
+  std::string (*check)(const MeshBox& reference, const MeshBox& edited, double checksum) = nullptr;
 };
 
 struct Backend {
@@ -115,6 +119,61 @@ struct RingSum {
   }
   double total() const { return x + y + z; }
 };
+
+// ---- Random local edits (collapse, split, flip), shared so every backend draws the same numbers. ----
+
+constexpr std::size_t kEditCount = 100000;   //!< attempts per sequence
+constexpr std::uint64_t kEditSeed = 0x5eed0f1a2b3c4d5eull;
+constexpr int kEditMaxRedraws = 64;          //!< draws of a deleted element before the attempt is given up
+
+//! splitmix64: a tiny seeded generator with the same output on every platform.
+struct EditRng {
+  std::uint64_t state = kEditSeed;
+  std::uint64_t next() {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+  //! Uniform in [0, n) (multiply-shift; n > 0).
+  std::size_t below(std::size_t n) {
+    return static_cast<std::size_t>((static_cast<unsigned __int128>(next()) * n) >> 64);
+  }
+  //! An index in [0, n) for which `deleted(i)` is false, redrawing up to kEditMaxRedraws times;
+  //! n (out of range) if every draw hit a deleted element. The same draws on every backend as
+  //! long as the element arrays agree.
+  template <class Deleted>
+  std::size_t live_index(std::size_t n, Deleted&& deleted) {
+    for (int k = 0; k < kEditMaxRedraws; ++k) {
+      const std::size_t i = below(n);
+      if (!deleted(i)) return i;
+    }
+    return n;
+  }
+};
+
+//! Element counts of a mesh, as its library reports them (live elements only).
+struct Counts {
+  std::size_t v = 0, e = 0, f = 0;
+  long long euler() const { return static_cast<long long>(v) - static_cast<long long>(e) + static_cast<long long>(f); }
+};
+enum class EditKind { collapse, split, flip };
+//! The element counts an edit sequence implies, whatever the library: every edit keeps the Euler
+//! characteristic; a collapse removes one vertex, a split adds one, a flip changes no count; a
+//! closed triangle mesh (3F = 2E) stays one. Returns an empty string if `after` agrees.
+inline std::string check_edit_counts(EditKind kind, const Counts& before, const Counts& after, double successes) {
+  const long long k = std::llround(successes);
+  const long long dv = kind == EditKind::collapse ? -k : kind == EditKind::split ? k : 0;
+  std::string err;
+  auto num = [](long long x) { return std::to_string(x); };
+  if (static_cast<long long>(after.v) != static_cast<long long>(before.v) + dv)
+    err += "vertices " + num(static_cast<long long>(after.v)) + ", expected " + num(static_cast<long long>(before.v) + dv) + "; ";
+  if (after.euler() != before.euler())
+    err += "V-E+F " + num(after.euler()) + ", expected " + num(before.euler()) + "; ";
+  if (3 * before.f == 2 * before.e && 3 * after.f != 2 * after.e)
+    err += "3F != 2E (" + num(static_cast<long long>(after.f)) + " faces, " + num(static_cast<long long>(after.e)) + " edges); ";
+  return err;
+}
 
 // ---- Time. ----
 inline std::int64_t now_ns() {

@@ -4,10 +4,13 @@
 // the same Euler::add_face and allocates a vector per face besides).
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/version.h>
 
 #include <memory>
+#include <string>
 
 #include "bench_common.h"
 
@@ -18,6 +21,8 @@ using Kernel = CGAL::Simple_cartesian<float>;
 using SMesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using VI = SMesh::Vertex_index;
 using FI = SMesh::Face_index;
+using HI = SMesh::Halfedge_index;
+using EI = SMesh::Edge_index;
 
 struct SMBox final : MeshBox {
   SMesh m;
@@ -89,6 +94,113 @@ double vertex_normals(Context& c) {
   return sum;
 }
 
+// ---- Random local edits: the same draws as hedge (EditRng), on a private copy. ----
+
+std::unique_ptr<MeshBox> copy_mesh(const MeshBox& reference) {
+  auto box = std::make_unique<SMBox>();
+  box->m = static_cast<const SMBox&>(reference).m;
+  return box;
+}
+SMesh& edit_mesh(Context& c) { return static_cast<SMBox*>(c.mesh)->m; }
+
+//! Random half-edge h (removed ones redrawn), Euler::does_satisfy_link_condition(edge(h)) (the
+//! documented precondition of Euler::collapse_edge on a triangle mesh besides triangulation), then
+//! Euler::collapse_edge. That collapses halfedge(edge(h)), which is h or its opposite; the
+//! connectivity is the same either way, and the survivor gets target(h)'s position, so the result
+//! matches hedge's from_vertex(h)-into-to_vertex(h). Returns the number of collapses done.
+double collapse_op(Context& c) {
+  SMesh& m = edit_mesh(c);
+  EditRng rng;
+  std::size_t done = 0;
+  for (std::size_t k = 0; k < kEditCount; ++k) {
+    const std::size_t n = m.num_halfedges();  // includes removed ones (kept until collect_garbage)
+    const std::size_t i =
+        rng.live_index(n, [&](std::size_t j) { return m.is_removed(HI(static_cast<SMesh::size_type>(j))); });
+    if (i == n) continue;
+    const HI h(static_cast<SMesh::size_type>(i));
+    const EI e = m.edge(h);
+    if (CGAL::Euler::does_satisfy_link_condition(e, m)) {
+      const Kernel::Point_3 keep = m.point(m.target(h));
+      const VI v = CGAL::Euler::collapse_edge(e, m);
+      m.point(v) = keep;
+      ++done;
+    }
+  }
+  return static_cast<double>(done);
+}
+
+//! Random edge (among the current ones), split at its midpoint so that the result matches hedge's
+//! split_edge: Euler::split_edge inserts the vertex (each incident triangle becomes a quad), then
+//! Euler::split_face on each non-border side joins the new vertex to that side's tip. Returns
+//! #V + #F after the sequence.
+double split_op(Context& c) {
+  SMesh& m = edit_mesh(c);
+  EditRng rng;
+  for (std::size_t k = 0; k < kEditCount; ++k) {
+    const std::size_t n = m.num_edges();
+    const std::size_t i =
+        rng.live_index(n, [&](std::size_t j) { return m.is_removed(EI(static_cast<SMesh::size_type>(j))); });
+    if (i == n) continue;
+    const HI h = m.halfedge(EI(static_cast<SMesh::size_type>(i)));  // a -> b
+    const Kernel::Point_3& a = m.point(m.source(h));
+    const Kernel::Point_3& b = m.point(m.target(h));
+    const Kernel::Point_3 mid(0.5f * (a.x() + b.x()), 0.5f * (a.y() + b.y()), 0.5f * (a.z() + b.z()));
+    const HI hnew = CGAL::Euler::split_edge(h, m);  // a -> v, then h: v -> b
+    m.point(m.target(hnew)) = mid;
+    if (!m.is_border(h)) CGAL::Euler::split_face(hnew, m.next(h), m);  // v -> tip of (a, v, b, c)
+    const HI o = m.opposite(h);                                          // b -> v, v -> a, a -> d, d -> b
+    if (!m.is_border(o)) CGAL::Euler::split_face(o, m.next(m.next(o)), m);
+  }
+  return static_cast<double>(m.number_of_vertices() + m.number_of_faces());
+}
+
+//! The conditions hedge's can_flip checks, written with Surface_mesh's API (CGAL has no flip
+//! predicate; Euler::flip_edge only requires two triangles): e interior, both faces triangles,
+//! distinct tips not joined by an edge yet, neither end an interior vertex of valence 3.
+bool can_flip(const SMesh& m, EI e) {
+  if (m.is_border(e)) return false;
+  const HI h = m.halfedge(e), o = m.opposite(h);
+  if (m.next(m.next(m.next(h))) != h || m.next(m.next(m.next(o))) != o) return false;
+  const VI c = m.target(m.next(h)), d = m.target(m.next(o));
+  if (c == d || m.halfedge(c, d) != SMesh::null_halfedge()) return false;
+  for (VI v : {m.source(h), m.target(h)})
+    if (m.degree(v) == 3 && !m.is_border(v)) return false;
+  return true;
+}
+
+//! Random edge, the check above, then Euler::flip_edge. Returns the number of flips done.
+double flip_op(Context& c) {
+  SMesh& m = edit_mesh(c);
+  EditRng rng;
+  std::size_t done = 0;
+  for (std::size_t k = 0; k < kEditCount; ++k) {
+    const std::size_t n = m.num_edges();
+    const std::size_t i =
+        rng.live_index(n, [&](std::size_t j) { return m.is_removed(EI(static_cast<SMesh::size_type>(j))); });
+    if (i == n) continue;
+    const EI e(static_cast<SMesh::size_type>(i));
+    if (can_flip(m, e)) {
+      CGAL::Euler::flip_edge(m.halfedge(e), m);
+      ++done;
+    }
+  }
+  return static_cast<double>(done);
+}
+
+Counts counts(const SMesh& m) { return {m.number_of_vertices(), m.number_of_edges(), m.number_of_faces()}; }
+
+template <EditKind kind>
+std::string check_edit(const MeshBox& reference, const MeshBox& edited, double checksum) {
+  const SMesh& before = static_cast<const SMBox&>(reference).m;
+  const SMesh& after = static_cast<const SMBox&>(edited).m;
+  std::string err;
+  if (!after.is_valid(false)) err += "Surface_mesh::is_valid failed; ";
+  if (!CGAL::is_valid_polygon_mesh(after)) err += "is_valid_polygon_mesh failed; ";
+  if (!CGAL::is_triangle_mesh(after)) err += "is_triangle_mesh failed; ";
+  const double successes = kind == EditKind::split ? static_cast<double>(kEditCount) : checksum;
+  return err + check_edit_counts(kind, counts(before), counts(after), successes);
+}
+
 }  // namespace
 
 Backend cgal_backend() {
@@ -102,6 +214,9 @@ Backend cgal_backend() {
   b.ops["build"] = {nullptr, build_op};
   b.ops["one_ring"] = {nullptr, one_ring};
   b.ops["vertex_normals"] = {nullptr, vertex_normals};
+  b.ops["collapse"] = {copy_mesh, collapse_op, check_edit<EditKind::collapse>};
+  b.ops["split"] = {copy_mesh, split_op, check_edit<EditKind::split>};
+  b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   return b;
 }
 

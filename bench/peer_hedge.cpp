@@ -2,9 +2,11 @@
 // operations as the peers through hedge's idiomatic circulators.
 #include <memory>
 #include <span>
+#include <string>
 
 #include "bench_common.h"
 #include "hedge/core/build.h"
+#include "hedge/core/operations.h"
 #include "hedge/core/surface_mesh.h"
 
 namespace bench {
@@ -72,6 +74,81 @@ double vertex_normals(Context& c) {
   return sum;
 }
 
+// ---- Random local edits: the same draws as the peers (EditRng), on a private copy. ----
+
+std::unique_ptr<MeshBox> copy_mesh(const MeshBox& reference) {
+  return std::make_unique<HBox>(hedge::SurfaceMesh(static_cast<const HBox&>(reference).m));
+}
+hedge::SurfaceMesh& edit_mesh(Context& c) { return static_cast<HBox*>(c.mesh)->m; }
+
+//! Random half-edge (deleted ones redrawn), can_collapse, then collapse: from_vertex(h) merges into
+//! to_vertex(h), which keeps its position. Returns the number of collapses done.
+double collapse_op(Context& c) {
+  hedge::SurfaceMesh& m = edit_mesh(c);
+  EditRng rng;
+  std::size_t done = 0;
+  for (std::size_t k = 0; k < kEditCount; ++k) {
+    const std::size_t n = m.halfedges_size();
+    const std::size_t i =
+        rng.live_index(n, [&](std::size_t j) { return m.is_deleted(hedge::Halfedge(static_cast<hedge::Index>(j))); });
+    if (i == n) continue;
+    const hedge::Halfedge h(static_cast<hedge::Index>(i));
+    if (hedge::can_collapse(m, h) && hedge::collapse(m, h).is_valid()) ++done;
+  }
+  return static_cast<double>(done);
+}
+
+//! Random edge (among the current ones: the count grows), split at its midpoint: the triangle on
+//! each side becomes two. Returns #V + #F after the sequence.
+double split_op(Context& c) {
+  hedge::SurfaceMesh& m = edit_mesh(c);
+  EditRng rng;
+  for (std::size_t k = 0; k < kEditCount; ++k) {
+    const std::size_t n = m.edges_size();
+    const std::size_t i =
+        rng.live_index(n, [&](std::size_t j) { return m.is_deleted(hedge::Edge(static_cast<hedge::Index>(j))); });
+    if (i == n) continue;
+    const hedge::Edge e(static_cast<hedge::Index>(i));
+    const hedge::Halfedge h = hedge::SurfaceMesh::halfedge(e, 0);
+    const hedge::Vec3& a = m.position(m.from_vertex(h));
+    const hedge::Vec3& b = m.position(m.to_vertex(h));
+    const hedge::Vec3 mid{0.5f * (a.x + b.x), 0.5f * (a.y + b.y), 0.5f * (a.z + b.z)};
+    hedge::split_edge(m, e, mid);
+  }
+  return static_cast<double>(m.n_vertices() + m.n_faces());
+}
+
+//! Random edge, can_flip, then flip. Returns the number of flips done.
+double flip_op(Context& c) {
+  hedge::SurfaceMesh& m = edit_mesh(c);
+  EditRng rng;
+  std::size_t done = 0;
+  for (std::size_t k = 0; k < kEditCount; ++k) {
+    const std::size_t n = m.edges_size();
+    const std::size_t i =
+        rng.live_index(n, [&](std::size_t j) { return m.is_deleted(hedge::Edge(static_cast<hedge::Index>(j))); });
+    if (i == n) continue;
+    const hedge::Edge e(static_cast<hedge::Index>(i));
+    if (hedge::can_flip(m, e) && hedge::flip(m, e).is_valid()) ++done;
+  }
+  return static_cast<double>(done);
+}
+
+Counts counts(const hedge::SurfaceMesh& m) { return {m.n_vertices(), m.n_edges(), m.n_faces()}; }
+
+template <EditKind kind>
+std::string check_edit(const MeshBox& reference, const MeshBox& edited, double checksum) {
+  const hedge::SurfaceMesh& before = static_cast<const HBox&>(reference).m;
+  const hedge::SurfaceMesh& after = static_cast<const HBox&>(edited).m;
+  std::string err;
+  const std::vector<std::string> problems = after.validate();
+  if (!problems.empty())
+    err = "validate(): " + std::to_string(problems.size()) + " problem(s), first: " + problems.front() + "; ";
+  // Every draw of a split succeeds (no edge is ever deleted); the others return their successes.
+  const double successes = kind == EditKind::split ? static_cast<double>(kEditCount) : checksum;
+  return err + check_edit_counts(kind, counts(before), counts(after), successes);
+}
+
 }  // namespace
 
 Backend hedge_backend() {
@@ -83,6 +160,9 @@ Backend hedge_backend() {
   b.ops["build"] = {nullptr, build_op};
   b.ops["one_ring"] = {nullptr, one_ring};
   b.ops["vertex_normals"] = {nullptr, vertex_normals};
+  b.ops["collapse"] = {copy_mesh, collapse_op, check_edit<EditKind::collapse>};
+  b.ops["split"] = {copy_mesh, split_op, check_edit<EditKind::split>};
+  b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   return b;
 }
 

@@ -2,9 +2,12 @@
 // public API only. Built the standard way: reserve, add_vertex for every vertex, add_face for
 // every triangle.
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Utils/MeshCheckerT.hh>
 
 #include <cmath>
 #include <memory>
+#include <sstream>
+#include <string>
 
 #include "bench_common.h"
 
@@ -78,6 +81,109 @@ double vertex_normals(Context& c) {
   return sum;
 }
 
+// ---- Random local edits: the same draws as hedge (EditRng), on a private copy. ----
+
+//! A copy with the status attributes that collapse, is_collapse_ok and deleted-element tests need
+//! (requested before the timer starts).
+std::unique_ptr<MeshBox> copy_mesh(const MeshBox& reference) {
+  auto box = std::make_unique<OMBox>();
+  box->m = static_cast<const OMBox&>(reference).m;
+  box->m.request_vertex_status();
+  box->m.request_edge_status();
+  box->m.request_halfedge_status();
+  box->m.request_face_status();
+  return box;
+}
+
+//! Random half-edge (deleted ones redrawn), is_collapse_ok, then collapse: from_vertex_handle(h)
+//! merges into to_vertex_handle(h), which keeps its position. Returns the number of collapses done.
+double collapse_op(Context& c) {
+  OMesh& m = mesh_of(c);
+  EditRng rng;
+  std::size_t done = 0;
+  for (std::size_t k = 0; k < kEditCount; ++k) {
+    const std::size_t n = m.n_halfedges();  // includes deleted ones until garbage_collection
+    const std::size_t i = rng.live_index(
+        n, [&](std::size_t j) { return m.status(OMesh::HalfedgeHandle(static_cast<int>(j))).deleted(); });
+    if (i == n) continue;
+    const OMesh::HalfedgeHandle h(static_cast<int>(i));
+    if (m.is_collapse_ok(h)) {
+      m.collapse(h);
+      ++done;
+    }
+  }
+  return static_cast<double>(done);
+}
+
+//! Random edge (among the current ones), TriMesh split(eh, point) = add_vertex + the 2-to-4 split
+//! (TriConnectivity::split, what TriMesh split_edge(eh, vh) calls): the triangle on each side
+//! becomes two, as in hedge. Returns #V + #F after the sequence.
+double split_op(Context& c) {
+  OMesh& m = mesh_of(c);
+  EditRng rng;
+  for (std::size_t k = 0; k < kEditCount; ++k) {
+    const std::size_t n = m.n_edges();
+    const std::size_t i =
+        rng.live_index(n, [&](std::size_t j) { return m.status(OMesh::EdgeHandle(static_cast<int>(j))).deleted(); });
+    if (i == n) continue;
+    const OMesh::EdgeHandle e(static_cast<int>(i));
+    const OMesh::HalfedgeHandle h = m.halfedge_handle(e, 0);
+    const OMesh::Point& a = m.point(m.from_vertex_handle(h));
+    const OMesh::Point& b = m.point(m.to_vertex_handle(h));
+    const OMesh::Point mid(0.5f * (a[0] + b[0]), 0.5f * (a[1] + b[1]), 0.5f * (a[2] + b[2]));
+    m.split(e, mid);
+  }
+  return static_cast<double>(m.n_vertices() + m.n_faces());
+}
+
+//! Random edge, is_flip_ok, then flip. Returns the number of flips done.
+double flip_op(Context& c) {
+  OMesh& m = mesh_of(c);
+  EditRng rng;
+  std::size_t done = 0;
+  for (std::size_t k = 0; k < kEditCount; ++k) {
+    const std::size_t n = m.n_edges();
+    const std::size_t i =
+        rng.live_index(n, [&](std::size_t j) { return m.status(OMesh::EdgeHandle(static_cast<int>(j))).deleted(); });
+    if (i == n) continue;
+    const OMesh::EdgeHandle e(static_cast<int>(i));
+    if (m.is_flip_ok(e)) {
+      m.flip(e);
+      ++done;
+    }
+  }
+  return static_cast<double>(done);
+}
+
+//! Live element counts (n_vertices() etc. include deleted elements until garbage_collection).
+Counts counts(const OMesh& m) {
+  Counts n;
+  for (auto v : m.vertices()) (void)v, ++n.v;  // the ranges skip deleted elements
+  for (auto e : m.edges()) (void)e, ++n.e;
+  for (auto f : m.faces()) (void)f, ++n.f;
+  return n;
+}
+
+template <EditKind kind>
+std::string check_edit(const MeshBox& reference, const MeshBox& edited, double checksum) {
+  const OMesh& before = static_cast<const OMBox&>(reference).m;
+  const OMesh& after = static_cast<const OMBox&>(edited).m;
+  std::string err;
+  std::ostringstream log;
+  if (!OpenMesh::Utils::MeshCheckerT<OMesh>(after).check(OpenMesh::Utils::MeshCheckerT<OMesh>::CHECK_ALL, log)) {
+    std::string first = log.str();
+    first = first.substr(0, first.find('\n'));
+    err = "MeshCheckerT::check failed: " + first + "; ";
+  }
+  for (auto f : after.faces())
+    if (after.valence(f) != 3) {
+      err += "a face of " + std::to_string(after.valence(f)) + " vertices; ";
+      break;
+    }
+  const double successes = kind == EditKind::split ? static_cast<double>(kEditCount) : checksum;
+  return err + check_edit_counts(kind, counts(before), counts(after), successes);
+}
+
 }  // namespace
 
 Backend openmesh_backend() {
@@ -90,6 +196,9 @@ Backend openmesh_backend() {
   b.ops["build"] = {nullptr, build_op};
   b.ops["one_ring"] = {nullptr, one_ring};
   b.ops["vertex_normals"] = {nullptr, vertex_normals};
+  b.ops["collapse"] = {copy_mesh, collapse_op, check_edit<EditKind::collapse>};
+  b.ops["split"] = {copy_mesh, split_op, check_edit<EditKind::split>};
+  b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   return b;
 }
 

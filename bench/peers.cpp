@@ -10,7 +10,11 @@
 // run round-robin (the starting backend rotates every round) after one warm-up run each; runs
 // shorter than 1 ms are batched into one sample (same batch size for every backend); the
 // medians of the per-run times are compared: ratio = fastest peer's median / hedge's median (> 1: hedge is faster).
-// Checksums of every operation are compared across backends. Bytes per vertex are the net heap
+// Checksums of every operation are compared across backends. The editing operations (collapse,
+// split, flip) run the same seeded sequence of 10^5 random attempts on a private copy of the mesh
+// made before the timer starts (see EditRng in bench_common.h); their result is checked untimed
+// after the warm-up run with each library's own validity checks and the element counts the
+// edits imply. Bytes per vertex are the net heap
 // bytes allocated while building (counted by replacing operator new/delete, see alloc_count.cpp),
 // divided by the number of vertices.
 //
@@ -42,6 +46,9 @@ enum class BarKind {
   faster,  //!< fastest peer / hedge >= factor
 };
 
+// Allowed relative difference between the numbers of collapses (flips) done by hedge and a peer.
+constexpr double kEditWorkTol = 0.02;
+
 struct OpSpec {
   const char* key;    //!< name in the backends' op tables and in the JSON
   const char* label;  //!< row title
@@ -49,6 +56,7 @@ struct OpSpec {
   double factor;
   double checksum_rel_tol;      //!< allowed relative checksum difference to hedge (summation order)
   bool compare_vertex_output;   //!< compare Scratch::vertex_normal element-wise with hedge's
+  const char* checksum_meaning = nullptr;  //!< if set, the checksums are printed under the row with this title
 };
 
 // The operations, in table order.
@@ -56,6 +64,12 @@ const OpSpec kOps[] = {
     {"build", "build from arrays", BarKind::faster, 3.0, 0.0, false},
     {"one_ring", "one-ring circulation", BarKind::faster, 1.0, 1e-9, false},
     {"vertex_normals", "vertex normals (area-weighted)", BarKind::faster, 1.0, 1e-5, true},
+    // 10^5 seeded random attempts each (bench_common.h: kEditCount, EditRng). Collapses and flips
+    // count attempts; each library's predicate refuses slightly different sets, so the number done
+    // may differ by a little (kEditWorkTol) and is printed under the row.
+    {"collapse", "random collapses (10^5 checked)", BarKind::faster, 2.0, kEditWorkTol, false, "collapses done"},
+    {"split", "random edge splits (10^5)", BarKind::faster, 2.0, 0.0, false, "#V + #F after"},
+    {"flip", "random flips (10^5 checked)", BarKind::faster, 2.0, kEditWorkTol, false, "flips done"},
 };
 
 constexpr double kBytesPerVertexBar = 100.0;
@@ -104,6 +118,7 @@ struct Cell {
   double checksum = 0;
   bool checksum_ok = true;
   double max_output_diff = 0;
+  std::optional<std::string> check_error;  //!< after the warm-up of an editing op: "" = valid
 };
 
 struct OpResult {
@@ -219,6 +234,7 @@ MeshResult run_mesh(const Input& in, std::vector<Backend>& backends, const Optio
       const double ms = static_cast<double>(t1 - t0) * 1e-6 / static_cast<double>(batch);
       if (timed) r.cells[b].ms.push_back(ms);
       else warmup_ms[b] = ms;
+      if (!timed && impl[b]->check && work[0]) r.cells[b].check_error = impl[b]->check(*refs[b], *work[0], checksum);
       return checksum;
     };
     // Warm-up, checksums and output comparison (hedge first: it is the reference).
@@ -232,6 +248,11 @@ MeshResult run_mesh(const Input& in, std::vector<Backend>& backends, const Optio
         impl[b] = nullptr;
         res.checks_ok = false;
         continue;
+      }
+      if (r.cells[b].check_error && !r.cells[b].check_error->empty()) {
+        res.checks_ok = false;
+        std::cerr << "  WARNING " << spec.key << ": " << backends[b].label
+                  << " mesh not valid after the sequence: " << *r.cells[b].check_error << "\n";
       }
       if (spec.compare_vertex_output) {
         if (b == 0) {
@@ -315,7 +336,19 @@ void print_table(const MeshResult& m, const std::vector<Backend>& backends) {
     std::printf(" %16s  %-14s %s", ratio.c_str(), bar_text(*r.spec).c_str(), pass_text(r.pass).c_str());
     for (std::size_t b = 1; b < r.cells.size(); ++b)
       if (r.cells[b].available && !r.cells[b].checksum_ok) std::printf("  [%s checksum mismatch]", backends[b].label.c_str());
+    for (std::size_t b = 0; b < r.cells.size(); ++b)
+      if (r.cells[b].check_error && !r.cells[b].check_error->empty())
+        std::printf("  [WARNING: %s mesh invalid after the sequence]", backends[b].label.c_str());
     std::printf("\n");
+    if (r.spec->checksum_meaning) {
+      std::printf("  %-32s", (std::string("  ") + r.spec->checksum_meaning).c_str());
+      for (const auto& c : r.cells) std::printf(" %10s", c.available ? fmt("%.0f", c.checksum).c_str() : "n/a");
+      bool checked = false, valid = true;
+      for (const auto& c : r.cells)
+        if (c.check_error) checked = true, valid = valid && c.check_error->empty();
+      if (checked) std::printf("   %s", valid ? "(all meshes valid after the sequence)" : "(INVALID mesh, see warnings)");
+      std::printf("\n");
+    }
   }
   std::printf("  %-32s", "heap bytes / vertex");
   for (const auto& c : m.mem) std::printf(" %10s", c.available ? fmt("%.1f", c.bytes_per_vertex).c_str() : "n/a");
@@ -363,6 +396,19 @@ json to_json(const MeshResult& m, const std::vector<Backend>& backends) {
     o["runs_per_sample"] = r.batch;
     o["checksum"] = cell_map(backends, chk, ok);
     o["checksum_agrees_with_hedge"] = agree;
+    if (r.spec->checksum_meaning) {
+      o["checksum_meaning"] = r.spec->checksum_meaning;
+      o["checksum_rel_tol"] = r.spec->checksum_rel_tol;
+      o["attempts"] = bench::kEditCount;
+      o["seed"] = bench::kEditSeed;
+      json valid = json::object();
+      for (std::size_t b = 0; b < nb; ++b) {
+        const auto& ce = r.cells[b].check_error;
+        valid[backends[b].key] = ce ? json(ce->empty()) : json(nullptr);
+        if (ce && !ce->empty()) o["check_errors"][backends[b].key] = *ce;
+      }
+      o["valid_after_sequence"] = valid;
+    }
     json per_peer = json::object();
     for (std::size_t b = 1; b < nb; ++b)
       per_peer[backends[b].key] = (ok[b] && ok[0]) ? json(med[b] / med[0]) : json(nullptr);
