@@ -20,6 +20,37 @@ bool live(const Mesh& m, Vertex v) { return v.is_valid() && m.is_valid(v) && !m.
 
 bool is_triangle(const Mesh& m, Halfedge h) { return m.next(m.next(m.next(h))) == h; }
 
+// True if v has more than k edges; stops counting there (O(min(valence, k))).
+bool valence_above(const Mesh& m, Vertex v, std::size_t k) {
+  std::size_t n = 0;
+  for (auto it = m.halfedges(v).begin(); !(it == CirculatorEnd{}); ++it)
+    if (++n > k) return true;
+  return false;
+}
+
+// A list of a few handles kept on the stack, spilling to the heap past N: the hot predicates
+// must not allocate per call.
+template <typename T, std::size_t N = 32>
+class SmallList {
+ public:
+  void push_back(T t) {
+    if (n_ < N) inline_[n_] = t;
+    else spill_.push_back(t);
+    ++n_;
+  }
+  bool contains(T t) const {
+    for (std::size_t i = 0; i < std::min(n_, N); ++i)
+      if (inline_[i] == t) return true;
+    return std::find(spill_.begin(), spill_.end(), t) != spill_.end();
+  }
+  std::size_t size() const { return n_; }
+
+ private:
+  T inline_[N];
+  std::vector<T> spill_;
+  std::size_t n_ = 0;
+};
+
 // Outgoing half-edges of v in clockwise order, starting at its half-edge.
 std::vector<Halfedge> outgoing(const Mesh& m, Vertex v) {
   std::vector<Halfedge> out;
@@ -173,9 +204,11 @@ Vertex split_edge(SurfaceMesh& m, Edge e, const Vec3& point) {
   if (!can_split_edge(m, e) || !is_finite(point)) return {};
   const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
   const Vertex a = m.from_vertex(h), b = m.to_vertex(h);
-  const bool tri1 = !m.is_boundary(h) && is_triangle(m, h);
-  const bool tri2 = !m.is_boundary(t) && is_triangle(m, t);
-  const Halfedge hp = m.prev(h), tp = m.prev(t), hn = m.next(h);
+  // On a triangle the previous half-edge is next(next): one walk serves both questions.
+  const Halfedge hn = m.next(h), hnn = m.next(hn), tnn = m.next(m.next(t));
+  const bool tri1 = !m.is_boundary(h) && m.next(hnn) == h;
+  const bool tri2 = !m.is_boundary(t) && m.next(tnn) == t;
+  const Halfedge hp = tri1 ? hnn : m.prev(h), tp = tri2 ? tnn : m.prev(t);
   const float s = segment_parameter(m.position(a), m.position(b), point);
 
   const Vertex v = m.add_vertex(point);
@@ -224,7 +257,7 @@ bool can_collapse(const SurfaceMesh& m, Halfedge h) {
   const Vertex tr = fr.is_valid() && is_triangle(m, t) ? m.to_vertex(m.next(t)) : Vertex();
 
   // Link condition, and no second edge between v0 and v1.
-  std::vector<Vertex> n0;
+  SmallList<Vertex> n0;
   std::size_t to_v1 = 0;
   for (Vertex w : m.vertices(v0)) {
     n0.push_back(w);
@@ -235,7 +268,7 @@ bool can_collapse(const SurfaceMesh& m, Halfedge h) {
   for (Vertex w : m.vertices(v1)) {
     ++val1;
     if (w == v0 || w == tl || w == tr) continue;
-    if (std::find(n0.begin(), n0.end(), w) != n0.end()) return false;
+    if (n0.contains(w)) return false;
   }
   // Tips lose an edge; merged edges must keep a face on one side.
   for (int side = 0; side < 2; ++side) {
@@ -243,8 +276,7 @@ bool can_collapse(const SurfaceMesh& m, Halfedge h) {
     if (!tip.is_valid()) continue;
     const Halfedge s = side == 0 ? h : t;
     if (m.is_boundary(Mesh::twin(m.next(s))) && m.is_boundary(Mesh::twin(m.next(m.next(s))))) return false;
-    const std::size_t val = m.valence(tip);
-    if (val <= (m.is_boundary(tip) ? 2u : 3u)) return false;
+    if (!valence_above(m, tip, m.is_boundary(tip) ? 2u : 3u)) return false;
   }
   // The survivor must keep valence 3 if interior.
   const std::size_t tips = (tl.is_valid() ? 1 : 0) + (tr.is_valid() ? 1 : 0);
@@ -282,7 +314,8 @@ Vertex collapse(SurfaceMesh& m, Halfedge h) {
   const Halfedge hn = m.next(h), hp = m.prev(h), tn = m.next(t), tp = m.prev(t);
   const Face fl = m.face(h), fr = m.face(t);
 
-  for (Halfedge o : outgoing(m, v0)) m.set_vertex(Mesh::twin(o), v1);
+  // Renaming targets leaves every next link intact, so the rotation about v0 can go on meanwhile.
+  for (Halfedge o : m.halfedges(v0)) m.set_vertex(Mesh::twin(o), v1);
   m.set_next(hp, hn);
   m.set_next(tp, tn);
   if (fl.is_valid() && m.halfedge(fl) == h) m.set_halfedge(fl, hn);
@@ -306,7 +339,7 @@ bool can_flip(const SurfaceMesh& m, Edge e) {
   const Vertex c = m.to_vertex(m.next(h)), d = m.to_vertex(m.next(t));
   if (c == d || m.find_halfedge(c, d).is_valid()) return false;
   for (Vertex v : {a, b})
-    if (!m.is_boundary(v) && m.valence(v) <= 3) return false;
+    if (!m.is_boundary(v) && !valence_above(m, v, 3)) return false;
   return true;
 }
 
