@@ -1,0 +1,283 @@
+// Point location on a SurfaceMesh: the nearest face to a point, the first face a ray hits, and the
+// face of a flat plate (or a height field) that contains a point. FaceBvh answers these in
+// O(log n) expected time through a bounding volume hierarchy; the *_linear functions are the O(n)
+// scans (the original project's TryGetFaceContainingPoint was one) and serve as the reference.
+//
+// Faces are located through triangles: a triangle face is itself, and a polygon face is the fan of
+// triangles (c0, c[i], c[i+1]) from its first corner c0 = to_vertex(halfedge(f)), the same fan as
+// to_indexed(..., Triangulation::fan). Every answer names the face, the fan triangle's corners
+// and barycentric coordinates within that triangle. For a concave polygon the fan covers area
+// outside the polygon; locating such faces is exact only for convex (and planar) polygons.
+//
+// Ties are broken the same way everywhere: among equally near faces (or equally far hits, or
+// several faces containing a point) the smallest face index wins, and within a face the first fan
+// triangle. So FaceBvh and the *_linear scans return identical answers, face included.
+//
+// Precision: positions are floats; distances, ray parameters and barycentric coordinates are
+// computed in double from them. Queries with a NaN or infinite coordinate find nothing.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "hedge/core/handles.h"
+#include "hedge/core/surface_mesh.h"
+#include "hedge/core/vec.h"
+
+namespace hedge {
+
+//! A point on a face: the face, the fan triangle of the face it lies in, and where.
+struct SurfacePoint {
+  Face face;
+  //! Corners of the fan triangle (see the file comment); corners[0] is the face's first corner.
+  std::array<Vertex, 3> corners;
+  //! Weights of corners[0..2]: each in [0, 1], summing to 1 (up to rounding).
+  std::array<double, 3> barycentric{};
+  //! sum of barycentric[i] * position(corners[i]), rounded to float.
+  Vec3 point;
+};
+
+//! The nearest point of the surface to a query point.
+struct LocateResult : SurfacePoint {
+  //! Squared Euclidean distance from the query point to `point` (computed in double).
+  double squared_distance = 0;
+};
+
+//! Where a ray first meets the surface.
+struct RayHit : SurfacePoint {
+  //! Ray parameter: point = origin + t * direction, in units of the direction's length.
+  double t = 0;
+};
+
+//! The closest point of triangle (a, b, c) to p, as barycentric weights of a, b, c.
+struct TrianglePoint {
+  double squared_distance = 0;
+  std::array<double, 3> barycentric{};
+};
+
+//! Closest point of the (solid) triangle (a, b, c) to p. Degenerate triangles (collinear or
+//! coincident corners) are handled: the answer is then on their edges. O(1).
+TrianglePoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
+//! A ray-triangle intersection: parameter t and barycentric weights of a, b, c.
+struct TriangleHit {
+  double t = 0;
+  std::array<double, 3> barycentric{};
+};
+
+//! Intersects the ray origin + t * direction, 0 <= t <= t_max, with triangle (a, b, c).
+//! The test is watertight (Woop, Benthin and Wald, JCGT 2013, evaluated in double): a ray through
+//! an edge or a vertex shared by several triangles of a mesh hits at least one of them, never
+//! slips between them. Both sides of a triangle are hit (no back-face culling); a ray lying in the
+//! triangle's plane and a degenerate triangle are missed. Returns nothing for a zero or non-finite
+//! direction or origin. O(1).
+std::optional<TriangleHit> intersect_ray_triangle(const Vec3& origin, const Vec3& direction, const Vec3& a,
+                                                  const Vec3& b, const Vec3& c,
+                                                  double t_max = std::numeric_limits<double>::infinity());
+
+//! The coordinate plane face_containing(Vec2) projects onto; the Vec2 holds its two coordinates.
+enum class ProjectionPlane { xy, xz, yz };
+
+//! How FaceBvh splits a node while building.
+enum class BvhSplit {
+  //! Binned surface-area heuristic: 16 bins along the box's widest axis; nodes of fewer than 32
+  //! faces are halved at the median. The default: 10-30% faster queries (bench/locate).
+  sah,
+  //! Median of the box centres along the widest axis: a balanced tree, a similar build time.
+  median,
+};
+
+struct BvhOptions {
+  BvhSplit split = BvhSplit::sah;
+  //! Most faces in a leaf (1..255); a node with that many or fewer is a leaf.
+  unsigned max_leaf_size = 4;
+  //! update() rebuilds the whole tree when the dead (removed or replaced) face slots exceed this
+  //! fraction of all slots. Smaller keeps queries at full speed, larger makes updates cheaper.
+  double rebuild_fraction = 0.25;
+};
+
+//! A bounding volume hierarchy over the live faces of one SurfaceMesh.
+//!
+//! Layout: a flat array of 32-byte nodes (float boxes, 32-bit indices; the two children of a node
+//! are adjacent), and a flat array of 16-byte face entries in leaf order. A triangle face's entry
+//! holds its three corner vertices, so a query reads positions without walking the mesh; a polygon
+//! face's entry is walked through the mesh's half-edges at query time. Boxes hold faces whole.
+//! About 45 bytes per face with the default options (see memory_bytes()).
+//!
+//! Positions are read from the mesh at query time; connectivity is read at build/update time.
+//! \pre The mesh outlives the FaceBvh and does not move (the FaceBvh keeps its address).
+//! \pre Every live face has at least 3 corners.
+//! \attention After vertices move, call refit() before querying; after faces are added, removed or
+//!   re-linked (split, collapse, flip), call update() with those faces. garbage_collection() renumbers
+//!   faces and vertices, so after it only build() is valid (queries on a tree whose mesh shrank
+//!   throw InvalidInputError rather than read out of bounds).
+//! Queries are const and touch no shared mutable state: any number may run concurrently.
+//! build(), refit() and update() need exclusive access.
+class FaceBvh {
+ public:
+  //! Sizes and bookkeeping, for tests and tuning.
+  struct Stats {
+    std::size_t nodes = 0;              //!< node slots, including orphaned ones
+    std::size_t orphan_nodes = 0;       //!< node slots update() left unreachable since the last build
+    std::size_t leaves = 0;             //!< reachable leaves
+    std::size_t live_faces = 0;         //!< faces the tree answers for
+    std::size_t dead_slots = 0;         //!< face slots tombstoned by update() since the last build
+    unsigned height = 0;                //!< edges on the longest root-to-leaf path
+    unsigned height_at_build = 0;       //!< the same right after the last full build
+    std::size_t builds = 0;             //!< full builds so far (the constructor's included)
+    std::size_t inserted_subtrees = 0;  //!< update() placements next to a node, since construction
+    std::size_t merged_subtrees = 0;    //!< update() merges into a young subtree, since construction
+  };
+
+  //! An empty tree: every query finds nothing.
+  FaceBvh() = default;
+  //! Builds over the live faces of mesh. O(n log n) for n live faces.
+  explicit FaceBvh(const SurfaceMesh& mesh, const BvhOptions& options = {});
+
+  //! (Re)builds over the live faces of mesh, replacing the whole tree. O(n log n).
+  void build(const SurfaceMesh& mesh, const BvhOptions& options = {});
+  //! Rebuilds over the same mesh with the same options. O(n log n). No-op on an empty FaceBvh.
+  void rebuild();
+
+  //! Recomputes every box bottom-up from the current positions, after vertices moved. The tree's
+  //! shape is kept, so a query is as correct as after a build but may get slower when the motion was
+  //! large (then rebuild()). Boxes stop covering faces tombstoned by update(). O(n).
+  void refit();
+
+  //! Takes the faces touched by local operations into account without rebuilding the whole tree.
+  //! \param changed_or_added faces created, or whose corners (connectivity or positions) changed.
+  //!   Each one's old entry, if any, is tombstoned and a new one inserted. Deleted faces are treated
+  //!   as removed; duplicates are allowed.
+  //! \param removed faces deleted from the mesh (or no longer to be found). Unknown faces are ignored.
+  //!
+  //! Policy, for k faces in one call. Removed and replaced entries are tombstoned in their leaves,
+  //! O(1) each; their boxes shrink at the next refit() or build. The k new entries get a subtree,
+  //! built in O(k log k) and placed by one descent from the root that, at each node, either stops
+  //! or goes down to the child whose box grows least (surface area):
+  //!  - reaching a subtree made by an earlier update(), the new entries are merged into it and it is
+  //!    rebuilt: in place for the latest one while it holds up to 128 faces, by copying (which
+  //!    leaves tombstones) for an older one of up to 32 faces; a larger one is descended into;
+  //!  - otherwise, at a leaf or where stopping is cheaper, the new subtree is hung next to the node.
+  //! So repeated edits in one spot refine one small subtree instead of stacking levels. Boxes and
+  //! heights on the path are then refit. One call costs O(m log m + height), m <= k + 128.
+  //! The whole tree is rebuilt, O(n log n), when the tombstoned slots (removed and replaced faces,
+  //! and copies left by merges) exceed options.rebuild_fraction of all slots, or the height exceeds
+  //! twice its height after the last build plus 16: amortised, a few microseconds per changed face
+  //! (see bench/locate). Batch the faces of many local operations into one call where you can.
+  //! \pre Faces not listed kept their corners and positions; moved vertices need refit() (or their
+  //!   faces listed here). The mesh has not been garbage-collected since build().
+  //! \throw InvalidInputError for a handle that is not a face slot of the mesh.
+  void update(std::span<const Face> changed_or_added, std::span<const Face> removed = {});
+
+  //! The nearest point of the surface to p, with its face. O(log n) expected for a point near the
+  //! surface; a point far from a large mesh visits more nodes.
+  //! \return nothing for an empty tree or a non-finite p.
+  std::optional<LocateResult> closest_point(const Vec3& p) const;
+  //! The same, restricted to points within max_distance of p (a search radius, which also makes the
+  //! query cheaper). \return nothing if no face is that near, or for a negative or NaN max_distance.
+  std::optional<LocateResult> closest_point(const Vec3& p, double max_distance) const;
+
+  //! 2D plates and height fields: the face whose projection onto a coordinate plane contains p,
+  //! boundary included. The projection drops one coordinate: z for ProjectionPlane::xy (the
+  //! default; p = (x, y)), y for xz (p = (x, z): the ground plane of y-up engines such as Unity,
+  //! which the original project targeted), x for yz (p = (y, z)). `point` is the point of the face
+  //! that projects onto p (the dropped coordinate interpolated), so this also samples a height field.
+  //! Faces seen edge-on (zero projected area) contain nothing. Orientation tests are exact in
+  //! double for float input. O(log n) expected on a plate or a height field.
+  //! \return nothing if no face contains p (outside the plate, in a hole) or p is not finite. If
+  //!   several do (a point on a shared edge, a surface that folds over itself) the smallest index.
+  std::optional<SurfacePoint> face_containing(const Vec2& p,
+                                              ProjectionPlane plane = ProjectionPlane::xy) const;
+  //! 3D plates in any orientation: the face nearest to p, if p lies within `tolerance` of it, such
+  //! as an impact point a physics engine reports on a plate. Same cost as closest_point.
+  //! \return nothing if no face is within tolerance, or p is not finite.
+  std::optional<LocateResult> face_containing(const Vec3& p, double tolerance) const;
+
+  //! The first face hit by origin + t * direction with 0 <= t <= t_max, for picking from a camera:
+  //! watertight and two-sided, as intersect_ray_triangle. O(log n) expected.
+  //! \return nothing if no face is hit, or for a zero or non-finite direction, a non-finite origin,
+  //!   or a NaN or negative t_max.
+  std::optional<RayHit> first_hit(const Vec3& origin, const Vec3& direction,
+                                  double t_max = std::numeric_limits<double>::infinity()) const;
+
+  bool empty() const { return nodes_.empty() || live_ == 0; }
+  //! Heap bytes held by the tree (capacity, not size). O(1).
+  std::size_t memory_bytes() const;
+  const SurfaceMesh* mesh() const { return mesh_; }
+  const BvhOptions& options() const { return options_; }
+  //! O(#nodes): the leaves are counted.
+  Stats stats() const;
+
+ private:
+  struct Node {
+    float lo[3], hi[3];
+    //! Leaf: first entry in entries_. Internal: first of the two adjacent children.
+    Index index;
+    //! Leaf: number of entries (>= 1). Internal: 0.
+    Index count;
+    bool is_leaf() const { return count != 0; }
+  };
+  //! face is kInvalidIndex for a tombstone. corner[0] is kInvalidIndex for a polygon (walked).
+  struct Entry {
+    Index face;
+    Index corner[3];
+  };
+  struct Box;
+  struct Builder;
+
+  Entry make_entry(Face f) const;
+  Box entry_box(const Entry& e) const;
+  template <typename Fn>
+  bool for_each_triangle(const Entry& e, Fn&& fn) const;
+  void build_subtree(Index first_entry, Index count, Index root);
+  void insert_entries(Index first_entry, Index count);
+  void refit_leaf(Index node);
+  void refit_internal(Index node);
+  void set_height(Index node);
+  void remember_sizes();
+  void update_slack();
+  void check_fresh() const;
+
+  const SurfaceMesh* mesh_ = nullptr;
+  BvhOptions options_;
+  std::vector<Node> nodes_;
+  std::vector<Entry> entries_;
+  //! Height of each node's subtree; update() bounds the tree's height with it.
+  std::vector<std::uint32_t> height_;
+  //! At the root of a subtree inserted by update(): its number of entries; 0 elsewhere.
+  std::vector<Index> young_;
+  //! Face index -> slot in entries_, kInvalidIndex when the face is not in the tree.
+  std::vector<Index> slot_of_face_;
+  std::size_t live_ = 0;
+  std::size_t dead_ = 0;
+  std::size_t orphan_nodes_ = 0;
+  //! The young subtree inserted last: its entries start at tail_first_entry_ and run to the end of
+  //! entries_ (before the new ones of an update), its nodes below the root from tail_first_node_ to
+  //! the end of nodes_. kInvalidIndex when there is none.
+  Index tail_root_ = kInvalidIndex;
+  Index tail_first_entry_ = 0;
+  Index tail_first_node_ = 0;
+  //! The mesh's vertex, half-edge and face slot counts at the last build() or update().
+  std::array<std::size_t, 3> sizes_{};
+  unsigned height_at_build_ = 0;
+  std::size_t builds_ = 0;
+  std::size_t inserted_ = 0;
+  std::size_t merged_ = 0;
+  //! Absolute slack of the distance pruning, from the root box's size.
+  double slack_sq_ = 0;
+};
+
+//! Linear scans over all live faces: O(n · face degree) each, no preprocessing. Same answers as the
+//! FaceBvh queries of the same name (ties included); `nothing` in the same cases.
+std::optional<LocateResult> closest_point_linear(const SurfaceMesh& mesh, const Vec3& p);
+std::optional<RayHit> first_hit_linear(const SurfaceMesh& mesh, const Vec3& origin, const Vec3& direction,
+                                       double t_max = std::numeric_limits<double>::infinity());
+std::optional<SurfacePoint> face_containing_linear(const SurfaceMesh& mesh, const Vec2& p,
+                                                   ProjectionPlane plane = ProjectionPlane::xy);
+
+}  // namespace hedge

@@ -1,0 +1,919 @@
+// Point location: triangle primitives against analytic answers, FaceBvh against an independent
+// brute force over every fan triangle of every live face (exact equality, ties included), and the
+// update policy after local edits.
+#include "hedge/algorithms/locate.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "hedge/core/build.h"
+#include "hedge/core/operations.h"
+#include "hedge/error.h"
+#include "hedge/io/io.h"
+#include "test_meshes.h"
+
+namespace hedge {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+// ---- An independent reference: corners from the mesh's own circulator, fan triangles from the
+// first corner, the public triangle primitives, and the documented tie order (smaller value, then
+// smaller face index, then earlier fan triangle). ----
+
+std::vector<Vertex> corners_of(const SurfaceMesh& m, Face f) {
+  std::vector<Vertex> c;
+  for (Vertex v : m.vertices(f)) c.push_back(v);
+  return c;
+}
+
+// Every fan triangle of every live face, in face order. Rebuild after editing the mesh.
+struct FanTriangles {
+  explicit FanTriangles(const SurfaceMesh& mesh) : m(mesh) {
+    for (Face f : m.faces()) {
+      const std::vector<Vertex> c = corners_of(m, f);
+      for (std::size_t i = 1; i + 1 < c.size(); ++i) tris.push_back({f, {c[0], c[i], c[i + 1]}});
+    }
+  }
+  template <typename Fn>
+  void for_each(Fn fn) const {
+    for (const auto& [f, t] : tris) fn(f, t);
+  }
+  const SurfaceMesh& m;
+  std::vector<std::pair<Face, std::array<Vertex, 3>>> tris;
+};
+
+std::optional<LocateResult> brute_closest(const FanTriangles& fans, const Vec3& p) {
+  const SurfaceMesh& m = fans.m;
+  std::optional<LocateResult> best;
+  fans.for_each([&](Face f, const std::array<Vertex, 3>& t) {
+    const TrianglePoint r =
+        closest_point_on_triangle(p, m.position(t[0]), m.position(t[1]), m.position(t[2]));
+    if (!best || r.squared_distance < best->squared_distance) {
+      best = LocateResult{};
+      best->face = f;
+      best->corners = t;
+      best->barycentric = r.barycentric;
+      best->squared_distance = r.squared_distance;
+    }
+  });
+  return best;
+}
+
+std::optional<RayHit> brute_first_hit(const FanTriangles& fans, const Vec3& o, const Vec3& d, double t_max) {
+  const SurfaceMesh& m = fans.m;
+  std::optional<RayHit> best;
+  fans.for_each([&](Face f, const std::array<Vertex, 3>& t) {
+    const auto h = intersect_ray_triangle(o, d, m.position(t[0]), m.position(t[1]), m.position(t[2]), t_max);
+    if (h && (!best || h->t < best->t)) {
+      best = RayHit{};
+      best->face = f;
+      best->corners = t;
+      best->barycentric = h->barycentric;
+      best->t = h->t;
+    }
+  });
+  return best;
+}
+
+// The two coordinates a projection keeps.
+std::array<int, 2> kept(ProjectionPlane plane) {
+  switch (plane) {
+    case ProjectionPlane::xy:
+      return {0, 1};
+    case ProjectionPlane::xz:
+      return {0, 2};
+    case ProjectionPlane::yz:
+      return {1, 2};
+  }
+  return {0, 1};
+}
+
+// Point in the projection of a triangle, boundary included, in long double.
+std::optional<std::array<double, 3>> brute_in_triangle_2d(const Vec2& p, const Vec3& a, const Vec3& b,
+                                                          const Vec3& c, ProjectionPlane plane) {
+  const auto [i, j] = kept(plane);
+  auto orient = [](long double ax, long double ay, long double bx, long double by, long double cx,
+                   long double cy) { return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax); };
+  const long double area = orient(a[i], a[j], b[i], b[j], c[i], c[j]);
+  if (area == 0) return std::nullopt;
+  const long double w[3] = {orient(p.x, p.y, b[i], b[j], c[i], c[j]),
+                            orient(a[i], a[j], p.x, p.y, c[i], c[j]),
+                            orient(a[i], a[j], b[i], b[j], p.x, p.y)};
+  for (long double x : w)
+    if ((area > 0 && x < 0) || (area < 0 && x > 0)) return std::nullopt;
+  return std::array<double, 3>{double(w[0] / area), double(w[1] / area), double(w[2] / area)};
+}
+
+std::optional<SurfacePoint> brute_containing(const FanTriangles& fans, const Vec2& p,
+                                             ProjectionPlane plane = ProjectionPlane::xy) {
+  const SurfaceMesh& m = fans.m;
+  std::optional<SurfacePoint> best;
+  fans.for_each([&](Face f, const std::array<Vertex, 3>& t) {
+    if (best) return;  // faces come in index order: the first one found wins
+    if (auto w = brute_in_triangle_2d(p, m.position(t[0]), m.position(t[1]), m.position(t[2]), plane)) {
+      best = SurfacePoint{};
+      best->face = f;
+      best->corners = t;
+      best->barycentric = *w;
+    }
+  });
+  return best;
+}
+
+// ---- Checks. ----
+
+Vec3 interpolate(const SurfaceMesh& m, const SurfacePoint& s) {
+  Vec3d p{0, 0, 0};
+  for (int i = 0; i < 3; ++i) p += to_double(m.position(s.corners[i])) * s.barycentric[i];
+  return to_float(p);
+}
+
+// The answer is self-consistent: corners are a fan triangle of the face, the weights are convex and
+// reproduce the point.
+void expect_consistent(const SurfaceMesh& m, const SurfacePoint& s) {
+  ASSERT_TRUE(s.face.is_valid());
+  ASSERT_FALSE(m.is_deleted(s.face));
+  const std::vector<Vertex> c = corners_of(m, s.face);
+  EXPECT_EQ(s.corners[0], c[0]) << "fan triangles start at the face's first corner";
+  for (Vertex v : s.corners) EXPECT_NE(std::find(c.begin(), c.end(), v), c.end());
+  double sum = 0;
+  for (double w : s.barycentric) {
+    EXPECT_GE(w, -1e-12);
+    EXPECT_LE(w, 1 + 1e-12);
+    sum += w;
+  }
+  EXPECT_NEAR(sum, 1.0, 1e-9);
+  const Vec3 q = interpolate(m, s);
+  EXPECT_EQ(s.point, q);
+}
+
+void expect_same_closest(const SurfaceMesh& m, const Vec3& p, const std::optional<LocateResult>& got,
+                         const std::optional<LocateResult>& want) {
+  ASSERT_EQ(got.has_value(), want.has_value()) << p.x << " " << p.y << " " << p.z;
+  if (!want) return;
+  EXPECT_EQ(got->squared_distance, want->squared_distance) << p.x << " " << p.y << " " << p.z;
+  EXPECT_EQ(got->face, want->face) << p.x << " " << p.y << " " << p.z;
+  EXPECT_EQ(got->corners, want->corners);
+  EXPECT_EQ(got->barycentric, want->barycentric);
+  expect_consistent(m, *got);
+}
+
+void expect_same_hit(const SurfaceMesh& m, const std::optional<RayHit>& got,
+                     const std::optional<RayHit>& want) {
+  ASSERT_EQ(got.has_value(), want.has_value());
+  if (!want) return;
+  EXPECT_EQ(got->t, want->t);
+  EXPECT_EQ(got->face, want->face);
+  EXPECT_EQ(got->corners, want->corners);
+  EXPECT_EQ(got->barycentric, want->barycentric);
+  expect_consistent(m, *got);
+}
+
+struct Bounds {
+  Vec3 lo{1e30f, 1e30f, 1e30f}, hi{-1e30f, -1e30f, -1e30f};
+  float diagonal() const { return norm(hi - lo); }
+};
+
+Bounds bounds(const SurfaceMesh& m) {
+  Bounds b;
+  for (Vertex v : m.vertices())
+    for (int a = 0; a < 3; ++a) {
+      b.lo[a] = std::min(b.lo[a], m.position(v)[a]);
+      b.hi[a] = std::max(b.hi[a], m.position(v)[a]);
+    }
+  return b;
+}
+
+// Query points: uniform in the box grown by 20%, near the surface, and exactly on it (in float).
+std::vector<Vec3> query_points(const SurfaceMesh& m, int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  const Bounds b = bounds(m);
+  const float d = b.diagonal();
+  std::uniform_real_distribution<float> unit(0.f, 1.f);
+  std::normal_distribution<float> noise(0.f, 0.01f * d);
+  std::vector<Face> faces(m.faces().begin(), m.faces().end());
+  std::vector<Vec3> pts;
+  for (int i = 0; i < n; ++i) {
+    if (i % 3 == 0) {
+      Vec3 p;
+      for (int a = 0; a < 3; ++a) p[a] = b.lo[a] - 0.2f * d + unit(rng) * (b.hi[a] - b.lo[a] + 0.4f * d);
+      pts.push_back(p);
+    } else {
+      const Face f = faces[rng() % faces.size()];
+      const std::vector<Vertex> c = corners_of(m, f);
+      float u = unit(rng), v = unit(rng);
+      if (u + v > 1) u = 1 - u, v = 1 - v;
+      Vec3 p = m.position(c[0]) + (m.position(c[1]) - m.position(c[0])) * u +
+               (m.position(c[2]) - m.position(c[0])) * v;
+      if (i % 3 == 1) p += Vec3{noise(rng), noise(rng), noise(rng)};
+      pts.push_back(p);
+    }
+  }
+  return pts;
+}
+
+struct Ray {
+  Vec3 origin, direction;
+};
+
+// Rays from outside the box toward random points of it (many hit, some miss), and from inside.
+std::vector<Ray> query_rays(const SurfaceMesh& m, int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  const Bounds b = bounds(m);
+  const float d = b.diagonal();
+  std::uniform_real_distribution<float> unit(0.f, 1.f);
+  std::normal_distribution<float> gauss(0.f, 1.f);
+  std::vector<Vec3> targets = query_points(m, n, seed + 1);
+  std::vector<Ray> rays;
+  for (int i = 0; i < n; ++i) {
+    Vec3 dir{gauss(rng), gauss(rng), gauss(rng)};
+    dir = normalize(dir);
+    if (i % 4 == 3) {
+      rays.push_back({targets[i], dir});  // from on or near the surface, any direction
+    } else {
+      const Vec3 o = targets[i] - dir * (d * (0.6f + unit(rng)));
+      rays.push_back({o, dir * (0.5f + 2 * unit(rng))});  // not unit length on purpose
+    }
+  }
+  return rays;
+}
+
+SurfaceMesh load(const std::string& name) { return io::read_mesh(test::data_path(name)); }
+
+// ---- Triangle primitives. ----
+
+TEST(ClosestPointOnTriangle, AnalyticRegions) {
+  const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0};
+  TrianglePoint r = closest_point_on_triangle({0.25f, 0.5f, 5}, a, b, c);  // above the interior
+  EXPECT_DOUBLE_EQ(r.squared_distance, 25.0);
+  EXPECT_DOUBLE_EQ(r.barycentric[0], 0.25);
+  EXPECT_DOUBLE_EQ(r.barycentric[1], 0.25);
+  EXPECT_DOUBLE_EQ(r.barycentric[2], 0.5);
+  r = closest_point_on_triangle({-1, -1, 0}, a, b, c);  // beyond vertex a
+  EXPECT_DOUBLE_EQ(r.squared_distance, 2.0);
+  EXPECT_EQ(r.barycentric, (std::array<double, 3>{1, 0, 0}));
+  r = closest_point_on_triangle({2, 2, 1}, a, b, c);  // beyond edge bc, at its midpoint
+  EXPECT_DOUBLE_EQ(r.squared_distance, 1.5 * 1.5 * 2 + 1);
+  EXPECT_DOUBLE_EQ(r.barycentric[1], 0.5);
+  EXPECT_DOUBLE_EQ(r.barycentric[2], 0.5);
+  r = closest_point_on_triangle({0.5f, -2, 0}, a, b, c);  // beyond edge ab
+  EXPECT_DOUBLE_EQ(r.squared_distance, 4.0);
+  EXPECT_DOUBLE_EQ(r.barycentric[1], 0.5);
+  // Collinear corners: the distance to the segment they span.
+  r = closest_point_on_triangle({1.5f, 1, 0}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0});
+  EXPECT_DOUBLE_EQ(r.squared_distance, 1.0);
+  r = closest_point_on_triangle({3, 0, 0}, {1, 1, 1}, {1, 1, 1}, {1, 1, 1});  // a point
+  EXPECT_DOUBLE_EQ(r.squared_distance, 6.0);
+}
+
+TEST(ClosestPointOnTriangle, NeverFartherThanAnySampleOfTheTriangle) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-1.f, 1.f);
+  for (int trial = 0; trial < 300; ++trial) {
+    const Vec3 a{u(rng), u(rng), u(rng)}, b{u(rng), u(rng), u(rng)}, c{u(rng), u(rng), u(rng)};
+    const Vec3 p{2 * u(rng), 2 * u(rng), 2 * u(rng)};
+    const TrianglePoint r = closest_point_on_triangle(p, a, b, c);
+    const Vec3d q =
+        to_double(a) * r.barycentric[0] + to_double(b) * r.barycentric[1] + to_double(c) * r.barycentric[2];
+    EXPECT_NEAR(dot(to_double(p) - q, to_double(p) - q), r.squared_distance, 1e-12);
+    double sampled = kInf;
+    const int n = 60;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) {
+        const Vec3d s = to_double(a) + (to_double(b) - to_double(a)) * (double(i) / n) +
+                        (to_double(c) - to_double(a)) * (double(j) / n);
+        sampled = std::min(sampled, dot(to_double(p) - s, to_double(p) - s));
+      }
+    EXPECT_LE(r.squared_distance, sampled + 1e-12);
+    EXPECT_GE(r.squared_distance, sampled - 0.02 * std::sqrt(sampled) - 1e-3);  // grid spacing
+  }
+}
+
+TEST(RayTriangle, HitsMissesAndParameters) {
+  const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0};
+  auto h = intersect_ray_triangle({0.25f, 0.5f, 1}, {0, 0, -1}, a, b, c);
+  ASSERT_TRUE(h);
+  EXPECT_DOUBLE_EQ(h->t, 1.0);
+  EXPECT_DOUBLE_EQ(h->barycentric[0], 0.25);
+  EXPECT_DOUBLE_EQ(h->barycentric[1], 0.25);
+  EXPECT_DOUBLE_EQ(h->barycentric[2], 0.5);
+  h = intersect_ray_triangle({0.25f, 0.5f, 1}, {0, 0, -4}, a, b, c);  // t in direction lengths
+  ASSERT_TRUE(h);
+  EXPECT_DOUBLE_EQ(h->t, 0.25);
+  EXPECT_TRUE(intersect_ray_triangle({0.25f, 0.5f, -1}, {0, 0, 1}, a, b, c));  // from behind: two-sided
+  EXPECT_FALSE(intersect_ray_triangle({0.25f, 0.5f, 1}, {0, 0, 1}, a, b, c));  // pointing away
+  EXPECT_FALSE(intersect_ray_triangle({0.25f, 0.5f, 1}, {0, 0, -1}, a, b, c, 0.99));  // beyond t_max
+  EXPECT_TRUE(intersect_ray_triangle({0.25f, 0.5f, 1}, {0, 0, -1}, a, b, c, 1.0));
+  EXPECT_FALSE(intersect_ray_triangle({0.75f, 0.75f, 1}, {0, 0, -1}, a, b, c));  // outside
+  EXPECT_FALSE(intersect_ray_triangle({-1, 0.2f, 0}, {1, 0, 0}, a, b, c));       // in the plane
+  EXPECT_FALSE(intersect_ray_triangle({0.2f, 0.2f, 1}, {0, 0, 0}, a, b, c));     // no direction
+  EXPECT_FALSE(intersect_ray_triangle({kNaN, 0.2f, 1}, {0, 0, -1}, a, b, c));
+  EXPECT_FALSE(intersect_ray_triangle({0.2f, 0.2f, 1}, {0, kNaN, -1}, a, b, c));
+  // Oblique: from (2, 2, 2) toward (0.25, 0.25, 0).
+  h = intersect_ray_triangle({2, 2, 2}, {-1.75f, -1.75f, -2}, a, b, c);
+  ASSERT_TRUE(h);
+  EXPECT_NEAR(h->t, 1.0, 1e-12);
+  EXPECT_NEAR(h->barycentric[1], 0.25, 1e-12);
+}
+
+// Rays aimed at vertices, edges and diagonals of a triangulated grid never slip through.
+TEST(RayTriangle, WatertightOnSharedEdgesAndVertices) {
+  const SurfaceMesh m = build(test::grid(8, true));
+  const FaceBvh bvh(m);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(-1.f, 1.f);
+  int rays = 0;
+  for (int j = 0; j <= 16; ++j)
+    for (int i = 0; i <= 16; ++i) {
+      const Vec3 target{i * 0.5f, j * 0.5f, 0};  // vertices, edge midpoints and diagonal midpoints
+      const bool interior = i > 0 && i < 16 && j > 0 && j < 16;
+      for (int k = 0; k < 4; ++k) {
+        const Vec3 dir = k == 0 ? Vec3{0, 0, -1} : Vec3{0.3f * u(rng), 0.3f * u(rng), -1};
+        const Vec3 origin = target - dir * 3.f;
+        const auto linear = first_hit_linear(m, origin, dir);
+        const auto tree = bvh.first_hit(origin, dir);
+        expect_same_hit(m, tree, linear);
+        if (interior) {
+          ++rays;
+          ASSERT_TRUE(linear) << "slipped through at " << target.x << " " << target.y << " ray " << k;
+          EXPECT_NEAR(linear->t, 3.0, 1e-5);
+        }
+      }
+    }
+  EXPECT_EQ(rays, 15 * 15 * 4);
+}
+
+// ---- FaceBvh: closest point. ----
+
+TEST(FaceBvh, ClosestPointOnUnitCubeIsTheClampedPoint) {
+  const SurfaceMesh m = build(test::cube());
+  const FaceBvh bvh(m);
+  const FanTriangles fans(m);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-1.f, 2.f);
+  int outside = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Vec3 p{u(rng), u(rng), u(rng)};
+    const auto r = bvh.closest_point(p);
+    ASSERT_TRUE(r);
+    expect_consistent(m, *r);
+    const Vec3 clamped{std::clamp(p.x, 0.f, 1.f), std::clamp(p.y, 0.f, 1.f), std::clamp(p.z, 0.f, 1.f)};
+    if (!(clamped == p)) {
+      ++outside;
+      const double want = dot(to_double(p - clamped), to_double(p - clamped));
+      EXPECT_NEAR(r->squared_distance, want, 1e-12 + 1e-12 * want);
+      EXPECT_NEAR(r->point.x, clamped.x, 1e-6);
+      EXPECT_NEAR(r->point.y, clamped.y, 1e-6);
+      EXPECT_NEAR(r->point.z, clamped.z, 1e-6);
+    } else {
+      const double d = std::min({p.x, p.y, p.z, 1 - p.x, 1 - p.y, 1 - p.z});
+      EXPECT_NEAR(r->squared_distance, d * d, 1e-12);
+    }
+    expect_same_closest(m, p, r, brute_closest(fans, p));
+  }
+  EXPECT_GT(outside, 2000);
+}
+
+TEST(FaceBvh, ClosestPointOnTetrahedronMatchesBruteForce) {
+  const SurfaceMesh m = build(test::tetrahedron());
+  const FaceBvh bvh(m, {.max_leaf_size = 1});
+  const FanTriangles fans(m);
+  EXPECT_EQ(bvh.stats().leaves, 4u);
+  for (const Vec3& p : query_points(m, 3000, 5))
+    expect_same_closest(m, p, bvh.closest_point(p), brute_closest(fans, p));
+  // A vertex is equally near to its three faces: the smallest face index wins.
+  const auto r = bvh.closest_point({-1, -1, -1});
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->face, Face(0));
+  EXPECT_DOUBLE_EQ(r->squared_distance, 3.0);
+}
+
+struct MeshCase {
+  const char* file;
+  BvhSplit split;
+};
+
+class FaceBvhOnMesh : public ::testing::TestWithParam<MeshCase> {};
+
+TEST_P(FaceBvhOnMesh, ClosestPointMatchesBruteForce) {
+  const SurfaceMesh m = load(GetParam().file);
+  const FaceBvh bvh(m, {.split = GetParam().split});
+  const FanTriangles fans(m);
+  EXPECT_EQ(bvh.stats().live_faces, m.n_faces());
+  int i = 0;
+  for (const Vec3& p : query_points(m, 2000, 21)) {
+    const auto want = brute_closest(fans, p);
+    expect_same_closest(m, p, bvh.closest_point(p), want);
+    if (i++ % 4 == 0) expect_same_closest(m, p, closest_point_linear(m, p), want);
+  }
+}
+
+TEST_P(FaceBvhOnMesh, FirstHitMatchesBruteForce) {
+  const SurfaceMesh m = load(GetParam().file);
+  const FaceBvh bvh(m, {.split = GetParam().split});
+  const FanTriangles fans(m);
+  int hits = 0, misses = 0;
+  int i = 0;
+  for (const Ray& ray : query_rays(m, 2000, 31)) {
+    const double t_max = (i++ % 5 == 0) ? 1.0 : kInf;
+    const auto want = brute_first_hit(fans, ray.origin, ray.direction, t_max);
+    expect_same_hit(m, bvh.first_hit(ray.origin, ray.direction, t_max), want);
+    if (i % 4 == 0) expect_same_hit(m, first_hit_linear(m, ray.origin, ray.direction, t_max), want);
+    (want ? hits : misses)++;
+  }
+  EXPECT_GT(hits, 400);
+  EXPECT_GT(misses, 100);
+}
+
+TEST_P(FaceBvhOnMesh, FaceContainingMatchesBruteForce) {
+  const SurfaceMesh m = load(GetParam().file);
+  const FaceBvh bvh(m, {.split = GetParam().split});
+  const FanTriangles fans(m);
+  int found = 0;
+  for (const Vec3& p3 : query_points(m, 600, 41)) {
+    const Vec2 p{p3.x, p3.y};
+    const auto want = brute_containing(fans, p);
+    const auto got = bvh.face_containing(p);
+    ASSERT_EQ(got.has_value(), want.has_value());
+    if (!want) continue;
+    ++found;
+    EXPECT_EQ(got->face, want->face);
+    EXPECT_EQ(got->corners, want->corners);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(got->barycentric[k], want->barycentric[k], 1e-12);
+    expect_consistent(m, *got);
+    const auto linear = face_containing_linear(m, p);
+    ASSERT_TRUE(linear);
+    EXPECT_EQ(linear->face, got->face);
+    EXPECT_EQ(linear->barycentric, got->barycentric);
+  }
+  EXPECT_GT(found, 100);
+}
+
+INSTANTIATE_TEST_SUITE_P(RealMeshes, FaceBvhOnMesh,
+                         ::testing::Values(MeshCase{"anchor.off", BvhSplit::sah},
+                                           MeshCase{"anchor.off", BvhSplit::median},
+                                           MeshCase{"spot_triangulated.obj", BvhSplit::sah},
+                                           MeshCase{"spot_control_mesh.obj", BvhSplit::sah},
+                                           MeshCase{"fandisk_quads.off", BvhSplit::median},
+                                           MeshCase{"three_peaks.off", BvhSplit::sah}),
+                         [](const auto& info) {
+                           std::string name = info.param.file;
+                           name = name.substr(0, name.find('.'));
+                           return name + (info.param.split == BvhSplit::sah ? "_sah" : "_median");
+                         });
+
+// ---- FaceBvh: 2D plates and height fields. ----
+
+TEST(FaceBvh, FaceContainingOnFlatPlate) {
+  for (bool triangles : {true, false}) {
+    const SurfaceMesh m = build(test::grid(10, triangles));
+    const FaceBvh bvh(m);
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<float> u(0.02f, 0.98f);
+    for (Face f : m.faces()) {
+      const std::vector<Vertex> c = corners_of(m, f);
+      for (int k = 0; k < 10; ++k) {
+        // A point strictly inside the face: a convex combination with positive weights.
+        float w[4] = {u(rng), u(rng), u(rng), u(rng)};
+        float sum = 0;
+        for (std::size_t i = 0; i < c.size(); ++i) sum += w[i];
+        Vec3 p3{0, 0, 0};
+        for (std::size_t i = 0; i < c.size(); ++i) p3 += m.position(c[i]) * (w[i] / sum);
+        const Vec2 p{p3.x, p3.y};
+        const auto r = bvh.face_containing(p);
+        ASSERT_TRUE(r);
+        EXPECT_EQ(r->face, f);
+        expect_consistent(m, *r);
+        EXPECT_NEAR(r->point.x, p.x, 1e-5);
+        EXPECT_NEAR(r->point.y, p.y, 1e-5);
+        EXPECT_EQ(r->point.z, 0.f);
+      }
+    }
+    // Outside the plate, including just outside its corners and edges.
+    for (Vec2 p : {Vec2{-0.01f, 5}, Vec2{10.01f, 5}, Vec2{5, -0.001f}, Vec2{5, 10.5f}, Vec2{-1, -1},
+                   Vec2{11, 11}, Vec2{1e30f, 0}})
+      EXPECT_FALSE(bvh.face_containing(p)) << p.x << " " << p.y;
+    // On the plate's boundary and on a shared edge: found, the smaller face index wins.
+    EXPECT_TRUE(bvh.face_containing({0, 0}));
+    EXPECT_TRUE(bvh.face_containing({10, 10}));
+    const auto shared = bvh.face_containing({3, 4.5f});  // the edge x = 3 between two quads/triangles
+    ASSERT_TRUE(shared);
+    const auto want = brute_containing(FanTriangles(m), {3, 4.5f});
+    EXPECT_EQ(shared->face, want->face);
+  }
+}
+
+// three_peaks.off is a height field over the XZ plane (y up).
+TEST(FaceBvh, FaceContainingSamplesATerrainLikeARayFromAbove) {
+  const SurfaceMesh m = load("three_peaks.off");
+  const FaceBvh bvh(m);
+  const FanTriangles fans(m);
+  const Bounds b = bounds(m);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<float> u(0.f, 1.f);
+  int found = 0;
+  for (int i = 0; i < 1500; ++i) {
+    const Vec2 p{b.lo.x + u(rng) * (b.hi.x - b.lo.x), b.lo.z + u(rng) * (b.hi.z - b.lo.z)};
+    const auto r = bvh.face_containing(p, ProjectionPlane::xz);
+    const auto want = brute_containing(fans, p, ProjectionPlane::xz);
+    ASSERT_EQ(r.has_value(), want.has_value());
+    const auto hit = bvh.first_hit({p.x, b.hi.y + 1, p.y}, {0, -1, 0});
+    ASSERT_EQ(r.has_value(), hit.has_value()) << p.x << " " << p.y;
+    if (!r) continue;
+    ++found;
+    EXPECT_EQ(r->face, want->face);
+    expect_consistent(m, *r);
+    EXPECT_NEAR(r->point.x, p.x, 1e-5);
+    EXPECT_NEAR(r->point.z, p.y, 1e-5);
+    EXPECT_NEAR(r->point.y, hit->point.y, 1e-4);  // the height under p
+    // In the XY plane the same terrain folds over itself: other answers, still the brute force's.
+    const Vec2 q{r->point.x, r->point.y};
+    const auto xy = bvh.face_containing(q);
+    const auto xy_want = brute_containing(fans, q);
+    ASSERT_EQ(xy.has_value(), xy_want.has_value());
+    if (xy) EXPECT_EQ(xy->face, xy_want->face);
+  }
+  EXPECT_GT(found, 1000);
+}
+
+TEST(FaceBvh, FaceContainingInEachCoordinatePlane) {
+  const IndexedMesh grid = test::grid(5, false);
+  for (ProjectionPlane plane : {ProjectionPlane::xy, ProjectionPlane::xz, ProjectionPlane::yz}) {
+    IndexedMesh in = grid;
+    const auto [i, j] = kept(plane);
+    for (Vec3& p : in.positions) {
+      Vec3 q{7, 7, 7};  // the dropped coordinate: a plate away from the origin
+      q[i] = p.x;
+      q[j] = p.y;
+      p = q;
+    }
+    const SurfaceMesh m = build(in);
+    const FaceBvh bvh(m);
+    const auto r = bvh.face_containing({2.5f, 3.5f}, plane);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->face, Face(3 * 5 + 2));  // row 3, column 2
+    EXPECT_FLOAT_EQ(r->point[i], 2.5f);
+    EXPECT_FLOAT_EQ(r->point[j], 3.5f);
+    EXPECT_FALSE(bvh.face_containing({5.5f, 3.5f}, plane));
+    // Seen along another axis the plate is edge-on and contains nothing.
+    for (ProjectionPlane other : {ProjectionPlane::xy, ProjectionPlane::xz, ProjectionPlane::yz})
+      if (other != plane) {
+        EXPECT_FALSE(bvh.face_containing({7, 2.5f}, other));
+        EXPECT_FALSE(face_containing_linear(m, {7, 2.5f}, other));
+      }
+  }
+}
+
+TEST(FaceBvh, FaceContainingIn3DWithinTolerance) {
+  // A plate tilted by 30 degrees about the x axis and moved away from the origin.
+  IndexedMesh in = test::grid(6, true);
+  const float c = std::cos(0.5236f), s = std::sin(0.5236f);
+  for (Vec3& p : in.positions) p = Vec3{p.x + 3, c * p.y - s * p.z - 2, s * p.y + c * p.z + 1};
+  const SurfaceMesh m = build(in);
+  const FaceBvh bvh(m);
+  const Vec3 normal{0, -s, c};
+  std::mt19937 rng(19);
+  std::uniform_real_distribution<float> u(0.05f, 5.95f);
+  for (int i = 0; i < 500; ++i) {
+    const float gx = u(rng), gy = u(rng);
+    const Vec3 plate{gx + 3, c * gy - 2, s * gy + 1};
+    const auto exact = bvh.face_containing(plate, 1e-4);
+    ASSERT_TRUE(exact);
+    const Vec3 off = plate + normal * 0.01f;
+    const auto near = bvh.face_containing(off, 0.02);
+    ASSERT_TRUE(near);
+    EXPECT_EQ(near->face, exact->face);
+    EXPECT_NEAR(std::sqrt(near->squared_distance), 0.01, 1e-4);
+    EXPECT_FALSE(bvh.face_containing(off, 0.005));
+  }
+  EXPECT_FALSE(bvh.face_containing(Vec3{2, c * 3 - 2, s * 3 + 1}, 0.5));  // 1 beyond an edge, in the plane
+  EXPECT_TRUE(bvh.face_containing(Vec3{2, c * 3 - 2, s * 3 + 1}, 1.01));
+}
+
+// ---- Degenerate input. ----
+
+TEST(FaceBvh, NonFiniteQueriesAndEmptyMeshesFindNothing) {
+  const SurfaceMesh m = build(test::tetrahedron());
+  const FaceBvh bvh(m);
+  const float inf = std::numeric_limits<float>::infinity();
+  for (Vec3 p : {Vec3{kNaN, 0, 0}, Vec3{0, kNaN, 0}, Vec3{0, 0, inf}, Vec3{-inf, 0, 0}}) {
+    EXPECT_FALSE(bvh.closest_point(p));
+    EXPECT_FALSE(closest_point_linear(m, p));
+    EXPECT_FALSE(bvh.face_containing(p, 1.0));
+    EXPECT_FALSE(bvh.first_hit(p, {0, 0, 1}));
+    EXPECT_FALSE(bvh.first_hit({0.1f, 0.1f, -1}, p));
+    EXPECT_FALSE(first_hit_linear(m, p, {0, 0, 1}));
+    EXPECT_FALSE(bvh.face_containing(Vec2{p.x, p.y + p.z}));
+  }
+  EXPECT_FALSE(bvh.first_hit({0.1f, 0.1f, -1}, {0, 0, 0}));  // no direction
+  EXPECT_FALSE(bvh.first_hit({0.1f, 0.1f, -1}, {0, 0, 1}, std::nan("")));
+  EXPECT_FALSE(bvh.first_hit({0.1f, 0.1f, -1}, {0, 0, 1}, -1.0));
+  EXPECT_TRUE(bvh.first_hit({0.1f, 0.1f, -1}, {0, 0, 1}));
+  EXPECT_FALSE(bvh.closest_point({0, 0, 0}, std::nan("")));
+  EXPECT_FALSE(bvh.closest_point({5, 5, 5}, 1.0));  // nothing within the radius
+  EXPECT_TRUE(bvh.closest_point({5, 5, 5}, 10.0));
+
+  const FaceBvh none;
+  EXPECT_TRUE(none.empty());
+  EXPECT_FALSE(none.closest_point({0, 0, 0}));
+  EXPECT_FALSE(none.first_hit({0, 0, 0}, {1, 0, 0}));
+  EXPECT_FALSE(none.face_containing(Vec2{0, 0}));
+  EXPECT_THROW(FaceBvh().update(std::vector<Face>{Face(0)}), InvalidInputError);
+
+  const SurfaceMesh empty;
+  FaceBvh on_empty(empty);
+  EXPECT_TRUE(on_empty.empty());
+  EXPECT_FALSE(on_empty.closest_point({0, 0, 0}));
+  EXPECT_FALSE(closest_point_linear(empty, {0, 0, 0}));
+  EXPECT_FALSE(on_empty.first_hit({0, 0, 0}, {1, 0, 0}));
+  EXPECT_FALSE(on_empty.face_containing(Vec2{0, 0}));
+  on_empty.refit();
+  on_empty.update({}, {});
+  EXPECT_FALSE(on_empty.closest_point({0, 0, 0}));
+
+  EXPECT_THROW(FaceBvh(m, {.max_leaf_size = 0}), InvalidInputError);
+  EXPECT_THROW(FaceBvh(m, {.rebuild_fraction = 0}), InvalidInputError);
+}
+
+// ---- Refit and update. ----
+
+TEST(FaceBvh, RefitAfterMovingVerticesMatchesBruteForceAgain) {
+  SurfaceMesh m = load("anchor.off");
+  FaceBvh bvh(m);
+  const FaceBvh stale = bvh;
+  const float d = bounds(m).diagonal();
+  std::mt19937 rng(23);
+  std::normal_distribution<float> jitter(0.f, 0.02f * d);
+  for (Vertex v : m.vertices()) {
+    Vec3& p = m.position(v);
+    p = Vec3{p.x * 1.3f + jitter(rng), p.y + 0.25f * d + jitter(rng), p.z * 0.7f + jitter(rng)};
+  }
+  bvh.refit();
+  int stale_wrong = 0;
+  const FanTriangles fans(m);
+  for (const Vec3& p : query_points(m, 1500, 29)) {
+    const auto want = brute_closest(fans, p);
+    expect_same_closest(m, p, bvh.closest_point(p), want);
+    const auto old = stale.closest_point(p);
+    if (!old || old->squared_distance != want->squared_distance) ++stale_wrong;
+  }
+  EXPECT_GT(stale_wrong, 10) << "the motion must be large enough that stale boxes give wrong answers";
+  for (const Ray& ray : query_rays(m, 800, 37))
+    expect_same_hit(m, bvh.first_hit(ray.origin, ray.direction),
+                    brute_first_hit(fans, ray.origin, ray.direction, kInf));
+  EXPECT_EQ(bvh.stats().builds, 1u);
+}
+
+// Splits triangle f at p into three triangles with the low-level API; f is reused for one of them.
+std::array<Face, 3> split_triangle(SurfaceMesh& m, Face f, const Vec3& p) {
+  const Halfedge h0 = m.halfedge(f), h1 = m.next(h0), h2 = m.next(h1);
+  const Vertex c0 = m.to_vertex(h0), c1 = m.to_vertex(h1), c2 = m.to_vertex(h2);
+  const Vertex v = m.add_vertex(p);
+  const Halfedge e0 = m.new_edge(v, c0), e1 = m.new_edge(v, c1), e2 = m.new_edge(v, c2);
+  const Face f1 = m.new_face(), f2 = m.new_face();
+  auto link = [&](Face face, Halfedge a, Halfedge b, Halfedge c) {
+    m.set_next(a, b);
+    m.set_next(b, c);
+    m.set_next(c, a);
+    for (Halfedge h : {a, b, c}) m.set_face(h, face);
+    m.set_halfedge(face, a);
+  };
+  link(f, h1, SurfaceMesh::twin(e1), e0);   // c0 -> c1 -> v
+  link(f1, h2, SurfaceMesh::twin(e2), e1);  // c1 -> c2 -> v
+  link(f2, h0, SurfaceMesh::twin(e0), e2);  // c2 -> c0 -> v
+  m.set_halfedge(v, e0);
+  return {f, f1, f2};
+}
+
+Vec3 centroid(const SurfaceMesh& m, Face f) {
+  Vec3 c{0, 0, 0};
+  const std::vector<Vertex> v = corners_of(m, f);
+  for (Vertex x : v) c += m.position(x);
+  return c / float(v.size());
+}
+
+void expect_matches_brute_force(const SurfaceMesh& m, const FaceBvh& bvh, unsigned seed, int n = 1200) {
+  const FanTriangles fans(m);
+  for (const Vec3& p : query_points(m, n, seed))
+    expect_same_closest(m, p, bvh.closest_point(p), brute_closest(fans, p));
+  for (const Ray& ray : query_rays(m, n / 2, seed + 1))
+    expect_same_hit(m, bvh.first_hit(ray.origin, ray.direction),
+                    brute_first_hit(fans, ray.origin, ray.direction, kInf));
+}
+
+TEST(FaceBvh, UpdateAfterSplittingFacesWithoutRebuilding) {
+  SurfaceMesh m = load("spot_triangulated.obj");
+  FaceBvh bvh(m);
+  std::mt19937 rng(43);
+  std::vector<Face> changed;
+  for (int i = 0; i < 60; ++i) {
+    const Face f(static_cast<Index>(rng() % m.faces_size()));
+    // Move the new vertex off the surface so that the new faces stick out and get hit.
+    const Vec3 p = centroid(m, f) + Vec3{0.02f, 0.03f, -0.01f};
+    const auto faces = split_triangle(m, f, p);
+    changed.assign(faces.begin(), faces.end());
+    bvh.update(changed);
+  }
+  ASSERT_TRUE(m.validate().empty()) << m.validate().front();
+  EXPECT_EQ(m.n_faces(), 5856u + 120u);
+  const FaceBvh::Stats s = bvh.stats();
+  EXPECT_EQ(s.builds, 1u) << "small updates must not rebuild the tree";
+  EXPECT_EQ(s.live_faces, m.n_faces());
+  EXPECT_GE(s.dead_slots, 60u);  // the replaced entries of the split faces
+  EXPECT_GT(s.inserted_subtrees + s.merged_subtrees, 0u);
+  expect_matches_brute_force(m, bvh, 47);
+}
+
+TEST(FaceBvh, UpdateAfterRemovingFaces) {
+  SurfaceMesh m = load("anchor.off");
+  FaceBvh bvh(m);
+  // Faces no two of which share a vertex, so that every hole is a separate boundary loop.
+  std::vector<bool> used(m.vertices_size(), false);
+  std::vector<Face> removed;
+  for (Face f : m.faces()) {
+    if (f.idx() % 5 != 0) continue;
+    const std::vector<Vertex> c = corners_of(m, f);
+    bool free = true;
+    for (Vertex v : c)
+      for (Vertex w : m.vertices(v)) free = free && !used[v.idx()] && !used[w.idx()] && !m.is_boundary(v);
+    if (!free) continue;
+    for (Vertex v : c) used[v.idx()] = true;
+    ASSERT_TRUE(remove_face(m, f));
+    removed.push_back(f);
+  }
+  ASSERT_TRUE(m.validate().empty()) << m.validate().front();
+  ASSERT_GT(removed.size(), 40u);
+  bvh.update({}, removed);
+  EXPECT_EQ(bvh.stats().builds, 1u);
+  EXPECT_EQ(bvh.stats().live_faces, m.n_faces());
+  expect_matches_brute_force(m, bvh, 53);
+  // A point at a removed face's centre now finds a neighbour, never the removed face.
+  SurfaceMesh original = load("anchor.off");
+  for (Face f : removed) {
+    const auto r = bvh.closest_point(centroid(original, f));
+    ASSERT_TRUE(r);
+    EXPECT_NE(r->face, f);
+    EXPECT_GT(r->squared_distance, 0.0);
+  }
+}
+
+// The breaking simulation of the original: find the face under a point, split it there, repeat.
+TEST(FaceBvh, RepeatedSplitsInOnePlaceKeepTheTreeShallow) {
+  IndexedMesh plate = test::grid(40, true);
+  SurfaceMesh m = build(plate);
+  FaceBvh bvh(m);
+  std::mt19937 rng(59);
+  std::normal_distribution<float> spread(0.f, 0.3f);
+  for (int i = 0; i < 400; ++i) {
+    const Vec2 p{20 + spread(rng), 20 + spread(rng)};
+    const auto hit = bvh.face_containing(p);
+    ASSERT_TRUE(hit);
+    if (i % 8 == 0) {
+      const auto want = brute_containing(FanTriangles(m), p);
+      ASSERT_EQ(hit->face, want->face);
+    }
+    const auto faces = split_triangle(m, hit->face, {p.x, p.y, 0});
+    bvh.update(std::vector<Face>(faces.begin(), faces.end()));
+    const FaceBvh::Stats s = bvh.stats();
+    EXPECT_LE(s.height, 2 * s.height_at_build + 16);
+  }
+  ASSERT_TRUE(m.validate().empty());
+  const FaceBvh::Stats s = bvh.stats();
+  EXPECT_GT(s.merged_subtrees, 100u) << "edits in one place merge into one small subtree";
+  EXPECT_LE(s.builds, 5u) << "400 edits in one spot must not rebuild the tree every few edits";
+  EXPECT_EQ(s.live_faces, m.n_faces());
+  expect_matches_brute_force(m, bvh, 61, 600);
+  std::uniform_real_distribution<float> u(18.f, 22.f);
+  const FanTriangles final_fans(m);
+  for (int i = 0; i < 2000; ++i) {
+    const Vec2 p{u(rng), u(rng)};
+    const auto got = bvh.face_containing(p);
+    const auto want = brute_containing(final_fans, p);
+    ASSERT_TRUE(got && want);
+    EXPECT_EQ(got->face, want->face);
+  }
+}
+
+TEST(FaceBvh, ManyUpdatesTriggerAFullRebuildAndStayCorrect) {
+  SurfaceMesh m = load("anchor.off");
+  FaceBvh bvh(m, {.rebuild_fraction = 0.1});
+  std::mt19937 rng(67);
+  const std::size_t n = m.n_faces();
+  for (std::size_t i = 0; i < n / 3; ++i) {
+    const Face f(static_cast<Index>(rng() % m.faces_size()));
+    const auto faces = split_triangle(m, f, centroid(m, f));
+    bvh.update(std::vector<Face>(faces.begin(), faces.end()));
+    const FaceBvh::Stats s = bvh.stats();
+    EXPECT_LE(double(s.dead_slots), 0.1 * double(s.live_faces + s.dead_slots) + 1);
+  }
+  EXPECT_GT(bvh.stats().builds, 1u);
+  EXPECT_EQ(bvh.stats().live_faces, m.n_faces());
+  expect_matches_brute_force(m, bvh, 71, 900);
+}
+
+// The library's local operations, each followed by update() with the faces it touched.
+TEST(FaceBvh, UpdateAfterSplitFlipAndCollapseOperations) {
+  SurfaceMesh m = load("spot_triangulated.obj");
+  FaceBvh bvh(m);
+  std::mt19937 rng(79);
+  auto random_live = [&](std::size_t size, auto is_deleted) {
+    for (;;) {
+      const Index i = static_cast<Index>(rng() % size);
+      if (!is_deleted(i)) return i;
+    }
+  };
+  auto faces_around = [&](Vertex v, std::vector<Face>& out) {
+    for (Face f : m.faces(v)) out.push_back(f);
+  };
+  int done[4] = {0, 0, 0, 0};
+  for (int i = 0; i < 400; ++i) {
+    std::vector<Face> changed, removed;
+    switch (i % 4) {
+      case 0: {  // split a face at a point a little off the surface
+        const Face f(random_live(m.faces_size(), [&](Index x) { return m.is_deleted(Face(x)); }));
+        const Vertex v = split_face(m, f, centroid(m, f) + Vec3{0.01f, -0.01f, 0.01f});
+        ASSERT_TRUE(v.is_valid());
+        faces_around(v, changed);
+        break;
+      }
+      case 1: {  // split an edge at its midpoint
+        const Edge e(random_live(m.edges_size(), [&](Index x) { return m.is_deleted(Edge(x)); }));
+        const Vec3 mid = (m.position(m.vertex(e, 0)) + m.position(m.vertex(e, 1))) * 0.5f;
+        const Vertex v = split_edge(m, e, mid);
+        ASSERT_TRUE(v.is_valid());
+        faces_around(v, changed);
+        break;
+      }
+      case 2: {  // flip an edge: its two faces change corners
+        const Edge e(random_live(m.edges_size(), [&](Index x) { return m.is_deleted(Edge(x)); }));
+        if (!can_flip(m, e)) continue;
+        for (Face f : m.faces(e)) changed.push_back(f);
+        ASSERT_TRUE(flip(m, e).is_valid());
+        break;
+      }
+      case 3: {  // collapse an edge to its midpoint: the triangles on it vanish
+        const Halfedge h(random_live(m.halfedges_size(), [&](Index x) { return m.is_deleted(Halfedge(x)); }));
+        if (!can_collapse(m, h)) continue;
+        std::vector<Face> before;
+        faces_around(m.from_vertex(h), before);
+        faces_around(m.to_vertex(h), before);
+        const Vec3 mid = (m.position(m.from_vertex(h)) + m.position(m.to_vertex(h))) * 0.5f;
+        const Vertex v = collapse(m, h);
+        ASSERT_TRUE(v.is_valid());
+        m.position(v) = mid;
+        faces_around(v, changed);
+        for (Face f : before)
+          if (m.is_deleted(f)) removed.push_back(f);
+        EXPECT_FALSE(removed.empty());
+        break;
+      }
+    }
+    ++done[i % 4];
+    bvh.update(changed, removed);
+  }
+  ASSERT_TRUE(m.validate().empty()) << m.validate().front();
+  for (int k = 0; k < 4; ++k) EXPECT_GT(done[k], 20) << "operation " << k;
+  EXPECT_EQ(bvh.stats().live_faces, m.n_faces());
+  expect_matches_brute_force(m, bvh, 83);
+}
+
+TEST(FaceBvh, UpdateRejectsForeignHandlesAndGarbageCollectionNeedsABuild) {
+  SurfaceMesh m = load("anchor.off");
+  FaceBvh bvh(m);
+  EXPECT_THROW(bvh.update(std::vector<Face>{Face(Index(m.faces_size()))}), InvalidInputError);
+  EXPECT_THROW(bvh.update({}, std::vector<Face>{Face()}), InvalidInputError);
+  // Deleted faces in the changed list count as removed; unknown removed faces are ignored.
+  ASSERT_TRUE(remove_face(m, Face(10)));
+  bvh.update(std::vector<Face>{Face(10)}, std::vector<Face>{Face(10)});
+  EXPECT_EQ(bvh.stats().live_faces, m.n_faces());
+  m.garbage_collection();
+  EXPECT_THROW(bvh.closest_point({0, 0, 0}), InvalidInputError);
+  EXPECT_THROW(bvh.refit(), InvalidInputError);
+  bvh.build(m);
+  expect_matches_brute_force(m, bvh, 73, 600);
+}
+
+TEST(FaceBvh, ShapeOfTheTree) {
+  const SurfaceMesh m = load("spot_triangulated.obj");
+  for (BvhSplit split : {BvhSplit::sah, BvhSplit::median}) {
+    const FaceBvh bvh(m, {.split = split, .max_leaf_size = 4});
+    const FaceBvh::Stats s = bvh.stats();
+    EXPECT_EQ(s.nodes, 2 * s.leaves - 1);
+    EXPECT_GE(s.leaves, m.n_faces() / 4);
+    EXPECT_LE(s.height, 40u);
+    EXPECT_GE(s.height, 11u);  // ceil(log2(5856 / 4))
+    EXPECT_EQ(s.dead_slots, 0u);
+  }
+}
+
+}  // namespace
+}  // namespace hedge
