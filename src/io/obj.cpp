@@ -281,12 +281,7 @@ std::string write_obj(const IndexedMesh& mesh, const WriteOptions& options) {
   out += "# hedge OBJ export\n";
   for (const Vec3& v : mesh.positions) {
     out += "v ";
-    detail::append_float(out, v.x, options.precision);
-    out += ' ';
-    detail::append_float(out, v.y, options.precision);
-    out += ' ';
-    detail::append_float(out, v.z, options.precision);
-    out += '\n';
+    detail::append_vec3_line(out, v, options.precision);
   }
   if (has_vt) {
     for (const Vec2& t : mesh.texcoords) {
@@ -300,12 +295,7 @@ std::string write_obj(const IndexedMesh& mesh, const WriteOptions& options) {
   if (has_vn) {
     for (const Vec3& n : mesh.normals) {
       out += "vn ";
-      detail::append_float(out, n.x, options.precision);
-      out += ' ';
-      detail::append_float(out, n.y, options.precision);
-      out += ' ';
-      detail::append_float(out, n.z, options.precision);
-      out += '\n';
+      detail::append_vec3_line(out, n, options.precision);
     }
   }
   detail::for_each_face(mesh, [&](std::size_t first, std::size_t n) {

@@ -139,22 +139,8 @@ std::string write_off(const IndexedMesh& mesh, const WriteOptions& options) {
   out += ' ';
   detail::append_uint(out, mesh.face_count());
   out += " 0\n";
-  for (const Vec3& v : mesh.positions) {
-    detail::append_float(out, v.x, options.precision);
-    out += ' ';
-    detail::append_float(out, v.y, options.precision);
-    out += ' ';
-    detail::append_float(out, v.z, options.precision);
-    out += '\n';
-  }
-  detail::for_each_face(mesh, [&](std::size_t first, std::size_t n) {
-    detail::append_uint(out, n);
-    for (std::size_t c = first; c < first + n; ++c) {
-      out += ' ';
-      detail::append_uint(out, mesh.indices[c]);
-    }
-    out += '\n';
-  });
+  for (const Vec3& v : mesh.positions) detail::append_vec3_line(out, v, options.precision);
+  detail::append_counted_faces(out, mesh);
   return out;
 }
 

@@ -265,6 +265,16 @@ inline void append_uint(std::string& out, std::uint64_t v) {
   out.append(buf, static_cast<std::size_t>(r.ptr - buf));
 }
 
+//! Appends "x y z" and a newline.
+inline void append_vec3_line(std::string& out, const Vec3& v, int precision) {
+  append_float(out, v.x, precision);
+  out += ' ';
+  append_float(out, v.y, precision);
+  out += ' ';
+  append_float(out, v.z, precision);
+  out += '\n';
+}
+
 }  // namespace hedge::io::detail
 
 namespace hedge::io::detail {
@@ -285,6 +295,18 @@ void for_each_face(const IndexedMesh& mesh, F&& f) {
       c += n;
     }
   }
+}
+
+//! Appends one "n i j k ..." line per face: the face list of OFF and of ASCII PLY.
+inline void append_counted_faces(std::string& out, const IndexedMesh& mesh) {
+  for_each_face(mesh, [&](std::size_t first, std::size_t n) {
+    append_uint(out, n);
+    for (std::size_t c = first; c < first + n; ++c) {
+      out += ' ';
+      append_uint(out, mesh.indices[c]);
+    }
+    out += '\n';
+  });
 }
 
 }  // namespace hedge::io::detail

@@ -639,14 +639,7 @@ std::string write_ply(const IndexedMesh& mesh, const WriteOptions& options) {
       put(t.y, true);
     }
   }
-  detail::for_each_face(mesh, [&](std::size_t first, std::size_t n) {
-    detail::append_uint(out, n);
-    for (std::size_t c = first; c < first + n; ++c) {
-      out += ' ';
-      detail::append_uint(out, mesh.indices[c]);
-    }
-    out += '\n';
-  });
+  detail::append_counted_faces(out, mesh);
   return out;
 }
 

@@ -199,14 +199,7 @@ std::string write_stl(const IndexedMesh& mesh, const WriteOptions& options) {
   }
   out.reserve(triangles * 200 + 32);
   out += "solid hedge\n";
-  auto put = [&](const Vec3& v) {
-    detail::append_float(out, v.x, options.precision);
-    out += ' ';
-    detail::append_float(out, v.y, options.precision);
-    out += ' ';
-    detail::append_float(out, v.z, options.precision);
-    out += '\n';
-  };
+  auto put = [&](const Vec3& v) { detail::append_vec3_line(out, v, options.precision); };
   for_each_triangle(mesh, [&](const Vec3& a, const Vec3& b, const Vec3& c) {
     out += "facet normal ";
     put(facet_normal(a, b, c));
