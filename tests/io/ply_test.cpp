@@ -404,7 +404,8 @@ TEST(PlyRead, TruncatedBinaryReportsTheByteOffset) {
   // at header + 37, after 9 floats and the count byte.
   const std::pair<std::size_t, std::size_t> cuts[] = {
       {full.size() - 1, header + 45}, {full.size() - 5, header + 41}, {header + 37, header + 37}};
-  for (auto [cut, at] : cuts) {
+  for (const auto& [cut_at, at] : cuts) {
+    const std::size_t cut = cut_at;  // clang 14 cannot capture a structured binding
     const IoError e = catch_io_error([&] { read_ply(full.substr(0, cut)); });
     EXPECT_NE(std::string(e.what()).find("unexpected end of file"), std::string::npos) << e.what();
     EXPECT_EQ(e.byte_offset(), static_cast<std::int64_t>(at)) << e.what();
