@@ -1,25 +1,67 @@
 // build(): index buffers -> SurfaceMesh in O(n).
 //
-// Twins are found without hashing: every corner's edge is bucketed by its smaller vertex (a
-// counting sort), and each bucket, a handful of entries long, is sorted by the larger vertex.
-// Equal neighbours in a bucket are the corners sharing an undirected edge. Edges are then
-// numbered in corner order, so a face's half-edges sit together in memory, as a scan of the
-// input would visit them.
+// Clean input takes two passes over the corners:
+//  - pair_fast() finds twins without hashing: each undirected edge lives in a table line of its
+//    smaller vertex (one cache line per vertex, scanned with a few SIMD compares), so the second
+//    corner of an edge finds the first one there. Edges are numbered as their first corner comes
+//    up, so a face's half-edges sit together in memory, as a scan of the input would visit them;
+//  - link() writes the mesh arrays from the corners and, on triangles, walks every vertex fan
+//    soon after the vertex's last corner is linked, which checks that each vertex is manifold
+//    (polygons get a separate pass for that).
+// An edge that is not a simple manifold edge, or a degenerate face, sends the pairing to the
+// general path (bucketing by smaller vertex, then sorting each bucket), which handles every
+// defect: the repair steps (re-orientation, cutting non-manifold edges, splitting vertex fans) or,
+// under the strict policy, an error that names the offending input elements.
 //
-// Clean input takes one pass of each step and copies nothing it need not. Defects switch on the
-// repair steps (re-orientation, cutting non-manifold edges, splitting vertex fans) or, under the
-// strict policy, an error that names the offending input elements.
+// The large passes are memory-bound on big meshes, hence the software prefetches ahead of the
+// scattered accesses and the huge-page advice on the large arrays.
 #include "hedge/core/build.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <memory>
 #include <string>
+#include <unordered_map>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #include "hedge/error.h"
 
 namespace hedge {
 
 namespace {
+
+// Asks for transparent huge pages on a large, not yet touched block: fewer page faults while it
+// is first written, fewer TLB misses in the random-access passes. Advisory only.
+void advise_huge_pages(const void* p, std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t kHuge = std::uintptr_t(2) << 20;
+  if (bytes < 4 * kHuge) return;
+  const std::uintptr_t b = (reinterpret_cast<std::uintptr_t>(p) + kHuge - 1) & ~(kHuge - 1);
+  const std::uintptr_t e = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(kHuge - 1);
+  if (e > b) madvise(reinterpret_cast<void*>(b), e - b, MADV_HUGEPAGE);
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
+// v.resize(n), with the storage advised for huge pages before it is first written.
+template <typename T>
+void sized_vector(std::vector<T>& v, std::size_t n) {
+  v.reserve(n);
+  advise_huge_pages(v.data(), n * sizeof(T));
+  v.resize(n);
+}
 
 constexpr std::size_t kMaxNamed = 8;        // offending elements named in one error message
 constexpr Index kReversed = 0x80000000u;    // corner flag: its edge runs from larger to smaller vertex
@@ -32,6 +74,30 @@ std::string list_str(const std::vector<std::string>& items, std::size_t total) {
   if (total > items.size()) s += "; and " + std::to_string(total - items.size()) + " more";
   return s;
 }
+
+// A per-corner array that is not value-initialised: its passes write every element.
+class CornerArray {
+ public:
+  void resize_for_overwrite(std::size_t n) {
+    if (n != size_) {
+      data_.reset(new Index[n]);  // default-initialised: no clearing pass
+      size_ = n;
+    }
+    advise_huge_pages(data_.get(), n * sizeof(Index));
+  }
+  void assign(std::size_t n, Index value) {
+    resize_for_overwrite(n);
+    std::fill_n(data_.get(), n, value);
+  }
+  Index* data() { return data_.get(); }
+  const Index* data() const { return data_.get(); }
+  Index& operator[](std::size_t i) { return data_[i]; }
+  Index operator[](std::size_t i) const { return data_[i]; }
+
+ private:
+  std::unique_ptr<Index[]> data_;
+  std::size_t size_ = 0;
+};
 
 // The faces being built: the caller's triangle indices as they are, or cleaned copies.
 struct Faces {
@@ -123,14 +189,21 @@ struct BuildInput {
 // Friend of SurfaceMesh: writes its arrays directly.
 class MeshBuilder {
  public:
-  MeshBuilder(const BuildInput& in, const BuildOptions& opt, BuildReport& rep) : in_(in), opt_(opt), rep_(rep) {}
+  //! want_maps: fill the report's vertex and face maps (not needed when the caller passed no report).
+  MeshBuilder(const BuildInput& in, const BuildOptions& opt, BuildReport& rep, bool want_maps)
+      : in_(in), opt_(opt), rep_(rep), want_maps_(want_maps) {}
   SurfaceMesh run();
 
  private:
   void check_input() const;
   void weld();
-  void clean_faces();
+  bool clean_faces();
+  bool triangles_are_clean() const;
   void clean_faces_general();
+  enum class Paired { ok, degenerate, not_simple };
+  Paired pair_fast(bool unchecked);
+  template <bool kTriangles>
+  Paired pair_fast_impl(bool unchecked);
   EdgeGroups group_edges() const;
   bool pair_corners(const EdgeGroups& groups, bool repair);
   void number_edges();
@@ -150,15 +223,18 @@ class MeshBuilder {
   const BuildInput& in_;
   const BuildOptions& opt_;
   BuildReport& rep_;
+  const bool want_maps_;
 
   std::vector<Vec3> positions_;        // after welding (empty: the input's are used)
   std::vector<Index> weld_map_;        // input vertex -> welded vertex (empty: identity)
   std::vector<Index> weld_first_;      // welded vertex -> first input vertex (empty: identity)
   Faces f_;
   // Per corner: first its partner corner (or kNoPartner), then, after number_edges(), its half-edge.
-  std::vector<Index> corner_he_;
-  std::vector<Index> boundary_corners_;  // corners whose edge has no twin corner
-  std::vector<Index> corner_count_;    // corners per vertex
+  CornerArray corner_he_;
+  std::vector<Halfedge> vh_;           // vertex -> half-edge of its last corner (moved into the mesh)
+  std::vector<Index> boundary_hes_;    // boundary half-edges, found by fans_are_simple()
+  bool fans_checked_ = false;          // link() walked the fans already ...
+  bool fans_simple_ = false;           // ... and found one fan at every vertex
   Index n_edges_ = 0;
   std::vector<Index> vertex_origin_;   // added vertex (from #V on) -> welded vertex it was split from
   std::string problems_;               // strict-mode description of the defects found
@@ -168,9 +244,23 @@ class MeshBuilder {
 void MeshBuilder::check_input() const {
   const std::size_t nv = in_.positions.size();
   if (nv >= kInvalidIndex) throw InvalidInputError("too many vertices for 32-bit indices");
-  for (std::size_t i = 0; i < nv; ++i)
-    if (!is_finite(in_.positions[i]))
-      throw InvalidInputError("vertex " + std::to_string(i) + " has a non-finite coordinate");
+  // The scans below test whole blocks without branching (so that they vectorise) and look for the
+  // first offending element only in a block that has one.
+  constexpr std::size_t kBlock = 1024;
+  constexpr auto kMaxCoordinate = std::numeric_limits<decltype(Vec3::x)>::max();  // NaN compares false
+  for (std::size_t b = 0; b < nv; b += kBlock) {
+    const std::size_t e = std::min(nv, b + kBlock);
+    bool finite = true;
+    for (std::size_t i = b; i < e; ++i) {
+      const Vec3& p = in_.positions[i];
+      finite &= (int(std::fabs(p.x) <= kMaxCoordinate) & int(std::fabs(p.y) <= kMaxCoordinate) &
+                 int(std::fabs(p.z) <= kMaxCoordinate)) != 0;
+    }
+    if (finite) continue;
+    for (std::size_t i = b; i < e; ++i)
+      if (!is_finite(in_.positions[i]))
+        throw InvalidInputError("vertex " + std::to_string(i) + " has a non-finite coordinate");
+  }
   if (in_.face_sizes.empty()) {
     if (in_.indices.size() % 3 != 0)
       throw InvalidInputError("triangle index count " + std::to_string(in_.indices.size()) +
@@ -183,10 +273,20 @@ void MeshBuilder::check_input() const {
                               std::to_string(in_.indices.size()) + " indices");
   }
   if (in_.indices.size() >= kInvalidIndex / 2) throw InvalidInputError("too many corners for 32-bit indices");
-  for (std::size_t c = 0; c < in_.indices.size(); ++c)
-    if (in_.indices[c] >= nv)
-      throw InvalidInputError("corner " + std::to_string(c) + " refers to vertex " + std::to_string(in_.indices[c]) +
-                              " but there are " + std::to_string(nv) + " vertices");
+  const std::size_t ni = in_.indices.size();
+  const Index* corner_vertex = in_.indices.data();
+  const Index n_vert = static_cast<Index>(nv);  // 32-bit compares vectorise
+  for (std::size_t b = 0; b < ni; b += kBlock) {
+    const std::size_t e = std::min(ni, b + kBlock);
+    Index out_of_range = 0;
+    for (std::size_t c = b; c < e; ++c) out_of_range |= Index(corner_vertex[c] >= n_vert);
+    if (!out_of_range) continue;
+    for (std::size_t c = b; c < e; ++c)
+      if (corner_vertex[c] >= nv)
+        throw InvalidInputError("corner " + std::to_string(c) + " refers to vertex " +
+                                std::to_string(corner_vertex[c]) + " but there are " + std::to_string(nv) +
+                                " vertices");
+  }
   auto check_pool = [&](std::span<const Index> idx, std::size_t pool, const char* what) {
     if (idx.empty()) return;
     if (idx.size() != in_.indices.size())
@@ -208,21 +308,24 @@ void MeshBuilder::weld() {
   for (Index i = static_cast<Index>(weld_map_.size()); i-- > 0;) weld_first_[weld_map_[i]] = i;
 }
 
-void MeshBuilder::clean_faces() {
-  const std::size_t nf = in_.face_count();
-  f_.n_faces = static_cast<Index>(nf);
+bool MeshBuilder::clean_faces() {
+  f_.n_faces = static_cast<Index>(in_.face_count());
   if (in_.face_sizes.empty() && weld_map_.empty()) {
-    // Fast path: the caller's triangles, used in place unless one of them is degenerate.
-    const Index* t = in_.indices.data();
-    bool clean = true;
-    for (std::size_t i = 0; i < 3 * nf; i += 3)
-      clean &= (t[i] != t[i + 1]) & (t[i + 1] != t[i + 2]) & (t[i + 2] != t[i]);
-    if (clean) {
-      f_.corners = in_.indices;
-      return;
-    }
+    // Fast path: the caller's triangles, used in place. pair_fast() checks for degenerate ones on
+    // the way; triangles_are_clean() does when it cannot.
+    f_.corners = in_.indices;
+    return true;
   }
   clean_faces_general();
+  return false;
+}
+
+bool MeshBuilder::triangles_are_clean() const {
+  const Index* t = f_.corners.data();
+  bool clean = true;
+  for (std::size_t i = 0; i < f_.corners.size(); i += 3)
+    clean &= (t[i] != t[i + 1]) & (t[i + 1] != t[i + 2]) & (t[i + 2] != t[i]);
+  return clean;
 }
 
 void MeshBuilder::clean_faces_general() {
@@ -377,17 +480,178 @@ void MeshBuilder::number_edges() {
   Index* slot = corner_he_.data();
   const Index nc = f_.n_corners();
   Index e = 0;
-  boundary_corners_.clear();
   for (Index c = 0; c < nc; ++c) {
     const Index p = slot[c];
     if (p & kNumbered) continue;
     slot[c] = (2 * e) | kNumbered;
-    if (p == kNoPartner) boundary_corners_.push_back(c);
-    else slot[p] = (2 * e + 1) | kNumbered;
+    if (p != kNoPartner) slot[p] = (2 * e + 1) | kNumbered;
     ++e;
   }
   for (Index c = 0; c < nc; ++c) slot[c] &= ~kNumbered;
   n_edges_ = e;
+}
+
+namespace {
+
+// Undirected edges seen so far, bucketed by their smaller vertex: one 64-byte line per vertex with
+// room for kSlots edges (their larger vertices, then their states), the rest in an overflow map.
+// A state is edge << 2 | paired << 1 | reversed (the first corner's edge runs larger -> smaller).
+// (A vertex has about three edges to larger vertices on average, rarely more than eight.)
+class EdgeTable {
+ public:
+  static constexpr unsigned kSlots = 8;
+  static constexpr std::size_t kLine = 2 * kSlots;  // Index entries per vertex
+
+  explicit EdgeTable(Index nv) : storage_(new Index[kLine * (static_cast<std::size_t>(nv) + 1)]) {
+    // Align to 64 bytes (operator new[] gives 16): a vertex's bucket is one cache line.
+    auto addr = reinterpret_cast<std::uintptr_t>(storage_.get());
+    lines_ = storage_.get() + ((64 - (addr & 63)) & 63) / sizeof(Index);
+    advise_huge_pages(lines_, sizeof(Index) * kLine * static_cast<std::size_t>(nv));
+    std::memset(lines_, 0, sizeof(Index) * kLine * static_cast<std::size_t>(nv));
+  }
+  Index* line(Index lo) const { return lines_ + kLine * static_cast<std::size_t>(lo); }
+  //! Stores key in slot i (the same value if it is there already). The whole half-line is written,
+  //! so that the next scan of this line can take its data from the store in flight.
+  static void put_key(Index* line, Index i, Index key) {
+#if defined(__SSE2__)
+    alignas(16) static constexpr Index kLane[4][4] = {
+        {~0u, 0, 0, 0}, {0, ~0u, 0, 0}, {0, 0, ~0u, 0}, {0, 0, 0, ~0u}};
+    const __m128i lane = _mm_load_si128(reinterpret_cast<const __m128i*>(kLane[i & 3u]));
+    __m128i* half = reinterpret_cast<__m128i*>(line + (i & 4u));
+    const __m128i k = _mm_set1_epi32(static_cast<int>(key));
+    _mm_store_si128(half, _mm_or_si128(_mm_andnot_si128(lane, _mm_load_si128(half)), _mm_and_si128(lane, k)));
+#else
+    line[i] = key;
+#endif
+  }
+  //! Bit i (0-7) is set if slot i holds hi, bit 8 + i if slot i is free (a larger vertex is never 0).
+  static unsigned scan(const Index* line, Index hi) {
+#if defined(__SSE2__)
+    const __m128i key = _mm_set1_epi32(static_cast<int>(hi)), zero = _mm_setzero_si128();
+    const __m128i a = _mm_load_si128(reinterpret_cast<const __m128i*>(line));
+    const __m128i b = _mm_load_si128(reinterpret_cast<const __m128i*>(line + 4));
+    const __m128i m = _mm_packs_epi32(_mm_cmpeq_epi32(a, key), _mm_cmpeq_epi32(b, key));
+    const __m128i z = _mm_packs_epi32(_mm_cmpeq_epi32(a, zero), _mm_cmpeq_epi32(b, zero));
+    return static_cast<unsigned>(_mm_movemask_epi8(_mm_packs_epi16(m, z)));
+#else
+    unsigned bits = 0;
+    for (unsigned i = 0; i < kSlots; ++i)
+      bits |= (unsigned(line[i] == hi) << i) | (unsigned(line[i] == 0) << (kSlots + i));
+    return bits;
+#endif
+  }
+  //! The state of edge lo-hi in the overflow map (for vertices with more than kSlots edges to
+  //! larger vertices), inserted if absent.
+  [[gnu::noinline]] Index* overflow(Index lo, Index hi, bool& found) {
+    auto [it, inserted] = overflow_.try_emplace((std::uint64_t(lo) << 32) | hi, 0);
+    found = !inserted;
+    return &it->second;
+  }
+
+ private:
+  std::unique_ptr<Index[]> storage_;
+  Index* lines_ = nullptr;
+  std::unordered_map<std::uint64_t, Index> overflow_;
+};
+
+}  // namespace
+
+//! unchecked: the faces are the caller's triangles, not yet checked for degenerate ones.
+MeshBuilder::Paired MeshBuilder::pair_fast(bool unchecked) {
+  // The table takes a line per vertex: worth it when there are more corners than vertices (a
+  // closed triangle mesh has about six times more), not for, say, a point cloud with a few faces.
+  // The state encoding also limits edge numbers to 30 bits.
+  const Index nc = f_.n_corners();
+  if (n_vertices() > nc || nc >= (Index(1) << 30))
+    return unchecked && !triangles_are_clean() ? Paired::degenerate : Paired::not_simple;
+  return f_.triangles() ? pair_fast_impl<true>(unchecked) : pair_fast_impl<false>(unchecked);
+}
+
+// Pairs and numbers the corners in one pass, in corner order: a corner whose undirected edge is
+// new makes edge e (half-edge 2e), the next corner on that edge takes half-edge 2e + 1. Gives the
+// same numbering as group_edges() + pair_corners() + number_edges() on clean input, and gives up,
+// leaving the work to them, if an edge is not a simple manifold edge (a second corner of the same
+// direction, or a third corner) or a triangle is degenerate. Twins meet in one table line, no
+// sorting. Also sets each vertex's half-edge to its last corner's.
+template <bool kTriangles>
+MeshBuilder::Paired MeshBuilder::pair_fast_impl(bool unchecked) {
+  const Index nc = f_.n_corners();
+  const Index* cv = f_.corners.data();
+  EdgeTable table(n_vertices());
+  corner_he_.resize_for_overwrite(nc);
+  Index* he = corner_he_.data();
+  Index ne = 0;
+  Index bad = 0;  // nonzero once an edge has a third corner or two of one direction
+  auto visit = [&](Index a, Index b) -> Index {
+    const Index lo = a < b ? a : b, hi = a < b ? b : a;
+    const Index rev = a > b ? 1u : 0u;
+    Index* line = table.line(lo);
+    const unsigned mask = EdgeTable::scan(line, hi);
+    Index* st;
+    Index found;  // all ones if the edge is known
+    if (mask != 0) [[likely]] {
+      // Branch-free, as whether the edge is new is a coin toss for the branch predictor: the
+      // lowest set bit is the slot holding hi if there is one (bits 0-7), else the first free slot.
+      const unsigned t = static_cast<unsigned>(std::countr_zero(mask));
+      found = Index(0) - Index(t < 8);
+      st = line + EdgeTable::kSlots + (t & 7u);
+      EdgeTable::put_key(line, t & 7u, hi);
+    } else {
+      bool known;
+      st = table.overflow(lo, hi, known);
+      found = known ? ~Index(0) : 0;
+    }
+    const Index s = *st;                    // 0 for a new edge
+    bad |= found & ((s & 3u) ^ rev ^ 1u);  // must be unpaired, and of the other direction
+    // A known edge becomes paired (s + 2, as it was unpaired), a new one gets its state; either
+    // way the state shifted right is the corner's half-edge: 2e + 1, or 2 ne.
+    const Index fresh = (ne << 2) | rev;
+    const Index state = s + (fresh ^ ((fresh ^ 2u) & found));
+    *st = state;
+    ne += 1u + found;  // found is -1 or 0
+    return state >> 1;
+  };
+  // Each vertex takes the half-edge of its last corner (the fan walk fixes boundary vertices).
+  vh_.assign(n_vertices(), Halfedge());
+  Halfedge* vh = vh_.data();
+  if constexpr (kTriangles) {
+    // Table lines are fetched kAhead triangles early: on large meshes most lines are not cached.
+    // A degenerate triangle (which cannot make the pass go astray) is noted with the other
+    // defects; the end of the pass tells them apart.
+    constexpr Index kAhead = 3 * 8;
+    const Index* t = cv;
+    const Index* const end = cv + nc;
+    const Index* const last = nc >= 3 ? end - 3 : cv;
+    for (Index* out = he; t != end; t += 3, out += 3) {
+      const Index* p = t + std::min<std::ptrdiff_t>(kAhead, last - t);
+      const Index pa = p[0], pb = p[1], pd = p[2];
+      __builtin_prefetch(table.line(pa < pb ? pa : pb), 1);
+      __builtin_prefetch(table.line(pb < pd ? pb : pd), 1);
+      __builtin_prefetch(table.line(pd < pa ? pd : pa), 1);
+      const Index a = t[0], b = t[1], d = t[2];
+      bad |= Index((a == b) | (b == d) | (d == a));
+      const Index h0 = visit(a, b), h1 = visit(b, d), h2 = visit(d, a);
+      out[0] = h0;
+      out[1] = h1;
+      out[2] = h2;
+      vh[a] = Halfedge(h0);
+      vh[b] = Halfedge(h1);
+      vh[d] = Halfedge(h2);
+    }
+  } else {
+    for (Index f = 0; f < f_.n_faces && !bad; ++f) {
+      const Index b = f_.start[f], e = f_.start[f + 1];
+      for (Index c = b; c < e; ++c) {
+        he[c] = visit(cv[c], cv[c + 1 == e ? b : c + 1]);
+        vh[cv[c]] = Halfedge(he[c]);
+      }
+    }
+  }
+  n_edges_ = ne;
+  if (bad == 0) return Paired::ok;
+  vh_.clear();  // the general path numbers the edges again
+  // Degenerate faces come first: unless they are ruled out, the faces must be cleaned.
+  return unchecked && !triangles_are_clean() ? Paired::degenerate : Paired::not_simple;
 }
 
 void MeshBuilder::reorient(const EdgeGroups& groups) {
@@ -450,12 +714,52 @@ void MeshBuilder::reorient(const EdgeGroups& groups) {
   }
 }
 
+namespace {
+// Walks the fan about a vertex from its outgoing interior half-edge h0, rotating clockwise with
+// h -> next(twin(h)): one load a step, as boundary half-edges still have an invalid next. Returns
+// the number of corners in the fan. An open fan is completed counter-clockwise from h0; then `vh`
+// takes the boundary half-edge at its start, as the invariant asks, and the boundary half-edge
+// entering the vertex is appended to `boundary` for link_boundaries().
+Index walk_fan(const Halfedge* nx, Index h0, Halfedge& vh, std::vector<Index>& boundary) {
+  Index k = h0, seen = 1;
+  for (;;) {
+    const Index t = nx[k ^ 1u].idx();
+    if (t == h0) return seen;
+    if (t == kInvalidIndex) break;
+    k = t;
+    ++seen;
+  }
+  boundary.push_back(k ^ 1u);
+  for (Index s = h0;;) {
+    Index p = s;  // the half-edge before s in its face
+    for (Index n = nx[p].idx(); n != s; n = nx[n].idx()) p = n;
+    const Index b = p ^ 1u;
+    if (!nx[b].is_valid()) {
+      vh = Halfedge(b);
+      return seen;
+    }
+    s = b;
+    ++seen;
+  }
+}
+}  // namespace
+
 void MeshBuilder::link(SurfaceMesh& m) {
+  // Every half-edge is written from its corner: the even half-edge of an edge by the corner that
+  // made it, which also sets its twin's target (a boundary half-edge points back to that corner's
+  // vertex); the odd one by the partner corner, if any. Boundary half-edges keep the invalid next
+  // and face that resize() gave them until link_boundaries(). The vertex half-edges come from
+  // pair_fast(), or are set here on the general path (last corner wins, as there).
   const Index nv = n_vertices();
-  m.resize(nv, n_edges_, f_.n_faces);
   auto& pos = m.positions_.vector();
-  if (positions_.empty()) std::copy(in_.positions.begin(), in_.positions.end(), pos.begin());
-  else std::copy(positions_.begin(), positions_.end(), pos.begin());
+  if (positions_.empty()) pos.assign(in_.positions.begin(), in_.positions.end());
+  else pos.assign(positions_.begin(), positions_.end());
+  const bool have_vh = !vh_.empty() || nv == 0;
+  if (have_vh) m.v_halfedge_ = std::move(vh_);
+  sized_vector(m.h_vertex_, 2 * std::size_t(n_edges_));
+  sized_vector(m.h_next_, 2 * std::size_t(n_edges_));
+  sized_vector(m.h_face_, 2 * std::size_t(n_edges_));
+  m.resize(nv, n_edges_, f_.n_faces);
 
   Vertex* to = m.h_vertex_.data();
   Halfedge* nx = m.h_next_.data();
@@ -464,19 +768,81 @@ void MeshBuilder::link(SurfaceMesh& m) {
   Halfedge* fh = m.f_halfedge_.data();
   const Index* cv = f_.corners.data();
   const Index* che = corner_he_.data();
-  corner_count_.assign(nv, 0);
-  Index* count = corner_count_.data();
-  for_each_corner(f_, [&](Index c, Index cn, Index f) {
+  const Index nc = f_.n_corners();
+  Vertex sink[2];
+  auto put = [&](Index c, Index cn, Index f) {
     const Index h = che[c];
-    to[h] = Vertex(cv[cn]);
     nx[h] = Halfedge(che[cn]);
     fc[h] = Face(f);
-    vh[cv[c]] = Halfedge(h);
-    ++count[cv[c]];
-    if (cn < c) fh[f] = Halfedge(h);  // the last corner's half-edge enters the first corner
-  });
-  // A boundary half-edge points back to the origin of its twin's corner.
-  for (Index c : boundary_corners_) to[che[c] ^ 1u] = Vertex(cv[c]);
+    Vertex* t = (h & 1u) ? sink : to + h;  // the partner corner's targets are already set
+    t[0] = Vertex(cv[cn]);
+    t[1] = Vertex(cv[c]);
+  };
+  // put() with the values loaded: h -> hn in face f, from vertex v to vertex vn.
+  auto put3 = [&](Index h, Index hn, Index v, Index vn, Index f) {
+    nx[h] = Halfedge(hn);
+    fc[h] = Face(f);
+    Vertex* t = (h & 1u) ? sink : to + h;  // the partner corner's targets are already set
+    t[0] = Vertex(vn);
+    t[1] = Vertex(v);
+  };
+  if (f_.triangles()) {
+    // An odd half-edge lies where its edge was made, possibly far back: fetch it early.
+    constexpr Index kAhead = 3 * 8;
+    // With the half-edges from pair_fast(), each vertex's fan is walked (the fans_are_simple()
+    // check) soon after its last corner is linked, the one whose half-edge the vertex holds: all
+    // its faces are linked then, and the lines just written are still cached. The walks wait for a
+    // batch of such corners, to keep them out of the way of the linking loop.
+    const bool walk = have_vh;
+    constexpr Index kBatch = 192;
+    Index pending[kBatch], n_pending = 0;
+    boundary_hes_.clear();
+    std::size_t covered = 0;
+    for (Index c = 0, f = 0; c < nc; c += 3, ++f) {
+      if (c + kAhead + 3 <= nc) {
+        for (Index i = 0; i < 3; ++i) {
+          __builtin_prefetch(nx + che[c + kAhead + i], 1);
+          __builtin_prefetch(fc + che[c + kAhead + i], 1);
+          __builtin_prefetch(vh + cv[c + kAhead + i]);
+        }
+      }
+      // All loads first: a store through a handle might alias them as far as the compiler knows.
+      const Index h0 = che[c], h1 = che[c + 1], h2 = che[c + 2];
+      const Index v0 = cv[c], v1 = cv[c + 1], v2 = cv[c + 2];
+      const bool last0 = vh[v0].idx() == h0, last1 = vh[v1].idx() == h1, last2 = vh[v2].idx() == h2;
+      put3(h0, h1, v0, v1, f);
+      put3(h1, h2, v1, v2, f);
+      put3(h2, h0, v2, v0, f);
+      fh[f] = Halfedge(h2);  // the last corner's half-edge enters the first corner
+      if (walk) {
+        pending[n_pending] = c;
+        n_pending += last0;
+        pending[n_pending] = c + 1;
+        n_pending += last1;
+        pending[n_pending] = c + 2;
+        n_pending += last2;
+        if (n_pending > kBatch - 3 || c + 3 == nc) {
+          for (Index j = 0; j < n_pending; ++j) {
+            const Index pc = pending[j];
+            covered += walk_fan(nx, che[pc], vh[cv[pc]], boundary_hes_);
+          }
+          n_pending = 0;
+        }
+      }
+    }
+    if (walk) {
+      fans_checked_ = true;
+      fans_simple_ = covered == nc;
+      for (Index v = 0; v < nv; ++v) rep_.isolated_vertices += !vh[v].is_valid();
+    }
+  } else {
+    for_each_corner(f_, [&](Index c, Index cn, Index f) {
+      put(c, cn, f);
+      if (cn < c) fh[f] = Halfedge(che[c]);
+    });
+  }
+  if (!have_vh)
+    for (Index c = 0; c < nc; ++c) vh[cv[c]] = Halfedge(che[c]);
 }
 
 namespace {
@@ -489,45 +855,17 @@ Halfedge prev_in_face(const SurfaceMesh& m, Halfedge h) {
 }  // namespace
 
 bool MeshBuilder::fans_are_simple(SurfaceMesh& m) {
-  // Rotate about each vertex from its half-edge; a vertex is manifold when one fan holds all its
-  // corners. Open fans are completed counter-clockwise, and the vertex takes the boundary
-  // half-edge at their start, as the invariant asks.
+  // Each walk covers one fan, so every vertex is manifold exactly when the walks cover all corners.
   const Index nv = static_cast<Index>(m.vertices_size());
-  bool simple = true;
-  for (Index vi = 0; vi < nv; ++vi) {
-    const Index expected = corner_count_[vi];
-    if (expected == 0) {
-      ++rep_.isolated_vertices;
-      continue;
-    }
-    const Halfedge h0 = m.halfedge(Vertex(vi));
-    Index seen = 0;
-    Halfedge k = h0;
-    bool open = false;
-    do {
-      ++seen;
-      const Halfedge t = SurfaceMesh::twin(k);
-      if (m.is_boundary(t)) {
-        open = true;
-        break;
-      }
-      k = m.next(t);
-    } while (k != h0 && seen <= expected);
-    if (open) {
-      Halfedge s = h0;
-      for (;;) {
-        const Halfedge t = SurfaceMesh::twin(prev_in_face(m, s));
-        if (m.is_boundary(t)) {
-          m.set_halfedge(Vertex(vi), t);
-          break;
-        }
-        s = t;
-        if (++seen > expected) break;
-      }
-    }
-    simple &= seen == expected;
+  const Halfedge* nx = m.h_next_.data();
+  Halfedge* vh = m.v_halfedge_.data();
+  boundary_hes_.clear();
+  std::size_t covered = 0;
+  for (Index v = 0; v < nv; ++v) {
+    if (!vh[v].is_valid()) ++rep_.isolated_vertices;
+    else covered += walk_fan(nx, vh[v].idx(), vh[v], boundary_hes_);
   }
-  return simple;
+  return covered == f_.n_corners();
 }
 
 void MeshBuilder::split_fans(SurfaceMesh& m) {
@@ -598,10 +936,7 @@ void MeshBuilder::split_fans(SurfaceMesh& m) {
 
 void MeshBuilder::link_boundaries(SurfaceMesh& m) {
   // Every vertex now has one fan, so its half-edge is its only outgoing boundary half-edge.
-  for (Index c : boundary_corners_) {
-    const Halfedge b(corner_he_[c] ^ 1u);
-    m.set_next(b, m.halfedge(m.to_vertex(b)));
-  }
+  for (Index b : boundary_hes_) m.set_next(Halfedge(b), m.halfedge(m.to_vertex(Halfedge(b))));
 }
 
 void MeshBuilder::attach_attributes(SurfaceMesh& m) const {
@@ -626,8 +961,12 @@ void MeshBuilder::attach_attributes(SurfaceMesh& m) const {
 SurfaceMesh MeshBuilder::run() {
   check_input();
   weld();
-  clean_faces();
-  {
+  Paired paired = pair_fast(clean_faces());
+  if (paired == Paired::degenerate) {
+    clean_faces_general();
+    paired = pair_fast(false);
+  }
+  if (paired != Paired::ok) {
     EdgeGroups groups = group_edges();
     if (!pair_corners(groups, false)) {
       if (opt_.policy == TopologyPolicy::strict) throw TopologyError(problems_, bad_vertices_);
@@ -637,18 +976,23 @@ SurfaceMesh MeshBuilder::run() {
       groups = group_edges();
       pair_corners(groups, true);
     }
+    number_edges();
   }
-  number_edges();
 
   SurfaceMesh m;
   link(m);
-  if (!fans_are_simple(m)) {
+  if (!(fans_checked_ ? fans_simple_ : fans_are_simple(m))) {
     split_fans(m);
     if (!problems_.empty()) throw TopologyError(problems_, bad_vertices_);
+    // The walks listed the boundary half-edges of the fans they saw; the split ones need all.
+    boundary_hes_.clear();
+    for (Index h = 0; h < m.halfedges_size(); ++h)
+      if (m.is_boundary(Halfedge(h))) boundary_hes_.push_back(h);
   }
   link_boundaries(m);
   attach_attributes(m);
   if (rep_.duplicated_vertices > 0) m.shrink_to_fit();
+  if (!want_maps_) return m;
 
   // Maps for the caller.
   const Index nv = n_vertices();
@@ -669,7 +1013,7 @@ SurfaceMesh build(const IndexedMesh& input, const BuildOptions& options, BuildRe
   BuildReport local;
   BuildReport& rep = report ? *report : local;
   rep = BuildReport{};
-  return MeshBuilder(view, options, rep).run();
+  return MeshBuilder(view, options, rep, report != nullptr).run();
 }
 
 SurfaceMesh build_triangles(std::span<const Vec3> positions, std::span<const std::uint32_t> triangles,
@@ -678,7 +1022,7 @@ SurfaceMesh build_triangles(std::span<const Vec3> positions, std::span<const std
   BuildReport local;
   BuildReport& rep = report ? *report : local;
   rep = BuildReport{};
-  return MeshBuilder(view, options, rep).run();
+  return MeshBuilder(view, options, rep, report != nullptr).run();
 }
 
 }  // namespace hedge
