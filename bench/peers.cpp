@@ -543,7 +543,7 @@ int main(int argc, char** argv) {
     bars.push_back({{"name", name}, {"bar", bar}, {"pass", ok}, {"meshes_passed", passed}, {"meshes", n},
                     {lower_is_better ? "worst_hedge_bytes_per_vertex" : "worst_best_peer_over_hedge", worst}});
     if (!opt.json)
-      std::printf("  %-34s %-16s %s on %d/%d meshes (worst %s)\n", name.c_str(), bar.c_str(), ok ? "PASS" : "FAIL",
+      std::printf("  %-34s %-16s %s (%d of %d meshes pass; worst %s)\n", name.c_str(), bar.c_str(), ok ? "PASS" : "FAIL",
                   passed, n, fmt(lower_is_better ? "%.1f B/V" : "%.2fx", worst).c_str());
   };
   if (!opt.json) std::printf("\nBars (hedge against the faster peer, same run):\n");
