@@ -100,13 +100,7 @@ RandomEditReport random_edits(SurfaceMesh& m, const RandomEditOptions& opt) {
       case EditKind::split_face: {
         Face f = pick<Face>(m, rng, m.faces_size());
         if (!f.is_valid()) break;
-        Vec3d c{0, 0, 0};
-        double n = 0;
-        for (Vertex v : m.vertices(f)) {
-          c += to_double(m.position(v));
-          n += 1;
-        }
-        applied = split_face(m, f, to_float(c / n)).is_valid();
+        applied = split_face(m, f, face_centroid(m, f)).is_valid();
         break;
       }
       case EditKind::cut_face: {

@@ -450,20 +450,22 @@ Halfedge split_face(SurfaceMesh& m, Halfedge h0, Halfedge h1) {
   return n;
 }
 
+Vec3 face_centroid(const SurfaceMesh& m, Face f) {
+  Vec3d c{0, 0, 0};
+  std::size_t n = 0;
+  for (Vertex v : m.vertices(f)) {
+    c += to_double(m.position(v));
+    ++n;
+  }
+  return n ? to_float(c / double(n)) : Vec3{};
+}
+
 std::vector<Vertex> split_all_faces(SurfaceMesh& m) {
   std::vector<Face> faces;
   for (Face f : m.faces()) faces.push_back(f);
   std::vector<Vertex> out;
   out.reserve(faces.size());
-  for (Face f : faces) {
-    Vec3d c{0, 0, 0};
-    std::size_t n = 0;
-    for (Vertex v : m.vertices(f)) {
-      c += to_double(m.position(v));
-      ++n;
-    }
-    out.push_back(split_face(m, f, to_float(c / double(n))));
-  }
+  for (Face f : faces) out.push_back(split_face(m, f, face_centroid(m, f)));
   return out;
 }
 

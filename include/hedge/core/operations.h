@@ -60,6 +60,9 @@ bool can_split_face(const SurfaceMesh& mesh, Halfedge h0, Halfedge h1);
 //! \return the new half-edge from to_vertex(h0) to to_vertex(h1), invalid if refused.
 Halfedge split_face(SurfaceMesh& mesh, Halfedge h0, Halfedge h1);
 
+//! The mean of f's corner positions (accumulated in double). O(face degree).
+Vec3 face_centroid(const SurfaceMesh& mesh, Face f);
+
 //! Splits every live face at its centroid (the original's split-all-faces). \return the new vertices. O(n).
 std::vector<Vertex> split_all_faces(SurfaceMesh& mesh);
 
