@@ -1,6 +1,6 @@
 // Same-process comparison of hedge with OpenMesh and CGAL Surface_mesh on the same meshes.
 //
-//   peers [--json] [--quick] [--reps N] [--strict] [--root DIR] [mesh ...]
+//   peers [--json] [--quick] [--reps N] [--strict] [--only SEL] [--root DIR] [mesh ...]
 //
 // A mesh is a file path, optionally suffixed ":subN" for N rounds of 1-to-4 subdivision. Without
 // meshes: armadillo.obj, igea.ply and armadillo.obj:sub2 from ../shared/meshes (relative to the
@@ -17,6 +17,10 @@
 // edits imply. Bytes per vertex are the net heap
 // bytes allocated while building (counted by replacing operator new/delete, see alloc_count.cpp),
 // divided by the number of vertices.
+//
+// --only runs a subset (e.g. `--only hedge:split` under a profiler): operations not selected are
+// left out of the table, the JSON and the bars; backends not selected for an operation read n/a
+// there, and a backend no selected operation uses is not built (its bytes per vertex read n/a).
 //
 // Adding an operation: one entry in kOps below plus one function per backend (bench_common.h).
 #include <algorithm>
@@ -84,6 +88,20 @@ struct Options {
   int reps = 0;
   std::string root;
   std::vector<std::string> meshes;
+  //! --only: "OP" or "LIB:OP" entries (backend key, operation key); empty runs everything.
+  std::vector<std::pair<std::string, std::string>> only;
+  bool selected(const std::string& lib, const std::string& op) const {
+    if (only.empty()) return true;
+    for (const auto& [l, o] : only)
+      if (o == op && (l.empty() || l == lib)) return true;
+    return false;
+  }
+  bool selected_op(const std::string& op) const {
+    if (only.empty()) return true;
+    for (const auto& e : only)
+      if (e.second == op) return true;
+    return false;
+  }
 };
 
 std::string bar_text(const OpSpec& op) {
@@ -128,6 +146,7 @@ struct OpResult {
   int best_peer = -1;
   std::optional<bool> pass;
   std::size_t batch = 1;  //!< runs per sample
+  bool skipped = false;   //!< not selected by --only
 };
 
 struct MemCell {
@@ -164,6 +183,12 @@ MeshResult run_mesh(const Input& in, std::vector<Backend>& backends, const Optio
   std::vector<std::string> build_errors(nb);
   res.mem.resize(nb);
   for (std::size_t b = 0; b < nb; ++b) {
+    bool used = false;
+    for (const OpSpec& spec : kOps) used = used || opt.selected(backends[b].key, spec.key);
+    if (!used) {
+      build_errors[b] = "not selected (--only)";
+      continue;
+    }
     try {
       bench::alloc::start();
       refs[b] = backends[b].build(in);
@@ -194,7 +219,7 @@ MeshResult run_mesh(const Input& in, std::vector<Backend>& backends, const Optio
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t b = 1; b < nb; ++b)
       if (res.mem[b].available) best = std::min(best, res.mem[b].bytes_per_vertex);
-    res.mem_ratio = best / res.mem[0].bytes_per_vertex;
+    if (std::isfinite(best)) res.mem_ratio = best / res.mem[0].bytes_per_vertex;
     // The bar is stated for closed triangle meshes; on tiny meshes fixed overheads dominate.
     if (in.closed && in.n_vertices() >= kMemoryBarMinVertices)
       res.mem_pass = res.mem[0].bytes_per_vertex <= kBytesPerVertexBar;
@@ -205,10 +230,18 @@ MeshResult run_mesh(const Input& in, std::vector<Backend>& backends, const Optio
     OpResult r;
     r.spec = &spec;
     r.cells.resize(nb);
+    if (!opt.selected_op(spec.key)) {
+      r.skipped = true;
+      for (Cell& c : r.cells) c.error = "not selected (--only)";
+      res.ops.push_back(std::move(r));
+      continue;
+    }
     std::vector<const bench::OpImpl*> impl(nb, nullptr);
     for (std::size_t b = 0; b < nb; ++b) {
       auto it = backends[b].ops.find(spec.key);
-      if (it != backends[b].ops.end() && refs[b] && build_errors[b].empty()) {
+      if (!opt.selected(backends[b].key, spec.key)) {
+        r.cells[b].error = "not selected (--only)";
+      } else if (it != backends[b].ops.end() && refs[b] && build_errors[b].empty()) {
         impl[b] = &it->second;
         r.cells[b].available = true;
       } else {
@@ -329,6 +362,7 @@ void print_table(const MeshResult& m, const std::vector<Backend>& backends) {
   for (const Backend& b : backends) std::printf(" %10s", b.label.c_str());
   std::printf(" %16s  %-14s %s\n", "best peer/hedge", "bar", "result");
   for (const OpResult& r : m.ops) {
+    if (r.skipped) continue;
     std::printf("  %-32s", r.spec->label);
     for (const auto& c : r.cells) std::printf(" %10s", c.available ? fmt_time(c.median_ms).c_str() : "n/a");
     std::string ratio = fmt("%.2fx", r.ratio);
@@ -378,6 +412,7 @@ json to_json(const MeshResult& m, const std::vector<Backend>& backends) {
   j["checks_ok"] = m.checks_ok;
   json ops = json::object();
   for (const OpResult& r : m.ops) {
+    if (r.skipped) continue;
     json o;
     o["label"] = r.spec->label;
     std::vector<double> med(nb), chk(nb);
@@ -452,11 +487,14 @@ std::pair<double, long> machine_load() {
 }
 
 void usage() {
-  std::cerr << "usage: peers [--json] [--quick] [--reps N] [--strict] [--root DIR] [mesh[:subN] ...]\n"
+  std::cerr << "usage: peers [--json] [--quick] [--reps N] [--strict] [--only SEL] [--root DIR] [mesh[:subN] ...]\n"
                "  --json    print the figures as one JSON object on stdout\n"
                "  --quick   3 rounds per operation (a smoke run)\n"
                "  --reps N  N rounds per operation\n"
                "  --strict  exit with 1 when a bar fails\n"
+               "  --only    run only these: comma-separated OP or LIB:OP (e.g. split or hedge:split,cgal:split);\n"
+               "            LIB is hedge, openmesh or cgal; OP is build, one_ring, vertex_normals, collapse,\n"
+               "            split or flip; may be repeated\n"
                "  --root    repository root (default: found from the working directory)\n"
                "  mesh      a triangle mesh file; ':subN' appends N rounds of 1-to-4 subdivision\n";
 }
@@ -472,6 +510,28 @@ int main(int argc, char** argv) {
     else if (a == "--strict") opt.strict = true;
     else if (a == "--reps" && i + 1 < argc) opt.reps = std::atoi(argv[++i]);
     else if (a == "--root" && i + 1 < argc) opt.root = argv[++i];
+    else if (a == "--only" && i + 1 < argc) {
+      std::string list = argv[++i];
+      for (std::size_t start = 0; start <= list.size();) {
+        std::size_t end = list.find(',', start);
+        if (end == std::string::npos) end = list.size();
+        const std::string item = list.substr(start, end - start);
+        start = end + 1;
+        if (item.empty()) continue;
+        const std::size_t colon = item.find(':');
+        std::pair<std::string, std::string> sel =
+            colon == std::string::npos ? std::pair<std::string, std::string>{"", item}
+                                       : std::pair<std::string, std::string>{item.substr(0, colon), item.substr(colon + 1)};
+        bool known = false;
+        for (const OpSpec& spec : kOps) known = known || sel.second == spec.key;
+        if (!known) {
+          std::cerr << "peers: unknown --only entry '" << item << "'\n";
+          usage();
+          return 64;
+        }
+        opt.only.push_back(std::move(sel));
+      }
+    }
     else if (a == "-h" || a == "--help") {
       usage();
       return 0;
@@ -498,6 +558,15 @@ int main(int argc, char** argv) {
   backends.push_back(bench::hedge_backend());
   backends.push_back(bench::openmesh_backend());
   backends.push_back(bench::cgal_backend());
+  for (const auto& sel : opt.only) {
+    bool known = sel.first.empty();
+    for (const Backend& b : backends) known = known || sel.first == b.key;
+    if (!known) {
+      std::cerr << "peers: unknown library '" << sel.first << "' in --only\n";
+      usage();
+      return 64;
+    }
+  }
 
   const auto [load, cpus] = machine_load();
   if (!opt.json)

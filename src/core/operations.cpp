@@ -20,6 +20,12 @@ bool live(const Mesh& m, Vertex v) { return v.is_valid() && m.is_valid(v) && !m.
 
 bool is_triangle(const Mesh& m, Halfedge h) { return m.next(m.next(m.next(h))) == h; }
 
+// Change log: every face with a corner at v changed (its corners, or the corner data there).
+void mark_faces_around(Mesh& m, Vertex v, std::uint32_t events) {
+  if (!m.changes().active()) return;
+  for (Face f : m.faces(v)) m.mark_changed(f, events);
+}
+
 // True if v has more than k edges; stops counting there (O(min(valence, k))).
 bool valence_above(const Mesh& m, Vertex v, std::size_t k) {
   std::size_t n = 0;
@@ -114,7 +120,10 @@ bool relink_vertex(Mesh& m, Vertex v, const std::vector<Halfedge>& out) {
       }
       m.set_halfedge(owner, o);
     }
-    if (owner != v) m.set_vertex(Mesh::twin(o), owner);
+    if (owner != v) {
+      m.set_vertex(Mesh::twin(o), owner);
+      if (m.face(o).is_valid()) m.mark_changed(m.face(o), kFacesChanged | kVerticesAdded);
+    }
     const bool fan_ends = m.is_boundary(alive[(i + 1) % k]);
     if (fan_ends) m.set_next(Mesh::twin(o), alive[start]);
   }
@@ -140,8 +149,13 @@ void remove_faces_impl(Mesh& m, const std::vector<Face>& faces) {
   for (Halfedge h : hs) m.set_face(h, Face());
   for (Halfedge h : hs)
     if (m.is_boundary(Mesh::twin(h))) m.mark_deleted(Mesh::edge(h));
-  for (std::size_t i = 0; i < verts.size(); ++i)
-    if (!relink_vertex(m, verts[i], outs[i])) m.mark_deleted(verts[i]);
+  for (Face f : faces) m.mark_changed(f, kFacesRemoved);
+  for (std::size_t i = 0; i < verts.size(); ++i) {
+    if (!relink_vertex(m, verts[i], outs[i])) {
+      m.mark_deleted(verts[i]);
+      m.mark_changed(verts[i], kVerticesRemoved);
+    }
+  }
 }
 
 // Interpolation parameter of point p along segment a-b, clamped to it.
@@ -167,32 +181,196 @@ std::array<float, 3> barycentric(const Vec3& a, const Vec3& b, const Vec3& c, co
   return {float(wa / s), float(wb / s), float(wc / s)};
 }
 
-// Splits the triangle of h, whose loop is h -> n1 -> n2 with h entering the new vertex, by an edge
-// from to(h) to the tip to(n1). Returns the new face (the part holding next(h)).
-Face cut_triangle_after(Mesh& m, Halfedge h) {
-  const Face f = m.face(h);
-  const Halfedge g = m.next(h);       // from the new vertex
-  const Halfedge n1 = m.next(g);
-  const Halfedge n2 = m.next(n1);
-  // Loop now: h -> g -> n1 -> n2 -> h (a quad). Cut between to(h) and to(n1).
-  const Halfedge s = m.new_edge(m.to_vertex(h), m.to_vertex(n1));
-  const Halfedge st = Mesh::twin(s);
-  const Face f2 = m.new_face();
-  m.face_properties().copy(f.idx(), f2.idx());
-  m.set_next(h, s);
-  m.set_next(s, n2);
-  m.set_face(s, f);
-  m.set_next(n1, st);
-  m.set_next(st, g);
-  m.set_face(st, f2);
-  m.set_face(g, f2);
-  m.set_face(n1, f2);
-  m.set_halfedge(f, h);
-  m.set_halfedge(f2, g);
-  // Corner data: s enters the tip in f, st enters the new vertex in f2.
-  m.halfedge_properties().copy(n1.idx(), s.idx());
-  m.halfedge_properties().copy(h.idx(), st.idx());
-  return f2;
+// What split_edge read about the edge and its two sides: the two half-edges, their next ones,
+// the half-edges before them (hp, tp), the ends, the faces, and whether each face is a triangle.
+struct EdgeSplit {
+  Halfedge h, t, hn, tn, hp, tp;
+  Vertex a, b;
+  Face fh, ft;
+  bool tri1, tri2;
+};
+
+// Properties of the elements split_edge created: v (the new vertex), g (v -> b), s1 and s2 (to
+// the tips; invalid if that side is no triangle), f1 and f2 (the new faces; likewise).
+[[gnu::noinline]] void carry_split_properties(Mesh& m, Edge e, const Vec3& point, const EdgeSplit& k, Vertex v,
+                                              Halfedge g, Halfedge s1, Halfedge s2, Face f1, Face f2) {
+  PropertyContainer& vprops = m.vertex_properties();
+  PropertyContainer& hprops = m.halfedge_properties();
+  // The weights serve properties other than the position (which is `point`): a mesh without any
+  // skips computing them.
+  if (vprops.array_count() > 1 || !hprops.empty()) {
+    const float s = segment_parameter(m.position(k.a), m.position(k.b), point);
+    const float w[2] = {1 - s, s};
+    const Index src[2] = {k.a.idx(), k.b.idx()};
+    vprops.interpolate(v.idx(), src, w, 2, m.positions().array());
+    if (!hprops.empty()) {
+      // Corner data: g takes h's corner at b; h and gt get the blend at the new vertex; a cutting
+      // edge takes the tip's corner (s1, s2) and its twin the new vertex's.
+      const Halfedge gt = Mesh::twin(g);
+      const Index src1[2] = {k.hp.idx(), k.h.idx()};
+      const Index src2[2] = {k.t.idx(), k.tp.idx()};
+      hprops.copy(k.h.idx(), g.idx());
+      hprops.interpolate(gt.idx(), src2, w, 2);
+      hprops.interpolate(k.h.idx(), src1, w, 2);
+      if (k.tri1) {
+        hprops.copy(k.hn.idx(), s1.idx());
+        hprops.copy(k.h.idx(), Mesh::twin(s1).idx());
+      }
+      if (k.tri2) {
+        hprops.copy(k.tn.idx(), s2.idx());
+        hprops.copy(gt.idx(), Mesh::twin(s2).idx());
+      }
+    }
+  }
+  m.edge_properties().copy(e.idx(), Mesh::edge(g).idx());
+  if (k.tri1) m.face_properties().copy(k.fh.idx(), f1.idx());
+  if (k.tri2) m.face_properties().copy(k.ft.idx(), f2.idx());
+}
+
+// The same after split_between_triangles, which has just made v: what it read is found again in
+// the new connectivity (kept out of the common path, so that none of it stays live there).
+[[gnu::noinline]] void carry_split_properties(Mesh& m, Edge e, const Vec3& point, Vertex v) {
+  const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
+  const Halfedge g = m.halfedge(v), s1(g.idx() + 2), s2(g.idx() + 4);
+  const Face f1 = m.face(g), f2(f1.idx() + 1);
+  const EdgeSplit k{h, t, m.next(g), m.next(t), m.next(s1), m.next(s2), m.to_vertex(t), m.to_vertex(g), m.face(h),
+                    m.face(Mesh::twin(g)), true, true};
+  carry_split_properties(m, e, point, k, v, g, s1, s2, f1, f2);
+}
+
+// True if the mesh holds a property besides the positions.
+bool has_properties(const Mesh& m) {
+  return m.vertex_properties().array_count() > 1 || !m.halfedge_properties().empty() ||
+         !m.edge_properties().empty() || !m.face_properties().empty();
+}
+
+void mark_split(Mesh& m, Vertex v) {
+  if (m.changes().active()) {  // nothing to mark or tell when nobody listens
+    mark_faces_around(m, v, kFacesChanged | kFacesAdded | kVerticesAdded);
+    m.changes().notify();
+  }
+}
+
+// split_edge on an interior edge between two triangles, the common case. The new elements are
+// appended first; then what the edit needs is read (cache hits: split_edge has just walked it)
+// and written. Few values are live across the appends, which may move the arrays, so little is
+// saved to the stack and reloaded.
+//   side h: h -> hn -> hnn becomes h -> s1 -> hnn (fh) and g -> hn -> s1t (f1);
+//   side t: t -> tn -> tnn becomes gt -> s2 -> tnn (ft) and t -> tn -> s2t (f2).
+[[gnu::noinline]] Vertex split_between_triangles(Mesh& m, Edge e, const Vec3& point) {
+  const Vec3 p = point;  // point may live in the position array, which add_vertex may move
+  const Vertex v = m.add_vertex(p);
+  const Halfedge g = m.new_edges<3>(), s1(g.idx() + 2), s2(g.idx() + 4);
+  const Halfedge gt = Mesh::twin(g), s1t = Mesh::twin(s1), s2t = Mesh::twin(s2);
+  const Face f1 = m.new_faces<2>(), f2(f1.idx() + 1);
+  const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
+  const Vertex b = m.to_vertex(h);
+  const Halfedge b_out = m.halfedge(b);
+  {
+    const Halfedge hn = m.next(h), hnn = m.next(hn);
+    const Face fh = m.face(h);
+    m.set_vertex(g, b);
+    m.set_vertex(s1, m.to_vertex(hn));
+    m.set_vertex(h, v);
+    m.set_vertex(s1t, v);
+    m.set_next(h, s1);
+    m.set_next(s1, hnn);
+    m.set_next(hn, s1t);
+    m.set_next(s1t, g);
+    m.set_next(g, hn);
+    m.set_face(s1, fh);
+    m.set_face(g, f1);
+    m.set_face(hn, f1);
+    m.set_face(s1t, f1);
+    m.set_halfedge(fh, h);
+    m.set_halfedge(f1, g);
+  }
+  {
+    const Halfedge tn = m.next(t), tnn = m.next(tn);
+    const Face ft = m.face(t);
+    m.set_vertex(gt, v);
+    m.set_vertex(s2, m.to_vertex(tn));
+    m.set_vertex(s2t, v);
+    m.set_next(gt, s2);
+    m.set_next(s2, tnn);
+    m.set_next(tnn, gt);
+    m.set_next(tn, s2t);
+    m.set_next(s2t, t);
+    m.set_face(gt, ft);
+    m.set_face(s2, ft);
+    m.set_face(t, f2);
+    m.set_face(tn, f2);
+    m.set_face(s2t, f2);
+    m.set_halfedge(ft, gt);
+    m.set_halfedge(f2, t);
+  }
+  m.set_halfedge(b, b_out == t ? gt : b_out);  // a store, not a branch on a likely cache miss
+  m.set_halfedge(v, g);
+  if (has_properties(m)) [[unlikely]] carry_split_properties(m, e, p, v);
+  mark_split(m, v);
+  return v;
+}
+
+// split_edge with a boundary or a polygon on one side at least.
+[[gnu::noinline]] Vertex split_near_boundary_or_polygon(Mesh& m, Edge e, const Vec3& point) {
+  const Vec3 p = point;  // point may live in the position array, which add_vertex may move
+  const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
+  const Vertex b = m.to_vertex(h);
+  const Face fh = m.face(h), ft = m.face(t);
+  const Halfedge hn = m.next(h), hnn = m.next(hn), tn = m.next(t), tnn = m.next(tn);
+  const bool tri1 = fh.is_valid() && m.next(hnn) == h;
+  const bool tri2 = ft.is_valid() && m.next(tnn) == t;
+  // Read before any link changes: prev() walks them.
+  const EdgeSplit k{h, t, hn, tn, tri1 ? hnn : m.prev(h), tri2 ? tnn : m.prev(t), m.from_vertex(h), b, fh, ft,
+                    tri1, tri2};
+  const Vertex v = m.add_vertex(p);
+  const Halfedge g = m.new_edge(v, b), gt = Mesh::twin(g);
+  Halfedge s1, s2;
+  Face f1, f2;
+  m.set_vertex(h, v);
+  m.set_face(g, fh);
+  m.set_face(gt, ft);
+  m.set_next(g, hn);
+  m.set_next(gt, t);
+  if (tri1) {  // h -> hn -> hnn becomes h -> s1 -> hnn (fh) and g -> hn -> s1t (f1)
+    s1 = m.new_edge(v, m.to_vertex(hn));
+    f1 = m.new_face();
+    const Halfedge s1t = Mesh::twin(s1);
+    m.set_next(h, s1);
+    m.set_next(s1, hnn);
+    m.set_face(s1, fh);
+    m.set_next(hn, s1t);
+    m.set_next(s1t, g);
+    m.set_face(s1t, f1);
+    m.set_face(g, f1);
+    m.set_face(hn, f1);
+    m.set_halfedge(fh, h);
+    m.set_halfedge(f1, g);
+  } else {  // a polygon or the boundary loop gets g after h
+    m.set_next(h, g);
+  }
+  if (tri2) {  // t -> tn -> tnn becomes gt -> s2 -> tnn (ft) and t -> tn -> s2t (f2)
+    s2 = m.new_edge(v, m.to_vertex(tn));
+    f2 = m.new_face();
+    const Halfedge s2t = Mesh::twin(s2);
+    m.set_next(gt, s2);
+    m.set_next(s2, tnn);
+    m.set_face(s2, ft);
+    m.set_next(tn, s2t);
+    m.set_next(s2t, t);
+    m.set_face(s2t, f2);
+    m.set_face(t, f2);
+    m.set_face(tn, f2);
+    m.set_halfedge(ft, gt);
+    m.set_halfedge(f2, t);
+  }
+  m.set_next(k.tp, gt);
+  const Halfedge b_out = m.halfedge(b);
+  if (b_out == t) m.set_halfedge(b, gt);
+  m.set_halfedge(v, ft.is_valid() ? g : t);  // t is a boundary half-edge if ft is invalid
+  if (has_properties(m)) carry_split_properties(m, e, p, k, v, g, s1, s2, f1, f2);
+  mark_split(m, v);
+  return v;
 }
 
 }  // namespace
@@ -200,49 +378,16 @@ Face cut_triangle_after(Mesh& m, Halfedge h) {
 // ---------------------------------------------------------------------------------------------
 bool can_split_edge(const SurfaceMesh& m, Edge e) { return live(m, e); }
 
+// Both cases are out of line: split_edge itself is the test and a tail call, and neither case's
+// register use weighs on the other.
 Vertex split_edge(SurfaceMesh& m, Edge e, const Vec3& point) {
   if (!can_split_edge(m, e) || !is_finite(point)) return {};
   const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
-  const Vertex a = m.from_vertex(h), b = m.to_vertex(h);
-  // On a triangle the previous half-edge is next(next): one walk serves both questions.
-  const Halfedge hn = m.next(h), hnn = m.next(hn), tnn = m.next(m.next(t));
-  const bool tri1 = !m.is_boundary(h) && m.next(hnn) == h;
-  const bool tri2 = !m.is_boundary(t) && m.next(tnn) == t;
-  const Halfedge hp = tri1 ? hnn : m.prev(h), tp = tri2 ? tnn : m.prev(t);
-  const float s = segment_parameter(m.position(a), m.position(b), point);
-
-  const Vertex v = m.add_vertex(point);
-  {
-    const Index src[2] = {a.idx(), b.idx()};
-    const float w[2] = {1 - s, s};
-    m.vertex_properties().interpolate(v.idx(), src, w, 2);
-    m.position(v) = point;
-  }
-  const Halfedge g = m.new_edge(v, b), gt = Mesh::twin(g);
-  m.edge_properties().copy(e.idx(), Mesh::edge(g).idx());
-  auto& hprops = m.halfedge_properties();
-  // Corner data: g takes h's corner at b; h and gt get the blend at the new vertex.
-  hprops.copy(h.idx(), g.idx());
-  {
-    const Index src1[2] = {hp.idx(), h.idx()};
-    const Index src2[2] = {t.idx(), tp.idx()};
-    const float w[2] = {1 - s, s};
-    hprops.interpolate(gt.idx(), src2, w, 2);
-    hprops.interpolate(h.idx(), src1, w, 2);
-  }
-  m.set_vertex(h, v);
-  m.set_next(h, g);
-  m.set_next(g, hn);
-  m.set_face(g, m.face(h));
-  m.set_next(tp, gt);
-  m.set_next(gt, t);
-  m.set_face(gt, m.face(t));
-  if (m.halfedge(b) == t) m.set_halfedge(b, gt);
-  m.set_halfedge(v, m.is_boundary(t) ? t : g);
-
-  if (tri1) cut_triangle_after(m, h);
-  if (tri2) cut_triangle_after(m, gt);
-  return v;
+  // A triangle on each side? (next(next(next(h))) == h, with a face.)
+  const Halfedge hnn = m.next(m.next(h)), tnn = m.next(m.next(t));
+  if (m.face(h).is_valid() && m.face(t).is_valid() && m.next(hnn) == h && m.next(tnn) == t)
+    return split_between_triangles(m, e, point);
+  return split_near_boundary_or_polygon(m, e, point);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -256,20 +401,26 @@ bool can_collapse(const SurfaceMesh& m, Halfedge h) {
   const Vertex tl = fl.is_valid() && is_triangle(m, h) ? m.to_vertex(m.next(h)) : Vertex();
   const Vertex tr = fr.is_valid() && is_triangle(m, t) ? m.to_vertex(m.next(t)) : Vertex();
 
-  // Link condition, and no second edge between v0 and v1.
+  // Link condition, and no second edge between v0 and v1. The rotations start from h (leaving
+  // v0) and t (leaving v1), at hand, rather than from the vertices' stored half-edges.
   SmallList<Vertex> n0;
   std::size_t to_v1 = 0;
-  for (Vertex w : m.vertices(v0)) {
+  Halfedge x = h;
+  do {
+    const Vertex w = m.to_vertex(x);
     n0.push_back(w);
     to_v1 += w == v1;
-  }
+    x = m.rotate_cw(x);
+  } while (x != h);
   if (to_v1 != 1) return false;
   std::size_t val1 = 0;
-  for (Vertex w : m.vertices(v1)) {
+  x = t;
+  do {
+    const Vertex w = m.to_vertex(x);
     ++val1;
-    if (w == v0 || w == tl || w == tr) continue;
-    if (n0.contains(w)) return false;
-  }
+    if (w != v0 && w != tl && w != tr && n0.contains(w)) return false;
+    x = m.rotate_cw(x);
+  } while (x != t);
   // Tips lose an edge; merged edges must keep a face on one side.
   for (int side = 0; side < 2; ++side) {
     const Vertex tip = side == 0 ? tl : tr;
@@ -313,9 +464,16 @@ Vertex collapse(SurfaceMesh& m, Halfedge h) {
   const Vertex v0 = m.from_vertex(h), v1 = m.to_vertex(h);
   const Halfedge hn = m.next(h), hp = m.prev(h), tn = m.next(t), tp = m.prev(t);
   const Face fl = m.face(h), fr = m.face(t);
+  // Two interior ends make an interior survivor, whose stored half-edge needs no boundary search.
+  const bool on_boundary = m.is_boundary(v0) || m.is_boundary(v1);
 
-  // Renaming targets leaves every next link intact, so the rotation about v0 can go on meanwhile.
-  for (Halfedge o : m.halfedges(v0)) m.set_vertex(Mesh::twin(o), v1);
+  // Renaming targets leaves every next link intact, so the rotation about v0 (from h, which leaves
+  // it) can go on meanwhile.
+  Halfedge o = h;
+  do {
+    m.set_vertex(Mesh::twin(o), v1);
+    o = m.rotate_cw(o);
+  } while (o != h);
   m.set_next(hp, hn);
   m.set_next(tp, tn);
   if (fl.is_valid() && m.halfedge(fl) == h) m.set_halfedge(fl, hn);
@@ -326,34 +484,70 @@ Vertex collapse(SurfaceMesh& m, Halfedge h) {
   m.set_halfedge(v0, Halfedge());
   if (fl.is_valid() && m.next(m.next(hn)) == hn) remove_two_gon(m, hn);
   if (fr.is_valid() && m.next(m.next(tn)) == tn) remove_two_gon(m, tn);
-  m.adjust_outgoing_halfedge(v1);
+  if (on_boundary) m.adjust_outgoing_halfedge(v1);
+  if (m.changes().active()) {
+    // A triangle on h is deleted by now; a polygon on h lost a corner. Either way it is marked.
+    if (fl.is_valid()) m.mark_changed(fl, m.is_deleted(fl) ? kFacesRemoved : kFacesChanged);
+    if (fr.is_valid()) m.mark_changed(fr, m.is_deleted(fr) ? kFacesRemoved : kFacesChanged);
+    m.mark_changed(v0, kVerticesRemoved);
+    mark_faces_around(m, v1, kFacesChanged);
+    m.changes().notify();
+  }
   return v1;
 }
 
 // ---------------------------------------------------------------------------------------------
+namespace {
+// False if from_vertex(out) is an interior vertex with at most 3 edges (a flip would leave it with
+// 2). Rotates from `out`, a half-edge at hand, rather than from the vertex's stored half-edge (one
+// dependent load less), and looks at faces only when there are 3 edges or fewer. O(1).
+bool keeps_enough_edges(const Mesh& m, Halfedge out) {
+  const Halfedge x1 = m.rotate_cw(out), x2 = m.rotate_cw(x1), x3 = m.rotate_cw(x2);
+  if (x1 != out && x2 != out && x3 != out) return true;  // more than 3 edges
+  // 3 edges or fewer, all among out, x1, x2: fine if one is a boundary half-edge.
+  return m.is_boundary(out) || m.is_boundary(x1) || m.is_boundary(x2);
+}
+
+// True if an edge joins from_vertex(out) and w: rotates about from_vertex(out) from `out`.
+bool joined(const Mesh& m, Halfedge out, Vertex w) {
+  Halfedge x = out;
+  do {
+    if (m.to_vertex(x) == w) return true;
+    x = m.rotate_cw(x);
+  } while (x != out);
+  return false;
+}
+
+// can_flip's tests once the two triangles are known: h -> h1 -> h2 and t -> t1 -> t2.
+bool flip_allowed(const Mesh& m, Halfedge h, Halfedge t, Halfedge h1, Halfedge h2, Halfedge t1) {
+  const Vertex c = m.to_vertex(h1), d = m.to_vertex(t1);
+  // h2 leaves c, h leaves a and t leaves b: the walks start there. The two short fixed walks come
+  // first: the loop about c ends on a mispredicted branch, which would restart them.
+  return c != d && keeps_enough_edges(m, h) && keeps_enough_edges(m, t) && !joined(m, h2, d);
+}
+}  // namespace
+
 bool can_flip(const SurfaceMesh& m, Edge e) {
   if (!live(m, e) || m.is_boundary(e)) return false;
   const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
-  if (!is_triangle(m, h) || !is_triangle(m, t)) return false;
-  const Vertex a = m.from_vertex(h), b = m.to_vertex(h);
-  const Vertex c = m.to_vertex(m.next(h)), d = m.to_vertex(m.next(t));
-  if (c == d || m.find_halfedge(c, d).is_valid()) return false;
-  for (Vertex v : {a, b})
-    if (!m.is_boundary(v) && !valence_above(m, v, 3)) return false;
-  return true;
+  const Halfedge h1 = m.next(h), h2 = m.next(h1), t1 = m.next(t), t2 = m.next(t1);
+  return m.next(h2) == h && m.next(t2) == t && flip_allowed(m, h, t, h1, h2, t1);
 }
 
 Edge flip(SurfaceMesh& m, Edge e) {
-  if (!can_flip(m, e)) return {};
+  if (!live(m, e) || m.is_boundary(e)) return {};
   const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
   const Halfedge h1 = m.next(h), h2 = m.next(h1), t1 = m.next(t), t2 = m.next(t1);
+  if (m.next(h2) != h || m.next(t2) != t || !flip_allowed(m, h, t, h1, h2, t1)) return {};
   const Vertex a = m.from_vertex(h), b = m.to_vertex(h);
   const Vertex c = m.to_vertex(h1), d = m.to_vertex(t1);
   const Face f1 = m.face(h), f2 = m.face(t);
   m.halfedge_properties().copy(h1.idx(), h.idx());
   m.halfedge_properties().copy(t1.idx(), t.idx());
-  if (m.halfedge(a) == h) m.set_halfedge(a, t1);
-  if (m.halfedge(b) == t) m.set_halfedge(b, h1);
+  // Stores rather than branches on the (likely missing) vertex half-edges.
+  const Halfedge a_out = m.halfedge(a), b_out = m.halfedge(b);
+  m.set_halfedge(a, a_out == h ? t1 : a_out);
+  m.set_halfedge(b, b_out == t ? h1 : b_out);
   m.set_vertex(h, c);
   m.set_vertex(t, d);
   m.set_next(t1, h);
@@ -366,6 +560,11 @@ Edge flip(SurfaceMesh& m, Edge e) {
   m.set_face(h1, f2);
   m.set_halfedge(f1, h);
   m.set_halfedge(f2, t);
+  if (m.changes().active()) {  // nothing to mark or tell when nobody listens
+    m.mark_changed(f1);
+    m.mark_changed(f2);
+    m.changes().notify();
+  }
   return e;
 }
 
@@ -416,6 +615,8 @@ Vertex split_face(SurfaceMesh& m, Face f, const Vec3& point) {
     m.set_halfedge(fi, hs[i]);
   }
   m.set_halfedge(v, out[0]);
+  mark_faces_around(m, v, kFacesChanged | kFacesAdded | kVerticesAdded);
+  m.changes().notify();
   return v;
 }
 
@@ -447,6 +648,9 @@ Halfedge split_face(SurfaceMesh& m, Halfedge h0, Halfedge h1) {
   }
   m.set_halfedge(f, h1);
   m.set_halfedge(g, h0);
+  m.mark_changed(f);
+  m.mark_changed(g, kFacesAdded);
+  m.changes().notify();
   return n;
 }
 
@@ -465,7 +669,9 @@ std::vector<Vertex> split_all_faces(SurfaceMesh& m) {
   for (Face f : m.faces()) faces.push_back(f);
   std::vector<Vertex> out;
   out.reserve(faces.size());
+  m.changes().begin();  // one notification for the whole pass
   for (Face f : faces) out.push_back(split_face(m, f, face_centroid(m, f)));
+  m.changes().commit();
   return out;
 }
 
@@ -552,6 +758,8 @@ Face add_face(SurfaceMesh& m, std::span<const Vertex> vs) {
     if (!m.halfedge(v).is_valid() || !m.is_boundary(m.halfedge(v))) m.set_halfedge(v, hs[i]);
     m.adjust_outgoing_halfedge(v);
   }
+  m.mark_changed(f, kFacesAdded);
+  m.changes().notify();
   return f;
 }
 
@@ -566,6 +774,7 @@ bool can_remove_face(const SurfaceMesh& m, Face f) {
 bool remove_face(SurfaceMesh& m, Face f) {
   if (!can_remove_face(m, f)) return false;
   remove_faces_impl(m, {f});
+  m.changes().notify();
   return true;
 }
 
@@ -596,13 +805,17 @@ bool remove_vertex(SurfaceMesh& m, Vertex v) {
     // Isolated, or only dangling edges (not possible in a valid mesh): just the vertex.
     m.set_halfedge(v, Halfedge());
     m.mark_deleted(v);
+    m.mark_changed(v, kVerticesRemoved);
+    m.changes().notify();
     return true;
   }
   remove_faces_impl(m, fs);
   if (!m.is_deleted(v)) {
     m.set_halfedge(v, Halfedge());
     m.mark_deleted(v);
+    m.mark_changed(v, kVerticesRemoved);
   }
+  m.changes().notify();
   return true;
 }
 
@@ -615,7 +828,9 @@ std::vector<Face> fill_hole(SurfaceMesh& m, Halfedge h) {
     if (loop.size() > m.halfedges_size()) return {};  // a damaged loop
   }
   if (loop.size() < 3) return {};
+  m.changes().begin();  // one notification for the whole fill
   const Face f = m.new_face();
+  m.mark_changed(f, kFacesAdded);
   for (Halfedge g : loop) m.set_face(g, f);
   m.set_halfedge(f, h);
   for (Halfedge g : loop) m.adjust_outgoing_halfedge(m.to_vertex(g));
@@ -640,6 +855,7 @@ std::vector<Face> fill_hole(SurfaceMesh& m, Halfedge h) {
     rest = m.face(n);
     faces.push_back(rest);
   }
+  m.changes().commit();
   return faces;
 }
 
@@ -698,6 +914,7 @@ SurfaceMesh detach_faces(SurfaceMesh& m, std::span<const Face> faces_in, std::ve
     }
   }
   remove_faces_impl(m, faces);
+  m.changes().notify();
   if (vertex_origin) *vertex_origin = std::move(origin);
   return out;
 }

@@ -1,5 +1,8 @@
 #include "hedge/core/surface_mesh.h"
 
+#include <algorithm>
+#include <cstring>
+#include <type_traits>
 #include <utility>
 
 namespace hedge {
@@ -125,34 +128,43 @@ bool SurfaceMesh::remove_vertex_property(std::string_view name) {
   return vprops_.remove(name);
 }
 
-Vertex SurfaceMesh::add_vertex(const Vec3& point) {
-  const Vec3 p = point;  // point may live in the position array that is about to grow
-  Vertex v(static_cast<Index>(vertices_size()));
-  v_halfedge_.push_back(Halfedge());
-  v_deleted_.push_back(false);
-  vprops_.push_back();
-  positions_[v] = p;
-  return v;
+void SurfaceMesh::grow_flags(std::vector<bool>& flags, std::size_t n) {
+  flags.resize(std::max(n, 2 * flags.size()), false);
 }
 
-Halfedge SurfaceMesh::new_edge(Vertex a, Vertex b) {
-  Halfedge h(static_cast<Index>(halfedges_size()));
-  h_vertex_.push_back(b);
-  h_vertex_.push_back(a);
-  h_next_.resize(h_next_.size() + 2);
-  h_face_.resize(h_face_.size() + 2);
-  e_deleted_.push_back(false);
-  hprops_.resize(halfedges_size());
-  eprops_.push_back();
-  return h;
+namespace {
+// Gives v capacity `capacity` (if it has less), moving its elements with one memcpy.
+template <typename T>
+void grow_array(std::vector<T>& v, std::size_t capacity) {
+  static_assert(std::is_trivially_copyable_v<T>, "moved with memcpy");
+  if (v.capacity() >= capacity) return;
+  std::vector<T> bigger;
+  bigger.reserve(capacity);
+  bigger.resize(v.size());  // a fill, cheaper than std::vector's element-by-element move
+  if (!v.empty()) std::memcpy(bigger.data(), v.data(), v.size() * sizeof(T));
+  v.swap(bigger);
 }
 
-Face SurfaceMesh::new_face() {
-  Face f(static_cast<Index>(faces_size()));
-  f_halfedge_.push_back(Halfedge());
-  f_deleted_.push_back(false);
-  fprops_.push_back();
-  return f;
+std::size_t doubled(std::size_t capacity, std::size_t size, std::size_t n) {
+  return std::max({2 * capacity, size + n, std::size_t(16)});
+}
+}  // namespace
+
+void SurfaceMesh::grow_vertices(std::size_t n) {
+  const std::size_t capacity = doubled(v_halfedge_.capacity(), v_halfedge_.size(), n);
+  grow_array(v_halfedge_, capacity);
+  grow_array(positions_.vector(), capacity);
+}
+
+void SurfaceMesh::grow_halfedges(std::size_t n) {
+  const std::size_t capacity = doubled(h_vertex_.capacity(), h_vertex_.size(), n);
+  grow_array(h_vertex_, capacity);
+  grow_array(h_next_, capacity);
+  grow_array(h_face_, capacity);
+}
+
+void SurfaceMesh::grow_faces(std::size_t n) {
+  grow_array(f_halfedge_, doubled(f_halfedge_.capacity(), f_halfedge_.size(), n));
 }
 
 void SurfaceMesh::adjust_outgoing_halfedge(Vertex v) {
@@ -211,14 +223,17 @@ void SurfaceMesh::resize(std::size_t n_v, std::size_t n_e, std::size_t n_f) {
   f_halfedge_.resize(n_f);
   f_deleted_.resize(n_f, false);
   fprops_.resize(n_f);
+  changes_.mark_reset();
+  changes_.notify();
 }
 
 namespace {
-// Old-to-new map keeping the elements that are not deleted, in order.
-std::vector<Index> keep_map(const std::vector<bool>& deleted, std::size_t& kept) {
-  std::vector<Index> map(deleted.size(), kInvalidIndex);
+// Old-to-new map keeping the first `size` elements that are not deleted, in order (the flags may
+// be longer than the element arrays).
+std::vector<Index> keep_map(const std::vector<bool>& deleted, std::size_t size, std::size_t& kept) {
+  std::vector<Index> map(size, kInvalidIndex);
   Index n = 0;
-  for (std::size_t i = 0; i < deleted.size(); ++i)
+  for (std::size_t i = 0; i < size; ++i)
     if (!deleted[i]) map[i] = n++;
   kept = n;
   return map;
@@ -241,9 +256,9 @@ void compact_vector(std::vector<T>& v, const std::vector<Index>& map, std::size_
 GarbageMaps SurfaceMesh::garbage_collection() {
   GarbageMaps maps;
   std::size_t nv = 0, ne = 0, nf = 0;
-  maps.vertices = keep_map(v_deleted_, nv);
-  maps.edges = keep_map(e_deleted_, ne);
-  maps.faces = keep_map(f_deleted_, nf);
+  maps.vertices = keep_map(v_deleted_, vertices_size(), nv);
+  maps.edges = keep_map(e_deleted_, edges_size(), ne);
+  maps.faces = keep_map(f_deleted_, faces_size(), nf);
   maps.halfedges.assign(halfedges_size(), kInvalidIndex);
   for (std::size_t e = 0; e < maps.edges.size(); ++e) {
     if (maps.edges[e] == kInvalidIndex) continue;
@@ -271,6 +286,9 @@ GarbageMaps SurfaceMesh::garbage_collection() {
   e_deleted_.assign(ne, false);
   f_deleted_.assign(nf, false);
   deleted_vertices_ = deleted_edges_ = deleted_faces_ = 0;
+  // Every index may have moved: consumers of the change log rebuild.
+  changes_.mark_reset();
+  changes_.notify();
   return maps;
 }
 
@@ -280,6 +298,9 @@ void SurfaceMesh::shrink_to_fit() {
   h_face_.shrink_to_fit();
   v_halfedge_.shrink_to_fit();
   f_halfedge_.shrink_to_fit();
+  v_deleted_.resize(vertices_size());  // the flags may have grown ahead of the elements
+  e_deleted_.resize(edges_size());
+  f_deleted_.resize(faces_size());
   v_deleted_.shrink_to_fit();
   e_deleted_.shrink_to_fit();
   f_deleted_.shrink_to_fit();

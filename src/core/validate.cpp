@@ -50,9 +50,11 @@ std::vector<std::string> SurfaceMesh::validate() const {
   const std::size_t nh = halfedges_size(), nv = vertices_size(), nf = faces_size();
 
   // Sizes and cached counters.
-  if (h_next_.size() != nh || h_face_.size() != nh || e_deleted_.size() * 2 != nh)
+  // The deletion flags may be longer than their element arrays (they grow ahead of them); the
+  // flags past the last element are false, which the counts below check.
+  if (h_next_.size() != nh || h_face_.size() != nh || nh % 2 != 0 || e_deleted_.size() * 2 < nh)
     r.add("half-edge arrays have inconsistent sizes");
-  if (v_deleted_.size() != nv || f_deleted_.size() != nf)
+  if (v_deleted_.size() < nv || f_deleted_.size() < nf)
     r.add("deletion flags and element arrays have inconsistent sizes");
   if (!r.empty()) return r.finish();
   auto count_set = [](const std::vector<bool>& b) { return static_cast<std::size_t>(std::count(b.begin(), b.end(), true)); };

@@ -155,6 +155,20 @@ TEST(SplitEdge, RepeatedSplitsKeepNoState) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+TEST(SplitEdge, PointInsideThePositionArray) {
+  // The point may be a reference to a position of the mesh itself, whose array grows (and may
+  // move) as the vertex is added.
+  SurfaceMesh m = textured_grid(2, true);
+  for (int i = 0; i < 200; ++i) {
+    const Edge e(static_cast<Index>(i % m.edges_size()));
+    const Vec3 expected = m.position(m.vertex(e, 1));
+    const Vertex v = split_edge(m, e, m.position(m.vertex(e, 1)));
+    ASSERT_TRUE(v.is_valid());
+    EXPECT_EQ(m.position(v), expected);
+  }
+  EXPECT_TRUE(m.validate().empty());
+}
+
 TEST(Collapse, InteriorEdgeKeepsTheChosenVertex) {
   SurfaceMesh m = textured_grid(4, true);
   Counts before = counts(m);

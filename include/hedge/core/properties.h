@@ -28,6 +28,8 @@ class BasePropertyArray {
   const std::string& name() const { return name_; }
   virtual const std::type_info& type() const = 0;
   virtual void resize(std::size_t n) = 0;
+  //! Appends one element with the default value (amortized O(1): the array grows geometrically).
+  virtual void push_back() = 0;
   virtual void reserve(std::size_t n) = 0;
   virtual void shrink_to_fit() = 0;
   //! Copies element `from` onto element `to` (used when an element is duplicated).
@@ -63,6 +65,7 @@ class PropertyArray final : public BasePropertyArray {
 
   const std::type_info& type() const override { return typeid(T); }
   void resize(std::size_t n) override { data_.resize(n, default_); }
+  void push_back() override { data_.push_back(default_); }
   void reserve(std::size_t n) override { data_.reserve(n); }
   void shrink_to_fit() override { data_.shrink_to_fit(); }
   void copy(std::size_t from, std::size_t to) override { data_[to] = data_[from]; }
@@ -212,7 +215,29 @@ class PropertyContainer {
   void reserve(std::size_t n) {
     for (auto& a : arrays_) a->reserve(n);
   }
-  void push_back() { resize(size_ + 1); }
+  bool empty() const { return arrays_.empty(); }
+  //! Number of property arrays held.
+  std::size_t array_count() const { return arrays_.size(); }
+  //! Appends one element to every array. Operations add elements one at a time: this is a
+  //! push_back per array (no call at all when the container holds no array).
+  void push_back() {
+    for (auto& a : arrays_) a->push_back();
+    ++size_;
+  }
+  //! Appends n elements to every array.
+  void push_back(std::size_t n) {
+    for (auto& a : arrays_)
+      for (std::size_t i = 0; i < n; ++i) a->push_back();
+    size_ += n;
+  }
+  //! Appends one element to every array but `appended`, which the caller has grown itself (with
+  //! a value rather than the default: a new vertex's position).
+  void push_back_except(const BasePropertyArray* appended) {
+    if (arrays_.size() != 1 || arrays_.front().get() != appended) [[unlikely]]
+      for (auto& a : arrays_)
+        if (a.get() != appended) a->push_back();
+    ++size_;
+  }
   void copy(std::size_t from, std::size_t to) {
     for (auto& a : arrays_) a->copy(from, to);
   }
@@ -220,9 +245,12 @@ class PropertyContainer {
     for (auto& a : arrays_) a->compact(new_index, n);
     size_ = n;
   }
-  //! Interpolates every property onto element dst (see BasePropertyArray::interpolate).
-  void interpolate(std::size_t dst, const Index* src, const float* weights, std::size_t n) {
-    for (auto& a : arrays_) a->interpolate(dst, src, weights, n);
+  //! Interpolates every property onto element dst (see BasePropertyArray::interpolate), except
+  //! `skip` if given: an array the caller sets itself (a new vertex's position).
+  void interpolate(std::size_t dst, const Index* src, const float* weights, std::size_t n,
+                   const BasePropertyArray* skip = nullptr) {
+    for (auto& a : arrays_)
+      if (a.get() != skip) a->interpolate(dst, src, weights, n);
   }
   //! Adds, empty, every array of `other` that this container lacks (same name and type).
   void add_missing_from(const PropertyContainer& other) {

@@ -17,10 +17,19 @@
 #include <string_view>
 #include <vector>
 
+#include "hedge/core/changes.h"
 #include "hedge/core/handles.h"
 #include "hedge/core/properties.h"
 #include "hedge/core/ranges.h"
 #include "hedge/core/vec.h"
+
+// Forces the element appends into the local operations that call them (they are a few stores
+// each, and the operations call them once per element).
+#if defined(__GNUC__) || defined(__clang__)
+#define HEDGE_ALWAYS_INLINE [[gnu::always_inline]]
+#else
+#define HEDGE_ALWAYS_INLINE
+#endif
 
 namespace hedge {
 
@@ -120,6 +129,21 @@ class SurfaceMesh {
   Vec3& position(Vertex v) { return positions_[v]; }
   const Vec3& position(Vertex v) const { return positions_[v]; }
   VertexProperty<Vec3> positions() const { return positions_; }
+  //! Moves v and marks it in the change log (position() gives a reference that marks nothing).
+  void set_position(Vertex v, const Vec3& p) {
+    positions_[v] = p;
+    changes_.mark(v, kVerticesMoved);
+    changes_.notify();
+  }
+
+  // ---- Change tracking (see core/changes.h). Operations mark what they touch; code that writes
+  // positions through position() or properties directly marks with mark_changed(). ----
+  ChangeLog& changes() { return changes_; }
+  const ChangeLog& changes() const { return changes_; }
+  //! v's position or another of its properties changed.
+  void mark_changed(Vertex v, std::uint32_t events = kVerticesMoved) { changes_.mark(v, events); }
+  //! f's corners, corner properties or face properties changed.
+  void mark_changed(Face f, std::uint32_t events = kFacesChanged) { changes_.mark(f, events); }
 
   // ---- Properties. Names starting with "v:", "h:", "e:", "f:" are by convention hedge's own. ----
   template <typename T>
@@ -231,10 +255,17 @@ class SurfaceMesh {
 
   // ---- Low-level construction and editing. These keep no invariant by themselves: they are the
   // building blocks of builders and local operations, which restore validity before returning. ----
-  Vertex add_vertex(const Vec3& p);
+  HEDGE_ALWAYS_INLINE Vertex add_vertex(const Vec3& p);
   //! Appends an edge (two half-edges) from a to b, all links unset. Returns halfedge(e, 0).
-  Halfedge new_edge(Vertex a, Vertex b);
-  Face new_face();
+  HEDGE_ALWAYS_INLINE Halfedge new_edge(Vertex a, Vertex b);
+  HEDGE_ALWAYS_INLINE Face new_face();
+  //! Appends N edges, every link unset (their vertices too), and returns halfedge(first, 0); the
+  //! others follow. Like N new_edge() calls, but each array grows once, by a block.
+  template <std::size_t N>
+  HEDGE_ALWAYS_INLINE Halfedge new_edges();
+  //! Appends N faces, half-edges unset, and returns the first.
+  template <std::size_t N>
+  HEDGE_ALWAYS_INLINE Face new_faces();
   void set_vertex(Halfedge h, Vertex v) { h_vertex_[h.idx()] = v; }
   void set_next(Halfedge h, Halfedge n) { h_next_[h.idx()] = n; }
   void set_face(Halfedge h, Face f) { h_face_[h.idx()] = f; }
@@ -284,12 +315,101 @@ class SurfaceMesh {
   std::vector<Face> h_face_;
   std::vector<Halfedge> v_halfedge_;
   std::vector<Halfedge> f_halfedge_;
+  // The deletion flags may run ahead of their element arrays (the flags past the last element are
+  // false): they grow geometrically, in cover(), rather than by one bit per new element.
   std::vector<bool> v_deleted_, e_deleted_, f_deleted_;
+  static void cover(std::vector<bool>& flags, std::size_t n) {
+    if (flags.size() < n) [[unlikely]] grow_flags(flags, n);
+  }
+  static void grow_flags(std::vector<bool>& flags, std::size_t n);
+  // Growth of the connectivity arrays, in one place per element kind: when a kind runs out of
+  // room, its arrays double together, each moved with one memcpy (handles and positions are
+  // trivially copyable) rather than element by element as std::vector does.
+  void room_for_vertices(std::size_t n) {
+    if (v_halfedge_.capacity() - v_halfedge_.size() < n) [[unlikely]] grow_vertices(n);
+  }
+  void room_for_halfedges(std::size_t n) {
+    if (h_vertex_.capacity() - h_vertex_.size() < n) [[unlikely]] grow_halfedges(n);
+  }
+  void room_for_faces(std::size_t n) {
+    if (f_halfedge_.capacity() - f_halfedge_.size() < n) [[unlikely]] grow_faces(n);
+  }
+  void grow_vertices(std::size_t n);
+  void grow_halfedges(std::size_t n);
+  void grow_faces(std::size_t n);
   std::size_t deleted_vertices_ = 0, deleted_edges_ = 0, deleted_faces_ = 0;
 
   PropertyContainer vprops_, hprops_, eprops_, fprops_;
   VertexProperty<Vec3> positions_;
+  ChangeLog changes_;
 };
+
+// The element appends: room for the kind first (room_for_*: one check, and one doubling of all its
+// arrays when full), then a push_back or a block insert per array; the deletion flags are covered
+// in bulk, and a property container that holds no array costs one comparison.
+inline Vertex SurfaceMesh::add_vertex(const Vec3& point) {
+  const Vec3 p = point;  // point may live in the position array that is about to grow
+  const Vertex v(static_cast<Index>(vertices_size()));
+  room_for_vertices(1);
+  v_halfedge_.push_back(Halfedge());
+  cover(v_deleted_, v_halfedge_.size());
+  positions_.vector().push_back(p);
+  vprops_.push_back_except(positions_.array());
+  return v;
+}
+
+inline Halfedge SurfaceMesh::new_edge(Vertex a, Vertex b) {
+  const Halfedge h(static_cast<Index>(halfedges_size()));
+  room_for_halfedges(2);
+  h_vertex_.push_back(b);
+  h_vertex_.push_back(a);
+  h_next_.push_back(Halfedge());
+  h_next_.push_back(Halfedge());
+  h_face_.push_back(Face());
+  h_face_.push_back(Face());
+  cover(e_deleted_, edges_size());
+  hprops_.push_back(2);
+  eprops_.push_back();
+  return h;
+}
+
+inline Face SurfaceMesh::new_face() {
+  const Face f(static_cast<Index>(faces_size()));
+  room_for_faces(1);
+  f_halfedge_.push_back(Halfedge());
+  cover(f_deleted_, f_halfedge_.size());
+  fprops_.push_back();
+  return f;
+}
+
+// The block appends copy from constant arrays of invalid handles: a short fixed-size copy, where
+// push_back would check the capacity and store the end once per element.
+template <std::size_t N>
+inline Halfedge SurfaceMesh::new_edges() {
+  static constexpr std::array<Vertex, 2 * N> no_vertex{};
+  static constexpr std::array<Halfedge, 2 * N> no_halfedge{};
+  static constexpr std::array<Face, 2 * N> no_face{};
+  const Halfedge h(static_cast<Index>(halfedges_size()));
+  room_for_halfedges(2 * N);
+  h_vertex_.insert(h_vertex_.end(), no_vertex.begin(), no_vertex.end());
+  h_next_.insert(h_next_.end(), no_halfedge.begin(), no_halfedge.end());
+  h_face_.insert(h_face_.end(), no_face.begin(), no_face.end());
+  cover(e_deleted_, edges_size());
+  hprops_.push_back(2 * N);
+  eprops_.push_back(N);
+  return h;
+}
+
+template <std::size_t N>
+inline Face SurfaceMesh::new_faces() {
+  static constexpr std::array<Halfedge, N> no_halfedge{};
+  const Face f(static_cast<Index>(faces_size()));
+  room_for_faces(N);
+  f_halfedge_.insert(f_halfedge_.end(), no_halfedge.begin(), no_halfedge.end());
+  cover(f_deleted_, f_halfedge_.size());
+  fprops_.push_back(N);
+  return f;
+}
 
 }  // namespace hedge
 

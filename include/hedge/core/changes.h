@@ -1,0 +1,122 @@
+// Change tracking: edits mark what they touched through the mesh, and consumers (RenderSync, a BVH,
+// an engine's own caches) read what changed since they last looked.
+//
+//  - Marks are recorded only while at least one consumer is attached, so a mesh nobody watches
+//    pays one branch per mark.
+//  - Each consumer has its own cursor into one shared log; an element marked twice between two
+//    reads of any consumer is logged once. The log is cleared when every consumer has read it.
+//  - Coarse events (vertices moved, faces added or removed, ...) reach subscribers once per
+//    operation, or once per transaction: there is no callback per vertex.
+//
+// Every operation of core/operations.h marks what it changes. Code that edits through the
+// low-level setters of SurfaceMesh, or writes a property directly, calls mark() itself
+// (SurfaceMesh::set_position does it for positions).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "hedge/core/handles.h"
+
+namespace hedge {
+
+//! Coarse change events, combined as bits.
+enum ChangeEvent : std::uint32_t {
+  kVerticesMoved = 1u << 0,       //!< positions changed
+  kVertexDataChanged = 1u << 1,   //!< other vertex properties changed
+  kFacesAdded = 1u << 2,
+  kFacesRemoved = 1u << 3,
+  kFacesChanged = 1u << 4,        //!< corners, corner properties or face properties changed
+  kVerticesAdded = 1u << 5,
+  kVerticesRemoved = 1u << 6,
+  kReset = 1u << 7,               //!< every index may have changed (garbage collection, rebuild)
+  kAllEvents = 0xffu,
+};
+
+class ChangeLog {
+ public:
+  using ConsumerId = std::uint32_t;
+  using SubscriptionId = std::uint32_t;
+  using Callback = std::function<void(std::uint32_t events)>;
+
+  //! What a consumer has not read yet. Elements may repeat and may be deleted by now; after a
+  //! reset, the element lists are empty and everything must be rebuilt.
+  struct Pending {
+    std::span<const Vertex> vertices;
+    std::span<const Face> faces;
+    std::uint32_t events = 0;
+    bool reset = false;
+    bool empty() const { return vertices.empty() && faces.empty() && events == 0 && !reset; }
+  };
+
+  ChangeLog() = default;
+  //! A copied mesh starts with no consumers and nothing pending.
+  ChangeLog(const ChangeLog&) {}
+  ChangeLog& operator=(const ChangeLog&) { return *this; }
+  ChangeLog(ChangeLog&&) noexcept = default;
+  ChangeLog& operator=(ChangeLog&&) noexcept = default;
+
+  // ---- Recording (called by edits). ----
+  bool active() const { return !consumers_.empty() || !subscribers_.empty(); }
+  void mark(Vertex v, std::uint32_t events) {
+    if (active()) record_vertex(v, events);
+  }
+  void mark(Face f, std::uint32_t events) {
+    if (active()) record_face(f, events);
+  }
+  //! Everything changed: consumers rebuild from scratch.
+  void mark_reset();
+  //! The end of one edit: subscribers hear the events gathered since the last notify, unless a
+  //! transaction is open, in which case they hear them once at commit().
+  void notify();
+
+  // ---- Transactions: notifications wait until the outermost commit(). They nest. ----
+  void begin() { ++transaction_depth_; }
+  //! Ends a transaction; the outermost one notifies. Returns true if that was the outermost.
+  bool commit();
+  bool in_transaction() const { return transaction_depth_ > 0; }
+
+  // ---- Consumers. ----
+  ConsumerId attach();
+  void detach(ConsumerId id);
+  Pending pending(ConsumerId id) const;
+  //! Marks everything pending for `id` as read.
+  void consume(ConsumerId id);
+
+  // ---- Coarse event subscribers. ----
+  //! Calls `fn` with the events of each notify that intersect `mask`.
+  SubscriptionId subscribe(std::uint32_t mask, Callback fn);
+  void unsubscribe(SubscriptionId id);
+
+ private:
+  struct Consumer {
+    ConsumerId id;
+    std::size_t vertex_cursor = 0, face_cursor = 0;
+    std::uint32_t events = 0;
+    bool reset = false;
+  };
+  struct Subscriber {
+    SubscriptionId id;
+    std::uint32_t mask;
+    Callback fn;
+  };
+  void record_vertex(Vertex v, std::uint32_t events);
+  void record_face(Face f, std::uint32_t events);
+  void compact_log();
+
+  std::vector<Vertex> vertices_;
+  std::vector<Face> faces_;
+  // Generation stamps: an element already logged in the current generation is not logged again.
+  // The generation advances whenever a consumer reads, so every consumer sees later marks.
+  std::vector<std::uint32_t> vertex_stamp_, face_stamp_;
+  std::uint32_t generation_ = 1;
+  std::vector<Consumer> consumers_;
+  std::vector<Subscriber> subscribers_;
+  std::uint32_t next_id_ = 1;
+  std::uint32_t unnotified_ = 0;
+  int transaction_depth_ = 0;
+};
+
+}  // namespace hedge

@@ -1,0 +1,145 @@
+#include "hedge/core/changes.h"
+
+#include <algorithm>
+
+namespace hedge {
+
+namespace {
+template <typename H>
+bool stamp_once(std::vector<std::uint32_t>& stamps, H h, std::uint32_t generation) {
+  const std::size_t i = h.idx();
+  if (i >= stamps.size()) stamps.resize(std::max<std::size_t>(i + 1, stamps.size() * 3 / 2 + 16), 0);
+  if (stamps[i] == generation) return false;
+  stamps[i] = generation;
+  return true;
+}
+}  // namespace
+
+void ChangeLog::record_vertex(Vertex v, std::uint32_t events) {
+  unnotified_ |= events;
+  for (Consumer& c : consumers_) c.events |= events;
+  if (!consumers_.empty() && v.is_valid() && stamp_once(vertex_stamp_, v, generation_)) vertices_.push_back(v);
+}
+
+void ChangeLog::record_face(Face f, std::uint32_t events) {
+  unnotified_ |= events;
+  for (Consumer& c : consumers_) c.events |= events;
+  if (!consumers_.empty() && f.is_valid() && stamp_once(face_stamp_, f, generation_)) faces_.push_back(f);
+}
+
+void ChangeLog::mark_reset() {
+  if (!active()) return;
+  unnotified_ |= kReset;
+  for (Consumer& c : consumers_) {
+    c.reset = true;
+    c.events |= kReset;
+  }
+  // Nothing logged so far matters any more to anyone: every consumer rebuilds.
+  for (Consumer& c : consumers_) c.vertex_cursor = vertices_.size(), c.face_cursor = faces_.size();
+  compact_log();
+}
+
+void ChangeLog::notify() {
+  if (transaction_depth_ > 0 || unnotified_ == 0) return;
+  const std::uint32_t events = unnotified_;
+  unnotified_ = 0;
+  // A callback may subscribe or unsubscribe; iterate over a copy of the ids.
+  std::vector<SubscriptionId> ids;
+  ids.reserve(subscribers_.size());
+  for (const Subscriber& s : subscribers_) ids.push_back(s.id);
+  for (SubscriptionId id : ids) {
+    auto it = std::find_if(subscribers_.begin(), subscribers_.end(), [&](const Subscriber& s) { return s.id == id; });
+    if (it == subscribers_.end() || (it->mask & events) == 0) continue;
+    Callback fn = it->fn;  // the subscriber may remove itself while running
+    fn(events & it->mask);
+  }
+}
+
+bool ChangeLog::commit() {
+  if (transaction_depth_ == 0) return false;
+  if (--transaction_depth_ > 0) return false;
+  notify();
+  return true;
+}
+
+ChangeLog::ConsumerId ChangeLog::attach() {
+  Consumer c;
+  c.id = next_id_++;
+  c.vertex_cursor = vertices_.size();
+  c.face_cursor = faces_.size();
+  consumers_.push_back(c);
+  // Marks made before this consumer existed must not suppress marks it needs to see.
+  ++generation_;
+  return c.id;
+}
+
+void ChangeLog::detach(ConsumerId id) {
+  std::erase_if(consumers_, [&](const Consumer& c) { return c.id == id; });
+  compact_log();
+  if (consumers_.empty()) {
+    vertices_.clear();
+    faces_.clear();
+    std::vector<std::uint32_t>().swap(vertex_stamp_);
+    std::vector<std::uint32_t>().swap(face_stamp_);
+  }
+}
+
+ChangeLog::Pending ChangeLog::pending(ConsumerId id) const {
+  Pending p;
+  for (const Consumer& c : consumers_) {
+    if (c.id != id) continue;
+    p.reset = c.reset;
+    p.events = c.events;
+    if (!c.reset) {
+      p.vertices = std::span<const Vertex>(vertices_).subspan(c.vertex_cursor);
+      p.faces = std::span<const Face>(faces_).subspan(c.face_cursor);
+    }
+  }
+  return p;
+}
+
+void ChangeLog::consume(ConsumerId id) {
+  for (Consumer& c : consumers_) {
+    if (c.id != id) continue;
+    c.vertex_cursor = vertices_.size();
+    c.face_cursor = faces_.size();
+    c.events = 0;
+    c.reset = false;
+  }
+  // New marks must be logged again even if they were logged before this read.
+  if (++generation_ == 0) {
+    std::fill(vertex_stamp_.begin(), vertex_stamp_.end(), 0);
+    std::fill(face_stamp_.begin(), face_stamp_.end(), 0);
+    generation_ = 1;
+  }
+  compact_log();
+}
+
+void ChangeLog::compact_log() {
+  if (consumers_.empty()) return;
+  std::size_t vmin = vertices_.size(), fmin = faces_.size();
+  for (const Consumer& c : consumers_) {
+    vmin = std::min(vmin, c.vertex_cursor);
+    fmin = std::min(fmin, c.face_cursor);
+  }
+  if (vmin > 0) {
+    vertices_.erase(vertices_.begin(), vertices_.begin() + static_cast<std::ptrdiff_t>(vmin));
+    for (Consumer& c : consumers_) c.vertex_cursor -= vmin;
+  }
+  if (fmin > 0) {
+    faces_.erase(faces_.begin(), faces_.begin() + static_cast<std::ptrdiff_t>(fmin));
+    for (Consumer& c : consumers_) c.face_cursor -= fmin;
+  }
+}
+
+ChangeLog::SubscriptionId ChangeLog::subscribe(std::uint32_t mask, Callback fn) {
+  const SubscriptionId id = next_id_++;
+  subscribers_.push_back({id, mask, std::move(fn)});
+  return id;
+}
+
+void ChangeLog::unsubscribe(SubscriptionId id) {
+  std::erase_if(subscribers_, [&](const Subscriber& s) { return s.id == id; });
+}
+
+}  // namespace hedge

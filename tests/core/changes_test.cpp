@@ -1,0 +1,176 @@
+#include "hedge/core/changes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "hedge/core/build.h"
+#include "hedge/core/operations.h"
+#include "test_meshes.h"
+
+namespace hedge {
+namespace {
+
+template <typename H>
+bool contains(std::span<const H> s, H h) {
+  return std::find(s.begin(), s.end(), h) != s.end();
+}
+
+TEST(ChangeLog, RecordsNothingWithoutConsumers) {
+  ChangeLog log;
+  EXPECT_FALSE(log.active());
+  log.mark(Vertex(3), kVerticesMoved);
+  const auto id = log.attach();
+  EXPECT_TRUE(log.pending(id).empty());
+}
+
+TEST(ChangeLog, EachElementOncePerRead) {
+  ChangeLog log;
+  const auto id = log.attach();
+  log.mark(Vertex(3), kVerticesMoved);
+  log.mark(Vertex(3), kVerticesMoved);
+  log.mark(Face(1), kFacesChanged);
+  log.mark(Vertex(5), kVertexDataChanged);
+  auto p = log.pending(id);
+  ASSERT_EQ(p.vertices.size(), 2u);
+  EXPECT_EQ(p.vertices[0], Vertex(3));
+  EXPECT_EQ(p.vertices[1], Vertex(5));
+  ASSERT_EQ(p.faces.size(), 1u);
+  EXPECT_EQ(p.events, kVerticesMoved | kVertexDataChanged | kFacesChanged);
+  log.consume(id);
+  EXPECT_TRUE(log.pending(id).empty());
+  // After a read, the same element is logged again.
+  log.mark(Vertex(3), kVerticesMoved);
+  EXPECT_EQ(log.pending(id).vertices.size(), 1u);
+}
+
+TEST(ChangeLog, ConsumersReadIndependently) {
+  ChangeLog log;
+  const auto a = log.attach();
+  const auto b = log.attach();
+  log.mark(Vertex(1), kVerticesMoved);
+  log.consume(a);
+  log.mark(Vertex(1), kVerticesMoved);  // a has read; it must see this mark
+  log.mark(Vertex(2), kVerticesMoved);
+  auto pa = log.pending(a);
+  auto pb = log.pending(b);
+  EXPECT_TRUE(contains(pa.vertices, Vertex(1)));
+  EXPECT_TRUE(contains(pa.vertices, Vertex(2)));
+  EXPECT_TRUE(contains(pb.vertices, Vertex(1)));
+  EXPECT_TRUE(contains(pb.vertices, Vertex(2)));
+  log.consume(b);
+  EXPECT_TRUE(log.pending(b).empty());
+  EXPECT_FALSE(log.pending(a).empty());
+  // A consumer attached later sees only later marks, including elements logged before.
+  const auto c = log.attach();
+  EXPECT_TRUE(log.pending(c).empty());
+  log.mark(Vertex(2), kVerticesMoved);
+  EXPECT_TRUE(contains(log.pending(c).vertices, Vertex(2)));
+  log.detach(a);
+  log.detach(b);
+  log.detach(c);
+  EXPECT_FALSE(log.active());
+}
+
+TEST(ChangeLog, SubscribersHearOncePerNotifyAndOncePerTransaction) {
+  ChangeLog log;
+  std::vector<std::uint32_t> heard;
+  const auto s = log.subscribe(kVerticesMoved | kFacesRemoved, [&](std::uint32_t e) { heard.push_back(e); });
+  for (int i = 0; i < 100; ++i) log.mark(Vertex(i), kVerticesMoved);
+  log.mark(Face(0), kFacesAdded);  // not in the mask
+  log.notify();
+  ASSERT_EQ(heard.size(), 1u);
+  EXPECT_EQ(heard[0], kVerticesMoved);
+  log.notify();  // nothing new
+  EXPECT_EQ(heard.size(), 1u);
+
+  log.begin();
+  log.begin();
+  log.mark(Vertex(1), kVerticesMoved);
+  log.notify();
+  log.mark(Face(2), kFacesRemoved);
+  log.notify();
+  EXPECT_FALSE(log.commit());  // inner
+  EXPECT_EQ(heard.size(), 1u);
+  EXPECT_TRUE(log.commit());   // outermost
+  ASSERT_EQ(heard.size(), 2u);
+  EXPECT_EQ(heard[1], kVerticesMoved | kFacesRemoved);
+  log.unsubscribe(s);
+  log.mark(Vertex(1), kVerticesMoved);
+  log.notify();
+  EXPECT_EQ(heard.size(), 2u);
+}
+
+TEST(ChangeLog, ResetClearsListsAndCopiesStartEmpty) {
+  ChangeLog log;
+  const auto id = log.attach();
+  log.mark(Vertex(1), kVerticesMoved);
+  log.mark_reset();
+  auto p = log.pending(id);
+  EXPECT_TRUE(p.reset);
+  EXPECT_TRUE(p.vertices.empty());
+  ChangeLog copy(log);
+  EXPECT_FALSE(copy.active());
+  log.consume(id);
+  EXPECT_FALSE(log.pending(id).reset);
+}
+
+// The operations mark what they touch.
+TEST(ChangeLog, OperationsMarkTheFacesTheyTouch) {
+  SurfaceMesh m = build(test::grid(4, true));
+  const auto id = m.changes().attach();
+  int notified = 0;
+  m.changes().subscribe(kAllEvents, [&](std::uint32_t) { ++notified; });
+
+  Edge e;
+  for (Edge c : m.edges())
+    if (can_flip(m, c)) {
+      e = c;
+      break;
+    }
+  ASSERT_TRUE(e.is_valid());
+  const Face f0 = m.face(e, 0), f1 = m.face(e, 1);
+  flip(m, e);
+  auto p = m.changes().pending(id);
+  EXPECT_EQ(notified, 1);
+  EXPECT_EQ(p.faces.size(), 2u);
+  EXPECT_TRUE(contains(p.faces, f0));
+  EXPECT_TRUE(contains(p.faces, f1));
+  m.changes().consume(id);
+
+  const Vertex v = split_edge(m, e, 0.5f * (m.position(m.vertex(e, 0)) + m.position(m.vertex(e, 1))));
+  p = m.changes().pending(id);
+  EXPECT_EQ(p.faces.size(), 4u);
+  for (Face f : m.faces(v)) EXPECT_TRUE(contains(p.faces, f));
+  EXPECT_TRUE(p.events & kFacesAdded);
+  m.changes().consume(id);
+
+  const Halfedge h = m.halfedge(v);
+  ASSERT_TRUE(can_collapse(m, h));
+  const Face gone = m.face(h);
+  const Vertex s = collapse(m, h);
+  p = m.changes().pending(id);
+  EXPECT_TRUE(contains(p.faces, gone));
+  for (Face f : m.faces(s)) EXPECT_TRUE(contains(p.faces, f));
+  EXPECT_TRUE(p.events & kFacesRemoved);
+  m.changes().consume(id);
+
+  m.set_position(Vertex(0), Vec3{-1, -1, 0});
+  p = m.changes().pending(id);
+  ASSERT_EQ(p.vertices.size(), 1u);
+  EXPECT_EQ(p.vertices[0], Vertex(0));
+  m.changes().consume(id);
+
+  const int before = notified;
+  split_all_faces(m);  // one notification for the pass
+  EXPECT_EQ(notified, before + 1);
+  EXPECT_EQ(m.changes().pending(id).faces.size(), m.n_faces());
+  m.changes().consume(id);
+
+  m.garbage_collection();
+  EXPECT_TRUE(m.changes().pending(id).reset);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+}  // namespace
+}  // namespace hedge
