@@ -26,32 +26,12 @@
 #include "hedge/core/build.h"
 #include "hedge/core/operations.h"
 #include "hedge/io/io.h"
+#include "indexed_subdivide.h"
 
 namespace {
 
 using namespace hedge;
 namespace fs = std::filesystem;
-
-//! Splits every triangle into four at its edge midpoints; midpoints are shared across edges.
-IndexedMesh subdivide(const IndexedMesh& in) {
-  IndexedMesh out;
-  out.positions = in.positions;
-  std::unordered_map<std::uint64_t, std::uint32_t> midpoint;
-  midpoint.reserve(in.indices.size());
-  auto mid = [&](std::uint32_t a, std::uint32_t b) {
-    const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-    auto [it, added] = midpoint.try_emplace(key, static_cast<std::uint32_t>(out.positions.size()));
-    if (added) out.positions.push_back((in.positions[a] + in.positions[b]) * 0.5f);
-    return it->second;
-  };
-  out.indices.reserve(4 * in.indices.size());
-  for (std::size_t t = 0; t < in.indices.size(); t += 3) {
-    const std::uint32_t a = in.indices[t], b = in.indices[t + 1], c = in.indices[t + 2];
-    const std::uint32_t ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
-    out.indices.insert(out.indices.end(), {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca});
-  }
-  return out;
-}
 
 //! A flat n x n grid of triangles in the XY plane.
 IndexedMesh plate(int n) {
@@ -131,7 +111,7 @@ Workload load_workload(const fs::path& root, std::string mesh_path, std::size_t 
   w.name = fs::path(mesh_path).filename().string();
   int levels = 0;
   while (in.indices.size() / 3 < min_faces) {
-    in = subdivide(in);
+    in = bench::subdivide(in);
     ++levels;
   }
   if (levels > 0) w.name += " subdivided x" + std::to_string(levels);

@@ -260,6 +260,29 @@ TEST_F(HedgeCli, StressReportsAppliedAndRefusedOperations) {
   expect_usage_error({"stress", data("anchor.off"), "--ops", "lots"});
 }
 
+TEST_F(HedgeCli, RenderBuffersReportsSeamsAndSmallSyncs) {
+  const json j = run_json({"render-buffers", data("spot_triangulated.obj"), "--edits", "150", "--json"});
+  // spot's UV seams: more render vertices than mesh vertices, one per extra attribute set.
+  EXPECT_EQ(j["mesh"]["vertices"], 2930);
+  EXPECT_EQ(j["triangles"], 5856);
+  EXPECT_GT(j["seam_splits"].get<std::size_t>(), 0u);
+  EXPECT_EQ(j["render_vertices"].get<std::size_t>(), 2930u + j["seam_splits"].get<std::size_t>());
+  EXPECT_EQ(j["vertex_stride_bytes"], 32);  // position, normal, texcoord
+  EXPECT_EQ(j["layout"]["texcoord"], 6);
+  EXPECT_EQ(j["full_upload_bytes"].get<std::size_t>(), 32u * 2930u + 32u * j["seam_splits"].get<std::size_t>() + 4u * 3u * 5856u);
+  EXPECT_GT(j["edits"]["applied"].get<std::size_t>(), 100u);
+  const double median = j["edits"]["median_bytes"].get<double>();
+  EXPECT_GT(median, 0.0);
+  EXPECT_LT(median, 1024.0);
+  EXPECT_EQ(j["valid"], true);
+  const Result text = run({"render-buffers", data("spot_control_mesh.obj"), "--winding", "cw", "--separate"});
+  EXPECT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("separate streams"), std::string::npos);
+  EXPECT_NE(text.out.find("seam splits"), std::string::npos);
+  expect_usage_error({"render-buffers", data("tet.obj"), "--winding", "sideways"});
+  expect_data_error({"render-buffers", data("missing.obj")}, "missing.obj");
+}
+
 TEST_F(HedgeCli, ConvertWritesAReadableFileInEveryFormat) {
   for (const std::string ext : {"ply", "off", "obj", "stl"}) {
     for (const bool ascii : {false, true}) {

@@ -1,0 +1,45 @@
+// 1-to-4 midpoint subdivision of an indexed triangle mesh, used by the benchmarks to make meshes of
+// a million triangles and more from the shared ones. Texcoords, when present, are subdivided per
+// corner the same way, so UV seams stay seams.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <unordered_map>
+
+#include "hedge/core/indexed_mesh.h"
+
+namespace bench {
+
+inline hedge::IndexedMesh subdivide(const hedge::IndexedMesh& in) {
+  hedge::IndexedMesh out;
+  out.positions = in.positions;
+  out.texcoords = in.texcoords;
+  const bool uv = !in.texcoord_indices.empty();
+  // Each midpoint is shared by the two triangles of its edge: keyed by the sorted index pair.
+  auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b); };
+  std::unordered_map<std::uint64_t, std::uint32_t> pmid, tmid;
+  pmid.reserve(in.indices.size());
+  if (uv) tmid.reserve(in.indices.size());
+  auto mid = [&](auto& pool, auto& table, std::uint32_t a, std::uint32_t b) {
+    auto [it, added] = table.try_emplace(key(a, b), static_cast<std::uint32_t>(pool.size()));
+    if (added) pool.push_back((pool[a] + pool[b]) * 0.5f);
+    return it->second;
+  };
+  out.indices.reserve(4 * in.indices.size());
+  if (uv) out.texcoord_indices.reserve(4 * in.indices.size());
+  for (std::size_t t = 0; t < in.indices.size(); t += 3) {
+    const std::uint32_t a = in.indices[t], b = in.indices[t + 1], c = in.indices[t + 2];
+    const std::uint32_t ab = mid(out.positions, pmid, a, b), bc = mid(out.positions, pmid, b, c),
+                        ca = mid(out.positions, pmid, c, a);
+    out.indices.insert(out.indices.end(), {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca});
+    if (!uv) continue;
+    const std::uint32_t ta = in.texcoord_indices[t], tb = in.texcoord_indices[t + 1], tc = in.texcoord_indices[t + 2];
+    const std::uint32_t tab = mid(out.texcoords, tmid, ta, tb), tbc = mid(out.texcoords, tmid, tb, tc),
+                        tca = mid(out.texcoords, tmid, tc, ta);
+    out.texcoord_indices.insert(out.texcoord_indices.end(), {ta, tab, tca, tab, tb, tbc, tca, tbc, tc, tab, tbc, tca});
+  }
+  return out;
+}
+
+}  // namespace bench

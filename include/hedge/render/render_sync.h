@@ -1,0 +1,278 @@
+// RenderSync: engine-ready vertex and index buffers kept in step with a SurfaceMesh.
+//
+//  - Render vertices. A mesh vertex becomes one render vertex per distinct set of corner
+//    attributes around it: corners whose "h:texcoord", "h:normal" or "h:color" differ (a UV seam,
+//    a hard edge) get separate render vertices, as engines need.
+//  - Stable slots. Each face owns fixed triangles in the index buffer ((n - 2) for an n-gon) and
+//    each render vertex a fixed slot in the vertex buffer. Freed slots go to free lists and are
+//    reused; until then a freed triangle is degenerate (three equal indices) and a freed vertex
+//    keeps stale data that no triangle references. compact() removes the holes.
+//  - Incremental updates. Operations mark what they touch in the mesh's change log
+//    (core/changes.h); sync() rewrites only the slots of touched faces and vertices and returns the
+//    rewritten ranges, sorted and merged, for a partial GPU upload.
+//  - Transactions. begin() ... edits ... commit() syncs once at the end.
+//
+// The RenderSync refers to the mesh it was made for: the mesh must outlive it and stay at the same
+// address.
+#pragma once
+
+#include <cstddef>
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "hedge/core/build.h"
+#include "hedge/core/surface_mesh.h"
+
+namespace hedge {
+
+//! RGBA colour, as engines store vertex colours in float.
+struct Color {
+  float r = 1, g = 1, b = 1, a = 1;
+  friend bool operator==(const Color&, const Color&) = default;
+  // Blending, so that colours are interpolated on split edges and faces like other attributes.
+  friend Color operator+(const Color& x, const Color& y) { return {x.r + y.r, x.g + y.g, x.b + y.b, x.a + y.a}; }
+  friend Color operator*(const Color& x, float s) { return {x.r * s, x.g * s, x.b * s, x.a * s}; }
+};
+
+enum class NormalSource {
+  none,      //!< no normal stream
+  attribute, //!< "h:normal" corners, else "v:normal" vertices; none if neither exists
+  computed,  //!< area-weighted smooth vertex normals, recomputed around every edit
+  automatic, //!< attribute if the mesh has normals, computed otherwise
+};
+
+struct RenderOptions {
+  NormalSource normals = NormalSource::automatic;
+  //! Texcoords from "h:texcoord" corners, else "v:texcoord" vertices, when present.
+  bool texcoords = true;
+  //! Colours from "h:color" corners, else "v:color" vertices (type Color), when present.
+  bool colors = true;
+  //! One buffer of whole vertices (position, normal, texcoord, colour) or one buffer per stream.
+  bool interleaved = true;
+  //! Triangle winding in the index buffer: Unity and Direct3D are clockwise.
+  Winding winding = Winding::ccw;
+  //! Negate x of positions and normals: converts between right- and left-handed (Unity) axes.
+  bool flip_x = false;
+};
+
+//! Where each attribute sits in a vertex, in floats. An absent attribute has offset -1.
+//! Interleaved: all in vertices(), `stride` floats per vertex. Separate: each in its own stream,
+//! tightly packed (3, 3, 2 and 4 floats).
+struct VertexLayout {
+  std::uint32_t stride = 3;
+  std::int32_t position = 0;
+  std::int32_t normal = -1;
+  std::int32_t texcoord = -1;
+  std::int32_t color = -1;
+  bool interleaved = true;
+};
+
+//! A run of slots: elements [first, first + count).
+struct SlotRange {
+  std::uint32_t first = 0;
+  std::uint32_t count = 0;
+  friend bool operator==(const SlotRange&, const SlotRange&) = default;
+};
+
+//! What one sync() rewrote.
+struct SyncResult {
+  //! Rewritten render vertices, sorted, merged, disjoint. In separate-stream layout the same ranges
+  //! apply to every stream.
+  std::vector<SlotRange> vertex_ranges;
+  //! Rewritten index-buffer entries (indices, not triangles), sorted, merged, disjoint.
+  std::vector<SlotRange> index_ranges;
+  std::size_t vertex_bytes = 0;  //!< bytes in vertex_ranges, all streams
+  std::size_t index_bytes = 0;   //!< bytes in index_ranges
+  std::size_t faces_synced = 0;
+  std::size_t vertices_synced = 0;  //!< render vertices written
+  //! The buffers grew (or were rebuilt): reallocate the GPU buffers, then upload everything.
+  bool resized = false;
+  bool full = false;  //!< everything was rebuilt (first sync, reset, garbage collection)
+  bool empty() const { return vertex_ranges.empty() && index_ranges.empty(); }
+};
+
+//! Old-to-new slot maps from compact(); freed slots map to kInvalidIndex.
+struct RenderRemap {
+  std::vector<Index> vertices;   //!< render vertex slot -> new slot
+  std::vector<Index> triangles;  //!< triangle slot -> new triangle slot
+};
+
+class RenderSync {
+ public:
+  //! Builds the buffers (a full export) and starts following `mesh`'s change log.
+  explicit RenderSync(SurfaceMesh& mesh, const RenderOptions& options = {});
+  ~RenderSync();
+  RenderSync(const RenderSync&) = delete;
+  RenderSync& operator=(const RenderSync&) = delete;
+
+  const RenderOptions& options() const { return options_; }
+  const VertexLayout& layout() const { return layout_; }
+  SurfaceMesh& mesh() const { return *mesh_; }
+
+  // ---- Buffers. Sizes count slots, free ones included. ----
+  std::size_t vertex_count() const { return rv_vertex_.size(); }
+  std::size_t index_count() const { return indices_.size(); }
+  //! Live render vertices and triangles (slots in use).
+  std::size_t live_vertex_count() const { return vertex_count() - free_vertices_.size(); }
+  std::size_t live_triangle_count() const { return live_triangles_; }
+  //! Sizes to allocate the GPU buffers at (render vertices, indices). The buffers grow within them
+  //! without a reallocation; SyncResult::resized says when they grew beyond.
+  std::size_t vertex_capacity() const { return vertex_capacity_; }
+  std::size_t index_capacity() const { return index_capacity_; }
+  //! Free triangle slots (degenerate triangles) waiting for reuse or compact().
+  std::size_t free_triangle_count() const { return free_triangle_count_; }
+  //! Interleaved layout: every vertex, layout().stride floats each. Separate: the positions.
+  std::span<const float> vertices() const { return streams_[0]; }
+  //! One stream in separate layout (empty if the attribute is absent or the layout interleaved).
+  std::span<const float> positions() const { return layout_.interleaved ? std::span<const float>() : streams_[0]; }
+  std::span<const float> normals() const { return stream(1); }
+  std::span<const float> texcoords() const { return stream(2); }
+  std::span<const float> colors() const { return stream(3); }
+  std::span<const std::uint32_t> indices() const { return indices_; }
+  //! Render vertex -> mesh vertex (invalid for a free slot): the vertex map.
+  std::span<const Vertex> render_vertex_source() const { return rv_vertex_; }
+  //! The render vertex of the corner entered by half-edge h (invalid for boundary half-edges).
+  //! Valid after a sync that saw the corner's face.
+  Index render_vertex(Halfedge h) const {
+    if (!h.is_valid() || h.idx() >= corner_rv_.size() || mesh_->is_deleted(h) || mesh_->is_boundary(h))
+      return kInvalidIndex;
+    return corner_rv_[h.idx()];
+  }
+  //! First triangle slot of face f and its triangle count (count 0 if f has none).
+  SlotRange triangles(Face f) const;
+  //! Render vertices beyond one per used mesh vertex: what seams cost.
+  std::size_t seam_splits() const;
+  //! Bytes of the whole vertex and index buffers (a full upload).
+  std::size_t buffer_bytes() const;
+
+  // ---- Updates. ----
+  //! Brings the buffers in step with every change marked since the last sync. Cost proportional
+  //! to what changed. Inside a transaction it does nothing and returns an empty result.
+  const SyncResult& sync();
+  //! The result of the last sync (or commit, or rebuild).
+  const SyncResult& last_result() const { return result_; }
+  //! Opens a transaction: changes are gathered, and notifications wait (transactions nest).
+  void begin();
+  //! Closes the transaction opened by begin(); the outermost commit syncs once.
+  const SyncResult& commit();
+  bool in_transaction() const { return transaction_depth_ > 0; }
+  //! Rebuilds every buffer from scratch: the original's full GenerateUnityMesh. Slots restart in
+  //! face order, so it also compacts.
+  const SyncResult& rebuild();
+  //! Syncs, then removes free slots by packing live render vertices and face triangles in their
+  //! current order; returns the old-to-new maps. O(buffer).
+  RenderRemap compact();
+
+ private:
+  struct FaceSlots {
+    std::uint32_t first = 0;  // first triangle slot
+    std::uint32_t count = 0;  // triangles
+  };
+  std::span<const float> stream(int i) const;
+  bool stream_present(int s) const;
+  void attach_sources();
+  void setup_layout();
+  void grow_element_arrays();
+  void full_build();
+  void sync_face(Face f);
+  void release_face(Face f);
+  void read_vertex(Index rv, float* out) const;
+  void write_vertex(Index rv, const float* data, bool fresh);
+  Index find_or_add_render_vertex(Halfedge corner);
+  Index allocate_vertex();
+  void unref_vertex(Index rv);
+  std::uint32_t allocate_triangles(std::uint32_t count);
+  void free_triangles(std::uint32_t first, std::uint32_t count);
+  void mark_indices_written(std::uint32_t first, std::uint32_t count);
+  void finish_result();
+  void recompute_normals(const ChangeLog::Pending& p);
+  void update_normal(Vertex w);
+
+  SurfaceMesh* mesh_;
+  RenderOptions options_;
+  VertexLayout layout_;
+  ChangeLog::ConsumerId consumer_ = 0;
+  int transaction_depth_ = 0;
+  bool building_ = false;  // a full build reports whole buffers, not written slots
+
+  // Attribute sources, resolved against the mesh's properties.
+  HalfedgeProperty<Vec3> h_normal_;
+  VertexProperty<Vec3> v_normal_;
+  HalfedgeProperty<Vec2> h_texcoord_;
+  VertexProperty<Vec2> v_texcoord_;
+  HalfedgeProperty<Color> h_color_;
+  VertexProperty<Color> v_color_;
+  bool computed_normals_ = false;
+  std::vector<Vec3> vertex_normal_;  // computed normals, per mesh vertex
+  std::vector<std::uint32_t> normal_stamp_;
+  std::uint32_t normal_generation_ = 0;
+  std::vector<Vertex> normal_seeds_;
+  std::vector<Face> normal_faces_;
+
+  // Vertex buffer: streams_[0] interleaved (or positions), [1..3] normals, texcoords, colours.
+  std::vector<float> streams_[4];
+  std::vector<Vertex> rv_vertex_;          // slot -> mesh vertex
+  std::vector<Index> rv_next_;             // next render vertex of the same mesh vertex
+  std::vector<std::uint32_t> rv_refs_;     // index-buffer entries using the slot
+  std::vector<Index> free_vertices_;
+  std::vector<Index> v_first_rv_;          // mesh vertex -> first render vertex
+  std::vector<Index> corner_rv_;           // half-edge -> render vertex of the corner it enters
+  std::size_t vertex_capacity_ = 0;
+
+  // Index buffer.
+  std::vector<std::uint32_t> indices_;
+  std::vector<FaceSlots> face_slots_;
+  std::vector<std::vector<std::uint32_t>> free_triangles_;  // by triangle count: first slots
+  std::size_t free_triangle_count_ = 0;
+  std::size_t live_triangles_ = 0;
+  std::size_t index_capacity_ = 0;
+
+  // Scratch of sync_face, kept to avoid allocating per face.
+  std::vector<Halfedge> corners_;
+  std::vector<Index> corner_rvs_;
+  std::vector<std::array<Index, 3>> tris_;
+  std::vector<Vec3d> points_;
+  std::vector<std::uint32_t> new_indices_;
+  std::vector<Face> dirty_faces_;
+
+  // Written slots of the current sync.
+  std::vector<std::uint32_t> written_vertices_;
+  std::vector<SlotRange> written_indices_;
+  SyncResult result_;
+};
+
+// ---- Engine meshes: one attribute set per vertex, seams as duplicated vertices. ----
+
+//! An engine's mesh arrays (a Unity Mesh, a glTF primitive): n vertices, triangle indices.
+//! Optional streams are empty or hold one entry per vertex.
+struct EngineMeshView {
+  std::span<const Vec3> positions;
+  std::span<const std::uint32_t> indices;  //!< 3 per triangle
+  std::span<const Vec3> normals;
+  std::span<const Vec2> texcoords;
+  std::span<const Color> colors;
+};
+
+struct EngineImportOptions {
+  //! How positions are welded into one topological vertex; attributes stay per corner, so seams
+  //! survive any welding.
+  Weld weld = Weld::exact;
+  double weld_epsilon = 1e-6;
+  TopologyPolicy policy = TopologyPolicy::repair;
+  //! The winding of the engine's triangles (Unity: cw).
+  Winding winding = Winding::ccw;
+  //! Negate x of positions and normals (Unity's left-handed axes).
+  bool flip_x = false;
+};
+
+//! Builds a SurfaceMesh from engine arrays, welding positions for topology and keeping normals,
+//! texcoords and colours per corner ("h:normal", "h:texcoord", "h:color"), so that a RenderSync
+//! with the same winding and axes reproduces the engine's triangles and attributes exactly.
+//! \throw InvalidInputError on mismatched stream sizes, indices out of range or non-finite values;
+//!        TopologyError under the strict policy.
+SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptions& options = {},
+                             BuildReport* report = nullptr);
+
+}  // namespace hedge

@@ -1,0 +1,677 @@
+// RenderSync: see include/hedge/render/render_sync.h.
+//
+// A render vertex is keyed by its mesh vertex and the values of the corner attributes it carries;
+// the render vertices of one mesh vertex form a short singly linked list (usually one entry, two or
+// three on a seam). Reference counts count index-buffer entries, so that a render vertex no
+// triangle uses any more returns to the free list whatever the triangulation of its faces.
+#include "hedge/render/render_sync.h"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+
+#include "hedge/core/triangulate.h"
+
+namespace hedge {
+
+namespace {
+constexpr std::uint32_t kStreamWidth[4] = {3, 3, 2, 4};
+constexpr std::size_t kMaxFloats = 12;
+using Floats = std::array<float, kMaxFloats>;
+
+// Capacity a buffer of n elements grows to: geometric, so that growth (a GPU reallocation) is rare.
+std::size_t grown_capacity(std::size_t n, std::size_t old) {
+  return std::max<std::size_t>({n, old + old / 2, 64});
+}
+
+Vec3d face_normal_sum(const SurfaceMesh& m, Face f) {
+  // Newell's formula: twice the area times the unit normal, exact for planar polygons.
+  Vec3d n{0, 0, 0};
+  for (Halfedge h : m.halfedges(f)) {
+    const Vec3d a = to_double(m.position(m.from_vertex(h)));
+    const Vec3d b = to_double(m.position(m.to_vertex(h)));
+    n.x += (a.y - b.y) * (a.z + b.z);
+    n.y += (a.z - b.z) * (a.x + b.x);
+    n.z += (a.x - b.x) * (a.y + b.y);
+  }
+  return n;
+}
+
+void merge_ranges(std::vector<SlotRange>& r) {
+  std::sort(r.begin(), r.end(), [](const SlotRange& a, const SlotRange& b) { return a.first < b.first; });
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    if (out > 0 && r[i].first <= r[out - 1].first + r[out - 1].count) {
+      const std::uint32_t end = std::max(r[out - 1].first + r[out - 1].count, r[i].first + r[i].count);
+      r[out - 1].count = end - r[out - 1].first;
+    } else {
+      r[out++] = r[i];
+    }
+  }
+  r.resize(out);
+}
+}  // namespace
+
+RenderSync::RenderSync(SurfaceMesh& mesh, const RenderOptions& options) : mesh_(&mesh), options_(options) {
+  consumer_ = mesh.changes().attach();
+  try {
+    rebuild();
+  } catch (...) {
+    mesh.changes().detach(consumer_);
+    throw;
+  }
+}
+
+RenderSync::~RenderSync() {
+  while (transaction_depth_ > 0) {
+    mesh_->changes().commit();
+    --transaction_depth_;
+  }
+  mesh_->changes().detach(consumer_);
+}
+
+std::span<const float> RenderSync::stream(int i) const {
+  if (layout_.interleaved) return {};
+  return streams_[i];
+}
+
+SlotRange RenderSync::triangles(Face f) const {
+  if (!f.is_valid() || f.idx() >= face_slots_.size()) return {};
+  return {face_slots_[f.idx()].first, face_slots_[f.idx()].count};
+}
+
+std::size_t RenderSync::seam_splits() const {
+  std::size_t used = 0;
+  for (Index first : v_first_rv_) used += first != kInvalidIndex;
+  return live_vertex_count() - used;
+}
+
+std::size_t RenderSync::buffer_bytes() const {
+  return vertex_count() * layout_.stride * sizeof(float) + index_count() * sizeof(std::uint32_t);
+}
+
+// ---- Layout and sources -------------------------------------------------------------------------
+void RenderSync::attach_sources() {
+  const SurfaceMesh& m = *mesh_;
+  h_normal_ = {};
+  v_normal_ = {};
+  h_texcoord_ = {};
+  v_texcoord_ = {};
+  h_color_ = {};
+  v_color_ = {};
+  computed_normals_ = false;
+  const bool has_normal_attr = m.get_halfedge_property<Vec3>("h:normal") || m.get_vertex_property<Vec3>("v:normal");
+  NormalSource ns = options_.normals;
+  if (ns == NormalSource::automatic) ns = has_normal_attr ? NormalSource::attribute : NormalSource::computed;
+  if (ns == NormalSource::attribute) {
+    h_normal_ = m.get_halfedge_property<Vec3>("h:normal");
+    if (!h_normal_) v_normal_ = m.get_vertex_property<Vec3>("v:normal");
+  } else if (ns == NormalSource::computed) {
+    computed_normals_ = true;
+  }
+  if (options_.texcoords) {
+    h_texcoord_ = m.get_halfedge_property<Vec2>("h:texcoord");
+    if (!h_texcoord_) v_texcoord_ = m.get_vertex_property<Vec2>("v:texcoord");
+  }
+  if (options_.colors) {
+    h_color_ = m.get_halfedge_property<Color>("h:color");
+    if (!h_color_) v_color_ = m.get_vertex_property<Color>("v:color");
+  }
+}
+
+void RenderSync::setup_layout() {
+  VertexLayout l;
+  l.interleaved = options_.interleaved;
+  const bool present[4] = {true, h_normal_ || v_normal_ || computed_normals_, h_texcoord_ || v_texcoord_,
+                           h_color_ || v_color_};
+  std::int32_t* offset[4] = {&l.position, &l.normal, &l.texcoord, &l.color};
+  std::uint32_t at = 0;
+  for (int i = 0; i < 4; ++i) {
+    if (!present[i]) {
+      *offset[i] = -1;
+      continue;
+    }
+    *offset[i] = l.interleaved ? static_cast<std::int32_t>(at) : 0;
+    at += kStreamWidth[i];
+  }
+  // In a separate layout `stride` still counts the floats of one whole vertex over all streams.
+  l.stride = at;
+  layout_ = l;
+}
+
+// ---- Vertex data ----------------------------------------------------------------------------------
+namespace {
+// The floats of one render vertex in interleaved order, from a corner (h valid) or a vertex only.
+struct VertexSource {
+  const SurfaceMesh& m;
+  const RenderOptions& o;
+  const VertexLayout& l;
+  HalfedgeProperty<Vec3> hn;
+  VertexProperty<Vec3> vn;
+  HalfedgeProperty<Vec2> ht;
+  VertexProperty<Vec2> vt;
+  HalfedgeProperty<Color> hc;
+  VertexProperty<Color> vc;
+  const std::vector<Vec3>* computed;
+
+  // Writes the vertex-sourced floats of v, and the corner-sourced ones too when h is valid.
+  void fill(Vertex v, Halfedge h, float* out) const {
+    const float sx = o.flip_x ? -1.f : 1.f;
+    const Vec3& p = m.position(v);
+    std::uint32_t at = 0;
+    out[at++] = sx * p.x;
+    out[at++] = p.y;
+    out[at++] = p.z;
+    if (l.normal >= 0) {
+      const bool from_corner = static_cast<bool>(hn);
+      if (!from_corner || h.is_valid()) {
+        Vec3 n = from_corner ? hn[h] : vn ? vn[v] : (*computed)[v.idx()];
+        out[at] = sx * n.x;
+        out[at + 1] = n.y;
+        out[at + 2] = n.z;
+      }
+      at += 3;
+    }
+    if (l.texcoord >= 0) {
+      const bool from_corner = static_cast<bool>(ht);
+      if (!from_corner || h.is_valid()) {
+        const Vec2 t = from_corner ? ht[h] : vt[v];
+        out[at] = t.x;
+        out[at + 1] = t.y;
+      }
+      at += 2;
+    }
+    if (l.color >= 0) {
+      const bool from_corner = static_cast<bool>(hc);
+      if (!from_corner || h.is_valid()) {
+        const Color c = from_corner ? hc[h] : vc[v];
+        out[at] = c.r;
+        out[at + 1] = c.g;
+        out[at + 2] = c.b;
+        out[at + 3] = c.a;
+      }
+    }
+  }
+};
+}  // namespace
+
+#define HEDGE_VERTEX_SOURCE \
+  VertexSource { *mesh_, options_, layout_, h_normal_, v_normal_, h_texcoord_, v_texcoord_, h_color_, v_color_, &vertex_normal_ }
+
+void RenderSync::read_vertex(Index rv, float* out) const {
+  if (layout_.interleaved) {
+    std::memcpy(out, streams_[0].data() + std::size_t(rv) * layout_.stride, layout_.stride * sizeof(float));
+    return;
+  }
+  std::uint32_t at = 0;
+  for (int s = 0; s < 4; ++s) {
+    if (!stream_present(s)) continue;
+    std::memcpy(out + at, streams_[s].data() + std::size_t(rv) * kStreamWidth[s], kStreamWidth[s] * sizeof(float));
+    at += kStreamWidth[s];
+  }
+}
+
+bool RenderSync::stream_present(int s) const {
+  switch (s) {
+    case 0: return true;
+    case 1: return layout_.normal >= 0;
+    case 2: return layout_.texcoord >= 0;
+    default: return layout_.color >= 0;
+  }
+}
+
+void RenderSync::write_vertex(Index rv, const float* data, bool fresh) {
+  if (!fresh) {
+    Floats old;
+    read_vertex(rv, old.data());
+    if (std::memcmp(old.data(), data, layout_.stride * sizeof(float)) == 0) return;
+  }
+  if (layout_.interleaved) {
+    std::memcpy(streams_[0].data() + std::size_t(rv) * layout_.stride, data, layout_.stride * sizeof(float));
+  } else {
+    std::uint32_t at = 0;
+    for (int s = 0; s < 4; ++s) {
+      if (!stream_present(s)) continue;
+      std::memcpy(streams_[s].data() + std::size_t(rv) * kStreamWidth[s], data + at, kStreamWidth[s] * sizeof(float));
+      at += kStreamWidth[s];
+    }
+  }
+  if (!building_) written_vertices_.push_back(rv);
+}
+
+Index RenderSync::allocate_vertex() {
+  Index rv;
+  if (!free_vertices_.empty()) {
+    rv = free_vertices_.back();
+    free_vertices_.pop_back();
+    return rv;
+  }
+  rv = static_cast<Index>(rv_vertex_.size());
+  const std::size_t n = rv_vertex_.size() + 1;
+  if (n > vertex_capacity_) {
+    vertex_capacity_ = grown_capacity(n, vertex_capacity_);
+    if (!building_) result_.resized = true;
+  }
+  rv_vertex_.push_back(Vertex());
+  rv_next_.push_back(kInvalidIndex);
+  rv_refs_.push_back(0);
+  for (int s = 0; s < 4; ++s)
+    if (stream_present(s) && (s == 0 || !layout_.interleaved))
+      streams_[s].resize(n * (layout_.interleaved ? layout_.stride : kStreamWidth[s]));
+  return rv;
+}
+
+Index RenderSync::find_or_add_render_vertex(Halfedge corner) {
+  const Vertex v = mesh_->to_vertex(corner);
+  Floats want;
+  HEDGE_VERTEX_SOURCE.fill(v, corner, want.data());
+  Floats have;
+  for (Index rv = v_first_rv_[v.idx()]; rv != kInvalidIndex; rv = rv_next_[rv]) {
+    read_vertex(rv, have.data());
+    if (std::memcmp(have.data(), want.data(), layout_.stride * sizeof(float)) == 0) return rv;
+  }
+  const Index rv = allocate_vertex();
+  rv_vertex_[rv] = v;
+  rv_refs_[rv] = 0;
+  rv_next_[rv] = v_first_rv_[v.idx()];
+  v_first_rv_[v.idx()] = rv;
+  write_vertex(rv, want.data(), true);
+  return rv;
+}
+
+void RenderSync::unref_vertex(Index rv) {
+  if (--rv_refs_[rv] > 0) return;
+  const Vertex v = rv_vertex_[rv];
+  Index* link = &v_first_rv_[v.idx()];
+  while (*link != rv) link = &rv_next_[*link];
+  *link = rv_next_[rv];
+  rv_next_[rv] = kInvalidIndex;
+  rv_vertex_[rv] = Vertex();
+  free_vertices_.push_back(rv);
+}
+
+// ---- Index slots ----------------------------------------------------------------------------------
+std::uint32_t RenderSync::allocate_triangles(std::uint32_t count) {
+  if (count < free_triangles_.size() && !free_triangles_[count].empty()) {
+    const std::uint32_t first = free_triangles_[count].back();
+    free_triangles_[count].pop_back();
+    free_triangle_count_ -= count;
+    return first;
+  }
+  const std::uint32_t first = static_cast<std::uint32_t>(indices_.size() / 3);
+  const std::size_t n = indices_.size() + 3 * std::size_t(count);
+  if (n > index_capacity_) {
+    index_capacity_ = grown_capacity(n, index_capacity_);
+    if (!building_) result_.resized = true;
+  }
+  indices_.resize(n, 0);
+  return first;
+}
+
+void RenderSync::free_triangles(std::uint32_t first, std::uint32_t count) {
+  // The triangles stay in the buffer as degenerate ones until they are reused or compacted.
+  std::fill_n(indices_.begin() + 3 * std::size_t(first), 3 * std::size_t(count), 0u);
+  mark_indices_written(3 * first, 3 * count);
+  if (free_triangles_.size() <= count) free_triangles_.resize(count + 1);
+  free_triangles_[count].push_back(first);
+  free_triangle_count_ += count;
+}
+
+void RenderSync::mark_indices_written(std::uint32_t first, std::uint32_t count) {
+  if (!building_ && count > 0) written_indices_.push_back({first, count});
+}
+
+void RenderSync::release_face(Face f) {
+  FaceSlots& s = face_slots_[f.idx()];
+  if (s.count == 0) return;
+  const std::size_t begin = 3 * std::size_t(s.first), end = begin + 3 * std::size_t(s.count);
+  for (std::size_t i = begin; i < end; ++i) unref_vertex(indices_[i]);
+  free_triangles(s.first, s.count);
+  live_triangles_ -= s.count;
+  s = {};
+}
+
+void RenderSync::sync_face(Face f) {
+  const SurfaceMesh& m = *mesh_;
+  corners_.clear();
+  for (Halfedge h : m.halfedges(f)) corners_.push_back(h);
+  const std::size_t n = corners_.size();
+  if (n < 3) {  // cannot happen in a valid mesh; keep the buffers sane anyway
+    release_face(f);
+    return;
+  }
+  const std::uint32_t count = static_cast<std::uint32_t>(n - 2);
+
+  // Corner render vertices first: an unchanged corner finds its render vertex again.
+  corner_rvs_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Index rv = find_or_add_render_vertex(corners_[i]);
+    corner_rvs_[i] = rv;
+    corner_rv_[corners_[i].idx()] = rv;
+  }
+
+  // Triangles in face-corner indices.
+  tris_.clear();
+  if (n == 3) {
+    tris_.push_back({0, 1, 2});
+  } else {
+    points_.clear();
+    for (Halfedge h : corners_) points_.push_back(to_double(m.position(m.to_vertex(h))));
+    triangulate_polygon(points_, tris_);
+  }
+  new_indices_.clear();
+  for (const auto& t : tris_) {
+    const Index a = corner_rvs_[t[0]], b = corner_rvs_[t[1]], c = corner_rvs_[t[2]];
+    if (options_.winding == Winding::ccw) new_indices_.insert(new_indices_.end(), {a, b, c});
+    else new_indices_.insert(new_indices_.end(), {a, c, b});
+  }
+  for (Index rv : new_indices_) ++rv_refs_[rv];
+
+  FaceSlots& s = face_slots_[f.idx()];
+  if (s.count == count) {
+    // Same slots: rewrite in place, release the old references, report only a real change.
+    const std::size_t begin = 3 * std::size_t(s.first);
+    if (std::equal(new_indices_.begin(), new_indices_.end(), indices_.begin() + begin)) {
+      for (Index rv : new_indices_) --rv_refs_[rv];  // the same references again
+      return;
+    }
+    for (std::size_t i = 0; i < new_indices_.size(); ++i) {
+      const Index old = indices_[begin + i];
+      indices_[begin + i] = new_indices_[i];
+      unref_vertex(old);
+    }
+    mark_indices_written(static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(new_indices_.size()));
+    return;
+  }
+  if (s.count > 0) {  // the face's corner count changed: give it slots of the new size
+    const std::size_t begin = 3 * std::size_t(s.first), end = begin + 3 * std::size_t(s.count);
+    for (std::size_t i = begin; i < end; ++i) unref_vertex(indices_[i]);
+    free_triangles(s.first, s.count);
+    live_triangles_ -= s.count;
+  }
+  s.first = allocate_triangles(count);
+  s.count = count;
+  live_triangles_ += count;
+  std::copy(new_indices_.begin(), new_indices_.end(), indices_.begin() + 3 * std::size_t(s.first));
+  mark_indices_written(3 * s.first, 3 * count);
+}
+
+// ---- Normals ----------------------------------------------------------------------------------------
+void RenderSync::update_normal(Vertex w) {
+  const SurfaceMesh& m = *mesh_;
+  // Summed in increasing face order, as full_build() sums, so that both give the same bits.
+  normal_faces_.clear();
+  if (!m.is_isolated(w))
+    for (Face f : m.faces(w)) normal_faces_.push_back(f);
+  std::sort(normal_faces_.begin(), normal_faces_.end());
+  Vec3d sum{0, 0, 0};
+  for (Face f : normal_faces_) sum += face_normal_sum(m, f);
+  const Vec3 n = to_float(normalize(sum));
+  vertex_normal_[w.idx()] = n;
+  Floats data;
+  for (Index rv = v_first_rv_[w.idx()]; rv != kInvalidIndex; rv = rv_next_[rv]) {
+    read_vertex(rv, data.data());
+    data[3] = options_.flip_x ? -n.x : n.x;
+    data[4] = n.y;
+    data[5] = n.z;
+    write_vertex(rv, data.data(), false);
+  }
+}
+
+void RenderSync::recompute_normals(const ChangeLog::Pending& p) {
+  const SurfaceMesh& m = *mesh_;
+  ++normal_generation_;
+  auto seed = [&](Vertex w) {
+    if (!w.is_valid() || m.is_deleted(w)) return;
+    if (normal_stamp_[w.idx()] == normal_generation_) return;
+    normal_stamp_[w.idx()] = normal_generation_;
+    normal_seeds_.push_back(w);
+  };
+  normal_seeds_.clear();
+  for (Vertex v : p.vertices) {
+    if (m.is_deleted(v)) continue;
+    seed(v);
+    if (m.is_isolated(v)) continue;
+    for (Face f : m.faces(v))
+      for (Vertex w : m.vertices(f)) seed(w);
+  }
+  for (Face f : p.faces) {
+    if (!m.is_deleted(f)) {
+      for (Vertex w : m.vertices(f)) seed(w);
+    } else if (f.idx() < face_slots_.size() && face_slots_[f.idx()].count > 0) {
+      // A removed face cannot be walked any more; its old corners are in its index slots.
+      const FaceSlots& s = face_slots_[f.idx()];
+      for (std::size_t i = 3 * std::size_t(s.first); i < 3 * std::size_t(s.first + s.count); ++i)
+        seed(rv_vertex_[indices_[i]]);
+    }
+  }
+  for (Vertex w : normal_seeds_) update_normal(w);
+}
+
+// ---- Sync ---------------------------------------------------------------------------------------------
+void RenderSync::grow_element_arrays() {
+  const SurfaceMesh& m = *mesh_;
+  if (v_first_rv_.size() < m.vertices_size()) v_first_rv_.resize(m.vertices_size(), kInvalidIndex);
+  if (corner_rv_.size() < m.halfedges_size()) corner_rv_.resize(m.halfedges_size(), kInvalidIndex);
+  if (face_slots_.size() < m.faces_size()) face_slots_.resize(m.faces_size());
+  if (computed_normals_) {
+    if (vertex_normal_.size() < m.vertices_size()) vertex_normal_.resize(m.vertices_size());
+    if (normal_stamp_.size() < m.vertices_size()) normal_stamp_.resize(m.vertices_size(), 0);
+  }
+}
+
+void RenderSync::full_build() {
+  const SurfaceMesh& m = *mesh_;
+  attach_sources();
+  setup_layout();
+  for (auto& s : streams_) s.clear();
+  rv_vertex_.clear();
+  rv_next_.clear();
+  rv_refs_.clear();
+  free_vertices_.clear();
+  v_first_rv_.assign(m.vertices_size(), kInvalidIndex);
+  corner_rv_.assign(m.halfedges_size(), kInvalidIndex);
+  indices_.clear();
+  face_slots_.assign(m.faces_size(), FaceSlots{});
+  free_triangles_.clear();
+  free_triangle_count_ = 0;
+  live_triangles_ = 0;
+  vertex_normal_.clear();
+  normal_stamp_.clear();
+  grow_element_arrays();
+  building_ = true;
+
+  // Reserve for the common case: about one render vertex per vertex, n - 2 triangles per face.
+  indices_.reserve(3 * m.n_faces());
+  rv_vertex_.reserve(m.n_vertices());
+  for (int s = 0; s < 4; ++s)
+    if (stream_present(s) && (s == 0 || !layout_.interleaved))
+      streams_[s].reserve(m.n_vertices() * (layout_.interleaved ? layout_.stride : kStreamWidth[s]));
+
+  if (computed_normals_) {
+    // One Newell normal per face, added to its corners in increasing face order.
+    std::vector<Vec3d> sum(m.vertices_size(), Vec3d{0, 0, 0});
+    for (Face f : m.faces()) {
+      const Vec3d n = face_normal_sum(m, f);
+      for (Vertex v : m.vertices(f)) sum[v.idx()] += n;
+    }
+    for (Vertex v : m.vertices()) vertex_normal_[v.idx()] = to_float(normalize(sum[v.idx()]));
+  }
+  for (Face f : m.faces()) sync_face(f);
+  building_ = false;
+
+  // A little room to grow after a full build; growth beyond it is geometric (grown_capacity).
+  vertex_capacity_ = rv_vertex_.size() + rv_vertex_.size() / 16 + 64;
+  index_capacity_ = indices_.size() + indices_.size() / 16 + 192;
+  result_.full = true;
+  result_.resized = true;
+  result_.faces_synced = m.n_faces();
+  if (!rv_vertex_.empty()) result_.vertex_ranges.push_back({0, static_cast<std::uint32_t>(rv_vertex_.size())});
+  if (!indices_.empty()) result_.index_ranges.push_back({0, static_cast<std::uint32_t>(indices_.size())});
+  result_.vertices_synced = rv_vertex_.size();
+  result_.vertex_bytes = rv_vertex_.size() * layout_.stride * sizeof(float);
+  result_.index_bytes = indices_.size() * sizeof(std::uint32_t);
+}
+
+const SyncResult& RenderSync::rebuild() {
+  result_ = {};
+  written_vertices_.clear();
+  written_indices_.clear();
+  full_build();
+  mesh_->changes().consume(consumer_);
+  return result_;
+}
+
+const SyncResult& RenderSync::sync() {
+  result_ = {};
+  if (transaction_depth_ > 0) return result_;
+  const ChangeLog::Pending p = mesh_->changes().pending(consumer_);
+  if (p.reset) return rebuild();
+  if (p.vertices.empty() && p.faces.empty()) {
+    mesh_->changes().consume(consumer_);
+    return result_;
+  }
+  const SurfaceMesh& m = *mesh_;
+  grow_element_arrays();
+  written_vertices_.clear();
+  written_indices_.clear();
+
+  if (computed_normals_) recompute_normals(p);
+  // Moved vertices: rewrite the vertex-sourced floats of each of their render vertices.
+  Floats data;
+  for (Vertex v : p.vertices) {
+    if (!v.is_valid() || v.idx() >= m.vertices_size() || m.is_deleted(v)) continue;
+    for (Index rv = v_first_rv_[v.idx()]; rv != kInvalidIndex; rv = rv_next_[rv]) {
+      read_vertex(rv, data.data());
+      HEDGE_VERTEX_SOURCE.fill(v, Halfedge(), data.data());
+      write_vertex(rv, data.data(), false);
+    }
+  }
+  // Faces: removed ones free their slots first, so that new faces can reuse them. A polygon's
+  // triangulation depends on its corner positions, so polygons about a moved vertex are redone.
+  dirty_faces_.assign(p.faces.begin(), p.faces.end());
+  for (Vertex v : p.vertices) {
+    if (!v.is_valid() || v.idx() >= m.vertices_size() || m.is_deleted(v) || m.is_isolated(v)) continue;
+    for (Face f : m.faces(v))
+      if (face_slots_[f.idx()].count > 1) dirty_faces_.push_back(f);
+  }
+  std::sort(dirty_faces_.begin(), dirty_faces_.end());
+  dirty_faces_.erase(std::unique(dirty_faces_.begin(), dirty_faces_.end()), dirty_faces_.end());
+  for (Face f : dirty_faces_)
+    if (f.idx() < m.faces_size() && m.is_deleted(f)) release_face(f);
+  for (Face f : dirty_faces_)
+    if (f.idx() < m.faces_size() && !m.is_deleted(f)) sync_face(f);
+  result_.faces_synced = dirty_faces_.size();
+  mesh_->changes().consume(consumer_);
+  finish_result();
+  return result_;
+}
+
+void RenderSync::finish_result() {
+  std::sort(written_vertices_.begin(), written_vertices_.end());
+  written_vertices_.erase(std::unique(written_vertices_.begin(), written_vertices_.end()), written_vertices_.end());
+  result_.vertices_synced = written_vertices_.size();
+  for (std::uint32_t rv : written_vertices_) {
+    auto& r = result_.vertex_ranges;
+    if (!r.empty() && r.back().first + r.back().count == rv) ++r.back().count;
+    else r.push_back({rv, 1});
+  }
+  result_.index_ranges = written_indices_;
+  merge_ranges(result_.index_ranges);
+  result_.vertex_bytes = written_vertices_.size() * layout_.stride * sizeof(float);
+  std::size_t idx = 0;
+  for (const SlotRange& r : result_.index_ranges) idx += r.count;
+  result_.index_bytes = idx * sizeof(std::uint32_t);
+}
+
+void RenderSync::begin() {
+  ++transaction_depth_;
+  mesh_->changes().begin();
+}
+
+const SyncResult& RenderSync::commit() {
+  if (transaction_depth_ == 0) {
+    result_ = {};
+    return result_;
+  }
+  --transaction_depth_;
+  mesh_->changes().commit();
+  if (transaction_depth_ > 0) {
+    result_ = {};
+    return result_;
+  }
+  return sync();
+}
+
+RenderRemap RenderSync::compact() {
+  // Bring everything up to date first, so that the maps describe current buffers.
+  if (transaction_depth_ == 0) sync();
+  RenderRemap map;
+  const std::size_t nv = rv_vertex_.size();
+  map.vertices.assign(nv, kInvalidIndex);
+  Index live = 0;
+  Floats data;
+  for (std::size_t rv = 0; rv < nv; ++rv) {
+    if (!rv_vertex_[rv].is_valid()) continue;
+    map.vertices[rv] = live;
+    if (live != rv) {
+      read_vertex(static_cast<Index>(rv), data.data());
+      building_ = true;
+      write_vertex(live, data.data(), true);
+      building_ = false;
+      rv_vertex_[live] = rv_vertex_[rv];
+      rv_refs_[live] = rv_refs_[rv];
+      rv_next_[live] = rv_next_[rv];
+    }
+    ++live;
+  }
+  rv_vertex_.resize(live);
+  rv_refs_.resize(live);
+  rv_next_.resize(live);
+  for (Index& n : rv_next_)
+    if (n != kInvalidIndex) n = map.vertices[n];
+  for (Index& f : v_first_rv_)
+    if (f != kInvalidIndex) f = map.vertices[f];
+  for (Index& c : corner_rv_)
+    if (c != kInvalidIndex) c = c < nv ? map.vertices[c] : kInvalidIndex;
+  for (int s = 0; s < 4; ++s)
+    if (stream_present(s) && (s == 0 || !layout_.interleaved))
+      streams_[s].resize(std::size_t(live) * (layout_.interleaved ? layout_.stride : kStreamWidth[s]));
+  free_vertices_.clear();
+
+  // Triangles: pack the faces' ranges in their current order.
+  const std::size_t nt = indices_.size() / 3;
+  map.triangles.assign(nt, kInvalidIndex);
+  std::vector<std::pair<std::uint32_t, Index>> order;  // (first slot, face)
+  for (std::size_t f = 0; f < face_slots_.size(); ++f)
+    if (face_slots_[f].count > 0) order.push_back({face_slots_[f].first, static_cast<Index>(f)});
+  std::sort(order.begin(), order.end());
+  std::vector<std::uint32_t> packed;
+  packed.reserve(3 * live_triangles_);
+  for (const auto& [first, f] : order) {
+    FaceSlots& s = face_slots_[f];
+    const std::uint32_t to = static_cast<std::uint32_t>(packed.size() / 3);
+    for (std::uint32_t t = 0; t < s.count; ++t) {
+      map.triangles[first + t] = to + t;
+      for (int k = 0; k < 3; ++k) packed.push_back(map.vertices[indices_[3 * std::size_t(first + t) + k]]);
+    }
+    s.first = to;
+  }
+  indices_.swap(packed);
+  free_triangles_.clear();
+  free_triangle_count_ = 0;
+
+  result_ = {};
+  result_.full = true;
+  result_.resized = true;
+  if (!rv_vertex_.empty()) result_.vertex_ranges.push_back({0, static_cast<std::uint32_t>(rv_vertex_.size())});
+  if (!indices_.empty()) result_.index_ranges.push_back({0, static_cast<std::uint32_t>(indices_.size())});
+  result_.vertices_synced = rv_vertex_.size();
+  result_.vertex_bytes = rv_vertex_.size() * layout_.stride * sizeof(float);
+  result_.index_bytes = indices_.size() * sizeof(std::uint32_t);
+  return map;
+}
+
+#undef HEDGE_VERTEX_SOURCE
+
+}  // namespace hedge

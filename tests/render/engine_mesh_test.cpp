@@ -1,0 +1,148 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include "hedge/error.h"
+#include "hedge/io/io.h"
+#include "hedge/render/render_sync.h"
+
+namespace hedge {
+namespace {
+
+// An engine mesh: one vertex per distinct (position, texcoord, normal) corner of an OBJ file, as
+// an engine importer makes it; seams become duplicated vertices.
+struct EngineMesh {
+  std::vector<Vec3> positions, normals;
+  std::vector<Vec2> texcoords;
+  std::vector<Color> colors;
+  std::vector<std::uint32_t> indices;
+  EngineMeshView view() const { return {positions, indices, normals, texcoords, colors}; }
+};
+
+EngineMesh engine_mesh_from(const IndexedMesh& in) {
+  EngineMesh e;
+  std::map<std::tuple<Index, Index, Index>, Index> ids;
+  for (std::size_t c = 0; c < in.indices.size(); ++c) {
+    const Index p = in.indices[c];
+    const Index t = in.texcoord_indices.empty() ? 0 : in.texcoord_indices[c];
+    const Index n = in.normal_indices.empty() ? 0 : in.normal_indices[c];
+    auto [it, fresh] = ids.try_emplace({p, t, n}, static_cast<Index>(e.positions.size()));
+    if (fresh) {
+      e.positions.push_back(in.positions[p]);
+      if (!in.texcoords.empty()) e.texcoords.push_back(in.texcoords[t]);
+      if (!in.normals.empty()) e.normals.push_back(in.normals[n]);
+      // A colour per engine vertex, different on each side of a seam.
+      e.colors.push_back(Color{float(p % 7) / 7, float(t % 5) / 5, 0.5f, 1});
+    }
+    e.indices.push_back(it->second);
+  }
+  return e;
+}
+
+// Each engine triangle must come back as the same three vertices: same floats, same order.
+void expect_round_trip(const EngineMesh& e, const EngineImportOptions& io, const RenderOptions& ro) {
+  BuildReport report;
+  SurfaceMesh m = from_engine_mesh(e.view(), io, &report);
+  EXPECT_TRUE(m.validate().empty());
+  EXPECT_EQ(report.repairs(), 0u);
+  RenderSync rs(m, ro);
+  const VertexLayout& l = rs.layout();
+  ASSERT_EQ(l.texcoord >= 0, !e.texcoords.empty());
+  ASSERT_GE(l.color, 0);
+  ASSERT_EQ(rs.live_triangle_count(), e.indices.size() / 3);
+  std::size_t split_count = 0;
+  for (std::size_t t = 0; t < e.indices.size() / 3; ++t) {
+    const Face f(report.face_map[t]);
+    const SlotRange r = rs.triangles(f);
+    ASSERT_EQ(r.count, 1u);
+    for (int k = 0; k < 3; ++k) {
+      const Index ev = e.indices[3 * t + k];
+      const Index rv = rs.indices()[3 * r.first + k];
+      const float* got = rs.vertices().data() + rv * l.stride;
+      EXPECT_EQ(got[0], e.positions[ev].x);
+      EXPECT_EQ(got[1], e.positions[ev].y);
+      EXPECT_EQ(got[2], e.positions[ev].z);
+      if (l.normal >= 0 && !e.normals.empty()) {
+        EXPECT_EQ(got[l.normal + 0], e.normals[ev].x);
+        EXPECT_EQ(got[l.normal + 1], e.normals[ev].y);
+        EXPECT_EQ(got[l.normal + 2], e.normals[ev].z);
+      }
+      if (l.texcoord >= 0) {
+        EXPECT_EQ(got[l.texcoord + 0], e.texcoords[ev].x);
+        EXPECT_EQ(got[l.texcoord + 1], e.texcoords[ev].y);
+      }
+      EXPECT_EQ(got[l.color + 0], e.colors[ev].r);
+      EXPECT_EQ(got[l.color + 1], e.colors[ev].g);
+    }
+  }
+  // Welding made the topology: fewer mesh vertices than engine vertices, and exactly as many
+  // render vertices as the engine had (each engine vertex is one attribute set on one position).
+  EXPECT_LT(m.n_vertices(), e.positions.size());
+  EXPECT_EQ(rs.live_vertex_count(), e.positions.size());
+  split_count = rs.seam_splits();
+  EXPECT_EQ(split_count, e.positions.size() - m.n_vertices());
+}
+
+TEST(EngineMesh, SeamsSurviveARoundTripOnSpot) {
+  const IndexedMesh obj = io::read_indexed_file(std::string(HEDGE_DATA_DIR) + "/spot_triangulated.obj");
+  ASSERT_FALSE(obj.texcoord_indices.empty());
+  const EngineMesh e = engine_mesh_from(obj);
+  ASSERT_GT(e.positions.size(), obj.positions.size());  // the UV seams duplicated vertices
+  expect_round_trip(e, {}, {});
+}
+
+TEST(EngineMesh, UnityConventionsRoundTrip) {
+  // Unity: clockwise triangles, left-handed axes. Importing and exporting with the same
+  // conventions gives the engine its own arrays back; the half-edge mesh in between is CCW and
+  // right-handed, so its normals point outwards.
+  const IndexedMesh obj = io::read_indexed_file(std::string(HEDGE_DATA_DIR) + "/spot_triangulated.obj");
+  EngineMesh e = engine_mesh_from(obj);
+  for (Vec3& p : e.positions) p.x = -p.x;
+  for (std::size_t t = 0; t < e.indices.size(); t += 3) std::swap(e.indices[t + 1], e.indices[t + 2]);
+  EngineImportOptions io;
+  io.winding = Winding::cw;
+  io.flip_x = true;
+  RenderOptions ro;
+  ro.winding = Winding::cw;
+  ro.flip_x = true;
+  expect_round_trip(e, io, ro);
+  SurfaceMesh m = from_engine_mesh(e.view(), io);
+  // The internal mesh equals the OBJ's (right-handed, CCW): same signed volume sign.
+  double vol = 0;
+  for (Face f : m.faces()) {
+    std::vector<Vec3d> p;
+    for (Vertex v : m.vertices(f)) p.push_back(to_double(m.position(v)));
+    vol += dot(p[0], cross(p[1], p[2])) / 6;
+  }
+  EXPECT_GT(vol, 0);
+}
+
+TEST(EngineMesh, BadInputIsRejectedWithAClearMessage) {
+  std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  std::vector<std::uint32_t> ok = {0, 1, 2}, bad = {0, 1, 3}, partial = {0, 1};
+  std::vector<Vec2> short_uv = {{0, 0}};
+  std::vector<Vec3> nan_n = {{0, 0, 1}, {0, 0, NAN}, {0, 0, 1}};
+  auto message = [](const EngineMeshView& v) -> std::string {
+    try {
+      from_engine_mesh(v);
+    } catch (const InvalidInputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(message({p, bad}).find("index 2 (triangle 0) is 3"), std::string::npos) << message({p, bad});
+  EXPECT_NE(message({p, partial}).find("whole number of triangles"), std::string::npos);
+  EXPECT_NE(message({p, ok, {}, short_uv}).find("texcoords has 1 entries for 3 vertices"), std::string::npos);
+  EXPECT_NE(message({p, ok, nan_n}).find("normal of vertex 1"), std::string::npos);
+  std::vector<Vec3> nan_p = p;
+  nan_p[2].y = NAN;
+  EXPECT_THROW(from_engine_mesh({nan_p, ok}), InvalidInputError);
+  SurfaceMesh m = from_engine_mesh({p, ok});
+  EXPECT_EQ(m.n_faces(), 1u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+}  // namespace
+}  // namespace hedge

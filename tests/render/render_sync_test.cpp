@@ -1,0 +1,523 @@
+#include "hedge/render/render_sync.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "hedge/algorithms/random_edits.h"
+#include "hedge/core/operations.h"
+#include "hedge/io/io.h"
+#include "test_meshes.h"
+
+namespace hedge {
+namespace {
+
+std::string data(const char* name) { return std::string(HEDGE_DATA_DIR) + "/" + name; }
+
+// A GPU-side copy of the buffers that only ever receives what sync() reports.
+struct Mirror {
+  std::vector<float> vertices;
+  std::vector<std::uint32_t> indices;
+
+  void apply(const RenderSync& rs, const SyncResult& r) {
+    const auto v = rs.vertices();
+    const auto ix = rs.indices();
+    const std::size_t stride = rs.layout().stride;
+    if (r.full) {
+      vertices.assign(v.begin(), v.end());
+      indices.assign(ix.begin(), ix.end());
+      return;
+    }
+    vertices.resize(v.size(), -12345.f);
+    indices.resize(ix.size(), 0xdeadbeefu);
+    for (const SlotRange& s : r.vertex_ranges)
+      std::copy_n(v.begin() + s.first * stride, s.count * stride, vertices.begin() + s.first * stride);
+    for (const SlotRange& s : r.index_ranges) std::copy_n(ix.begin() + s.first, s.count, indices.begin() + s.first);
+  }
+  // Only vertices that some triangle uses must match: a freed slot may hold stale data.
+  void expect_equal(const RenderSync& rs) const {
+    const auto ix = rs.indices();
+    ASSERT_EQ(indices.size(), ix.size());
+    EXPECT_TRUE(std::equal(ix.begin(), ix.end(), indices.begin()));
+    const auto v = rs.vertices();
+    ASSERT_EQ(vertices.size(), v.size());
+    const std::size_t stride = rs.layout().stride;
+    for (std::size_t i = 0; i < rs.vertex_count(); ++i) {
+      if (!rs.render_vertex_source()[i].is_valid()) continue;
+      for (std::size_t k = 0; k < stride; ++k)
+        ASSERT_EQ(vertices[i * stride + k], v[i * stride + k]) << "render vertex " << i << " float " << k;
+    }
+  }
+};
+
+// Every live triangle as its vertices' floats, rotated to start at the smallest vertex (orientation
+// kept), sorted: equal for two RenderSyncs that draw the same surface with the same attributes.
+std::vector<std::vector<float>> triangle_set(const RenderSync& rs) {
+  const auto v = rs.vertices();
+  const auto ix = rs.indices();
+  const std::size_t stride = rs.layout().stride;
+  std::vector<std::vector<float>> out;
+  for (std::size_t t = 0; t + 2 < ix.size(); t += 3) {
+    if (ix[t] == ix[t + 1] && ix[t] == ix[t + 2]) continue;  // a free slot
+    std::vector<float> c[3];
+    for (int k = 0; k < 3; ++k) c[k].assign(v.begin() + ix[t + k] * stride, v.begin() + (ix[t + k] + 1) * stride);
+    int first = 0;
+    for (int k = 1; k < 3; ++k)
+      if (c[k] < c[first]) first = k;
+    std::vector<float> tri;
+    for (int k = 0; k < 3; ++k) tri.insert(tri.end(), c[(first + k) % 3].begin(), c[(first + k) % 3].end());
+    out.push_back(std::move(tri));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The bookkeeping agrees with the mesh: every live face owns valence - 2 triangles over render
+// vertices of its own corners, and every live render vertex is used.
+void expect_consistent(const RenderSync& rs) {
+  const SurfaceMesh& m = rs.mesh();
+  const auto ix = rs.indices();
+  const auto src = rs.render_vertex_source();
+  const std::size_t stride = rs.layout().stride;
+  std::vector<int> used(rs.vertex_count(), 0);
+  std::vector<int> slot_owner(ix.size() / 3, 0);
+  std::size_t live_tris = 0;
+  for (Face f : m.faces()) {
+    const SlotRange r = rs.triangles(f);
+    ASSERT_EQ(r.count, m.valence(f) - 2) << "face " << f.idx();
+    live_tris += r.count;
+    for (std::uint32_t t = r.first; t < r.first + r.count; ++t) {
+      ASSERT_LT(t, slot_owner.size());
+      EXPECT_EQ(slot_owner[t]++, 0) << "triangle slot " << t << " owned twice";
+      for (int k = 0; k < 3; ++k) {
+        const Index rv = ix[3 * t + k];
+        ASSERT_LT(rv, rs.vertex_count());
+        ASSERT_TRUE(src[rv].is_valid());
+        bool corner_of_f = false;
+        for (Vertex w : m.vertices(f)) corner_of_f |= w == src[rv];
+        EXPECT_TRUE(corner_of_f);
+        ++used[rv];
+      }
+    }
+    for (Halfedge h : m.halfedges(f)) {
+      const Index rv = rs.render_vertex(h);
+      ASSERT_LT(rv, rs.vertex_count());
+      EXPECT_EQ(src[rv], m.to_vertex(h));
+      const Vec3 p = m.position(m.to_vertex(h));
+      const float sx = rs.options().flip_x ? -1.f : 1.f;
+      EXPECT_EQ(rs.vertices()[rv * stride + 0], sx * p.x);
+      EXPECT_EQ(rs.vertices()[rv * stride + 1], p.y);
+      EXPECT_EQ(rs.vertices()[rv * stride + 2], p.z);
+    }
+  }
+  EXPECT_EQ(live_tris, rs.live_triangle_count());
+  EXPECT_EQ(live_tris + rs.free_triangle_count(), ix.size() / 3);
+  std::size_t live_rv = 0;
+  for (std::size_t i = 0; i < src.size(); ++i) {
+    if (!src[i].is_valid()) continue;
+    ++live_rv;
+    EXPECT_GT(used[i], 0) << "render vertex " << i << " is live but unused";
+    EXPECT_FALSE(m.is_deleted(src[i]));
+  }
+  EXPECT_EQ(live_rv, rs.live_vertex_count());
+  for (std::size_t t = 0; t < slot_owner.size(); ++t)
+    if (!slot_owner[t]) EXPECT_TRUE(ix[3 * t] == ix[3 * t + 1] && ix[3 * t] == ix[3 * t + 2]) << "free slot " << t;
+  EXPECT_LE(rs.vertex_count(), rs.vertex_capacity());
+  EXPECT_LE(rs.index_count(), rs.index_capacity());
+}
+
+std::string floats_str(const std::vector<float>& v) {
+  std::string s;
+  for (float f : v) s += std::to_string(f) + " ";
+  return s;
+}
+
+void expect_matches_fresh(const RenderSync& rs) {
+  RenderSync fresh(rs.mesh(), rs.options());
+  EXPECT_EQ(fresh.layout().stride, rs.layout().stride);
+  const auto a = triangle_set(rs), b = triangle_set(fresh);
+  EXPECT_EQ(a.size(), b.size());
+  // Report the first difference only: the sets are large.
+  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+    if (a[i] != b[i]) {
+      ADD_FAILURE() << "triangle " << i << " differs from a fresh export:\n  synced " << floats_str(a[i])
+                    << "\n  fresh  " << floats_str(b[i]);
+      break;
+    }
+}
+
+// A face whose removal is legal and whose corners are all interior.
+Face removable_face(const SurfaceMesh& m) {
+  for (Face f : m.faces()) {
+    bool interior = true;
+    for (Vertex v : m.vertices(f)) interior &= !m.is_boundary(v);
+    if (interior && can_remove_face(m, f)) return f;
+  }
+  return {};
+}
+
+SurfaceMesh with_uv_seams(int n = 4) {
+  // A grid whose texcoords jump along the column x = 2: a UV seam through n + 1 vertices.
+  SurfaceMesh m = build(test::grid(n, true));
+  auto uv = m.add_halfedge_property<Vec2>("h:texcoord");
+  for (Face f : m.faces()) {
+    float cx = 0;
+    for (Vertex v : m.vertices(f)) cx += m.position(v).x / 3;
+    for (Halfedge h : m.halfedges(f)) {
+      const Vec3 p = m.position(m.to_vertex(h));
+      uv[h] = Vec2{p.x + (cx > 2 ? 10.f : 0.f), p.y};
+    }
+  }
+  return m;
+}
+
+TEST(RenderSync, FirstSyncMatchesTheMesh) {
+  SurfaceMesh m = build(test::grid(4, false));  // quads
+  RenderSync rs(m);
+  EXPECT_EQ(rs.layout().stride, 6u);  // position + computed normal
+  EXPECT_EQ(rs.layout().normal, 3);
+  EXPECT_EQ(rs.layout().texcoord, -1);
+  EXPECT_EQ(rs.vertex_count(), m.n_vertices());
+  EXPECT_EQ(rs.index_count(), 16u * 2 * 3);
+  EXPECT_EQ(rs.seam_splits(), 0u);
+  EXPECT_TRUE(rs.last_result().full);
+  expect_consistent(rs);
+  // The grid lies in z = 0 with CCW faces: every normal is +z.
+  for (std::size_t i = 0; i < rs.vertex_count(); ++i) EXPECT_FLOAT_EQ(rs.vertices()[i * 6 + 5], 1.f);
+  // Nothing changed: nothing to upload.
+  EXPECT_TRUE(rs.sync().empty());
+}
+
+TEST(RenderSync, SeamsSplitRenderVertices) {
+  SurfaceMesh m = with_uv_seams();
+  RenderSync rs(m);
+  EXPECT_EQ(rs.layout().texcoord, 6);
+  EXPECT_EQ(rs.layout().stride, 8u);
+  // The 5 vertices of the seam column get a second render vertex each.
+  EXPECT_EQ(rs.seam_splits(), 5u);
+  EXPECT_EQ(rs.vertex_count(), m.n_vertices() + 5);
+  expect_consistent(rs);
+}
+
+TEST(RenderSync, FlipRewritesOnlyItsTwoTriangles) {
+  SurfaceMesh m = build(test::grid(6, true));
+  RenderSync rs(m, RenderOptions{.normals = NormalSource::none});
+  Mirror mirror;
+  mirror.apply(rs, rs.last_result());
+  Edge e;
+  for (Edge c : m.edges())
+    if (can_flip(m, c)) {
+      e = c;
+      break;
+    }
+  ASSERT_TRUE(e.is_valid());
+  const SlotRange a = rs.triangles(m.face(e, 0)), b = rs.triangles(m.face(e, 1));
+  ASSERT_TRUE(flip(m, e).is_valid());
+  const SyncResult& r = rs.sync();
+  EXPECT_FALSE(r.full);
+  EXPECT_FALSE(r.resized);
+  EXPECT_TRUE(r.vertex_ranges.empty());  // no vertex changed
+  std::size_t n = 0;
+  for (const SlotRange& s : r.index_ranges) {
+    n += s.count;
+    EXPECT_TRUE(s.first == 3 * a.first || s.first == 3 * b.first || s.first == 3 * std::min(a.first, b.first));
+  }
+  EXPECT_EQ(n, 6u);
+  EXPECT_EQ(r.index_bytes, 24u);
+  EXPECT_EQ(rs.triangles(m.face(e, 0)).count, 1u);
+  mirror.apply(rs, r);
+  mirror.expect_equal(rs);
+  expect_consistent(rs);
+  expect_matches_fresh(rs);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RenderSync, MovedVertexRewritesItsRenderVerticesAndNeighbourNormals) {
+  SurfaceMesh m = with_uv_seams();
+  RenderSync rs(m);  // computed normals
+  Mirror mirror;
+  mirror.apply(rs, rs.last_result());
+  // A seam vertex inside the grid: two render vertices; lifting it tilts its neighbours' normals.
+  Vertex v;
+  for (Vertex w : m.vertices())
+    if (!m.is_boundary(w) && m.position(w).x == 2.f) v = w;
+  ASSERT_TRUE(v.is_valid());
+  m.set_position(v, m.position(v) + Vec3{0, 0, 0.5f});
+  const SyncResult& r = rs.sync();
+  EXPECT_TRUE(r.index_ranges.empty());
+  // v's two render vertices, and at most its neighbours' (two of them on the seam).
+  EXPECT_GE(r.vertices_synced, 2u);
+  EXPECT_LE(r.vertices_synced, 2u + m.valence(v) + 2u);
+  for (Halfedge h : m.halfedges(v)) {
+    const Index rv = rs.render_vertex(SurfaceMesh::twin(h));  // the corner at v
+    bool written = false;
+    for (const SlotRange& s : r.vertex_ranges) written |= rv >= s.first && rv < s.first + s.count;
+    EXPECT_TRUE(written) << "render vertex " << rv;
+  }
+  mirror.apply(rs, r);
+  mirror.expect_equal(rs);
+  expect_consistent(rs);
+  expect_matches_fresh(rs);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+// Random edits of every kind, with a sync after each: the mirror that received only the dirty
+// ranges must equal the buffers, and the buffers must draw what a fresh export draws.
+void random_edit_run(SurfaceMesh m, const RenderOptions& options, std::size_t steps) {
+  RenderSync rs(m, options);
+  Mirror mirror;
+  mirror.apply(rs, rs.last_result());
+  std::mt19937 rng(7);
+  for (std::size_t step = 0; step < steps; ++step) {
+    if (step % 3 == 0) {
+      std::vector<Vertex> live;
+      for (Vertex v : m.vertices()) live.push_back(v);
+      const Vertex v = live[rng() % live.size()];
+      m.set_position(v, m.position(v) + Vec3{0.01f, -0.02f, 0.03f});
+    } else {
+      RandomEditOptions o;
+      o.seed = 1000 + step;
+      o.operations = 1;
+      o.collect_every = 0;
+      random_edits(m, o);
+    }
+    mirror.apply(rs, rs.sync());
+    if (step % 25 == 0 || step + 1 == steps) {
+      SCOPED_TRACE("step " + std::to_string(step));
+      mirror.expect_equal(rs);
+      expect_consistent(rs);
+      expect_matches_fresh(rs);
+    }
+  }
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RenderSync, RandomEditsOnATexturedTriangleMesh) {
+  random_edit_run(io::read_mesh(data("spot_triangulated.obj")), {}, 400);
+}
+
+TEST(RenderSync, RandomEditsOnAQuadMeshWithSeparateStreamsAndClockwiseWinding) {
+  SurfaceMesh m = io::read_mesh(data("spot_control_mesh.obj"));
+  RenderOptions o;
+  o.winding = Winding::cw;
+  o.flip_x = true;
+  random_edit_run(std::move(m), o, 300);
+}
+
+TEST(RenderSync, RandomEditsOnAnOpenMeshWithComputedNormals) {
+  random_edit_run(io::read_mesh(data("elephant-with-holes.off")), {}, 300);
+}
+
+TEST(RenderSync, TransactionSyncsOnceAtCommit) {
+  SurfaceMesh m = build(test::grid(8, true));
+  RenderSync rs(m);
+  Mirror mirror;
+  mirror.apply(rs, rs.last_result());
+  rs.begin();
+  std::size_t edits = 0;
+  std::vector<Edge> all;
+  for (Edge e : m.edges()) all.push_back(e);
+  std::vector<Face> touched;
+  for (Edge e : all) {
+    if (edits == 20) break;
+    if (can_flip(m, e) && flip(m, e).is_valid()) {
+      ++edits;
+      touched.push_back(m.face(e, 0));
+      touched.push_back(m.face(e, 1));
+    }
+  }
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  EXPECT_TRUE(rs.in_transaction());
+  EXPECT_TRUE(rs.sync().empty());  // deferred
+  const SyncResult& r = rs.commit();
+  EXPECT_FALSE(rs.in_transaction());
+  EXPECT_FALSE(r.empty());
+  EXPECT_EQ(r.faces_synced, touched.size());
+  for (std::size_t i = 1; i < r.index_ranges.size(); ++i)
+    EXPECT_GT(r.index_ranges[i].first, r.index_ranges[i - 1].first + r.index_ranges[i - 1].count);
+  mirror.apply(rs, r);
+  mirror.expect_equal(rs);
+  expect_matches_fresh(rs);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RenderSync, RemovedFacesFreeSlotsThatNewFacesReuse) {
+  SurfaceMesh m = build(test::grid(4, true));
+  RenderSync rs(m, RenderOptions{.normals = NormalSource::none});
+  const std::size_t slots = rs.index_count();
+  const Face f = removable_face(m);
+  ASSERT_TRUE(f.is_valid());
+  std::vector<Vertex> corners;
+  for (Vertex v : m.vertices(f)) corners.push_back(v);
+  const SlotRange was = rs.triangles(f);
+  ASSERT_TRUE(remove_face(m, f));
+  rs.sync();
+  EXPECT_EQ(rs.free_triangle_count(), 1u);
+  EXPECT_EQ(rs.indices()[3 * was.first], rs.indices()[3 * was.first + 1]);  // degenerate now
+  expect_consistent(rs);
+  const Face g = add_face(m, corners);
+  ASSERT_TRUE(g.is_valid());
+  const SyncResult& r = rs.sync();
+  EXPECT_EQ(rs.triangles(g).first, was.first);  // the freed slot is reused
+  EXPECT_EQ(rs.index_count(), slots);
+  EXPECT_FALSE(r.resized);
+  EXPECT_EQ(rs.free_triangle_count(), 0u);
+  expect_consistent(rs);
+  expect_matches_fresh(rs);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RenderSync, CompactRemovesHolesAndReportsTheMaps) {
+  SurfaceMesh m = with_uv_seams(8);
+  RenderSync rs(m);
+  for (int i = 0; i < 3; ++i) {
+    const Face f = removable_face(m);
+    ASSERT_TRUE(f.is_valid());
+    ASSERT_TRUE(remove_face(m, f));
+  }
+  rs.sync();
+  ASSERT_GT(rs.free_triangle_count(), 0u);
+  const std::vector<std::uint32_t> old_indices(rs.indices().begin(), rs.indices().end());
+  const std::size_t stride = rs.layout().stride;
+  const std::vector<float> old_vertices(rs.vertices().begin(), rs.vertices().end());
+  const RenderRemap map = rs.compact();
+  EXPECT_EQ(rs.free_triangle_count(), 0u);
+  EXPECT_EQ(rs.index_count(), 3 * rs.live_triangle_count());
+  EXPECT_EQ(rs.vertex_count(), rs.live_vertex_count());
+  ASSERT_EQ(map.triangles.size(), old_indices.size() / 3);
+  for (std::size_t t = 0; t < map.triangles.size(); ++t) {
+    if (map.triangles[t] == kInvalidIndex) continue;
+    for (int k = 0; k < 3; ++k) {
+      const Index o = old_indices[3 * t + k];
+      EXPECT_EQ(rs.indices()[3 * map.triangles[t] + k], map.vertices[o]);
+      for (std::size_t c = 0; c < stride; ++c)
+        EXPECT_EQ(rs.vertices()[map.vertices[o] * stride + c], old_vertices[o * stride + c]);
+    }
+  }
+  expect_consistent(rs);
+  expect_matches_fresh(rs);
+  // Edits go on after compaction.
+  Edge e;
+  for (Edge c : m.edges())
+    if (can_flip(m, c)) e = c;
+  ASSERT_TRUE(flip(m, e).is_valid());
+  rs.sync();
+  expect_consistent(rs);
+  expect_matches_fresh(rs);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RenderSync, GarbageCollectionRebuilds) {
+  SurfaceMesh m = build(test::grid(4, true));
+  RenderSync rs(m);
+  ASSERT_TRUE(remove_face(m, removable_face(m)));
+  m.garbage_collection();
+  const SyncResult& r = rs.sync();
+  EXPECT_TRUE(r.full);
+  EXPECT_EQ(rs.free_triangle_count(), 0u);
+  expect_consistent(rs);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RenderSync, WindingAndAxes) {
+  SurfaceMesh m = build(test::grid(2, true));
+  RenderSync ccw(m, RenderOptions{.normals = NormalSource::computed});
+  RenderSync cw(m, RenderOptions{.normals = NormalSource::computed, .winding = Winding::cw, .flip_x = true});
+  for (Face f : m.faces()) {
+    const SlotRange a = ccw.triangles(f), b = cw.triangles(f);
+    const auto i = ccw.indices().subspan(3 * a.first, 3), j = cw.indices().subspan(3 * b.first, 3);
+    // Same corners, reversed order.
+    const Index s0 = ccw.render_vertex_source()[i[0]].idx(), s1 = ccw.render_vertex_source()[i[1]].idx(),
+                s2 = ccw.render_vertex_source()[i[2]].idx();
+    EXPECT_EQ(cw.render_vertex_source()[j[0]].idx(), s0);
+    EXPECT_EQ(cw.render_vertex_source()[j[1]].idx(), s2);
+    EXPECT_EQ(cw.render_vertex_source()[j[2]].idx(), s1);
+  }
+  for (std::size_t k = 0; k < ccw.vertex_count(); ++k) {
+    const Vertex v = ccw.render_vertex_source()[k];
+    EXPECT_EQ(ccw.vertices()[k * 6 + 0], m.position(v).x);
+  }
+  for (std::size_t k = 0; k < cw.vertex_count(); ++k) {
+    const Vertex v = cw.render_vertex_source()[k];
+    EXPECT_EQ(cw.vertices()[k * 6 + 0], -m.position(v).x);
+  }
+}
+
+TEST(RenderSync, SeparateStreamsHoldTheInterleavedData) {
+  SurfaceMesh m = with_uv_seams();
+  auto color = m.add_vertex_property<Color>("v:color");
+  for (Vertex v : m.vertices()) color[v] = Color{m.position(v).x / 4, 0.5f, 0.25f, 1};
+  RenderSync a(m);
+  RenderSync b(m, RenderOptions{.interleaved = false});
+  EXPECT_EQ(a.layout().stride, 12u);
+  EXPECT_EQ(a.layout().color, 8);
+  EXPECT_FALSE(b.layout().interleaved);
+  ASSERT_EQ(a.vertex_count(), b.vertex_count());
+  EXPECT_TRUE(a.normals().empty());
+  for (std::size_t k = 0; k < a.vertex_count(); ++k) {
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(a.vertices()[k * 12 + c], b.positions()[k * 3 + c]);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(a.vertices()[k * 12 + 3 + c], b.normals()[k * 3 + c]);
+    for (int c = 0; c < 2; ++c) EXPECT_EQ(a.vertices()[k * 12 + 6 + c], b.texcoords()[k * 2 + c]);
+    for (int c = 0; c < 4; ++c) EXPECT_EQ(a.vertices()[k * 12 + 8 + c], b.colors()[k * 4 + c]);
+  }
+  EXPECT_TRUE(std::equal(a.indices().begin(), a.indices().end(), b.indices().begin()));
+  // A colour change marked on the vertex reaches the colour stream only.
+  color[Vertex(0)] = Color{1, 0, 0, 1};
+  m.mark_changed(Vertex(0), kVertexDataChanged);
+  const SyncResult& r = b.sync();
+  ASSERT_EQ(r.vertex_ranges.size(), 1u);
+  EXPECT_EQ(b.colors()[r.vertex_ranges[0].first * 4], 1.f);
+  EXPECT_EQ(r.vertex_bytes, 12u * sizeof(float));
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RenderSync, GrowthWithinCapacityIsNotAResize) {
+  SurfaceMesh m = build(test::grid(10, true));
+  RenderSync rs(m);
+  std::size_t resizes = 0, syncs = 0;
+  for (int i = 0; i < 200; ++i) {
+    std::vector<Edge> es;
+    for (Edge c : m.edges()) es.push_back(c);
+    const Edge e = es[(i * 7919u) % es.size()];
+    split_edge(m, e, 0.5f * (m.position(m.vertex(e, 0)) + m.position(m.vertex(e, 1))));
+    resizes += rs.sync().resized;
+    ++syncs;
+  }
+  EXPECT_LT(resizes, 12u);  // geometric growth: a handful of reallocations for 200 splits
+  expect_consistent(rs);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+}  // namespace
+}  // namespace hedge
+
+namespace hedge {
+namespace {
+
+TEST(RenderSync, TwoConsumersOfOneMeshSyncAtTheirOwnPace) {
+  SurfaceMesh m = with_uv_seams(6);
+  RenderSync a(m), b(m, RenderOptions{.winding = Winding::cw});
+  Mirror ma, mb;
+  ma.apply(a, a.last_result());
+  mb.apply(b, b.last_result());
+  std::vector<Edge> edges;
+  for (Edge e : m.edges()) edges.push_back(e);
+  int flips = 0;
+  for (Edge e : edges) {
+    if (!can_flip(m, e)) continue;
+    flip(m, e);
+    ma.apply(a, a.sync());  // a after every edit, b after every third
+    if (++flips % 3 == 0) mb.apply(b, b.sync());
+  }
+  mb.apply(b, b.sync());
+  ma.expect_equal(a);
+  mb.expect_equal(b);
+  expect_matches_fresh(a);
+  expect_matches_fresh(b);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+}  // namespace
+}  // namespace hedge
