@@ -18,6 +18,7 @@ prefix="$work/prefix"
 echo "-- installing $build_dir into $prefix"
 cmake --install "$build_dir" --prefix "$prefix"
 test -f "$prefix/include/hedge/core/surface_mesh.h"
+test -f "$prefix/include/hedge/c_api.h"
 ls "$prefix"/lib*/cmake/hedge/hedgeConfig.cmake >/dev/null
 
 configure=(cmake -S "$consumer_src" -B "$work/build" -DCMAKE_PREFIX_PATH="$prefix"
@@ -32,3 +33,5 @@ echo "-- building the consumer"
 cmake --build "$work/build"
 echo "-- running the consumer"
 "$work/build/hedge_consumer"
+echo "-- running the C consumer"
+"$work/build/hedge_c_consumer"

@@ -1,0 +1,636 @@
+/* The C ABI of hedge: a flat, exception-free interface for C and for P/Invoke (C#).
+ *
+ * Conventions
+ *  - Every function returns a status code (hedge_status: HEDGE_OK = 0, errors negative), except
+ *    hedge_last_error() and hedge_status_string(), which cannot fail and return a string. Results
+ *    are written through out parameters, which are never NULL unless documented as optional; on an
+ *    error the out parameters are left unchanged unless documented otherwise.
+ *  - No C++ exception ever crosses this interface. After a call that failed, hedge_last_error()
+ *    gives the message on the calling thread (an I/O error names the file and the line or byte
+ *    offset). Every other call that succeeds clears the message to the empty string (hedge_last_error
+ *    and hedge_status_string leave it as it is).
+ *  - Objects are opaque handles: hedge_mesh* and hedge_render*. A handle is not an address: it is
+ *    an id checked against a registry of live objects on every call, so NULL, a destroyed handle or
+ *    a value that was never a handle yields HEDGE_ERROR_BAD_HANDLE instead of undefined behaviour.
+ *    Ids are never reused within a process, so a destroyed handle never aliases a later object.
+ *  - Elements (vertices, half-edges, edges, faces) are uint32_t indices; HEDGE_INVALID_INDEX
+ *    (0xFFFFFFFF) means "none" (the face of a boundary half-edge, an isolated vertex's half-edge).
+ *    An element argument that is out of range or deleted yields HEDGE_ERROR_BAD_HANDLE, except in
+ *    the hedge_*_is_deleted queries, which accept deleted elements. Half-edges come in pairs:
+ *    half-edge h belongs to edge h >> 1, and its twin is h ^ 1.
+ *  - Booleans are int32_t: 0 false, 1 true.
+ *  - Caller buffers: a function that fills a buffer takes the buffer, its capacity in elements (in
+ *    bytes for text, counting the terminating NUL) and an out-count. The out-count always receives
+ *    the size needed. When it exceeds the capacity, the function writes nothing into the buffer,
+ *    returns HEDGE_ERROR_BUFFER_TOO_SMALL and, for an edit, leaves the mesh unchanged. The buffer
+ *    may be NULL when the capacity is 0, so (NULL, 0) asks for the size.
+ *  - Structs hold only int32_t, uint32_t, uint64_t, float and double fields at their natural
+ *    alignment (the layout of a C# [StructLayout(LayoutKind.Sequential)] struct); the byte offsets
+ *    are given with each.
+ *  - Threads: every function may be called from any thread, and different objects may be used
+ *    concurrently. One mesh (with its render objects) must not be used from two threads at once.
+ *    Destroying an object while another thread uses it is safe: that call finishes on the object,
+ *    later calls get HEDGE_ERROR_BAD_HANDLE.
+ *  - Strings are UTF-8, NUL-terminated; paths too.
+ *
+ * Render objects refer to their mesh: hedge_mesh_destroy() also destroys every render object made
+ * for that mesh, whose handles then yield HEDGE_ERROR_BAD_HANDLE.
+ */
+#ifndef HEDGE_C_API_H
+#define HEDGE_C_API_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(_WIN32)
+#if defined(HEDGE_C_BUILDING)
+#define HEDGE_API __declspec(dllexport)
+#else
+#define HEDGE_API __declspec(dllimport)
+#endif
+#elif defined(__GNUC__) || defined(__clang__)
+#define HEDGE_API __attribute__((visibility("default")))
+#else
+#define HEDGE_API
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ============================================================================================ */
+/* Status codes, errors, version                                                                */
+/* ============================================================================================ */
+
+/** A status code: one of the HEDGE_OK / HEDGE_ERROR_* values (int32_t, so it is the same size in
+ *  every language). */
+typedef int32_t hedge_status;
+
+enum {
+  /** Success. */
+  HEDGE_OK = 0,
+  /** An argument is invalid: a NULL pointer, a NaN or infinite coordinate, a size mismatch, an
+   *  index into the input arrays out of range, an unknown enum value. */
+  HEDGE_ERROR_INVALID_ARGUMENT = -1,
+  /** A mesh or render handle is NULL, destroyed or was never a handle; or an element index is out
+   *  of range or names a deleted element. */
+  HEDGE_ERROR_BAD_HANDLE = -2,
+  /** The operation is illegal here (its predicate says no). Nothing was changed. */
+  HEDGE_ERROR_REFUSED = -3,
+  /** A file could not be read or written, or is malformed. The message names the file and the line
+   *  (text formats) or byte offset (binary formats). */
+  HEDGE_ERROR_IO = -4,
+  /** The input cannot be represented as a half-edge mesh under the strict policy. */
+  HEDGE_ERROR_TOPOLOGY = -5,
+  /** Memory ran out. The object is unchanged if the operation had not started changing it. */
+  HEDGE_ERROR_OUT_OF_MEMORY = -6,
+  /** A caller buffer is too small; the out-count gives the size needed. Nothing was changed. */
+  HEDGE_ERROR_BUFFER_TOO_SMALL = -7,
+  /** An unexpected internal failure (a bug); the message says what. */
+  HEDGE_ERROR_INTERNAL = -8
+};
+
+/** The invalid element index. */
+#define HEDGE_INVALID_INDEX 0xFFFFFFFFu
+
+/** The message of the last failed call on this thread; "" after a call that succeeded. The pointer
+ *  stays valid until the next hedge_* call on this thread. Never NULL. */
+HEDGE_API const char* hedge_last_error(void);
+
+/** A short constant name for a status code ("HEDGE_OK", "HEDGE_ERROR_REFUSED", ...), or
+ *  "HEDGE_ERROR_UNKNOWN" for a value that is not a status code. Never NULL; static storage. */
+HEDGE_API const char* hedge_status_string(hedge_status code);
+
+/** The library version (major.minor.patch). */
+HEDGE_API hedge_status hedge_version(int32_t* out_major, int32_t* out_minor, int32_t* out_patch);
+
+/* ============================================================================================ */
+/* Meshes: creation and destruction                                                             */
+/* ============================================================================================ */
+
+typedef struct hedge_mesh hedge_mesh;
+typedef struct hedge_render hedge_render;
+
+/** Topology policy (hedge::TopologyPolicy). */
+enum {
+  /** Refuse input a half-edge mesh cannot hold: HEDGE_ERROR_TOPOLOGY. */
+  HEDGE_POLICY_STRICT = 0,
+  /** Split non-manifold edges and vertices, re-orient faces, drop degenerate faces; every repair is
+   *  counted in the build report. */
+  HEDGE_POLICY_REPAIR = 1
+};
+
+/** Vertex welding (hedge::Weld). */
+enum {
+  HEDGE_WELD_NONE = 0,   /**< keep the input's vertices */
+  HEDGE_WELD_EXACT = 1,  /**< merge bit-identical positions (+0 == -0) */
+  HEDGE_WELD_EPSILON = 2 /**< merge positions closer than weld_epsilon x bounding-box diagonal */
+};
+
+/** Triangle winding (hedge::Winding). */
+enum {
+  HEDGE_WINDING_CCW = 0,
+  HEDGE_WINDING_CW = 1 /**< Unity, Direct3D */
+};
+
+/** Build options. Layout (16 bytes): policy @0, weld @4, weld_epsilon @8. */
+typedef struct hedge_build_options {
+  int32_t policy;      /**< HEDGE_POLICY_* */
+  int32_t weld;        /**< HEDGE_WELD_* */
+  double weld_epsilon; /**< relative to the bounding-box diagonal; used with HEDGE_WELD_EPSILON */
+} hedge_build_options;
+
+/** What building did; all zero for clean input. Layout (36 bytes): nine uint32_t in this order. */
+typedef struct hedge_build_report {
+  uint32_t welded_vertices;       /**< input vertices merged into another by welding */
+  uint32_t degenerate_faces;      /**< faces dropped: fewer than 3 distinct corners */
+  uint32_t repeated_corners;      /**< consecutive repeated corners removed from kept faces */
+  uint32_t reoriented_faces;      /**< faces whose winding was reversed */
+  uint32_t non_manifold_edges;    /**< input edges cut apart */
+  uint32_t non_manifold_vertices; /**< vertices whose faces formed several fans */
+  uint32_t duplicated_vertices;   /**< vertices added to split them */
+  uint32_t isolated_vertices;     /**< vertices no face uses (kept; not a repair) */
+  uint32_t repairs;               /**< total repairs (welding and isolated vertices excluded) */
+} hedge_build_report;
+
+/** Fills *out_options with the defaults of the C ABI: HEDGE_POLICY_REPAIR, HEDGE_WELD_NONE,
+ *  weld_epsilon 1e-6. (Note: the C++ default policy is strict; the C ABI's is repair.) */
+HEDGE_API hedge_status hedge_build_options_default(hedge_build_options* out_options);
+
+/** Builds a mesh from index buffers.
+ *  \param positions     3 floats (x, y, z) per vertex, vertex_count vertices; finite.
+ *  \param indices       the corners of all faces, face after face (index_count entries), each an
+ *                       index into positions.
+ *  \param face_sizes    the number of corners of each face (face_count entries), summing to
+ *                       index_count; NULL for triangles (then face_count must be 0 or
+ *                       index_count / 3, and index_count a multiple of 3).
+ *  \param options       NULL for hedge_build_options_default().
+ *  \param out_report    optional (NULL): what was repaired.
+ *  \param out_vertex_map optional (NULL), vertex_count entries: input vertex -> mesh vertex
+ *                       (after welding; a split vertex maps to its first copy).
+ *  \param out_face_map  optional (NULL), one entry per input face (face_count, or index_count / 3
+ *                       for triangles): input face -> mesh face, HEDGE_INVALID_INDEX if dropped.
+ *  \param out_mesh      receives the new mesh; destroy it with hedge_mesh_destroy().
+ *  \return HEDGE_ERROR_INVALID_ARGUMENT for a NaN coordinate, an index out of range or a size
+ *          mismatch; HEDGE_ERROR_TOPOLOGY for non-manifold input under HEDGE_POLICY_STRICT. */
+HEDGE_API hedge_status hedge_mesh_create(const float* positions, uint32_t vertex_count,
+                                         const uint32_t* indices, uint32_t index_count,
+                                         const uint32_t* face_sizes, uint32_t face_count,
+                                         const hedge_build_options* options, hedge_build_report* out_report,
+                                         uint32_t* out_vertex_map, uint32_t* out_face_map,
+                                         hedge_mesh** out_mesh);
+
+/** Destroys a mesh and every render object made for it. NULL or a destroyed handle:
+ *  HEDGE_ERROR_BAD_HANDLE. */
+HEDGE_API hedge_status hedge_mesh_destroy(hedge_mesh* mesh);
+
+/* ============================================================================================ */
+/* Counts and positions                                                                         */
+/* ============================================================================================ */
+
+/** Element counts. Live counts skip deleted elements; slot counts include them (element indices
+ *  run from 0 to the slot count - 1 until hedge_mesh_garbage_collection()).
+ *  Layout (32 bytes): eight uint32_t in this order. */
+typedef struct hedge_counts {
+  uint32_t vertices;
+  uint32_t halfedges;
+  uint32_t edges;
+  uint32_t faces;
+  uint32_t vertex_slots;
+  uint32_t halfedge_slots;
+  uint32_t edge_slots;
+  uint32_t face_slots;
+} hedge_counts;
+
+HEDGE_API hedge_status hedge_mesh_counts(const hedge_mesh* mesh, hedge_counts* out_counts);
+
+/** out_xyz receives 3 floats. */
+HEDGE_API hedge_status hedge_mesh_get_position(const hedge_mesh* mesh, uint32_t vertex, float* out_xyz);
+/** Moves a vertex (render objects see it at their next sync). NaN or infinity:
+ *  HEDGE_ERROR_INVALID_ARGUMENT. */
+HEDGE_API hedge_status hedge_mesh_set_position(hedge_mesh* mesh, uint32_t vertex, float x, float y, float z);
+/** Copies the positions of every vertex slot (deleted ones included, with stale data): 3 floats a
+ *  slot, so the size needed (*out_count, in floats) is 3 x vertex_slots. */
+HEDGE_API hedge_status hedge_mesh_copy_positions(const hedge_mesh* mesh, float* buffer, uint64_t capacity,
+                                                 uint64_t* out_count);
+
+/* ============================================================================================ */
+/* Adjacency. O(1) unless noted.                                                                */
+/* ============================================================================================ */
+
+HEDGE_API hedge_status hedge_halfedge_twin(const hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_halfedge);
+/** The next half-edge in the face or boundary loop. */
+HEDGE_API hedge_status hedge_halfedge_next(const hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_halfedge);
+/** The previous half-edge in the face or boundary loop: O(face degree), O(valence) on a boundary. */
+HEDGE_API hedge_status hedge_halfedge_prev(const hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_halfedge);
+/** The vertex the half-edge points to. */
+HEDGE_API hedge_status hedge_halfedge_to_vertex(const hedge_mesh* mesh, uint32_t halfedge,
+                                                uint32_t* out_vertex);
+/** The vertex the half-edge starts at. */
+HEDGE_API hedge_status hedge_halfedge_from_vertex(const hedge_mesh* mesh, uint32_t halfedge,
+                                                  uint32_t* out_vertex);
+/** The face of the half-edge; HEDGE_INVALID_INDEX for a boundary half-edge. */
+HEDGE_API hedge_status hedge_halfedge_face(const hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_face);
+/** The edge of the half-edge (halfedge >> 1). */
+HEDGE_API hedge_status hedge_halfedge_edge(const hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_edge);
+/** One outgoing half-edge of the vertex (a boundary one if the vertex is on a boundary);
+ *  HEDGE_INVALID_INDEX for an isolated vertex. */
+HEDGE_API hedge_status hedge_vertex_halfedge(const hedge_mesh* mesh, uint32_t vertex, uint32_t* out_halfedge);
+/** The face's half-edge: the face's corners start at its target vertex. */
+HEDGE_API hedge_status hedge_face_halfedge(const hedge_mesh* mesh, uint32_t face, uint32_t* out_halfedge);
+/** Half-edge i (0 or 1, else HEDGE_ERROR_INVALID_ARGUMENT) of the edge: edge * 2 + i. */
+HEDGE_API hedge_status hedge_edge_halfedge(const hedge_mesh* mesh, uint32_t edge, uint32_t i,
+                                           uint32_t* out_halfedge);
+
+/** True if the vertex is on a boundary or isolated. */
+HEDGE_API hedge_status hedge_vertex_is_boundary(const hedge_mesh* mesh, uint32_t vertex,
+                                                int32_t* out_boundary);
+/** True if the half-edge has no face. */
+HEDGE_API hedge_status hedge_halfedge_is_boundary(const hedge_mesh* mesh, uint32_t halfedge,
+                                                  int32_t* out_boundary);
+/** True if either half-edge of the edge has no face. */
+HEDGE_API hedge_status hedge_edge_is_boundary(const hedge_mesh* mesh, uint32_t edge, int32_t* out_boundary);
+/** True if any edge of the face is on a boundary. O(face degree). */
+HEDGE_API hedge_status hedge_face_is_boundary(const hedge_mesh* mesh, uint32_t face, int32_t* out_boundary);
+
+/** Number of edges at the vertex. O(valence). */
+HEDGE_API hedge_status hedge_vertex_valence(const hedge_mesh* mesh, uint32_t vertex, uint32_t* out_valence);
+/** Number of corners of the face. O(face degree). */
+HEDGE_API hedge_status hedge_face_valence(const hedge_mesh* mesh, uint32_t face, uint32_t* out_valence);
+/** The half-edge from vertex `from` to vertex `to`, or HEDGE_INVALID_INDEX (with HEDGE_OK) when no
+ *  edge joins them. O(valence). */
+HEDGE_API hedge_status hedge_mesh_find_halfedge(const hedge_mesh* mesh, uint32_t from, uint32_t to,
+                                                uint32_t* out_halfedge);
+
+/** Deletion flags. These accept deleted elements (only an index out of range is a bad handle). */
+HEDGE_API hedge_status hedge_vertex_is_deleted(const hedge_mesh* mesh, uint32_t vertex, int32_t* out_deleted);
+HEDGE_API hedge_status hedge_halfedge_is_deleted(const hedge_mesh* mesh, uint32_t halfedge,
+                                                 int32_t* out_deleted);
+HEDGE_API hedge_status hedge_edge_is_deleted(const hedge_mesh* mesh, uint32_t edge, int32_t* out_deleted);
+HEDGE_API hedge_status hedge_face_is_deleted(const hedge_mesh* mesh, uint32_t face, int32_t* out_deleted);
+
+/* One-rings and face loops, into caller buffers (see "Caller buffers" above). The one-ring of a
+ * vertex is clockwise, starting at hedge_vertex_halfedge() (at the boundary gap for a boundary
+ * vertex); an isolated vertex has an empty one-ring. O(valence) or O(face degree). */
+
+/** Outgoing half-edges of the vertex. */
+HEDGE_API hedge_status hedge_vertex_halfedges(const hedge_mesh* mesh, uint32_t vertex, uint32_t* buffer,
+                                              uint32_t capacity, uint32_t* out_count);
+/** Neighbour vertices (the targets of the outgoing half-edges, same order). */
+HEDGE_API hedge_status hedge_vertex_vertices(const hedge_mesh* mesh, uint32_t vertex, uint32_t* buffer,
+                                             uint32_t capacity, uint32_t* out_count);
+/** Incident faces (boundary gaps skipped). */
+HEDGE_API hedge_status hedge_vertex_faces(const hedge_mesh* mesh, uint32_t vertex, uint32_t* buffer,
+                                          uint32_t capacity, uint32_t* out_count);
+/** Corners of the face in order (counter-clockwise for a CCW face), starting at the target of
+ *  hedge_face_halfedge(). */
+HEDGE_API hedge_status hedge_face_vertices(const hedge_mesh* mesh, uint32_t face, uint32_t* buffer,
+                                           uint32_t capacity, uint32_t* out_count);
+/** Half-edges of the face in order, starting at hedge_face_halfedge(); the i-th enters the i-th
+ *  corner of hedge_face_vertices(). */
+HEDGE_API hedge_status hedge_face_halfedges(const hedge_mesh* mesh, uint32_t face, uint32_t* buffer,
+                                            uint32_t capacity, uint32_t* out_count);
+
+/* ============================================================================================ */
+/* Local operations (hedge/core/operations.h)                                                   */
+/* ============================================================================================ */
+/* Each edit has a predicate hedge_can_*(..., int32_t* out_ok). An edit its predicate refuses
+ * returns HEDGE_ERROR_REFUSED and leaves the mesh exactly as it was. Deleted elements are left in
+ * their slots (flagged) until hedge_mesh_garbage_collection(). Render objects of the mesh see
+ * every edit at their next sync. Points are finite x, y, z (else HEDGE_ERROR_INVALID_ARGUMENT). */
+
+/** True if the edge can be split (it is live). O(1). */
+HEDGE_API hedge_status hedge_can_split_edge(const hedge_mesh* mesh, uint32_t edge, int32_t* out_ok);
+/** Inserts a vertex at (x, y, z) on the edge; triangles on either side are split in two.
+ *  Half-edge 2 x edge then runs from the edge's first vertex to the new vertex.
+ *  \param out_vertex the new vertex. */
+HEDGE_API hedge_status hedge_split_edge(hedge_mesh* mesh, uint32_t edge, float x, float y, float z,
+                                        uint32_t* out_vertex);
+
+/** True if collapsing the half-edge keeps the mesh a valid manifold (link condition, no valence
+ *  below 3 left, no tetrahedron collapsed, ...). O(valence). */
+HEDGE_API hedge_status hedge_can_collapse(const hedge_mesh* mesh, uint32_t halfedge, int32_t* out_ok);
+/** Merges the half-edge's from-vertex into its to-vertex, which survives and keeps its position.
+ *  \param out_vertex the surviving vertex. */
+HEDGE_API hedge_status hedge_collapse(hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_vertex);
+
+/** True if the edge is interior between two triangles and can be turned. O(valence). */
+HEDGE_API hedge_status hedge_can_flip(const hedge_mesh* mesh, uint32_t edge, int32_t* out_ok);
+/** Turns the edge to join the two opposite corners of its triangles (the edge keeps its index). */
+HEDGE_API hedge_status hedge_flip(hedge_mesh* mesh, uint32_t edge);
+
+/** True if the face can be split at a point (it is live). O(1). */
+HEDGE_API hedge_status hedge_can_split_face(const hedge_mesh* mesh, uint32_t face, int32_t* out_ok);
+/** Inserts a vertex at (x, y, z) into the face and joins it to every corner (an n-gon becomes n
+ *  triangles). \param out_vertex the new vertex. */
+HEDGE_API hedge_status hedge_split_face(hedge_mesh* mesh, uint32_t face, float x, float y, float z,
+                                        uint32_t* out_vertex);
+
+/** True if the face of halfedge0 and halfedge1 can be cut along a new edge from the target of
+ *  halfedge0 to the target of halfedge1: both in the same live face, targets not adjacent in it and
+ *  not joined by an edge yet. */
+HEDGE_API hedge_status hedge_can_split_face_diagonal(const hedge_mesh* mesh, uint32_t halfedge0,
+                                                     uint32_t halfedge1, int32_t* out_ok);
+/** Cuts the face as described above. \param out_halfedge the new half-edge from the target of
+ *  halfedge0 to the target of halfedge1. */
+HEDGE_API hedge_status hedge_split_face_diagonal(hedge_mesh* mesh, uint32_t halfedge0, uint32_t halfedge1,
+                                                 uint32_t* out_halfedge);
+
+/** Splits every live face at its centroid. Never refused.
+ *  \param buffer optional (NULL): receives the new vertices, one per face, in face order.
+ *  \param capacity entries in buffer; when buffer is not NULL it must be at least the number of
+ *         live faces (else HEDGE_ERROR_BUFFER_TOO_SMALL and nothing is changed).
+ *  \param out_count the number of new vertices (the number of live faces). */
+HEDGE_API hedge_status hedge_split_all_faces(hedge_mesh* mesh, uint32_t* buffer, uint32_t capacity,
+                                             uint32_t* out_count);
+
+/** True if a face with these corners (count vertices, counter-clockwise) can be added while every
+ *  vertex and edge stays manifold. O(count x valence). */
+HEDGE_API hedge_status hedge_can_add_face(const hedge_mesh* mesh, const uint32_t* vertices, uint32_t count,
+                                          int32_t* out_ok);
+/** Adds the face. \param out_face the new face. */
+HEDGE_API hedge_status hedge_add_face(hedge_mesh* mesh, const uint32_t* vertices, uint32_t count,
+                                      uint32_t* out_face);
+
+/** True if removing the face leaves every vertex manifold. O(face degree). */
+HEDGE_API hedge_status hedge_can_remove_face(const hedge_mesh* mesh, uint32_t face, int32_t* out_ok);
+/** Removes the face; edges and vertices it leaves unused are removed too. */
+HEDGE_API hedge_status hedge_remove_face(hedge_mesh* mesh, uint32_t face);
+
+/** True if removing the vertex with its faces leaves every other vertex manifold. O(valence^2). */
+HEDGE_API hedge_status hedge_can_remove_vertex(const hedge_mesh* mesh, uint32_t vertex, int32_t* out_ok);
+/** Removes the vertex, its faces and whatever they leave unused. */
+HEDGE_API hedge_status hedge_remove_vertex(hedge_mesh* mesh, uint32_t vertex);
+
+/** True if the half-edge is a boundary half-edge whose loop has at least 3 edges. O(loop length). */
+HEDGE_API hedge_status hedge_can_fill_hole(const hedge_mesh* mesh, uint32_t halfedge, int32_t* out_ok);
+/** Fills the boundary loop of the half-edge with triangles (shortest diagonals first; a rest that
+ *  cannot be cut stays one polygon). O(loop length^2).
+ *  \param buffer optional (NULL): receives the new faces.
+ *  \param capacity when buffer is not NULL it must be at least the loop length - 2, the most faces
+ *         a fill can make (else HEDGE_ERROR_BUFFER_TOO_SMALL with *out_count = loop length - 2,
+ *         and nothing is changed).
+ *  \param out_count the number of new faces. */
+HEDGE_API hedge_status hedge_fill_hole(hedge_mesh* mesh, uint32_t halfedge, uint32_t* buffer,
+                                       uint32_t capacity, uint32_t* out_count);
+
+/** Moves the faces out of the mesh into a new mesh with all their properties; vertices the removal
+ *  leaves pinched are split so both meshes stay manifold. Repeated faces are ignored.
+ *  \param faces the faces to detach (live faces), count of them (0 gives an empty new mesh).
+ *  \param out_vertex_origin optional (NULL): receives new-mesh vertex -> source-mesh vertex.
+ *  \param origin_capacity when out_vertex_origin is not NULL it must be at least the total number of
+ *         corners of the (distinct) faces, an upper bound of the new mesh's vertices (else
+ *         HEDGE_ERROR_BUFFER_TOO_SMALL with *out_origin_count = that bound, nothing changed).
+ *  \param out_origin_count optional (NULL) when out_vertex_origin is NULL: the number of vertices
+ *         of the new mesh.
+ *  \param out_mesh the new mesh; destroy it with hedge_mesh_destroy(). */
+HEDGE_API hedge_status hedge_detach_faces(hedge_mesh* mesh, const uint32_t* faces, uint32_t count,
+                                          uint32_t* out_vertex_origin, uint32_t origin_capacity,
+                                          uint32_t* out_origin_count, hedge_mesh** out_mesh);
+
+/** Removes deleted elements and compacts every array; element indices change. Each map is
+ *  optional (NULL) and receives old index -> new index (HEDGE_INVALID_INDEX for a removed element);
+ *  its capacity must be at least the slot count of its kind before the call (hedge_mesh_counts():
+ *  vertex_slots, halfedge_slots, edge_slots, face_slots), else HEDGE_ERROR_BUFFER_TOO_SMALL and
+ *  nothing is changed. Render objects of the mesh rebuild at their next sync. O(#elements). */
+HEDGE_API hedge_status hedge_mesh_garbage_collection(hedge_mesh* mesh, uint32_t* vertex_map,
+                                                     uint32_t vertex_capacity, uint32_t* halfedge_map,
+                                                     uint32_t halfedge_capacity, uint32_t* edge_map,
+                                                     uint32_t edge_capacity, uint32_t* face_map,
+                                                     uint32_t face_capacity);
+
+/* ============================================================================================ */
+/* Files (hedge/io/io.h): OBJ, OFF, PLY, STL, chosen by the extension                           */
+/* ============================================================================================ */
+
+/** Reads and builds a mesh.
+ *  \param options NULL for the format's defaults (repair policy; exact welding for STL).
+ *  \param out_report optional (NULL).
+ *  \return HEDGE_ERROR_IO for an unreadable or malformed file or an unknown extension; the message
+ *          is "path:line: what was expected" (text) or "path (byte N): ..." (binary). */
+HEDGE_API hedge_status hedge_mesh_read(const char* path, const hedge_build_options* options,
+                                       hedge_build_report* out_report, hedge_mesh** out_mesh);
+/** Writes the live faces to a file atomically (a failed write leaves the target as it was).
+ *  \param binary PLY and STL: 1 binary (little endian), 0 ASCII; ignored for OBJ and OFF.
+ *  \param precision significant digits of ASCII coordinates; 0 for the default (9, exact round
+ *         trip of every float). */
+HEDGE_API hedge_status hedge_mesh_write(const hedge_mesh* mesh, const char* path, int32_t binary,
+                                        int32_t precision);
+
+/* ============================================================================================ */
+/* Validation                                                                                   */
+/* ============================================================================================ */
+
+/** Checks every invariant of the mesh and keeps the list of problems in the mesh object for the
+ *  two functions below. \param out_problem_count 0 when the mesh is valid. O(#elements). */
+HEDGE_API hedge_status hedge_mesh_validate(hedge_mesh* mesh, uint32_t* out_problem_count);
+/** The text of problem `index` (< the count) of the last hedge_mesh_validate() on this mesh, into
+ *  a caller buffer; *out_size receives the bytes needed including the NUL. An index out of range:
+ *  HEDGE_ERROR_INVALID_ARGUMENT. */
+HEDGE_API hedge_status hedge_mesh_validation_problem(const hedge_mesh* mesh, uint32_t index, char* buffer,
+                                                     uint32_t capacity, uint32_t* out_size);
+/** All problems of the last hedge_mesh_validate(), joined with newlines (no trailing newline; "" when
+ *  valid), into a caller buffer; *out_size receives the bytes needed including the NUL. */
+HEDGE_API hedge_status hedge_mesh_validation_report(const hedge_mesh* mesh, char* buffer, uint32_t capacity,
+                                                    uint32_t* out_size);
+
+/* ============================================================================================ */
+/* Render buffers (hedge/render/render_sync.h)                                                  */
+/* ============================================================================================ */
+/* A render object keeps engine-ready vertex and index buffers in step with its mesh: each face
+ * owns fixed triangle slots, each render vertex (a mesh vertex per distinct set of corner
+ * attributes: seams split vertices) a fixed vertex slot; hedge_render_sync() rewrites only what
+ * the edits since the last sync touched and reports the rewritten ranges. Freed slots stay as
+ * holes (degenerate triangles, unreferenced vertices) until hedge_render_compact(). */
+
+/** Normal source (hedge::NormalSource). */
+enum {
+  HEDGE_NORMALS_NONE = 0,      /**< no normal stream */
+  HEDGE_NORMALS_ATTRIBUTE = 1, /**< the mesh's corner or vertex normals; none if it has none */
+  HEDGE_NORMALS_COMPUTED = 2,  /**< area-weighted smooth vertex normals */
+  HEDGE_NORMALS_AUTOMATIC = 3  /**< attribute if the mesh has normals, computed otherwise */
+};
+
+/** Vertex streams for hedge_render_vertex_data() and hedge_render_copy_vertex_data(). */
+enum {
+  /** Interleaved layout: every vertex, stride floats each. Separate layout: the positions. */
+  HEDGE_STREAM_VERTICES = 0,
+  HEDGE_STREAM_NORMALS = 1,   /**< separate layout only (3 floats a vertex); else empty */
+  HEDGE_STREAM_TEXCOORDS = 2, /**< separate layout only (2 floats a vertex); else empty */
+  HEDGE_STREAM_COLORS = 3     /**< separate layout only (4 floats a vertex); else empty */
+};
+
+/** Render options (hedge::RenderOptions). Layout (24 bytes): six int32_t in this order. */
+typedef struct hedge_render_options {
+  int32_t normals;     /**< HEDGE_NORMALS_* */
+  int32_t texcoords;   /**< 1: texcoords from the mesh's corner or vertex texcoords when present */
+  int32_t colors;      /**< 1: colours from the mesh's corner or vertex colours when present */
+  int32_t interleaved; /**< 1: one buffer of whole vertices; 0: one buffer per stream */
+  int32_t winding;     /**< HEDGE_WINDING_*: of the triangles in the index buffer */
+  int32_t flip_x;      /**< 1: negate x of positions and normals (right- <-> left-handed axes) */
+} hedge_render_options;
+
+/** Where each attribute sits in a vertex, in floats; an absent attribute has offset -1.
+ *  Interleaved: all in the HEDGE_STREAM_VERTICES buffer, stride floats a vertex, in the order
+ *  position, normal, texcoord, color. Separate: each in its own stream, tightly packed (3, 3, 2 and
+ *  4 floats a vertex), a present attribute has offset 0, and stride still counts the floats of one
+ *  whole vertex over all streams. Layout (24 bytes): stride @0 (uint32_t), position @4,
+ *  normal @8, texcoord @12, color @16, interleaved @20 (int32_t). */
+typedef struct hedge_vertex_layout {
+  uint32_t stride;
+  int32_t position;
+  int32_t normal;
+  int32_t texcoord;
+  int32_t color;
+  int32_t interleaved;
+} hedge_vertex_layout;
+
+/** A run of slots [first, first + count). Layout (8 bytes): first @0, count @4. */
+typedef struct hedge_range {
+  uint32_t first;
+  uint32_t count;
+} hedge_range;
+
+/** What a sync (or commit, or rebuild) rewrote. The ranges themselves:
+ *  hedge_render_dirty_vertex_ranges() and hedge_render_dirty_index_ranges().
+ *  Layout (40 bytes): vertex_bytes @0, index_bytes @8 (uint64_t), vertex_range_count @16,
+ *  index_range_count @20, faces_synced @24, vertices_synced @28 (uint32_t), resized @32,
+ *  full @36 (int32_t). */
+typedef struct hedge_sync_result {
+  uint64_t vertex_bytes;       /**< bytes in the vertex ranges, all streams */
+  uint64_t index_bytes;        /**< bytes in the index ranges */
+  uint32_t vertex_range_count; /**< rewritten render-vertex ranges */
+  uint32_t index_range_count;  /**< rewritten index-buffer ranges (in indices, not triangles) */
+  uint32_t faces_synced;
+  uint32_t vertices_synced;
+  int32_t resized; /**< 1: the buffers grew or were rebuilt: reallocate GPU buffers, upload all */
+  int32_t full;    /**< 1: everything was rebuilt (first sync, garbage collection, rebuild) */
+} hedge_sync_result;
+
+/** Buffer sizes. Slot counts include free slots. Layout (40 bytes): vertex_count @0,
+ *  index_count @4, live_vertex_count @8, live_triangle_count @12, seam_splits @16,
+ *  free_triangle_count @20 (uint32_t), buffer_bytes @24 (uint64_t), vertex_capacity @32,
+ *  index_capacity @36 (uint32_t). Allocate GPU buffers at the capacities: the counts grow inside
+ *  them without a reallocation, and a sync whose result has `resized` set grew beyond them. */
+typedef struct hedge_buffer_counts {
+  uint32_t vertex_count;        /**< render vertex slots */
+  uint32_t index_count;         /**< index-buffer entries (3 per triangle slot) */
+  uint32_t live_vertex_count;   /**< render vertex slots in use */
+  uint32_t live_triangle_count; /**< triangle slots in use */
+  uint32_t seam_splits;         /**< render vertices beyond one per used mesh vertex */
+  uint32_t free_triangle_count; /**< degenerate triangle slots waiting for reuse or compaction */
+  uint64_t buffer_bytes;        /**< bytes of the whole vertex and index buffers */
+  uint32_t vertex_capacity;     /**< render vertex slots to allocate (>= vertex_count) */
+  uint32_t index_capacity;      /**< index-buffer entries to allocate (>= index_count) */
+} hedge_buffer_counts;
+
+/** Fills *out_options with the defaults: HEDGE_NORMALS_AUTOMATIC, texcoords 1, colors 1,
+ *  interleaved 1, HEDGE_WINDING_CCW, flip_x 0. */
+HEDGE_API hedge_status hedge_render_options_default(hedge_render_options* out_options);
+
+/** Makes a render object for the mesh and builds its buffers (a full export).
+ *  \param options NULL for hedge_render_options_default(). */
+HEDGE_API hedge_status hedge_render_create(hedge_mesh* mesh, const hedge_render_options* options,
+                                           hedge_render** out_render);
+/** Destroys a render object (the mesh stays). */
+HEDGE_API hedge_status hedge_render_destroy(hedge_render* render);
+
+/** Brings the buffers in step with the edits since the last sync. Inside a transaction it does
+ *  nothing (an empty result). \param out_result optional (NULL). */
+HEDGE_API hedge_status hedge_render_sync(hedge_render* render, hedge_sync_result* out_result);
+/** Opens a transaction: edits are gathered until the matching commit (transactions nest). */
+HEDGE_API hedge_status hedge_render_begin(hedge_render* render);
+/** Closes the transaction; the outermost commit syncs once. No open transaction:
+ *  HEDGE_ERROR_INVALID_ARGUMENT. \param out_result optional (NULL). */
+HEDGE_API hedge_status hedge_render_commit(hedge_render* render, hedge_sync_result* out_result);
+/** Rebuilds every buffer from scratch (slots restart in face order, so it also compacts).
+ *  \param out_result optional (NULL). */
+HEDGE_API hedge_status hedge_render_rebuild(hedge_render* render, hedge_sync_result* out_result);
+/** The result of the last sync, commit or rebuild. */
+HEDGE_API hedge_status hedge_render_last_result(const hedge_render* render, hedge_sync_result* out_result);
+/** The render-vertex slot ranges the last sync, commit or rebuild rewrote, sorted, merged and
+ *  disjoint (the same ranges apply to every stream of a separate layout). */
+HEDGE_API hedge_status hedge_render_dirty_vertex_ranges(const hedge_render* render, hedge_range* buffer,
+                                                        uint32_t capacity, uint32_t* out_count);
+/** The index-buffer ranges (in entries, not triangles) the last sync, commit or rebuild rewrote,
+ *  sorted, merged and disjoint. */
+HEDGE_API hedge_status hedge_render_dirty_index_ranges(const hedge_render* render, hedge_range* buffer,
+                                                       uint32_t capacity, uint32_t* out_count);
+/** Removes the free slots by moving the last live slots into them; re-upload both buffers
+ *  afterwards. Outside a transaction it first syncs pending edits, as hedge_render_sync() does.
+ *  Each map is optional (NULL): old render-vertex slot -> new slot, and old triangle slot -> new
+ *  triangle slot; freed slots map to HEDGE_INVALID_INDEX. The sizes needed are the vertex_count and
+ *  index_count / 3 of hedge_render_counts() after that sync, and are written to *out_vertex_count
+ *  and *out_triangle_count (each optional, NULL); a map too small gives
+ *  HEDGE_ERROR_BUFFER_TOO_SMALL and nothing is compacted (the sync may have happened). */
+HEDGE_API hedge_status hedge_render_compact(hedge_render* render, uint32_t* vertex_map,
+                                            uint32_t vertex_capacity, uint32_t* out_vertex_count,
+                                            uint32_t* triangle_map, uint32_t triangle_capacity,
+                                            uint32_t* out_triangle_count);
+
+HEDGE_API hedge_status hedge_render_counts(const hedge_render* render, hedge_buffer_counts* out_counts);
+HEDGE_API hedge_status hedge_render_layout(const hedge_render* render, hedge_vertex_layout* out_layout);
+
+/** A pointer to a vertex stream (HEDGE_STREAM_*) and its size in floats (0, with a NULL pointer,
+ *  for an empty stream). The pointer is valid until the next sync, commit, rebuild or compact of
+ *  this render object, or its destruction (or its mesh's). Read-only. */
+HEDGE_API hedge_status hedge_render_vertex_data(const hedge_render* render, int32_t stream,
+                                                const float** out_data, uint64_t* out_count);
+/** Copies a vertex stream into a caller buffer (capacity and *out_count in floats). */
+HEDGE_API hedge_status hedge_render_copy_vertex_data(const hedge_render* render, int32_t stream,
+                                                     float* buffer, uint64_t capacity, uint64_t* out_count);
+/** A pointer to the index buffer (3 entries per triangle slot) and its size in entries; valid as for
+ *  hedge_render_vertex_data(). */
+HEDGE_API hedge_status hedge_render_index_data(const hedge_render* render, const uint32_t** out_data,
+                                               uint64_t* out_count);
+/** Copies the index buffer into a caller buffer (capacity and *out_count in entries). */
+HEDGE_API hedge_status hedge_render_copy_index_data(const hedge_render* render, uint32_t* buffer,
+                                                    uint64_t capacity, uint64_t* out_count);
+/** Render vertex slot -> mesh vertex (HEDGE_INVALID_INDEX for a free slot), vertex_count entries. */
+HEDGE_API hedge_status hedge_render_vertex_source(const hedge_render* render, uint32_t* buffer,
+                                                  uint32_t capacity, uint32_t* out_count);
+/** The render vertex of the corner that the half-edge enters (HEDGE_INVALID_INDEX for a boundary
+ *  half-edge), as of the last sync. */
+HEDGE_API hedge_status hedge_render_corner_vertex(const hedge_render* render, uint32_t halfedge,
+                                                  uint32_t* out_render_vertex);
+/** The triangle slots of a face, as of the last sync: triangles [*out_first, *out_first +
+ *  *out_count) of the index buffer (*out_count 0 if it has none). */
+HEDGE_API hedge_status hedge_render_face_triangles(const hedge_render* render, uint32_t face,
+                                                   uint32_t* out_first, uint32_t* out_count);
+
+/** Import options for engine meshes (hedge::EngineImportOptions). Layout (24 bytes): weld @0,
+ *  policy @4 (int32_t), weld_epsilon @8 (double), winding @16, flip_x @20 (int32_t). */
+typedef struct hedge_engine_import_options {
+  int32_t weld;        /**< HEDGE_WELD_*: positions welded into one topological vertex */
+  int32_t policy;      /**< HEDGE_POLICY_* */
+  double weld_epsilon; /**< relative to the bounding-box diagonal, with HEDGE_WELD_EPSILON */
+  int32_t winding;     /**< HEDGE_WINDING_*: the engine's triangle winding (Unity: CW) */
+  int32_t flip_x;      /**< 1: negate x of positions and normals (Unity's left-handed axes) */
+} hedge_engine_import_options;
+
+/** Fills *out_options with the defaults: HEDGE_WELD_EXACT, HEDGE_POLICY_REPAIR, weld_epsilon 1e-6,
+ *  HEDGE_WINDING_CCW, flip_x 0. */
+HEDGE_API hedge_status hedge_engine_import_options_default(hedge_engine_import_options* out_options);
+
+/** Builds a mesh from an engine's arrays (a Unity Mesh, a glTF primitive): positions welded for the
+ *  topology, normals, texcoords and colours kept per corner, so that a render object with the same
+ *  winding and flip_x reproduces the engine's triangles and attributes.
+ *  \param positions 3 floats per vertex (vertex_count vertices).
+ *  \param indices   3 per triangle (index_count, a multiple of 3).
+ *  \param normals   optional (NULL): 3 floats per vertex.
+ *  \param texcoords optional (NULL): 2 floats per vertex.
+ *  \param colors    optional (NULL): 4 floats (r, g, b, a) per vertex.
+ *  \param options   NULL for hedge_engine_import_options_default().
+ *  \param out_report optional (NULL). */
+HEDGE_API hedge_status hedge_mesh_from_engine_mesh(const float* positions, uint32_t vertex_count,
+                                                   const uint32_t* indices, uint32_t index_count,
+                                                   const float* normals, const float* texcoords,
+                                                   const float* colors,
+                                                   const hedge_engine_import_options* options,
+                                                   hedge_build_report* out_report, hedge_mesh** out_mesh);
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#endif /* HEDGE_C_API_H */

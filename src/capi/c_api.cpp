@@ -1,0 +1,729 @@
+// The C ABI: registry, errors, version, mesh creation, queries, files and validation.
+// Local operations are in operations.cpp, render buffers in render.cpp.
+#include <cstdio>
+#include <cstring>
+#include <mutex>
+#include <shared_mutex>
+#include <type_traits>
+#include <unordered_map>
+
+#include "capi_internal.h"
+#include "hedge/io/io.h"
+
+namespace hedge::capi {
+
+// ---------------------------------------------------------------------------------------------
+// Registry
+// ---------------------------------------------------------------------------------------------
+namespace {
+
+struct Registry {
+  std::shared_mutex mutex;
+  std::unordered_map<std::uintptr_t, std::shared_ptr<MeshObject>> meshes;
+  std::unordered_map<std::uintptr_t, std::shared_ptr<RenderObject>> renders;
+  std::uintptr_t last_id = 0;
+};
+
+// Never destroyed: a binding may release handles from a finalizer while the process exits, after
+// static destructors have run. Objects still alive at exit are reachable from here.
+Registry& registry() {
+  static Registry* r = new Registry;
+  return *r;
+}
+
+// Ids are multiples of 16 from 0x10010 on and never reused, so that NULL, small integers and a
+// destroyed handle name nothing. Called under the exclusive lock.
+std::uintptr_t new_id(Registry& r) {
+  r.last_id += 16;
+  return 0x10000 + r.last_id;
+}
+
+std::uintptr_t id_of(const void* handle) { return reinterpret_cast<std::uintptr_t>(handle); }
+
+[[noreturn]] void bad_handle(const char* kind, const void* handle) {
+  if (handle == nullptr) fail(HEDGE_ERROR_BAD_HANDLE, std::string(kind) + " handle is NULL");
+  char text[32];
+  std::snprintf(text, sizeof text, "%#llx", static_cast<unsigned long long>(id_of(handle)));
+  fail(HEDGE_ERROR_BAD_HANDLE,
+       std::string(kind) + " handle " + text + " is not a live " + kind + " (destroyed, or never created)");
+}
+
+}  // namespace
+
+hedge_mesh* register_mesh(std::shared_ptr<MeshObject> mesh) {
+  Registry& r = registry();
+  std::unique_lock lock(r.mutex);
+  const std::uintptr_t id = new_id(r);
+  r.meshes.emplace(id, std::move(mesh));
+  return reinterpret_cast<hedge_mesh*>(id);
+}
+
+hedge_render* register_render(std::shared_ptr<RenderObject> render, const hedge_mesh* mesh) {
+  Registry& r = registry();
+  std::unique_lock lock(r.mutex);
+  // The mesh may have been destroyed by another thread since the caller looked it up.
+  auto m = r.meshes.find(id_of(mesh));
+  if (m == r.meshes.end() || m->second != render->mesh) bad_handle("mesh", mesh);
+  const std::uintptr_t id = new_id(r);
+  m->second->renders.reserve(m->second->renders.size() + 1);
+  r.renders.emplace(id, std::move(render));
+  m->second->renders.push_back(id);  // cannot throw: reserved
+  return reinterpret_cast<hedge_render*>(id);
+}
+
+std::shared_ptr<MeshObject> find_mesh(const hedge_mesh* handle) {
+  Registry& r = registry();
+  {
+    std::shared_lock lock(r.mutex);
+    auto it = r.meshes.find(id_of(handle));
+    if (it != r.meshes.end()) return it->second;
+  }
+  bad_handle("mesh", handle);
+}
+
+std::shared_ptr<RenderObject> find_render(const hedge_render* handle) {
+  Registry& r = registry();
+  {
+    std::shared_lock lock(r.mutex);
+    auto it = r.renders.find(id_of(handle));
+    if (it != r.renders.end()) return it->second;
+  }
+  bad_handle("render", handle);
+}
+
+std::pair<std::shared_ptr<MeshObject>, std::vector<std::shared_ptr<RenderObject>>> unregister_mesh(
+    const hedge_mesh* handle) {
+  Registry& r = registry();
+  std::pair<std::shared_ptr<MeshObject>, std::vector<std::shared_ptr<RenderObject>>> out;
+  std::unique_lock lock(r.mutex);
+  auto it = r.meshes.find(id_of(handle));
+  if (it == r.meshes.end()) {
+    lock.unlock();
+    bad_handle("mesh", handle);
+  }
+  out.second.reserve(it->second->renders.size());  // may throw: nothing changed yet
+  for (std::uintptr_t id : it->second->renders) {
+    auto rit = r.renders.find(id);
+    if (rit == r.renders.end()) continue;
+    out.second.push_back(std::move(rit->second));
+    r.renders.erase(rit);
+  }
+  it->second->renders.clear();
+  out.first = std::move(it->second);
+  r.meshes.erase(it);
+  return out;
+}
+
+std::shared_ptr<RenderObject> unregister_render(const hedge_render* handle) {
+  Registry& r = registry();
+  std::unique_lock lock(r.mutex);
+  auto it = r.renders.find(id_of(handle));
+  if (it == r.renders.end()) {
+    lock.unlock();
+    bad_handle("render", handle);
+  }
+  std::shared_ptr<RenderObject> out = std::move(it->second);
+  r.renders.erase(it);
+  auto& ids = out->mesh->renders;
+  ids.erase(std::remove(ids.begin(), ids.end(), id_of(handle)), ids.end());
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Errors and checks
+// ---------------------------------------------------------------------------------------------
+namespace {
+thread_local std::string t_error;
+thread_local const char* t_static_error = nullptr;  // used when copying the message ran out of memory
+}  // namespace
+
+void fail(hedge_status status, std::string message) { throw ApiError{status, std::move(message)}; }
+
+void clear_error() noexcept {
+  t_error.clear();
+  t_static_error = nullptr;
+}
+
+void set_error(const char* message) noexcept {
+  try {
+    t_error = message;
+    t_static_error = nullptr;
+  } catch (...) {
+    t_static_error = "out of memory (while recording an error message)";
+  }
+}
+
+Vec3 need_point(float x, float y, float z) {
+  const Vec3 p{x, y, z};
+  if (!is_finite(p)) {
+    char text[96];
+    std::snprintf(text, sizeof text, "point (%g, %g, %g) is not finite", double(x), double(y), double(z));
+    fail(HEDGE_ERROR_INVALID_ARGUMENT, text);
+  }
+  return p;
+}
+
+bool need_bool(std::int32_t value, const char* name) {
+  if (value != 0 && value != 1)
+    fail(HEDGE_ERROR_INVALID_ARGUMENT, std::string(name) + " is " + std::to_string(value) + ", not 0 or 1");
+  return value == 1;
+}
+
+std::uint32_t to_u32(std::size_t n, const char* what) {
+  if (n > 0xFFFFFFFFu)
+    fail(HEDGE_ERROR_INTERNAL, std::string(what) + " is " + std::to_string(n) + ", beyond 32 bits");
+  return static_cast<std::uint32_t>(n);
+}
+
+namespace {
+void check_range(const char* kind, std::uint32_t i, std::size_t slots) {
+  if (i >= slots) {
+    if (i == HEDGE_INVALID_INDEX) fail(HEDGE_ERROR_BAD_HANDLE, std::string(kind) + " is HEDGE_INVALID_INDEX");
+    fail(HEDGE_ERROR_BAD_HANDLE, std::string(kind) + " " + std::to_string(i) +
+                                     " is out of range (the mesh has " + std::to_string(slots) + " " + kind +
+                                     " slots)");
+  }
+}
+[[noreturn]] void deleted(const char* kind, std::uint32_t i) {
+  fail(HEDGE_ERROR_BAD_HANDLE, std::string(kind) + " " + std::to_string(i) + " is deleted");
+}
+}  // namespace
+
+Vertex live_vertex(const SurfaceMesh& m, std::uint32_t v) {
+  check_range("vertex", v, m.vertices_size());
+  if (m.is_deleted(Vertex(v))) deleted("vertex", v);
+  return Vertex(v);
+}
+Halfedge live_halfedge(const SurfaceMesh& m, std::uint32_t h) {
+  check_range("halfedge", h, m.halfedges_size());
+  if (m.is_deleted(Halfedge(h))) deleted("halfedge", h);
+  return Halfedge(h);
+}
+Edge live_edge(const SurfaceMesh& m, std::uint32_t e) {
+  check_range("edge", e, m.edges_size());
+  if (m.is_deleted(Edge(e))) deleted("edge", e);
+  return Edge(e);
+}
+Face live_face(const SurfaceMesh& m, std::uint32_t f) {
+  check_range("face", f, m.faces_size());
+  if (m.is_deleted(Face(f))) deleted("face", f);
+  return Face(f);
+}
+
+void check_capacity_impl(std::uint64_t needed, const void* buffer, std::uint64_t capacity, const char* name) {
+  if (buffer == nullptr && capacity > 0)
+    fail(HEDGE_ERROR_INVALID_ARGUMENT,
+         std::string(name) + " is NULL but its capacity is " + std::to_string(capacity));
+  if (needed > capacity)
+    fail(HEDGE_ERROR_BUFFER_TOO_SMALL, std::string(name) + " holds " + std::to_string(capacity) + ", " +
+                                           std::to_string(needed) + " needed");
+}
+
+void copy_string(const std::string& text, char* buffer, std::uint32_t capacity, std::uint32_t* out_size) {
+  need(out_size, "out_size");
+  *out_size = to_u32(text.size() + 1, "the text size");
+  check_capacity(text.size() + 1, buffer, capacity);
+  std::memcpy(buffer, text.c_str(), text.size() + 1);
+}
+
+void fill_report(const BuildReport& r, hedge_build_report* out) {
+  out->welded_vertices = to_u32(r.welded_vertices, "welded_vertices");
+  out->degenerate_faces = to_u32(r.degenerate_faces, "degenerate_faces");
+  out->repeated_corners = to_u32(r.repeated_corners, "repeated_corners");
+  out->reoriented_faces = to_u32(r.reoriented_faces, "reoriented_faces");
+  out->non_manifold_edges = to_u32(r.non_manifold_edges, "non_manifold_edges");
+  out->non_manifold_vertices = to_u32(r.non_manifold_vertices, "non_manifold_vertices");
+  out->duplicated_vertices = to_u32(r.duplicated_vertices, "duplicated_vertices");
+  out->isolated_vertices = to_u32(r.isolated_vertices, "isolated_vertices");
+  out->repairs = to_u32(r.repairs(), "repairs");
+}
+
+Weld to_weld(std::int32_t weld) {
+  switch (weld) {
+    case HEDGE_WELD_NONE:
+      return Weld::none;
+    case HEDGE_WELD_EXACT:
+      return Weld::exact;
+    case HEDGE_WELD_EPSILON:
+      return Weld::epsilon;
+    default:
+      fail(HEDGE_ERROR_INVALID_ARGUMENT, "weld is " + std::to_string(weld) + ", not a HEDGE_WELD_* value");
+  }
+}
+
+TopologyPolicy to_policy(std::int32_t policy) {
+  switch (policy) {
+    case HEDGE_POLICY_STRICT:
+      return TopologyPolicy::strict;
+    case HEDGE_POLICY_REPAIR:
+      return TopologyPolicy::repair;
+    default:
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "policy is " + std::to_string(policy) + ", not a HEDGE_POLICY_* value");
+  }
+}
+
+Winding to_winding(std::int32_t winding) {
+  switch (winding) {
+    case HEDGE_WINDING_CCW:
+      return Winding::ccw;
+    case HEDGE_WINDING_CW:
+      return Winding::cw;
+    default:
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "winding is " + std::to_string(winding) + ", not a HEDGE_WINDING_* value");
+  }
+}
+
+BuildOptions to_build_options(const hedge_build_options& o) {
+  BuildOptions b;
+  b.policy = to_policy(o.policy);
+  b.weld = to_weld(o.weld);
+  if (!std::isfinite(o.weld_epsilon) || o.weld_epsilon < 0)
+    fail(HEDGE_ERROR_INVALID_ARGUMENT,
+         "weld_epsilon is " + std::to_string(o.weld_epsilon) + ", not a finite number >= 0");
+  b.weld_epsilon = o.weld_epsilon;
+  return b;
+}
+
+}  // namespace hedge::capi
+
+using namespace hedge;
+using namespace hedge::capi;
+
+namespace {
+
+hedge_build_options default_build_options() { return {HEDGE_POLICY_REPAIR, HEDGE_WELD_NONE, 1e-6}; }
+
+//! Slots of element type H, deleted ones included.
+template <typename H>
+std::size_t slot_count(const SurfaceMesh& m) {
+  if constexpr (std::is_same_v<H, Vertex>) return m.vertices_size();
+  else if constexpr (std::is_same_v<H, Halfedge>) return m.halfedges_size();
+  else if constexpr (std::is_same_v<H, Edge>) return m.edges_size();
+  else return m.faces_size();
+}
+
+//! Whether element `index` of type H is deleted; any index in range is accepted.
+template <typename H>
+hedge_status deleted_query(const hedge_mesh* mesh, std::uint32_t index, std::int32_t* out, const char* what) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    check_range(what, index, slot_count<H>(object->mesh));
+    need(out, "out_deleted") = object->mesh.is_deleted(H(index)) ? 1 : 0;
+  });
+}
+
+//! Copies what a circulator about a live element yields, as indices, into a caller buffer. Two passes
+//! (count, then copy) instead of a temporary list: nothing is allocated.
+template <typename H, typename Ring>
+hedge_status ring_query(const hedge_mesh* mesh, std::uint32_t index, std::uint32_t* buffer, std::uint32_t capacity,
+                        std::uint32_t* out_count, Ring&& ring) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const SurfaceMesh& m = object->mesh;
+    const H h = live_element<H>(m, index);
+    need(out_count, "out_count");
+    if constexpr (std::is_same_v<H, Vertex>) {
+      if (m.is_isolated(h)) {
+        *out_count = 0;
+        return;
+      }
+    }
+    const auto range = ring(m, h);
+    *out_count = to_u32(range.count(), "ring size");
+    check_capacity(*out_count, buffer, capacity);
+    for (auto x : range) *buffer++ = x.idx();
+  });
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Errors and version
+// ---------------------------------------------------------------------------------------------
+extern "C" {
+
+const char* hedge_last_error(void) { return t_static_error != nullptr ? t_static_error : t_error.c_str(); }
+
+const char* hedge_status_string(hedge_status code) {
+  switch (code) {
+    case HEDGE_OK:
+      return "HEDGE_OK";
+    case HEDGE_ERROR_INVALID_ARGUMENT:
+      return "HEDGE_ERROR_INVALID_ARGUMENT";
+    case HEDGE_ERROR_BAD_HANDLE:
+      return "HEDGE_ERROR_BAD_HANDLE";
+    case HEDGE_ERROR_REFUSED:
+      return "HEDGE_ERROR_REFUSED";
+    case HEDGE_ERROR_IO:
+      return "HEDGE_ERROR_IO";
+    case HEDGE_ERROR_TOPOLOGY:
+      return "HEDGE_ERROR_TOPOLOGY";
+    case HEDGE_ERROR_OUT_OF_MEMORY:
+      return "HEDGE_ERROR_OUT_OF_MEMORY";
+    case HEDGE_ERROR_BUFFER_TOO_SMALL:
+      return "HEDGE_ERROR_BUFFER_TOO_SMALL";
+    case HEDGE_ERROR_INTERNAL:
+      return "HEDGE_ERROR_INTERNAL";
+    default:
+      return "HEDGE_ERROR_UNKNOWN";
+  }
+}
+
+hedge_status hedge_version(int32_t* out_major, int32_t* out_minor, int32_t* out_patch) {
+  return guard([&] {
+    need(out_major, "out_major");
+    need(out_minor, "out_minor");
+    need(out_patch, "out_patch");
+    *out_major = HEDGE_VERSION_MAJOR;
+    *out_minor = HEDGE_VERSION_MINOR;
+    *out_patch = HEDGE_VERSION_PATCH;
+  });
+}
+
+// ---------------------------------------------------------------------------------------------
+// Creation and destruction
+// ---------------------------------------------------------------------------------------------
+
+hedge_status hedge_build_options_default(hedge_build_options* out_options) {
+  return guard([&] { need(out_options, "out_options") = default_build_options(); });
+}
+
+hedge_status hedge_mesh_create(const float* positions, uint32_t vertex_count, const uint32_t* indices,
+                               uint32_t index_count, const uint32_t* face_sizes, uint32_t face_count,
+                               const hedge_build_options* options, hedge_build_report* out_report,
+                               uint32_t* out_vertex_map, uint32_t* out_face_map, hedge_mesh** out_mesh) {
+  return guard([&] {
+    need(out_mesh, "out_mesh");
+    need_array(positions, std::uint64_t(vertex_count) * 3, "positions");
+    need_array(indices, index_count, "indices");
+    need_array(face_sizes, face_count, "face_sizes");
+    const BuildOptions build_options =
+        to_build_options(options != nullptr ? *options : default_build_options());
+
+    std::size_t input_faces = 0;
+    if (face_sizes == nullptr) {
+      if (index_count % 3 != 0)
+        fail(HEDGE_ERROR_INVALID_ARGUMENT, "index_count " + std::to_string(index_count) +
+                                               " is not a multiple of 3 (face_sizes is NULL: triangles)");
+      input_faces = index_count / 3;
+      if (face_count != 0 && face_count != input_faces)
+        fail(HEDGE_ERROR_INVALID_ARGUMENT, "face_count " + std::to_string(face_count) + " does not match " +
+                                               std::to_string(input_faces) + " triangles");
+    } else {
+      std::uint64_t corners = 0;
+      for (std::uint32_t f = 0; f < face_count; ++f) corners += face_sizes[f];
+      if (corners != index_count)
+        fail(HEDGE_ERROR_INVALID_ARGUMENT, "face_sizes add up to " + std::to_string(corners) +
+                                               " corners, but index_count is " + std::to_string(index_count));
+      input_faces = face_count;
+    }
+
+    std::vector<Vec3> points(vertex_count);
+    for (std::size_t i = 0; i < vertex_count; ++i)
+      points[i] = {positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]};
+    BuildReport report;
+    BuildReport* want =
+        (out_report != nullptr || out_vertex_map != nullptr || out_face_map != nullptr) ? &report : nullptr;
+    auto object = std::make_shared<MeshObject>();
+    if (face_sizes == nullptr) {
+      object->mesh =
+          build_triangles(points, std::span<const std::uint32_t>(indices, index_count), build_options, want);
+    } else {
+      IndexedMesh input;
+      input.positions = std::move(points);
+      input.indices.assign(indices, indices + index_count);
+      input.face_sizes.assign(face_sizes, face_sizes + face_count);
+      object->mesh = build(input, build_options, want);
+    }
+    if (out_report != nullptr) fill_report(report, out_report);
+    if (out_vertex_map != nullptr)
+      for (std::size_t i = 0; i < vertex_count; ++i)
+        out_vertex_map[i] = i < report.vertex_map.size() ? report.vertex_map[i] : HEDGE_INVALID_INDEX;
+    if (out_face_map != nullptr)
+      for (std::size_t i = 0; i < input_faces; ++i)
+        out_face_map[i] = i < report.face_map.size() ? report.face_map[i] : HEDGE_INVALID_INDEX;
+    *out_mesh = register_mesh(std::move(object));
+  });
+}
+
+hedge_status hedge_mesh_destroy(hedge_mesh* mesh) {
+  return guard([&] {
+    auto objects = unregister_mesh(mesh);
+    // Render objects first (they detach from the mesh's change log), then the mesh, unless a call
+    // on another thread still holds them.
+    objects.second.clear();
+    objects.first.reset();
+  });
+}
+
+// ---------------------------------------------------------------------------------------------
+// Counts and positions
+// ---------------------------------------------------------------------------------------------
+
+hedge_status hedge_mesh_counts(const hedge_mesh* mesh, hedge_counts* out_counts) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const SurfaceMesh& m = object->mesh;
+    hedge_counts& c = need(out_counts, "out_counts");
+    c.vertices = to_u32(m.n_vertices(), "vertex count");
+    c.halfedges = to_u32(m.n_halfedges(), "half-edge count");
+    c.edges = to_u32(m.n_edges(), "edge count");
+    c.faces = to_u32(m.n_faces(), "face count");
+    c.vertex_slots = to_u32(m.vertices_size(), "vertex slot count");
+    c.halfedge_slots = to_u32(m.halfedges_size(), "half-edge slot count");
+    c.edge_slots = to_u32(m.edges_size(), "edge slot count");
+    c.face_slots = to_u32(m.faces_size(), "face slot count");
+  });
+}
+
+hedge_status hedge_mesh_get_position(const hedge_mesh* mesh, uint32_t vertex, float* out_xyz) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const Vec3& p = object->mesh.position(live_vertex(object->mesh, vertex));
+    need(out_xyz, "out_xyz");
+    out_xyz[0] = p.x;
+    out_xyz[1] = p.y;
+    out_xyz[2] = p.z;
+  });
+}
+
+hedge_status hedge_mesh_set_position(hedge_mesh* mesh, uint32_t vertex, float x, float y, float z) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const Vertex v = live_vertex(object->mesh, vertex);
+    object->mesh.set_position(v, need_point(x, y, z));
+  });
+}
+
+hedge_status hedge_mesh_copy_positions(const hedge_mesh* mesh, float* buffer, uint64_t capacity,
+                                       uint64_t* out_count) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const SurfaceMesh& m = object->mesh;
+    need(out_count, "out_count");
+    const std::uint64_t needed = 3 * std::uint64_t(m.vertices_size());
+    *out_count = needed;
+    check_capacity(needed, buffer, capacity);
+    for (std::size_t i = 0; i < m.vertices_size(); ++i) {
+      const Vec3& p = m.position(Vertex(static_cast<Index>(i)));
+      buffer[3 * i] = p.x;
+      buffer[3 * i + 1] = p.y;
+      buffer[3 * i + 2] = p.z;
+    }
+  });
+}
+
+// ---------------------------------------------------------------------------------------------
+// Adjacency
+// ---------------------------------------------------------------------------------------------
+
+hedge_status hedge_halfedge_twin(const hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_halfedge) {
+  return element_query<Halfedge>(mesh, halfedge, out_halfedge, "out_halfedge",
+                                 [](const SurfaceMesh&, Halfedge h) { return SurfaceMesh::twin(h).idx(); });
+}
+
+hedge_status hedge_halfedge_next(const hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_halfedge) {
+  return element_query<Halfedge>(mesh, halfedge, out_halfedge, "out_halfedge",
+                                 [](const SurfaceMesh& m, Halfedge h) { return m.next(h).idx(); });
+}
+
+hedge_status hedge_halfedge_prev(const hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_halfedge) {
+  return element_query<Halfedge>(mesh, halfedge, out_halfedge, "out_halfedge",
+                                 [](const SurfaceMesh& m, Halfedge h) { return m.prev(h).idx(); });
+}
+
+hedge_status hedge_halfedge_to_vertex(const hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_vertex) {
+  return element_query<Halfedge>(mesh, halfedge, out_vertex, "out_vertex",
+                                 [](const SurfaceMesh& m, Halfedge h) { return m.to_vertex(h).idx(); });
+}
+
+hedge_status hedge_halfedge_from_vertex(const hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_vertex) {
+  return element_query<Halfedge>(mesh, halfedge, out_vertex, "out_vertex",
+                                 [](const SurfaceMesh& m, Halfedge h) { return m.from_vertex(h).idx(); });
+}
+
+hedge_status hedge_halfedge_face(const hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_face) {
+  return element_query<Halfedge>(mesh, halfedge, out_face, "out_face",
+                                 [](const SurfaceMesh& m, Halfedge h) { return m.face(h).idx(); });
+}
+
+hedge_status hedge_halfedge_edge(const hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_edge) {
+  return element_query<Halfedge>(mesh, halfedge, out_edge, "out_edge",
+                                 [](const SurfaceMesh&, Halfedge h) { return SurfaceMesh::edge(h).idx(); });
+}
+
+hedge_status hedge_vertex_halfedge(const hedge_mesh* mesh, uint32_t vertex, uint32_t* out_halfedge) {
+  return element_query<Vertex>(mesh, vertex, out_halfedge, "out_halfedge",
+                               [](const SurfaceMesh& m, Vertex v) { return m.halfedge(v).idx(); });
+}
+
+hedge_status hedge_face_halfedge(const hedge_mesh* mesh, uint32_t face, uint32_t* out_halfedge) {
+  return element_query<Face>(mesh, face, out_halfedge, "out_halfedge",
+                             [](const SurfaceMesh& m, Face f) { return m.halfedge(f).idx(); });
+}
+
+hedge_status hedge_edge_halfedge(const hedge_mesh* mesh, uint32_t edge, uint32_t i, uint32_t* out_halfedge) {
+  return element_query<Edge>(mesh, edge, out_halfedge, "out_halfedge", [&](const SurfaceMesh&, Edge e) {
+    if (i > 1) fail(HEDGE_ERROR_INVALID_ARGUMENT, "i is " + std::to_string(i) + ", not 0 or 1");
+    return SurfaceMesh::halfedge(e, i).idx();
+  });
+}
+
+hedge_status hedge_vertex_is_boundary(const hedge_mesh* mesh, uint32_t vertex, int32_t* out_boundary) {
+  return element_query<Vertex>(mesh, vertex, out_boundary, "out_boundary",
+                               [](const SurfaceMesh& m, Vertex v) { return m.is_boundary(v) ? 1 : 0; });
+}
+
+hedge_status hedge_halfedge_is_boundary(const hedge_mesh* mesh, uint32_t halfedge, int32_t* out_boundary) {
+  return element_query<Halfedge>(mesh, halfedge, out_boundary, "out_boundary",
+                                 [](const SurfaceMesh& m, Halfedge h) { return m.is_boundary(h) ? 1 : 0; });
+}
+
+hedge_status hedge_edge_is_boundary(const hedge_mesh* mesh, uint32_t edge, int32_t* out_boundary) {
+  return element_query<Edge>(mesh, edge, out_boundary, "out_boundary",
+                             [](const SurfaceMesh& m, Edge e) { return m.is_boundary(e) ? 1 : 0; });
+}
+
+hedge_status hedge_face_is_boundary(const hedge_mesh* mesh, uint32_t face, int32_t* out_boundary) {
+  return element_query<Face>(mesh, face, out_boundary, "out_boundary",
+                             [](const SurfaceMesh& m, Face f) { return m.is_boundary(f) ? 1 : 0; });
+}
+
+hedge_status hedge_vertex_valence(const hedge_mesh* mesh, uint32_t vertex, uint32_t* out_valence) {
+  return element_query<Vertex>(mesh, vertex, out_valence, "out_valence",
+                               [](const SurfaceMesh& m, Vertex v) { return to_u32(m.valence(v), "valence"); });
+}
+
+hedge_status hedge_face_valence(const hedge_mesh* mesh, uint32_t face, uint32_t* out_valence) {
+  return element_query<Face>(mesh, face, out_valence, "out_valence",
+                             [](const SurfaceMesh& m, Face f) { return to_u32(m.valence(f), "valence"); });
+}
+
+hedge_status hedge_mesh_find_halfedge(const hedge_mesh* mesh, uint32_t from, uint32_t to,
+                                      uint32_t* out_halfedge) {
+  return element_query<Vertex>(mesh, from, out_halfedge, "out_halfedge", [&](const SurfaceMesh& m, Vertex a) {
+    return m.find_halfedge(a, live_vertex(m, to)).idx();
+  });
+}
+
+hedge_status hedge_vertex_is_deleted(const hedge_mesh* mesh, uint32_t vertex, int32_t* out_deleted) {
+  return deleted_query<Vertex>(mesh, vertex, out_deleted, "vertex");
+}
+
+hedge_status hedge_halfedge_is_deleted(const hedge_mesh* mesh, uint32_t halfedge, int32_t* out_deleted) {
+  return deleted_query<Halfedge>(mesh, halfedge, out_deleted, "halfedge");
+}
+
+hedge_status hedge_edge_is_deleted(const hedge_mesh* mesh, uint32_t edge, int32_t* out_deleted) {
+  return deleted_query<Edge>(mesh, edge, out_deleted, "edge");
+}
+
+hedge_status hedge_face_is_deleted(const hedge_mesh* mesh, uint32_t face, int32_t* out_deleted) {
+  return deleted_query<Face>(mesh, face, out_deleted, "face");
+}
+
+hedge_status hedge_vertex_halfedges(const hedge_mesh* mesh, uint32_t vertex, uint32_t* buffer,
+                                    uint32_t capacity, uint32_t* out_count) {
+  return ring_query<Vertex>(mesh, vertex, buffer, capacity, out_count,
+                            [](const SurfaceMesh& m, Vertex v) { return m.halfedges(v); });
+}
+
+hedge_status hedge_vertex_vertices(const hedge_mesh* mesh, uint32_t vertex, uint32_t* buffer,
+                                   uint32_t capacity, uint32_t* out_count) {
+  return ring_query<Vertex>(mesh, vertex, buffer, capacity, out_count,
+                            [](const SurfaceMesh& m, Vertex v) { return m.vertices(v); });
+}
+
+hedge_status hedge_vertex_faces(const hedge_mesh* mesh, uint32_t vertex, uint32_t* buffer, uint32_t capacity,
+                                uint32_t* out_count) {
+  return ring_query<Vertex>(mesh, vertex, buffer, capacity, out_count,
+                            [](const SurfaceMesh& m, Vertex v) { return m.faces(v); });
+}
+
+hedge_status hedge_face_vertices(const hedge_mesh* mesh, uint32_t face, uint32_t* buffer, uint32_t capacity,
+                                 uint32_t* out_count) {
+  return ring_query<Face>(mesh, face, buffer, capacity, out_count,
+                          [](const SurfaceMesh& m, Face f) { return m.vertices(f); });
+}
+
+hedge_status hedge_face_halfedges(const hedge_mesh* mesh, uint32_t face, uint32_t* buffer, uint32_t capacity,
+                                  uint32_t* out_count) {
+  return ring_query<Face>(mesh, face, buffer, capacity, out_count,
+                          [](const SurfaceMesh& m, Face f) { return m.halfedges(f); });
+}
+
+// ---------------------------------------------------------------------------------------------
+// Files
+// ---------------------------------------------------------------------------------------------
+
+hedge_status hedge_mesh_read(const char* path, const hedge_build_options* options,
+                             hedge_build_report* out_report, hedge_mesh** out_mesh) {
+  return guard([&] {
+    need(path, "path");
+    need(out_mesh, "out_mesh");
+    BuildReport report;
+    BuildReport* want = out_report != nullptr ? &report : nullptr;
+    auto object = std::make_shared<MeshObject>();
+    if (options != nullptr)
+      object->mesh = io::read_mesh(path, to_build_options(*options), want);
+    else
+      object->mesh = io::read_mesh(path, want);
+    if (out_report != nullptr) fill_report(report, out_report);
+    *out_mesh = register_mesh(std::move(object));
+  });
+}
+
+hedge_status hedge_mesh_write(const hedge_mesh* mesh, const char* path, int32_t binary, int32_t precision) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    need(path, "path");
+    io::WriteOptions options;
+    options.binary = need_bool(binary, "binary");
+    if (precision < 0 || precision > 17)
+      fail(HEDGE_ERROR_INVALID_ARGUMENT, "precision is " + std::to_string(precision) + ", not in 0..17");
+    if (precision > 0) options.precision = precision;
+    io::write_mesh(object->mesh, path, options);
+  });
+}
+
+// ---------------------------------------------------------------------------------------------
+// Validation
+// ---------------------------------------------------------------------------------------------
+
+hedge_status hedge_mesh_validate(hedge_mesh* mesh, uint32_t* out_problem_count) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    need(out_problem_count, "out_problem_count");
+    object->problems = object->mesh.validate();
+    *out_problem_count = to_u32(object->problems.size(), "problem count");
+  });
+}
+
+hedge_status hedge_mesh_validation_problem(const hedge_mesh* mesh, uint32_t index, char* buffer,
+                                           uint32_t capacity, uint32_t* out_size) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    if (index >= object->problems.size())
+      fail(HEDGE_ERROR_INVALID_ARGUMENT, "problem " + std::to_string(index) +
+                                             " does not exist (the last validation found " +
+                                             std::to_string(object->problems.size()) + ")");
+    copy_string(object->problems[index], buffer, capacity, out_size);
+  });
+}
+
+hedge_status hedge_mesh_validation_report(const hedge_mesh* mesh, char* buffer, uint32_t capacity,
+                                          uint32_t* out_size) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    std::string text;
+    for (std::size_t i = 0; i < object->problems.size(); ++i) {
+      if (i > 0) text += '\n';
+      text += object->problems[i];
+    }
+    copy_string(text, buffer, capacity, out_size);
+  });
+}
+
+}  // extern "C"

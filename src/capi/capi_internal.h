@@ -1,0 +1,173 @@
+// Shared machinery of the C ABI: the registry of live objects, the error channel and the checks
+// every entry point makes before touching the library.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <new>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "hedge/c_api.h"
+#include "hedge/core/build.h"
+#include "hedge/core/surface_mesh.h"
+#include "hedge/error.h"
+#include "hedge/render/render_sync.h"
+
+namespace hedge::capi {
+
+//! What a hedge_mesh handle names.
+struct MeshObject {
+  SurfaceMesh mesh;
+  //! Problems found by the last hedge_mesh_validate().
+  std::vector<std::string> problems;
+  //! Ids of the render objects made for this mesh (guarded by the registry's lock).
+  std::vector<std::uintptr_t> renders;
+};
+
+//! What a hedge_render handle names. It shares ownership of its mesh object, so a call that is
+//! running on it keeps the mesh alive even if another thread destroys the mesh meanwhile.
+struct RenderObject {
+  std::shared_ptr<MeshObject> mesh;  // declared first: destroyed after `sync`
+  std::unique_ptr<RenderSync> sync;
+};
+
+//! A failure detected by the C ABI layer itself, with the status it maps to.
+struct ApiError {
+  hedge_status status;
+  std::string message;
+};
+
+[[noreturn]] void fail(hedge_status status, std::string message);
+
+// ---- Registry: handles are ids (never addresses, never reused) mapped to live objects. ----
+hedge_mesh* register_mesh(std::shared_ptr<MeshObject> mesh);
+hedge_render* register_render(std::shared_ptr<RenderObject> render, const hedge_mesh* mesh);
+//! The object a handle names. \throw ApiError (HEDGE_ERROR_BAD_HANDLE) if it names none.
+std::shared_ptr<MeshObject> find_mesh(const hedge_mesh* handle);
+std::shared_ptr<RenderObject> find_render(const hedge_render* handle);
+//! Removes a mesh and its render objects from the registry; returns them (destroyed by the caller,
+//! outside the lock). \throw ApiError if the handle names no mesh.
+std::pair<std::shared_ptr<MeshObject>, std::vector<std::shared_ptr<RenderObject>>> unregister_mesh(
+    const hedge_mesh* handle);
+std::shared_ptr<RenderObject> unregister_render(const hedge_render* handle);
+
+// ---- Error channel. ----
+void clear_error() noexcept;
+void set_error(const char* message) noexcept;
+
+//! Runs `body` (returning void) and converts every exception into a status code and a message.
+template <typename Body>
+hedge_status guard(Body&& body) noexcept {
+  try {
+    clear_error();
+    body();
+    return HEDGE_OK;
+  } catch (const ApiError& e) {
+    set_error(e.message.c_str());
+    return e.status;
+  } catch (const IoError& e) {
+    set_error(e.what());
+    return HEDGE_ERROR_IO;
+  } catch (const TopologyError& e) {
+    set_error(e.what());
+    return HEDGE_ERROR_TOPOLOGY;
+  } catch (const InvalidInputError& e) {
+    set_error(e.what());
+    return HEDGE_ERROR_INVALID_ARGUMENT;
+  } catch (const Error& e) {
+    set_error(e.what());
+    return HEDGE_ERROR_INTERNAL;
+  } catch (const std::bad_alloc&) {
+    set_error("out of memory");
+    return HEDGE_ERROR_OUT_OF_MEMORY;
+  } catch (const std::length_error& e) {
+    set_error(e.what());
+    return HEDGE_ERROR_OUT_OF_MEMORY;
+  } catch (const std::exception& e) {
+    set_error(e.what());
+    return HEDGE_ERROR_INTERNAL;
+  } catch (...) {
+    set_error("unknown internal error");
+    return HEDGE_ERROR_INTERNAL;
+  }
+}
+
+// ---- Argument checks; each throws ApiError. ----
+template <typename T>
+T& need(T* p, const char* name) {
+  if (p == nullptr) fail(HEDGE_ERROR_INVALID_ARGUMENT, std::string(name) + " is NULL");
+  return *p;
+}
+//! An input array: may be NULL only when empty.
+template <typename T>
+void need_array(const T* p, std::uint64_t count, const char* name) {
+  if (p == nullptr && count > 0)
+    fail(HEDGE_ERROR_INVALID_ARGUMENT,
+         std::string(name) + " is NULL but its count is " + std::to_string(count));
+}
+Vec3 need_point(float x, float y, float z);
+bool need_bool(std::int32_t value, const char* name);
+std::uint32_t to_u32(std::size_t n, const char* what);
+
+//! A live element of the mesh. \throw ApiError (HEDGE_ERROR_BAD_HANDLE) if out of range or deleted.
+Vertex live_vertex(const SurfaceMesh& m, std::uint32_t v);
+Halfedge live_halfedge(const SurfaceMesh& m, std::uint32_t h);
+Edge live_edge(const SurfaceMesh& m, std::uint32_t e);
+Face live_face(const SurfaceMesh& m, std::uint32_t f);
+
+//! A live element of type H (see live_vertex and the others).
+template <typename H>
+H live_element(const SurfaceMesh& m, std::uint32_t index) {
+  if constexpr (std::is_same_v<H, Vertex>) return live_vertex(m, index);
+  else if constexpr (std::is_same_v<H, Halfedge>) return live_halfedge(m, index);
+  else if constexpr (std::is_same_v<H, Edge>) return live_edge(m, index);
+  else return live_face(m, index);
+}
+
+//! One query about one live element: checks the handles, then writes fn(mesh, element) to *out.
+template <typename H, typename Out, typename Fn>
+hedge_status element_query(const hedge_mesh* mesh, std::uint32_t index, Out* out, const char* out_name, Fn&& fn) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const H h = live_element<H>(object->mesh, index);
+    need(out, out_name) = fn(object->mesh, h);
+  });
+}
+
+//! Fails with HEDGE_ERROR_BUFFER_TOO_SMALL (or INVALID_ARGUMENT for a NULL buffer with a capacity)
+//! unless `buffer` can hold `needed` entries.
+void check_capacity_impl(std::uint64_t needed, const void* buffer, std::uint64_t capacity, const char* name);
+template <typename T, typename Cap>
+void check_capacity(std::uint64_t needed, const T* buffer, Cap capacity, const char* name = "buffer") {
+  check_capacity_impl(needed, buffer, static_cast<std::uint64_t>(capacity), name);
+}
+//! Copies `data` into a caller buffer (see "Caller buffers" in c_api.h): sets *out_count to the size
+//! needed and fails with HEDGE_ERROR_BUFFER_TOO_SMALL if it exceeds the capacity.
+template <typename T, typename Count, typename Cap>
+void copy_out(std::span<const T> data, T* buffer, Cap capacity, Count* out_count) {
+  need(out_count, "out_count");
+  if (data.size() > static_cast<std::uint64_t>(static_cast<Count>(-1)))
+    fail(HEDGE_ERROR_INTERNAL,
+         "the result has " + std::to_string(data.size()) + " entries, too many to count");
+  *out_count = static_cast<Count>(data.size());
+  check_capacity(data.size(), buffer, capacity);
+  if (!data.empty()) std::copy(data.begin(), data.end(), buffer);
+}
+//! Copies a string with its NUL into a caller buffer; *out_size gets the bytes needed.
+void copy_string(const std::string& text, char* buffer, std::uint32_t capacity, std::uint32_t* out_size);
+
+//! Fills a C build report from the library's.
+void fill_report(const BuildReport& report, hedge_build_report* out);
+BuildOptions to_build_options(const hedge_build_options& options);
+Weld to_weld(std::int32_t weld);
+TopologyPolicy to_policy(std::int32_t policy);
+Winding to_winding(std::int32_t winding);
+
+}  // namespace hedge::capi

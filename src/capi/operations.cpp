@@ -1,0 +1,300 @@
+// The C ABI: local operations (hedge/core/operations.h) and garbage collection.
+// Every edit checks its handles, its out parameters and its predicate before it changes anything.
+#include "hedge/core/operations.h"
+
+#include <unordered_set>
+
+#include "capi_internal.h"
+
+using namespace hedge;
+using namespace hedge::capi;
+
+namespace {
+
+[[noreturn]] void refused(const std::string& what) {
+  fail(HEDGE_ERROR_REFUSED, what + " refused: the operation would break the mesh; nothing was changed");
+}
+
+std::string name(const char* kind, std::uint32_t i) { return std::string(kind) + " " + std::to_string(i); }
+
+//! Length of the boundary loop through h, or 0 for a damaged loop.
+std::size_t loop_length(const SurfaceMesh& m, Halfedge h) {
+  std::size_t n = 0;
+  for ([[maybe_unused]] Halfedge g : m.loop(h))
+    if (++n > m.halfedges_size()) return 0;
+  return n;
+}
+
+}  // namespace
+
+extern "C" {
+
+hedge_status hedge_can_split_edge(const hedge_mesh* mesh, uint32_t edge, int32_t* out_ok) {
+  return element_query<Edge>(mesh, edge, out_ok, "out_ok",
+                      [](const SurfaceMesh& m, Edge x) { return can_split_edge(m, x) ? 1 : 0; });
+}
+
+hedge_status hedge_split_edge(hedge_mesh* mesh, uint32_t edge, float x, float y, float z,
+                              uint32_t* out_vertex) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    SurfaceMesh& m = object->mesh;
+    const Edge e = live_edge(m, edge);
+    const Vec3 p = need_point(x, y, z);
+    need(out_vertex, "out_vertex");
+    if (!can_split_edge(m, e)) refused("split_edge of " + name("edge", edge));
+    const Vertex v = split_edge(m, e, p);
+    if (!v.is_valid()) refused("split_edge of " + name("edge", edge));
+    *out_vertex = v.idx();
+  });
+}
+
+hedge_status hedge_can_collapse(const hedge_mesh* mesh, uint32_t halfedge, int32_t* out_ok) {
+  return element_query<Halfedge>(mesh, halfedge, out_ok, "out_ok",
+                      [](const SurfaceMesh& m, Halfedge x) { return can_collapse(m, x) ? 1 : 0; });
+}
+
+hedge_status hedge_collapse(hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_vertex) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    SurfaceMesh& m = object->mesh;
+    const Halfedge h = live_halfedge(m, halfedge);
+    need(out_vertex, "out_vertex");
+    if (!can_collapse(m, h)) refused("collapse of " + name("halfedge", halfedge));
+    const Vertex v = collapse(m, h);
+    if (!v.is_valid()) refused("collapse of " + name("halfedge", halfedge));
+    *out_vertex = v.idx();
+  });
+}
+
+hedge_status hedge_can_flip(const hedge_mesh* mesh, uint32_t edge, int32_t* out_ok) {
+  return element_query<Edge>(mesh, edge, out_ok, "out_ok",
+                      [](const SurfaceMesh& m, Edge x) { return can_flip(m, x) ? 1 : 0; });
+}
+
+hedge_status hedge_flip(hedge_mesh* mesh, uint32_t edge) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    SurfaceMesh& m = object->mesh;
+    const Edge e = live_edge(m, edge);
+    if (!can_flip(m, e)) refused("flip of " + name("edge", edge));
+    if (!flip(m, e).is_valid()) refused("flip of " + name("edge", edge));
+  });
+}
+
+hedge_status hedge_can_split_face(const hedge_mesh* mesh, uint32_t face, int32_t* out_ok) {
+  return element_query<Face>(mesh, face, out_ok, "out_ok",
+                      [](const SurfaceMesh& m, Face x) { return can_split_face(m, x) ? 1 : 0; });
+}
+
+hedge_status hedge_split_face(hedge_mesh* mesh, uint32_t face, float x, float y, float z,
+                              uint32_t* out_vertex) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    SurfaceMesh& m = object->mesh;
+    const Face f = live_face(m, face);
+    const Vec3 p = need_point(x, y, z);
+    need(out_vertex, "out_vertex");
+    if (!can_split_face(m, f)) refused("split_face of " + name("face", face));
+    const Vertex v = split_face(m, f, p);
+    if (!v.is_valid()) refused("split_face of " + name("face", face));
+    *out_vertex = v.idx();
+  });
+}
+
+hedge_status hedge_can_split_face_diagonal(const hedge_mesh* mesh, uint32_t halfedge0, uint32_t halfedge1,
+                                           int32_t* out_ok) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const Halfedge h0 = live_halfedge(object->mesh, halfedge0);
+    const Halfedge h1 = live_halfedge(object->mesh, halfedge1);
+    need(out_ok, "out_ok") = can_split_face(object->mesh, h0, h1) ? 1 : 0;
+  });
+}
+
+hedge_status hedge_split_face_diagonal(hedge_mesh* mesh, uint32_t halfedge0, uint32_t halfedge1,
+                                       uint32_t* out_halfedge) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    SurfaceMesh& m = object->mesh;
+    const Halfedge h0 = live_halfedge(m, halfedge0);
+    const Halfedge h1 = live_halfedge(m, halfedge1);
+    need(out_halfedge, "out_halfedge");
+    const std::string what =
+        "split_face_diagonal of " + name("halfedge", halfedge0) + " and " + std::to_string(halfedge1);
+    if (!can_split_face(m, h0, h1)) refused(what);
+    const Halfedge h = split_face(m, h0, h1);
+    if (!h.is_valid()) refused(what);
+    *out_halfedge = h.idx();
+  });
+}
+
+hedge_status hedge_split_all_faces(hedge_mesh* mesh, uint32_t* buffer, uint32_t capacity,
+                                   uint32_t* out_count) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    SurfaceMesh& m = object->mesh;
+    need(out_count, "out_count");
+    const std::uint32_t faces = to_u32(m.n_faces(), "face count");
+    if (buffer != nullptr) {
+      *out_count = faces;
+      check_capacity(faces, buffer, capacity);
+    }
+    const std::vector<Vertex> added = split_all_faces(m);
+    if (buffer != nullptr)
+      for (std::size_t i = 0; i < added.size(); ++i) buffer[i] = added[i].idx();
+    *out_count = to_u32(added.size(), "new vertex count");
+  });
+}
+
+hedge_status hedge_can_add_face(const hedge_mesh* mesh, const uint32_t* vertices, uint32_t count,
+                                int32_t* out_ok) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    need_array(vertices, count, "vertices");
+    std::vector<Vertex> corners;
+    corners.reserve(count);
+    for (std::uint32_t i = 0; i < count; ++i) corners.push_back(live_vertex(object->mesh, vertices[i]));
+    need(out_ok, "out_ok") = can_add_face(object->mesh, corners) ? 1 : 0;
+  });
+}
+
+hedge_status hedge_add_face(hedge_mesh* mesh, const uint32_t* vertices, uint32_t count, uint32_t* out_face) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    SurfaceMesh& m = object->mesh;
+    need_array(vertices, count, "vertices");
+    std::vector<Vertex> corners;
+    corners.reserve(count);
+    for (std::uint32_t i = 0; i < count; ++i) corners.push_back(live_vertex(m, vertices[i]));
+    need(out_face, "out_face");
+    std::string what = "add_face of";
+    for (Vertex v : corners) what.append(" ").append(std::to_string(v.idx()));
+    if (!can_add_face(m, corners)) refused(what);
+    const Face f = add_face(m, corners);
+    if (!f.is_valid()) refused(what);
+    *out_face = f.idx();
+  });
+}
+
+hedge_status hedge_can_remove_face(const hedge_mesh* mesh, uint32_t face, int32_t* out_ok) {
+  return element_query<Face>(mesh, face, out_ok, "out_ok",
+                      [](const SurfaceMesh& m, Face x) { return can_remove_face(m, x) ? 1 : 0; });
+}
+
+hedge_status hedge_remove_face(hedge_mesh* mesh, uint32_t face) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    SurfaceMesh& m = object->mesh;
+    const Face f = live_face(m, face);
+    if (!can_remove_face(m, f) || !remove_face(m, f)) refused("remove_face of " + name("face", face));
+  });
+}
+
+hedge_status hedge_can_remove_vertex(const hedge_mesh* mesh, uint32_t vertex, int32_t* out_ok) {
+  return element_query<Vertex>(mesh, vertex, out_ok, "out_ok",
+                      [](const SurfaceMesh& m, Vertex x) { return can_remove_vertex(m, x) ? 1 : 0; });
+}
+
+hedge_status hedge_remove_vertex(hedge_mesh* mesh, uint32_t vertex) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    SurfaceMesh& m = object->mesh;
+    const Vertex v = live_vertex(m, vertex);
+    if (!can_remove_vertex(m, v) || !remove_vertex(m, v))
+      refused("remove_vertex of " + name("vertex", vertex));
+  });
+}
+
+hedge_status hedge_can_fill_hole(const hedge_mesh* mesh, uint32_t halfedge, int32_t* out_ok) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const SurfaceMesh& m = object->mesh;
+    const Halfedge h = live_halfedge(m, halfedge);
+    need(out_ok, "out_ok") = m.is_boundary(h) && loop_length(m, h) >= 3 ? 1 : 0;
+  });
+}
+
+hedge_status hedge_fill_hole(hedge_mesh* mesh, uint32_t halfedge, uint32_t* buffer, uint32_t capacity,
+                             uint32_t* out_count) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    SurfaceMesh& m = object->mesh;
+    const Halfedge h = live_halfedge(m, halfedge);
+    need(out_count, "out_count");
+    const std::string what = "fill_hole of " + name("halfedge", halfedge);
+    if (!m.is_boundary(h)) refused(what + " (not a boundary half-edge)");
+    const std::size_t length = loop_length(m, h);
+    if (length < 3) refused(what + " (a loop of fewer than 3 edges)");
+    if (buffer != nullptr) {
+      *out_count = to_u32(length - 2, "face count");
+      check_capacity(length - 2, buffer, capacity);
+    }
+    const std::vector<Face> faces = fill_hole(m, h);
+    if (faces.empty()) refused(what);
+    if (buffer != nullptr)
+      for (std::size_t i = 0; i < faces.size(); ++i) buffer[i] = faces[i].idx();
+    *out_count = to_u32(faces.size(), "face count");
+  });
+}
+
+hedge_status hedge_detach_faces(hedge_mesh* mesh, const uint32_t* faces, uint32_t count,
+                                uint32_t* out_vertex_origin, uint32_t origin_capacity,
+                                uint32_t* out_origin_count, hedge_mesh** out_mesh) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    SurfaceMesh& m = object->mesh;
+    need_array(faces, count, "faces");
+    need(out_mesh, "out_mesh");
+    if (out_vertex_origin != nullptr) need(out_origin_count, "out_origin_count");
+    std::vector<Face> chosen;
+    chosen.reserve(count);
+    std::unordered_set<Face> seen;
+    std::uint64_t corners = 0;
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const Face f = live_face(m, faces[i]);
+      if (seen.insert(f).second) {
+        chosen.push_back(f);
+        corners += m.valence(f);
+      }
+    }
+    if (out_vertex_origin != nullptr) {
+      *out_origin_count = to_u32(corners, "corner count");
+      check_capacity(corners, out_vertex_origin, origin_capacity, "out_vertex_origin");
+    }
+    auto detached = std::make_shared<MeshObject>();
+    std::vector<Vertex> origin;
+    detached->mesh = detach_faces(m, chosen, &origin);
+    const std::uint32_t n = to_u32(detached->mesh.vertices_size(), "vertex count");
+    if (out_vertex_origin != nullptr)
+      for (std::uint32_t v = 0; v < n; ++v)
+        out_vertex_origin[v] = v < origin.size() ? origin[v].idx() : HEDGE_INVALID_INDEX;
+    if (out_origin_count != nullptr) *out_origin_count = n;
+    *out_mesh = register_mesh(std::move(detached));
+  });
+}
+
+hedge_status hedge_mesh_garbage_collection(hedge_mesh* mesh, uint32_t* vertex_map, uint32_t vertex_capacity,
+                                           uint32_t* halfedge_map, uint32_t halfedge_capacity,
+                                           uint32_t* edge_map, uint32_t edge_capacity, uint32_t* face_map,
+                                           uint32_t face_capacity) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    SurfaceMesh& m = object->mesh;
+    if (vertex_map != nullptr) check_capacity(m.vertices_size(), vertex_map, vertex_capacity, "vertex_map");
+    if (halfedge_map != nullptr)
+      check_capacity(m.halfedges_size(), halfedge_map, halfedge_capacity, "halfedge_map");
+    if (edge_map != nullptr) check_capacity(m.edges_size(), edge_map, edge_capacity, "edge_map");
+    if (face_map != nullptr) check_capacity(m.faces_size(), face_map, face_capacity, "face_map");
+    const GarbageMaps maps = m.garbage_collection();
+    auto put = [](const std::vector<Index>& from, std::uint32_t* to) {
+      if (to != nullptr) std::copy(from.begin(), from.end(), to);
+    };
+    put(maps.vertices, vertex_map);
+    put(maps.halfedges, halfedge_map);
+    put(maps.edges, edge_map);
+    put(maps.faces, face_map);
+  });
+}
+
+}  // extern "C"

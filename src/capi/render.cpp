@@ -1,0 +1,330 @@
+// The C ABI: render buffers (hedge/render/render_sync.h) and engine-mesh import.
+#include "capi_internal.h"
+
+using namespace hedge;
+using namespace hedge::capi;
+
+namespace {
+
+hedge_render_options default_render_options() {
+  return {HEDGE_NORMALS_AUTOMATIC, 1, 1, 1, HEDGE_WINDING_CCW, 0};
+}
+
+RenderOptions to_render_options(const hedge_render_options& o) {
+  RenderOptions r;
+  switch (o.normals) {
+    case HEDGE_NORMALS_NONE:
+      r.normals = NormalSource::none;
+      break;
+    case HEDGE_NORMALS_ATTRIBUTE:
+      r.normals = NormalSource::attribute;
+      break;
+    case HEDGE_NORMALS_COMPUTED:
+      r.normals = NormalSource::computed;
+      break;
+    case HEDGE_NORMALS_AUTOMATIC:
+      r.normals = NormalSource::automatic;
+      break;
+    default:
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "normals is " + std::to_string(o.normals) + ", not a HEDGE_NORMALS_* value");
+  }
+  r.texcoords = need_bool(o.texcoords, "texcoords");
+  r.colors = need_bool(o.colors, "colors");
+  r.interleaved = need_bool(o.interleaved, "interleaved");
+  r.winding = to_winding(o.winding);
+  r.flip_x = need_bool(o.flip_x, "flip_x");
+  return r;
+}
+
+void fill_result(const SyncResult& r, hedge_sync_result* out) {
+  if (out == nullptr) return;
+  out->vertex_bytes = r.vertex_bytes;
+  out->index_bytes = r.index_bytes;
+  out->vertex_range_count = to_u32(r.vertex_ranges.size(), "range count");
+  out->index_range_count = to_u32(r.index_ranges.size(), "range count");
+  out->faces_synced = to_u32(r.faces_synced, "faces_synced");
+  out->vertices_synced = to_u32(r.vertices_synced, "vertices_synced");
+  out->resized = r.resized ? 1 : 0;
+  out->full = r.full ? 1 : 0;
+}
+
+std::span<const float> stream_of(const RenderSync& sync, std::int32_t stream) {
+  switch (stream) {
+    case HEDGE_STREAM_VERTICES:
+      return sync.vertices();
+    case HEDGE_STREAM_NORMALS:
+      return sync.normals();
+    case HEDGE_STREAM_TEXCOORDS:
+      return sync.texcoords();
+    case HEDGE_STREAM_COLORS:
+      return sync.colors();
+    default:
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "stream is " + std::to_string(stream) + ", not a HEDGE_STREAM_* value");
+  }
+}
+
+void copy_ranges(const std::vector<SlotRange>& ranges, hedge_range* buffer, std::uint32_t capacity,
+                 std::uint32_t* out_count) {
+  need(out_count, "out_count");
+  *out_count = to_u32(ranges.size(), "range count");
+  check_capacity(ranges.size(), buffer, capacity);
+  for (std::size_t i = 0; i < ranges.size(); ++i) buffer[i] = {ranges[i].first, ranges[i].count};
+}
+
+}  // namespace
+
+extern "C" {
+
+hedge_status hedge_render_options_default(hedge_render_options* out_options) {
+  return guard([&] { need(out_options, "out_options") = default_render_options(); });
+}
+
+hedge_status hedge_render_create(hedge_mesh* mesh, const hedge_render_options* options,
+                                 hedge_render** out_render) {
+  return guard([&] {
+    auto mesh_object = find_mesh(mesh);
+    need(out_render, "out_render");
+    const RenderOptions render_options =
+        to_render_options(options != nullptr ? *options : default_render_options());
+    auto object = std::make_shared<RenderObject>();
+    object->mesh = mesh_object;
+    object->sync = std::make_unique<RenderSync>(mesh_object->mesh, render_options);
+    *out_render = register_render(std::move(object), mesh);
+  });
+}
+
+hedge_status hedge_render_destroy(hedge_render* render) {
+  return guard([&] { unregister_render(render).reset(); });
+}
+
+hedge_status hedge_render_sync(hedge_render* render, hedge_sync_result* out_result) {
+  return guard([&] {
+    auto object = find_render(render);
+    fill_result(object->sync->sync(), out_result);
+  });
+}
+
+hedge_status hedge_render_begin(hedge_render* render) {
+  return guard([&] { find_render(render)->sync->begin(); });
+}
+
+hedge_status hedge_render_commit(hedge_render* render, hedge_sync_result* out_result) {
+  return guard([&] {
+    auto object = find_render(render);
+    if (!object->sync->in_transaction())
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "commit without an open transaction (no matching hedge_render_begin)");
+    fill_result(object->sync->commit(), out_result);
+  });
+}
+
+hedge_status hedge_render_rebuild(hedge_render* render, hedge_sync_result* out_result) {
+  return guard([&] {
+    auto object = find_render(render);
+    fill_result(object->sync->rebuild(), out_result);
+  });
+}
+
+hedge_status hedge_render_last_result(const hedge_render* render, hedge_sync_result* out_result) {
+  return guard([&] {
+    auto object = find_render(render);
+    need(out_result, "out_result");
+    fill_result(object->sync->last_result(), out_result);
+  });
+}
+
+hedge_status hedge_render_dirty_vertex_ranges(const hedge_render* render, hedge_range* buffer,
+                                              uint32_t capacity, uint32_t* out_count) {
+  return guard([&] {
+    auto object = find_render(render);
+    copy_ranges(object->sync->last_result().vertex_ranges, buffer, capacity, out_count);
+  });
+}
+
+hedge_status hedge_render_dirty_index_ranges(const hedge_render* render, hedge_range* buffer,
+                                             uint32_t capacity, uint32_t* out_count) {
+  return guard([&] {
+    auto object = find_render(render);
+    copy_ranges(object->sync->last_result().index_ranges, buffer, capacity, out_count);
+  });
+}
+
+hedge_status hedge_render_compact(hedge_render* render, uint32_t* vertex_map, uint32_t vertex_capacity,
+                                  uint32_t* out_vertex_count, uint32_t* triangle_map,
+                                  uint32_t triangle_capacity, uint32_t* out_triangle_count) {
+  return guard([&] {
+    auto object = find_render(render);
+    RenderSync& sync = *object->sync;
+    // compact() syncs first; do it here so that the map sizes are known before compacting.
+    if (!sync.in_transaction()) sync.sync();
+    const std::size_t vertices = sync.vertex_count();
+    const std::size_t triangles = sync.index_count() / 3;
+    if (out_vertex_count != nullptr) *out_vertex_count = to_u32(vertices, "vertex count");
+    if (out_triangle_count != nullptr) *out_triangle_count = to_u32(triangles, "triangle count");
+    if (vertex_map != nullptr) check_capacity(vertices, vertex_map, vertex_capacity, "vertex_map");
+    if (triangle_map != nullptr) check_capacity(triangles, triangle_map, triangle_capacity, "triangle_map");
+    const RenderRemap remap = sync.compact();
+    if (vertex_map != nullptr) std::copy(remap.vertices.begin(), remap.vertices.end(), vertex_map);
+    if (triangle_map != nullptr) std::copy(remap.triangles.begin(), remap.triangles.end(), triangle_map);
+  });
+}
+
+hedge_status hedge_render_counts(const hedge_render* render, hedge_buffer_counts* out_counts) {
+  return guard([&] {
+    auto object = find_render(render);
+    const RenderSync& sync = *object->sync;
+    hedge_buffer_counts& c = need(out_counts, "out_counts");
+    c.vertex_count = to_u32(sync.vertex_count(), "vertex count");
+    c.index_count = to_u32(sync.index_count(), "index count");
+    c.live_vertex_count = to_u32(sync.live_vertex_count(), "live vertex count");
+    c.live_triangle_count = to_u32(sync.live_triangle_count(), "live triangle count");
+    c.seam_splits = to_u32(sync.seam_splits(), "seam splits");
+    c.free_triangle_count = to_u32(sync.free_triangle_count(), "free triangle count");
+    c.buffer_bytes = sync.buffer_bytes();
+    c.vertex_capacity = to_u32(sync.vertex_capacity(), "vertex capacity");
+    c.index_capacity = to_u32(sync.index_capacity(), "index capacity");
+  });
+}
+
+hedge_status hedge_render_layout(const hedge_render* render, hedge_vertex_layout* out_layout) {
+  return guard([&] {
+    auto object = find_render(render);
+    const VertexLayout& l = object->sync->layout();
+    hedge_vertex_layout& out = need(out_layout, "out_layout");
+    out.stride = l.stride;
+    out.position = l.position;
+    out.normal = l.normal;
+    out.texcoord = l.texcoord;
+    out.color = l.color;
+    out.interleaved = l.interleaved ? 1 : 0;
+  });
+}
+
+hedge_status hedge_render_vertex_data(const hedge_render* render, int32_t stream, const float** out_data,
+                                      uint64_t* out_count) {
+  return guard([&] {
+    auto object = find_render(render);
+    const std::span<const float> data = stream_of(*object->sync, stream);
+    need(out_data, "out_data");
+    need(out_count, "out_count");
+    *out_data = data.empty() ? nullptr : data.data();
+    *out_count = data.size();
+  });
+}
+
+hedge_status hedge_render_copy_vertex_data(const hedge_render* render, int32_t stream, float* buffer,
+                                           uint64_t capacity, uint64_t* out_count) {
+  return guard([&] {
+    auto object = find_render(render);
+    copy_out(stream_of(*object->sync, stream), buffer, capacity, out_count);
+  });
+}
+
+hedge_status hedge_render_index_data(const hedge_render* render, const uint32_t** out_data,
+                                     uint64_t* out_count) {
+  return guard([&] {
+    auto object = find_render(render);
+    const std::span<const std::uint32_t> data = object->sync->indices();
+    need(out_data, "out_data");
+    need(out_count, "out_count");
+    *out_data = data.empty() ? nullptr : data.data();
+    *out_count = data.size();
+  });
+}
+
+hedge_status hedge_render_copy_index_data(const hedge_render* render, uint32_t* buffer, uint64_t capacity,
+                                          uint64_t* out_count) {
+  return guard([&] {
+    auto object = find_render(render);
+    copy_out(object->sync->indices(), buffer, capacity, out_count);
+  });
+}
+
+hedge_status hedge_render_vertex_source(const hedge_render* render, uint32_t* buffer, uint32_t capacity,
+                                        uint32_t* out_count) {
+  return guard([&] {
+    auto object = find_render(render);
+    const std::span<const Vertex> source = object->sync->render_vertex_source();
+    need(out_count, "out_count") = to_u32(source.size(), "render vertex count");
+    check_capacity(source.size(), buffer, capacity);
+    for (std::size_t i = 0; i < source.size(); ++i) buffer[i] = source[i].idx();
+  });
+}
+
+hedge_status hedge_render_corner_vertex(const hedge_render* render, uint32_t halfedge,
+                                        uint32_t* out_render_vertex) {
+  return guard([&] {
+    auto object = find_render(render);
+    const Halfedge h = live_halfedge(object->mesh->mesh, halfedge);
+    need(out_render_vertex, "out_render_vertex") = object->sync->render_vertex(h);
+  });
+}
+
+hedge_status hedge_render_face_triangles(const hedge_render* render, uint32_t face, uint32_t* out_first,
+                                         uint32_t* out_count) {
+  return guard([&] {
+    auto object = find_render(render);
+    const Face f = live_face(object->mesh->mesh, face);
+    need(out_first, "out_first");
+    need(out_count, "out_count");
+    const SlotRange r = object->sync->triangles(f);
+    *out_first = r.first;
+    *out_count = r.count;
+  });
+}
+
+hedge_status hedge_engine_import_options_default(hedge_engine_import_options* out_options) {
+  return guard([&] {
+    need(out_options, "out_options") = {HEDGE_WELD_EXACT, HEDGE_POLICY_REPAIR, 1e-6, HEDGE_WINDING_CCW, 0};
+  });
+}
+
+hedge_status hedge_mesh_from_engine_mesh(const float* positions, uint32_t vertex_count,
+                                         const uint32_t* indices, uint32_t index_count, const float* normals,
+                                         const float* texcoords, const float* colors,
+                                         const hedge_engine_import_options* options,
+                                         hedge_build_report* out_report, hedge_mesh** out_mesh) {
+  return guard([&] {
+    need(out_mesh, "out_mesh");
+    need_array(positions, std::uint64_t(vertex_count) * 3, "positions");
+    need_array(indices, index_count, "indices");
+    hedge_engine_import_options o{HEDGE_WELD_EXACT, HEDGE_POLICY_REPAIR, 1e-6, HEDGE_WINDING_CCW, 0};
+    if (options != nullptr) o = *options;
+    EngineImportOptions import;
+    import.weld = to_weld(o.weld);
+    import.policy = to_policy(o.policy);
+    if (!std::isfinite(o.weld_epsilon) || o.weld_epsilon < 0)
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "weld_epsilon is " + std::to_string(o.weld_epsilon) + ", not a finite number >= 0");
+    import.weld_epsilon = o.weld_epsilon;
+    import.winding = to_winding(o.winding);
+    import.flip_x = need_bool(o.flip_x, "flip_x");
+
+    const std::size_t n = vertex_count;
+    std::vector<Vec3> p(n), nrm(normals != nullptr ? n : 0);
+    std::vector<Vec2> uv(texcoords != nullptr ? n : 0);
+    std::vector<Color> rgba(colors != nullptr ? n : 0);
+    for (std::size_t i = 0; i < n; ++i) p[i] = {positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]};
+    for (std::size_t i = 0; i < nrm.size(); ++i)
+      nrm[i] = {normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]};
+    for (std::size_t i = 0; i < uv.size(); ++i) uv[i] = {texcoords[2 * i], texcoords[2 * i + 1]};
+    for (std::size_t i = 0; i < rgba.size(); ++i)
+      rgba[i] = {colors[4 * i], colors[4 * i + 1], colors[4 * i + 2], colors[4 * i + 3]};
+    EngineMeshView view;
+    view.positions = p;
+    view.indices = std::span<const std::uint32_t>(indices, index_count);
+    view.normals = nrm;
+    view.texcoords = uv;
+    view.colors = rgba;
+
+    BuildReport report;
+    auto object = std::make_shared<MeshObject>();
+    object->mesh = from_engine_mesh(view, import, out_report != nullptr ? &report : nullptr);
+    if (out_report != nullptr) fill_report(report, out_report);
+    *out_mesh = register_mesh(std::move(object));
+  });
+}
+
+}  // extern "C"
