@@ -7,6 +7,7 @@
 #   bench  the benchmarks
 #   peers  other mesh libraries the benchmarks compare against (large)
 #   fuzz   the libFuzzer targets
+#   csharp Mono's C# compiler and runtime, for the C# binding's tests (bindings/csharp/)
 # Only missing packages are installed; when everything is present nothing is run, so the check is
 # fast on a machine that is already set up. Debian 12 (apt-get) is assumed.
 
@@ -20,6 +21,7 @@ hedge_deps_packages() {
       bench) echo libbenchmark-dev ;;
       peers) echo libopenmesh-dev libcgal-dev libeigen3-dev libmeshoptimizer-dev ;;
       fuzz) echo clang libclang-rt-14-dev ;;
+      csharp) echo mono-mcs mono-runtime ;;
       *)
         echo "deps.sh: unknown dependency group '$group'" >&2
         return 1

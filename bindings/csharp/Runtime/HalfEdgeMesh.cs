@@ -1,0 +1,804 @@
+// HalfEdgeMesh: a native hedge mesh (SurfaceMesh) behind the C ABI.
+//
+// Errors. Every call that the library answers with a status other than OK throws a
+// HedgeException carrying that status and the library's message, with one exception: an edit
+// that its predicate refuses (HEDGE_ERROR_REFUSED) is not an error, as in the C++ library. It
+// returns false, an invalid handle or a count of 0, and leaves the mesh exactly as it was. A
+// disposed mesh, or an element index that is out of range or deleted, is HedgeStatus.BadHandle.
+// Arguments the binding can check itself before calling (a null array that is required, an array
+// whose length does not fit the counts) throw ArgumentException, so that the library never reads
+// or writes past the end of a managed array.
+//
+// Caller arrays. The query methods that return several elements fill an array the caller owns and
+// return the count: pass the same array again and again, and nothing is allocated. Passing null
+// asks for the count only. An array that is too small throws HedgeException(BufferTooSmall) and
+// nothing is written. Queries and edits allocate no managed memory.
+//
+// Threads. Different meshes may be used from different threads at once; one mesh (with its
+// RenderBuffers) must be used by one thread at a time.
+using System;
+using System.Runtime.InteropServices;
+
+namespace Hedge
+{
+    /// <summary>A half-edge mesh: adjacency queries, local edits checked by predicates, building from
+    /// index buffers and engine arrays, files, validation, and engine-ready render buffers.</summary>
+    public sealed class HalfEdgeMesh : IDisposable
+    {
+        const int Refused = (int)HedgeStatus.Refused;
+        const int BufferTooSmall = (int)HedgeStatus.BufferTooSmall;
+        static readonly string[] NoProblems = new string[0];
+
+        readonly MeshHandle handle;
+        readonly IntPtr id;
+        // Render objects the finalizer released, destroyed on this mesh's thread (see RenderHandle).
+        readonly PendingRenders pendingRenders = new PendingRenders();
+        // Scratch for the three-corner AddFace overloads.
+        readonly Vertex[] corners3 = new Vertex[3];
+
+        HalfEdgeMesh(IntPtr id)
+        {
+            this.id = id;
+            handle = new MeshHandle(id);
+        }
+
+        static HalfEdgeMesh Created(int status, IntPtr id)
+        {
+            Status.Check(status);
+            return new HalfEdgeMesh(id);
+        }
+
+        internal IntPtr Id { get { return id; } }
+        internal PendingRenders PendingRenders { get { return pendingRenders; } }
+
+        /// <summary>The SafeHandle that owns the native mesh.</summary>
+        public SafeHandle Handle { get { return handle; } }
+
+        /// <summary>True after <see cref="Dispose"/>; every later call throws HedgeException(BadHandle).</summary>
+        public bool IsDisposed { get { return handle.IsClosed; } }
+
+        /// <summary>Destroys the native mesh and every RenderBuffers made for it.</summary>
+        public void Dispose() { handle.Dispose(); }
+
+        /// <summary>The native library's version.</summary>
+        public static Version LibraryVersion
+        {
+            get
+            {
+                int major, minor, patch;
+                Status.Check(Native.hedge_version(out major, out minor, out patch));
+                return new Version(major, minor, patch);
+            }
+        }
+
+        // =========================================================================================
+        // Building
+        // =========================================================================================
+
+        /// <summary>Builds a mesh from triangles with the default options (repair, no welding).</summary>
+        /// <param name="positions">x, y, z per vertex.</param>
+        /// <param name="triangles">Three vertex indices per triangle, counter-clockwise.</param>
+        public static HalfEdgeMesh FromTriangles(float[] positions, uint[] triangles)
+        {
+            BuildReport report;
+            return Build(positions, triangles, null, BuildOptions.Default, out report, null, null);
+        }
+
+        /// <summary>Builds a mesh from triangles, welding and repairing as the options say.</summary>
+        public static HalfEdgeMesh FromTriangles(float[] positions, uint[] triangles, BuildOptions options,
+                                                 out BuildReport report)
+        {
+            return Build(positions, triangles, null, options, out report, null, null);
+        }
+
+        /// <summary>Builds a mesh from polygons: faceSizes[i] corners per face, taken in order from indices.</summary>
+        public static HalfEdgeMesh FromPolygons(float[] positions, uint[] indices, uint[] faceSizes,
+                                                BuildOptions options, out BuildReport report)
+        {
+            if (faceSizes == null) throw new ArgumentNullException("faceSizes");
+            return Build(positions, indices, faceSizes, options, out report, null, null);
+        }
+
+        /// <summary>Builds a mesh from index buffers (every option of hedge_mesh_create).</summary>
+        /// <param name="positions">x, y, z per vertex (finite).</param>
+        /// <param name="indices">The corners of all faces, face after face.</param>
+        /// <param name="faceSizes">Corners per face, or null for triangles.</param>
+        /// <param name="options">Policy and welding.</param>
+        /// <param name="report">What was welded and repaired.</param>
+        /// <param name="vertexMap">Optional (null), one entry per input vertex: the mesh vertex it
+        /// became (after welding; a split vertex maps to its first copy).</param>
+        /// <param name="faceMap">Optional (null), one entry per input face: the mesh face, or
+        /// <see cref="Face.Invalid"/> if it was dropped.</param>
+        public static HalfEdgeMesh Build(float[] positions, uint[] indices, uint[] faceSizes, BuildOptions options,
+                                         out BuildReport report, Vertex[] vertexMap, Face[] faceMap)
+        {
+            uint vertexCount = VertexCountOf(positions, "positions");
+            if (indices == null) throw new ArgumentNullException("indices");
+            int faceCount = faceSizes != null ? faceSizes.Length : indices.Length / 3;
+            if (vertexMap != null && vertexMap.Length < vertexCount)
+                throw new ArgumentException("holds " + vertexMap.Length + " entries, " + vertexCount + " needed",
+                                            "vertexMap");
+            if (faceMap != null && faceMap.Length < faceCount)
+                throw new ArgumentException("holds " + faceMap.Length + " entries, " + faceCount + " needed", "faceMap");
+            IntPtr mesh;
+            int status = Native.hedge_mesh_create(positions, vertexCount, indices, (uint)indices.Length, faceSizes,
+                                                  faceSizes != null ? (uint)faceSizes.Length : 0u, ref options,
+                                                  out report, vertexMap, faceMap, out mesh);
+            return Created(status, mesh);
+        }
+
+        /// <summary>Builds a mesh from an engine's arrays (a Unity Mesh): positions welded for the topology,
+        /// normals, texcoords and colours kept per corner, so that a <see cref="RenderBuffers"/> with the same
+        /// winding and FlipX gives back the engine's triangles and attribute values, seams included.</summary>
+        /// <param name="positions">x, y, z per engine vertex.</param>
+        /// <param name="triangles">Three engine-vertex indices per triangle.</param>
+        /// <param name="normals">Optional (null): x, y, z per engine vertex.</param>
+        /// <param name="texcoords">Optional (null): u, v per engine vertex.</param>
+        /// <param name="colors">Optional (null): r, g, b, a per engine vertex.</param>
+        /// <param name="options">Welding, policy, winding and axes (see <see cref="EngineImportOptions.Unity"/>).</param>
+        /// <param name="report">What was welded and repaired.</param>
+        public static HalfEdgeMesh FromEngineMesh(float[] positions, uint[] triangles, float[] normals,
+                                                  float[] texcoords, float[] colors, EngineImportOptions options,
+                                                  out BuildReport report)
+        {
+            uint n = CheckEngineArrays(positions, normals, texcoords, colors);
+            if (triangles == null) throw new ArgumentNullException("triangles");
+            IntPtr mesh;
+            int status = Native.hedge_mesh_from_engine_mesh(positions, n, triangles, (uint)triangles.Length, normals,
+                                                            texcoords, colors, ref options, out report, out mesh);
+            return Created(status, mesh);
+        }
+
+        /// <summary>As above, with int indices (the type of Unity's Mesh.triangles).</summary>
+        public static HalfEdgeMesh FromEngineMesh(float[] positions, int[] triangles, float[] normals,
+                                                  float[] texcoords, float[] colors, EngineImportOptions options,
+                                                  out BuildReport report)
+        {
+            uint n = CheckEngineArrays(positions, normals, texcoords, colors);
+            if (triangles == null) throw new ArgumentNullException("triangles");
+            IntPtr mesh;
+            int status = Native.hedge_mesh_from_engine_mesh_int(positions, n, triangles, (uint)triangles.Length,
+                                                                normals, texcoords, colors, ref options, out report,
+                                                                out mesh);
+            return Created(status, mesh);
+        }
+
+        static uint VertexCountOf(float[] positions, string name)
+        {
+            if (positions == null) throw new ArgumentNullException(name);
+            if (positions.Length % 3 != 0)
+                throw new ArgumentException("length " + positions.Length + " is not a multiple of 3 (x, y, z)", name);
+            return (uint)(positions.Length / 3);
+        }
+
+        static uint CheckEngineArrays(float[] positions, float[] normals, float[] texcoords, float[] colors)
+        {
+            uint n = VertexCountOf(positions, "positions");
+            if (normals != null && normals.Length != 3L * n)
+                throw new ArgumentException("length " + normals.Length + ", " + 3L * n + " expected (3 per vertex)",
+                                            "normals");
+            if (texcoords != null && texcoords.Length != 2L * n)
+                throw new ArgumentException("length " + texcoords.Length + ", " + 2L * n + " expected (2 per vertex)",
+                                            "texcoords");
+            if (colors != null && colors.Length != 4L * n)
+                throw new ArgumentException("length " + colors.Length + ", " + 4L * n + " expected (4 per vertex)",
+                                            "colors");
+            return n;
+        }
+
+        // =========================================================================================
+        // Files: OBJ, OFF, PLY, STL, chosen by the extension
+        // =========================================================================================
+
+        /// <summary>Reads a mesh with the format's default options (repair; exact welding for STL).</summary>
+        /// <exception cref="HedgeException">HedgeStatus.Io for an unreadable or malformed file or an
+        /// unknown extension; the message is "path:line: ..." (text) or "path (byte N): ..." (binary).</exception>
+        public static HalfEdgeMesh Read(string path)
+        {
+            BuildReport report;
+            return Read(path, out report);
+        }
+
+        /// <summary>Reads a mesh with the format's default options, and reports the repairs.</summary>
+        public static HalfEdgeMesh Read(string path, out BuildReport report)
+        {
+            IntPtr mesh;
+            int status = Native.hedge_mesh_read_defaults(Status.ToUtf8(path, "path"), IntPtr.Zero, out report,
+                                                         out mesh);
+            return Created(status, mesh);
+        }
+
+        /// <summary>Reads a mesh with the given options.</summary>
+        public static HalfEdgeMesh Read(string path, BuildOptions options, out BuildReport report)
+        {
+            IntPtr mesh;
+            int status = Native.hedge_mesh_read(Status.ToUtf8(path, "path"), ref options, out report, out mesh);
+            return Created(status, mesh);
+        }
+
+        /// <summary>Writes the live faces atomically (a failed write leaves the target as it was).</summary>
+        /// <param name="path">The file; the extension chooses the format.</param>
+        /// <param name="binary">PLY and STL: binary (little endian) or ASCII; ignored for OBJ and OFF.</param>
+        /// <param name="precision">Significant digits of ASCII coordinates, 1 to 17; 0 for the default
+        /// (9, an exact round trip of every float).</param>
+        public void Write(string path, bool binary = false, int precision = 0)
+        {
+            Status.Check(Native.hedge_mesh_write(id, Status.ToUtf8(path, "path"), binary ? 1 : 0, precision));
+        }
+
+        // =========================================================================================
+        // Counts and positions
+        // =========================================================================================
+
+        /// <summary>Live and slot counts of every element kind (one native call).</summary>
+        public MeshCounts Counts
+        {
+            get
+            {
+                MeshCounts counts;
+                Status.Check(Native.hedge_mesh_counts(id, out counts));
+                return counts;
+            }
+        }
+
+        /// <summary>Live vertices.</summary>
+        public int VertexCount { get { return (int)Counts.Vertices; } }
+        /// <summary>Live half-edges.</summary>
+        public int HalfEdgeCount { get { return (int)Counts.HalfEdges; } }
+        /// <summary>Live edges.</summary>
+        public int EdgeCount { get { return (int)Counts.Edges; } }
+        /// <summary>Live faces.</summary>
+        public int FaceCount { get { return (int)Counts.Faces; } }
+
+        public Vec3 GetPosition(Vertex v)
+        {
+            Vec3 p;
+            Status.Check(Native.hedge_mesh_get_position(id, v.Index, out p));
+            return p;
+        }
+
+        /// <summary>Moves a vertex; render buffers see it at their next sync. Coordinates must be finite.</summary>
+        public void SetPosition(Vertex v, float x, float y, float z)
+        {
+            Status.Check(Native.hedge_mesh_set_position(id, v.Index, x, y, z));
+        }
+
+        public void SetPosition(Vertex v, Vec3 p) { SetPosition(v, p.X, p.Y, p.Z); }
+
+        /// <summary>Copies the positions of every vertex slot (deleted ones with stale data), 3 floats a slot.</summary>
+        /// <returns>The floats needed (3 x vertex slots); with a null buffer, only that.</returns>
+        public int CopyPositions(float[] buffer)
+        {
+            ulong count;
+            int status = Native.hedge_mesh_copy_positions(id, buffer, buffer != null ? (ulong)buffer.Length : 0, out count);
+            return Filled(status, buffer == null, count);
+        }
+
+        // The count of a "caller buffer" call, or the exception for its status. A null buffer asks for
+        // the count: BUFFER_TOO_SMALL is then the expected answer.
+        static int Filled(int status, bool sizeQuery, ulong count)
+        {
+            if (status != 0 && !(sizeQuery && status == BufferTooSmall)) throw Status.Failure(status);
+            return (int)count;
+        }
+
+        static uint Capacity(Array buffer) { return buffer != null ? (uint)buffer.Length : 0u; }
+
+        // =========================================================================================
+        // Adjacency (O(1) unless noted)
+        // =========================================================================================
+
+        /// <summary>The opposite half-edge (checked against the mesh: a dead half-edge throws).</summary>
+        public HalfEdge Twin(HalfEdge h)
+        {
+            uint r;
+            Status.Check(Native.hedge_halfedge_twin(id, h.Index, out r));
+            return new HalfEdge(r);
+        }
+
+        /// <summary>The next half-edge in the face or boundary loop.</summary>
+        public HalfEdge Next(HalfEdge h)
+        {
+            uint r;
+            Status.Check(Native.hedge_halfedge_next(id, h.Index, out r));
+            return new HalfEdge(r);
+        }
+
+        /// <summary>The previous half-edge in the face or boundary loop. O(face degree), O(valence) on a boundary.</summary>
+        public HalfEdge Prev(HalfEdge h)
+        {
+            uint r;
+            Status.Check(Native.hedge_halfedge_prev(id, h.Index, out r));
+            return new HalfEdge(r);
+        }
+
+        /// <summary>The vertex the half-edge points to.</summary>
+        public Vertex ToVertex(HalfEdge h)
+        {
+            uint r;
+            Status.Check(Native.hedge_halfedge_to_vertex(id, h.Index, out r));
+            return new Vertex(r);
+        }
+
+        /// <summary>The vertex the half-edge starts at.</summary>
+        public Vertex FromVertex(HalfEdge h)
+        {
+            uint r;
+            Status.Check(Native.hedge_halfedge_from_vertex(id, h.Index, out r));
+            return new Vertex(r);
+        }
+
+        /// <summary>The face of the half-edge; <see cref="Face.Invalid"/> for a boundary half-edge.</summary>
+        public Face GetFace(HalfEdge h)
+        {
+            uint r;
+            Status.Check(Native.hedge_halfedge_face(id, h.Index, out r));
+            return new Face(r);
+        }
+
+        /// <summary>The edge of the half-edge.</summary>
+        public Edge GetEdge(HalfEdge h)
+        {
+            uint r;
+            Status.Check(Native.hedge_halfedge_edge(id, h.Index, out r));
+            return new Edge(r);
+        }
+
+        /// <summary>One outgoing half-edge of the vertex (a boundary one if the vertex is on a boundary);
+        /// <see cref="HalfEdge.Invalid"/> for an isolated vertex.</summary>
+        public HalfEdge GetHalfEdge(Vertex v)
+        {
+            uint r;
+            Status.Check(Native.hedge_vertex_halfedge(id, v.Index, out r));
+            return new HalfEdge(r);
+        }
+
+        /// <summary>The face's half-edge: its corners start at this half-edge's target.</summary>
+        public HalfEdge GetHalfEdge(Face f)
+        {
+            uint r;
+            Status.Check(Native.hedge_face_halfedge(id, f.Index, out r));
+            return new HalfEdge(r);
+        }
+
+        /// <summary>Half-edge i (0 or 1) of the edge.</summary>
+        public HalfEdge GetHalfEdge(Edge e, int i)
+        {
+            uint r;
+            Status.Check(Native.hedge_edge_halfedge(id, e.Index, (uint)i, out r));
+            return new HalfEdge(r);
+        }
+
+        /// <summary>True if the vertex is on a boundary or isolated.</summary>
+        public bool IsBoundary(Vertex v)
+        {
+            int r;
+            Status.Check(Native.hedge_vertex_is_boundary(id, v.Index, out r));
+            return r != 0;
+        }
+
+        /// <summary>True if the half-edge has no face.</summary>
+        public bool IsBoundary(HalfEdge h)
+        {
+            int r;
+            Status.Check(Native.hedge_halfedge_is_boundary(id, h.Index, out r));
+            return r != 0;
+        }
+
+        /// <summary>True if either half-edge of the edge has no face.</summary>
+        public bool IsBoundary(Edge e)
+        {
+            int r;
+            Status.Check(Native.hedge_edge_is_boundary(id, e.Index, out r));
+            return r != 0;
+        }
+
+        /// <summary>True if any edge of the face is on a boundary. O(face degree).</summary>
+        public bool IsBoundary(Face f)
+        {
+            int r;
+            Status.Check(Native.hedge_face_is_boundary(id, f.Index, out r));
+            return r != 0;
+        }
+
+        /// <summary>Number of edges at the vertex. O(valence).</summary>
+        public int Valence(Vertex v)
+        {
+            uint r;
+            Status.Check(Native.hedge_vertex_valence(id, v.Index, out r));
+            return (int)r;
+        }
+
+        /// <summary>Number of corners of the face. O(face degree).</summary>
+        public int Valence(Face f)
+        {
+            uint r;
+            Status.Check(Native.hedge_face_valence(id, f.Index, out r));
+            return (int)r;
+        }
+
+        /// <summary>The half-edge from one vertex to another, or <see cref="HalfEdge.Invalid"/> when no edge
+        /// joins them. O(valence).</summary>
+        public HalfEdge FindHalfEdge(Vertex from, Vertex to)
+        {
+            uint r;
+            Status.Check(Native.hedge_mesh_find_halfedge(id, from.Index, to.Index, out r));
+            return new HalfEdge(r);
+        }
+
+        // Deletion flags: these accept deleted elements (only an index out of range throws).
+        public bool IsDeleted(Vertex v)
+        {
+            int r;
+            Status.Check(Native.hedge_vertex_is_deleted(id, v.Index, out r));
+            return r != 0;
+        }
+
+        public bool IsDeleted(HalfEdge h)
+        {
+            int r;
+            Status.Check(Native.hedge_halfedge_is_deleted(id, h.Index, out r));
+            return r != 0;
+        }
+
+        public bool IsDeleted(Edge e)
+        {
+            int r;
+            Status.Check(Native.hedge_edge_is_deleted(id, e.Index, out r));
+            return r != 0;
+        }
+
+        public bool IsDeleted(Face f)
+        {
+            int r;
+            Status.Check(Native.hedge_face_is_deleted(id, f.Index, out r));
+            return r != 0;
+        }
+
+        // =========================================================================================
+        // Circulators into caller arrays. The one-ring of a vertex is clockwise, starting at
+        // GetHalfEdge(v) (at the boundary gap for a boundary vertex); an isolated vertex has an empty
+        // one-ring. Each returns the count; null asks for the count only.
+        // =========================================================================================
+
+        /// <summary>Outgoing half-edges of the vertex.</summary>
+        public int GetVertexHalfEdges(Vertex v, HalfEdge[] result)
+        {
+            uint count;
+            int status = Native.hedge_vertex_halfedges(id, v.Index, result, Capacity(result), out count);
+            return Filled(status, result == null, count);
+        }
+
+        /// <summary>Neighbour vertices (the targets of the outgoing half-edges, same order).</summary>
+        public int GetVertexNeighbours(Vertex v, Vertex[] result)
+        {
+            uint count;
+            int status = Native.hedge_vertex_vertices(id, v.Index, result, Capacity(result), out count);
+            return Filled(status, result == null, count);
+        }
+
+        /// <summary>Faces around the vertex (boundary gaps skipped).</summary>
+        public int GetVertexFaces(Vertex v, Face[] result)
+        {
+            uint count;
+            int status = Native.hedge_vertex_faces(id, v.Index, result, Capacity(result), out count);
+            return Filled(status, result == null, count);
+        }
+
+        /// <summary>Corners of the face in order (counter-clockwise), starting at the target of GetHalfEdge(f).</summary>
+        public int GetFaceVertices(Face f, Vertex[] result)
+        {
+            uint count;
+            int status = Native.hedge_face_vertices(id, f.Index, result, Capacity(result), out count);
+            return Filled(status, result == null, count);
+        }
+
+        /// <summary>Half-edges of the face in order, starting at GetHalfEdge(f); the i-th enters the i-th
+        /// corner of <see cref="GetFaceVertices"/>.</summary>
+        public int GetFaceHalfEdges(Face f, HalfEdge[] result)
+        {
+            uint count;
+            int status = Native.hedge_face_halfedges(id, f.Index, result, Capacity(result), out count);
+            return Filled(status, result == null, count);
+        }
+
+        // =========================================================================================
+        // Predicates. True if the edit of the same name would be carried out.
+        // =========================================================================================
+
+        static bool Ok(int status, int ok)
+        {
+            Status.Check(status);
+            return ok != 0;
+        }
+
+        public bool CanSplitEdge(Edge e)
+        {
+            int ok;
+            return Ok(Native.hedge_can_split_edge(id, e.Index, out ok), ok);
+        }
+
+        /// <summary>True if collapsing h keeps the mesh a valid manifold (link condition, no valence
+        /// below 3 left, no tetrahedron collapsed, ...). O(valence).</summary>
+        public bool CanCollapse(HalfEdge h)
+        {
+            int ok;
+            return Ok(Native.hedge_can_collapse(id, h.Index, out ok), ok);
+        }
+
+        /// <summary>True if the edge is interior between two triangles and can be turned. O(valence).</summary>
+        public bool CanFlip(Edge e)
+        {
+            int ok;
+            return Ok(Native.hedge_can_flip(id, e.Index, out ok), ok);
+        }
+
+        public bool CanFlip(HalfEdge h) { return CanFlip(h.Edge); }
+
+        public bool CanSplitFace(Face f)
+        {
+            int ok;
+            return Ok(Native.hedge_can_split_face(id, f.Index, out ok), ok);
+        }
+
+        /// <summary>True if the face of h0 and h1 can be cut from the target of h0 to the target of h1.</summary>
+        public bool CanSplitFace(HalfEdge h0, HalfEdge h1)
+        {
+            int ok;
+            return Ok(Native.hedge_can_split_face_diagonal(id, h0.Index, h1.Index, out ok), ok);
+        }
+
+        /// <summary>True if a face with the first count corners (counter-clockwise) can be added while every
+        /// vertex and edge stays manifold.</summary>
+        public bool CanAddFace(Vertex[] corners, int count)
+        {
+            CheckSpan(corners, count, "corners");
+            int ok;
+            return Ok(Native.hedge_can_add_face(id, corners, (uint)count, out ok), ok);
+        }
+
+        public bool CanAddFace(Vertex[] corners)
+        {
+            if (corners == null) throw new ArgumentNullException("corners");
+            return CanAddFace(corners, corners.Length);
+        }
+
+        public bool CanAddFace(Vertex a, Vertex b, Vertex c)
+        {
+            corners3[0] = a;
+            corners3[1] = b;
+            corners3[2] = c;
+            return CanAddFace(corners3, 3);
+        }
+
+        public bool CanRemoveFace(Face f)
+        {
+            int ok;
+            return Ok(Native.hedge_can_remove_face(id, f.Index, out ok), ok);
+        }
+
+        public bool CanRemoveVertex(Vertex v)
+        {
+            int ok;
+            return Ok(Native.hedge_can_remove_vertex(id, v.Index, out ok), ok);
+        }
+
+        /// <summary>True if h is a boundary half-edge whose loop has at least 3 edges.</summary>
+        public bool CanFillHole(HalfEdge h)
+        {
+            int ok;
+            return Ok(Native.hedge_can_fill_hole(id, h.Index, out ok), ok);
+        }
+
+        static void CheckSpan(Array array, int count, string name)
+        {
+            if (array == null) throw new ArgumentNullException(name);
+            if (count < 0 || count > array.Length)
+                throw new ArgumentOutOfRangeException("count", count, name + " holds " + array.Length + " entries");
+        }
+
+        // =========================================================================================
+        // Edits. A refused edit returns false / an invalid handle / 0 and changes nothing.
+        // Render buffers of the mesh see every edit at their next sync.
+        // =========================================================================================
+
+        // True if the status says "refused"; throws for any other failure.
+        static bool WasRefused(int status)
+        {
+            if (status == Refused) return true;
+            Status.Check(status);
+            return false;
+        }
+
+        /// <summary>Inserts a vertex at point p on the edge (the original's SplitHalfEdge, by edge).
+        /// Triangles on either side are split in two; half-edge 2 x e then runs from the edge's first vertex
+        /// to the new vertex.</summary>
+        /// <returns>The new vertex, or <see cref="Vertex.Invalid"/> if refused.</returns>
+        public Vertex SplitEdge(Edge e, Vec3 p)
+        {
+            uint v;
+            return WasRefused(Native.hedge_split_edge(id, e.Index, p.X, p.Y, p.Z, out v)) ? Vertex.Invalid : new Vertex(v);
+        }
+
+        /// <summary>Inserts a vertex at point p on the edge of h (the original's SplitHalfEdge).</summary>
+        /// <returns>The new vertex, or <see cref="Vertex.Invalid"/> if refused.</returns>
+        public Vertex SplitHalfEdge(HalfEdge h, Vec3 p) { return SplitEdge(h.Edge, p); }
+
+        public Vertex SplitHalfEdge(HalfEdge h, float x, float y, float z) { return SplitEdge(h.Edge, new Vec3(x, y, z)); }
+
+        /// <summary>Merges the from-vertex of h into its to-vertex (the original's EdgeCollapse); the to-vertex
+        /// survives and keeps its position.</summary>
+        /// <returns>The surviving vertex, or <see cref="Vertex.Invalid"/> if <see cref="CanCollapse"/> refuses
+        /// (the mesh is then unchanged).</returns>
+        public Vertex EdgeCollapse(HalfEdge h)
+        {
+            uint v;
+            return WasRefused(Native.hedge_collapse(id, h.Index, out v)) ? Vertex.Invalid : new Vertex(v);
+        }
+
+        /// <summary>Turns the edge to join the opposite corners of its two triangles; the edge keeps its index.</summary>
+        /// <returns>False if <see cref="CanFlip(Edge)"/> refuses.</returns>
+        public bool FlipEdge(Edge e) { return !WasRefused(Native.hedge_flip(id, e.Index)); }
+
+        public bool FlipEdge(HalfEdge h) { return FlipEdge(h.Edge); }
+
+        /// <summary>Inserts a vertex at p into the face and joins it to every corner (an n-gon becomes n
+        /// triangles).</summary>
+        /// <returns>The new vertex, or <see cref="Vertex.Invalid"/> if refused.</returns>
+        public Vertex SplitFace(Face f, Vec3 p)
+        {
+            uint v;
+            return WasRefused(Native.hedge_split_face(id, f.Index, p.X, p.Y, p.Z, out v)) ? Vertex.Invalid : new Vertex(v);
+        }
+
+        public Vertex SplitFace(Face f, float x, float y, float z) { return SplitFace(f, new Vec3(x, y, z)); }
+
+        /// <summary>Cuts the face of h0 and h1 along a new edge from the target of h0 to the target of h1.</summary>
+        /// <returns>The new half-edge from the target of h0 to the target of h1, or <see cref="HalfEdge.Invalid"/>
+        /// if refused.</returns>
+        public HalfEdge SplitFace(HalfEdge h0, HalfEdge h1)
+        {
+            uint h;
+            return WasRefused(Native.hedge_split_face_diagonal(id, h0.Index, h1.Index, out h))
+                       ? HalfEdge.Invalid
+                       : new HalfEdge(h);
+        }
+
+        /// <summary>Splits every live face at its centroid. Never refused.</summary>
+        /// <param name="newVertices">Optional (null): receives the new vertices, one per face, in face order; it
+        /// must hold at least <see cref="FaceCount"/> entries.</param>
+        /// <returns>The number of new vertices.</returns>
+        public int SplitAllFaces(Vertex[] newVertices = null)
+        {
+            uint count;
+            Status.Check(Native.hedge_split_all_faces(id, newVertices, Capacity(newVertices), out count));
+            return (int)count;
+        }
+
+        /// <summary>Adds a face with the first count corners (counter-clockwise).</summary>
+        /// <returns>The new face, or <see cref="Face.Invalid"/> if <see cref="CanAddFace(Vertex[], int)"/> refuses.</returns>
+        public Face AddFace(Vertex[] corners, int count)
+        {
+            CheckSpan(corners, count, "corners");
+            uint f;
+            return WasRefused(Native.hedge_add_face(id, corners, (uint)count, out f)) ? Face.Invalid : new Face(f);
+        }
+
+        public Face AddFace(Vertex[] corners)
+        {
+            if (corners == null) throw new ArgumentNullException("corners");
+            return AddFace(corners, corners.Length);
+        }
+
+        public Face AddFace(Vertex a, Vertex b, Vertex c)
+        {
+            corners3[0] = a;
+            corners3[1] = b;
+            corners3[2] = c;
+            return AddFace(corners3, 3);
+        }
+
+        /// <summary>Removes the face; edges and vertices it leaves unused go too.</summary>
+        /// <returns>False if <see cref="CanRemoveFace"/> refuses.</returns>
+        public bool RemoveFace(Face f) { return !WasRefused(Native.hedge_remove_face(id, f.Index)); }
+
+        /// <summary>Removes the vertex, its faces and whatever they leave unused.</summary>
+        /// <returns>False if <see cref="CanRemoveVertex"/> refuses.</returns>
+        public bool RemoveVertex(Vertex v) { return !WasRefused(Native.hedge_remove_vertex(id, v.Index)); }
+
+        /// <summary>Fills the boundary loop of h with triangles (shortest diagonals first).</summary>
+        /// <param name="h">A boundary half-edge.</param>
+        /// <param name="newFaces">Optional (null): receives the new faces; it must hold at least the loop length
+        /// - 2 entries.</param>
+        /// <returns>The number of new faces; 0 if <see cref="CanFillHole"/> refuses.</returns>
+        public int FillHole(HalfEdge h, Face[] newFaces = null)
+        {
+            uint count;
+            return WasRefused(Native.hedge_fill_hole(id, h.Index, newFaces, Capacity(newFaces), out count)) ? 0 : (int)count;
+        }
+
+        /// <summary>Moves the faces out of this mesh into a new mesh, with all their properties. Vertices the
+        /// removal leaves pinched are split so both meshes stay manifold; repeated faces are ignored.</summary>
+        /// <param name="faces">Live faces; the first count are used.</param>
+        /// <param name="count">How many of faces.</param>
+        /// <param name="vertexOrigin">Optional (null): receives new-mesh vertex -> vertex of this mesh. It must
+        /// hold at least the total number of corners of the faces.</param>
+        public HalfEdgeMesh DetachFaces(Face[] faces, int count, Vertex[] vertexOrigin = null)
+        {
+            CheckSpan(faces, count, "faces");
+            uint originCount;
+            IntPtr mesh;
+            int status = Native.hedge_detach_faces(id, faces, (uint)count, vertexOrigin, Capacity(vertexOrigin),
+                                                   out originCount, out mesh);
+            return Created(status, mesh);
+        }
+
+        public HalfEdgeMesh DetachFaces(Face[] faces)
+        {
+            if (faces == null) throw new ArgumentNullException("faces");
+            return DetachFaces(faces, faces.Length);
+        }
+
+        /// <summary>Removes deleted elements and compacts storage; element indices change. Each map is optional
+        /// (null) and receives old index -> new element (invalid for a removed one); it must hold at least the
+        /// slot count of its kind before the call (<see cref="Counts"/>). Render buffers rebuild at their next
+        /// sync.</summary>
+        public void GarbageCollection(Vertex[] vertexMap = null, HalfEdge[] halfEdgeMap = null, Edge[] edgeMap = null,
+                                      Face[] faceMap = null)
+        {
+            pendingRenders.Drain();
+            Status.Check(Native.hedge_mesh_garbage_collection(id, vertexMap, Capacity(vertexMap), halfEdgeMap,
+                                                              Capacity(halfEdgeMap), edgeMap, Capacity(edgeMap),
+                                                              faceMap, Capacity(faceMap)));
+        }
+
+        // =========================================================================================
+        // Validation
+        // =========================================================================================
+
+        /// <summary>Checks every invariant of the mesh. O(#elements).</summary>
+        /// <returns>One line per broken invariant; empty when the mesh is valid.</returns>
+        public string[] Validate()
+        {
+            uint count;
+            Status.Check(Native.hedge_mesh_validate(id, out count));
+            if (count == 0) return NoProblems;
+            var problems = new string[count];
+            for (uint i = 0; i < count; ++i)
+            {
+                uint size;
+                int status = Native.hedge_mesh_validation_problem(id, i, null, 0, out size);
+                if (status != BufferTooSmall) Status.Check(status);
+                var text = new byte[size];
+                Status.Check(Native.hedge_mesh_validation_problem(id, i, text, size, out size));
+                problems[i] = Status.FromUtf8(text);
+            }
+            GC.KeepAlive(this);
+            return problems;
+        }
+
+        // =========================================================================================
+        // Render buffers
+        // =========================================================================================
+
+        /// <summary>Makes engine-ready vertex and index buffers that follow this mesh's edits (the
+        /// original's GenerateUnityMesh, made incremental). Disposing the mesh disposes them too.</summary>
+        public RenderBuffers CreateRenderBuffers(RenderOptions options)
+        {
+            pendingRenders.Drain();
+            return new RenderBuffers(this, options);
+        }
+
+        /// <summary>Render buffers with the default options (interleaved, counter-clockwise).</summary>
+        public RenderBuffers CreateRenderBuffers() { return CreateRenderBuffers(RenderOptions.Default); }
+
+        /// <summary>Render buffers in Unity's conventions (<see cref="RenderOptions.Unity"/>): the replacement of
+        /// the original's GenerateUnityMesh. Sync them after edits and upload the dirty ranges.</summary>
+        public RenderBuffers GenerateUnityMesh() { return CreateRenderBuffers(RenderOptions.Unity); }
+
+        public override string ToString()
+        {
+            return IsDisposed ? "HalfEdgeMesh (disposed)" : "HalfEdgeMesh: " + Counts;
+        }
+    }
+}

@@ -1,0 +1,127 @@
+// Element handles: one uint index each, blittable, so arrays of them go to the C ABI as uint*.
+//
+// A handle is only an index; the mesh it belongs to is not part of it. Index InvalidIndex
+// (0xFFFFFFFF) means "none": the face of a boundary half-edge, a refused edit's result.
+using System;
+using System.Runtime.InteropServices;
+
+namespace Hedge
+{
+    /// <summary>A vertex of a <see cref="HalfEdgeMesh"/>.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public readonly struct Vertex : IEquatable<Vertex>
+    {
+        /// <summary>The "none" index.</summary>
+        public const uint InvalidIndex = 0xFFFFFFFFu;
+
+        /// <summary>The vertex index (a slot: 0 .. vertex slot count - 1).</summary>
+        public readonly uint Index;
+
+        public Vertex(uint index) { Index = index; }
+
+        /// <summary>The handle that names no vertex.</summary>
+        public static Vertex Invalid { get { return new Vertex(InvalidIndex); } }
+        public bool IsValid { get { return Index != InvalidIndex; } }
+
+        public bool Equals(Vertex other) { return Index == other.Index; }
+        public override bool Equals(object obj) { return obj is Vertex && Equals((Vertex)obj); }
+        public override int GetHashCode() { return (int)Index; }
+        public static bool operator ==(Vertex a, Vertex b) { return a.Index == b.Index; }
+        public static bool operator !=(Vertex a, Vertex b) { return a.Index != b.Index; }
+        public override string ToString() { return IsValid ? "v" + Index : "v(invalid)"; }
+    }
+
+    /// <summary>A half-edge. Half-edges come in pairs: half-edge h belongs to edge h / 2, and its twin
+    /// is h ^ 1; <see cref="Twin"/> and <see cref="Edge"/> use that arithmetic without a mesh.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public readonly struct HalfEdge : IEquatable<HalfEdge>
+    {
+        public readonly uint Index;
+
+        public HalfEdge(uint index) { Index = index; }
+
+        public static HalfEdge Invalid { get { return new HalfEdge(Vertex.InvalidIndex); } }
+        public bool IsValid { get { return Index != Vertex.InvalidIndex; } }
+
+        /// <summary>The opposite half-edge of the same edge (index arithmetic, not checked against a
+        /// mesh; <see cref="HalfEdgeMesh.Twin"/> checks). Invalid stays invalid.</summary>
+        public HalfEdge Twin { get { return IsValid ? new HalfEdge(Index ^ 1u) : Invalid; } }
+        /// <summary>The edge of this half-edge (index arithmetic). Invalid stays invalid.</summary>
+        public Edge Edge { get { return IsValid ? new Edge(Index >> 1) : Hedge.Edge.Invalid; } }
+
+        public bool Equals(HalfEdge other) { return Index == other.Index; }
+        public override bool Equals(object obj) { return obj is HalfEdge && Equals((HalfEdge)obj); }
+        public override int GetHashCode() { return (int)Index; }
+        public static bool operator ==(HalfEdge a, HalfEdge b) { return a.Index == b.Index; }
+        public static bool operator !=(HalfEdge a, HalfEdge b) { return a.Index != b.Index; }
+        public override string ToString() { return IsValid ? "h" + Index : "h(invalid)"; }
+    }
+
+    /// <summary>An edge: the pair of half-edges 2 x Index and 2 x Index + 1.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public readonly struct Edge : IEquatable<Edge>
+    {
+        public readonly uint Index;
+
+        public Edge(uint index) { Index = index; }
+
+        public static Edge Invalid { get { return new Edge(Vertex.InvalidIndex); } }
+        public bool IsValid { get { return Index != Vertex.InvalidIndex; } }
+
+        /// <summary>Half-edge i (0 or 1) of the edge (index arithmetic, not checked against a mesh).</summary>
+        public HalfEdge GetHalfEdge(int i)
+        {
+            if (i != 0 && i != 1) throw new ArgumentOutOfRangeException("i", i, "a half-edge of an edge is 0 or 1");
+            return IsValid ? new HalfEdge(Index * 2u + (uint)i) : HalfEdge.Invalid;
+        }
+
+        public bool Equals(Edge other) { return Index == other.Index; }
+        public override bool Equals(object obj) { return obj is Edge && Equals((Edge)obj); }
+        public override int GetHashCode() { return (int)Index; }
+        public static bool operator ==(Edge a, Edge b) { return a.Index == b.Index; }
+        public static bool operator !=(Edge a, Edge b) { return a.Index != b.Index; }
+        public override string ToString() { return IsValid ? "e" + Index : "e(invalid)"; }
+    }
+
+    /// <summary>A face (a polygon of three or more corners).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public readonly struct Face : IEquatable<Face>
+    {
+        public readonly uint Index;
+
+        public Face(uint index) { Index = index; }
+
+        public static Face Invalid { get { return new Face(Vertex.InvalidIndex); } }
+        public bool IsValid { get { return Index != Vertex.InvalidIndex; } }
+
+        public bool Equals(Face other) { return Index == other.Index; }
+        public override bool Equals(object obj) { return obj is Face && Equals((Face)obj); }
+        public override int GetHashCode() { return (int)Index; }
+        public static bool operator ==(Face a, Face b) { return a.Index == b.Index; }
+        public static bool operator !=(Face a, Face b) { return a.Index != b.Index; }
+        public override string ToString() { return IsValid ? "f" + Index : "f(invalid)"; }
+    }
+
+    /// <summary>A point or direction of three floats (x, y, z), laid out as the C ABI's float[3].</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Vec3 : IEquatable<Vec3>
+    {
+        public float X;
+        public float Y;
+        public float Z;
+
+        public Vec3(float x, float y, float z) { X = x; Y = y; Z = z; }
+
+        public bool Equals(Vec3 other) { return X == other.X && Y == other.Y && Z == other.Z; }
+        public override bool Equals(object obj) { return obj is Vec3 && Equals((Vec3)obj); }
+        public override int GetHashCode() { return X.GetHashCode() ^ (Y.GetHashCode() * 397) ^ (Z.GetHashCode() * 7919); }
+        public static bool operator ==(Vec3 a, Vec3 b) { return a.Equals(b); }
+        public static bool operator !=(Vec3 a, Vec3 b) { return !a.Equals(b); }
+        public override string ToString()
+        {
+            return "(" + X.ToString("R", System.Globalization.CultureInfo.InvariantCulture) + ", " +
+                   Y.ToString("R", System.Globalization.CultureInfo.InvariantCulture) + ", " +
+                   Z.ToString("R", System.Globalization.CultureInfo.InvariantCulture) + ")";
+        }
+    }
+}

@@ -1,0 +1,253 @@
+// P/Invoke declarations of the C ABI (include/hedge/c_api.h), one per C function.
+//
+// Marshalling is blittable only: handles are IntPtr, element indices uint (or the one-uint handle
+// structs), booleans int, buffers float[] / uint[] / int[] / arrays of sequential structs, paths a
+// NUL-terminated UTF-8 byte[]. Nothing is converted or copied by the marshaller, so a call costs
+// no managed allocation.
+using System;
+using System.Runtime.InteropServices;
+
+namespace Hedge
+{
+    internal static class Native
+    {
+        // "hedge_c" is resolved to libhedge_c.so (Linux), hedge_c.dll (Windows) and
+        // libhedge_c.dylib (macOS) by Mono, .NET and Unity.
+        internal const string Library = "hedge_c";
+
+        // ---- Status, errors, version ----
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern IntPtr hedge_last_error();
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern IntPtr hedge_status_string(int code);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_version(out int major, out int minor, out int patch);
+
+        // ---- Creation and destruction ----
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_build_options_default(out BuildOptions options);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_create(float[] positions, uint vertexCount, uint[] indices,
+            uint indexCount, uint[] faceSizes, uint faceCount, ref BuildOptions options, out BuildReport report,
+            [Out] Vertex[] vertexMap, [Out] Face[] faceMap, out IntPtr mesh);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_destroy(IntPtr mesh);
+
+        // ---- Counts and positions ----
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_counts(IntPtr mesh, out MeshCounts counts);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_get_position(IntPtr mesh, uint vertex, out Vec3 xyz);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_set_position(IntPtr mesh, uint vertex, float x, float y, float z);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_copy_positions(IntPtr mesh, [Out] float[] buffer, ulong capacity,
+            out ulong count);
+
+        // ---- Adjacency ----
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_halfedge_twin(IntPtr mesh, uint halfedge, out uint result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_halfedge_next(IntPtr mesh, uint halfedge, out uint result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_halfedge_prev(IntPtr mesh, uint halfedge, out uint result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_halfedge_to_vertex(IntPtr mesh, uint halfedge, out uint result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_halfedge_from_vertex(IntPtr mesh, uint halfedge, out uint result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_halfedge_face(IntPtr mesh, uint halfedge, out uint result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_halfedge_edge(IntPtr mesh, uint halfedge, out uint result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_vertex_halfedge(IntPtr mesh, uint vertex, out uint result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_face_halfedge(IntPtr mesh, uint face, out uint result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_edge_halfedge(IntPtr mesh, uint edge, uint i, out uint result);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_vertex_is_boundary(IntPtr mesh, uint vertex, out int result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_halfedge_is_boundary(IntPtr mesh, uint halfedge, out int result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_edge_is_boundary(IntPtr mesh, uint edge, out int result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_face_is_boundary(IntPtr mesh, uint face, out int result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_vertex_valence(IntPtr mesh, uint vertex, out uint result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_face_valence(IntPtr mesh, uint face, out uint result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_find_halfedge(IntPtr mesh, uint from, uint to, out uint result);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_vertex_is_deleted(IntPtr mesh, uint vertex, out int result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_halfedge_is_deleted(IntPtr mesh, uint halfedge, out int result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_edge_is_deleted(IntPtr mesh, uint edge, out int result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_face_is_deleted(IntPtr mesh, uint face, out int result);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_vertex_halfedges(IntPtr mesh, uint vertex, [Out] HalfEdge[] buffer,
+            uint capacity, out uint count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_vertex_vertices(IntPtr mesh, uint vertex, [Out] Vertex[] buffer,
+            uint capacity, out uint count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_vertex_faces(IntPtr mesh, uint vertex, [Out] Face[] buffer,
+            uint capacity, out uint count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_face_vertices(IntPtr mesh, uint face, [Out] Vertex[] buffer,
+            uint capacity, out uint count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_face_halfedges(IntPtr mesh, uint face, [Out] HalfEdge[] buffer,
+            uint capacity, out uint count);
+
+        // ---- Local operations ----
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_can_split_edge(IntPtr mesh, uint edge, out int ok);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_split_edge(IntPtr mesh, uint edge, float x, float y, float z,
+            out uint vertex);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_can_collapse(IntPtr mesh, uint halfedge, out int ok);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_collapse(IntPtr mesh, uint halfedge, out uint vertex);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_can_flip(IntPtr mesh, uint edge, out int ok);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_flip(IntPtr mesh, uint edge);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_can_split_face(IntPtr mesh, uint face, out int ok);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_split_face(IntPtr mesh, uint face, float x, float y, float z,
+            out uint vertex);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_can_split_face_diagonal(IntPtr mesh, uint halfedge0, uint halfedge1,
+            out int ok);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_split_face_diagonal(IntPtr mesh, uint halfedge0, uint halfedge1,
+            out uint halfedge);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_split_all_faces(IntPtr mesh, [Out] Vertex[] buffer, uint capacity,
+            out uint count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_can_add_face(IntPtr mesh, [In] Vertex[] vertices, uint count, out int ok);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_add_face(IntPtr mesh, [In] Vertex[] vertices, uint count, out uint face);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_can_remove_face(IntPtr mesh, uint face, out int ok);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_remove_face(IntPtr mesh, uint face);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_can_remove_vertex(IntPtr mesh, uint vertex, out int ok);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_remove_vertex(IntPtr mesh, uint vertex);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_can_fill_hole(IntPtr mesh, uint halfedge, out int ok);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_fill_hole(IntPtr mesh, uint halfedge, [Out] Face[] buffer, uint capacity,
+            out uint count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_detach_faces(IntPtr mesh, [In] Face[] faces, uint count,
+            [Out] Vertex[] vertexOrigin, uint originCapacity, out uint originCount, out IntPtr newMesh);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_garbage_collection(IntPtr mesh, [Out] Vertex[] vertexMap,
+            uint vertexCapacity, [Out] HalfEdge[] halfedgeMap, uint halfedgeCapacity, [Out] Edge[] edgeMap,
+            uint edgeCapacity, [Out] Face[] faceMap, uint faceCapacity);
+
+        // ---- Files ----
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_read([In] byte[] path, ref BuildOptions options,
+            out BuildReport report, out IntPtr mesh);
+        // The same function with options NULL: the format's own defaults (exact welding for STL).
+        [DllImport(Library, EntryPoint = "hedge_mesh_read", CallingConvention = CallingConvention.Cdecl,
+            ExactSpelling = true)]
+        internal static extern int hedge_mesh_read_defaults([In] byte[] path, IntPtr optionsNull,
+            out BuildReport report, out IntPtr mesh);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_write(IntPtr mesh, [In] byte[] path, int binary, int precision);
+
+        // ---- Validation ----
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_validate(IntPtr mesh, out uint problemCount);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_validation_problem(IntPtr mesh, uint index, [Out] byte[] buffer,
+            uint capacity, out uint size);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_validation_report(IntPtr mesh, [Out] byte[] buffer, uint capacity,
+            out uint size);
+
+        // ---- Render buffers ----
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_options_default(out RenderOptions options);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_create(IntPtr mesh, ref RenderOptions options, out IntPtr render);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_destroy(IntPtr render);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_sync(IntPtr render, out SyncResult result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_begin(IntPtr render);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_commit(IntPtr render, out SyncResult result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_rebuild(IntPtr render, out SyncResult result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_last_result(IntPtr render, out SyncResult result);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_dirty_vertex_ranges(IntPtr render, [Out] SlotRange[] buffer,
+            uint capacity, out uint count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_dirty_index_ranges(IntPtr render, [Out] SlotRange[] buffer,
+            uint capacity, out uint count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_compact(IntPtr render, [Out] uint[] vertexMap, uint vertexCapacity,
+            out uint vertexCount, [Out] uint[] triangleMap, uint triangleCapacity, out uint triangleCount);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_counts(IntPtr render, out BufferCounts counts);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_layout(IntPtr render, out VertexLayout layout);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_vertex_data(IntPtr render, int stream, out IntPtr data,
+            out ulong count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_copy_vertex_data(IntPtr render, int stream, [Out] float[] buffer,
+            ulong capacity, out ulong count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_index_data(IntPtr render, out IntPtr data, out ulong count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_copy_index_data(IntPtr render, [Out] uint[] buffer, ulong capacity,
+            out ulong count);
+        // The same function into an int[] (Unity's Mesh.triangles type): same bits for indices < 2^31.
+        [DllImport(Library, EntryPoint = "hedge_render_copy_index_data", CallingConvention = CallingConvention.Cdecl,
+            ExactSpelling = true)]
+        internal static extern int hedge_render_copy_index_data_int(IntPtr render, [Out] int[] buffer,
+            ulong capacity, out ulong count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_vertex_source(IntPtr render, [Out] Vertex[] buffer, uint capacity,
+            out uint count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_corner_vertex(IntPtr render, uint halfedge, out uint renderVertex);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_render_face_triangles(IntPtr render, uint face, out uint first,
+            out uint count);
+
+        // ---- Engine meshes ----
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_engine_import_options_default(out EngineImportOptions options);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_from_engine_mesh(float[] positions, uint vertexCount, uint[] indices,
+            uint indexCount, float[] normals, float[] texcoords, float[] colors, ref EngineImportOptions options,
+            out BuildReport report, out IntPtr mesh);
+        // The same function with int[] indices (Unity's Mesh.triangles).
+        [DllImport(Library, EntryPoint = "hedge_mesh_from_engine_mesh", CallingConvention = CallingConvention.Cdecl,
+            ExactSpelling = true)]
+        internal static extern int hedge_mesh_from_engine_mesh_int(float[] positions, uint vertexCount, int[] indices,
+            uint indexCount, float[] normals, float[] texcoords, float[] colors, ref EngineImportOptions options,
+            out BuildReport report, out IntPtr mesh);
+    }
+}

@@ -1,0 +1,303 @@
+// Enums and plain structs of the C ABI. Every struct is [StructLayout(LayoutKind.Sequential)] with
+// the field types and order of its C counterpart (int32 booleans stay int fields behind bool
+// properties), so it is blittable and passed by pointer without conversion. The byte sizes are
+// checked against the header's layouts by the tests.
+using System.Runtime.InteropServices;
+
+// The private fields of these structs are written by the native library only.
+#pragma warning disable 0169, 0649
+
+namespace Hedge
+{
+    /// <summary>What to do with input a half-edge mesh cannot hold.</summary>
+    public enum TopologyPolicy
+    {
+        /// <summary>Refuse it: <see cref="HedgeException"/> with <see cref="HedgeStatus.Topology"/>.</summary>
+        Strict = 0,
+        /// <summary>Split non-manifold edges and vertices, re-orient faces, drop degenerate faces;
+        /// every repair is counted in the <see cref="BuildReport"/>.</summary>
+        Repair = 1,
+    }
+
+    /// <summary>Vertex welding while building.</summary>
+    public enum Weld
+    {
+        /// <summary>Keep the input's vertices.</summary>
+        None = 0,
+        /// <summary>Merge bit-identical positions (+0 equals -0).</summary>
+        Exact = 1,
+        /// <summary>Merge positions closer than WeldEpsilon times the bounding-box diagonal.</summary>
+        Epsilon = 2,
+    }
+
+    /// <summary>Triangle winding. Unity and Direct3D are clockwise.</summary>
+    public enum Winding
+    {
+        CounterClockwise = 0,
+        Clockwise = 1,
+    }
+
+    /// <summary>Where the render buffers' normals come from.</summary>
+    public enum NormalSource
+    {
+        /// <summary>No normal stream.</summary>
+        None = 0,
+        /// <summary>The mesh's corner or vertex normals; none if it has none.</summary>
+        Attribute = 1,
+        /// <summary>Area-weighted smooth vertex normals.</summary>
+        Computed = 2,
+        /// <summary>Attribute if the mesh has normals, computed otherwise.</summary>
+        Automatic = 3,
+    }
+
+    /// <summary>A vertex stream of a <see cref="RenderBuffers"/>.</summary>
+    public enum VertexStream
+    {
+        /// <summary>Interleaved layout: whole vertices (Layout.Stride floats each). Separate layout:
+        /// the positions (3 floats a vertex).</summary>
+        Vertices = 0,
+        /// <summary>Separate layout only: 3 floats a vertex (empty when interleaved).</summary>
+        Normals = 1,
+        /// <summary>Separate layout only: 2 floats a vertex (empty when interleaved).</summary>
+        Texcoords = 2,
+        /// <summary>Separate layout only: 4 floats (r, g, b, a) a vertex (empty when interleaved).</summary>
+        Colors = 3,
+    }
+
+    /// <summary>Options for building a mesh from index buffers or a file (16 bytes).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct BuildOptions
+    {
+        public TopologyPolicy Policy;
+        public Weld Weld;
+        /// <summary>Relative to the bounding-box diagonal; used with <see cref="Hedge.Weld.Epsilon"/>.</summary>
+        public double WeldEpsilon;
+
+        /// <summary>The C ABI's defaults: repair, no welding, epsilon 1e-6.</summary>
+        public static BuildOptions Default
+        {
+            get
+            {
+                BuildOptions options;
+                Status.Check(Native.hedge_build_options_default(out options));
+                return options;
+            }
+        }
+    }
+
+    /// <summary>What building did; all zero for clean input (36 bytes).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct BuildReport
+    {
+        /// <summary>Input vertices merged into another by welding.</summary>
+        public uint WeldedVertices;
+        /// <summary>Faces dropped: fewer than 3 distinct corners.</summary>
+        public uint DegenerateFaces;
+        /// <summary>Consecutive repeated corners removed from kept faces.</summary>
+        public uint RepeatedCorners;
+        /// <summary>Faces whose winding was reversed.</summary>
+        public uint ReorientedFaces;
+        /// <summary>Input edges cut apart.</summary>
+        public uint NonManifoldEdges;
+        /// <summary>Vertices whose faces formed several fans.</summary>
+        public uint NonManifoldVertices;
+        /// <summary>Vertices added to split them.</summary>
+        public uint DuplicatedVertices;
+        /// <summary>Vertices no face uses (kept; not a repair).</summary>
+        public uint IsolatedVertices;
+        /// <summary>Total repairs (welding and isolated vertices excluded).</summary>
+        public uint Repairs;
+    }
+
+    /// <summary>Element counts (32 bytes). Live counts skip deleted elements; slot counts include
+    /// them (element indices run up to the slot count - 1 until
+    /// <see cref="HalfEdgeMesh.GarbageCollection"/>).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct MeshCounts
+    {
+        public uint Vertices;
+        public uint HalfEdges;
+        public uint Edges;
+        public uint Faces;
+        public uint VertexSlots;
+        public uint HalfEdgeSlots;
+        public uint EdgeSlots;
+        public uint FaceSlots;
+
+        public override string ToString()
+        {
+            return Vertices + " vertices, " + Edges + " edges, " + Faces + " faces (slots " + VertexSlots + "/" +
+                   HalfEdgeSlots + "/" + EdgeSlots + "/" + FaceSlots + ")";
+        }
+    }
+
+    /// <summary>Options of a <see cref="RenderBuffers"/> (24 bytes).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct RenderOptions
+    {
+        public NormalSource Normals;
+        int texcoords;
+        int colors;
+        int interleaved;
+        public Winding Winding;
+        int flipX;
+
+        /// <summary>Texcoords from the mesh's corner or vertex texcoords when present.</summary>
+        public bool Texcoords { get { return texcoords != 0; } set { texcoords = value ? 1 : 0; } }
+        /// <summary>Colours from the mesh's corner or vertex colours when present.</summary>
+        public bool Colors { get { return colors != 0; } set { colors = value ? 1 : 0; } }
+        /// <summary>One buffer of whole vertices (true) or one buffer per stream (false).</summary>
+        public bool Interleaved { get { return interleaved != 0; } set { interleaved = value ? 1 : 0; } }
+        /// <summary>Negate x of positions and normals (right- to left-handed axes, as Unity).</summary>
+        public bool FlipX { get { return flipX != 0; } set { flipX = value ? 1 : 0; } }
+
+        /// <summary>The defaults: automatic normals, texcoords, colours, interleaved, counter-clockwise,
+        /// x not flipped.</summary>
+        public static RenderOptions Default
+        {
+            get
+            {
+                RenderOptions options;
+                Status.Check(Native.hedge_render_options_default(out options));
+                return options;
+            }
+        }
+
+        /// <summary>Unity's conventions: clockwise triangles, x flipped (left-handed axes), one stream
+        /// per attribute (position, normal, texcoord, colour: Mesh.SetVertexBufferData streams 0-3),
+        /// automatic normals. Use with a mesh imported with <see cref="EngineImportOptions.Unity"/>.</summary>
+        public static RenderOptions Unity
+        {
+            get
+            {
+                RenderOptions options = Default;
+                options.Winding = Winding.Clockwise;
+                options.FlipX = true;
+                options.Interleaved = false;
+                return options;
+            }
+        }
+    }
+
+    /// <summary>Where each attribute sits in a vertex, in floats; an absent attribute has offset -1
+    /// (24 bytes). Interleaved: all in the <see cref="VertexStream.Vertices"/> buffer, Stride floats
+    /// a vertex. Separate: each in its own stream, tightly packed, at offset 0; Stride still counts
+    /// the floats of a whole vertex over all streams.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct VertexLayout
+    {
+        public uint Stride;
+        public int Position;
+        public int Normal;
+        public int Texcoord;
+        public int Color;
+        int interleaved;
+
+        public bool Interleaved { get { return interleaved != 0; } }
+        public bool HasNormals { get { return Normal >= 0; } }
+        public bool HasTexcoords { get { return Texcoord >= 0; } }
+        public bool HasColors { get { return Color >= 0; } }
+    }
+
+    /// <summary>A run of slots [First, First + Count) (8 bytes).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SlotRange
+    {
+        public uint First;
+        public uint Count;
+
+        public SlotRange(uint first, uint count) { First = first; Count = count; }
+        public override string ToString() { return "[" + First + ", " + (First + Count) + ")"; }
+    }
+
+    /// <summary>What a sync, commit or rebuild rewrote (40 bytes). The ranges themselves:
+    /// <see cref="RenderBuffers.GetDirtyVertexRanges"/> and <see cref="RenderBuffers.GetDirtyIndexRanges"/>.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SyncResult
+    {
+        /// <summary>Bytes in the vertex ranges, all streams.</summary>
+        public ulong VertexBytes;
+        /// <summary>Bytes in the index ranges.</summary>
+        public ulong IndexBytes;
+        /// <summary>Rewritten render-vertex ranges.</summary>
+        public uint VertexRangeCount;
+        /// <summary>Rewritten index-buffer ranges (in indices, not triangles).</summary>
+        public uint IndexRangeCount;
+        public uint FacesSynced;
+        public uint VerticesSynced;
+        int resized;
+        int full;
+
+        /// <summary>The buffers grew or were rebuilt: reallocate GPU buffers and upload everything.</summary>
+        public bool Resized { get { return resized != 0; } }
+        /// <summary>Everything was rebuilt (first sync, garbage collection, rebuild).</summary>
+        public bool Full { get { return full != 0; } }
+        /// <summary>Nothing was rewritten.</summary>
+        public bool IsEmpty { get { return VertexRangeCount == 0 && IndexRangeCount == 0; } }
+    }
+
+    /// <summary>Buffer sizes of a <see cref="RenderBuffers"/> (40 bytes). Slot counts include free slots;
+    /// allocate GPU buffers at the capacities, inside which the counts grow without a Resized sync.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct BufferCounts
+    {
+        /// <summary>Render vertex slots.</summary>
+        public uint VertexCount;
+        /// <summary>Index-buffer entries (3 per triangle slot).</summary>
+        public uint IndexCount;
+        /// <summary>Render vertex slots in use.</summary>
+        public uint LiveVertexCount;
+        /// <summary>Triangle slots in use.</summary>
+        public uint LiveTriangleCount;
+        /// <summary>Render vertices beyond one per used mesh vertex: what seams cost.</summary>
+        public uint SeamSplits;
+        /// <summary>Degenerate triangle slots waiting for reuse or compaction.</summary>
+        public uint FreeTriangleCount;
+        /// <summary>Bytes of the whole vertex and index buffers (a full upload).</summary>
+        public ulong BufferBytes;
+        /// <summary>Render vertex slots to allocate (at least VertexCount).</summary>
+        public uint VertexCapacity;
+        /// <summary>Index-buffer entries to allocate (at least IndexCount).</summary>
+        public uint IndexCapacity;
+    }
+
+    /// <summary>Options for <c>HalfEdgeMesh.FromEngineMesh</c> (24 bytes).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct EngineImportOptions
+    {
+        /// <summary>How positions are welded into one topological vertex (attributes stay per corner,
+        /// so seams survive any welding).</summary>
+        public Weld Weld;
+        public TopologyPolicy Policy;
+        public double WeldEpsilon;
+        /// <summary>The engine's triangle winding (Unity: clockwise).</summary>
+        public Winding Winding;
+        int flipX;
+
+        /// <summary>Negate x of positions and normals (Unity's left-handed axes).</summary>
+        public bool FlipX { get { return flipX != 0; } set { flipX = value ? 1 : 0; } }
+
+        /// <summary>The defaults: exact welding, repair, epsilon 1e-6, counter-clockwise, x not flipped.</summary>
+        public static EngineImportOptions Default
+        {
+            get
+            {
+                EngineImportOptions options;
+                Status.Check(Native.hedge_engine_import_options_default(out options));
+                return options;
+            }
+        }
+
+        /// <summary>Unity's conventions: clockwise triangles, left-handed axes (x flipped).</summary>
+        public static EngineImportOptions Unity
+        {
+            get
+            {
+                EngineImportOptions options = Default;
+                options.Winding = Winding.Clockwise;
+                options.FlipX = true;
+                return options;
+            }
+        }
+    }
+}

@@ -1,0 +1,213 @@
+// Error paths (disposed objects, dead elements, malformed files) and files, and finalization.
+using System;
+using System.IO;
+
+namespace Hedge.Tests
+{
+    public static class ErrorTests
+    {
+        public static void Register(Runner r)
+        {
+            r.Add("ErrorTests.DisposedMesh", DisposedMesh);
+            r.Add("ErrorTests.DisposedRenderBuffers", DisposedRenderBuffers);
+            r.Add("ErrorTests.DeadAndOutOfRangeElements", DeadAndOutOfRangeElements);
+            r.Add("ErrorTests.MalformedAndMissingFiles", MalformedAndMissingFiles);
+            r.Add("ErrorTests.FilesRoundTrip", FilesRoundTrip);
+            r.Add("ErrorTests.FinalizersRelease", FinalizersRelease);
+        }
+
+        static void DisposedMesh()
+        {
+            HalfEdgeMesh mesh = Meshes.Tet();
+            Check.Valid(mesh);
+            Check.False(mesh.IsDisposed);
+            mesh.Dispose();
+            Check.True(mesh.IsDisposed);
+            HedgeException e = Check.Throws(HedgeStatus.BadHandle, () => { var c = mesh.Counts; });
+            Check.Equal("HEDGE_ERROR_BAD_HANDLE", e.StatusName);
+            Check.Contains(e.Message, "not a live mesh", "the library's message");
+            Check.Throws(HedgeStatus.BadHandle, () => mesh.Twin(new HalfEdge(0)));
+            Check.Throws(HedgeStatus.BadHandle, () => mesh.EdgeCollapse(new HalfEdge(0)), "bad handle, not refused");
+            Check.Throws(HedgeStatus.BadHandle, () => mesh.GetFaceVertices(new Face(0), new Vertex[3]));
+            Check.Throws(HedgeStatus.BadHandle, () => mesh.Validate());
+            Check.Throws(HedgeStatus.BadHandle, () => mesh.CreateRenderBuffers());
+            Check.Throws(HedgeStatus.BadHandle, () => mesh.Write(Context.Scratch("never.obj")));
+            mesh.Dispose(); // a second Dispose is harmless
+            Check.Equal("HalfEdgeMesh (disposed)", mesh.ToString());
+        }
+
+        static void DisposedRenderBuffers()
+        {
+            HalfEdgeMesh mesh = Meshes.Pyramid();
+            RenderBuffers a = mesh.CreateRenderBuffers();
+            RenderBuffers b = mesh.CreateRenderBuffers();
+            a.Dispose();
+            Check.Throws(HedgeStatus.BadHandle, () => a.Sync());
+            Check.Equal(5u, b.Counts.VertexCount, "the other render object lives on");
+            b.BeginTransaction();
+            Check.True(mesh.SplitFace(new Face(0), 0.5f, 0.2f, 0.5f).IsValid);
+            Check.Valid(mesh);
+            mesh.Dispose(); // destroys b with the mesh, even inside its transaction
+            Check.Throws(HedgeStatus.BadHandle, () => b.CommitTransaction());
+            Check.Throws(HedgeStatus.BadHandle, () => { var c = b.Counts; });
+            Check.Throws(HedgeStatus.BadHandle, () => b.CopyDirtyVertices(VertexStream.Vertices, new float[64]));
+            b.Dispose(); // already gone with its mesh: nothing to release, no exception
+            Check.True(b.IsDisposed);
+        }
+
+        static void DeadAndOutOfRangeElements()
+        {
+            using (HalfEdgeMesh mesh = Meshes.Pyramid())
+            {
+                Check.Throws(HedgeStatus.BadHandle, () => mesh.Twin(new HalfEdge(16)), "16 half-edges: 0..15");
+                Check.Throws(HedgeStatus.BadHandle, () => mesh.GetPosition(Vertex.Invalid));
+                Check.Throws(HedgeStatus.BadHandle, () => mesh.FlipEdge(Edge.Invalid));
+                Check.Throws(HedgeStatus.BadHandle, () => mesh.IsDeleted(new Face(4)), "only in range is accepted");
+                Check.Throws(HedgeStatus.InvalidArgument, () => mesh.GetHalfEdge(new Edge(0), 2));
+                Check.Throws(HedgeStatus.InvalidArgument, () => mesh.SplitFace(new Face(0), float.PositiveInfinity, 0, 0));
+                Check.Throws(HedgeStatus.InvalidArgument, () => mesh.Write(Context.Scratch("x.ply"), false, 40));
+                Check.True(mesh.RemoveFace(new Face(0)));
+                Check.True(mesh.IsDeleted(new Face(0)));
+                Check.Throws(HedgeStatus.BadHandle, () => mesh.GetFaceVertices(new Face(0), new Vertex[3]), "deleted");
+                Check.Throws(HedgeStatus.BadHandle, () => mesh.SplitFace(new Face(0), 0, 0, 0), "deleted");
+                Check.Valid(mesh);
+            }
+        }
+
+        static void MalformedAndMissingFiles()
+        {
+            string broken = Context.Scratch("broken.obj");
+            File.WriteAllText(broken, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n");
+            HedgeException e = Check.Throws(HedgeStatus.Io, () => HalfEdgeMesh.Read(broken));
+            Check.Contains(e.Message, broken + ":4:", "the message names the file and the line");
+            Check.Equal("HEDGE_ERROR_IO", e.StatusName);
+
+            string range = Context.Scratch("out_of_range.obj");
+            File.WriteAllText(range, "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 7\n");
+            e = Check.Throws(HedgeStatus.Io, () => HalfEdgeMesh.Read(range));
+            Check.Contains(e.Message, "out_of_range.obj:5:");
+
+            string missing = Context.Scratch("does_not_exist.obj");
+            e = Check.Throws(HedgeStatus.Io, () => HalfEdgeMesh.Read(missing));
+            Check.Contains(e.Message, "does_not_exist.obj");
+
+            using (HalfEdgeMesh mesh = Meshes.Tet())
+            {
+                Check.Throws(HedgeStatus.Io, () => mesh.Write(Context.Scratch("tet.unknown")), "an unknown extension");
+                Check.Throws(HedgeStatus.Io, () => mesh.Write(Context.Scratch("no/such/folder/tet.obj")));
+            }
+            Check.ThrowsType<ArgumentNullException>(() => HalfEdgeMesh.Read(null));
+            File.Delete(broken);
+            File.Delete(range);
+        }
+
+        static void FilesRoundTrip()
+        {
+            BuildReport report;
+            using (HalfEdgeMesh spot = HalfEdgeMesh.Read(Context.Data("spot_control_mesh.obj"), out report))
+            {
+                MeshCounts c = spot.Counts;
+                Check.Equal(188u, c.Vertices);
+                Check.Equal(366u, c.Edges);
+                Check.Equal(180u, c.Faces);
+                Check.Equal(0u, report.Repairs);
+                Check.Valid(spot);
+
+                // A non-ASCII file name goes through as UTF-8.
+                string ply = Context.Scratch("spot \u00e9t\u00e9.ply");
+                spot.Write(ply, true);
+                BuildOptions strict = BuildOptions.Default;
+                strict.Policy = TopologyPolicy.Strict;
+                using (HalfEdgeMesh back = HalfEdgeMesh.Read(ply, strict, out report))
+                {
+                    Check.True(c.Equals(back.Counts), "same counts after binary PLY");
+                    var a = new float[spot.CopyPositions(null)];
+                    var b = new float[back.CopyPositions(null)];
+                    spot.CopyPositions(a);
+                    back.CopyPositions(b);
+                    Check.Same(a, b, a.Length, "positions exact through binary PLY");
+                    Check.Valid(back);
+                }
+                string obj = Context.Scratch("spot_3_digits.obj");
+                spot.Write(obj, false, 3);
+                using (HalfEdgeMesh back = HalfEdgeMesh.Read(obj))
+                {
+                    Check.True(c.Equals(back.Counts), "same counts after OBJ");
+                    Vec3 exact = spot.GetPosition(new Vertex(17));
+                    Vec3 rounded = back.GetPosition(new Vertex(17));
+                    Check.Near(exact.X, rounded.X, 5e-3 * Math.Max(1, Math.Abs(exact.X)), "3 significant digits");
+                    Check.Valid(back);
+                }
+                File.Delete(ply);
+                File.Delete(obj);
+            }
+        }
+
+        static void MakeGarbage()
+        {
+            for (int i = 0; i < 20; ++i)
+            {
+                HalfEdgeMesh mesh = Meshes.Pyramid();
+                RenderBuffers buffers = mesh.CreateRenderBuffers();
+                mesh.SplitFace(new Face(0), 0.5f, 0.2f, 0.5f);
+                buffers.Sync();
+                if (i % 2 == 0) mesh.Dispose(); // half of them: buffers left to the finalizer after their mesh
+            }
+        }
+
+        // Render buffers of a mesh that stays alive, dropped without Dispose; returns their native ids.
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        static IntPtr[] DropRenderBuffers(HalfEdgeMesh mesh)
+        {
+            var ids = new IntPtr[10];
+            for (int i = 0; i < ids.Length; ++i) ids[i] = mesh.CreateRenderBuffers().Id;
+            return ids;
+        }
+
+        static bool Alive(IntPtr render)
+        {
+            BufferCounts counts;
+            return Native.hedge_render_counts(render, out counts) == 0;
+        }
+
+        static void FinalizersRelease()
+        {
+            MakeGarbage();
+            GC.Collect();
+            GC.WaitForPendingFinalizers();
+            GC.Collect();
+
+            // Render buffers the finalizer releases while their mesh lives on are destroyed on the mesh's
+            // thread, at its next sync: never by the finalizer thread, which could race with edits.
+            using (HalfEdgeMesh mesh = Meshes.Pyramid())
+            using (RenderBuffers kept = mesh.CreateRenderBuffers())
+            {
+                IntPtr[] dropped = DropRenderBuffers(mesh);
+                for (int round = 0; round < 3; ++round)
+                {
+                    GC.Collect();
+                    GC.WaitForPendingFinalizers();
+                }
+                int queued = mesh.PendingRenders.Count;
+                Check.True(queued >= 1, "finalized render buffers are queued: " + queued);
+                int alive = 0;
+                foreach (IntPtr id in dropped) alive += Alive(id) ? 1 : 0;
+                Check.Equal(dropped.Length, alive, "queued, not destroyed by the finalizer");
+                mesh.SplitFace(new Face(0), 0.5f, 0.2f, 0.5f);
+                kept.Sync(); // the mesh's thread destroys them
+                Check.Equal(0, mesh.PendingRenders.Count);
+                alive = 0;
+                foreach (IntPtr id in dropped) alive += Alive(id) ? 1 : 0;
+                Check.Equal(dropped.Length - queued, alive, "the queued ones are gone");
+                Check.Equal(6u, kept.Counts.LiveTriangleCount);
+                Check.Valid(mesh);
+            }
+            // The library is still fine after finalizers destroyed meshes and render objects.
+            using (HalfEdgeMesh mesh = Meshes.Tet())
+            {
+                Check.Equal(4, mesh.FaceCount);
+                Check.Valid(mesh);
+            }
+        }
+    }
+}

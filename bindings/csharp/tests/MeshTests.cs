@@ -1,0 +1,474 @@
+// Handles, struct layouts, adjacency queries, circulators, predicates and local edits.
+using System;
+using System.Collections.Generic;
+using System.Runtime.InteropServices;
+
+namespace Hedge.Tests
+{
+    /// <summary>Small meshes shared by the tests.</summary>
+    public static class Meshes
+    {
+        // A tetrahedron, outward (counter-clockwise) faces.
+        public static readonly float[] TetPositions = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+        public static readonly uint[] TetTriangles = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 };
+
+        // A square pyramid without its base: 5 vertices, 4 triangles, one boundary loop 0-1-2-3.
+        public static readonly float[] PyramidPositions = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5f, 0.5f, 1 };
+        public static readonly uint[] PyramidTriangles = { 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4 };
+
+        // A 2 x 2 grid of quads over 3 x 3 vertices.
+        public static readonly float[] GridPositions =
+            { 0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0, 0, 2, 0, 1, 2, 0, 2, 2, 0 };
+        public static readonly uint[] GridQuads = { 0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 7 };
+        public static readonly uint[] GridSizes = { 4, 4, 4, 4 };
+
+        public static HalfEdgeMesh Tet() { return HalfEdgeMesh.FromTriangles(TetPositions, TetTriangles); }
+        public static HalfEdgeMesh Pyramid() { return HalfEdgeMesh.FromTriangles(PyramidPositions, PyramidTriangles); }
+
+        public static HalfEdgeMesh Grid()
+        {
+            BuildReport report;
+            return HalfEdgeMesh.FromPolygons(GridPositions, GridQuads, GridSizes, BuildOptions.Default, out report);
+        }
+
+        /// <summary>Sorted indices of the first count vertices.</summary>
+        public static uint[] Sorted(Vertex[] vertices, int count)
+        {
+            var r = new uint[count];
+            for (int i = 0; i < count; ++i) r[i] = vertices[i].Index;
+            Array.Sort(r);
+            return r;
+        }
+
+        /// <summary>The corners of face f, rotated to start at its smallest vertex index.</summary>
+        public static uint[] Corners(HalfEdgeMesh mesh, Face f)
+        {
+            var buffer = new Vertex[16];
+            int n = mesh.GetFaceVertices(f, buffer);
+            return Rotated(buffer, n);
+        }
+
+        public static uint[] Rotated(Vertex[] corners, int n)
+        {
+            int start = 0;
+            for (int i = 1; i < n; ++i)
+                if (corners[i].Index < corners[start].Index) start = i;
+            var r = new uint[n];
+            for (int i = 0; i < n; ++i) r[i] = corners[(start + i) % n].Index;
+            return r;
+        }
+
+        public static string Show(uint[] a) { return "[" + string.Join(", ", a) + "]"; }
+    }
+
+    public static class MeshTests
+    {
+        public static void Register(Runner r)
+        {
+            r.Add("MeshTests.VersionAndLayouts", VersionAndLayouts);
+            r.Add("MeshTests.HandleArithmetic", HandleArithmetic);
+            r.Add("MeshTests.TetrahedronAdjacency", TetrahedronAdjacency);
+            r.Add("MeshTests.TetrahedronCollapseRefused", TetrahedronCollapseRefused);
+            r.Add("MeshTests.PyramidEdits", PyramidEdits);
+            r.Add("MeshTests.GridPolygonsAndDiagonals", GridPolygonsAndDiagonals);
+            r.Add("MeshTests.DetachAndGarbageCollection", DetachAndGarbageCollection);
+        }
+
+        static void VersionAndLayouts()
+        {
+            Check.Equal(Context.ExpectedVersion, HalfEdgeMesh.LibraryVersion.ToString(3), "library version");
+
+            // The sizes and offsets the header documents for each struct.
+            Check.Equal(4, Marshal.SizeOf(typeof(Vertex)));
+            Check.Equal(4, Marshal.SizeOf(typeof(HalfEdge)));
+            Check.Equal(4, Marshal.SizeOf(typeof(Edge)));
+            Check.Equal(4, Marshal.SizeOf(typeof(Face)));
+            Check.Equal(12, Marshal.SizeOf(typeof(Vec3)));
+            Check.Equal(16, Marshal.SizeOf(typeof(BuildOptions)), "hedge_build_options");
+            Check.Equal(8, (int)Marshal.OffsetOf(typeof(BuildOptions), "WeldEpsilon"));
+            Check.Equal(36, Marshal.SizeOf(typeof(BuildReport)), "hedge_build_report");
+            Check.Equal(32, (int)Marshal.OffsetOf(typeof(BuildReport), "Repairs"));
+            Check.Equal(32, Marshal.SizeOf(typeof(MeshCounts)), "hedge_counts");
+            Check.Equal(24, Marshal.SizeOf(typeof(RenderOptions)), "hedge_render_options");
+            Check.Equal(16, (int)Marshal.OffsetOf(typeof(RenderOptions), "Winding"));
+            Check.Equal(24, Marshal.SizeOf(typeof(VertexLayout)), "hedge_vertex_layout");
+            Check.Equal(8, Marshal.SizeOf(typeof(SlotRange)), "hedge_range");
+            Check.Equal(40, Marshal.SizeOf(typeof(SyncResult)), "hedge_sync_result");
+            Check.Equal(16, (int)Marshal.OffsetOf(typeof(SyncResult), "VertexRangeCount"));
+            Check.Equal(32, (int)Marshal.OffsetOf(typeof(SyncResult), "resized"));
+            Check.Equal(40, Marshal.SizeOf(typeof(BufferCounts)), "hedge_buffer_counts");
+            Check.Equal(24, (int)Marshal.OffsetOf(typeof(BufferCounts), "BufferBytes"));
+            Check.Equal(24, Marshal.SizeOf(typeof(EngineImportOptions)), "hedge_engine_import_options");
+            Check.Equal(8, (int)Marshal.OffsetOf(typeof(EngineImportOptions), "WeldEpsilon"));
+            Check.Equal(16, (int)Marshal.OffsetOf(typeof(EngineImportOptions), "Winding"));
+
+            // The defaults come from the library.
+            BuildOptions b = BuildOptions.Default;
+            Check.Equal(TopologyPolicy.Repair, b.Policy);
+            Check.Equal(Weld.None, b.Weld);
+            Check.Equal(1e-6, b.WeldEpsilon);
+            RenderOptions ro = RenderOptions.Default;
+            Check.Equal(NormalSource.Automatic, ro.Normals);
+            Check.True(ro.Texcoords && ro.Colors && ro.Interleaved && !ro.FlipX);
+            Check.Equal(Winding.CounterClockwise, ro.Winding);
+            RenderOptions unity = RenderOptions.Unity;
+            Check.True(unity.FlipX && !unity.Interleaved);
+            Check.Equal(Winding.Clockwise, unity.Winding);
+            EngineImportOptions e = EngineImportOptions.Default;
+            Check.Equal(Weld.Exact, e.Weld);
+            Check.Equal(TopologyPolicy.Repair, e.Policy);
+            Check.Equal(Winding.CounterClockwise, e.Winding);
+            Check.False(e.FlipX);
+            Check.True(EngineImportOptions.Unity.FlipX);
+        }
+
+        static void HandleArithmetic()
+        {
+            var h = new HalfEdge(5);
+            Check.Equal(new HalfEdge(4), h.Twin);
+            Check.Equal(new Edge(2), h.Edge);
+            Check.Equal(h, new Edge(2).GetHalfEdge(1));
+            Check.Equal(new HalfEdge(4), new Edge(2).GetHalfEdge(0));
+            Check.False(HalfEdge.Invalid.IsValid);
+            Check.Equal(HalfEdge.Invalid, HalfEdge.Invalid.Twin);
+            Check.Equal(Edge.Invalid, HalfEdge.Invalid.Edge);
+            Check.Equal(0xFFFFFFFFu, Vertex.Invalid.Index);
+            Check.True(new Vertex(3) == new Vertex(3) && new Face(1) != new Face(2));
+            Check.Equal("h5", h.ToString());
+            Check.ThrowsType<ArgumentOutOfRangeException>(() => new Edge(1).GetHalfEdge(2));
+        }
+
+        static void TetrahedronAdjacency()
+        {
+            using (HalfEdgeMesh mesh = Meshes.Tet())
+            {
+                MeshCounts c = mesh.Counts;
+                Check.Equal(4u, c.Vertices);
+                Check.Equal(12u, c.HalfEdges);
+                Check.Equal(6u, c.Edges);
+                Check.Equal(4u, c.Faces);
+                Check.Equal(4u, c.VertexSlots);
+                Check.Equal(4, mesh.FaceCount);
+                Check.Equal(new Vec3(0, 0, 1), mesh.GetPosition(new Vertex(3)));
+
+                for (uint i = 0; i < 12; ++i)
+                {
+                    var h = new HalfEdge(i);
+                    Check.Equal(h.Twin, mesh.Twin(h), "twin is h ^ 1");
+                    Check.Equal(h.Edge, mesh.GetEdge(h), "edge is h / 2");
+                    Check.Equal(h, mesh.Next(mesh.Next(mesh.Next(h))), "triangle loops close after 3");
+                    Check.Equal(h, mesh.Prev(mesh.Next(h)));
+                    Check.Equal(mesh.FromVertex(h), mesh.ToVertex(mesh.Twin(h)));
+                    Check.Equal(mesh.ToVertex(h), mesh.FromVertex(mesh.Next(h)));
+                    Check.True(mesh.GetFace(h).IsValid && !mesh.IsBoundary(h));
+                    Check.Equal(mesh.GetFace(h), mesh.GetFace(mesh.Next(h)));
+                }
+                for (uint e = 0; e < 6; ++e)
+                {
+                    Check.Equal(new HalfEdge(2 * e + 1), mesh.GetHalfEdge(new Edge(e), 1));
+                    Check.False(mesh.IsBoundary(new Edge(e)));
+                }
+
+                // Circulators into caller arrays; the same arrays for every call.
+                var ring = new Vertex[8];
+                var spokes = new HalfEdge[8];
+                var faces = new Face[8];
+                for (uint v = 0; v < 4; ++v)
+                {
+                    var vertex = new Vertex(v);
+                    Check.Equal(3, mesh.Valence(vertex));
+                    Check.False(mesh.IsBoundary(vertex));
+                    Check.Equal(vertex, mesh.FromVertex(mesh.GetHalfEdge(vertex)));
+                    Check.Equal(3, mesh.GetVertexNeighbours(vertex, ring));
+                    Check.Equal(3, mesh.GetVertexHalfEdges(vertex, spokes));
+                    Check.Equal(3, mesh.GetVertexFaces(vertex, faces));
+                    for (int k = 0; k < 3; ++k)
+                    {
+                        Check.Equal(vertex, mesh.FromVertex(spokes[k]));
+                        Check.Equal(ring[k], mesh.ToVertex(spokes[k]), "neighbours follow the outgoing half-edges");
+                    }
+                    var expected = new List<uint> { 0, 1, 2, 3 };
+                    expected.Remove(v);
+                    Check.Same(expected.ToArray(), Meshes.Sorted(ring, 3), 3, "one-ring of " + v);
+                }
+                Check.Equal(3, mesh.GetVertexNeighbours(new Vertex(0), null), "null asks for the count");
+                Check.Equal("[0, 2, 1]", Meshes.Show(Meshes.Corners(mesh, new Face(0))), "face 0 as built");
+                var loop = new HalfEdge[3];
+                Check.Equal(3, mesh.GetFaceHalfEdges(new Face(0), loop));
+                var corners = new Vertex[3];
+                mesh.GetFaceVertices(new Face(0), corners);
+                for (int k = 0; k < 3; ++k) Check.Equal(corners[k], mesh.ToVertex(loop[k]));
+                Check.Equal(loop[0], mesh.GetHalfEdge(new Face(0)));
+                Check.Equal(3, mesh.Valence(new Face(0)));
+                Check.False(mesh.IsBoundary(new Face(0)));
+
+                HalfEdge h01 = mesh.FindHalfEdge(new Vertex(0), new Vertex(1));
+                Check.True(h01.IsValid);
+                Check.Equal(new Vertex(0), mesh.FromVertex(h01));
+                Check.Equal(new Vertex(1), mesh.ToVertex(h01));
+
+                // An array too small: BufferTooSmall, and nothing written.
+                var small = new Vertex[] { new Vertex(77), new Vertex(77) };
+                Check.Throws(HedgeStatus.BufferTooSmall, () => mesh.GetVertexNeighbours(new Vertex(0), small));
+                Check.Equal(new Vertex(77), small[0], "untouched");
+                Check.Valid(mesh);
+            }
+        }
+
+        static void TetrahedronCollapseRefused()
+        {
+            using (HalfEdgeMesh mesh = Meshes.Tet())
+            {
+                var before = new float[12];
+                mesh.CopyPositions(before);
+                MeshCounts counts = mesh.Counts;
+                for (uint i = 0; i < 12; ++i)
+                {
+                    var h = new HalfEdge(i);
+                    Check.False(mesh.CanCollapse(h), "every tetrahedron edge is refused: " + h);
+                    Check.Equal(Vertex.Invalid, mesh.EdgeCollapse(h), "refused, not thrown: " + h);
+                }
+                for (uint e = 0; e < 6; ++e)
+                {
+                    Check.False(mesh.CanFlip(new Edge(e)), "valence-3 ends");
+                    Check.False(mesh.FlipEdge(new Edge(e)));
+                }
+                // Removing a face would leave a vertex with two fans? No: it leaves a valid open mesh.
+                Check.True(mesh.CanRemoveFace(new Face(0)));
+                Check.False(mesh.CanFillHole(new HalfEdge(0)), "not a boundary half-edge");
+                Check.Equal(0, mesh.FillHole(new HalfEdge(0)), "refused fill makes no face");
+
+                MeshCounts after = mesh.Counts;
+                Check.True(counts.Equals(after), "counts unchanged: " + after);
+                var now = new float[12];
+                Check.Equal(12, mesh.CopyPositions(now));
+                Check.Same(before, now, 12, "positions unchanged");
+                Check.Valid(mesh);
+            }
+        }
+
+        static void PyramidEdits()
+        {
+            using (HalfEdgeMesh mesh = Meshes.Pyramid())
+            {
+                Check.Equal(5, mesh.VertexCount);
+                Check.Equal(8, mesh.EdgeCount);
+                Check.Equal(4, mesh.FaceCount);
+                var apex = new Vertex(4);
+                Check.False(mesh.IsBoundary(apex));
+                Check.Equal(4, mesh.Valence(apex));
+                for (uint v = 0; v < 4; ++v) Check.True(mesh.IsBoundary(new Vertex(v)), "base corner " + v);
+                HalfEdge h01 = mesh.FindHalfEdge(new Vertex(0), new Vertex(1));
+                Check.False(mesh.IsBoundary(h01), "0->1 runs along face (0, 1, 4)");
+                Check.True(mesh.IsBoundary(h01.Twin));
+                Check.Equal(Face.Invalid, mesh.GetFace(h01.Twin));
+                Check.True(mesh.IsBoundary(h01.Edge));
+                Check.True(mesh.IsBoundary(mesh.GetFace(h01)));
+                Check.True(mesh.IsBoundary(mesh.GetHalfEdge(new Vertex(0))), "a boundary vertex starts at the gap");
+                Check.Equal(3, mesh.GetVertexNeighbours(new Vertex(0), new Vertex[4]));
+                Check.Equal(2, mesh.GetVertexFaces(new Vertex(0), new Face[4]));
+
+                // SplitHalfEdge on the boundary edge 0-1: the triangle on it becomes two.
+                Vertex m = mesh.SplitHalfEdge(h01, 0.5f, 0, 0);
+                Check.True(m.IsValid);
+                Check.Equal(5u, m.Index);
+                Check.Equal(new Vec3(0.5f, 0, 0), mesh.GetPosition(m));
+                Check.Equal(6, mesh.VertexCount);
+                Check.Equal(10, mesh.EdgeCount);
+                Check.Equal(5, mesh.FaceCount);
+                Check.Equal(3, mesh.Valence(m));
+                Check.True(mesh.IsBoundary(m));
+                Check.Equal(new Vertex(0), mesh.FromVertex(new HalfEdge(2 * h01.Edge.Index)));
+                Check.Equal(m, mesh.ToVertex(new HalfEdge(2 * h01.Edge.Index)), "2e runs from the first vertex to m");
+                Check.Valid(mesh, "after SplitHalfEdge");
+
+                // FlipEdge: the interior edge 1-4 between (m, 1, 4) and (1, 2, 4) turns into m-2.
+                HalfEdge h14 = mesh.FindHalfEdge(new Vertex(1), new Vertex(4));
+                Check.True(mesh.CanFlip(h14));
+                Check.True(mesh.FlipEdge(h14));
+                Check.False(mesh.FindHalfEdge(new Vertex(1), new Vertex(4)).IsValid, "1-4 is gone");
+                HalfEdge hm2 = mesh.FindHalfEdge(m, new Vertex(2));
+                Check.True(hm2.IsValid, "m-2 exists");
+                Check.Equal(h14.Edge, hm2.Edge, "the flipped edge keeps its index");
+                Check.Equal(10, mesh.EdgeCount);
+                Check.Equal(2, mesh.Valence(new Vertex(1)));
+                Check.Valid(mesh, "after FlipEdge");
+
+                // A boundary edge cannot be flipped: refused, false, nothing changed.
+                Check.False(mesh.FlipEdge(h01.Twin));
+                Check.Equal(10, mesh.EdgeCount);
+
+                // EdgeCollapse of m into 0 along the boundary: m's boundary triangle (m, 4, 0) goes.
+                HalfEdge hm0 = mesh.FindHalfEdge(m, new Vertex(0));
+                Check.True(mesh.CanCollapse(hm0), "m -> 0 is legal");
+                Vertex survivor = mesh.EdgeCollapse(hm0);
+                Check.Equal(new Vertex(0), survivor);
+                Check.Equal(new Vec3(0, 0, 0), mesh.GetPosition(survivor), "the survivor keeps its position");
+                Check.True(mesh.IsDeleted(m));
+                Check.Throws(HedgeStatus.BadHandle, () => mesh.GetPosition(m), "a deleted vertex");
+                Check.Equal(5, mesh.VertexCount);
+                Check.Equal(8, mesh.EdgeCount);
+                Check.Equal(4, mesh.FaceCount);
+                Check.Valid(mesh, "after EdgeCollapse");
+
+                // SplitFace at a point: 1 face becomes 3.
+                Face f = mesh.GetFace(mesh.FindHalfEdge(new Vertex(2), new Vertex(3)));
+                Check.True(mesh.CanSplitFace(f));
+                Vertex c = mesh.SplitFace(f, 0.5f, 0.8f, 0.3f);
+                Check.True(c.IsValid);
+                Check.Equal(3, mesh.Valence(c));
+                Check.Equal(6, mesh.FaceCount);
+                Check.Equal(11, mesh.EdgeCount);
+                Check.Valid(mesh, "after SplitFace");
+
+                // SplitAllFaces: every face into three around its centroid.
+                var added = new Vertex[mesh.FaceCount];
+                Check.Equal(6, mesh.SplitAllFaces(added));
+                for (int i = 0; i < added.Length; ++i) Check.Equal(3, mesh.Valence(added[i]));
+                Check.Equal(18, mesh.FaceCount);
+                Check.Equal(12, mesh.VertexCount);
+                Check.Throws(HedgeStatus.BufferTooSmall, () => mesh.SplitAllFaces(new Vertex[3]), "nothing split");
+                Check.Equal(18, mesh.FaceCount);
+                Check.Valid(mesh, "after SplitAllFaces");
+
+                // RemoveFace then AddFace the same corners: back to the same counts.
+                Face boundaryFace = mesh.GetFace(mesh.FindHalfEdge(new Vertex(3), new Vertex(0)));
+                var corners = new Vertex[3];
+                Check.Equal(3, mesh.GetFaceVertices(boundaryFace, corners));
+                Check.True(mesh.CanRemoveFace(boundaryFace));
+                Check.True(mesh.RemoveFace(boundaryFace));
+                Check.Equal(17, mesh.FaceCount);
+                Check.Throws(HedgeStatus.BadHandle, () => mesh.RemoveFace(boundaryFace), "already removed");
+                Check.True(mesh.CanAddFace(corners));
+                Face back = mesh.AddFace(corners[0], corners[1], corners[2]);
+                Check.True(back.IsValid);
+                Check.Equal(18, mesh.FaceCount);
+                Check.Same(Meshes.Rotated(corners, 3), Meshes.Corners(mesh, back), 3, "the new face's corners");
+                Check.False(mesh.CanAddFace(corners), "the same face twice");
+                Check.Equal(Face.Invalid, mesh.AddFace(corners), "refused");
+                Check.Valid(mesh, "after RemoveFace and AddFace");
+
+                // FillHole: close the base (a loop of 4 boundary edges: 2 triangles).
+                HalfEdge gap = mesh.FindHalfEdge(new Vertex(0), new Vertex(1)).Twin;
+                Check.True(mesh.IsBoundary(gap));
+                Check.True(mesh.CanFillHole(gap));
+                var filled = new Face[2];
+                Check.Equal(2, mesh.FillHole(gap, filled));
+                Check.True(filled[0].IsValid && filled[1].IsValid);
+                Check.Equal(20, mesh.FaceCount);
+                MeshCounts k = mesh.Counts;
+                Check.Equal(2L, (long)k.Vertices - k.Edges + k.Faces, "a closed sphere: V - E + F = 2");
+                for (uint v = 0; v < 4; ++v) Check.False(mesh.IsBoundary(new Vertex(v)));
+                Check.Valid(mesh, "after FillHole");
+
+                // RemoveVertex of the apex takes its faces.
+                Check.True(mesh.CanRemoveVertex(apex));
+                int apexFaces = mesh.GetVertexFaces(apex, null);
+                Check.True(mesh.RemoveVertex(apex));
+                Check.Equal(20 - apexFaces, mesh.FaceCount);
+                Check.Valid(mesh, "after RemoveVertex");
+            }
+        }
+
+        static void GridPolygonsAndDiagonals()
+        {
+            using (HalfEdgeMesh mesh = Meshes.Grid())
+            {
+                Check.Equal(9, mesh.VertexCount);
+                Check.Equal(12, mesh.EdgeCount);
+                Check.Equal(4, mesh.FaceCount);
+                Check.Equal(4, mesh.Valence(new Face(0)));
+                Check.Equal("[0, 1, 4, 3]", Meshes.Show(Meshes.Corners(mesh, new Face(0))));
+                Check.Equal(4, mesh.Valence(new Vertex(4)), "the centre");
+                Check.False(mesh.IsBoundary(new Vertex(4)));
+
+                var loop = new HalfEdge[4];
+                Check.Equal(4, mesh.GetFaceHalfEdges(new Face(0), loop));
+                // Adjacent corners: refused.
+                Check.False(mesh.CanSplitFace(loop[0], loop[1]));
+                Check.Equal(HalfEdge.Invalid, mesh.SplitFace(loop[0], loop[1]));
+                Check.Equal(4, mesh.FaceCount);
+                // Opposite corners: a new diagonal.
+                Check.True(mesh.CanSplitFace(loop[0], loop[2]));
+                HalfEdge d = mesh.SplitFace(loop[0], loop[2]);
+                Check.True(d.IsValid);
+                Check.Equal(mesh.ToVertex(loop[0]), mesh.FromVertex(d));
+                Check.Equal(mesh.ToVertex(loop[2]), mesh.ToVertex(d));
+                Check.Equal(5, mesh.FaceCount);
+                Check.Equal(13, mesh.EdgeCount);
+                Check.Equal(3, mesh.Valence(mesh.GetFace(d)));
+                Check.Equal(3, mesh.Valence(mesh.GetFace(d.Twin)));
+                Check.Valid(mesh, "after the diagonal");
+
+                // A quad split at a point: 4 triangles.
+                Vertex c = mesh.SplitFace(new Face(3), 1.5f, 1.5f, 0);
+                Check.Equal(4, mesh.Valence(c));
+                Check.Equal(8, mesh.FaceCount);
+                Check.Valid(mesh, "after SplitFace of a quad");
+
+                // Moving a vertex.
+                mesh.SetPosition(new Vertex(4), 1, 1, 0.25f);
+                Check.Equal(new Vec3(1, 1, 0.25f), mesh.GetPosition(new Vertex(4)));
+                Check.Throws(HedgeStatus.InvalidArgument, () => mesh.SetPosition(new Vertex(4), float.NaN, 0, 0));
+                Check.Equal(new Vec3(1, 1, 0.25f), mesh.GetPosition(new Vertex(4)), "unchanged by the NaN");
+                Check.Valid(mesh);
+            }
+        }
+
+        static void DetachAndGarbageCollection()
+        {
+            using (HalfEdgeMesh mesh = Meshes.Grid())
+            {
+                var origin = new Vertex[8];
+                using (HalfEdgeMesh piece = mesh.DetachFaces(new[] { new Face(3), new Face(3) }, 2, origin))
+                {
+                    Check.Equal(1, piece.FaceCount, "a repeated face counts once");
+                    Check.Equal(4, piece.VertexCount);
+                    Check.Equal(3, mesh.FaceCount);
+                    var fromOrigin = new uint[4];
+                    for (int i = 0; i < 4; ++i)
+                    {
+                        uint o = origin[i].Index;
+                        fromOrigin[i] = o;
+                        var expected = new Vec3(Meshes.GridPositions[3 * o], Meshes.GridPositions[3 * o + 1],
+                                                Meshes.GridPositions[3 * o + 2]);
+                        Check.Equal(expected, piece.GetPosition(new Vertex((uint)i)),
+                                    "the piece keeps the positions of its origins");
+                    }
+                    Array.Sort(fromOrigin);
+                    Check.Equal("[4, 5, 7, 8]", Meshes.Show(fromOrigin));
+                    Check.Valid(piece, "the detached piece");
+                    Check.Valid(mesh, "the rest");
+                }
+                Check.Throws(HedgeStatus.BufferTooSmall, () => mesh.DetachFaces(new[] { new Face(0) }, 1, new Vertex[2]));
+                Check.Equal(3, mesh.FaceCount, "nothing detached");
+
+                // Deleted slots stay until garbage collection, which returns old -> new maps.
+                MeshCounts before = mesh.Counts;
+                Check.True(before.VertexSlots == 9 && before.Vertices == 8, before.ToString());
+                var positions = new float[3 * before.VertexSlots];
+                mesh.CopyPositions(positions);
+                var vmap = new Vertex[before.VertexSlots];
+                var hmap = new HalfEdge[before.HalfEdgeSlots];
+                var emap = new Edge[before.EdgeSlots];
+                var fmap = new Face[before.FaceSlots];
+                Check.Throws(HedgeStatus.BufferTooSmall, () => mesh.GarbageCollection(new Vertex[3]));
+                mesh.GarbageCollection(vmap, hmap, emap, fmap);
+                MeshCounts after = mesh.Counts;
+                Check.Equal(after.Vertices, after.VertexSlots);
+                Check.Equal(after.Edges, after.EdgeSlots);
+                Check.Equal(after.Faces, after.FaceSlots);
+                Check.Equal(before.Vertices, after.Vertices);
+                Check.Equal(Vertex.Invalid, vmap[8], "vertex 8 went with the detached face");
+                for (uint v = 0; v < 8; ++v)
+                {
+                    Check.True(vmap[v].IsValid && vmap[v].Index < after.VertexSlots);
+                    Check.Equal(new Vec3(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]),
+                                mesh.GetPosition(vmap[v]), "moved with its map entry");
+                }
+                Check.Equal(Face.Invalid, fmap[3]);
+                Check.Valid(mesh, "after garbage collection");
+            }
+        }
+    }
+}

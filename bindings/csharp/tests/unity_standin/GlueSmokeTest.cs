@@ -1,0 +1,145 @@
+// Runs the Unity glue (Runtime/Unity/HalfEdgeMeshBehaviour.cs) against the UnityEngine stand-in:
+//   mono HedgeUnityGlue.exe
+// It checks that what the component uploads into the (stand-in) Mesh equals the render buffers after
+// building, after single edits, after a transaction and after growth. It says nothing about Unity
+// itself: the stand-in only follows Unity's documented signatures.
+using System;
+using System.Reflection;
+using Hedge.Unity;
+using UnityEngine;
+using UnityEngine.Rendering;
+
+namespace Hedge.Tests
+{
+    public static class GlueSmokeTest
+    {
+        public static int Main(string[] args)
+        {
+            var runner = new Runner();
+            runner.Add("GlueSmokeTest.BuildEditUpload", BuildEditUpload);
+            return runner.Run(args.Length > 0 ? args[0] : null) > 0 ? 1 : 0;
+        }
+
+        // The open pyramid in Unity's conventions (x negated, clockwise), a seam at the apex (two
+        // texcoords), and colours.
+        static UnityEngine.Mesh SourceMesh()
+        {
+            var m = new UnityEngine.Mesh();
+            m.name = "pyramid";
+            m.vertices = new[]
+            {
+                new Vector3(0, 0, 0), new Vector3(-1, 0, 0), new Vector3(-1, 1, 0), new Vector3(0, 1, 0),
+                new Vector3(-0.5f, 0.5f, 1), new Vector3(-0.5f, 0.5f, 1),
+            };
+            m.normals = new[]
+            {
+                new Vector3(0, 0, -1), new Vector3(0, 0, -1), new Vector3(0, 0, -1), new Vector3(0, 0, -1),
+                new Vector3(0, 0, 1), new Vector3(0, 0, 1),
+            };
+            m.uv = new[]
+            {
+                new Vector2(0, 0), new Vector2(1, 0), new Vector2(1, 1), new Vector2(0, 1),
+                new Vector2(0.5f, 0.5f), new Vector2(0.25f, 0.75f),
+            };
+            m.colors = new[]
+            {
+                new Color(1, 0, 0, 1), new Color(0, 1, 0, 1), new Color(0, 0, 1, 1), new Color(1, 1, 0, 1),
+                new Color(1, 1, 1, 1), new Color(1, 1, 1, 1),
+            };
+            // Counter-clockwise (0, 1, 4), (1, 2, 4), (2, 3, 5), (3, 0, 5) in hedge's axes, reversed.
+            m.triangles = new[] { 0, 4, 1, 1, 4, 2, 2, 5, 3, 3, 5, 0 };
+            return m;
+        }
+
+        // The stand-in mesh's buffers hold exactly the render buffers (their first Counts entries).
+        static void CheckUploaded(HalfEdgeMeshBehaviour b, string what)
+        {
+            UnityEngine.Mesh mesh = b.RenderedMesh;
+            RenderBuffers buffers = b.Buffers;
+            BufferCounts counts = buffers.Counts;
+            var streams = new[] { VertexStream.Vertices, VertexStream.Normals, VertexStream.Texcoords, VertexStream.Colors };
+            var attributes = new[] { VertexAttribute.Position, VertexAttribute.Normal, VertexAttribute.TexCoord0,
+                                     VertexAttribute.Color };
+            Check.Equal(4, mesh.Attributes.Length, "four attributes");
+            for (int s = 0; s < 4; ++s)
+            {
+                VertexAttributeDescriptor d = mesh.Attributes[s];
+                Check.Equal(attributes[s], d.attribute);
+                Check.Equal(s, d.stream, "one stream per attribute");
+                var expected = new float[buffers.CopyStream(streams[s], null)];
+                buffers.CopyStream(streams[s], expected);
+                Check.Equal((int)counts.VertexCount * d.dimension, expected.Length);
+                var uploaded = (float[])mesh.Streams[s];
+                Check.True(uploaded.Length >= expected.Length, "the GPU stream holds the buffer");
+                Check.Same(expected, uploaded, expected.Length, streams[s] + " " + what);
+            }
+            var indices = new int[counts.IndexCount];
+            buffers.CopyIndices(indices);
+            Check.Equal(IndexFormat.UInt32, mesh.IndexFormatUsed);
+            Check.Same(indices, (int[])mesh.IndexBuffer, indices.Length, "indices " + what);
+            Check.Equal((int)counts.IndexCount, mesh.SubMesh.indexCount, "the submesh covers the index buffer");
+            Check.Equal(0, mesh.SubMesh.indexStart);
+        }
+
+        static void BuildEditUpload()
+        {
+            var go = new GameObject();
+            MeshFilter filter = go.AddComponent<MeshFilter>();
+            UnityEngine.Mesh source = SourceMesh();
+            filter.sharedMesh = source;
+            HalfEdgeMeshBehaviour b = go.AddComponent<HalfEdgeMeshBehaviour>(); // Awake builds
+
+            Check.True(b.HalfEdgeMesh != null && b.Buffers != null, "built in Awake");
+            Check.True(filter.sharedMesh == b.RenderedMesh && b.RenderedMesh != source, "renders its own mesh");
+            Check.True(b.RenderedMesh.Dynamic, "marked dynamic");
+            Check.Equal(5, b.HalfEdgeMesh.VertexCount, "the apex copies welded");
+            Check.Equal(1u, b.Report.WeldedVertices);
+            Check.Equal(4, b.HalfEdgeMesh.FaceCount);
+            Check.Equal(new Vec3(0.5f, 0.5f, 1), b.HalfEdgeMesh.GetPosition(new Vertex(4)), "x flipped back");
+            Check.Equal(6u, b.Buffers.Counts.LiveVertexCount, "the seam at the apex survives");
+            CheckUploaded(b, "after building");
+
+            // One move: a partial upload.
+            UnityEngine.Mesh rendered = b.RenderedMesh;
+            rendered.VertexUploads = 0;
+            rendered.IndexUploads = 0;
+            b.HalfEdgeMesh.SetPosition(new Vertex(4), 0.5f, 0.5f, 2);
+            b.Upload();
+            Check.True(rendered.VertexUploads > 0, "vertex ranges uploaded");
+            Check.True(rendered.VertexUploads < 6 * 12, "only the dirty ranges: " + rendered.VertexUploads + " floats");
+            Check.Equal(0, rendered.IndexUploads, "no index changed");
+            CheckUploaded(b, "after a move");
+
+            // A transaction: uploaded once, at EndEdit.
+            b.BeginEdit();
+            Check.True(b.HalfEdgeMesh.SplitFace(new Face(0), 0.5f, 0.2f, 0.6f).IsValid);
+            HalfEdge h12 = b.HalfEdgeMesh.FindHalfEdge(new Vertex(1), new Vertex(2));
+            Check.True(b.HalfEdgeMesh.SplitHalfEdge(h12, 1, 0.5f, 0).IsValid);
+            rendered.IndexUploads = 0;
+            b.Upload(); // inside the transaction: nothing
+            Check.Equal(0, rendered.IndexUploads);
+            b.EndEdit();
+            Check.True(rendered.IndexUploads > 0);
+            Check.True(b.RenderedMesh == rendered, "no reallocation: within the capacity");
+            CheckUploaded(b, "after a transaction");
+            Check.Valid(b.HalfEdgeMesh);
+
+            // Growth beyond the capacity: the buffers are reallocated and uploaded whole.
+            int gpuVertices = rendered.VertexBufferCount;
+            while (b.HalfEdgeMesh.VertexCount <= gpuVertices) b.HalfEdgeMesh.SplitAllFaces();
+            b.Upload();
+            Check.True(rendered.VertexBufferCount > gpuVertices, "reallocated: " + rendered.VertexBufferCount);
+            CheckUploaded(b, "after growth");
+            Check.True(rendered.BoundsRecalculations > 0);
+            Check.Valid(b.HalfEdgeMesh);
+
+            // OnDestroy releases the native objects and the Unity mesh.
+            HalfEdgeMesh native = b.HalfEdgeMesh;
+            typeof(HalfEdgeMeshBehaviour).GetMethod("OnDestroy", BindingFlags.Instance | BindingFlags.NonPublic)
+                                         .Invoke(b, null);
+            Check.True(native.IsDisposed);
+            Check.True(UnityEngine.Object.Destroyed.Contains(rendered));
+            Check.True(b.HalfEdgeMesh == null && b.Buffers == null);
+        }
+    }
+}
