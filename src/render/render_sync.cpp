@@ -140,63 +140,46 @@ void RenderSync::setup_layout() {
 }
 
 // ---- Vertex data ----------------------------------------------------------------------------------
-namespace {
-// The floats of one render vertex in interleaved order, from a corner (h valid) or a vertex only.
-struct VertexSource {
-  const SurfaceMesh& m;
-  const RenderOptions& o;
-  const VertexLayout& l;
-  HalfedgeProperty<Vec3> hn;
-  VertexProperty<Vec3> vn;
-  HalfedgeProperty<Vec2> ht;
-  VertexProperty<Vec2> vt;
-  HalfedgeProperty<Color> hc;
-  VertexProperty<Color> vc;
-  const std::vector<Vec3>* computed;
-
-  // Writes the vertex-sourced floats of v, and the corner-sourced ones too when h is valid.
-  void fill(Vertex v, Halfedge h, float* out) const {
-    const float sx = o.flip_x ? -1.f : 1.f;
-    const Vec3& p = m.position(v);
-    std::uint32_t at = 0;
-    out[at++] = sx * p.x;
-    out[at++] = p.y;
-    out[at++] = p.z;
-    if (l.normal >= 0) {
-      const bool from_corner = static_cast<bool>(hn);
-      if (!from_corner || h.is_valid()) {
-        Vec3 n = from_corner ? hn[h] : vn ? vn[v] : (*computed)[v.idx()];
-        out[at] = sx * n.x;
-        out[at + 1] = n.y;
-        out[at + 2] = n.z;
-      }
-      at += 3;
+// The floats of one render vertex in interleaved order: the vertex-sourced ones of v, and the
+// corner-sourced ones too when h (the half-edge entering the corner) is valid.
+void RenderSync::fill_vertex(Vertex v, Halfedge h, float* out) const {
+  const SurfaceMesh& m = *mesh_;
+  const float sx = options_.flip_x ? -1.f : 1.f;
+  const Vec3& p = m.position(v);
+  std::uint32_t at = 0;
+  out[at++] = sx * p.x;
+  out[at++] = p.y;
+  out[at++] = p.z;
+  if (layout_.normal >= 0) {
+    const bool from_corner = static_cast<bool>(h_normal_);
+    if (!from_corner || h.is_valid()) {
+      const Vec3 n = from_corner ? h_normal_[h] : v_normal_ ? v_normal_[v] : vertex_normal_[v.idx()];
+      out[at] = sx * n.x;
+      out[at + 1] = n.y;
+      out[at + 2] = n.z;
     }
-    if (l.texcoord >= 0) {
-      const bool from_corner = static_cast<bool>(ht);
-      if (!from_corner || h.is_valid()) {
-        const Vec2 t = from_corner ? ht[h] : vt[v];
-        out[at] = t.x;
-        out[at + 1] = t.y;
-      }
-      at += 2;
+    at += 3;
+  }
+  if (layout_.texcoord >= 0) {
+    const bool from_corner = static_cast<bool>(h_texcoord_);
+    if (!from_corner || h.is_valid()) {
+      const Vec2 t = from_corner ? h_texcoord_[h] : v_texcoord_[v];
+      out[at] = t.x;
+      out[at + 1] = t.y;
     }
-    if (l.color >= 0) {
-      const bool from_corner = static_cast<bool>(hc);
-      if (!from_corner || h.is_valid()) {
-        const Color c = from_corner ? hc[h] : vc[v];
-        out[at] = c.r;
-        out[at + 1] = c.g;
-        out[at + 2] = c.b;
-        out[at + 3] = c.a;
-      }
+    at += 2;
+  }
+  if (layout_.color >= 0) {
+    const bool from_corner = static_cast<bool>(h_color_);
+    if (!from_corner || h.is_valid()) {
+      const Color c = from_corner ? h_color_[h] : v_color_[v];
+      out[at] = c.r;
+      out[at + 1] = c.g;
+      out[at + 2] = c.b;
+      out[at + 3] = c.a;
     }
   }
-};
-}  // namespace
-
-#define HEDGE_VERTEX_SOURCE \
-  VertexSource { *mesh_, options_, layout_, h_normal_, v_normal_, h_texcoord_, v_texcoord_, h_color_, v_color_, &vertex_normal_ }
+}
 
 void RenderSync::read_vertex(Index rv, float* out) const {
   if (layout_.interleaved) {
@@ -264,7 +247,7 @@ Index RenderSync::allocate_vertex() {
 Index RenderSync::find_or_add_render_vertex(Halfedge corner) {
   const Vertex v = mesh_->to_vertex(corner);
   Floats want;
-  HEDGE_VERTEX_SOURCE.fill(v, corner, want.data());
+  fill_vertex(v, corner, want.data());
   Floats have;
   for (Index rv = v_first_rv_[v.idx()]; rv != kInvalidIndex; rv = rv_next_[rv]) {
     read_vertex(rv, have.data());
@@ -543,7 +526,7 @@ const SyncResult& RenderSync::sync() {
     if (!v.is_valid() || v.idx() >= m.vertices_size() || m.is_deleted(v)) continue;
     for (Index rv = v_first_rv_[v.idx()]; rv != kInvalidIndex; rv = rv_next_[rv]) {
       read_vertex(rv, data.data());
-      HEDGE_VERTEX_SOURCE.fill(v, Halfedge(), data.data());
+      fill_vertex(v, Halfedge(), data.data());
       write_vertex(rv, data.data(), false);
     }
   }
@@ -672,6 +655,5 @@ RenderRemap RenderSync::compact() {
   return map;
 }
 
-#undef HEDGE_VERTEX_SOURCE
 
 }  // namespace hedge

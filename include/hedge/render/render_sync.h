@@ -178,6 +178,7 @@ class RenderSync {
   void full_build();
   void sync_face(Face f);
   void release_face(Face f);
+  void fill_vertex(Vertex v, Halfedge h, float* out) const;
   void read_vertex(Index rv, float* out) const;
   void write_vertex(Index rv, const float* data, bool fresh);
   Index find_or_add_render_vertex(Halfedge corner);
