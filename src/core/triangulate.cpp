@@ -11,9 +11,7 @@ void triangulate_polygon(std::span<const Vec3d> p, std::vector<std::array<Index,
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3d& a = p[i];
     const Vec3d& b = p[(i + 1) % n];
-    nrm.x += (a.y - b.y) * (a.z + b.z);
-    nrm.y += (a.z - b.z) * (a.x + b.x);
-    nrm.z += (a.x - b.x) * (a.y + b.y);
+    add_newell_term(nrm, a, b);
   }
   // Project onto the plane: drop the dominant normal axis, keeping orientation.
   int ax = 0;

@@ -24,16 +24,11 @@ std::size_t grown_capacity(std::size_t n, std::size_t old) {
   return std::max<std::size_t>({n, old + old / 2, 64});
 }
 
+// Twice the area times the unit normal (Newell), exact for planar polygons.
 Vec3d face_normal_sum(const SurfaceMesh& m, Face f) {
-  // Newell's formula: twice the area times the unit normal, exact for planar polygons.
   Vec3d n{0, 0, 0};
-  for (Halfedge h : m.halfedges(f)) {
-    const Vec3d a = to_double(m.position(m.from_vertex(h)));
-    const Vec3d b = to_double(m.position(m.to_vertex(h)));
-    n.x += (a.y - b.y) * (a.z + b.z);
-    n.y += (a.z - b.z) * (a.x + b.x);
-    n.z += (a.x - b.x) * (a.y + b.y);
-  }
+  for (Halfedge h : m.halfedges(f))
+    add_newell_term(n, to_double(m.position(m.from_vertex(h))), to_double(m.position(m.to_vertex(h))));
   return n;
 }
 
@@ -203,12 +198,23 @@ bool RenderSync::stream_present(int s) const {
   }
 }
 
-void RenderSync::write_vertex(Index rv, const float* data, bool fresh) {
-  if (!fresh) {
-    Floats old;
-    read_vertex(rv, old.data());
-    if (std::memcmp(old.data(), data, layout_.stride * sizeof(float)) == 0) return;
-  }
+std::uint32_t RenderSync::stored_width(int s) const {
+  if (layout_.interleaved) return s == 0 ? layout_.stride : 0;
+  return stream_present(s) ? kStreamWidth[s] : 0;
+}
+
+void RenderSync::resize_streams(std::size_t n) {
+  for (int s = 0; s < 4; ++s)
+    if (const std::uint32_t w = stored_width(s)) streams_[s].resize(n * w);
+}
+
+void RenderSync::grow_capacity(std::size_t& capacity, std::size_t n) {
+  if (n <= capacity) return;
+  capacity = grown_capacity(n, capacity);
+  if (!building_) result_.resized = true;
+}
+
+void RenderSync::store_vertex(Index rv, const float* data) {
   if (layout_.interleaved) {
     std::memcpy(streams_[0].data() + std::size_t(rv) * layout_.stride, data, layout_.stride * sizeof(float));
   } else {
@@ -219,7 +225,18 @@ void RenderSync::write_vertex(Index rv, const float* data, bool fresh) {
       at += kStreamWidth[s];
     }
   }
-  if (!building_) written_vertices_.push_back(rv);
+}
+
+void RenderSync::rewrite_vertex_data(Vertex v) {
+  Floats old, now;
+  for (Index rv = v_first_rv_[v.idx()]; rv != kInvalidIndex; rv = rv_next_[rv]) {
+    read_vertex(rv, old.data());
+    now = old;  // keeps the corner-sourced floats
+    fill_vertex(v, Halfedge(), now.data());
+    if (std::memcmp(old.data(), now.data(), layout_.stride * sizeof(float)) == 0) continue;
+    store_vertex(rv, now.data());
+    written_vertices_.push_back(rv);
+  }
 }
 
 Index RenderSync::allocate_vertex() {
@@ -230,17 +247,11 @@ Index RenderSync::allocate_vertex() {
     return rv;
   }
   rv = static_cast<Index>(rv_vertex_.size());
-  const std::size_t n = rv_vertex_.size() + 1;
-  if (n > vertex_capacity_) {
-    vertex_capacity_ = grown_capacity(n, vertex_capacity_);
-    if (!building_) result_.resized = true;
-  }
+  grow_capacity(vertex_capacity_, rv_vertex_.size() + 1);
   rv_vertex_.push_back(Vertex());
   rv_next_.push_back(kInvalidIndex);
   rv_refs_.push_back(0);
-  for (int s = 0; s < 4; ++s)
-    if (stream_present(s) && (s == 0 || !layout_.interleaved))
-      streams_[s].resize(n * (layout_.interleaved ? layout_.stride : kStreamWidth[s]));
+  resize_streams(rv_vertex_.size());
   return rv;
 }
 
@@ -258,7 +269,8 @@ Index RenderSync::find_or_add_render_vertex(Halfedge corner) {
   rv_refs_[rv] = 0;
   rv_next_[rv] = v_first_rv_[v.idx()];
   v_first_rv_[v.idx()] = rv;
-  write_vertex(rv, want.data(), true);
+  store_vertex(rv, want.data());
+  if (!building_) written_vertices_.push_back(rv);
   return rv;
 }
 
@@ -283,10 +295,7 @@ std::uint32_t RenderSync::allocate_triangles(std::uint32_t count) {
   }
   const std::uint32_t first = static_cast<std::uint32_t>(indices_.size() / 3);
   const std::size_t n = indices_.size() + 3 * std::size_t(count);
-  if (n > index_capacity_) {
-    index_capacity_ = grown_capacity(n, index_capacity_);
-    if (!building_) result_.resized = true;
-  }
+  grow_capacity(index_capacity_, n);
   indices_.resize(n, 0);
   return first;
 }
@@ -310,7 +319,6 @@ void RenderSync::release_face(Face f) {
   const std::size_t begin = 3 * std::size_t(s.first), end = begin + 3 * std::size_t(s.count);
   for (std::size_t i = begin; i < end; ++i) unref_vertex(indices_[i]);
   free_triangles(s.first, s.count);
-  live_triangles_ -= s.count;
   s = {};
 }
 
@@ -348,16 +356,15 @@ void RenderSync::sync_face(Face f) {
     if (options_.winding == Winding::ccw) new_indices_.insert(new_indices_.end(), {a, b, c});
     else new_indices_.insert(new_indices_.end(), {a, c, b});
   }
-  for (Index rv : new_indices_) ++rv_refs_[rv];
-
   FaceSlots& s = face_slots_[f.idx()];
-  if (s.count == count) {
-    // Same slots: rewrite in place, release the old references, report only a real change.
+  const bool same_slots = s.count == count;
+  if (same_slots && std::equal(new_indices_.begin(), new_indices_.end(), indices_.begin() + 3 * std::size_t(s.first)))
+    return;  // nothing changed (a render vertex made for a corner is then already in use)
+  // New references first, so that a render vertex kept by the face is not freed on the way.
+  for (Index rv : new_indices_) ++rv_refs_[rv];
+  if (same_slots) {
+    // Same slots: rewrite in place and release the old references.
     const std::size_t begin = 3 * std::size_t(s.first);
-    if (std::equal(new_indices_.begin(), new_indices_.end(), indices_.begin() + begin)) {
-      for (Index rv : new_indices_) --rv_refs_[rv];  // the same references again
-      return;
-    }
     for (std::size_t i = 0; i < new_indices_.size(); ++i) {
       const Index old = indices_[begin + i];
       indices_[begin + i] = new_indices_[i];
@@ -366,15 +373,9 @@ void RenderSync::sync_face(Face f) {
     mark_indices_written(static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(new_indices_.size()));
     return;
   }
-  if (s.count > 0) {  // the face's corner count changed: give it slots of the new size
-    const std::size_t begin = 3 * std::size_t(s.first), end = begin + 3 * std::size_t(s.count);
-    for (std::size_t i = begin; i < end; ++i) unref_vertex(indices_[i]);
-    free_triangles(s.first, s.count);
-    live_triangles_ -= s.count;
-  }
+  release_face(f);  // the face's corner count changed (or it is new): slots of the new size
   s.first = allocate_triangles(count);
   s.count = count;
-  live_triangles_ += count;
   std::copy(new_indices_.begin(), new_indices_.end(), indices_.begin() + 3 * std::size_t(s.first));
   mark_indices_written(3 * s.first, 3 * count);
 }
@@ -389,16 +390,7 @@ void RenderSync::update_normal(Vertex w) {
   std::sort(normal_faces_.begin(), normal_faces_.end());
   Vec3d sum{0, 0, 0};
   for (Face f : normal_faces_) sum += face_normal_sum(m, f);
-  const Vec3 n = to_float(normalize(sum));
-  vertex_normal_[w.idx()] = n;
-  Floats data;
-  for (Index rv = v_first_rv_[w.idx()]; rv != kInvalidIndex; rv = rv_next_[rv]) {
-    read_vertex(rv, data.data());
-    data[3] = options_.flip_x ? -n.x : n.x;
-    data[4] = n.y;
-    data[5] = n.z;
-    write_vertex(rv, data.data(), false);
-  }
+  vertex_normal_[w.idx()] = to_float(normalize(sum));
 }
 
 void RenderSync::recompute_normals(const ChangeLog::Pending& p) {
@@ -458,7 +450,6 @@ void RenderSync::full_build() {
   face_slots_.assign(m.faces_size(), FaceSlots{});
   free_triangles_.clear();
   free_triangle_count_ = 0;
-  live_triangles_ = 0;
   vertex_normal_.clear();
   normal_stamp_.clear();
   grow_element_arrays();
@@ -467,9 +458,7 @@ void RenderSync::full_build() {
   // Reserve for the common case: about one render vertex per vertex, n - 2 triangles per face.
   indices_.reserve(3 * m.n_faces());
   rv_vertex_.reserve(m.n_vertices());
-  for (int s = 0; s < 4; ++s)
-    if (stream_present(s) && (s == 0 || !layout_.interleaved))
-      streams_[s].reserve(m.n_vertices() * (layout_.interleaved ? layout_.stride : kStreamWidth[s]));
+  for (int s = 0; s < 4; ++s) streams_[s].reserve(m.n_vertices() * stored_width(s));
 
   if (computed_normals_) {
     // One Newell normal per face, added to its corners in increasing face order.
@@ -486,9 +475,14 @@ void RenderSync::full_build() {
   // A little room to grow after a full build; growth beyond it is geometric (grown_capacity).
   vertex_capacity_ = rv_vertex_.size() + rv_vertex_.size() / 16 + 64;
   index_capacity_ = indices_.size() + indices_.size() / 16 + 192;
+  report_full();
+  result_.faces_synced = m.n_faces();
+}
+
+void RenderSync::report_full() {
+  result_ = {};
   result_.full = true;
   result_.resized = true;
-  result_.faces_synced = m.n_faces();
   if (!rv_vertex_.empty()) result_.vertex_ranges.push_back({0, static_cast<std::uint32_t>(rv_vertex_.size())});
   if (!indices_.empty()) result_.index_ranges.push_back({0, static_cast<std::uint32_t>(indices_.size())});
   result_.vertices_synced = rv_vertex_.size();
@@ -497,9 +491,6 @@ void RenderSync::full_build() {
 }
 
 const SyncResult& RenderSync::rebuild() {
-  result_ = {};
-  written_vertices_.clear();
-  written_indices_.clear();
   full_build();
   mesh_->changes().consume(consumer_);
   return result_;
@@ -519,17 +510,11 @@ const SyncResult& RenderSync::sync() {
   written_vertices_.clear();
   written_indices_.clear();
 
+  // Moved vertices (and, with computed normals, every vertex whose normal was recomputed, moved
+  // ones included): rewrite the vertex-sourced floats of their render vertices.
   if (computed_normals_) recompute_normals(p);
-  // Moved vertices: rewrite the vertex-sourced floats of each of their render vertices.
-  Floats data;
-  for (Vertex v : p.vertices) {
-    if (!v.is_valid() || v.idx() >= m.vertices_size() || m.is_deleted(v)) continue;
-    for (Index rv = v_first_rv_[v.idx()]; rv != kInvalidIndex; rv = rv_next_[rv]) {
-      read_vertex(rv, data.data());
-      fill_vertex(v, Halfedge(), data.data());
-      write_vertex(rv, data.data(), false);
-    }
-  }
+  for (Vertex v : computed_normals_ ? std::span<const Vertex>(normal_seeds_) : p.vertices)
+    if (v.is_valid() && v.idx() < m.vertices_size() && !m.is_deleted(v)) rewrite_vertex_data(v);
   // Faces: removed ones free their slots first, so that new faces can reuse them. A polygon's
   // triangulation depends on its corner positions, so polygons about a moved vertex are redone.
   dirty_faces_.assign(p.faces.begin(), p.faces.end());
@@ -599,9 +584,7 @@ RenderRemap RenderSync::compact() {
     map.vertices[rv] = live;
     if (live != rv) {
       read_vertex(static_cast<Index>(rv), data.data());
-      building_ = true;
-      write_vertex(live, data.data(), true);
-      building_ = false;
+      store_vertex(live, data.data());
       rv_vertex_[live] = rv_vertex_[rv];
       rv_refs_[live] = rv_refs_[rv];
       rv_next_[live] = rv_next_[rv];
@@ -617,9 +600,7 @@ RenderRemap RenderSync::compact() {
     if (f != kInvalidIndex) f = map.vertices[f];
   for (Index& c : corner_rv_)
     if (c != kInvalidIndex) c = c < nv ? map.vertices[c] : kInvalidIndex;
-  for (int s = 0; s < 4; ++s)
-    if (stream_present(s) && (s == 0 || !layout_.interleaved))
-      streams_[s].resize(std::size_t(live) * (layout_.interleaved ? layout_.stride : kStreamWidth[s]));
+  resize_streams(live);
   free_vertices_.clear();
 
   // Triangles: pack the faces' ranges in their current order.
@@ -630,7 +611,7 @@ RenderRemap RenderSync::compact() {
     if (face_slots_[f].count > 0) order.push_back({face_slots_[f].first, static_cast<Index>(f)});
   std::sort(order.begin(), order.end());
   std::vector<std::uint32_t> packed;
-  packed.reserve(3 * live_triangles_);
+  packed.reserve(3 * live_triangle_count());
   for (const auto& [first, f] : order) {
     FaceSlots& s = face_slots_[f];
     const std::uint32_t to = static_cast<std::uint32_t>(packed.size() / 3);
@@ -643,15 +624,7 @@ RenderRemap RenderSync::compact() {
   indices_.swap(packed);
   free_triangles_.clear();
   free_triangle_count_ = 0;
-
-  result_ = {};
-  result_.full = true;
-  result_.resized = true;
-  if (!rv_vertex_.empty()) result_.vertex_ranges.push_back({0, static_cast<std::uint32_t>(rv_vertex_.size())});
-  if (!indices_.empty()) result_.index_ranges.push_back({0, static_cast<std::uint32_t>(indices_.size())});
-  result_.vertices_synced = rv_vertex_.size();
-  result_.vertex_bytes = rv_vertex_.size() * layout_.stride * sizeof(float);
-  result_.index_bytes = indices_.size() * sizeof(std::uint32_t);
+  report_full();
   return map;
 }
 

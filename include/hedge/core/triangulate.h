@@ -10,6 +10,14 @@
 
 namespace hedge {
 
+//! Adds the term of polygon edge a -> b to a Newell normal; summed over the edges of a polygon this
+//! gives twice its area times its unit normal (exact for planar polygons).
+inline void add_newell_term(Vec3d& n, const Vec3d& a, const Vec3d& b) {
+  n.x += (a.y - b.y) * (a.z + b.z);
+  n.y += (a.z - b.z) * (a.x + b.x);
+  n.z += (a.x - b.x) * (a.y + b.y);
+}
+
 //! Ear clipping of one polygon (corner positions p, in order) in its best-fit (Newell) plane, so
 //! concave faces triangulate correctly. Appends n - 2 corner-index triples to `tris`, in the
 //! polygon's orientation; falls back to a fan where no ear is found (self-intersecting input).

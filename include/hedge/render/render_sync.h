@@ -116,7 +116,7 @@ class RenderSync {
   std::size_t index_count() const { return indices_.size(); }
   //! Live render vertices and triangles (slots in use).
   std::size_t live_vertex_count() const { return vertex_count() - free_vertices_.size(); }
-  std::size_t live_triangle_count() const { return live_triangles_; }
+  std::size_t live_triangle_count() const { return indices_.size() / 3 - free_triangle_count_; }
   //! Sizes to allocate the GPU buffers at (render vertices, indices). The buffers grow within them
   //! without a reallocation; SyncResult::resized says when they grew beyond.
   std::size_t vertex_capacity() const { return vertex_capacity_; }
@@ -172,6 +172,13 @@ class RenderSync {
   };
   std::span<const float> stream(int i) const;
   bool stream_present(int s) const;
+  //! Floats per vertex held in streams_[s]: the whole vertex in stream 0 when interleaved, 0 for a
+  //! stream not stored.
+  std::uint32_t stored_width(int s) const;
+  void resize_streams(std::size_t n);
+  //! Grows `capacity` geometrically to hold n; a growth outside a full build is reported as resized.
+  void grow_capacity(std::size_t& capacity, std::size_t n);
+  void report_full();
   void attach_sources();
   void setup_layout();
   void grow_element_arrays();
@@ -180,7 +187,9 @@ class RenderSync {
   void release_face(Face f);
   void fill_vertex(Vertex v, Halfedge h, float* out) const;
   void read_vertex(Index rv, float* out) const;
-  void write_vertex(Index rv, const float* data, bool fresh);
+  void store_vertex(Index rv, const float* data);
+  //! Rewrites the vertex-sourced floats of v's render vertices, recording those that changed.
+  void rewrite_vertex_data(Vertex v);
   Index find_or_add_render_vertex(Halfedge corner);
   Index allocate_vertex();
   void unref_vertex(Index rv);
@@ -227,7 +236,6 @@ class RenderSync {
   std::vector<FaceSlots> face_slots_;
   std::vector<std::vector<std::uint32_t>> free_triangles_;  // by triangle count: first slots
   std::size_t free_triangle_count_ = 0;
-  std::size_t live_triangles_ = 0;
   std::size_t index_capacity_ = 0;
 
   // Scratch of sync_face, kept to avoid allocating per face.
