@@ -4,38 +4,39 @@
 
 namespace hedge {
 
-namespace {
 template <typename H>
-bool stamp_once(std::vector<std::uint32_t>& stamps, H h, std::uint32_t generation) {
+void ChangeLog::record(H h, std::uint32_t events, std::vector<std::uint32_t>& stamps, std::vector<H>& log) {
+  unnotified_ |= events;
+  for (Consumer& c : consumers_) c.events |= events;
+  if (consumers_.empty() || !h.is_valid()) return;
   const std::size_t i = h.idx();
   if (i >= stamps.size()) stamps.resize(std::max<std::size_t>(i + 1, stamps.size() * 3 / 2 + 16), 0);
-  if (stamps[i] == generation) return false;
-  stamps[i] = generation;
-  return true;
-}
-}  // namespace
-
-void ChangeLog::record_vertex(Vertex v, std::uint32_t events) {
-  unnotified_ |= events;
-  for (Consumer& c : consumers_) c.events |= events;
-  if (!consumers_.empty() && v.is_valid() && stamp_once(vertex_stamp_, v, generation_)) vertices_.push_back(v);
+  if (stamps[i] == generation_) return;  // logged already since the last read
+  stamps[i] = generation_;
+  log.push_back(h);
 }
 
-void ChangeLog::record_face(Face f, std::uint32_t events) {
-  unnotified_ |= events;
-  for (Consumer& c : consumers_) c.events |= events;
-  if (!consumers_.empty() && f.is_valid() && stamp_once(face_stamp_, f, generation_)) faces_.push_back(f);
+template void ChangeLog::record(Vertex, std::uint32_t, std::vector<std::uint32_t>&, std::vector<Vertex>&);
+template void ChangeLog::record(Face, std::uint32_t, std::vector<std::uint32_t>&, std::vector<Face>&);
+
+void ChangeLog::advance_generation() {
+  if (++generation_ == 0) {
+    std::fill(vertex_stamp_.begin(), vertex_stamp_.end(), 0);
+    std::fill(face_stamp_.begin(), face_stamp_.end(), 0);
+    generation_ = 1;
+  }
 }
 
 void ChangeLog::mark_reset() {
   if (!active()) return;
   unnotified_ |= kReset;
+  // Nothing logged so far matters any more to anyone: every consumer rebuilds.
   for (Consumer& c : consumers_) {
     c.reset = true;
     c.events |= kReset;
+    c.vertex_cursor = vertices_.size();
+    c.face_cursor = faces_.size();
   }
-  // Nothing logged so far matters any more to anyone: every consumer rebuilds.
-  for (Consumer& c : consumers_) c.vertex_cursor = vertices_.size(), c.face_cursor = faces_.size();
   compact_log();
 }
 
@@ -69,7 +70,7 @@ ChangeLog::ConsumerId ChangeLog::attach() {
   c.face_cursor = faces_.size();
   consumers_.push_back(c);
   // Marks made before this consumer existed must not suppress marks it needs to see.
-  ++generation_;
+  advance_generation();
   return c.id;
 }
 
@@ -107,11 +108,7 @@ void ChangeLog::consume(ConsumerId id) {
     c.reset = false;
   }
   // New marks must be logged again even if they were logged before this read.
-  if (++generation_ == 0) {
-    std::fill(vertex_stamp_.begin(), vertex_stamp_.end(), 0);
-    std::fill(face_stamp_.begin(), face_stamp_.end(), 0);
-    generation_ = 1;
-  }
+  advance_generation();
   compact_log();
 }
 

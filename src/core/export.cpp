@@ -1,7 +1,5 @@
 // to_indexed(): SurfaceMesh -> index buffers, with optional triangulation and winding flip.
 #include <algorithm>
-#include <cmath>
-#include <cstring>
 #include <unordered_map>
 
 #include "hedge/core/build.h"

@@ -588,9 +588,9 @@ Vertex split_face(SurfaceMesh& m, Face f, const Vec3& point) {
                           m.position(Vertex(corner_v[2])), point);
     w.assign(bc.begin(), bc.end());
   }
+  // add_vertex() stores the position; `point` may refer into the position array it may move.
   const Vertex v = m.add_vertex(point);
-  m.vertex_properties().interpolate(v.idx(), corner_v.data(), w.data(), n);
-  m.position(v) = point;
+  m.vertex_properties().interpolate(v.idx(), corner_v.data(), w.data(), n, m.positions().array());
 
   std::vector<Halfedge> out(n);  // out[i]: v -> u_i
   for (std::size_t i = 0; i < n; ++i) out[i] = m.new_edge(v, Vertex(corner_v[i]));
@@ -615,8 +615,7 @@ Vertex split_face(SurfaceMesh& m, Face f, const Vec3& point) {
     m.set_halfedge(fi, hs[i]);
   }
   m.set_halfedge(v, out[0]);
-  mark_faces_around(m, v, kFacesChanged | kFacesAdded | kVerticesAdded);
-  m.changes().notify();
+  mark_split(m, v);
   return v;
 }
 
@@ -801,15 +800,8 @@ bool can_remove_vertex(const SurfaceMesh& m, Vertex v) {
 bool remove_vertex(SurfaceMesh& m, Vertex v) {
   if (!can_remove_vertex(m, v)) return false;
   const std::vector<Face> fs = faces_of(m, v);
-  if (fs.empty()) {
-    // Isolated, or only dangling edges (not possible in a valid mesh): just the vertex.
-    m.set_halfedge(v, Halfedge());
-    m.mark_deleted(v);
-    m.mark_changed(v, kVerticesRemoved);
-    m.changes().notify();
-    return true;
-  }
-  remove_faces_impl(m, fs);
+  // An isolated vertex (or one with only dangling edges, impossible in a valid mesh) has no faces.
+  if (!fs.empty()) remove_faces_impl(m, fs);
   if (!m.is_deleted(v)) {
     m.set_halfedge(v, Halfedge());
     m.mark_deleted(v);

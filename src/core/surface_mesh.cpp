@@ -34,7 +34,8 @@ SurfaceMesh::SurfaceMesh(const SurfaceMesh& o)
 SurfaceMesh& SurfaceMesh::operator=(const SurfaceMesh& o) {
   if (this != &o) {
     SurfaceMesh copy(o);
-    *this = std::move(copy);
+    *this = std::move(copy);  // the change log keeps this mesh's consumers and marks a reset
+    changes_.notify();
   }
   return *this;
 }

@@ -115,6 +115,25 @@ TEST(ChangeLog, ResetClearsListsAndCopiesStartEmpty) {
   EXPECT_FALSE(log.pending(id).reset);
 }
 
+TEST(ChangeLog, ConsumersStayWithTheMeshObjectAcrossCopiesAndAssignments) {
+  SurfaceMesh a = build(test::grid(2, true));
+  const SurfaceMesh b = build(test::grid(3, true));
+  const auto id = a.changes().attach();
+  int heard = 0;
+  a.changes().subscribe(kReset, [&](std::uint32_t) { ++heard; });
+  SurfaceMesh copy(a);  // a new object: nobody watches it
+  EXPECT_FALSE(copy.changes().active());
+  a = b;  // a's watchers stay and learn that everything changed
+  EXPECT_TRUE(a.changes().active());
+  EXPECT_TRUE(a.changes().pending(id).reset);
+  EXPECT_EQ(heard, 1);
+  a.changes().consume(id);
+  SurfaceMesh moved(std::move(a));  // the data leaves a: a's watchers see a reset, moved has none
+  EXPECT_FALSE(moved.changes().active());
+  EXPECT_TRUE(a.changes().pending(id).reset);
+  EXPECT_TRUE(moved.validate().empty());
+}
+
 // The operations mark what they touch.
 TEST(ChangeLog, OperationsMarkTheFacesTheyTouch) {
   SurfaceMesh m = build(test::grid(4, true));

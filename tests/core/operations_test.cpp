@@ -169,6 +169,20 @@ TEST(SplitEdge, PointInsideThePositionArray) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+TEST(SplitFace, PointInsideThePositionArray) {
+  // As for split_edge: the point may be a reference into the position array that grows.
+  SurfaceMesh m = textured_grid(2, true);
+  for (int i = 0; i < 200; ++i) {
+    const Face f(static_cast<Index>(i % m.faces_size()));
+    const Vertex corner = m.to_vertex(m.halfedge(f));
+    const Vec3 expected = m.position(corner);
+    const Vertex v = split_face(m, f, m.position(corner));
+    ASSERT_TRUE(v.is_valid());
+    EXPECT_EQ(m.position(v), expected);
+  }
+  EXPECT_TRUE(m.validate().empty());
+}
+
 TEST(Collapse, InteriorEdgeKeepsTheChosenVertex) {
   SurfaceMesh m = textured_grid(4, true);
   Counts before = counts(m);

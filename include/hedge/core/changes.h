@@ -51,20 +51,31 @@ class ChangeLog {
     bool empty() const { return vertices.empty() && faces.empty() && events == 0 && !reset; }
   };
 
+  // Consumers and subscribers watch one mesh object, so they never travel with its data: a mesh
+  // made by copy or move starts with none, and a mesh assigned to (or moved from) keeps its own and
+  // marks a reset, because all its contents changed.
   ChangeLog() = default;
-  //! A copied mesh starts with no consumers and nothing pending.
   ChangeLog(const ChangeLog&) {}
-  ChangeLog& operator=(const ChangeLog&) { return *this; }
-  ChangeLog(ChangeLog&&) noexcept = default;
-  ChangeLog& operator=(ChangeLog&&) noexcept = default;
+  ChangeLog(ChangeLog&& other) noexcept { other.mark_reset(); }
+  ChangeLog& operator=(const ChangeLog&) {
+    mark_reset();
+    return *this;
+  }
+  ChangeLog& operator=(ChangeLog&& other) noexcept {
+    if (this != &other) {
+      mark_reset();
+      other.mark_reset();
+    }
+    return *this;
+  }
 
   // ---- Recording (called by edits). ----
   bool active() const { return !consumers_.empty() || !subscribers_.empty(); }
   void mark(Vertex v, std::uint32_t events) {
-    if (active()) record_vertex(v, events);
+    if (active()) record(v, events, vertex_stamp_, vertices_);
   }
   void mark(Face f, std::uint32_t events) {
-    if (active()) record_face(f, events);
+    if (active()) record(f, events, face_stamp_, faces_);
   }
   //! Everything changed: consumers rebuild from scratch.
   void mark_reset();
@@ -102,8 +113,10 @@ class ChangeLog {
     std::uint32_t mask;
     Callback fn;
   };
-  void record_vertex(Vertex v, std::uint32_t events);
-  void record_face(Face f, std::uint32_t events);
+  template <typename H>
+  void record(H h, std::uint32_t events, std::vector<std::uint32_t>& stamps, std::vector<H>& log);
+  //! Starts a new generation, so that elements are logged again (stamps cleared on wrap-around).
+  void advance_generation();
   void compact_log();
 
   std::vector<Vertex> vertices_;
