@@ -31,7 +31,7 @@ extern "C" {
 
 hedge_status hedge_can_split_edge(const hedge_mesh* mesh, uint32_t edge, int32_t* out_ok) {
   return element_query<Edge>(mesh, edge, out_ok, "out_ok",
-                      [](const SurfaceMesh& m, Edge x) { return can_split_edge(m, x) ? 1 : 0; });
+                             [](const SurfaceMesh& m, Edge x) { return can_split_edge(m, x) ? 1 : 0; });
 }
 
 hedge_status hedge_split_edge(hedge_mesh* mesh, uint32_t edge, float x, float y, float z,
@@ -42,7 +42,6 @@ hedge_status hedge_split_edge(hedge_mesh* mesh, uint32_t edge, float x, float y,
     const Edge e = live_edge(m, edge);
     const Vec3 p = need_point(x, y, z);
     need(out_vertex, "out_vertex");
-    if (!can_split_edge(m, e)) refused("split_edge of " + name("edge", edge));
     const Vertex v = split_edge(m, e, p);
     if (!v.is_valid()) refused("split_edge of " + name("edge", edge));
     *out_vertex = v.idx();
@@ -51,7 +50,7 @@ hedge_status hedge_split_edge(hedge_mesh* mesh, uint32_t edge, float x, float y,
 
 hedge_status hedge_can_collapse(const hedge_mesh* mesh, uint32_t halfedge, int32_t* out_ok) {
   return element_query<Halfedge>(mesh, halfedge, out_ok, "out_ok",
-                      [](const SurfaceMesh& m, Halfedge x) { return can_collapse(m, x) ? 1 : 0; });
+                                 [](const SurfaceMesh& m, Halfedge x) { return can_collapse(m, x) ? 1 : 0; });
 }
 
 hedge_status hedge_collapse(hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_vertex) {
@@ -60,7 +59,6 @@ hedge_status hedge_collapse(hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_v
     SurfaceMesh& m = object->mesh;
     const Halfedge h = live_halfedge(m, halfedge);
     need(out_vertex, "out_vertex");
-    if (!can_collapse(m, h)) refused("collapse of " + name("halfedge", halfedge));
     const Vertex v = collapse(m, h);
     if (!v.is_valid()) refused("collapse of " + name("halfedge", halfedge));
     *out_vertex = v.idx();
@@ -69,7 +67,7 @@ hedge_status hedge_collapse(hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_v
 
 hedge_status hedge_can_flip(const hedge_mesh* mesh, uint32_t edge, int32_t* out_ok) {
   return element_query<Edge>(mesh, edge, out_ok, "out_ok",
-                      [](const SurfaceMesh& m, Edge x) { return can_flip(m, x) ? 1 : 0; });
+                             [](const SurfaceMesh& m, Edge x) { return can_flip(m, x) ? 1 : 0; });
 }
 
 hedge_status hedge_flip(hedge_mesh* mesh, uint32_t edge) {
@@ -77,14 +75,13 @@ hedge_status hedge_flip(hedge_mesh* mesh, uint32_t edge) {
     auto object = find_mesh(mesh);
     SurfaceMesh& m = object->mesh;
     const Edge e = live_edge(m, edge);
-    if (!can_flip(m, e)) refused("flip of " + name("edge", edge));
     if (!flip(m, e).is_valid()) refused("flip of " + name("edge", edge));
   });
 }
 
 hedge_status hedge_can_split_face(const hedge_mesh* mesh, uint32_t face, int32_t* out_ok) {
   return element_query<Face>(mesh, face, out_ok, "out_ok",
-                      [](const SurfaceMesh& m, Face x) { return can_split_face(m, x) ? 1 : 0; });
+                             [](const SurfaceMesh& m, Face x) { return can_split_face(m, x) ? 1 : 0; });
 }
 
 hedge_status hedge_split_face(hedge_mesh* mesh, uint32_t face, float x, float y, float z,
@@ -95,7 +92,6 @@ hedge_status hedge_split_face(hedge_mesh* mesh, uint32_t face, float x, float y,
     const Face f = live_face(m, face);
     const Vec3 p = need_point(x, y, z);
     need(out_vertex, "out_vertex");
-    if (!can_split_face(m, f)) refused("split_face of " + name("face", face));
     const Vertex v = split_face(m, f, p);
     if (!v.is_valid()) refused("split_face of " + name("face", face));
     *out_vertex = v.idx();
@@ -122,7 +118,6 @@ hedge_status hedge_split_face_diagonal(hedge_mesh* mesh, uint32_t halfedge0, uin
     need(out_halfedge, "out_halfedge");
     const std::string what =
         "split_face_diagonal of " + name("halfedge", halfedge0) + " and " + std::to_string(halfedge1);
-    if (!can_split_face(m, h0, h1)) refused(what);
     const Halfedge h = split_face(m, h0, h1);
     if (!h.is_valid()) refused(what);
     *out_halfedge = h.idx();
@@ -170,7 +165,6 @@ hedge_status hedge_add_face(hedge_mesh* mesh, const uint32_t* vertices, uint32_t
     need(out_face, "out_face");
     std::string what = "add_face of";
     for (Vertex v : corners) what.append(" ").append(std::to_string(v.idx()));
-    if (!can_add_face(m, corners)) refused(what);
     const Face f = add_face(m, corners);
     if (!f.is_valid()) refused(what);
     *out_face = f.idx();
@@ -179,7 +173,7 @@ hedge_status hedge_add_face(hedge_mesh* mesh, const uint32_t* vertices, uint32_t
 
 hedge_status hedge_can_remove_face(const hedge_mesh* mesh, uint32_t face, int32_t* out_ok) {
   return element_query<Face>(mesh, face, out_ok, "out_ok",
-                      [](const SurfaceMesh& m, Face x) { return can_remove_face(m, x) ? 1 : 0; });
+                             [](const SurfaceMesh& m, Face x) { return can_remove_face(m, x) ? 1 : 0; });
 }
 
 hedge_status hedge_remove_face(hedge_mesh* mesh, uint32_t face) {
@@ -187,13 +181,14 @@ hedge_status hedge_remove_face(hedge_mesh* mesh, uint32_t face) {
     auto object = find_mesh(mesh);
     SurfaceMesh& m = object->mesh;
     const Face f = live_face(m, face);
-    if (!can_remove_face(m, f) || !remove_face(m, f)) refused("remove_face of " + name("face", face));
+    if (!remove_face(m, f)) refused("remove_face of " + name("face", face));
   });
 }
 
 hedge_status hedge_can_remove_vertex(const hedge_mesh* mesh, uint32_t vertex, int32_t* out_ok) {
-  return element_query<Vertex>(mesh, vertex, out_ok, "out_ok",
-                      [](const SurfaceMesh& m, Vertex x) { return can_remove_vertex(m, x) ? 1 : 0; });
+  return element_query<Vertex>(mesh, vertex, out_ok, "out_ok", [](const SurfaceMesh& m, Vertex x) {
+    return can_remove_vertex(m, x) ? 1 : 0;
+  });
 }
 
 hedge_status hedge_remove_vertex(hedge_mesh* mesh, uint32_t vertex) {
@@ -201,8 +196,7 @@ hedge_status hedge_remove_vertex(hedge_mesh* mesh, uint32_t vertex) {
     auto object = find_mesh(mesh);
     SurfaceMesh& m = object->mesh;
     const Vertex v = live_vertex(m, vertex);
-    if (!can_remove_vertex(m, v) || !remove_vertex(m, v))
-      refused("remove_vertex of " + name("vertex", vertex));
+    if (!remove_vertex(m, v)) refused("remove_vertex of " + name("vertex", vertex));
   });
 }
 

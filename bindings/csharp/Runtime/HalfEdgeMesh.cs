@@ -26,7 +26,6 @@ namespace Hedge
     public sealed class HalfEdgeMesh : IDisposable
     {
         const int Refused = (int)HedgeStatus.Refused;
-        const int BufferTooSmall = (int)HedgeStatus.BufferTooSmall;
         static readonly string[] NoProblems = new string[0];
 
         readonly MeshHandle handle;
@@ -271,18 +270,9 @@ namespace Hedge
         {
             ulong count;
             int status = Native.hedge_mesh_copy_positions(id, buffer, buffer != null ? (ulong)buffer.Length : 0, out count);
-            return Filled(status, buffer == null, count);
+            return Status.Filled(status, buffer == null, count);
         }
 
-        // The count of a "caller buffer" call, or the exception for its status. A null buffer asks for
-        // the count: BUFFER_TOO_SMALL is then the expected answer.
-        static int Filled(int status, bool sizeQuery, ulong count)
-        {
-            if (status != 0 && !(sizeQuery && status == BufferTooSmall)) throw Status.Failure(status);
-            return (int)count;
-        }
-
-        static uint Capacity(Array buffer) { return buffer != null ? (uint)buffer.Length : 0u; }
 
         // =========================================================================================
         // Adjacency (O(1) unless noted)
@@ -465,32 +455,32 @@ namespace Hedge
         public int GetVertexHalfEdges(Vertex v, HalfEdge[] result)
         {
             uint count;
-            int status = Native.hedge_vertex_halfedges(id, v.Index, result, Capacity(result), out count);
-            return Filled(status, result == null, count);
+            int status = Native.hedge_vertex_halfedges(id, v.Index, result, Status.Capacity(result), out count);
+            return Status.Filled(status, result == null, count);
         }
 
         /// <summary>Neighbour vertices (the targets of the outgoing half-edges, same order).</summary>
         public int GetVertexNeighbours(Vertex v, Vertex[] result)
         {
             uint count;
-            int status = Native.hedge_vertex_vertices(id, v.Index, result, Capacity(result), out count);
-            return Filled(status, result == null, count);
+            int status = Native.hedge_vertex_vertices(id, v.Index, result, Status.Capacity(result), out count);
+            return Status.Filled(status, result == null, count);
         }
 
         /// <summary>Faces around the vertex (boundary gaps skipped).</summary>
         public int GetVertexFaces(Vertex v, Face[] result)
         {
             uint count;
-            int status = Native.hedge_vertex_faces(id, v.Index, result, Capacity(result), out count);
-            return Filled(status, result == null, count);
+            int status = Native.hedge_vertex_faces(id, v.Index, result, Status.Capacity(result), out count);
+            return Status.Filled(status, result == null, count);
         }
 
         /// <summary>Corners of the face in order (counter-clockwise), starting at the target of GetHalfEdge(f).</summary>
         public int GetFaceVertices(Face f, Vertex[] result)
         {
             uint count;
-            int status = Native.hedge_face_vertices(id, f.Index, result, Capacity(result), out count);
-            return Filled(status, result == null, count);
+            int status = Native.hedge_face_vertices(id, f.Index, result, Status.Capacity(result), out count);
+            return Status.Filled(status, result == null, count);
         }
 
         /// <summary>Half-edges of the face in order, starting at GetHalfEdge(f); the i-th enters the i-th
@@ -498,8 +488,8 @@ namespace Hedge
         public int GetFaceHalfEdges(Face f, HalfEdge[] result)
         {
             uint count;
-            int status = Native.hedge_face_halfedges(id, f.Index, result, Capacity(result), out count);
-            return Filled(status, result == null, count);
+            int status = Native.hedge_face_halfedges(id, f.Index, result, Status.Capacity(result), out count);
+            return Status.Filled(status, result == null, count);
         }
 
         // =========================================================================================
@@ -671,7 +661,7 @@ namespace Hedge
         public int SplitAllFaces(Vertex[] newVertices = null)
         {
             uint count;
-            Status.Check(Native.hedge_split_all_faces(id, newVertices, Capacity(newVertices), out count));
+            Status.Check(Native.hedge_split_all_faces(id, newVertices, Status.Capacity(newVertices), out count));
             return (int)count;
         }
 
@@ -714,7 +704,7 @@ namespace Hedge
         public int FillHole(HalfEdge h, Face[] newFaces = null)
         {
             uint count;
-            return WasRefused(Native.hedge_fill_hole(id, h.Index, newFaces, Capacity(newFaces), out count)) ? 0 : (int)count;
+            return WasRefused(Native.hedge_fill_hole(id, h.Index, newFaces, Status.Capacity(newFaces), out count)) ? 0 : (int)count;
         }
 
         /// <summary>Moves the faces out of this mesh into a new mesh, with all their properties. Vertices the
@@ -728,7 +718,7 @@ namespace Hedge
             CheckSpan(faces, count, "faces");
             uint originCount;
             IntPtr mesh;
-            int status = Native.hedge_detach_faces(id, faces, (uint)count, vertexOrigin, Capacity(vertexOrigin),
+            int status = Native.hedge_detach_faces(id, faces, (uint)count, vertexOrigin, Status.Capacity(vertexOrigin),
                                                    out originCount, out mesh);
             return Created(status, mesh);
         }
@@ -747,9 +737,9 @@ namespace Hedge
                                       Face[] faceMap = null)
         {
             pendingRenders.Drain();
-            Status.Check(Native.hedge_mesh_garbage_collection(id, vertexMap, Capacity(vertexMap), halfEdgeMap,
-                                                              Capacity(halfEdgeMap), edgeMap, Capacity(edgeMap),
-                                                              faceMap, Capacity(faceMap)));
+            Status.Check(Native.hedge_mesh_garbage_collection(id, vertexMap, Status.Capacity(vertexMap), halfEdgeMap,
+                                                              Status.Capacity(halfEdgeMap), edgeMap, Status.Capacity(edgeMap),
+                                                              faceMap, Status.Capacity(faceMap)));
         }
 
         // =========================================================================================
@@ -768,7 +758,7 @@ namespace Hedge
             {
                 uint size;
                 int status = Native.hedge_mesh_validation_problem(id, i, null, 0, out size);
-                if (status != BufferTooSmall) Status.Check(status);
+                if (status != Status.BufferTooSmall) Status.Check(status);
                 var text = new byte[size];
                 Status.Check(Native.hedge_mesh_validation_problem(id, i, text, size, out size));
                 problems[i] = Status.FromUtf8(text);

@@ -62,6 +62,19 @@ namespace Hedge
             if (status != 0) throw Failure(status);
         }
 
+        internal const int BufferTooSmall = (int)HedgeStatus.BufferTooSmall;
+
+        /// <summary>The count of a "caller buffer" call, or the exception for its status. A null buffer asks
+        /// for the count: BUFFER_TOO_SMALL is then the expected answer.</summary>
+        internal static int Filled(int status, bool sizeQuery, ulong count)
+        {
+            if (status != 0 && !(sizeQuery && status == BufferTooSmall)) throw Failure(status);
+            return (int)count;
+        }
+
+        /// <summary>The capacity to pass for a caller buffer: its length, 0 for null.</summary>
+        internal static uint Capacity(Array buffer) { return buffer != null ? (uint)buffer.Length : 0u; }
+
         /// <summary>The exception for a failed status, with the thread's last error message. Call it right
         /// after the failed native call: the next call clears the message.</summary>
         internal static HedgeException Failure(int status)

@@ -26,7 +26,6 @@ namespace Hedge
     /// <summary>Vertex and index buffers that follow the edits of a <see cref="HalfEdgeMesh"/>.</summary>
     public sealed class RenderBuffers : IDisposable
     {
-        const int BufferTooSmall = (int)HedgeStatus.BufferTooSmall;
 
         readonly RenderHandle handle;
         readonly IntPtr id;
@@ -142,8 +141,8 @@ namespace Hedge
         public int GetDirtyVertexRanges(SlotRange[] result)
         {
             uint count;
-            int status = Native.hedge_render_dirty_vertex_ranges(id, result, Capacity(result), out count);
-            return Filled(status, result == null, count);
+            int status = Native.hedge_render_dirty_vertex_ranges(id, result, Status.Capacity(result), out count);
+            return Status.Filled(status, result == null, count);
         }
 
         /// <summary>The index-buffer ranges (in indices, not triangles) the last sync, commit or rebuild
@@ -151,11 +150,11 @@ namespace Hedge
         public int GetDirtyIndexRanges(SlotRange[] result)
         {
             uint count;
-            int status = Native.hedge_render_dirty_index_ranges(id, result, Capacity(result), out count);
-            return Filled(status, result == null, count);
+            int status = Native.hedge_render_dirty_index_ranges(id, result, Status.Capacity(result), out count);
+            return Status.Filled(status, result == null, count);
         }
 
-        /// <summary>Removes the free slots by moving the last live slots into them; upload both buffers again
+        /// <summary>Removes the free slots by packing the live slots in their current order; upload both buffers again
         /// afterwards. Outside a transaction it syncs pending edits first. Each map is optional (null): old
         /// render-vertex slot -> new slot, old triangle slot -> new triangle slot (freed slots map to
         /// 0xFFFFFFFF); they must hold the vertex count and index count / 3 of <see cref="Counts"/> after that
@@ -163,8 +162,8 @@ namespace Hedge
         public void Compact(uint[] vertexMap = null, uint[] triangleMap = null)
         {
             uint vertexCount, triangleCount;
-            Status.Check(Native.hedge_render_compact(id, vertexMap, Capacity(vertexMap), out vertexCount, triangleMap,
-                                                     Capacity(triangleMap), out triangleCount));
+            Status.Check(Native.hedge_render_compact(id, vertexMap, Status.Capacity(vertexMap), out vertexCount, triangleMap,
+                                                     Status.Capacity(triangleMap), out triangleCount));
         }
 
         // =========================================================================================
@@ -179,7 +178,7 @@ namespace Hedge
             ulong count;
             int status = Native.hedge_render_copy_vertex_data(id, (int)stream, buffer,
                                                               buffer != null ? (ulong)buffer.Length : 0, out count);
-            return Filled(status, buffer == null, count);
+            return Status.Filled(status, buffer == null, count);
         }
 
         /// <summary>Copies the <see cref="VertexStream.Vertices"/> stream.</summary>
@@ -191,7 +190,7 @@ namespace Hedge
             ulong count;
             int status = Native.hedge_render_copy_index_data(id, buffer, buffer != null ? (ulong)buffer.Length : 0,
                                                              out count);
-            return Filled(status, buffer == null, count);
+            return Status.Filled(status, buffer == null, count);
         }
 
         /// <summary>Copies the index buffer into an int array (Unity's Mesh.triangles type).</summary>
@@ -200,7 +199,7 @@ namespace Hedge
             ulong count;
             int status = Native.hedge_render_copy_index_data_int(id, buffer, buffer != null ? (ulong)buffer.Length : 0,
                                                                  out count);
-            return Filled(status, buffer == null, count);
+            return Status.Filled(status, buffer == null, count);
         }
 
         // =========================================================================================
@@ -342,7 +341,7 @@ namespace Hedge
                 int status = vertices
                                  ? Native.hedge_render_dirty_vertex_ranges(id, ranges, (uint)ranges.Length, out count)
                                  : Native.hedge_render_dirty_index_ranges(id, ranges, (uint)ranges.Length, out count);
-                if (status == BufferTooSmall)
+                if (status == Status.BufferTooSmall)
                 {
                     ranges = new SlotRange[Math.Max((int)count, 2 * ranges.Length)];
                     continue;
@@ -401,8 +400,8 @@ namespace Hedge
         public int CopyVertexSource(Vertex[] result)
         {
             uint count;
-            int status = Native.hedge_render_vertex_source(id, result, Capacity(result), out count);
-            return Filled(status, result == null, count);
+            int status = Native.hedge_render_vertex_source(id, result, Status.Capacity(result), out count);
+            return Status.Filled(status, result == null, count);
         }
 
         /// <summary>The render vertex of the corner the half-edge enters; 0xFFFFFFFF for a boundary half-edge.</summary>
@@ -421,13 +420,5 @@ namespace Hedge
             Status.Check(Native.hedge_render_face_triangles(id, f.Index, out first, out count));
             return new SlotRange(first, count);
         }
-
-        static int Filled(int status, bool sizeQuery, ulong count)
-        {
-            if (status != 0 && !(sizeQuery && status == BufferTooSmall)) throw Status.Failure(status);
-            return (int)count;
-        }
-
-        static uint Capacity(Array buffer) { return buffer != null ? (uint)buffer.Length : 0u; }
     }
 }
