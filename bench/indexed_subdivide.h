@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "hedge/core/indexed_mesh.h"
@@ -40,6 +41,18 @@ inline hedge::IndexedMesh subdivide(const hedge::IndexedMesh& in) {
     out.texcoord_indices.insert(out.texcoord_indices.end(), {ta, tab, tca, tab, tb, tbc, tca, tbc, tc, tab, tbc, tca});
   }
   return out;
+}
+
+//! Subdivides until the mesh has at least `min_faces` triangles; returns the number of rounds.
+//! \throw std::invalid_argument for a mesh without faces (which would never get there).
+inline int subdivide_until(hedge::IndexedMesh& mesh, std::size_t min_faces) {
+  int rounds = 0;
+  while (mesh.indices.size() / 3 < min_faces) {
+    if (mesh.indices.empty()) throw std::invalid_argument("the mesh has no faces to subdivide");
+    mesh = subdivide(mesh);
+    ++rounds;
+  }
+  return rounds;
 }
 
 }  // namespace bench

@@ -109,11 +109,7 @@ Workload load_workload(const fs::path& root, std::string mesh_path, std::size_t 
   IndexedMesh in = io::read_indexed_file(mesh_path);
   if (!in.is_triangles()) in = to_indexed(build(in), {.triangulation = Triangulation::fan});
   w.name = fs::path(mesh_path).filename().string();
-  int levels = 0;
-  while (in.indices.size() / 3 < min_faces) {
-    in = bench::subdivide(in);
-    ++levels;
-  }
+  const int levels = bench::subdivide_until(in, min_faces);
   if (levels > 0) w.name += " subdivided x" + std::to_string(levels);
   w.indexed = std::move(in);
   w.mesh = build(w.indexed);

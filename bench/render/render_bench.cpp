@@ -46,12 +46,8 @@ std::unique_ptr<Workload> load(const std::string& path, std::size_t min_faces) {
   IndexedMesh in = io::read_indexed_file(path);
   in.normals.clear();
   in.normal_indices.clear();
-  if (!in.face_sizes.empty()) throw Error(path + ": the render benchmark expects a triangle mesh");
-  int levels = 0;
-  while (in.indices.size() / 3 < min_faces) {
-    in = bench::subdivide(in);
-    ++levels;
-  }
+  if (!in.is_triangles()) throw Error(path + ": the render benchmark expects a triangle mesh");
+  const int levels = bench::subdivide_until(in, min_faces);
   auto w = std::make_unique<Workload>();
   w->name = fs::path(path).filename().string();
   if (levels > 0) w->name += " x" + std::to_string(1 << (2 * levels));

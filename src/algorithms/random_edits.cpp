@@ -153,6 +153,9 @@ RandomEditReport random_edits(SurfaceMesh& m, const RandomEditOptions& opt) {
       }
     }
   }
+  // The last operation was checked in the loop already when validate_every divides the count.
+  const bool checked_last = opt.validate_every && opt.operations % opt.validate_every == 0;
+  if (!opt.validate_at_end || checked_last) return rep;
   auto problems = m.validate();
   if (!problems.empty()) {
     rep.valid = false;

@@ -203,15 +203,6 @@ inline void compact_face_sizes(IndexedMesh& mesh) {
     mesh.face_sizes.clear();
 }
 
-//! Grows a vector's capacity for `claimed` elements from an untrusted header, but never beyond what
-//! `bytes_left` bytes of input could possibly hold at `min_bytes_each` bytes per element.
-template <typename T>
-void reserve_capped(std::vector<T>& v, std::uint64_t claimed, std::uint64_t bytes_left,
-                    std::uint64_t min_bytes_each) {
-  const std::uint64_t cap = bytes_left / std::max<std::uint64_t>(min_bytes_each, 1);
-  v.reserve(v.size() + static_cast<std::size_t>(std::min(claimed, cap)));
-}
-
 // ---------------------------------------------------------------------------------------------------
 // Binary access.
 

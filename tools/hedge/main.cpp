@@ -6,7 +6,6 @@
 #include <string>
 
 #include "commands.h"
-#include "hedge/error.h"
 
 #ifndef HEDGE_VERSION
 #define HEDGE_VERSION "unknown"
@@ -57,8 +56,6 @@ int main(int argc, char** argv) {
       if (command.app->parsed()) return command.run();
     }
     return report_error("no subcommand given (see 'hedge --help')", kExitUsage);
-  } catch (const hedge::Error& e) {
-    return report_error(e.what(), kExitDataError);
   } catch (const std::bad_alloc&) {
     return report_error("out of memory", kExitDataError);
   } catch (const std::exception& e) {

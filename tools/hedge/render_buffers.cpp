@@ -43,10 +43,10 @@ int run_render_buffers(const RenderBuffersOptions& options) {
   ro.interleaved = !options.separate;
   RenderSync rs(mesh, ro);
   const VertexLayout layout = rs.layout();
-  const std::size_t used_vertices = rs.live_vertex_count() - rs.seam_splits();
+  const std::size_t seams = rs.seam_splits();
+  const std::size_t used_vertices = rs.live_vertex_count() - seams;
   const std::size_t full_bytes = rs.buffer_bytes();
   const std::size_t start_vertices = rs.live_vertex_count(), start_triangles = rs.live_triangle_count();
-  const std::size_t seams = rs.seam_splits();
 
   // Random edits, one sync after each.
   std::vector<double> bytes;
@@ -56,6 +56,7 @@ int run_render_buffers(const RenderBuffersOptions& options) {
     edit.seed = options.seed * 1000003u + i;
     edit.operations = 1;
     edit.collect_every = 0;
+    edit.validate_at_end = false;  // validated once, after the sample
     const RandomEditReport r = random_edits(mesh, edit);
     applied += r.total_applied();
     const SyncResult& s = rs.sync();

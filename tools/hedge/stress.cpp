@@ -62,7 +62,9 @@ int run_stress(const StressOptions& options) {
     std::cout << "final: " << mesh.n_vertices() << " vertices, " << mesh.n_edges() << " edges, " << mesh.n_faces()
               << " faces\n";
     if (r.valid) {
-      std::cout << "valid after every " << (options.validate_every ? "checked " : "") << "operation";
+      if (options.validate_every == 1) std::cout << "valid after every operation";
+      else if (options.validate_every == 0) std::cout << "valid at the end";
+      else std::cout << "valid after every " << options.validate_every << "th operation and at the end";
       std::cout << (r.euler_mismatches ? ", but the Euler characteristic changed unexpectedly " +
                                              std::to_string(r.euler_mismatches) + " times\n"
                                        : "\n");

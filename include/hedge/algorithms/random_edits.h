@@ -29,6 +29,9 @@ struct RandomEditOptions {
   std::size_t operations = 1000;
   //! Run validate() after every n-th operation (1: after each); 0 validates only at the end.
   std::size_t validate_every = 0;
+  //! Validate once after the last operation (skipped when validate_every just did). A caller that
+  //! drives one operation per call and validates itself turns this off.
+  bool validate_at_end = true;
   //! Compact with garbage_collection() after every n-th operation; 0 never.
   std::size_t collect_every = 5000;
 };
