@@ -183,7 +183,7 @@ inline std::int64_t now_ns() {
 
 // ---- Inputs (bench_input.cpp; these use hedge's readers). ----
 
-//! Reads a triangle mesh file through hedge::io::read_indexed_file (PLY tristrips are decoded
+//! Reads a triangle mesh file through hedge::read_indexed_file (PLY tristrips are decoded
 //! there). Throws std::runtime_error for a file with non-triangle faces.
 Input load_input(const std::string& path);
 //! 1-to-4 midpoint subdivision on the index arrays (edge midpoints shared between the two faces).

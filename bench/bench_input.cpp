@@ -14,7 +14,7 @@ namespace bench {
 namespace fs = std::filesystem;
 
 Input load_input(const std::string& path) {
-  hedge::IndexedMesh m = hedge::io::read_indexed_file(path);
+  hedge::IndexedMesh m = hedge::read_indexed_file(path);
   if (!m.is_triangles()) {
     bool all_tri = std::all_of(m.face_sizes.begin(), m.face_sizes.end(), [](std::uint32_t s) { return s == 3; });
     if (!all_tri) throw std::runtime_error(path + ": not a triangle mesh");

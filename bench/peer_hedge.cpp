@@ -88,7 +88,7 @@ double collapse_op(Context& c) {
   EditRng rng;
   std::size_t done = 0;
   for (std::size_t k = 0; k < kEditCount; ++k) {
-    const std::size_t n = m.halfedges_size();
+    const std::size_t n = m.halfedge_slots();
     const std::size_t i =
         rng.live_index(n, [&](std::size_t j) { return m.is_deleted(hedge::Halfedge(static_cast<hedge::Index>(j))); });
     if (i == n) continue;
@@ -104,7 +104,7 @@ double split_op(Context& c) {
   hedge::SurfaceMesh& m = edit_mesh(c);
   EditRng rng;
   for (std::size_t k = 0; k < kEditCount; ++k) {
-    const std::size_t n = m.edges_size();
+    const std::size_t n = m.edge_slots();
     const std::size_t i =
         rng.live_index(n, [&](std::size_t j) { return m.is_deleted(hedge::Edge(static_cast<hedge::Index>(j))); });
     if (i == n) continue;
@@ -124,7 +124,7 @@ double flip_op(Context& c) {
   EditRng rng;
   std::size_t done = 0;
   for (std::size_t k = 0; k < kEditCount; ++k) {
-    const std::size_t n = m.edges_size();
+    const std::size_t n = m.edge_slots();
     const std::size_t i =
         rng.live_index(n, [&](std::size_t j) { return m.is_deleted(hedge::Edge(static_cast<hedge::Index>(j))); });
     if (i == n) continue;

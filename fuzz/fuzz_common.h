@@ -37,16 +37,16 @@ inline bool same_geometry(const IndexedMesh& a, const IndexedMesh& b) {
          a.indices == b.indices && a.face_sizes == b.face_sizes;
 }
 
-inline int run(const std::uint8_t* data, std::size_t size, io::Format format) {
+inline int run(const std::uint8_t* data, std::size_t size, FileFormat format) {
   IndexedMesh mesh;
   try {
-    mesh = io::read_indexed(std::string_view(reinterpret_cast<const char*>(data), size), format, "fuzz");
+    mesh = read_indexed(std::string_view(reinterpret_cast<const char*>(data), size), format, "fuzz");
   } catch (const Error&) {
     return 0;  // rejecting bad input with hedge's exception is the expected outcome
   }
   check_invariants(mesh);
   // What a reader accepted, its writer must reproduce exactly.
-  const IndexedMesh back = io::read_indexed(io::write_indexed(mesh, format), format, "fuzz round trip");
+  const IndexedMesh back = read_indexed(write_indexed(mesh, format), format, "fuzz round trip");
   require(same_geometry(mesh, back));
   return 0;
 }

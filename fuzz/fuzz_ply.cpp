@@ -2,5 +2,5 @@
 #include "fuzz_common.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return hedge::fuzz::run(data, size, hedge::io::Format::ply);
+  return hedge::fuzz::run(data, size, hedge::FileFormat::ply);
 }

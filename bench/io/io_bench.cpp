@@ -42,10 +42,10 @@ class MemoryBuffer : public std::streambuf {
   }
 };
 
-void bench_hedge(benchmark::State& state, const std::string& bytes, hedge::io::Format format) {
+void bench_hedge(benchmark::State& state, const std::string& bytes, hedge::FileFormat format) {
   std::size_t vertices = 0, faces = 0;
   for (auto _ : state) {
-    hedge::IndexedMesh m = hedge::io::read_indexed(bytes, format);
+    hedge::IndexedMesh m = hedge::read_indexed(bytes, format);
     vertices = m.positions.size();
     faces = m.face_count();
     benchmark::DoNotOptimize(m.indices.data());
@@ -127,8 +127,8 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "skipping %s: not found (set HEDGE_MESH_DIR)\n", path.c_str());
       continue;
     }
-    const std::string& bytes = contents[c.file] = hedge::io::read_file(path);
-    const hedge::io::Format format = hedge::io::format_from_path(path);
+    const std::string& bytes = contents[c.file] = hedge::read_file(path);
+    const hedge::FileFormat format = hedge::format_from_path(path);
     const std::string stem = c.format + "/" + c.file.substr(0, c.file.find('.'));
     benchmark::RegisterBenchmark((stem + "/hedge").c_str(), bench_hedge, std::cref(bytes), format)
         ->Unit(benchmark::kMillisecond);

@@ -106,7 +106,7 @@ Workload load_workload(const fs::path& root, std::string mesh_path, std::size_t 
     mesh_path = fs::exists(shared) ? shared.string() : (root / "data" / "spot_triangulated.obj").string();
   }
   Workload w;
-  IndexedMesh in = io::read_indexed_file(mesh_path);
+  IndexedMesh in = read_indexed_file(mesh_path);
   if (!in.is_triangles()) in = to_indexed(build(in), {.triangulation = Triangulation::fan});
   w.name = fs::path(mesh_path).filename().string();
   const int levels = bench::subdivide_until(in, min_faces);
@@ -187,8 +187,8 @@ void register_benchmarks(Workload& w) {
                         std::mt19937 rng(7);
                         std::vector<Face> changed;
                         for (auto _ : s) {
-                          Face f(static_cast<Index>(rng() % mesh.faces_size()));
-                          while (mesh.is_deleted(f)) f = Face(static_cast<Index>(rng() % mesh.faces_size()));
+                          Face f(static_cast<Index>(rng() % mesh.face_slots()));
+                          while (mesh.is_deleted(f)) f = Face(static_cast<Index>(rng() % mesh.face_slots()));
                           Vec3 c{0, 0, 0};
                           for (Vertex v : mesh.vertices(f)) c += mesh.position(v);
                           const Vertex v = split_face(mesh, f, c / 3.f);

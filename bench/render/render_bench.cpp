@@ -1,7 +1,7 @@
 // Incremental render buffers against a full re-export, in one run, on meshes of a million triangles
 // and more: random local edits (split, collapse, flip, split face, vertex moves), each followed by
-// RenderSync::sync(), against building the buffers from scratch (RenderSync::rebuild(), what the
-// original's GenerateUnityMesh did after every change). Google Benchmark prints its table for the
+// RenderSync::sync(), against building the buffers from scratch after every change
+// (RenderSync::rebuild(); docs/names.md says which call of the original project it stands for). Google Benchmark prints its table for the
 // full export and for edit + sync; then a summary gives, from per-edit samples, the median bytes
 // rewritten and the median time per edit, with their ratios to a full re-export.
 //
@@ -43,7 +43,7 @@ struct Workload {
 std::vector<std::unique_ptr<Workload>> g_workloads;
 
 std::unique_ptr<Workload> load(const std::string& path, std::size_t min_faces) {
-  IndexedMesh in = io::read_indexed_file(path);
+  IndexedMesh in = read_indexed_file(path);
   in.normals.clear();
   in.normal_indices.clear();
   if (!in.is_triangles()) throw Error(path + ": the render benchmark expects a triangle mesh");
@@ -51,7 +51,7 @@ std::unique_ptr<Workload> load(const std::string& path, std::size_t min_faces) {
   auto w = std::make_unique<Workload>();
   w->name = fs::path(path).filename().string();
   if (levels > 0) w->name += " x" + std::to_string(1 << (2 * levels));
-  BuildOptions o = io::default_build_options(io::format_from_path(path));
+  BuildOptions o = default_build_options(format_from_path(path));
   w->mesh = build(in, o);
   return w;
 }
@@ -61,28 +61,28 @@ bool random_edit(SurfaceMesh& m, std::mt19937_64& rng) {
   const auto pick = [&](std::size_t n) { return static_cast<Index>(rng() % n); };
   const int kind = static_cast<int>(rng() % 100);
   if (kind < 20) {  // move a vertex
-    const Vertex v(pick(m.vertices_size()));
+    const Vertex v(pick(m.vertex_slots()));
     if (m.is_deleted(v)) return false;
     const float d = 1e-3f * static_cast<float>(static_cast<int>(rng() % 2001) - 1000) / 1000.f;
     m.set_position(v, m.position(v) + Vec3{d, -d, 0.5f * d});
     return true;
   }
   if (kind < 50) {  // split an edge at its midpoint
-    const Edge e(pick(m.edges_size()));
+    const Edge e(pick(m.edge_slots()));
     if (!can_split_edge(m, e)) return false;
     return split_edge(m, e, 0.5f * (m.position(m.vertex(e, 0)) + m.position(m.vertex(e, 1)))).is_valid();
   }
   if (kind < 75) {  // collapse, checked first
-    const Halfedge h(pick(m.halfedges_size()));
+    const Halfedge h(pick(m.halfedge_slots()));
     if (m.is_deleted(h) || !can_collapse(m, h)) return false;
     return collapse(m, h).is_valid();
   }
   if (kind < 90) {  // flip
-    const Edge e(pick(m.edges_size()));
+    const Edge e(pick(m.edge_slots()));
     if (m.is_deleted(e) || !can_flip(m, e)) return false;
     return flip(m, e).is_valid();
   }
-  const Face f(pick(m.faces_size()));  // split a face at its centroid
+  const Face f(pick(m.face_slots()));  // split a face at its centroid
   if (!can_split_face(m, f)) return false;
   return split_face(m, f, face_centroid(m, f)).is_valid();
 }
@@ -94,7 +94,7 @@ void BM_FullExport(benchmark::State& state, Workload* w) {
     benchmark::DoNotOptimize(rs.indices().data());
   }
   state.counters["bytes"] = static_cast<double>(rs.buffer_bytes());
-  state.counters["triangles"] = static_cast<double>(rs.live_triangle_count());
+  state.counters["triangles"] = static_cast<double>(rs.n_triangles());
 }
 
 void BM_EditAndSync(benchmark::State& state, Workload* w) {
@@ -141,8 +141,8 @@ Summary measure(Workload& w, std::size_t edits) {
   s.name = w.name;
   SurfaceMesh m = w.mesh;
   RenderSync rs(m);
-  s.triangles = rs.live_triangle_count();
-  s.render_vertices = rs.live_vertex_count();
+  s.triangles = rs.n_triangles();
+  s.render_vertices = rs.n_vertices();
   s.seams = rs.seam_splits();
   s.full_bytes = static_cast<double>(rs.buffer_bytes());
   std::vector<double> full;

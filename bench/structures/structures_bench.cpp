@@ -240,7 +240,7 @@ MeshResult measure_mesh(const std::string& label, bool series, const TriangleArr
 //! Loads a triangle mesh; an empty optional-like result (no faces) with a reason on failure.
 bool load_triangles(const fs::path& path, TriangleArrays& out, std::string& why) {
   try {
-    hedge::IndexedMesh in = hedge::io::read_indexed_file(path.string());
+    hedge::IndexedMesh in = hedge::read_indexed_file(path.string());
     if (!in.is_triangles() &&
         std::any_of(in.face_sizes.begin(), in.face_sizes.end(), [](std::uint32_t n) { return n != 3; })) {
       why = "not a triangle mesh";

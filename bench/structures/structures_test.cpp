@@ -75,7 +75,7 @@ TriangleArrays data_mesh(const std::string& name) {
   TriangleArrays m;
   const std::string path = std::string(HEDGE_DATA_DIR) + "/" + name;
   if (!std::filesystem::exists(path)) return m;
-  IndexedMesh in = io::read_indexed_file(path);
+  IndexedMesh in = read_indexed_file(path);
   m.positions = std::move(in.positions);
   m.triangles = std::move(in.indices);
   return m;

@@ -329,12 +329,12 @@ HEDGE_API hedge_status hedge_split_face(hedge_mesh* mesh, uint32_t face, float x
 /** True if the face of halfedge0 and halfedge1 can be cut along a new edge from the target of
  *  halfedge0 to the target of halfedge1: both in the same live face, targets not adjacent in it and
  *  not joined by an edge yet. */
-HEDGE_API hedge_status hedge_can_split_face_diagonal(const hedge_mesh* mesh, uint32_t halfedge0,
-                                                     uint32_t halfedge1, int32_t* out_ok);
-/** Cuts the face as described above. \param out_halfedge the new half-edge from the target of
- *  halfedge0 to the target of halfedge1. */
-HEDGE_API hedge_status hedge_split_face_diagonal(hedge_mesh* mesh, uint32_t halfedge0, uint32_t halfedge1,
-                                                 uint32_t* out_halfedge);
+HEDGE_API hedge_status hedge_can_cut_face(const hedge_mesh* mesh, uint32_t halfedge0, uint32_t halfedge1,
+                                          int32_t* out_ok);
+/** Cuts the face in two along that new edge (a diagonal; no vertex is added).
+ *  \param out_halfedge the new half-edge from the target of halfedge0 to the target of halfedge1. */
+HEDGE_API hedge_status hedge_cut_face(hedge_mesh* mesh, uint32_t halfedge0, uint32_t halfedge1,
+                                      uint32_t* out_halfedge);
 
 /** Splits every live face at its centroid. Never refused.
  *  \param buffer optional (NULL): receives the new vertices, one per face, in face order.
@@ -507,20 +507,21 @@ typedef struct hedge_sync_result {
   int32_t full;    /**< 1: everything was rebuilt (first sync, garbage collection, rebuild) */
 } hedge_sync_result;
 
-/** Buffer sizes. Slot counts include free slots. Layout (40 bytes): vertex_count @0,
- *  index_count @4, live_vertex_count @8, live_triangle_count @12, seam_splits @16,
- *  free_triangle_count @20 (uint32_t), buffer_bytes @24 (uint64_t), vertex_capacity @32,
- *  index_capacity @36 (uint32_t). Allocate GPU buffers at the capacities: the counts grow inside
- *  them without a reallocation, and a sync whose result has `resized` set grew beyond them. */
+/** Buffer sizes. *_slots count storage slots, free ones included; vertices and triangles count the
+ *  slots in use (the vocabulary of hedge_counts). Layout (40 bytes): vertex_slots @0, index_count @4,
+ *  vertices @8, triangles @12, seam_splits @16, free_triangle_slots @20 (uint32_t), buffer_bytes
+ *  @24 (uint64_t), vertex_capacity @32, index_capacity @36 (uint32_t). Allocate GPU buffers at the
+ *  capacities: the buffers grow inside them without a reallocation, and a sync whose result has
+ *  `resized` set grew beyond them. */
 typedef struct hedge_buffer_counts {
-  uint32_t vertex_count;        /**< render vertex slots */
-  uint32_t index_count;         /**< index-buffer entries (3 per triangle slot) */
-  uint32_t live_vertex_count;   /**< render vertex slots in use */
-  uint32_t live_triangle_count; /**< triangle slots in use */
+  uint32_t vertex_slots;        /**< render vertex slots: the vertex buffer's length in vertices */
+  uint32_t index_count;         /**< the index buffer's length in indices (3 per triangle slot) */
+  uint32_t vertices;            /**< render vertex slots in use */
+  uint32_t triangles;           /**< triangle slots in use */
   uint32_t seam_splits;         /**< render vertices beyond one per used mesh vertex */
-  uint32_t free_triangle_count; /**< degenerate triangle slots waiting for reuse or compaction */
+  uint32_t free_triangle_slots; /**< degenerate triangle slots waiting for reuse or compaction */
   uint64_t buffer_bytes;        /**< bytes of the whole vertex and index buffers */
-  uint32_t vertex_capacity;     /**< render vertex slots to allocate (>= vertex_count) */
+  uint32_t vertex_capacity;     /**< render vertex slots to allocate (>= vertex_slots) */
   uint32_t index_capacity;      /**< index-buffer entries to allocate (>= index_count) */
 } hedge_buffer_counts;
 
@@ -559,7 +560,7 @@ HEDGE_API hedge_status hedge_render_dirty_index_ranges(const hedge_render* rende
 /** Removes the free slots by moving the last live slots into them; re-upload both buffers
  *  afterwards. Outside a transaction it first syncs pending edits, as hedge_render_sync() does.
  *  Each map is optional (NULL): old render-vertex slot -> new slot, and old triangle slot -> new
- *  triangle slot; freed slots map to HEDGE_INVALID_INDEX. The sizes needed are the vertex_count and
+ *  triangle slot; freed slots map to HEDGE_INVALID_INDEX. The sizes needed are the vertex_slots and
  *  index_count / 3 of hedge_render_counts() after that sync, and are written to *out_vertex_count
  *  and *out_triangle_count (each optional, NULL); a map too small gives
  *  HEDGE_ERROR_BUFFER_TOO_SMALL and nothing is compacted (the sync may have happened). */
@@ -586,7 +587,7 @@ HEDGE_API hedge_status hedge_render_index_data(const hedge_render* render, const
 /** Copies the index buffer into a caller buffer (capacity and *out_count in entries). */
 HEDGE_API hedge_status hedge_render_copy_index_data(const hedge_render* render, uint32_t* buffer,
                                                     uint64_t capacity, uint64_t* out_count);
-/** Render vertex slot -> mesh vertex (HEDGE_INVALID_INDEX for a free slot), vertex_count entries. */
+/** Render vertex slot -> mesh vertex (HEDGE_INVALID_INDEX for a free slot), vertex_slots entries. */
 HEDGE_API hedge_status hedge_render_vertex_source(const hedge_render* render, uint32_t* buffer,
                                                   uint32_t capacity, uint32_t* out_count);
 /** The render vertex of the corner that the half-edge enters (HEDGE_INVALID_INDEX for a boundary

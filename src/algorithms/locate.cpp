@@ -13,6 +13,7 @@
 #include <string>
 #include <utility>
 
+#include "hedge/core/small_vector.h"
 #include "hedge/error.h"
 
 namespace hedge {
@@ -64,33 +65,6 @@ struct FaceBvh::Box {
 
 namespace {
 
-//! A stack that lives on the call stack for the usual depths and spills to the heap beyond, so
-//! that a query allocates nothing.
-template <typename T, std::size_t N = 96>
-class SmallStack {
- public:
-  void push(const T& v) {
-    if (n_ < N)
-      local_[n_] = v;
-    else
-      spill_.push_back(v);
-    ++n_;
-  }
-  T pop() {
-    --n_;
-    if (n_ < N) return local_[n_];
-    T v = spill_.back();
-    spill_.pop_back();
-    return v;
-  }
-  bool empty() const { return n_ == 0; }
-
- private:
-  std::array<T, N> local_;
-  std::vector<T> spill_;
-  std::size_t n_ = 0;
-};
-
 double sq(double x) { return x * x; }
 
 //! Calls fn(c0, c[i], c[i+1]) for the fan triangles of f until fn returns true. Returns whether it
@@ -103,7 +77,7 @@ bool for_each_fan(const SurfaceMesh& m, Face f, Fn&& fn) {
   Halfedge h = m.next(h0);
   if (!m.is_valid(h)) return false;
   Vertex b = m.to_vertex(h);
-  std::size_t guard = m.halfedges_size();
+  std::size_t guard = m.halfedge_slots();
   for (h = m.next(h); m.is_valid(h) && h != h0 && guard-- > 0; h = m.next(h)) {
     const Vertex c = m.to_vertex(h);
     if (fn(c0, b, c)) return true;
@@ -604,7 +578,7 @@ void FaceBvh::build(const SurfaceMesh& mesh, const BvhOptions& options) {
   entries_.clear();
   height_.clear();
   young_.clear();
-  slot_of_face_.assign(mesh.faces_size(), kInvalidIndex);
+  slot_of_face_.assign(mesh.face_slots(), kInvalidIndex);
   entries_.reserve(mesh.n_faces());
   for (Face f : mesh.faces()) entries_.push_back(make_entry(f));
   live_ = entries_.size();
@@ -630,7 +604,7 @@ void FaceBvh::rebuild() {
 }
 
 void FaceBvh::remember_sizes() {
-  sizes_ = {mesh_->vertices_size(), mesh_->halfedges_size(), mesh_->faces_size()};
+  sizes_ = {mesh_->vertex_slots(), mesh_->halfedge_slots(), mesh_->face_slots()};
 }
 
 void FaceBvh::update_slack() {
@@ -646,8 +620,8 @@ void FaceBvh::update_slack() {
 }
 
 void FaceBvh::check_fresh() const {
-  if (mesh_->vertices_size() < sizes_[0] || mesh_->halfedges_size() < sizes_[1] ||
-      mesh_->faces_size() < sizes_[2])
+  if (mesh_->vertex_slots() < sizes_[0] || mesh_->halfedge_slots() < sizes_[1] ||
+      mesh_->face_slots() < sizes_[2])
     throw InvalidInputError(
         "FaceBvh: the mesh has fewer elements than when the tree was built (garbage_collection?); "
         "build the tree again");
@@ -678,18 +652,18 @@ void FaceBvh::refit() {
   if (nodes_.empty()) return;
   check_fresh();
   // Post-order without recursion: update() may have placed children before their parents.
-  SmallStack<std::pair<Index, bool>> stack;
-  stack.push({0, false});
+  SmallVector<std::pair<Index, bool>, 96> stack;  // no allocation for the usual depths
+  stack.push_back({0, false});
   while (!stack.empty()) {
-    const auto [n, children_done] = stack.pop();
+    const auto [n, children_done] = stack.pop_back();
     if (nodes_[n].is_leaf()) {
       refit_leaf(n);
     } else if (children_done) {
       refit_internal(n);
     } else {
-      stack.push({n, true});
-      stack.push({nodes_[n].index, false});
-      stack.push({nodes_[n].index + 1, false});
+      stack.push_back({n, true});
+      stack.push_back({nodes_[n].index, false});
+      stack.push_back({nodes_[n].index + 1, false});
     }
   }
   update_slack();
@@ -762,15 +736,15 @@ void FaceBvh::insert_entries(Index first, Index count) {
   } else if (merge) {
     // An older young subtree: its live entries move next to the new ones (leaving tombstones) and
     // the lot is rebuilt at its root; its old nodes are orphaned until the next build.
-    SmallStack<Index> stack;
-    stack.push(n);
+    SmallVector<Index, 96> stack;  // no allocation for the usual depths
+    stack.push_back(n);
     while (!stack.empty()) {
-      const Index x = stack.pop();
+      const Index x = stack.pop_back();
       const Node node = nodes_[x];
       if (x != n) ++orphan_nodes_;
       if (!node.is_leaf()) {
-        stack.push(node.index);
-        stack.push(node.index + 1);
+        stack.push_back(node.index);
+        stack.push_back(node.index + 1);
         continue;
       }
       for (Index k = node.index; k < node.index + node.count; ++k) {
@@ -818,9 +792,9 @@ void FaceBvh::update(std::span<const Face> changed_or_added, std::span<const Fac
     for (Face f : list)
       if (!m.is_valid(f))
         throw InvalidInputError("FaceBvh::update: face " + std::to_string(f.idx()) +
-                                " is not a face slot of the mesh (" + std::to_string(m.faces_size()) +
+                                " is not a face slot of the mesh (" + std::to_string(m.face_slots()) +
                                 " slots)");
-  slot_of_face_.resize(m.faces_size(), kInvalidIndex);
+  slot_of_face_.resize(m.face_slots(), kInvalidIndex);
   auto tombstone = [&](Face f) {
     Index& slot = slot_of_face_[f.idx()];
     if (slot == kInvalidIndex) return;
@@ -865,10 +839,10 @@ std::optional<LocateResult> FaceBvh::closest_point(const Vec3& p, double max_dis
   check_fresh();
   ClosestSearch search(*mesh_, to_double(p), sq(max_distance), slack_sq_);
   auto limit = [&] { return search.limit(); };
-  SmallStack<std::pair<Index, double>> stack;
-  stack.push({0, box_distance_sq(nodes_[0].lo, nodes_[0].hi, search.p)});
+  SmallVector<std::pair<Index, double>, 96> stack;  // no allocation for the usual depths
+  stack.push_back({0, box_distance_sq(nodes_[0].lo, nodes_[0].hi, search.p)});
   while (!stack.empty()) {
-    const auto [n, d] = stack.pop();
+    const auto [n, d] = stack.pop_back();
     if (d > limit()) continue;
     const Node& node = nodes_[n];
     if (node.is_leaf()) {
@@ -885,8 +859,8 @@ std::optional<LocateResult> FaceBvh::closest_point(const Vec3& p, double max_dis
       std::swap(d0, d1);
     }
     const double lim = limit();
-    if (d1 <= lim) stack.push({far, d1});
-    if (d0 <= lim) stack.push({near, d0});
+    if (d1 <= lim) stack.push_back({far, d1});
+    if (d0 <= lim) stack.push_back({near, d0});
   }
   return search.result();
 }
@@ -899,14 +873,14 @@ std::optional<SurfacePoint> FaceBvh::face_containing(const Vec2& p, ProjectionPl
   if (empty() || !is_finite(p)) return std::nullopt;
   check_fresh();
   ContainSearch search(*mesh_, p, plane);
-  SmallStack<Index> stack;
-  stack.push(0);
+  SmallVector<Index, 96> stack;  // no allocation for the usual depths
+  stack.push_back(0);
   while (!stack.empty()) {
-    const Node& node = nodes_[stack.pop()];
+    const Node& node = nodes_[stack.pop_back()];
     if (!search.box_contains(node.lo, node.hi)) continue;
     if (!node.is_leaf()) {
-      stack.push(node.index + 1);
-      stack.push(node.index);
+      stack.push_back(node.index + 1);
+      stack.push_back(node.index);
       continue;
     }
     for (Index k = node.index; k < node.index + node.count; ++k) {
@@ -924,12 +898,12 @@ std::optional<RayHit> FaceBvh::first_hit(const Vec3& origin, const Vec3& directi
   const PreparedRay ray(origin, direction);
   RaySearch search(*mesh_, ray, t_max);
   auto limit = [&] { return search.best + std::fabs(search.best) * kRelSlack; };
-  SmallStack<std::pair<Index, float>> stack;
+  SmallVector<std::pair<Index, float>, 96> stack;  // no allocation for the usual depths
   float t0 = 0, t1 = 0;
   if (!ray.enters(nodes_[0].lo, nodes_[0].hi, limit(), t0)) return std::nullopt;
-  stack.push({0, t0});
+  stack.push_back({0, t0});
   while (!stack.empty()) {
-    const auto [n, t_near] = stack.pop();
+    const auto [n, t_near] = stack.pop_back();
     if (double(t_near) > limit()) continue;
     const Node& node = nodes_[n];
     if (node.is_leaf()) {
@@ -943,16 +917,16 @@ std::optional<RayHit> FaceBvh::first_hit(const Vec3& origin, const Vec3& directi
     const bool h1 = ray.enters(nodes_[c + 1].lo, nodes_[c + 1].hi, lim, t1);
     if (h0 && h1) {
       if (t0 <= t1) {
-        stack.push({c + 1, t1});
-        stack.push({c, t0});
+        stack.push_back({c + 1, t1});
+        stack.push_back({c, t0});
       } else {
-        stack.push({c, t0});
-        stack.push({c + 1, t1});
+        stack.push_back({c, t0});
+        stack.push_back({c + 1, t1});
       }
     } else if (h0) {
-      stack.push({c, t0});
+      stack.push_back({c, t0});
     } else if (h1) {
-      stack.push({c + 1, t1});
+      stack.push_back({c + 1, t1});
     }
   }
   return search.result();
@@ -976,15 +950,15 @@ FaceBvh::Stats FaceBvh::stats() const {
   s.inserted_subtrees = inserted_;
   s.merged_subtrees = merged_;
   if (!nodes_.empty()) {
-    SmallStack<Index> stack;
-    stack.push(0);
+    SmallVector<Index, 96> stack;  // no allocation for the usual depths
+    stack.push_back(0);
     while (!stack.empty()) {
-      const Node& node = nodes_[stack.pop()];
+      const Node& node = nodes_[stack.pop_back()];
       if (node.is_leaf()) {
         ++s.leaves;
       } else {
-        stack.push(node.index);
-        stack.push(node.index + 1);
+        stack.push_back(node.index);
+        stack.push_back(node.index + 1);
       }
     }
   }

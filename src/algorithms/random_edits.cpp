@@ -78,7 +78,7 @@ RandomEditReport random_edits(SurfaceMesh& m, const RandomEditOptions& opt) {
     bool check_euler = true;
     switch (kind) {
       case EditKind::split_edge: {
-        Edge e = pick<Edge>(m, rng, m.edges_size());
+        Edge e = pick<Edge>(m, rng, m.edge_slots());
         if (!e.is_valid()) break;
         Vec3 a = m.position(m.vertex(e, 0)), b = m.position(m.vertex(e, 1));
         float s = rng.unit();
@@ -86,34 +86,34 @@ RandomEditReport random_edits(SurfaceMesh& m, const RandomEditOptions& opt) {
         break;
       }
       case EditKind::collapse: {
-        Halfedge h = pick<Halfedge>(m, rng, m.halfedges_size());
+        Halfedge h = pick<Halfedge>(m, rng, m.halfedge_slots());
         if (!h.is_valid()) break;
         applied = collapse(m, h).is_valid();
         break;
       }
       case EditKind::flip: {
-        Edge e = pick<Edge>(m, rng, m.edges_size());
+        Edge e = pick<Edge>(m, rng, m.edge_slots());
         if (!e.is_valid()) break;
         applied = flip(m, e).is_valid();
         break;
       }
       case EditKind::split_face: {
-        Face f = pick<Face>(m, rng, m.faces_size());
+        Face f = pick<Face>(m, rng, m.face_slots());
         if (!f.is_valid()) break;
         applied = split_face(m, f, face_centroid(m, f)).is_valid();
         break;
       }
       case EditKind::cut_face: {
-        Face f = pick<Face>(m, rng, m.faces_size());
+        Face f = pick<Face>(m, rng, m.face_slots());
         if (!f.is_valid()) break;
         std::vector<Halfedge> hs;
         for (Halfedge h : m.halfedges(f)) hs.push_back(h);
         Halfedge h0 = hs[rng.below(hs.size())], h1 = hs[rng.below(hs.size())];
-        applied = split_face(m, h0, h1).is_valid();
+        applied = cut_face(m, h0, h1).is_valid();
         break;
       }
       case EditKind::remove_face: {
-        Face f = pick<Face>(m, rng, m.faces_size());
+        Face f = pick<Face>(m, rng, m.face_slots());
         if (!f.is_valid()) break;
         std::vector<Vertex> corners;
         for (Vertex v : m.vertices(f)) corners.push_back(v);
@@ -124,7 +124,7 @@ RandomEditReport random_edits(SurfaceMesh& m, const RandomEditOptions& opt) {
         break;
       }
       case EditKind::remove_vertex: {
-        Vertex v = pick<Vertex>(m, rng, m.vertices_size());
+        Vertex v = pick<Vertex>(m, rng, m.vertex_slots());
         if (!v.is_valid() || m.is_boundary(v)) break;  // interior only: the hole is then one loop
         Halfedge ring = m.halfedge(v);
         if (!ring.is_valid()) break;

@@ -190,24 +190,24 @@ void check_range(const char* kind, std::uint32_t i, std::size_t slots) {
 }  // namespace
 
 Vertex live_vertex(const SurfaceMesh& m, std::uint32_t v) {
-  check_range("vertex", v, m.vertices_size());
-  if (m.is_deleted(Vertex(v))) deleted("vertex", v);
-  return Vertex(v);
+  if (m.is_live(Vertex(v))) return Vertex(v);
+  check_range("vertex", v, m.vertex_slots());
+  deleted("vertex", v);
 }
 Halfedge live_halfedge(const SurfaceMesh& m, std::uint32_t h) {
-  check_range("halfedge", h, m.halfedges_size());
-  if (m.is_deleted(Halfedge(h))) deleted("halfedge", h);
-  return Halfedge(h);
+  if (m.is_live(Halfedge(h))) return Halfedge(h);
+  check_range("halfedge", h, m.halfedge_slots());
+  deleted("halfedge", h);
 }
 Edge live_edge(const SurfaceMesh& m, std::uint32_t e) {
-  check_range("edge", e, m.edges_size());
-  if (m.is_deleted(Edge(e))) deleted("edge", e);
-  return Edge(e);
+  if (m.is_live(Edge(e))) return Edge(e);
+  check_range("edge", e, m.edge_slots());
+  deleted("edge", e);
 }
 Face live_face(const SurfaceMesh& m, std::uint32_t f) {
-  check_range("face", f, m.faces_size());
-  if (m.is_deleted(Face(f))) deleted("face", f);
-  return Face(f);
+  if (m.is_live(Face(f))) return Face(f);
+  check_range("face", f, m.face_slots());
+  deleted("face", f);
 }
 
 void check_capacity_impl(std::uint64_t needed, const void* buffer, std::uint64_t capacity, const char* name) {
@@ -298,10 +298,10 @@ hedge_build_options default_build_options() { return {HEDGE_POLICY_REPAIR, HEDGE
 //! Slots of element type H, deleted ones included.
 template <typename H>
 std::size_t slot_count(const SurfaceMesh& m) {
-  if constexpr (std::is_same_v<H, Vertex>) return m.vertices_size();
-  else if constexpr (std::is_same_v<H, Halfedge>) return m.halfedges_size();
-  else if constexpr (std::is_same_v<H, Edge>) return m.edges_size();
-  else return m.faces_size();
+  if constexpr (std::is_same_v<H, Vertex>) return m.vertex_slots();
+  else if constexpr (std::is_same_v<H, Halfedge>) return m.halfedge_slots();
+  else if constexpr (std::is_same_v<H, Edge>) return m.edge_slots();
+  else return m.face_slots();
 }
 
 //! Whether element `index` of type H is deleted; any index in range is accepted.
@@ -471,10 +471,10 @@ hedge_status hedge_mesh_counts(const hedge_mesh* mesh, hedge_counts* out_counts)
     c.halfedges = to_u32(m.n_halfedges(), "half-edge count");
     c.edges = to_u32(m.n_edges(), "edge count");
     c.faces = to_u32(m.n_faces(), "face count");
-    c.vertex_slots = to_u32(m.vertices_size(), "vertex slot count");
-    c.halfedge_slots = to_u32(m.halfedges_size(), "half-edge slot count");
-    c.edge_slots = to_u32(m.edges_size(), "edge slot count");
-    c.face_slots = to_u32(m.faces_size(), "face slot count");
+    c.vertex_slots = to_u32(m.vertex_slots(), "vertex slot count");
+    c.halfedge_slots = to_u32(m.halfedge_slots(), "half-edge slot count");
+    c.edge_slots = to_u32(m.edge_slots(), "edge slot count");
+    c.face_slots = to_u32(m.face_slots(), "face slot count");
   });
 }
 
@@ -503,10 +503,10 @@ hedge_status hedge_mesh_copy_positions(const hedge_mesh* mesh, float* buffer, ui
     auto object = find_mesh(mesh);
     const SurfaceMesh& m = object->mesh;
     need(out_count, "out_count");
-    const std::uint64_t needed = 3 * std::uint64_t(m.vertices_size());
+    const std::uint64_t needed = 3 * std::uint64_t(m.vertex_slots());
     *out_count = needed;
     check_capacity(needed, buffer, capacity);
-    for (std::size_t i = 0; i < m.vertices_size(); ++i) {
+    for (std::size_t i = 0; i < m.vertex_slots(); ++i) {
       const Vec3& p = m.position(Vertex(static_cast<Index>(i)));
       buffer[3 * i] = p.x;
       buffer[3 * i + 1] = p.y;
@@ -667,9 +667,9 @@ hedge_status hedge_mesh_read(const char* path, const hedge_build_options* option
     BuildReport* want = out_report != nullptr ? &report : nullptr;
     auto object = std::make_shared<MeshObject>();
     if (options != nullptr)
-      object->mesh = io::read_mesh(path, to_build_options(*options), want);
+      object->mesh = read_mesh(path, to_build_options(*options), want);
     else
-      object->mesh = io::read_mesh(path, want);
+      object->mesh = read_mesh(path, want);
     if (out_report != nullptr) fill_report(report, out_report);
     *out_mesh = register_mesh(std::move(object));
   });
@@ -679,12 +679,12 @@ hedge_status hedge_mesh_write(const hedge_mesh* mesh, const char* path, int32_t 
   return guard([&] {
     auto object = find_mesh(mesh);
     need(path, "path");
-    io::WriteOptions options;
+    WriteOptions options;
     options.binary = need_bool(binary, "binary");
     if (precision < 0 || precision > 17)
       fail(HEDGE_ERROR_INVALID_ARGUMENT, "precision is " + std::to_string(precision) + ", not in 0..17");
     if (precision > 0) options.precision = precision;
-    io::write_mesh(object->mesh, path, options);
+    write_mesh(object->mesh, path, options);
   });
 }
 

@@ -21,7 +21,7 @@ std::string name(const char* kind, std::uint32_t i) { return std::string(kind) +
 std::size_t loop_length(const SurfaceMesh& m, Halfedge h) {
   std::size_t n = 0;
   for ([[maybe_unused]] Halfedge g : m.loop(h))
-    if (++n > m.halfedges_size()) return 0;
+    if (++n > m.halfedge_slots()) return 0;
   return n;
 }
 
@@ -98,27 +98,25 @@ hedge_status hedge_split_face(hedge_mesh* mesh, uint32_t face, float x, float y,
   });
 }
 
-hedge_status hedge_can_split_face_diagonal(const hedge_mesh* mesh, uint32_t halfedge0, uint32_t halfedge1,
-                                           int32_t* out_ok) {
+hedge_status hedge_can_cut_face(const hedge_mesh* mesh, uint32_t halfedge0, uint32_t halfedge1,
+                                int32_t* out_ok) {
   return guard([&] {
     auto object = find_mesh(mesh);
     const Halfedge h0 = live_halfedge(object->mesh, halfedge0);
     const Halfedge h1 = live_halfedge(object->mesh, halfedge1);
-    need(out_ok, "out_ok") = can_split_face(object->mesh, h0, h1) ? 1 : 0;
+    need(out_ok, "out_ok") = can_cut_face(object->mesh, h0, h1) ? 1 : 0;
   });
 }
 
-hedge_status hedge_split_face_diagonal(hedge_mesh* mesh, uint32_t halfedge0, uint32_t halfedge1,
-                                       uint32_t* out_halfedge) {
+hedge_status hedge_cut_face(hedge_mesh* mesh, uint32_t halfedge0, uint32_t halfedge1, uint32_t* out_halfedge) {
   return guard([&] {
     auto object = find_mesh(mesh);
     SurfaceMesh& m = object->mesh;
     const Halfedge h0 = live_halfedge(m, halfedge0);
     const Halfedge h1 = live_halfedge(m, halfedge1);
     need(out_halfedge, "out_halfedge");
-    const std::string what =
-        "split_face_diagonal of " + name("halfedge", halfedge0) + " and " + std::to_string(halfedge1);
-    const Halfedge h = split_face(m, h0, h1);
+    const std::string what = "cut_face of " + name("halfedge", halfedge0) + " and " + std::to_string(halfedge1);
+    const Halfedge h = cut_face(m, h0, h1);
     if (!h.is_valid()) refused(what);
     *out_halfedge = h.idx();
   });
@@ -259,7 +257,7 @@ hedge_status hedge_detach_faces(hedge_mesh* mesh, const uint32_t* faces, uint32_
     auto detached = std::make_shared<MeshObject>();
     std::vector<Vertex> origin;
     detached->mesh = detach_faces(m, chosen, &origin);
-    const std::uint32_t n = to_u32(detached->mesh.vertices_size(), "vertex count");
+    const std::uint32_t n = to_u32(detached->mesh.vertex_slots(), "vertex count");
     if (out_vertex_origin != nullptr)
       for (std::uint32_t v = 0; v < n; ++v)
         out_vertex_origin[v] = v < origin.size() ? origin[v].idx() : HEDGE_INVALID_INDEX;
@@ -275,11 +273,11 @@ hedge_status hedge_mesh_garbage_collection(hedge_mesh* mesh, uint32_t* vertex_ma
   return guard([&] {
     auto object = find_mesh(mesh);
     SurfaceMesh& m = object->mesh;
-    if (vertex_map != nullptr) check_capacity(m.vertices_size(), vertex_map, vertex_capacity, "vertex_map");
+    if (vertex_map != nullptr) check_capacity(m.vertex_slots(), vertex_map, vertex_capacity, "vertex_map");
     if (halfedge_map != nullptr)
-      check_capacity(m.halfedges_size(), halfedge_map, halfedge_capacity, "halfedge_map");
-    if (edge_map != nullptr) check_capacity(m.edges_size(), edge_map, edge_capacity, "edge_map");
-    if (face_map != nullptr) check_capacity(m.faces_size(), face_map, face_capacity, "face_map");
+      check_capacity(m.halfedge_slots(), halfedge_map, halfedge_capacity, "halfedge_map");
+    if (edge_map != nullptr) check_capacity(m.edge_slots(), edge_map, edge_capacity, "edge_map");
+    if (face_map != nullptr) check_capacity(m.face_slots(), face_map, face_capacity, "face_map");
     const GarbageMaps maps = m.garbage_collection();
     auto put = [](const std::vector<Index>& from, std::uint32_t* to) {
       if (to != nullptr) std::copy(from.begin(), from.end(), to);

@@ -159,7 +159,7 @@ hedge_status hedge_render_compact(hedge_render* render, uint32_t* vertex_map, ui
     RenderSync& sync = *object->sync;
     // compact() syncs first; do it here so that the map sizes are known before compacting.
     if (!sync.in_transaction()) sync.sync();
-    const std::size_t vertices = sync.vertex_count();
+    const std::size_t vertices = sync.vertex_slots();
     const std::size_t triangles = sync.index_count() / 3;
     if (out_vertex_count != nullptr) *out_vertex_count = to_u32(vertices, "vertex count");
     if (out_triangle_count != nullptr) *out_triangle_count = to_u32(triangles, "triangle count");
@@ -176,12 +176,12 @@ hedge_status hedge_render_counts(const hedge_render* render, hedge_buffer_counts
     auto object = find_render(render);
     const RenderSync& sync = *object->sync;
     hedge_buffer_counts& c = need(out_counts, "out_counts");
-    c.vertex_count = to_u32(sync.vertex_count(), "vertex count");
+    c.vertex_slots = to_u32(sync.vertex_slots(), "vertex slots");
     c.index_count = to_u32(sync.index_count(), "index count");
-    c.live_vertex_count = to_u32(sync.live_vertex_count(), "live vertex count");
-    c.live_triangle_count = to_u32(sync.live_triangle_count(), "live triangle count");
+    c.vertices = to_u32(sync.n_vertices(), "render vertices");
+    c.triangles = to_u32(sync.n_triangles(), "triangles");
     c.seam_splits = to_u32(sync.seam_splits(), "seam splits");
-    c.free_triangle_count = to_u32(sync.free_triangle_count(), "free triangle count");
+    c.free_triangle_slots = to_u32(sync.free_triangle_slots(), "free triangle slots");
     c.buffer_bytes = sync.buffer_bytes();
     c.vertex_capacity = to_u32(sync.vertex_capacity(), "vertex capacity");
     c.index_capacity = to_u32(sync.index_capacity(), "index capacity");

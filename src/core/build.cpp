@@ -856,7 +856,7 @@ Halfedge prev_in_face(const SurfaceMesh& m, Halfedge h) {
 
 bool MeshBuilder::fans_are_simple(SurfaceMesh& m) {
   // Each walk covers one fan, so every vertex is manifold exactly when the walks cover all corners.
-  const Index nv = static_cast<Index>(m.vertices_size());
+  const Index nv = static_cast<Index>(m.vertex_slots());
   const Halfedge* nx = m.h_next_.data();
   Halfedge* vh = m.v_halfedge_.data();
   boundary_hes_.clear();
@@ -869,8 +869,8 @@ bool MeshBuilder::fans_are_simple(SurfaceMesh& m) {
 }
 
 void MeshBuilder::split_fans(SurfaceMesh& m) {
-  const Index nv0 = static_cast<Index>(m.vertices_size());
-  std::vector<std::uint8_t> seen(m.halfedges_size(), 0);
+  const Index nv0 = static_cast<Index>(m.vertex_slots());
+  std::vector<std::uint8_t> seen(m.halfedge_slots(), 0);
   std::vector<std::uint8_t> has_fan(nv0, 0), counted(nv0, 0);
   std::vector<Halfedge> fan;
   std::vector<std::string> named;
@@ -986,7 +986,7 @@ SurfaceMesh MeshBuilder::run() {
     if (!problems_.empty()) throw TopologyError(problems_, bad_vertices_);
     // The walks listed the boundary half-edges of the fans they saw; the split ones need all.
     boundary_hes_.clear();
-    for (Index h = 0; h < m.halfedges_size(); ++h)
+    for (Index h = 0; h < m.halfedge_slots(); ++h)
       if (m.is_boundary(Halfedge(h))) boundary_hes_.push_back(h);
   }
   link_boundaries(m);
@@ -999,7 +999,7 @@ SurfaceMesh MeshBuilder::run() {
   const std::size_t n_in = in_.positions.size();
   rep_.vertex_map.resize(n_in);
   for (std::size_t i = 0; i < n_in; ++i) rep_.vertex_map[i] = weld_map_.empty() ? Index(i) : weld_map_[i];
-  rep_.vertex_origin.resize(m.vertices_size());
+  rep_.vertex_origin.resize(m.vertex_slots());
   for (Index v = 0; v < nv; ++v) rep_.vertex_origin[v] = input_vertex(v);
   for (std::size_t i = 0; i < vertex_origin_.size(); ++i) rep_.vertex_origin[nv + i] = input_vertex(vertex_origin_[i]);
   rep_.face_map.assign(in_.face_count(), kInvalidIndex);

@@ -5,7 +5,7 @@
 namespace hedge {
 
 template <typename H>
-void ChangeLog::record(H h, std::uint32_t events, std::vector<std::uint32_t>& stamps, std::vector<H>& log) {
+void ChangeLog::record(H h, ChangeEvent events, std::vector<std::uint32_t>& stamps, std::vector<H>& log) {
   unnotified_ |= events;
   for (Consumer& c : consumers_) c.events |= events;
   if (consumers_.empty() || !h.is_valid()) return;
@@ -16,8 +16,8 @@ void ChangeLog::record(H h, std::uint32_t events, std::vector<std::uint32_t>& st
   log.push_back(h);
 }
 
-template void ChangeLog::record(Vertex, std::uint32_t, std::vector<std::uint32_t>&, std::vector<Vertex>&);
-template void ChangeLog::record(Face, std::uint32_t, std::vector<std::uint32_t>&, std::vector<Face>&);
+template void ChangeLog::record(Vertex, ChangeEvent, std::vector<std::uint32_t>&, std::vector<Vertex>&);
+template void ChangeLog::record(Face, ChangeEvent, std::vector<std::uint32_t>&, std::vector<Face>&);
 
 void ChangeLog::advance_generation() {
   if (++generation_ == 0) {
@@ -29,11 +29,11 @@ void ChangeLog::advance_generation() {
 
 void ChangeLog::mark_reset() {
   if (!active()) return;
-  unnotified_ |= kReset;
+  unnotified_ |= ChangeEvent::reset;
   // Nothing logged so far matters any more to anyone: every consumer rebuilds.
   for (Consumer& c : consumers_) {
     c.reset = true;
-    c.events |= kReset;
+    c.events |= ChangeEvent::reset;
     c.vertex_cursor = vertices_.size();
     c.face_cursor = faces_.size();
   }
@@ -41,16 +41,16 @@ void ChangeLog::mark_reset() {
 }
 
 void ChangeLog::notify() {
-  if (transaction_depth_ > 0 || unnotified_ == 0) return;
-  const std::uint32_t events = unnotified_;
-  unnotified_ = 0;
+  if (transaction_depth_ > 0 || !any(unnotified_)) return;
+  const ChangeEvent events = unnotified_;
+  unnotified_ = ChangeEvent::none;
   // A callback may subscribe or unsubscribe; iterate over a copy of the ids.
   std::vector<SubscriptionId> ids;
   ids.reserve(subscribers_.size());
   for (const Subscriber& s : subscribers_) ids.push_back(s.id);
   for (SubscriptionId id : ids) {
     auto it = std::find_if(subscribers_.begin(), subscribers_.end(), [&](const Subscriber& s) { return s.id == id; });
-    if (it == subscribers_.end() || (it->mask & events) == 0) continue;
+    if (it == subscribers_.end() || !any(it->mask & events)) continue;
     Callback fn = it->fn;  // the subscriber may remove itself while running
     fn(events & it->mask);
   }
@@ -104,7 +104,7 @@ void ChangeLog::consume(ConsumerId id) {
     if (c.id != id) continue;
     c.vertex_cursor = vertices_.size();
     c.face_cursor = faces_.size();
-    c.events = 0;
+    c.events = ChangeEvent::none;
     c.reset = false;
   }
   // New marks must be logged again even if they were logged before this read.
@@ -129,7 +129,7 @@ void ChangeLog::compact_log() {
   }
 }
 
-ChangeLog::SubscriptionId ChangeLog::subscribe(std::uint32_t mask, Callback fn) {
+ChangeLog::SubscriptionId ChangeLog::subscribe(ChangeEvent mask, Callback fn) {
   const SubscriptionId id = next_id_++;
   subscribers_.push_back({id, mask, std::move(fn)});
   return id;

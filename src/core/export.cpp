@@ -30,7 +30,7 @@ class Pool {
 
 IndexedMesh to_indexed(const SurfaceMesh& mesh, const ExportOptions& opt, std::vector<Index>* vertex_map) {
   IndexedMesh out;
-  std::vector<Index> vmap(mesh.vertices_size(), kInvalidIndex);
+  std::vector<Index> vmap(mesh.vertex_slots(), kInvalidIndex);
   out.positions.reserve(mesh.n_vertices());
   for (Vertex v : mesh.vertices()) {
     vmap[v.idx()] = static_cast<Index>(out.positions.size());

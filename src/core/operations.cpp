@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "hedge/core/build.h"
+#include "hedge/core/small_vector.h"
 
 namespace hedge {
 
@@ -13,15 +14,10 @@ namespace {
 
 using Mesh = SurfaceMesh;
 
-bool live(const Mesh& m, Halfedge h) { return h.is_valid() && m.is_valid(h) && !m.is_deleted(h); }
-bool live(const Mesh& m, Edge e) { return e.is_valid() && m.is_valid(e) && !m.is_deleted(e); }
-bool live(const Mesh& m, Face f) { return f.is_valid() && m.is_valid(f) && !m.is_deleted(f); }
-bool live(const Mesh& m, Vertex v) { return v.is_valid() && m.is_valid(v) && !m.is_deleted(v); }
-
 bool is_triangle(const Mesh& m, Halfedge h) { return m.next(m.next(m.next(h))) == h; }
 
 // Change log: every face with a corner at v changed (its corners, or the corner data there).
-void mark_faces_around(Mesh& m, Vertex v, std::uint32_t events) {
+void mark_faces_around(Mesh& m, Vertex v, ChangeEvent events) {
   if (!m.changes().active()) return;
   for (Face f : m.faces(v)) m.mark_changed(f, events);
 }
@@ -33,29 +29,6 @@ bool valence_above(const Mesh& m, Vertex v, std::size_t k) {
     if (++n > k) return true;
   return false;
 }
-
-// A list of a few handles kept on the stack, spilling to the heap past N: the hot predicates
-// must not allocate per call.
-template <typename T, std::size_t N = 32>
-class SmallList {
- public:
-  void push_back(T t) {
-    if (n_ < N) inline_[n_] = t;
-    else spill_.push_back(t);
-    ++n_;
-  }
-  bool contains(T t) const {
-    for (std::size_t i = 0; i < std::min(n_, N); ++i)
-      if (inline_[i] == t) return true;
-    return std::find(spill_.begin(), spill_.end(), t) != spill_.end();
-  }
-  std::size_t size() const { return n_; }
-
- private:
-  T inline_[N];
-  std::vector<T> spill_;
-  std::size_t n_ = 0;
-};
 
 // Outgoing half-edges of v in clockwise order, starting at its half-edge.
 std::vector<Halfedge> outgoing(const Mesh& m, Vertex v) {
@@ -122,7 +95,7 @@ bool relink_vertex(Mesh& m, Vertex v, const std::vector<Halfedge>& out) {
     }
     if (owner != v) {
       m.set_vertex(Mesh::twin(o), owner);
-      if (m.face(o).is_valid()) m.mark_changed(m.face(o), kFacesChanged | kVerticesAdded);
+      if (m.face(o).is_valid()) m.mark_changed(m.face(o), ChangeEvent::faces_changed | ChangeEvent::vertices_added);
     }
     const bool fan_ends = m.is_boundary(alive[(i + 1) % k]);
     if (fan_ends) m.set_next(Mesh::twin(o), alive[start]);
@@ -149,11 +122,11 @@ void remove_faces_impl(Mesh& m, const std::vector<Face>& faces) {
   for (Halfedge h : hs) m.set_face(h, Face());
   for (Halfedge h : hs)
     if (m.is_boundary(Mesh::twin(h))) m.mark_deleted(Mesh::edge(h));
-  for (Face f : faces) m.mark_changed(f, kFacesRemoved);
+  for (Face f : faces) m.mark_changed(f, ChangeEvent::faces_removed);
   for (std::size_t i = 0; i < verts.size(); ++i) {
     if (!relink_vertex(m, verts[i], outs[i])) {
       m.mark_deleted(verts[i]);
-      m.mark_changed(verts[i], kVerticesRemoved);
+      m.mark_changed(verts[i], ChangeEvent::vertices_removed);
     }
   }
 }
@@ -246,7 +219,7 @@ bool has_properties(const Mesh& m) {
 
 void mark_split(Mesh& m, Vertex v) {
   if (m.changes().active()) {  // nothing to mark or tell when nobody listens
-    mark_faces_around(m, v, kFacesChanged | kFacesAdded | kVerticesAdded);
+    mark_faces_around(m, v, ChangeEvent::faces_changed | ChangeEvent::faces_added | ChangeEvent::vertices_added);
     m.changes().notify();
   }
 }
@@ -376,7 +349,7 @@ void mark_split(Mesh& m, Vertex v) {
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
-bool can_split_edge(const SurfaceMesh& m, Edge e) { return live(m, e); }
+bool can_split_edge(const SurfaceMesh& m, Edge e) { return m.is_live(e); }
 
 // Both cases are out of line: split_edge itself is the test and a tail call, and neither case's
 // register use weighs on the other.
@@ -392,7 +365,7 @@ Vertex split_edge(SurfaceMesh& m, Edge e, const Vec3& point) {
 
 // ---------------------------------------------------------------------------------------------
 bool can_collapse(const SurfaceMesh& m, Halfedge h) {
-  if (!live(m, h)) return false;
+  if (!m.is_live(h)) return false;
   const Halfedge t = Mesh::twin(h);
   const Vertex v0 = m.from_vertex(h), v1 = m.to_vertex(h);
   const Face fl = m.face(h), fr = m.face(t);
@@ -403,7 +376,7 @@ bool can_collapse(const SurfaceMesh& m, Halfedge h) {
 
   // Link condition, and no second edge between v0 and v1. The rotations start from h (leaving
   // v0) and t (leaving v1), at hand, rather than from the vertices' stored half-edges.
-  SmallList<Vertex> n0;
+  SmallVector<Vertex, 32> n0;  // the hot predicates must not allocate per call
   std::size_t to_v1 = 0;
   Halfedge x = h;
   do {
@@ -487,10 +460,10 @@ Vertex collapse(SurfaceMesh& m, Halfedge h) {
   if (on_boundary) m.adjust_outgoing_halfedge(v1);
   if (m.changes().active()) {
     // A triangle on h is deleted by now; a polygon on h lost a corner. Either way it is marked.
-    if (fl.is_valid()) m.mark_changed(fl, m.is_deleted(fl) ? kFacesRemoved : kFacesChanged);
-    if (fr.is_valid()) m.mark_changed(fr, m.is_deleted(fr) ? kFacesRemoved : kFacesChanged);
-    m.mark_changed(v0, kVerticesRemoved);
-    mark_faces_around(m, v1, kFacesChanged);
+    if (fl.is_valid()) m.mark_changed(fl, m.is_deleted(fl) ? ChangeEvent::faces_removed : ChangeEvent::faces_changed);
+    if (fr.is_valid()) m.mark_changed(fr, m.is_deleted(fr) ? ChangeEvent::faces_removed : ChangeEvent::faces_changed);
+    m.mark_changed(v0, ChangeEvent::vertices_removed);
+    mark_faces_around(m, v1, ChangeEvent::faces_changed);
     m.changes().notify();
   }
   return v1;
@@ -528,14 +501,14 @@ bool flip_allowed(const Mesh& m, Halfedge h, Halfedge t, Halfedge h1, Halfedge h
 }  // namespace
 
 bool can_flip(const SurfaceMesh& m, Edge e) {
-  if (!live(m, e) || m.is_boundary(e)) return false;
+  if (!m.is_live(e) || m.is_boundary(e)) return false;
   const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
   const Halfedge h1 = m.next(h), h2 = m.next(h1), t1 = m.next(t), t2 = m.next(t1);
   return m.next(h2) == h && m.next(t2) == t && flip_allowed(m, h, t, h1, h2, t1);
 }
 
 Edge flip(SurfaceMesh& m, Edge e) {
-  if (!live(m, e) || m.is_boundary(e)) return {};
+  if (!m.is_live(e) || m.is_boundary(e)) return {};
   const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
   const Halfedge h1 = m.next(h), h2 = m.next(h1), t1 = m.next(t), t2 = m.next(t1);
   if (m.next(h2) != h || m.next(t2) != t || !flip_allowed(m, h, t, h1, h2, t1)) return {};
@@ -569,7 +542,7 @@ Edge flip(SurfaceMesh& m, Edge e) {
 }
 
 // ---------------------------------------------------------------------------------------------
-bool can_split_face(const SurfaceMesh& m, Face f) { return live(m, f); }
+bool can_split_face(const SurfaceMesh& m, Face f) { return m.is_live(f); }
 
 Vertex split_face(SurfaceMesh& m, Face f, const Vec3& point) {
   if (!can_split_face(m, f) || !is_finite(point)) return {};
@@ -619,16 +592,16 @@ Vertex split_face(SurfaceMesh& m, Face f, const Vec3& point) {
   return v;
 }
 
-bool can_split_face(const SurfaceMesh& m, Halfedge h0, Halfedge h1) {
-  if (!live(m, h0) || !live(m, h1) || h0 == h1) return false;
+bool can_cut_face(const SurfaceMesh& m, Halfedge h0, Halfedge h1) {
+  if (!m.is_live(h0) || !m.is_live(h1) || h0 == h1) return false;
   const Face f = m.face(h0);
   if (!f.is_valid() || m.face(h1) != f) return false;
   if (m.next(h0) == h1 || m.next(h1) == h0) return false;
   return !m.find_halfedge(m.to_vertex(h0), m.to_vertex(h1)).is_valid();
 }
 
-Halfedge split_face(SurfaceMesh& m, Halfedge h0, Halfedge h1) {
-  if (!can_split_face(m, h0, h1)) return {};
+Halfedge cut_face(SurfaceMesh& m, Halfedge h0, Halfedge h1) {
+  if (!can_cut_face(m, h0, h1)) return {};
   const Face f = m.face(h0);
   const Halfedge a0 = m.next(h0), a1 = m.next(h1);
   const Halfedge n = m.new_edge(m.to_vertex(h0), m.to_vertex(h1)), nt = Mesh::twin(n);
@@ -648,7 +621,7 @@ Halfedge split_face(SurfaceMesh& m, Halfedge h0, Halfedge h1) {
   m.set_halfedge(f, h1);
   m.set_halfedge(g, h0);
   m.mark_changed(f);
-  m.mark_changed(g, kFacesAdded);
+  m.mark_changed(g, ChangeEvent::faces_added);
   m.changes().notify();
   return n;
 }
@@ -684,7 +657,7 @@ bool plan_add_face(const Mesh& m, std::span<const Vertex> vs, AddPlan& plan) {
   const std::size_t n = vs.size();
   if (n < 3) return false;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!live(m, vs[i])) return false;
+    if (!m.is_live(vs[i])) return false;
     for (std::size_t j = i + 1; j < n; ++j)
       if (vs[i] == vs[j]) return false;
   }
@@ -757,14 +730,14 @@ Face add_face(SurfaceMesh& m, std::span<const Vertex> vs) {
     if (!m.halfedge(v).is_valid() || !m.is_boundary(m.halfedge(v))) m.set_halfedge(v, hs[i]);
     m.adjust_outgoing_halfedge(v);
   }
-  m.mark_changed(f, kFacesAdded);
+  m.mark_changed(f, ChangeEvent::faces_added);
   m.changes().notify();
   return f;
 }
 
 // ---------------------------------------------------------------------------------------------
 bool can_remove_face(const SurfaceMesh& m, Face f) {
-  if (!live(m, f)) return false;
+  if (!m.is_live(f)) return false;
   for (Vertex v : m.vertices(f))
     if (gaps_after(m, v, [&](Face g) { return g == f; }) > 1) return false;
   return true;
@@ -787,7 +760,7 @@ std::vector<Face> faces_of(const Mesh& m, Vertex v) {
 }  // namespace
 
 bool can_remove_vertex(const SurfaceMesh& m, Vertex v) {
-  if (!live(m, v)) return false;
+  if (!m.is_live(v)) return false;
   const std::vector<Face> fs = faces_of(m, v);
   auto removed = [&](Face g) { return std::binary_search(fs.begin(), fs.end(), g); };
   // Every corner of the removed faces is affected, not only v's neighbours (polygons).
@@ -805,7 +778,7 @@ bool remove_vertex(SurfaceMesh& m, Vertex v) {
   if (!m.is_deleted(v)) {
     m.set_halfedge(v, Halfedge());
     m.mark_deleted(v);
-    m.mark_changed(v, kVerticesRemoved);
+    m.mark_changed(v, ChangeEvent::vertices_removed);
   }
   m.changes().notify();
   return true;
@@ -813,16 +786,16 @@ bool remove_vertex(SurfaceMesh& m, Vertex v) {
 
 // ---------------------------------------------------------------------------------------------
 std::vector<Face> fill_hole(SurfaceMesh& m, Halfedge h) {
-  if (!live(m, h) || !m.is_boundary(h)) return {};
+  if (!m.is_live(h) || !m.is_boundary(h)) return {};
   std::vector<Halfedge> loop;
   for (Halfedge g : m.loop(h)) {
     loop.push_back(g);
-    if (loop.size() > m.halfedges_size()) return {};  // a damaged loop
+    if (loop.size() > m.halfedge_slots()) return {};  // a damaged loop
   }
   if (loop.size() < 3) return {};
   m.changes().begin();  // one notification for the whole fill
   const Face f = m.new_face();
-  m.mark_changed(f, kFacesAdded);
+  m.mark_changed(f, ChangeEvent::faces_added);
   for (Halfedge g : loop) m.set_face(g, f);
   m.set_halfedge(f, h);
   for (Halfedge g : loop) m.adjust_outgoing_halfedge(m.to_vertex(g));
@@ -833,7 +806,7 @@ std::vector<Face> fill_hole(SurfaceMesh& m, Halfedge h) {
     double best = HUGE_VAL;
     for (Halfedge h0 : m.halfedges(rest)) {
       const Halfedge h1 = m.next(m.next(h0));
-      if (!can_split_face(m, h0, h1)) continue;
+      if (!can_cut_face(m, h0, h1)) continue;
       const Vec3d d = to_double(m.position(m.to_vertex(h0))) - to_double(m.position(m.to_vertex(h1)));
       const double len = dot(d, d);
       if (len < best) {
@@ -843,7 +816,7 @@ std::vector<Face> fill_hole(SurfaceMesh& m, Halfedge h) {
       }
     }
     if (!best0.is_valid()) break;
-    const Halfedge n = split_face(m, best0, best1);
+    const Halfedge n = cut_face(m, best0, best1);
     rest = m.face(n);
     faces.push_back(rest);
   }
@@ -855,7 +828,7 @@ std::vector<Face> fill_hole(SurfaceMesh& m, Halfedge h) {
 SurfaceMesh detach_faces(SurfaceMesh& m, std::span<const Face> faces_in, std::vector<Vertex>* vertex_origin) {
   std::vector<Face> faces;
   for (Face f : faces_in)
-    if (live(m, f)) faces.push_back(f);
+    if (m.is_live(f)) faces.push_back(f);
   std::sort(faces.begin(), faces.end());
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
 
@@ -890,7 +863,7 @@ SurfaceMesh detach_faces(SurfaceMesh& m, std::span<const Face> faces_in, std::ve
   out.halfedge_properties().add_missing_from(m.halfedge_properties());
   out.edge_properties().add_missing_from(m.edge_properties());
   out.face_properties().add_missing_from(m.face_properties());
-  std::vector<Vertex> origin(out.vertices_size());
+  std::vector<Vertex> origin(out.vertex_slots());
   for (Vertex v : out.vertices()) {
     origin[v.idx()] = verts[rep.vertex_origin[v.idx()]];
     out.vertex_properties().copy_element_from(m.vertex_properties(), origin[v.idx()].idx(), v.idx());

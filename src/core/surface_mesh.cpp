@@ -110,13 +110,13 @@ std::vector<Edge> SurfaceMesh::adjacent_edges(Edge e) const {
 
 std::vector<Halfedge> SurfaceMesh::boundary_loops() const {
   std::vector<Halfedge> loops;
-  std::vector<bool> seen(halfedges_size(), false);
+  std::vector<bool> seen(halfedge_slots(), false);
   for (Halfedge h : halfedges()) {
     if (!is_boundary(h) || seen[h.idx()]) continue;
     loops.push_back(h);
     Halfedge g = h;
     // A damaged mesh could hold an open chain; the step limit keeps this finite.
-    for (std::size_t steps = 0; steps <= halfedges_size() && !seen[g.idx()]; ++steps) {
+    for (std::size_t steps = 0; steps <= halfedge_slots() && !seen[g.idx()]; ++steps) {
       seen[g.idx()] = true;
       g = next(g);
     }
@@ -257,10 +257,10 @@ void compact_vector(std::vector<T>& v, const std::vector<Index>& map, std::size_
 GarbageMaps SurfaceMesh::garbage_collection() {
   GarbageMaps maps;
   std::size_t nv = 0, ne = 0, nf = 0;
-  maps.vertices = keep_map(v_deleted_, vertices_size(), nv);
-  maps.edges = keep_map(e_deleted_, edges_size(), ne);
-  maps.faces = keep_map(f_deleted_, faces_size(), nf);
-  maps.halfedges.assign(halfedges_size(), kInvalidIndex);
+  maps.vertices = keep_map(v_deleted_, vertex_slots(), nv);
+  maps.edges = keep_map(e_deleted_, edge_slots(), ne);
+  maps.faces = keep_map(f_deleted_, face_slots(), nf);
+  maps.halfedges.assign(halfedge_slots(), kInvalidIndex);
   for (std::size_t e = 0; e < maps.edges.size(); ++e) {
     if (maps.edges[e] == kInvalidIndex) continue;
     maps.halfedges[2 * e] = 2 * maps.edges[e];
@@ -299,9 +299,9 @@ void SurfaceMesh::shrink_to_fit() {
   h_face_.shrink_to_fit();
   v_halfedge_.shrink_to_fit();
   f_halfedge_.shrink_to_fit();
-  v_deleted_.resize(vertices_size());  // the flags may have grown ahead of the elements
-  e_deleted_.resize(edges_size());
-  f_deleted_.resize(faces_size());
+  v_deleted_.resize(vertex_slots());  // the flags may have grown ahead of the elements
+  e_deleted_.resize(edge_slots());
+  f_deleted_.resize(face_slots());
   v_deleted_.shrink_to_fit();
   e_deleted_.shrink_to_fit();
   f_deleted_.shrink_to_fit();

@@ -47,7 +47,7 @@ struct DisjointSets {
 
 std::vector<std::string> SurfaceMesh::validate() const {
   Report r;
-  const std::size_t nh = halfedges_size(), nv = vertices_size(), nf = faces_size();
+  const std::size_t nh = halfedge_slots(), nv = vertex_slots(), nf = face_slots();
 
   // Sizes and cached counters.
   // The deletion flags may be longer than their element arrays (they grow ahead of them); the
@@ -62,27 +62,25 @@ std::vector<std::string> SurfaceMesh::validate() const {
       count_set(f_deleted_) != deleted_faces_)
     r.add("cached deleted-element counts disagree with the deletion flags");
 
-  auto live_v = [&](Vertex v) { return v.is_valid() && v.idx() < nv && !is_deleted(v); };
-  auto live_h = [&](Halfedge h) { return h.is_valid() && h.idx() < nh && !is_deleted(h); };
-  auto live_f = [&](Face f) { return f.is_valid() && f.idx() < nf && !is_deleted(f); };
+  // The array sizes agree from here on, so is_live() may be trusted.
 
   // Per half-edge references; links are only followed once every reference is known to be live.
   std::vector<Index> predecessors(nh, 0);
   std::size_t bad_refs = 0;
   for (Halfedge h : halfedges()) {
     bool ok = true;
-    if (!live_v(to_vertex(h))) { r.add(str(h) + " points to dead or invalid " + str(to_vertex(h))); ok = false; }
-    if (!live_h(next(h))) { r.add(str(h) + " has dead or invalid next " + str(next(h))); ok = false; }
-    if (face(h).is_valid() && !live_f(face(h))) { r.add(str(h) + " lies in dead or invalid " + str(face(h))); ok = false; }
+    if (!is_live(to_vertex(h))) { r.add(str(h) + " points to dead or invalid " + str(to_vertex(h))); ok = false; }
+    if (!is_live(next(h))) { r.add(str(h) + " has dead or invalid next " + str(next(h))); ok = false; }
+    if (face(h).is_valid() && !is_live(face(h))) { r.add(str(h) + " lies in dead or invalid " + str(face(h))); ok = false; }
     if (!ok) { ++bad_refs; continue; }
     ++predecessors[next(h).idx()];
   }
   for (Vertex v : vertices()) {
     Halfedge h = halfedge(v);
-    if (h.is_valid() && !live_h(h)) { r.add(str(v) + " has dead or invalid " + str(h)); ++bad_refs; }
+    if (h.is_valid() && !is_live(h)) { r.add(str(v) + " has dead or invalid " + str(h)); ++bad_refs; }
   }
   for (Face f : faces()) {
-    if (!live_h(halfedge(f))) { r.add(str(f) + " has dead or invalid " + str(halfedge(f))); ++bad_refs; }
+    if (!is_live(halfedge(f))) { r.add(str(f) + " has dead or invalid " + str(halfedge(f))); ++bad_refs; }
   }
   if (bad_refs > 0) return r.finish();
 

@@ -14,7 +14,7 @@
 #include "hedge/io/io.h"
 #include "parse_util.h"
 
-namespace hedge::io {
+namespace hedge {
 
 namespace {
 
@@ -49,42 +49,42 @@ class Fd {
 
 }  // namespace
 
-Format format_from_path(const std::string& path) {
+FileFormat format_from_path(const std::string& path) {
   const std::size_t slash = path.find_last_of('/');
   const std::size_t dot = path.find_last_of('.');
   if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) {
     const std::string ext = lower(path.substr(dot + 1));
-    if (ext == "obj") return Format::obj;
-    if (ext == "off") return Format::off;
-    if (ext == "ply") return Format::ply;
-    if (ext == "stl") return Format::stl;
+    if (ext == "obj") return FileFormat::obj;
+    if (ext == "off") return FileFormat::off;
+    if (ext == "ply") return FileFormat::ply;
+    if (ext == "stl") return FileFormat::stl;
   }
   throw IoError(path, 0, -1, "unknown file extension (expected .obj, .off, .ply or .stl)");
 }
 
-IndexedMesh read_indexed(std::string_view data, Format format, const std::string& name) {
+IndexedMesh read_indexed(std::string_view data, FileFormat format, const std::string& name) {
   switch (format) {
-    case Format::obj:
+    case FileFormat::obj:
       return read_obj(data, name);
-    case Format::off:
+    case FileFormat::off:
       return read_off(data, name);
-    case Format::ply:
+    case FileFormat::ply:
       return read_ply(data, name);
-    case Format::stl:
+    case FileFormat::stl:
       return read_stl(data, name);
   }
   throw IoError(name, 0, -1, "unknown format");
 }
 
-std::string write_indexed(const IndexedMesh& mesh, Format format, const WriteOptions& options) {
+std::string write_indexed(const IndexedMesh& mesh, FileFormat format, const WriteOptions& options) {
   switch (format) {
-    case Format::obj:
+    case FileFormat::obj:
       return write_obj(mesh, options);
-    case Format::off:
+    case FileFormat::off:
       return write_off(mesh, options);
-    case Format::ply:
+    case FileFormat::ply:
       return write_ply(mesh, options);
-    case Format::stl:
+    case FileFormat::stl:
       return write_stl(mesh, options);
   }
   throw InvalidInputError("unknown format");
@@ -169,19 +169,19 @@ void write_file_atomic(const std::string& path, std::string_view bytes) {
 }
 
 IndexedMesh read_indexed_file(const std::string& path) {
-  const Format format = format_from_path(path);
+  const FileFormat format = format_from_path(path);
   return read_indexed(read_file(path), format, path);
 }
 
 void write_indexed_file(const IndexedMesh& mesh, const std::string& path, const WriteOptions& options) {
-  const Format format = format_from_path(path);
+  const FileFormat format = format_from_path(path);
   write_file_atomic(path, write_indexed(mesh, format, options));
 }
 
-BuildOptions default_build_options(Format format) {
+BuildOptions default_build_options(FileFormat format) {
   BuildOptions options;
   options.policy = TopologyPolicy::repair;
-  options.weld = format == Format::stl ? Weld::exact : Weld::none;
+  options.weld = format == FileFormat::stl ? Weld::exact : Weld::none;
   return options;
 }
 
@@ -194,10 +194,10 @@ SurfaceMesh read_mesh(const std::string& path, const BuildOptions& options, Buil
 }
 
 void write_mesh(const SurfaceMesh& mesh, const std::string& path, const WriteOptions& options) {
-  const Format format = format_from_path(path);
+  const FileFormat format = format_from_path(path);
   ExportOptions export_options;
   // STL stores triangles only.
-  if (format == Format::stl) export_options.triangulation = Triangulation::fan;
+  if (format == FileFormat::stl) export_options.triangulation = Triangulation::fan;
   write_file_atomic(path, write_indexed(to_indexed(mesh, export_options), format, options));
 }
 
@@ -239,4 +239,4 @@ void check_writable(const IndexedMesh& mesh) {
 
 }  // namespace detail
 
-}  // namespace hedge::io
+}  // namespace hedge

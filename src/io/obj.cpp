@@ -14,7 +14,7 @@
 #include "hedge/io/io.h"
 #include "parse_util.h"
 
-namespace hedge::io {
+namespace hedge {
 
 namespace {
 
@@ -317,4 +317,4 @@ std::string write_obj(const IndexedMesh& mesh, const WriteOptions& options) {
   return out;
 }
 
-}  // namespace hedge::io
+}  // namespace hedge

@@ -12,7 +12,7 @@
 #include "hedge/io/io.h"
 #include "parse_util.h"
 
-namespace hedge::io {
+namespace hedge {
 
 namespace {
 
@@ -144,4 +144,4 @@ std::string write_off(const IndexedMesh& mesh, const WriteOptions& options) {
   return out;
 }
 
-}  // namespace hedge::io
+}  // namespace hedge

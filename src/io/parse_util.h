@@ -18,7 +18,7 @@
 #include "hedge/core/indexed_mesh.h"
 #include "hedge/error.h"
 
-namespace hedge::io::detail {
+namespace hedge::detail {
 
 //! Blank characters inside a line. '\r' counts as blank so that CRLF files parse like LF files.
 inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
@@ -266,9 +266,9 @@ inline void append_vec3_line(std::string& out, const Vec3& v, int precision) {
   out += '\n';
 }
 
-}  // namespace hedge::io::detail
+}  // namespace hedge::detail
 
-namespace hedge::io::detail {
+namespace hedge::detail {
 
 //! Checks what the writers rely on: face sizes adding up to the index count, indices within the
 //! pools, attribute index arrays of the right length. \throw InvalidInputError naming the problem.
@@ -300,4 +300,4 @@ inline void append_counted_faces(std::string& out, const IndexedMesh& mesh) {
   });
 }
 
-}  // namespace hedge::io::detail
+}  // namespace hedge::detail

@@ -17,7 +17,7 @@
 #include "hedge/io/io.h"
 #include "parse_util.h"
 
-namespace hedge::io {
+namespace hedge {
 
 namespace {
 
@@ -643,4 +643,4 @@ std::string write_ply(const IndexedMesh& mesh, const WriteOptions& options) {
   return out;
 }
 
-}  // namespace hedge::io
+}  // namespace hedge

@@ -15,7 +15,7 @@
 #include "hedge/io/io.h"
 #include "parse_util.h"
 
-namespace hedge::io {
+namespace hedge {
 
 namespace {
 
@@ -214,4 +214,4 @@ std::string write_stl(const IndexedMesh& mesh, const WriteOptions& options) {
   return out;
 }
 
-}  // namespace hedge::io
+}  // namespace hedge

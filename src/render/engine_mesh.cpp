@@ -69,7 +69,7 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
   SurfaceMesh mesh = build(in, bo, report);
 
   auto origin_prop = mesh.get_halfedge_property<Vec2>("h:texcoord");
-  std::vector<Index> origin(mesh.halfedges_size(), kInvalidIndex);
+  std::vector<Index> origin(mesh.halfedge_slots(), kInvalidIndex);
   if (origin_prop)
     for (Face f : mesh.faces())
       for (Halfedge h : mesh.halfedges(f)) {

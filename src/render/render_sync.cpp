@@ -78,11 +78,11 @@ SlotRange RenderSync::triangles(Face f) const {
 std::size_t RenderSync::seam_splits() const {
   std::size_t used = 0;
   for (Index first : v_first_rv_) used += first != kInvalidIndex;
-  return live_vertex_count() - used;
+  return n_vertices() - used;
 }
 
 std::size_t RenderSync::buffer_bytes() const {
-  return vertex_count() * layout_.stride * sizeof(float) + index_count() * sizeof(std::uint32_t);
+  return vertex_slots() * layout_.stride * sizeof(float) + index_count() * sizeof(std::uint32_t);
 }
 
 // ---- Layout and sources -------------------------------------------------------------------------
@@ -290,7 +290,7 @@ std::uint32_t RenderSync::allocate_triangles(std::uint32_t count) {
   if (count < free_triangles_.size() && !free_triangles_[count].empty()) {
     const std::uint32_t first = free_triangles_[count].back();
     free_triangles_[count].pop_back();
-    free_triangle_count_ -= count;
+    free_triangle_slots_ -= count;
     return first;
   }
   const std::uint32_t first = static_cast<std::uint32_t>(indices_.size() / 3);
@@ -306,7 +306,7 @@ void RenderSync::free_triangles(std::uint32_t first, std::uint32_t count) {
   mark_indices_written(3 * first, 3 * count);
   if (free_triangles_.size() <= count) free_triangles_.resize(count + 1);
   free_triangles_[count].push_back(first);
-  free_triangle_count_ += count;
+  free_triangle_slots_ += count;
 }
 
 void RenderSync::mark_indices_written(std::uint32_t first, std::uint32_t count) {
@@ -426,12 +426,12 @@ void RenderSync::recompute_normals(const ChangeLog::Pending& p) {
 // ---- Sync ---------------------------------------------------------------------------------------------
 void RenderSync::grow_element_arrays() {
   const SurfaceMesh& m = *mesh_;
-  if (v_first_rv_.size() < m.vertices_size()) v_first_rv_.resize(m.vertices_size(), kInvalidIndex);
-  if (corner_rv_.size() < m.halfedges_size()) corner_rv_.resize(m.halfedges_size(), kInvalidIndex);
-  if (face_slots_.size() < m.faces_size()) face_slots_.resize(m.faces_size());
+  if (v_first_rv_.size() < m.vertex_slots()) v_first_rv_.resize(m.vertex_slots(), kInvalidIndex);
+  if (corner_rv_.size() < m.halfedge_slots()) corner_rv_.resize(m.halfedge_slots(), kInvalidIndex);
+  if (face_slots_.size() < m.face_slots()) face_slots_.resize(m.face_slots());
   if (computed_normals_) {
-    if (vertex_normal_.size() < m.vertices_size()) vertex_normal_.resize(m.vertices_size());
-    if (normal_stamp_.size() < m.vertices_size()) normal_stamp_.resize(m.vertices_size(), 0);
+    if (vertex_normal_.size() < m.vertex_slots()) vertex_normal_.resize(m.vertex_slots());
+    if (normal_stamp_.size() < m.vertex_slots()) normal_stamp_.resize(m.vertex_slots(), 0);
   }
 }
 
@@ -444,12 +444,12 @@ void RenderSync::full_build() {
   rv_next_.clear();
   rv_refs_.clear();
   free_vertices_.clear();
-  v_first_rv_.assign(m.vertices_size(), kInvalidIndex);
-  corner_rv_.assign(m.halfedges_size(), kInvalidIndex);
+  v_first_rv_.assign(m.vertex_slots(), kInvalidIndex);
+  corner_rv_.assign(m.halfedge_slots(), kInvalidIndex);
   indices_.clear();
-  face_slots_.assign(m.faces_size(), FaceSlots{});
+  face_slots_.assign(m.face_slots(), FaceSlots{});
   free_triangles_.clear();
-  free_triangle_count_ = 0;
+  free_triangle_slots_ = 0;
   vertex_normal_.clear();
   normal_stamp_.clear();
   grow_element_arrays();
@@ -462,7 +462,7 @@ void RenderSync::full_build() {
 
   if (computed_normals_) {
     // One Newell normal per face, added to its corners in increasing face order.
-    std::vector<Vec3d> sum(m.vertices_size(), Vec3d{0, 0, 0});
+    std::vector<Vec3d> sum(m.vertex_slots(), Vec3d{0, 0, 0});
     for (Face f : m.faces()) {
       const Vec3d n = face_normal_sum(m, f);
       for (Vertex v : m.vertices(f)) sum[v.idx()] += n;
@@ -514,21 +514,21 @@ const SyncResult& RenderSync::sync() {
   // ones included): rewrite the vertex-sourced floats of their render vertices.
   if (computed_normals_) recompute_normals(p);
   for (Vertex v : computed_normals_ ? std::span<const Vertex>(normal_seeds_) : p.vertices)
-    if (v.is_valid() && v.idx() < m.vertices_size() && !m.is_deleted(v)) rewrite_vertex_data(v);
+    if (m.is_live(v)) rewrite_vertex_data(v);
   // Faces: removed ones free their slots first, so that new faces can reuse them. A polygon's
   // triangulation depends on its corner positions, so polygons about a moved vertex are redone.
   dirty_faces_.assign(p.faces.begin(), p.faces.end());
   for (Vertex v : p.vertices) {
-    if (!v.is_valid() || v.idx() >= m.vertices_size() || m.is_deleted(v) || m.is_isolated(v)) continue;
+    if (!m.is_live(v) || m.is_isolated(v)) continue;
     for (Face f : m.faces(v))
       if (face_slots_[f.idx()].count > 1) dirty_faces_.push_back(f);
   }
   std::sort(dirty_faces_.begin(), dirty_faces_.end());
   dirty_faces_.erase(std::unique(dirty_faces_.begin(), dirty_faces_.end()), dirty_faces_.end());
   for (Face f : dirty_faces_)
-    if (f.idx() < m.faces_size() && m.is_deleted(f)) release_face(f);
+    if (f.idx() < m.face_slots() && m.is_deleted(f)) release_face(f);
   for (Face f : dirty_faces_)
-    if (f.idx() < m.faces_size() && !m.is_deleted(f)) sync_face(f);
+    if (m.is_live(f)) sync_face(f);
   result_.faces_synced = dirty_faces_.size();
   mesh_->changes().consume(consumer_);
   finish_result();
@@ -611,7 +611,7 @@ RenderRemap RenderSync::compact() {
     if (face_slots_[f].count > 0) order.push_back({face_slots_[f].first, static_cast<Index>(f)});
   std::sort(order.begin(), order.end());
   std::vector<std::uint32_t> packed;
-  packed.reserve(3 * live_triangle_count());
+  packed.reserve(3 * n_triangles());
   for (const auto& [first, f] : order) {
     FaceSlots& s = face_slots_[f];
     const std::uint32_t to = static_cast<std::uint32_t>(packed.size() / 3);
@@ -623,7 +623,7 @@ RenderRemap RenderSync::compact() {
   }
   indices_.swap(packed);
   free_triangles_.clear();
-  free_triangle_count_ = 0;
+  free_triangle_slots_ = 0;
   report_full();
   return map;
 }

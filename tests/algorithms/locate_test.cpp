@@ -247,7 +247,7 @@ std::vector<Ray> query_rays(const SurfaceMesh& m, int n, unsigned seed) {
   return rays;
 }
 
-SurfaceMesh load(const std::string& name) { return io::read_mesh(test::data_path(name)); }
+SurfaceMesh load(const std::string& name) { return read_mesh(test::data_path(name)); }
 
 // ---- Triangle primitives. ----
 
@@ -716,7 +716,7 @@ TEST(FaceBvh, UpdateAfterSplittingFacesWithoutRebuilding) {
   std::mt19937 rng(43);
   std::vector<Face> changed;
   for (int i = 0; i < 60; ++i) {
-    const Face f(static_cast<Index>(rng() % m.faces_size()));
+    const Face f(static_cast<Index>(rng() % m.face_slots()));
     // Move the new vertex off the surface so that the new faces stick out and get hit.
     const Vec3 p = centroid(m, f) + Vec3{0.02f, 0.03f, -0.01f};
     const auto faces = split_triangle(m, f, p);
@@ -737,7 +737,7 @@ TEST(FaceBvh, UpdateAfterRemovingFaces) {
   SurfaceMesh m = load("anchor.off");
   FaceBvh bvh(m);
   // Faces no two of which share a vertex, so that every hole is a separate boundary loop.
-  std::vector<bool> used(m.vertices_size(), false);
+  std::vector<bool> used(m.vertex_slots(), false);
   std::vector<Face> removed;
   for (Face f : m.faces()) {
     if (f.idx() % 5 != 0) continue;
@@ -766,7 +766,7 @@ TEST(FaceBvh, UpdateAfterRemovingFaces) {
   }
 }
 
-// The breaking simulation of the original: find the face under a point, split it there, repeat.
+// An impact sequence as fracture makes one: find the face under a point, split it there, repeat.
 TEST(FaceBvh, RepeatedSplitsInOnePlaceKeepTheTreeShallow) {
   IndexedMesh plate = test::grid(40, true);
   SurfaceMesh m = build(plate);
@@ -809,7 +809,7 @@ TEST(FaceBvh, ManyUpdatesTriggerAFullRebuildAndStayCorrect) {
   std::mt19937 rng(67);
   const std::size_t n = m.n_faces();
   for (std::size_t i = 0; i < n / 3; ++i) {
-    const Face f(static_cast<Index>(rng() % m.faces_size()));
+    const Face f(static_cast<Index>(rng() % m.face_slots()));
     const auto faces = split_triangle(m, f, centroid(m, f));
     bvh.update(std::vector<Face>(faces.begin(), faces.end()));
     const FaceBvh::Stats s = bvh.stats();
@@ -839,14 +839,14 @@ TEST(FaceBvh, UpdateAfterSplitFlipAndCollapseOperations) {
     std::vector<Face> changed, removed;
     switch (i % 4) {
       case 0: {  // split a face at a point a little off the surface
-        const Face f(random_live(m.faces_size(), [&](Index x) { return m.is_deleted(Face(x)); }));
+        const Face f(random_live(m.face_slots(), [&](Index x) { return m.is_deleted(Face(x)); }));
         const Vertex v = split_face(m, f, centroid(m, f) + Vec3{0.01f, -0.01f, 0.01f});
         ASSERT_TRUE(v.is_valid());
         faces_around(v, changed);
         break;
       }
       case 1: {  // split an edge at its midpoint
-        const Edge e(random_live(m.edges_size(), [&](Index x) { return m.is_deleted(Edge(x)); }));
+        const Edge e(random_live(m.edge_slots(), [&](Index x) { return m.is_deleted(Edge(x)); }));
         const Vec3 mid = (m.position(m.vertex(e, 0)) + m.position(m.vertex(e, 1))) * 0.5f;
         const Vertex v = split_edge(m, e, mid);
         ASSERT_TRUE(v.is_valid());
@@ -854,14 +854,14 @@ TEST(FaceBvh, UpdateAfterSplitFlipAndCollapseOperations) {
         break;
       }
       case 2: {  // flip an edge: its two faces change corners
-        const Edge e(random_live(m.edges_size(), [&](Index x) { return m.is_deleted(Edge(x)); }));
+        const Edge e(random_live(m.edge_slots(), [&](Index x) { return m.is_deleted(Edge(x)); }));
         if (!can_flip(m, e)) continue;
         for (Face f : m.faces(e)) changed.push_back(f);
         ASSERT_TRUE(flip(m, e).is_valid());
         break;
       }
       case 3: {  // collapse an edge to its midpoint: the triangles on it vanish
-        const Halfedge h(random_live(m.halfedges_size(), [&](Index x) { return m.is_deleted(Halfedge(x)); }));
+        const Halfedge h(random_live(m.halfedge_slots(), [&](Index x) { return m.is_deleted(Halfedge(x)); }));
         if (!can_collapse(m, h)) continue;
         std::vector<Face> before;
         faces_around(m.from_vertex(h), before);
@@ -889,7 +889,7 @@ TEST(FaceBvh, UpdateAfterSplitFlipAndCollapseOperations) {
 TEST(FaceBvh, UpdateRejectsForeignHandlesAndGarbageCollectionNeedsABuild) {
   SurfaceMesh m = load("anchor.off");
   FaceBvh bvh(m);
-  EXPECT_THROW(bvh.update(std::vector<Face>{Face(Index(m.faces_size()))}), InvalidInputError);
+  EXPECT_THROW(bvh.update(std::vector<Face>{Face(Index(m.face_slots()))}), InvalidInputError);
   EXPECT_THROW(bvh.update({}, std::vector<Face>{Face()}), InvalidInputError);
   // Deleted faces in the changed list count as removed; unknown removed faces are ignored.
   ASSERT_TRUE(remove_face(m, Face(10)));

@@ -28,7 +28,7 @@ struct Case {
 class RandomEdits : public ::testing::TestWithParam<Case> {};
 
 TEST_P(RandomEdits, StayValidAndKeepEuler) {
-  SurfaceMesh m = io::read_mesh(test::data_path(GetParam().file));
+  SurfaceMesh m = read_mesh(test::data_path(GetParam().file));
   ASSERT_TRUE(m.validate().empty());
   RandomEditOptions o;
   o.seed = 20261122;
@@ -59,7 +59,7 @@ INSTANTIATE_TEST_SUITE_P(DataMeshes, RandomEdits,
                          });
 
 TEST(RandomEditsDeterminism, SameSeedSameMesh) {
-  SurfaceMesh a = io::read_mesh(test::data_path("spot_control_mesh.obj"));
+  SurfaceMesh a = read_mesh(test::data_path("spot_control_mesh.obj"));
   SurfaceMesh b = a;
   RandomEditOptions o;
   o.seed = 99;
@@ -69,7 +69,7 @@ TEST(RandomEditsDeterminism, SameSeedSameMesh) {
   EXPECT_EQ(a.halfedge_vertex_array(), b.halfedge_vertex_array());
   EXPECT_EQ(a.halfedge_next_array(), b.halfedge_next_array());
   o.seed = 100;
-  SurfaceMesh c = io::read_mesh(test::data_path("spot_control_mesh.obj"));
+  SurfaceMesh c = read_mesh(test::data_path("spot_control_mesh.obj"));
   random_edits(c, o);
   EXPECT_NE(a.halfedge_vertex_array(), c.halfedge_vertex_array());
   EXPECT_TRUE(a.validate().empty());
@@ -79,7 +79,7 @@ TEST(RandomEditsDeterminism, SameSeedSameMesh) {
 class CollapseUntilRefused : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(CollapseUntilRefused, EndsValid) {
-  SurfaceMesh m = io::read_mesh(test::data_path(GetParam()));
+  SurfaceMesh m = read_mesh(test::data_path(GetParam()));
   const long long chi = static_cast<long long>(m.n_vertices()) - static_cast<long long>(m.n_edges()) +
                         static_cast<long long>(m.n_faces());
   std::size_t collapses = 0;

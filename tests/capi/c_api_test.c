@@ -818,14 +818,14 @@ static void test_grid_operations(void) {
   int32_t ok = -1;
   CHECK_OK(hedge_face_halfedges(grid, 0, loop, 4, &n));
   CHECK(n == 4);
-  CHECK_OK(hedge_can_split_face_diagonal(grid, loop[0], loop[1], &ok));
+  CHECK_OK(hedge_can_cut_face(grid, loop[0], loop[1], &ok));
   CHECK(ok == 0);
-  CHECK_STATUS(hedge_split_face_diagonal(grid, loop[0], loop[1], &cut), HEDGE_ERROR_REFUSED);
+  CHECK_STATUS(hedge_cut_face(grid, loop[0], loop[1], &cut), HEDGE_ERROR_REFUSED);
   CHECK(same_counts(counts_of(grid), c));
-  CHECK_OK(hedge_can_split_face_diagonal(grid, loop[0], loop[2], &ok));
+  CHECK_OK(hedge_can_cut_face(grid, loop[0], loop[2], &ok));
   CHECK(ok == 1);
   const uint32_t d0 = to_vertex(grid, loop[0]), d1 = to_vertex(grid, loop[2]);
-  CHECK_OK(hedge_split_face_diagonal(grid, loop[0], loop[2], &cut));
+  CHECK_OK(hedge_cut_face(grid, loop[0], loop[2], &cut));
   CHECK(from_vertex(grid, cut) == d0 && to_vertex(grid, cut) == d1);
   c = counts_of(grid);
   CHECK(c.faces == 5 && c.edges == 13);
@@ -995,11 +995,11 @@ static void check_triangles_match(const hedge_mesh* mesh, const hedge_render* re
   uint64_t n_indices = 0;
   CHECK_OK(hedge_render_index_data(render, &indices, &n_indices));
   CHECK(n_indices == rc.index_count);
-  uint32_t* source = malloc(sizeof(uint32_t) * (rc.vertex_count + 1));
+  uint32_t* source = malloc(sizeof(uint32_t) * (rc.vertex_slots + 1));
   uint32_t n_source = 0;
   CHECK(source != NULL);
-  CHECK_OK(hedge_render_vertex_source(render, source, rc.vertex_count + 1, &n_source));
-  CHECK(n_source == rc.vertex_count);
+  CHECK_OK(hedge_render_vertex_source(render, source, rc.vertex_slots + 1, &n_source));
+  CHECK(n_source == rc.vertex_slots);
   uint32_t live_triangles = 0;
   for (uint32_t f = 0; f < mc.face_slots; ++f) {
     int32_t deleted = 1;
@@ -1014,7 +1014,7 @@ static void check_triangles_match(const hedge_mesh* mesh, const hedge_render* re
     const uint32_t* t = indices + 3 * first;
     uint32_t mapped[3];
     for (int k = 0; k < 3; ++k) {
-      CHECK(t[k] < rc.vertex_count);
+      CHECK(t[k] < rc.vertex_slots);
       mapped[k] = source[t[k]];
     }
     CHECK(face_is(mesh, f, mapped, 3));
@@ -1026,7 +1026,7 @@ static void check_triangles_match(const hedge_mesh* mesh, const hedge_render* re
       CHECK(source[rv] == corners[k]);
     }
   }
-  CHECK(live_triangles == rc.live_triangle_count);
+  CHECK(live_triangles == rc.triangles);
   free(source);
 }
 
@@ -1091,11 +1091,11 @@ static void test_render(void) {
 
   hedge_buffer_counts rc;
   CHECK_OK(hedge_render_counts(render, &rc));
-  CHECK(rc.vertex_count == 5 && rc.live_vertex_count == 5 && rc.seam_splits == 1);
-  CHECK(rc.free_triangle_count == 0);
-  CHECK(rc.vertex_capacity >= rc.vertex_count && rc.index_capacity >= rc.index_count);
-  CHECK(rc.index_count == 6 && rc.live_triangle_count == 2 && rc.free_triangle_count == 0);
-  CHECK(rc.buffer_bytes == (uint64_t)rc.vertex_count * layout.stride * 4 + (uint64_t)rc.index_count * 4);
+  CHECK(rc.vertex_slots == 5 && rc.vertices == 5 && rc.seam_splits == 1);
+  CHECK(rc.free_triangle_slots == 0);
+  CHECK(rc.vertex_capacity >= rc.vertex_slots && rc.index_capacity >= rc.index_count);
+  CHECK(rc.index_count == 6 && rc.triangles == 2 && rc.free_triangle_slots == 0);
+  CHECK(rc.buffer_bytes == (uint64_t)rc.vertex_slots * layout.stride * 4 + (uint64_t)rc.index_count * 4);
 
   /* The first build is a full one. */
   hedge_sync_result result;
@@ -1106,7 +1106,7 @@ static void test_render(void) {
   const float* data = NULL;
   uint64_t n_data = 0;
   CHECK_OK(hedge_render_vertex_data(render, HEDGE_STREAM_VERTICES, &data, &n_data));
-  CHECK(data != NULL && n_data == (uint64_t)rc.vertex_count * layout.stride);
+  CHECK(data != NULL && n_data == (uint64_t)rc.vertex_slots * layout.stride);
   float copied[256];
   uint64_t n_copied = 0;
   CHECK_STATUS(hedge_render_copy_vertex_data(render, HEDGE_STREAM_VERTICES, copied, n_data - 1, &n_copied),
@@ -1116,7 +1116,7 @@ static void test_render(void) {
   CHECK(n_copied == n_data && memcmp(copied, data, sizeof(float) * n_data) == 0);
   for (uint32_t i = 0; i < 6; ++i) {
     int found = 0;
-    for (uint32_t r = 0; r < rc.vertex_count; ++r) {
+    for (uint32_t r = 0; r < rc.vertex_slots; ++r) {
       const float* v = data + r * layout.stride;
       if (v[0] == kQuadPositions[3 * i] && v[1] == kQuadPositions[3 * i + 1] &&
           v[2] == kQuadPositions[3 * i + 2] && v[6] == kQuadTexcoords[2 * i] &&
@@ -1125,7 +1125,7 @@ static void test_render(void) {
     }
     CHECK(found);
   }
-  for (uint32_t r = 0; r < rc.vertex_count; ++r) { /* the flat quad's computed normals are +z */
+  for (uint32_t r = 0; r < rc.vertex_slots; ++r) { /* the flat quad's computed normals are +z */
     const float* v = data + r * layout.stride;
     CHECK(fabsf(v[3]) < 1e-6f && fabsf(v[4]) < 1e-6f && fabsf(v[5] - 1) < 1e-6f);
   }
@@ -1192,7 +1192,7 @@ static void test_render(void) {
   CHECK_OK(hedge_render_commit(render, &result));
   CHECK(result.faces_synced >= 4 && result.index_range_count >= 1);
   CHECK_OK(hedge_render_counts(render, &rc));
-  CHECK(rc.live_triangle_count == 4);
+  CHECK(rc.triangles == 4);
   CHECK_VALID(mesh);
   check_triangles_match(mesh, render);
 
@@ -1200,21 +1200,21 @@ static void test_render(void) {
   CHECK_OK(hedge_remove_face(mesh, 0));
   CHECK_OK(hedge_render_sync(render, NULL));
   CHECK_OK(hedge_render_counts(render, &rc));
-  CHECK(rc.live_triangle_count == 3 && rc.index_count == 12);
+  CHECK(rc.triangles == 3 && rc.index_count == 12);
   CHECK_VALID(mesh);
   check_triangles_match(mesh, render);
   {
     uint32_t vmap[32], tmap[32], nv = 0, nt = 0;
     CHECK_STATUS(hedge_render_compact(render, vmap, 32, &nv, tmap, 1, &nt), HEDGE_ERROR_BUFFER_TOO_SMALL);
-    CHECK(nv == rc.vertex_count && nt == 4);
+    CHECK(nv == rc.vertex_slots && nt == 4);
     CHECK_OK(hedge_render_compact(render, vmap, 32, &nv, tmap, 32, &nt));
     uint32_t freed = 0;
     for (uint32_t t = 0; t < nt; ++t) freed += tmap[t] == INVALID;
     CHECK(freed == 1);
     hedge_buffer_counts after;
     CHECK_OK(hedge_render_counts(render, &after));
-    CHECK(after.index_count == 9 && after.live_triangle_count == 3 &&
-          after.vertex_count == after.live_vertex_count);
+    CHECK(after.index_count == 9 && after.triangles == 3 &&
+          after.vertex_slots == after.vertices);
     check_triangles_match(mesh, render);
     CHECK_OK(hedge_render_compact(render, NULL, 0, NULL, NULL, 0, NULL));
   }
@@ -1250,7 +1250,7 @@ static void test_render(void) {
   uint64_t n_positions = 0, n_normals = 0;
   CHECK_OK(hedge_render_vertex_data(render2, HEDGE_STREAM_VERTICES, &positions, &n_positions));
   CHECK_OK(hedge_render_vertex_data(render2, HEDGE_STREAM_NORMALS, &normals, &n_normals));
-  CHECK(n_positions == 3 * (uint64_t)rc2.vertex_count && n_normals == 3 * (uint64_t)rc2.vertex_count);
+  CHECK(n_positions == 3 * (uint64_t)rc2.vertex_slots && n_normals == 3 * (uint64_t)rc2.vertex_slots);
   CHECK_OK(hedge_render_vertex_source(render2, source, 16, &n_source));
   for (uint32_t r = 0; r < n_source; ++r) {
     float p[3];
@@ -1261,7 +1261,7 @@ static void test_render(void) {
   uint64_t n_tex = 0, n_col = 0;
   CHECK_OK(hedge_render_copy_vertex_data(render2, HEDGE_STREAM_TEXCOORDS, texcoords, 64, &n_tex));
   CHECK_OK(hedge_render_copy_vertex_data(render2, HEDGE_STREAM_COLORS, colors, 128, &n_col));
-  CHECK(n_tex == 2 * (uint64_t)rc2.vertex_count && n_col == 4 * (uint64_t)rc2.vertex_count);
+  CHECK(n_tex == 2 * (uint64_t)rc2.vertex_slots && n_col == 4 * (uint64_t)rc2.vertex_slots);
   CHECK(colors[0] == 1 && colors[1] == 0 && colors[3] == 1);
 
   /* Destroying the mesh destroys its render objects: their handles are then bad. */
@@ -1289,7 +1289,7 @@ static void test_render_lifetime(void) {
   CHECK_OK(hedge_render_sync(b, NULL));
   hedge_buffer_counts rc;
   CHECK_OK(hedge_render_counts(b, &rc));
-  CHECK(rc.live_triangle_count == 6);
+  CHECK(rc.triangles == 6);
   CHECK_OK(hedge_mesh_destroy(mesh));
   CHECK_STATUS(hedge_render_commit(a, NULL), HEDGE_ERROR_BAD_HANDLE);
   CHECK_STATUS(hedge_render_sync(b, NULL), HEDGE_ERROR_BAD_HANDLE);
@@ -1363,8 +1363,8 @@ static void test_every_function_error_path(void) {
     BAD(hedge_flip(m, 0));
     BAD(hedge_can_split_face(m, 0, &i));
     BAD(hedge_split_face(m, 0, 0, 0, 0, &u));
-    BAD(hedge_can_split_face_diagonal(m, 0, 4, &i));
-    BAD(hedge_split_face_diagonal(m, 0, 4, &u));
+    BAD(hedge_can_cut_face(m, 0, 4, &i));
+    BAD(hedge_cut_face(m, 0, 4, &u));
     BAD(hedge_split_all_faces(m, buffer, 16, &u));
     BAD(hedge_can_add_face(m, tri, 3, &i));
     BAD(hedge_add_face(m, tri, 3, &u));

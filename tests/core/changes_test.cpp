@@ -19,7 +19,7 @@ bool contains(std::span<const H> s, H h) {
 TEST(ChangeLog, RecordsNothingWithoutConsumers) {
   ChangeLog log;
   EXPECT_FALSE(log.active());
-  log.mark(Vertex(3), kVerticesMoved);
+  log.mark(Vertex(3), ChangeEvent::vertices_moved);
   const auto id = log.attach();
   EXPECT_TRUE(log.pending(id).empty());
 }
@@ -27,20 +27,20 @@ TEST(ChangeLog, RecordsNothingWithoutConsumers) {
 TEST(ChangeLog, EachElementOncePerRead) {
   ChangeLog log;
   const auto id = log.attach();
-  log.mark(Vertex(3), kVerticesMoved);
-  log.mark(Vertex(3), kVerticesMoved);
-  log.mark(Face(1), kFacesChanged);
-  log.mark(Vertex(5), kVertexDataChanged);
+  log.mark(Vertex(3), ChangeEvent::vertices_moved);
+  log.mark(Vertex(3), ChangeEvent::vertices_moved);
+  log.mark(Face(1), ChangeEvent::faces_changed);
+  log.mark(Vertex(5), ChangeEvent::vertex_data_changed);
   auto p = log.pending(id);
   ASSERT_EQ(p.vertices.size(), 2u);
   EXPECT_EQ(p.vertices[0], Vertex(3));
   EXPECT_EQ(p.vertices[1], Vertex(5));
   ASSERT_EQ(p.faces.size(), 1u);
-  EXPECT_EQ(p.events, kVerticesMoved | kVertexDataChanged | kFacesChanged);
+  EXPECT_EQ(p.events, ChangeEvent::vertices_moved | ChangeEvent::vertex_data_changed | ChangeEvent::faces_changed);
   log.consume(id);
   EXPECT_TRUE(log.pending(id).empty());
   // After a read, the same element is logged again.
-  log.mark(Vertex(3), kVerticesMoved);
+  log.mark(Vertex(3), ChangeEvent::vertices_moved);
   EXPECT_EQ(log.pending(id).vertices.size(), 1u);
 }
 
@@ -48,10 +48,10 @@ TEST(ChangeLog, ConsumersReadIndependently) {
   ChangeLog log;
   const auto a = log.attach();
   const auto b = log.attach();
-  log.mark(Vertex(1), kVerticesMoved);
+  log.mark(Vertex(1), ChangeEvent::vertices_moved);
   log.consume(a);
-  log.mark(Vertex(1), kVerticesMoved);  // a has read; it must see this mark
-  log.mark(Vertex(2), kVerticesMoved);
+  log.mark(Vertex(1), ChangeEvent::vertices_moved);  // a has read; it must see this mark
+  log.mark(Vertex(2), ChangeEvent::vertices_moved);
   auto pa = log.pending(a);
   auto pb = log.pending(b);
   EXPECT_TRUE(contains(pa.vertices, Vertex(1)));
@@ -64,7 +64,7 @@ TEST(ChangeLog, ConsumersReadIndependently) {
   // A consumer attached later sees only later marks, including elements logged before.
   const auto c = log.attach();
   EXPECT_TRUE(log.pending(c).empty());
-  log.mark(Vertex(2), kVerticesMoved);
+  log.mark(Vertex(2), ChangeEvent::vertices_moved);
   EXPECT_TRUE(contains(log.pending(c).vertices, Vertex(2)));
   log.detach(a);
   log.detach(b);
@@ -74,29 +74,29 @@ TEST(ChangeLog, ConsumersReadIndependently) {
 
 TEST(ChangeLog, SubscribersHearOncePerNotifyAndOncePerTransaction) {
   ChangeLog log;
-  std::vector<std::uint32_t> heard;
-  const auto s = log.subscribe(kVerticesMoved | kFacesRemoved, [&](std::uint32_t e) { heard.push_back(e); });
-  for (int i = 0; i < 100; ++i) log.mark(Vertex(i), kVerticesMoved);
-  log.mark(Face(0), kFacesAdded);  // not in the mask
+  std::vector<ChangeEvent> heard;
+  const auto s = log.subscribe(ChangeEvent::vertices_moved | ChangeEvent::faces_removed, [&](ChangeEvent e) { heard.push_back(e); });
+  for (int i = 0; i < 100; ++i) log.mark(Vertex(i), ChangeEvent::vertices_moved);
+  log.mark(Face(0), ChangeEvent::faces_added);  // not in the mask
   log.notify();
   ASSERT_EQ(heard.size(), 1u);
-  EXPECT_EQ(heard[0], kVerticesMoved);
+  EXPECT_EQ(heard[0], ChangeEvent::vertices_moved);
   log.notify();  // nothing new
   EXPECT_EQ(heard.size(), 1u);
 
   log.begin();
   log.begin();
-  log.mark(Vertex(1), kVerticesMoved);
+  log.mark(Vertex(1), ChangeEvent::vertices_moved);
   log.notify();
-  log.mark(Face(2), kFacesRemoved);
+  log.mark(Face(2), ChangeEvent::faces_removed);
   log.notify();
   EXPECT_FALSE(log.commit());  // inner
   EXPECT_EQ(heard.size(), 1u);
   EXPECT_TRUE(log.commit());   // outermost
   ASSERT_EQ(heard.size(), 2u);
-  EXPECT_EQ(heard[1], kVerticesMoved | kFacesRemoved);
+  EXPECT_EQ(heard[1], ChangeEvent::vertices_moved | ChangeEvent::faces_removed);
   log.unsubscribe(s);
-  log.mark(Vertex(1), kVerticesMoved);
+  log.mark(Vertex(1), ChangeEvent::vertices_moved);
   log.notify();
   EXPECT_EQ(heard.size(), 2u);
 }
@@ -104,7 +104,7 @@ TEST(ChangeLog, SubscribersHearOncePerNotifyAndOncePerTransaction) {
 TEST(ChangeLog, ResetClearsListsAndCopiesStartEmpty) {
   ChangeLog log;
   const auto id = log.attach();
-  log.mark(Vertex(1), kVerticesMoved);
+  log.mark(Vertex(1), ChangeEvent::vertices_moved);
   log.mark_reset();
   auto p = log.pending(id);
   EXPECT_TRUE(p.reset);
@@ -120,7 +120,7 @@ TEST(ChangeLog, ConsumersStayWithTheMeshObjectAcrossCopiesAndAssignments) {
   const SurfaceMesh b = build(test::grid(3, true));
   const auto id = a.changes().attach();
   int heard = 0;
-  a.changes().subscribe(kReset, [&](std::uint32_t) { ++heard; });
+  a.changes().subscribe(ChangeEvent::reset, [&](ChangeEvent) { ++heard; });
   SurfaceMesh copy(a);  // a new object: nobody watches it
   EXPECT_FALSE(copy.changes().active());
   a = b;  // a's watchers stay and learn that everything changed
@@ -139,7 +139,7 @@ TEST(ChangeLog, OperationsMarkTheFacesTheyTouch) {
   SurfaceMesh m = build(test::grid(4, true));
   const auto id = m.changes().attach();
   int notified = 0;
-  m.changes().subscribe(kAllEvents, [&](std::uint32_t) { ++notified; });
+  m.changes().subscribe(ChangeEvent::all, [&](ChangeEvent) { ++notified; });
 
   Edge e;
   for (Edge c : m.edges())
@@ -161,7 +161,7 @@ TEST(ChangeLog, OperationsMarkTheFacesTheyTouch) {
   p = m.changes().pending(id);
   EXPECT_EQ(p.faces.size(), 4u);
   for (Face f : m.faces(v)) EXPECT_TRUE(contains(p.faces, f));
-  EXPECT_TRUE(p.events & kFacesAdded);
+  EXPECT_TRUE(any(p.events & ChangeEvent::faces_added));
   m.changes().consume(id);
 
   const Halfedge h = m.halfedge(v);
@@ -171,7 +171,7 @@ TEST(ChangeLog, OperationsMarkTheFacesTheyTouch) {
   p = m.changes().pending(id);
   EXPECT_TRUE(contains(p.faces, gone));
   for (Face f : m.faces(s)) EXPECT_TRUE(contains(p.faces, f));
-  EXPECT_TRUE(p.events & kFacesRemoved);
+  EXPECT_TRUE(any(p.events & ChangeEvent::faces_removed));
   m.changes().consume(id);
 
   m.set_position(Vertex(0), Vec3{-1, -1, 0});

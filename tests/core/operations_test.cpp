@@ -36,16 +36,16 @@ Snapshot snapshot(const SurfaceMesh& m) {
   s.hv = m.halfedge_vertex_array();
   s.hn = m.halfedge_next_array();
   s.hf = m.halfedge_face_array();
-  for (Index i = 0; i < m.vertices_size(); ++i) {
+  for (Index i = 0; i < m.vertex_slots(); ++i) {
     s.vh.push_back(m.halfedge(Vertex(i)));
     s.vdel.push_back(m.is_deleted(Vertex(i)));
     s.pos.push_back(m.position(Vertex(i)));
   }
-  for (Index i = 0; i < m.faces_size(); ++i) {
+  for (Index i = 0; i < m.face_slots(); ++i) {
     s.fh.push_back(m.halfedge(Face(i)));
     s.fdel.push_back(m.is_deleted(Face(i)));
   }
-  for (Index i = 0; i < m.edges_size(); ++i) s.edel.push_back(m.is_deleted(Edge(i)));
+  for (Index i = 0; i < m.edge_slots(); ++i) s.edel.push_back(m.is_deleted(Edge(i)));
   if (auto uv = m.get_halfedge_property<Vec2>("h:texcoord")) s.uv = uv.vector();
   if (auto w = m.get_vertex_property<float>("v:weight")) s.weight = w.vector();
   return s;
@@ -142,10 +142,10 @@ TEST(SplitEdge, UserInterpolationPolicy) {
 }
 
 TEST(SplitEdge, RepeatedSplitsKeepNoState) {
-  // The original guarded SplitHalfEdge with a recursion lock; here each call is independent.
+  // Each call is independent: no state (such as a recursion lock) carries over between splits.
   SurfaceMesh m = build(test::tetrahedron());
   for (int i = 0; i < 50; ++i) {
-    Edge e(static_cast<Index>(i % m.edges_size()));
+    Edge e(static_cast<Index>(i % m.edge_slots()));
     Vec3 a = m.position(m.vertex(e, 0)), b = m.position(m.vertex(e, 1));
     ASSERT_TRUE(split_edge(m, e, (a + b) * 0.5f).is_valid());
     ASSERT_TRUE(m.validate().empty());
@@ -160,7 +160,7 @@ TEST(SplitEdge, PointInsideThePositionArray) {
   // move) as the vertex is added.
   SurfaceMesh m = textured_grid(2, true);
   for (int i = 0; i < 200; ++i) {
-    const Edge e(static_cast<Index>(i % m.edges_size()));
+    const Edge e(static_cast<Index>(i % m.edge_slots()));
     const Vec3 expected = m.position(m.vertex(e, 1));
     const Vertex v = split_edge(m, e, m.position(m.vertex(e, 1)));
     ASSERT_TRUE(v.is_valid());
@@ -173,7 +173,7 @@ TEST(SplitFace, PointInsideThePositionArray) {
   // As for split_edge: the point may be a reference into the position array that grows.
   SurfaceMesh m = textured_grid(2, true);
   for (int i = 0; i < 200; ++i) {
-    const Face f(static_cast<Index>(i % m.faces_size()));
+    const Face f(static_cast<Index>(i % m.face_slots()));
     const Vertex corner = m.to_vertex(m.halfedge(f));
     const Vec3 expected = m.position(corner);
     const Vertex v = split_face(m, f, m.position(corner));
@@ -360,16 +360,16 @@ TEST(SplitFace, TriangleAndPolygon) {
   EXPECT_TRUE(c.validate().empty());
 }
 
-TEST(SplitFace, CutAlongDiagonal) {
+TEST(CutFace, AlongADiagonal) {
   SurfaceMesh m = textured_grid(1, false);  // one quad
   Halfedge h0 = m.halfedge(Face(0));
   Halfedge adjacent = m.next(h0);
   Snapshot s = snapshot(m);
-  EXPECT_FALSE(split_face(m, h0, adjacent).is_valid());
-  EXPECT_FALSE(split_face(m, h0, h0).is_valid());
+  EXPECT_FALSE(cut_face(m, h0, adjacent).is_valid());
+  EXPECT_FALSE(cut_face(m, h0, h0).is_valid());
   EXPECT_TRUE(snapshot(m) == s);
   Halfedge h1 = m.next(m.next(h0));
-  Halfedge n = split_face(m, h0, h1);
+  Halfedge n = cut_face(m, h0, h1);
   ASSERT_TRUE(n.is_valid());
   EXPECT_EQ(m.from_vertex(n), m.to_vertex(h0));
   EXPECT_EQ(m.to_vertex(n), m.to_vertex(h1));
@@ -378,7 +378,7 @@ TEST(SplitFace, CutAlongDiagonal) {
   expect_corner_uv_matches_position(m);
   EXPECT_TRUE(m.validate().empty());
   // The diagonal now exists: cutting again is refused.
-  EXPECT_FALSE(can_split_face(m, m.prev(n), m.next(n)));
+  EXPECT_FALSE(can_cut_face(m, m.prev(n), m.next(n)));
 }
 
 TEST(SplitFace, SplitAllFacesTriplesTriangles) {
@@ -412,7 +412,7 @@ TEST(AddRemoveFace, BuildFaceByFaceMatchesBulkBuild) {
   IndexedMesh in = test::grid(4, true);
   SurfaceMesh bulk = build(in);
   std::vector<std::size_t> pending;
-  std::vector<bool> queued(bulk.faces_size(), false);
+  std::vector<bool> queued(bulk.face_slots(), false);
   pending.push_back(0);
   queued[0] = true;
   for (std::size_t i = 0; i < pending.size(); ++i)

@@ -167,9 +167,9 @@ TEST(SurfaceMesh, PropertiesAreNamedAndTyped) {
   auto fl = m.add_face_property<int>("f:label", -1);
   auto el = m.add_edge_property<int>("e:label", 0);
   auto hl = m.add_halfedge_property<int>("h:label", 0);
-  EXPECT_EQ(fl.vector().size(), m.faces_size());
-  EXPECT_EQ(el.vector().size(), m.edges_size());
-  EXPECT_EQ(hl.vector().size(), m.halfedges_size());
+  EXPECT_EQ(fl.vector().size(), m.face_slots());
+  EXPECT_EQ(el.vector().size(), m.edge_slots());
+  EXPECT_EQ(hl.vector().size(), m.halfedge_slots());
   // Properties grow with the mesh.
   Vertex v = m.add_vertex({5, 5, 5});
   EXPECT_EQ(m.position(v), (Vec3{5, 5, 5}));
@@ -200,7 +200,7 @@ TEST(SurfaceMesh, GarbageCollectionCompactsAndReturnsMaps) {
   for (Face f : m.faces()) ftag[f] = static_cast<int>(f.idx());
 
   for (Index f = 0; f < 4; ++f) m.mark_deleted(Face(f));
-  for (Index e = 0; e < m.edges_size(); ++e)
+  for (Index e = 0; e < m.edge_slots(); ++e)
     if (m.vertex(Edge(e), 0).idx() < 4) m.mark_deleted(Edge(e));
   for (Index v = 0; v < 4; ++v) m.mark_deleted(Vertex(v));
   m.mark_deleted(Vertex(8));
@@ -214,9 +214,9 @@ TEST(SurfaceMesh, GarbageCollectionCompactsAndReturnsMaps) {
 
   GarbageMaps maps = m.garbage_collection();
   EXPECT_FALSE(m.has_garbage());
-  EXPECT_EQ(m.vertices_size(), 4u);
-  EXPECT_EQ(m.edges_size(), 6u);
-  EXPECT_EQ(m.faces_size(), 4u);
+  EXPECT_EQ(m.vertex_slots(), 4u);
+  EXPECT_EQ(m.edge_slots(), 6u);
+  EXPECT_EQ(m.face_slots(), 4u);
   EXPECT_EQ(maps.vertices[0], kInvalidIndex);
   EXPECT_EQ(maps.vertices[4], 0u);
   EXPECT_EQ(maps.vertices[7], 3u);

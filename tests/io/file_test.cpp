@@ -16,7 +16,7 @@
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 
-namespace hedge::io {
+namespace hedge {
 namespace {
 
 namespace fs = std::filesystem;
@@ -51,10 +51,10 @@ class FileTest : public ::testing::Test {
 };
 
 TEST(FormatFromPath, ExtensionsAreCaseInsensitive) {
-  EXPECT_EQ(format_from_path("a/b/mesh.obj"), Format::obj);
-  EXPECT_EQ(format_from_path("MESH.OFF"), Format::off);
-  EXPECT_EQ(format_from_path("x.y.Ply"), Format::ply);
-  EXPECT_EQ(format_from_path("/abs/part.StL"), Format::stl);
+  EXPECT_EQ(format_from_path("a/b/mesh.obj"), FileFormat::obj);
+  EXPECT_EQ(format_from_path("MESH.OFF"), FileFormat::off);
+  EXPECT_EQ(format_from_path("x.y.Ply"), FileFormat::ply);
+  EXPECT_EQ(format_from_path("/abs/part.StL"), FileFormat::stl);
   EXPECT_THROW(format_from_path("mesh.gltf"), IoError);
   EXPECT_THROW(format_from_path("dir.obj/mesh"), IoError);
   EXPECT_THROW(format_from_path("obj"), IoError);
@@ -67,20 +67,20 @@ TEST(FormatFromPath, ExtensionsAreCaseInsensitive) {
 }
 
 TEST(DefaultBuildOptions, RepairEverywhereAndWeldOnlyStl) {
-  for (Format f : {Format::obj, Format::off, Format::ply, Format::stl}) {
+  for (FileFormat f : {FileFormat::obj, FileFormat::off, FileFormat::ply, FileFormat::stl}) {
     const BuildOptions o = default_build_options(f);
     EXPECT_EQ(o.policy, TopologyPolicy::repair);
-    EXPECT_EQ(o.weld, f == Format::stl ? Weld::exact : Weld::none);
+    EXPECT_EQ(o.weld, f == FileFormat::stl ? Weld::exact : Weld::none);
   }
 }
 
 TEST(ReadIndexed, DispatchesOnTheFormat) {
   const std::string off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
-  EXPECT_EQ(read_indexed(off, Format::off).indices, (std::vector<std::uint32_t>{0, 1, 2}));
-  EXPECT_THROW(read_indexed(off, Format::obj), IoError);
-  EXPECT_THROW(read_indexed(off, Format::ply), IoError);
-  IndexedMesh m = read_indexed(off, Format::off);
-  for (Format f : {Format::obj, Format::off, Format::ply, Format::stl})
+  EXPECT_EQ(read_indexed(off, FileFormat::off).indices, (std::vector<std::uint32_t>{0, 1, 2}));
+  EXPECT_THROW(read_indexed(off, FileFormat::obj), IoError);
+  EXPECT_THROW(read_indexed(off, FileFormat::ply), IoError);
+  IndexedMesh m = read_indexed(off, FileFormat::off);
+  for (FileFormat f : {FileFormat::obj, FileFormat::off, FileFormat::ply, FileFormat::stl})
     EXPECT_EQ(read_indexed(write_indexed(m, f), f).positions, m.positions);
 }
 
@@ -312,4 +312,4 @@ TEST(ReadMesh, EverySharedMeshRepairsIntoAValidMesh) {
 }
 
 }  // namespace
-}  // namespace hedge::io
+}  // namespace hedge

@@ -11,7 +11,7 @@
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 
-namespace hedge::io {
+namespace hedge {
 namespace {
 
 std::string data_path(const std::string& name) { return std::string(HEDGE_DATA_DIR) + "/" + name; }
@@ -395,4 +395,4 @@ TEST(ObjWrite, RejectsAnInconsistentMesh) {
 }
 
 }  // namespace
-}  // namespace hedge::io
+}  // namespace hedge

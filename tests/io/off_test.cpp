@@ -7,7 +7,7 @@
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 
-namespace hedge::io {
+namespace hedge {
 namespace {
 
 std::string data_path(const std::string& name) { return std::string(HEDGE_DATA_DIR) + "/" + name; }
@@ -153,4 +153,4 @@ TEST(OffWrite, WritesTheExpectedText) {
 }
 
 }  // namespace
-}  // namespace hedge::io
+}  // namespace hedge

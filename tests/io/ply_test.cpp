@@ -12,7 +12,7 @@
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 
-namespace hedge::io {
+namespace hedge {
 namespace {
 
 std::string data_path(const std::string& name) { return std::string(HEDGE_DATA_DIR) + "/" + name; }
@@ -544,4 +544,4 @@ TEST(PlyWrite, BinaryLayoutIsLittleEndianFloat) {
 }
 
 }  // namespace
-}  // namespace hedge::io
+}  // namespace hedge

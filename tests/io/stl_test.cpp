@@ -10,7 +10,7 @@
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 
-namespace hedge::io {
+namespace hedge {
 namespace {
 
 std::string data_path(const std::string& name) { return std::string(HEDGE_DATA_DIR) + "/" + name; }
@@ -211,4 +211,4 @@ TEST(StlWrite, DegenerateTrianglesGetAZeroNormal) {
 }
 
 }  // namespace
-}  // namespace hedge::io
+}  // namespace hedge

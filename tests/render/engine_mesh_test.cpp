@@ -51,7 +51,7 @@ void expect_round_trip(const EngineMesh& e, const EngineImportOptions& io, const
   const VertexLayout& l = rs.layout();
   ASSERT_EQ(l.texcoord >= 0, !e.texcoords.empty());
   ASSERT_GE(l.color, 0);
-  ASSERT_EQ(rs.live_triangle_count(), e.indices.size() / 3);
+  ASSERT_EQ(rs.n_triangles(), e.indices.size() / 3);
   std::size_t split_count = 0;
   for (std::size_t t = 0; t < e.indices.size() / 3; ++t) {
     const Face f(report.face_map[t]);
@@ -80,13 +80,13 @@ void expect_round_trip(const EngineMesh& e, const EngineImportOptions& io, const
   // Welding made the topology: fewer mesh vertices than engine vertices, and exactly as many
   // render vertices as the engine had (each engine vertex is one attribute set on one position).
   EXPECT_LT(m.n_vertices(), e.positions.size());
-  EXPECT_EQ(rs.live_vertex_count(), e.positions.size());
+  EXPECT_EQ(rs.n_vertices(), e.positions.size());
   split_count = rs.seam_splits();
   EXPECT_EQ(split_count, e.positions.size() - m.n_vertices());
 }
 
 TEST(EngineMesh, SeamsSurviveARoundTripOnSpot) {
-  const IndexedMesh obj = io::read_indexed_file(std::string(HEDGE_DATA_DIR) + "/spot_triangulated.obj");
+  const IndexedMesh obj = read_indexed_file(std::string(HEDGE_DATA_DIR) + "/spot_triangulated.obj");
   ASSERT_FALSE(obj.texcoord_indices.empty());
   const EngineMesh e = engine_mesh_from(obj);
   ASSERT_GT(e.positions.size(), obj.positions.size());  // the UV seams duplicated vertices
@@ -97,7 +97,7 @@ TEST(EngineMesh, UnityConventionsRoundTrip) {
   // Unity: clockwise triangles, left-handed axes. Importing and exporting with the same
   // conventions gives the engine its own arrays back; the half-edge mesh in between is CCW and
   // right-handed, so its normals point outwards.
-  const IndexedMesh obj = io::read_indexed_file(std::string(HEDGE_DATA_DIR) + "/spot_triangulated.obj");
+  const IndexedMesh obj = read_indexed_file(std::string(HEDGE_DATA_DIR) + "/spot_triangulated.obj");
   EngineMesh e = engine_mesh_from(obj);
   for (Vec3& p : e.positions) p.x = -p.x;
   for (std::size_t t = 0; t < e.indices.size(); t += 3) std::swap(e.indices[t + 1], e.indices[t + 2]);

@@ -43,7 +43,7 @@ struct Mirror {
     const auto v = rs.vertices();
     ASSERT_EQ(vertices.size(), v.size());
     const std::size_t stride = rs.layout().stride;
-    for (std::size_t i = 0; i < rs.vertex_count(); ++i) {
+    for (std::size_t i = 0; i < rs.vertex_slots(); ++i) {
       if (!rs.render_vertex_source()[i].is_valid()) continue;
       for (std::size_t k = 0; k < stride; ++k)
         ASSERT_EQ(vertices[i * stride + k], v[i * stride + k]) << "render vertex " << i << " float " << k;
@@ -80,7 +80,7 @@ void expect_consistent(const RenderSync& rs) {
   const auto ix = rs.indices();
   const auto src = rs.render_vertex_source();
   const std::size_t stride = rs.layout().stride;
-  std::vector<int> used(rs.vertex_count(), 0);
+  std::vector<int> used(rs.vertex_slots(), 0);
   std::vector<int> slot_owner(ix.size() / 3, 0);
   std::size_t live_tris = 0;
   for (Face f : m.faces()) {
@@ -92,7 +92,7 @@ void expect_consistent(const RenderSync& rs) {
       EXPECT_EQ(slot_owner[t]++, 0) << "triangle slot " << t << " owned twice";
       for (int k = 0; k < 3; ++k) {
         const Index rv = ix[3 * t + k];
-        ASSERT_LT(rv, rs.vertex_count());
+        ASSERT_LT(rv, rs.vertex_slots());
         ASSERT_TRUE(src[rv].is_valid());
         bool corner_of_f = false;
         for (Vertex w : m.vertices(f)) corner_of_f |= w == src[rv];
@@ -102,7 +102,7 @@ void expect_consistent(const RenderSync& rs) {
     }
     for (Halfedge h : m.halfedges(f)) {
       const Index rv = rs.render_vertex(h);
-      ASSERT_LT(rv, rs.vertex_count());
+      ASSERT_LT(rv, rs.vertex_slots());
       EXPECT_EQ(src[rv], m.to_vertex(h));
       const Vec3 p = m.position(m.to_vertex(h));
       const float sx = rs.options().flip_x ? -1.f : 1.f;
@@ -111,8 +111,8 @@ void expect_consistent(const RenderSync& rs) {
       EXPECT_EQ(rs.vertices()[rv * stride + 2], p.z);
     }
   }
-  EXPECT_EQ(live_tris, rs.live_triangle_count());
-  EXPECT_EQ(live_tris + rs.free_triangle_count(), ix.size() / 3);
+  EXPECT_EQ(live_tris, rs.n_triangles());
+  EXPECT_EQ(live_tris + rs.free_triangle_slots(), ix.size() / 3);
   std::size_t live_rv = 0;
   for (std::size_t i = 0; i < src.size(); ++i) {
     if (!src[i].is_valid()) continue;
@@ -120,10 +120,10 @@ void expect_consistent(const RenderSync& rs) {
     EXPECT_GT(used[i], 0) << "render vertex " << i << " is live but unused";
     EXPECT_FALSE(m.is_deleted(src[i]));
   }
-  EXPECT_EQ(live_rv, rs.live_vertex_count());
+  EXPECT_EQ(live_rv, rs.n_vertices());
   for (std::size_t t = 0; t < slot_owner.size(); ++t)
     if (!slot_owner[t]) EXPECT_TRUE(ix[3 * t] == ix[3 * t + 1] && ix[3 * t] == ix[3 * t + 2]) << "free slot " << t;
-  EXPECT_LE(rs.vertex_count(), rs.vertex_capacity());
+  EXPECT_LE(rs.vertex_slots(), rs.vertex_capacity());
   EXPECT_LE(rs.index_count(), rs.index_capacity());
 }
 
@@ -178,13 +178,13 @@ TEST(RenderSync, FirstSyncMatchesTheMesh) {
   EXPECT_EQ(rs.layout().stride, 6u);  // position + computed normal
   EXPECT_EQ(rs.layout().normal, 3);
   EXPECT_EQ(rs.layout().texcoord, -1);
-  EXPECT_EQ(rs.vertex_count(), m.n_vertices());
+  EXPECT_EQ(rs.vertex_slots(), m.n_vertices());
   EXPECT_EQ(rs.index_count(), 16u * 2 * 3);
   EXPECT_EQ(rs.seam_splits(), 0u);
   EXPECT_TRUE(rs.last_result().full);
   expect_consistent(rs);
   // The grid lies in z = 0 with CCW faces: every normal is +z.
-  for (std::size_t i = 0; i < rs.vertex_count(); ++i) EXPECT_FLOAT_EQ(rs.vertices()[i * 6 + 5], 1.f);
+  for (std::size_t i = 0; i < rs.vertex_slots(); ++i) EXPECT_FLOAT_EQ(rs.vertices()[i * 6 + 5], 1.f);
   // Nothing changed: nothing to upload.
   EXPECT_TRUE(rs.sync().empty());
 }
@@ -196,7 +196,7 @@ TEST(RenderSync, SeamsSplitRenderVertices) {
   EXPECT_EQ(rs.layout().stride, 8u);
   // The 5 vertices of the seam column get a second render vertex each.
   EXPECT_EQ(rs.seam_splits(), 5u);
-  EXPECT_EQ(rs.vertex_count(), m.n_vertices() + 5);
+  EXPECT_EQ(rs.vertex_slots(), m.n_vertices() + 5);
   expect_consistent(rs);
 }
 
@@ -294,11 +294,11 @@ void random_edit_run(SurfaceMesh m, const RenderOptions& options, std::size_t st
 }
 
 TEST(RenderSync, RandomEditsOnATexturedTriangleMesh) {
-  random_edit_run(io::read_mesh(data("spot_triangulated.obj")), {}, 400);
+  random_edit_run(read_mesh(data("spot_triangulated.obj")), {}, 400);
 }
 
 TEST(RenderSync, RandomEditsOnAQuadMeshWithSeparateStreamsAndClockwiseWinding) {
-  SurfaceMesh m = io::read_mesh(data("spot_control_mesh.obj"));
+  SurfaceMesh m = read_mesh(data("spot_control_mesh.obj"));
   RenderOptions o;
   o.winding = Winding::cw;
   o.flip_x = true;
@@ -306,7 +306,7 @@ TEST(RenderSync, RandomEditsOnAQuadMeshWithSeparateStreamsAndClockwiseWinding) {
 }
 
 TEST(RenderSync, RandomEditsOnAnOpenMeshWithComputedNormals) {
-  random_edit_run(io::read_mesh(data("elephant-with-holes.off")), {}, 300);
+  random_edit_run(read_mesh(data("elephant-with-holes.off")), {}, 300);
 }
 
 TEST(RenderSync, TransactionSyncsOnceAtCommit) {
@@ -354,7 +354,7 @@ TEST(RenderSync, RemovedFacesFreeSlotsThatNewFacesReuse) {
   const SlotRange was = rs.triangles(f);
   ASSERT_TRUE(remove_face(m, f));
   rs.sync();
-  EXPECT_EQ(rs.free_triangle_count(), 1u);
+  EXPECT_EQ(rs.free_triangle_slots(), 1u);
   EXPECT_EQ(rs.indices()[3 * was.first], rs.indices()[3 * was.first + 1]);  // degenerate now
   expect_consistent(rs);
   const Face g = add_face(m, corners);
@@ -363,7 +363,7 @@ TEST(RenderSync, RemovedFacesFreeSlotsThatNewFacesReuse) {
   EXPECT_EQ(rs.triangles(g).first, was.first);  // the freed slot is reused
   EXPECT_EQ(rs.index_count(), slots);
   EXPECT_FALSE(r.resized);
-  EXPECT_EQ(rs.free_triangle_count(), 0u);
+  EXPECT_EQ(rs.free_triangle_slots(), 0u);
   expect_consistent(rs);
   expect_matches_fresh(rs);
   EXPECT_TRUE(m.validate().empty());
@@ -378,14 +378,14 @@ TEST(RenderSync, CompactRemovesHolesAndReportsTheMaps) {
     ASSERT_TRUE(remove_face(m, f));
   }
   rs.sync();
-  ASSERT_GT(rs.free_triangle_count(), 0u);
+  ASSERT_GT(rs.free_triangle_slots(), 0u);
   const std::vector<std::uint32_t> old_indices(rs.indices().begin(), rs.indices().end());
   const std::size_t stride = rs.layout().stride;
   const std::vector<float> old_vertices(rs.vertices().begin(), rs.vertices().end());
   const RenderRemap map = rs.compact();
-  EXPECT_EQ(rs.free_triangle_count(), 0u);
-  EXPECT_EQ(rs.index_count(), 3 * rs.live_triangle_count());
-  EXPECT_EQ(rs.vertex_count(), rs.live_vertex_count());
+  EXPECT_EQ(rs.free_triangle_slots(), 0u);
+  EXPECT_EQ(rs.index_count(), 3 * rs.n_triangles());
+  EXPECT_EQ(rs.vertex_slots(), rs.n_vertices());
   ASSERT_EQ(map.triangles.size(), old_indices.size() / 3);
   for (std::size_t t = 0; t < map.triangles.size(); ++t) {
     if (map.triangles[t] == kInvalidIndex) continue;
@@ -416,7 +416,7 @@ TEST(RenderSync, GarbageCollectionRebuilds) {
   m.garbage_collection();
   const SyncResult& r = rs.sync();
   EXPECT_TRUE(r.full);
-  EXPECT_EQ(rs.free_triangle_count(), 0u);
+  EXPECT_EQ(rs.free_triangle_slots(), 0u);
   expect_consistent(rs);
   EXPECT_TRUE(m.validate().empty());
 }
@@ -435,11 +435,11 @@ TEST(RenderSync, WindingAndAxes) {
     EXPECT_EQ(cw.render_vertex_source()[j[1]].idx(), s2);
     EXPECT_EQ(cw.render_vertex_source()[j[2]].idx(), s1);
   }
-  for (std::size_t k = 0; k < ccw.vertex_count(); ++k) {
+  for (std::size_t k = 0; k < ccw.vertex_slots(); ++k) {
     const Vertex v = ccw.render_vertex_source()[k];
     EXPECT_EQ(ccw.vertices()[k * 6 + 0], m.position(v).x);
   }
-  for (std::size_t k = 0; k < cw.vertex_count(); ++k) {
+  for (std::size_t k = 0; k < cw.vertex_slots(); ++k) {
     const Vertex v = cw.render_vertex_source()[k];
     EXPECT_EQ(cw.vertices()[k * 6 + 0], -m.position(v).x);
   }
@@ -454,9 +454,9 @@ TEST(RenderSync, SeparateStreamsHoldTheInterleavedData) {
   EXPECT_EQ(a.layout().stride, 12u);
   EXPECT_EQ(a.layout().color, 8);
   EXPECT_FALSE(b.layout().interleaved);
-  ASSERT_EQ(a.vertex_count(), b.vertex_count());
+  ASSERT_EQ(a.vertex_slots(), b.vertex_slots());
   EXPECT_TRUE(a.normals().empty());
-  for (std::size_t k = 0; k < a.vertex_count(); ++k) {
+  for (std::size_t k = 0; k < a.vertex_slots(); ++k) {
     for (int c = 0; c < 3; ++c) EXPECT_EQ(a.vertices()[k * 12 + c], b.positions()[k * 3 + c]);
     for (int c = 0; c < 3; ++c) EXPECT_EQ(a.vertices()[k * 12 + 3 + c], b.normals()[k * 3 + c]);
     for (int c = 0; c < 2; ++c) EXPECT_EQ(a.vertices()[k * 12 + 6 + c], b.texcoords()[k * 2 + c]);
@@ -465,7 +465,7 @@ TEST(RenderSync, SeparateStreamsHoldTheInterleavedData) {
   EXPECT_TRUE(std::equal(a.indices().begin(), a.indices().end(), b.indices().begin()));
   // A colour change marked on the vertex reaches the colour stream only.
   color[Vertex(0)] = Color{1, 0, 0, 1};
-  m.mark_changed(Vertex(0), kVertexDataChanged);
+  m.mark_changed(Vertex(0), ChangeEvent::vertex_data_changed);
   const SyncResult& r = b.sync();
   ASSERT_EQ(r.vertex_ranges.size(), 1u);
   EXPECT_EQ(b.colors()[r.vertex_ranges[0].first * 4], 1.f);

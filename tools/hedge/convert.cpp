@@ -19,16 +19,16 @@ struct ConvertOptions {
 
 int run_convert(const ConvertOptions& options) {
   // Check the output's extension before spending time on the input.
-  const io::Format out_format = io::format_from_path(options.output);
+  const FileFormat out_format = format_from_path(options.output);
   const LoadedMesh loaded = load_mesh(options.input, options.load);
 
   const std::filesystem::path parent = std::filesystem::path(options.output).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);
-  io::WriteOptions write;
+  WriteOptions write;
   write.binary = !options.ascii;
-  io::write_mesh(loaded.mesh, options.output, write);
+  write_mesh(loaded.mesh, options.output, write);
 
-  const bool has_encoding = out_format == io::Format::ply || out_format == io::Format::stl;
+  const bool has_encoding = out_format == FileFormat::ply || out_format == FileFormat::stl;
   std::cout << "converted " << options.input << " -> " << options.output << " (" << format_name(out_format)
             << (has_encoding ? (options.ascii ? ", ascii" : ", binary") : "")
             << "): " << loaded.mesh.n_vertices() << " vertices, " << loaded.mesh.n_faces() << " faces, "

@@ -27,8 +27,8 @@ void add_load_options(CLI::App& command, LoadOptions& options) {
       ->check(CLI::NonNegativeNumber);
 }
 
-BuildOptions build_options(io::Format format, const LoadOptions& options) {
-  BuildOptions build = io::default_build_options(format);
+BuildOptions build_options(FileFormat format, const LoadOptions& options) {
+  BuildOptions build = default_build_options(format);
   if (options.strict) build.policy = TopologyPolicy::strict;
   if (!options.weld.empty()) {
     build.weld = weld_modes().at(options.weld);
@@ -41,9 +41,9 @@ BuildOptions build_options(io::Format format, const LoadOptions& options) {
 
 LoadedMesh load_mesh(const std::string& path, const LoadOptions& options) {
   LoadedMesh loaded;
-  loaded.format = io::format_from_path(path);
+  loaded.format = format_from_path(path);
   try {
-    loaded.mesh = io::read_mesh(path, build_options(loaded.format, options), &loaded.report);
+    loaded.mesh = read_mesh(path, build_options(loaded.format, options), &loaded.report);
   } catch (const IoError&) {
     throw;  // already names the file
   } catch (const TopologyError& e) {
@@ -56,15 +56,15 @@ LoadedMesh load_mesh(const std::string& path, const LoadOptions& options) {
   return loaded;
 }
 
-const char* format_name(io::Format format) {
+const char* format_name(FileFormat format) {
   switch (format) {
-    case io::Format::obj:
+    case FileFormat::obj:
       return "obj";
-    case io::Format::off:
+    case FileFormat::off:
       return "off";
-    case io::Format::ply:
+    case FileFormat::ply:
       return "ply";
-    case io::Format::stl:
+    case FileFormat::stl:
       return "stl";
   }
   return "unknown";

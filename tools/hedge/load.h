@@ -21,12 +21,12 @@ void add_load_options(CLI::App& command, LoadOptions& options);
 
 //! The build options for `format` after applying the command line's choices. --weld-eps without
 //! --weld implies --weld epsilon.
-BuildOptions build_options(io::Format format, const LoadOptions& options);
+BuildOptions build_options(FileFormat format, const LoadOptions& options);
 
 struct LoadedMesh {
   SurfaceMesh mesh;
   BuildReport report;
-  io::Format format = io::Format::obj;
+  FileFormat format = FileFormat::obj;
 };
 
 //! Reads and builds `path`. Errors that do not name the file already (topology, invalid input) are
@@ -34,6 +34,6 @@ struct LoadedMesh {
 LoadedMesh load_mesh(const std::string& path, const LoadOptions& options);
 
 //! Lower-case name of a format ("obj", "off", "ply", "stl").
-const char* format_name(io::Format format);
+const char* format_name(FileFormat format);
 
 }  // namespace hedge::cli

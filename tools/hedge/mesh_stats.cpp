@@ -31,7 +31,7 @@ class DisjointSets {
 }  // namespace
 
 std::size_t count_components(const SurfaceMesh& mesh) {
-  DisjointSets sets(mesh.vertices_size());
+  DisjointSets sets(mesh.vertex_slots());
   for (Edge e : mesh.edges()) sets.unite(mesh.vertex(e, 0).idx(), mesh.vertex(e, 1).idx());
   std::size_t components = 0;
   for (Vertex v : mesh.vertices()) {

@@ -44,9 +44,9 @@ int run_render_buffers(const RenderBuffersOptions& options) {
   RenderSync rs(mesh, ro);
   const VertexLayout layout = rs.layout();
   const std::size_t seams = rs.seam_splits();
-  const std::size_t used_vertices = rs.live_vertex_count() - seams;
+  const std::size_t used_vertices = rs.n_vertices() - seams;
   const std::size_t full_bytes = rs.buffer_bytes();
-  const std::size_t start_vertices = rs.live_vertex_count(), start_triangles = rs.live_triangle_count();
+  const std::size_t start_vertices = rs.n_vertices(), start_triangles = rs.n_triangles();
 
   // Random edits, one sync after each.
   std::vector<double> bytes;

@@ -531,11 +531,12 @@ namespace Hedge
             return Ok(Native.hedge_can_split_face(id, f.Index, out ok), ok);
         }
 
-        /// <summary>True if the face of h0 and h1 can be cut from the target of h0 to the target of h1.</summary>
-        public bool CanSplitFace(HalfEdge h0, HalfEdge h1)
+        /// <summary>True if the face of h0 and h1 can be cut along a new edge from the target of h0 to the
+        /// target of h1: both in the same live face, the targets not adjacent in it and not joined yet.</summary>
+        public bool CanCutFace(HalfEdge h0, HalfEdge h1)
         {
             int ok;
-            return Ok(Native.hedge_can_split_face_diagonal(id, h0.Index, h1.Index, out ok), ok);
+            return Ok(Native.hedge_can_cut_face(id, h0.Index, h1.Index, out ok), ok);
         }
 
         /// <summary>True if a face with the first count corners (counter-clockwise) can be added while every
@@ -600,9 +601,8 @@ namespace Hedge
             return false;
         }
 
-        /// <summary>Inserts a vertex at point p on the edge (the original's SplitHalfEdge, by edge).
-        /// Triangles on either side are split in two; half-edge 2 x e then runs from the edge's first vertex
-        /// to the new vertex.</summary>
+        /// <summary>Inserts a vertex at point p on the edge. Triangles on either side are split in two;
+        /// half-edge 2 x e then runs from the edge's first vertex to the new vertex.</summary>
         /// <returns>The new vertex, or <see cref="Vertex.Invalid"/> if refused.</returns>
         public Vertex SplitEdge(Edge e, Vec3 p)
         {
@@ -610,17 +610,13 @@ namespace Hedge
             return WasRefused(Native.hedge_split_edge(id, e.Index, p.X, p.Y, p.Z, out v)) ? Vertex.Invalid : new Vertex(v);
         }
 
-        /// <summary>Inserts a vertex at point p on the edge of h (the original's SplitHalfEdge).</summary>
-        /// <returns>The new vertex, or <see cref="Vertex.Invalid"/> if refused.</returns>
-        public Vertex SplitHalfEdge(HalfEdge h, Vec3 p) { return SplitEdge(h.Edge, p); }
+        public Vertex SplitEdge(Edge e, float x, float y, float z) { return SplitEdge(e, new Vec3(x, y, z)); }
 
-        public Vertex SplitHalfEdge(HalfEdge h, float x, float y, float z) { return SplitEdge(h.Edge, new Vec3(x, y, z)); }
-
-        /// <summary>Merges the from-vertex of h into its to-vertex (the original's EdgeCollapse); the to-vertex
-        /// survives and keeps its position.</summary>
+        /// <summary>Merges the from-vertex of h into its to-vertex; the to-vertex survives and keeps its
+        /// position.</summary>
         /// <returns>The surviving vertex, or <see cref="Vertex.Invalid"/> if <see cref="CanCollapse"/> refuses
         /// (the mesh is then unchanged).</returns>
-        public Vertex EdgeCollapse(HalfEdge h)
+        public Vertex Collapse(HalfEdge h)
         {
             uint v;
             return WasRefused(Native.hedge_collapse(id, h.Index, out v)) ? Vertex.Invalid : new Vertex(v);
@@ -628,9 +624,9 @@ namespace Hedge
 
         /// <summary>Turns the edge to join the opposite corners of its two triangles; the edge keeps its index.</summary>
         /// <returns>False if <see cref="CanFlip(Edge)"/> refuses.</returns>
-        public bool FlipEdge(Edge e) { return !WasRefused(Native.hedge_flip(id, e.Index)); }
+        public bool Flip(Edge e) { return !WasRefused(Native.hedge_flip(id, e.Index)); }
 
-        public bool FlipEdge(HalfEdge h) { return FlipEdge(h.Edge); }
+        public bool Flip(HalfEdge h) { return Flip(h.Edge); }
 
         /// <summary>Inserts a vertex at p into the face and joins it to every corner (an n-gon becomes n
         /// triangles).</summary>
@@ -643,15 +639,14 @@ namespace Hedge
 
         public Vertex SplitFace(Face f, float x, float y, float z) { return SplitFace(f, new Vec3(x, y, z)); }
 
-        /// <summary>Cuts the face of h0 and h1 along a new edge from the target of h0 to the target of h1.</summary>
+        /// <summary>Cuts the face of h0 and h1 in two along a new edge (a diagonal) from the target of h0 to
+        /// the target of h1; no vertex is added.</summary>
         /// <returns>The new half-edge from the target of h0 to the target of h1, or <see cref="HalfEdge.Invalid"/>
-        /// if refused.</returns>
-        public HalfEdge SplitFace(HalfEdge h0, HalfEdge h1)
+        /// if <see cref="CanCutFace"/> refuses.</returns>
+        public HalfEdge CutFace(HalfEdge h0, HalfEdge h1)
         {
             uint h;
-            return WasRefused(Native.hedge_split_face_diagonal(id, h0.Index, h1.Index, out h))
-                       ? HalfEdge.Invalid
-                       : new HalfEdge(h);
+            return WasRefused(Native.hedge_cut_face(id, h0.Index, h1.Index, out h)) ? HalfEdge.Invalid : new HalfEdge(h);
         }
 
         /// <summary>Splits every live face at its centroid. Never refused.</summary>
@@ -729,6 +724,26 @@ namespace Hedge
             return DetachFaces(faces, faces.Length);
         }
 
+        // =========================================================================================
+        // The original Unity project's names ("Half-Edge Mesh für Unity3D"), kept so that its users find
+        // their way. Each forwards to the method named in its summary; docs/names.md maps every name.
+        // SplitFace and SplitAllFaces keep the original's names as they are. (SimulateBreaking will
+        // join them with the fracture algorithm.)
+        // =========================================================================================
+
+        /// <summary>The original's SplitHalfEdge: <see cref="SplitEdge(Edge, Vec3)"/> on the edge of h.</summary>
+        public Vertex SplitHalfEdge(HalfEdge h, Vec3 p) { return SplitEdge(h.Edge, p); }
+
+        /// <summary>The original's SplitHalfEdge: <see cref="SplitEdge(Edge, Vec3)"/> on the edge of h.</summary>
+        public Vertex SplitHalfEdge(HalfEdge h, float x, float y, float z) { return SplitEdge(h.Edge, new Vec3(x, y, z)); }
+
+        /// <summary>The original's EdgeCollapse: <see cref="Collapse"/>.</summary>
+        public Vertex EdgeCollapse(HalfEdge h) { return Collapse(h); }
+
+        /// <summary>The original's GenerateUnityMesh, made incremental: <see cref="CreateRenderBuffers(RenderOptions)"/>
+        /// with <see cref="RenderOptions.Unity"/>. Sync the buffers after edits and upload the dirty ranges.</summary>
+        public RenderBuffers GenerateUnityMesh() { return CreateRenderBuffers(RenderOptions.Unity); }
+
         /// <summary>Removes deleted elements and compacts storage; element indices change. Each map is optional
         /// (null) and receives old index -> new element (invalid for a removed one); it must hold at least the
         /// slot count of its kind before the call (<see cref="Counts"/>). Render buffers rebuild at their next
@@ -771,8 +786,8 @@ namespace Hedge
         // Render buffers
         // =========================================================================================
 
-        /// <summary>Makes engine-ready vertex and index buffers that follow this mesh's edits (the
-        /// original's GenerateUnityMesh, made incremental). Disposing the mesh disposes them too.</summary>
+        /// <summary>Makes engine-ready vertex and index buffers that follow this mesh's edits. Disposing the
+        /// mesh disposes them too.</summary>
         public RenderBuffers CreateRenderBuffers(RenderOptions options)
         {
             pendingRenders.Drain();
@@ -782,9 +797,6 @@ namespace Hedge
         /// <summary>Render buffers with the default options (interleaved, counter-clockwise).</summary>
         public RenderBuffers CreateRenderBuffers() { return CreateRenderBuffers(RenderOptions.Default); }
 
-        /// <summary>Render buffers in Unity's conventions (<see cref="RenderOptions.Unity"/>): the replacement of
-        /// the original's GenerateUnityMesh. Sync them after edits and upload the dirty ranges.</summary>
-        public RenderBuffers GenerateUnityMesh() { return CreateRenderBuffers(RenderOptions.Unity); }
 
         public override string ToString()
         {

@@ -126,10 +126,10 @@ namespace Hedge
         internal static extern int hedge_split_face(IntPtr mesh, uint face, float x, float y, float z,
             out uint vertex);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_can_split_face_diagonal(IntPtr mesh, uint halfedge0, uint halfedge1,
+        internal static extern int hedge_can_cut_face(IntPtr mesh, uint halfedge0, uint halfedge1,
             out int ok);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_split_face_diagonal(IntPtr mesh, uint halfedge0, uint halfedge1,
+        internal static extern int hedge_cut_face(IntPtr mesh, uint halfedge0, uint halfedge1,
             out uint halfedge);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_split_all_faces(IntPtr mesh, [Out] Vertex[] buffer, uint capacity,

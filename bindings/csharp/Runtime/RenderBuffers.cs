@@ -115,8 +115,8 @@ namespace Hedge
             return result;
         }
 
-        /// <summary>Rebuilds every buffer from scratch (slots restart in face order, so it also compacts):
-        /// the original's full GenerateUnityMesh.</summary>
+        /// <summary>Rebuilds every buffer from scratch, a full export (slots restart in face order, so it
+        /// also compacts).</summary>
         public SyncResult Rebuild()
         {
             mesh.PendingRenders.Drain();
@@ -234,7 +234,7 @@ namespace Hedge
         }
 
         /// <summary>Copies the vertex ranges the last sync rewrote, of one stream, into a mirror of that stream
-        /// (an array of at least Counts.VertexCount x <see cref="Components"/> floats that holds the stream as of
+        /// (an array of at least Counts.VertexSlots x <see cref="Components"/> floats that holds the stream as of
         /// the previous sync). Afterwards the mirror equals the stream.</summary>
         /// <returns>The number of render vertices copied.</returns>
         public int CopyDirtyVertices(VertexStream stream, float[] mirror)
@@ -289,7 +289,7 @@ namespace Hedge
         {
             SyncResult result = LastResult;
             BufferCounts counts = Counts;
-            long needed = (long)counts.VertexCount * Components(stream);
+            long needed = (long)counts.VertexSlots * Components(stream);
             long capacity = (long)counts.VertexCapacity * Components(stream);
             bool grew = Grow(ref mirror, needed, capacity);
             if (mirror == null || grew || result.Resized || result.Full)

@@ -241,21 +241,21 @@ namespace Hedge
     [StructLayout(LayoutKind.Sequential)]
     public struct BufferCounts
     {
-        /// <summary>Render vertex slots.</summary>
-        public uint VertexCount;
-        /// <summary>Index-buffer entries (3 per triangle slot).</summary>
+        /// <summary>Render vertex slots, free ones included: the vertex buffer's length in vertices.</summary>
+        public uint VertexSlots;
+        /// <summary>The index buffer's length in indices (3 per triangle slot).</summary>
         public uint IndexCount;
         /// <summary>Render vertex slots in use.</summary>
-        public uint LiveVertexCount;
+        public uint Vertices;
         /// <summary>Triangle slots in use.</summary>
-        public uint LiveTriangleCount;
+        public uint Triangles;
         /// <summary>Render vertices beyond one per used mesh vertex: what seams cost.</summary>
         public uint SeamSplits;
         /// <summary>Degenerate triangle slots waiting for reuse or compaction.</summary>
-        public uint FreeTriangleCount;
+        public uint FreeTriangleSlots;
         /// <summary>Bytes of the whole vertex and index buffers (a full upload).</summary>
         public ulong BufferBytes;
-        /// <summary>Render vertex slots to allocate (at least VertexCount).</summary>
+        /// <summary>Render vertex slots to allocate (at least VertexSlots).</summary>
         public uint VertexCapacity;
         /// <summary>Index-buffer entries to allocate (at least IndexCount).</summary>
         public uint IndexCapacity;

@@ -28,9 +28,9 @@ namespace Hedge.Tests
                 // Edits. A refused edit returns an invalid handle or false, and changes nothing.
                 buffers.BeginTransaction();
                 HalfEdge h = mesh.FindHalfEdge(new Vertex(0), new Vertex(1));
-                Vertex mid = mesh.SplitHalfEdge(h, 0.5f, 0, 0);          // a new vertex on the edge 0-1
-                Vertex kept = mesh.EdgeCollapse(mesh.FindHalfEdge(mid, new Vertex(0)));  // merged into 0 again
-                bool flipped = mesh.FlipEdge(mesh.FindHalfEdge(new Vertex(0), new Vertex(1)));  // false: boundary
+                Vertex mid = mesh.SplitEdge(h.Edge, 0.5f, 0, 0);        // a new vertex on the edge 0-1
+                Vertex kept = mesh.Collapse(mesh.FindHalfEdge(mid, new Vertex(0)));  // merged into 0 again
+                bool flipped = mesh.Flip(mesh.FindHalfEdge(new Vertex(0), new Vertex(1)));  // false: boundary
                 Vertex centre = mesh.SplitFace(mesh.GetFace(mesh.FindHalfEdge(new Vertex(2), new Vertex(3))),
                                                0.5f, 0.9f, 0.2f);
                 mesh.SetPosition(new Vertex(4), 0.5f, 0.5f, 1.5f);

@@ -72,6 +72,35 @@ namespace Hedge.Tests
             r.Add("MeshTests.PyramidEdits", PyramidEdits);
             r.Add("MeshTests.GridPolygonsAndDiagonals", GridPolygonsAndDiagonals);
             r.Add("MeshTests.DetachAndGarbageCollection", DetachAndGarbageCollection);
+            r.Add("MeshTests.OriginalNamesForward", OriginalNamesForward);
+        }
+
+        // The original project's names do exactly what the names they stand for do: the same edits on two
+        // copies of one mesh give the same results.
+        static void OriginalNamesForward()
+        {
+            float[] positions = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5f, 0.5f, 1 };
+            uint[] triangles = { 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4 };
+            using (var a = HalfEdgeMesh.FromTriangles(positions, triangles))
+            using (var b = HalfEdgeMesh.FromTriangles(positions, triangles))
+            {
+                HalfEdge h01 = a.FindHalfEdge(new Vertex(0), new Vertex(1));
+                Vertex ma = a.SplitHalfEdge(h01, 0.5f, 0, 0);
+                Vertex mb = b.SplitEdge(h01.Edge, 0.5f, 0, 0);
+                Check.Equal(mb, ma, "SplitHalfEdge is SplitEdge");
+                Check.Equal(new Vertex(5), ma);
+                Check.Equal(b.Counts.ToString(), a.Counts.ToString());
+                HalfEdge hm0 = a.FindHalfEdge(ma, new Vertex(0));
+                Check.Equal(b.Collapse(hm0), a.EdgeCollapse(hm0), "EdgeCollapse is Collapse");
+                Check.Equal(b.Counts.ToString(), a.Counts.ToString());
+                Check.Equal(4, a.FaceCount);
+                using (RenderBuffers unity = a.GenerateUnityMesh())
+                {
+                    Check.True(unity.Options.FlipX && unity.Options.Winding == Winding.Clockwise, "GenerateUnityMesh uses Unity's conventions");
+                }
+                Check.Valid(a, "after the original's names");
+                Check.Valid(b, "after hedge's names");
+            }
         }
 
         static void VersionAndLayouts()
@@ -226,12 +255,12 @@ namespace Hedge.Tests
                 {
                     var h = new HalfEdge(i);
                     Check.False(mesh.CanCollapse(h), "every tetrahedron edge is refused: " + h);
-                    Check.Equal(Vertex.Invalid, mesh.EdgeCollapse(h), "refused, not thrown: " + h);
+                    Check.Equal(Vertex.Invalid, mesh.Collapse(h), "refused, not thrown: " + h);
                 }
                 for (uint e = 0; e < 6; ++e)
                 {
                     Check.False(mesh.CanFlip(new Edge(e)), "valence-3 ends");
-                    Check.False(mesh.FlipEdge(new Edge(e)));
+                    Check.False(mesh.Flip(new Edge(e)));
                 }
                 // Removing a face would leave a vertex with two fans? No: it leaves a valid open mesh.
                 Check.True(mesh.CanRemoveFace(new Face(0)));
@@ -282,26 +311,26 @@ namespace Hedge.Tests
                 Check.Equal(m, mesh.ToVertex(new HalfEdge(2 * h01.Edge.Index)), "2e runs from the first vertex to m");
                 Check.Valid(mesh, "after SplitHalfEdge");
 
-                // FlipEdge: the interior edge 1-4 between (m, 1, 4) and (1, 2, 4) turns into m-2.
+                // Flip: the interior edge 1-4 between (m, 1, 4) and (1, 2, 4) turns into m-2.
                 HalfEdge h14 = mesh.FindHalfEdge(new Vertex(1), new Vertex(4));
                 Check.True(mesh.CanFlip(h14));
-                Check.True(mesh.FlipEdge(h14));
+                Check.True(mesh.Flip(h14));
                 Check.False(mesh.FindHalfEdge(new Vertex(1), new Vertex(4)).IsValid, "1-4 is gone");
                 HalfEdge hm2 = mesh.FindHalfEdge(m, new Vertex(2));
                 Check.True(hm2.IsValid, "m-2 exists");
                 Check.Equal(h14.Edge, hm2.Edge, "the flipped edge keeps its index");
                 Check.Equal(10, mesh.EdgeCount);
                 Check.Equal(2, mesh.Valence(new Vertex(1)));
-                Check.Valid(mesh, "after FlipEdge");
+                Check.Valid(mesh, "after Flip");
 
                 // A boundary edge cannot be flipped: refused, false, nothing changed.
-                Check.False(mesh.FlipEdge(h01.Twin));
+                Check.False(mesh.Flip(h01.Twin));
                 Check.Equal(10, mesh.EdgeCount);
 
-                // EdgeCollapse of m into 0 along the boundary: m's boundary triangle (m, 4, 0) goes.
+                // Collapse of m into 0 along the boundary: m's boundary triangle (m, 4, 0) goes.
                 HalfEdge hm0 = mesh.FindHalfEdge(m, new Vertex(0));
                 Check.True(mesh.CanCollapse(hm0), "m -> 0 is legal");
-                Vertex survivor = mesh.EdgeCollapse(hm0);
+                Vertex survivor = mesh.Collapse(hm0);
                 Check.Equal(new Vertex(0), survivor);
                 Check.Equal(new Vec3(0, 0, 0), mesh.GetPosition(survivor), "the survivor keeps its position");
                 Check.True(mesh.IsDeleted(m));
@@ -309,7 +338,7 @@ namespace Hedge.Tests
                 Check.Equal(5, mesh.VertexCount);
                 Check.Equal(8, mesh.EdgeCount);
                 Check.Equal(4, mesh.FaceCount);
-                Check.Valid(mesh, "after EdgeCollapse");
+                Check.Valid(mesh, "after Collapse");
 
                 // SplitFace at a point: 1 face becomes 3.
                 Face f = mesh.GetFace(mesh.FindHalfEdge(new Vertex(2), new Vertex(3)));
@@ -385,12 +414,12 @@ namespace Hedge.Tests
                 var loop = new HalfEdge[4];
                 Check.Equal(4, mesh.GetFaceHalfEdges(new Face(0), loop));
                 // Adjacent corners: refused.
-                Check.False(mesh.CanSplitFace(loop[0], loop[1]));
-                Check.Equal(HalfEdge.Invalid, mesh.SplitFace(loop[0], loop[1]));
+                Check.False(mesh.CanCutFace(loop[0], loop[1]));
+                Check.Equal(HalfEdge.Invalid, mesh.CutFace(loop[0], loop[1]));
                 Check.Equal(4, mesh.FaceCount);
                 // Opposite corners: a new diagonal.
-                Check.True(mesh.CanSplitFace(loop[0], loop[2]));
-                HalfEdge d = mesh.SplitFace(loop[0], loop[2]);
+                Check.True(mesh.CanCutFace(loop[0], loop[2]));
+                HalfEdge d = mesh.CutFace(loop[0], loop[2]);
                 Check.True(d.IsValid);
                 Check.Equal(mesh.ToVertex(loop[0]), mesh.FromVertex(d));
                 Check.Equal(mesh.ToVertex(loop[2]), mesh.ToVertex(d));

@@ -24,8 +24,8 @@ namespace Hedge.Tests
             VertexLayout layout = buffers.Layout;
             var indices = new uint[counts.IndexCount];
             Check.Equal((int)counts.IndexCount, buffers.CopyIndices(indices));
-            var source = new Vertex[counts.VertexCount];
-            Check.Equal((int)counts.VertexCount, buffers.CopyVertexSource(source));
+            var source = new Vertex[counts.VertexSlots];
+            Check.Equal((int)counts.VertexSlots, buffers.CopyVertexSource(source));
             var vertices = new float[buffers.CopyVertices(null)];
             buffers.CopyVertices(vertices);
             int k = buffers.Components(VertexStream.Vertices);
@@ -56,7 +56,7 @@ namespace Hedge.Tests
                 for (int c = 0; c < 3; ++c)
                 {
                     uint rv = indices[3 * slots.First + c];
-                    Check.True(rv < counts.VertexCount);
+                    Check.True(rv < counts.VertexSlots);
                     triangle[c] = source[rv];
                 }
                 if (buffers.Options.Winding == Winding.Clockwise)
@@ -70,7 +70,7 @@ namespace Hedge.Tests
                 for (int c = 0; c < 3; ++c)
                     Check.Equal(corners[c], source[buffers.GetRenderVertex(loop[c])], "corner render vertex");
             }
-            Check.Equal(counts.LiveTriangleCount, (uint)live);
+            Check.Equal(counts.Triangles, (uint)live);
         }
 
         /// <summary>A mirror of the vertex stream and the index buffer that receives only the dirty ranges.</summary>
@@ -99,7 +99,7 @@ namespace Hedge.Tests
             public bool Apply(SyncResult result)
             {
                 BufferCounts counts = buffers.Counts;
-                if (result.Resized || Vertices.Length < counts.VertexCount * buffers.Components(VertexStream.Vertices) ||
+                if (result.Resized || Vertices.Length < counts.VertexSlots * buffers.Components(VertexStream.Vertices) ||
                     Indices.Length < counts.IndexCount)
                 {
                     Reload();
@@ -134,11 +134,11 @@ namespace Hedge.Tests
                 Check.Equal(-1, layout.Texcoord, "the pyramid has no texcoords");
                 Check.Equal(-1, layout.Color);
                 BufferCounts counts = buffers.Counts;
-                Check.Equal(5u, counts.VertexCount);
-                Check.Equal(5u, counts.LiveVertexCount);
+                Check.Equal(5u, counts.VertexSlots);
+                Check.Equal(5u, counts.Vertices);
                 Check.Equal(0u, counts.SeamSplits);
                 Check.Equal(12u, counts.IndexCount);
-                Check.Equal(4u, counts.LiveTriangleCount);
+                Check.Equal(4u, counts.Triangles);
                 Check.Equal(5ul * 6 * 4 + 12 * 4, counts.BufferBytes);
                 SyncResult first = buffers.LastResult;
                 Check.True(first.Full && first.Resized, "the first build is a full one");
@@ -222,8 +222,8 @@ namespace Hedge.Tests
                 Check.True(committed.IndexRangeCount >= 1 && committed.VertexRangeCount >= 1);
                 Check.True(committed.FacesSynced >= 5, "faces synced: " + committed.FacesSynced);
                 BufferCounts counts = buffers.Counts;
-                Check.Equal(7u, counts.LiveTriangleCount, "4 + 2 (split face) + 1 (split edge on a boundary)");
-                Check.Equal(7u, counts.LiveVertexCount);
+                Check.Equal(7u, counts.Triangles, "4 + 2 (split face) + 1 (split edge on a boundary)");
+                Check.Equal(7u, counts.Vertices);
                 mirror.Apply(committed);
                 mirror.CheckEqualsBuffers("after the transaction");
                 CheckBuffersMatchMesh(mesh, buffers);
@@ -233,7 +233,7 @@ namespace Hedge.Tests
                 // be flipped: its tips are already joined.)
                 Check.False(mesh.CanFlip(mesh.FindHalfEdge(c, new Vertex(4))));
                 HalfEdge h04 = mesh.FindHalfEdge(new Vertex(0), new Vertex(4));
-                Check.True(mesh.FlipEdge(h04));
+                Check.True(mesh.Flip(h04));
                 Check.True(mesh.FindHalfEdge(c, new Vertex(3)).IsValid, "0-4 turned into c-3");
                 SyncResult flipped = buffers.Sync();
                 Check.Equal(2u, flipped.FacesSynced);
@@ -258,7 +258,7 @@ namespace Hedge.Tests
                 Check.True(mirror.Apply(removed));
                 mirror.CheckEqualsBuffers("after removing a face");
                 BufferCounts counts = buffers.Counts;
-                Check.Equal(3u, counts.LiveTriangleCount);
+                Check.Equal(3u, counts.Triangles);
                 Check.Equal(12u, counts.IndexCount, "the freed triangle stays as a hole");
                 int t = 3 * (int)slots.First;
                 Check.True(mirror.Indices[t] == mirror.Indices[t + 1] && mirror.Indices[t + 1] == mirror.Indices[t + 2],
@@ -266,14 +266,14 @@ namespace Hedge.Tests
                 Check.Throws(HedgeStatus.BadHandle, () => buffers.GetFaceTriangles(new Face(1)), "a removed face");
                 CheckBuffersMatchMesh(mesh, buffers);
 
-                var vertexMap = new uint[counts.VertexCount];
+                var vertexMap = new uint[counts.VertexSlots];
                 var triangleMap = new uint[counts.IndexCount / 3];
                 Check.Throws(HedgeStatus.BufferTooSmall, () => buffers.Compact(vertexMap, new uint[1]));
                 buffers.Compact(vertexMap, triangleMap);
                 Check.Equal(0xFFFFFFFFu, triangleMap[slots.First], "the hole maps to nothing");
                 BufferCounts packed = buffers.Counts;
                 Check.Equal(9u, packed.IndexCount);
-                Check.Equal(packed.LiveVertexCount, packed.VertexCount);
+                Check.Equal(packed.Vertices, packed.VertexSlots);
                 CheckBuffersMatchMesh(mesh, buffers);
 
                 SyncResult rebuilt = buffers.Rebuild();

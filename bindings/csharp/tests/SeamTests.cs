@@ -201,10 +201,10 @@ namespace Hedge.Tests
                 Check.Equal(2L, (long)c.Vertices - c.Edges + c.Faces, "spot is a closed sphere once welded");
 
                 BufferCounts counts = buffers.Counts;
-                Check.Equal((uint)renderVertices, counts.LiveVertexCount, "one render vertex per distinct corner");
+                Check.Equal((uint)renderVertices, counts.Vertices, "one render vertex per distinct corner");
                 Check.Equal((uint)(renderVertices - meshVertices), counts.SeamSplits);
                 Check.True(counts.SeamSplits > 100, "spot has UV seams: " + counts.SeamSplits);
-                Check.Equal((uint)mesh.FaceCount, counts.LiveTriangleCount);
+                Check.Equal((uint)mesh.FaceCount, counts.Triangles);
                 VertexLayout layout = buffers.Layout;
                 Check.True(layout.HasNormals && layout.HasTexcoords && layout.HasColors);
                 Check.Equal(12u, layout.Stride);
@@ -253,7 +253,7 @@ namespace Hedge.Tests
                 int facesBefore = mesh.FaceCount;
 
                 Check.True(p.Length >= 3 * buffers.Counts.VertexCapacity, "made at the library's capacity");
-                Check.True(buffers.Counts.VertexCapacity > buffers.Counts.VertexCount, "with room to grow");
+                Check.True(buffers.Counts.VertexCapacity > buffers.Counts.VertexSlots, "with room to grow");
 
                 // Round 1, in a transaction: a face split adds a render vertex, within the capacity.
                 buffers.BeginTransaction();
@@ -273,12 +273,12 @@ namespace Hedge.Tests
                 int collapsed = 0;
                 for (uint h = 0; h < 400 && collapsed < 5; h += 7)
                     if (!mesh.IsDeleted(new HalfEdge(h)) && mesh.CanCollapse(new HalfEdge(h)) &&
-                        mesh.EdgeCollapse(new HalfEdge(h)).IsValid)
+                        mesh.Collapse(new HalfEdge(h)).IsValid)
                         ++collapsed;
                 Check.Equal(5, collapsed);
                 int flipped = 0;
                 for (uint e = 500; e < 900 && flipped < 5; e += 11)
-                    if (!mesh.IsDeleted(new Edge(e)) && mesh.FlipEdge(new Edge(e))) ++flipped;
+                    if (!mesh.IsDeleted(new Edge(e)) && mesh.Flip(new Edge(e))) ++flipped;
                 Check.Equal(5, flipped);
                 SyncResult second = buffers.Sync();
                 Check.False(second.Full || second.Resized);

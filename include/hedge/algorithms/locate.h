@@ -1,7 +1,7 @@
 // Point location on a SurfaceMesh: the nearest face to a point, the first face a ray hits, and the
 // face of a flat plate (or a height field) that contains a point. FaceBvh answers these in
 // O(log n) expected time through a bounding volume hierarchy; the *_linear functions are the O(n)
-// scans (the original project's TryGetFaceContainingPoint was one) and serve as the reference.
+// scans and serve as the reference.
 //
 // Faces are located through triangles: a triangle face is itself, and a polygon face is the fan of
 // triangles (c0, c[i], c[i+1]) from its first corner c0 = to_vertex(halfedge(f)), the same fan as
@@ -184,8 +184,8 @@ class FaceBvh {
 
   //! 2D plates and height fields: the face whose projection onto a coordinate plane contains p,
   //! boundary included. The projection drops one coordinate: z for ProjectionPlane::xy (the
-  //! default; p = (x, y)), y for xz (p = (x, z): the ground plane of y-up engines such as Unity,
-  //! which the original project targeted), x for yz (p = (y, z)). `point` is the point of the face
+  //! default; p = (x, y)), y for xz (p = (x, z): the ground plane of y-up engines such as Unity),
+  //! x for yz (p = (y, z)). `point` is the point of the face
   //! that projects onto p (the dropped coordinate interpolated), so this also samples a height field.
   //! Faces seen edge-on (zero projected area) contain nothing. Orientation tests are exact in
   //! double for float input. O(log n) expected on a plate or a height field.

@@ -16,7 +16,7 @@ enum class EditKind : int {
   collapse,
   flip,
   split_face,
-  cut_face,         //!< split_face(f, h0, h1) on a polygon
+  cut_face,         //!< cut_face(h0, h1) on a polygon
   remove_face,      //!< remove_face, then add_face with the same corners when possible
   remove_vertex,    //!< remove_vertex, then fill_hole on the hole it leaves
   count

@@ -22,33 +22,44 @@
 
 namespace hedge {
 
-//! Coarse change events, combined as bits.
-enum ChangeEvent : std::uint32_t {
-  kVerticesMoved = 1u << 0,       //!< positions changed
-  kVertexDataChanged = 1u << 1,   //!< other vertex properties changed
-  kFacesAdded = 1u << 2,
-  kFacesRemoved = 1u << 3,
-  kFacesChanged = 1u << 4,        //!< corners, corner properties or face properties changed
-  kVerticesAdded = 1u << 5,
-  kVerticesRemoved = 1u << 6,
-  kReset = 1u << 7,               //!< every index may have changed (garbage collection, rebuild)
-  kAllEvents = 0xffu,
+//! Coarse change events. They combine as bits: `ChangeEvent::faces_added | ChangeEvent::faces_removed`,
+//! and any(e) tests for a non-empty set.
+enum class ChangeEvent : std::uint32_t {
+  none = 0,
+  vertices_moved = 1u << 0,       //!< positions changed
+  vertex_data_changed = 1u << 1,  //!< other vertex properties changed
+  faces_added = 1u << 2,
+  faces_removed = 1u << 3,
+  faces_changed = 1u << 4,        //!< corners, corner properties or face properties changed
+  vertices_added = 1u << 5,
+  vertices_removed = 1u << 6,
+  reset = 1u << 7,                //!< every index may have changed (garbage collection, rebuild)
+  all = 0xffu,
 };
+constexpr ChangeEvent operator|(ChangeEvent a, ChangeEvent b) {
+  return ChangeEvent(static_cast<std::uint32_t>(a) | static_cast<std::uint32_t>(b));
+}
+constexpr ChangeEvent operator&(ChangeEvent a, ChangeEvent b) {
+  return ChangeEvent(static_cast<std::uint32_t>(a) & static_cast<std::uint32_t>(b));
+}
+constexpr ChangeEvent& operator|=(ChangeEvent& a, ChangeEvent b) { return a = a | b; }
+//! True if the set holds at least one event.
+constexpr bool any(ChangeEvent e) { return e != ChangeEvent::none; }
 
 class ChangeLog {
  public:
   using ConsumerId = std::uint32_t;
   using SubscriptionId = std::uint32_t;
-  using Callback = std::function<void(std::uint32_t events)>;
+  using Callback = std::function<void(ChangeEvent events)>;
 
   //! What a consumer has not read yet. Elements may repeat and may be deleted by now; after a
   //! reset, the element lists are empty and everything must be rebuilt.
   struct Pending {
     std::span<const Vertex> vertices;
     std::span<const Face> faces;
-    std::uint32_t events = 0;
+    ChangeEvent events = ChangeEvent::none;
     bool reset = false;
-    bool empty() const { return vertices.empty() && faces.empty() && events == 0 && !reset; }
+    bool empty() const { return vertices.empty() && faces.empty() && !any(events) && !reset; }
   };
 
   // Consumers and subscribers watch one mesh object, so they never travel with its data: a mesh
@@ -71,10 +82,10 @@ class ChangeLog {
 
   // ---- Recording (called by edits). ----
   bool active() const { return !consumers_.empty() || !subscribers_.empty(); }
-  void mark(Vertex v, std::uint32_t events) {
+  void mark(Vertex v, ChangeEvent events) {
     if (active()) record(v, events, vertex_stamp_, vertices_);
   }
-  void mark(Face f, std::uint32_t events) {
+  void mark(Face f, ChangeEvent events) {
     if (active()) record(f, events, face_stamp_, faces_);
   }
   //! Everything changed: consumers rebuild from scratch.
@@ -98,23 +109,23 @@ class ChangeLog {
 
   // ---- Coarse event subscribers. ----
   //! Calls `fn` with the events of each notify that intersect `mask`.
-  SubscriptionId subscribe(std::uint32_t mask, Callback fn);
+  SubscriptionId subscribe(ChangeEvent mask, Callback fn);
   void unsubscribe(SubscriptionId id);
 
  private:
   struct Consumer {
     ConsumerId id;
     std::size_t vertex_cursor = 0, face_cursor = 0;
-    std::uint32_t events = 0;
+    ChangeEvent events = ChangeEvent::none;
     bool reset = false;
   };
   struct Subscriber {
     SubscriptionId id;
-    std::uint32_t mask;
+    ChangeEvent mask;
     Callback fn;
   };
   template <typename H>
-  void record(H h, std::uint32_t events, std::vector<std::uint32_t>& stamps, std::vector<H>& log);
+  void record(H h, ChangeEvent events, std::vector<std::uint32_t>& stamps, std::vector<H>& log);
   //! Starts a new generation, so that elements are logged again (stamps cleared on wrap-around).
   void advance_generation();
   void compact_log();
@@ -128,7 +139,7 @@ class ChangeLog {
   std::vector<Consumer> consumers_;
   std::vector<Subscriber> subscribers_;
   std::uint32_t next_id_ = 1;
-  std::uint32_t unnotified_ = 0;
+  ChangeEvent unnotified_ = ChangeEvent::none;
   int transaction_depth_ = 0;
 };
 

@@ -22,9 +22,9 @@ namespace hedge {
 
 //! True if e can be split (e is live). O(1).
 bool can_split_edge(const SurfaceMesh& mesh, Edge e);
-//! Inserts a vertex at `point` on e (the original's SplitHalfEdge). A triangle on either side is
-//! split into two triangles; a polygon simply gains the vertex. `point` may lie anywhere, even off
-//! the segment; interpolation uses its projection onto the edge, clamped to the segment.
+//! Inserts a vertex at `point` on e. A triangle on either side is split into two triangles; a
+//! polygon simply gains the vertex. `point` may lie anywhere, even off the segment; interpolation
+//! uses its projection onto the edge, clamped to the segment.
 //! \return the new vertex; halfedge(e, 0) now runs from vertex(e, 0) to it. Invalid if refused.
 Vertex split_edge(SurfaceMesh& mesh, Edge e, const Vec3& point);
 
@@ -34,36 +34,37 @@ Vertex split_edge(SurfaceMesh& mesh, Edge e, const Vec3& point);
 //! tetrahedron), no edge is left with a boundary on both sides, and an interior edge does not join
 //! two boundary vertices. O(valence).
 bool can_collapse(const SurfaceMesh& mesh, Halfedge h);
-//! Merges from_vertex(h) into to_vertex(h) (the original's EdgeCollapse); the caller chooses the
-//! survivor by choosing the direction of h, and keeps or sets its position. Triangles on h vanish
-//! and their two other edges merge. \return the surviving vertex, invalid if refused. O(valence).
+//! Merges from_vertex(h) into to_vertex(h); the caller chooses the survivor by choosing the
+//! direction of h, and keeps or sets its position. Triangles on h vanish and their two other edges
+//! merge. \return the surviving vertex, invalid if refused. O(valence).
 Vertex collapse(SurfaceMesh& mesh, Halfedge h);
 
 //! True if e is interior, both its faces are triangles, its tips differ and are not joined by an
 //! edge already, and neither end is an interior vertex of valence 3. O(valence).
 bool can_flip(const SurfaceMesh& mesh, Edge e);
-//! Turns e to join the two tips of its triangles (the article's EdgeFlip). \return e, invalid if refused.
+//! Turns e to join the two tips of its triangles. \return e, invalid if refused.
 Edge flip(SurfaceMesh& mesh, Edge e);
 
 //! True if f is live. O(1).
 bool can_split_face(const SurfaceMesh& mesh, Face f);
-//! Inserts a vertex at `point` into f and connects it to every corner (the original's SplitFace):
-//! a triangle becomes 3 triangles, an n-gon n triangles. The new vertex's properties are
+//! Inserts a vertex at `point` into f and connects it to every corner: a triangle becomes 3
+//! triangles, an n-gon n triangles. The new vertex's properties are
 //! interpolated with barycentric weights on a triangle and equal weights on a polygon.
 //! \return the new vertex, invalid if refused. O(face degree).
 Vertex split_face(SurfaceMesh& mesh, Face f, const Vec3& point);
 
 //! True if h0 and h1 lie in the same live face, their targets are not adjacent in it, and no edge
 //! joins them yet. O(face degree + valence).
-bool can_split_face(const SurfaceMesh& mesh, Halfedge h0, Halfedge h1);
-//! Cuts the face of h0 and h1 along a new edge from to_vertex(h0) to to_vertex(h1).
-//! \return the new half-edge from to_vertex(h0) to to_vertex(h1), invalid if refused.
-Halfedge split_face(SurfaceMesh& mesh, Halfedge h0, Halfedge h1);
+bool can_cut_face(const SurfaceMesh& mesh, Halfedge h0, Halfedge h1);
+//! Cuts the face of h0 and h1 in two along a new edge (a diagonal) from to_vertex(h0) to
+//! to_vertex(h1); no vertex is added.
+//! \return the new half-edge from to_vertex(h0) to to_vertex(h1), invalid if refused. O(face degree).
+Halfedge cut_face(SurfaceMesh& mesh, Halfedge h0, Halfedge h1);
 
 //! The mean of f's corner positions (accumulated in double). O(face degree).
 Vec3 face_centroid(const SurfaceMesh& mesh, Face f);
 
-//! Splits every live face at its centroid (the original's split-all-faces). \return the new vertices. O(n).
+//! Splits every live face at its centroid. \return the new vertices. O(n).
 std::vector<Vertex> split_all_faces(SurfaceMesh& mesh);
 
 //! True if a face with these corners can be added while every vertex and edge stays manifold:

@@ -52,15 +52,16 @@ class SurfaceMesh {
   SurfaceMesh& operator=(SurfaceMesh&& other) noexcept;
   ~SurfaceMesh() = default;
 
-  // ---- Counts. n_* count live elements; *_size count storage slots including deleted ones. ----
-  std::size_t n_vertices() const { return vertices_size() - deleted_vertices_; }
-  std::size_t n_edges() const { return edges_size() - deleted_edges_; }
+  // ---- Counts. n_* count live elements; *_slots count storage slots, deleted ones included, so
+  // element indices run from 0 to the slot count - 1 until garbage_collection(). ----
+  std::size_t n_vertices() const { return vertex_slots() - deleted_vertices_; }
+  std::size_t n_edges() const { return edge_slots() - deleted_edges_; }
   std::size_t n_halfedges() const { return 2 * n_edges(); }
-  std::size_t n_faces() const { return faces_size() - deleted_faces_; }
-  std::size_t vertices_size() const { return v_halfedge_.size(); }
-  std::size_t halfedges_size() const { return h_vertex_.size(); }
-  std::size_t edges_size() const { return h_vertex_.size() / 2; }
-  std::size_t faces_size() const { return f_halfedge_.size(); }
+  std::size_t n_faces() const { return face_slots() - deleted_faces_; }
+  std::size_t vertex_slots() const { return v_halfedge_.size(); }
+  std::size_t halfedge_slots() const { return h_vertex_.size(); }
+  std::size_t edge_slots() const { return h_vertex_.size() / 2; }
+  std::size_t face_slots() const { return f_halfedge_.size(); }
   bool is_empty() const { return n_vertices() == 0; }
   bool has_garbage() const { return deleted_vertices_ + deleted_edges_ + deleted_faces_ > 0; }
 
@@ -119,11 +120,16 @@ class SurfaceMesh {
   bool is_deleted(Edge e) const { return e_deleted_[e.idx()]; }
   bool is_deleted(Halfedge h) const { return e_deleted_[h.idx() >> 1]; }
   bool is_deleted(Face f) const { return f_deleted_[f.idx()]; }
-  //! True if the handle indexes a slot of this mesh (deleted or not).
-  bool is_valid(Vertex v) const { return v.idx() < vertices_size(); }
-  bool is_valid(Halfedge h) const { return h.idx() < halfedges_size(); }
-  bool is_valid(Edge e) const { return e.idx() < edges_size(); }
-  bool is_valid(Face f) const { return f.idx() < faces_size(); }
+  //! True if the handle indexes a slot of this mesh (deleted or not); false for an invalid handle.
+  bool is_valid(Vertex v) const { return v.idx() < vertex_slots(); }
+  bool is_valid(Halfedge h) const { return h.idx() < halfedge_slots(); }
+  bool is_valid(Edge e) const { return e.idx() < edge_slots(); }
+  bool is_valid(Face f) const { return f.idx() < face_slots(); }
+  //! True if the handle names a live element of this mesh: valid, in range and not deleted. O(1).
+  bool is_live(Vertex v) const { return is_valid(v) && !is_deleted(v); }
+  bool is_live(Halfedge h) const { return is_valid(h) && !is_deleted(h); }
+  bool is_live(Edge e) const { return is_valid(e) && !is_deleted(e); }
+  bool is_live(Face f) const { return is_valid(f) && !is_deleted(f); }
 
   // ---- Positions. ----
   Vec3& position(Vertex v) { return positions_[v]; }
@@ -132,7 +138,7 @@ class SurfaceMesh {
   //! Moves v and marks it in the change log (position() gives a reference that marks nothing).
   void set_position(Vertex v, const Vec3& p) {
     positions_[v] = p;
-    changes_.mark(v, kVerticesMoved);
+    changes_.mark(v, ChangeEvent::vertices_moved);
     changes_.notify();
   }
 
@@ -141,9 +147,9 @@ class SurfaceMesh {
   ChangeLog& changes() { return changes_; }
   const ChangeLog& changes() const { return changes_; }
   //! v's position or another of its properties changed.
-  void mark_changed(Vertex v, std::uint32_t events = kVerticesMoved) { changes_.mark(v, events); }
+  void mark_changed(Vertex v, ChangeEvent events = ChangeEvent::vertices_moved) { changes_.mark(v, events); }
   //! f's corners, corner properties or face properties changed.
-  void mark_changed(Face f, std::uint32_t events = kFacesChanged) { changes_.mark(f, events); }
+  void mark_changed(Face f, ChangeEvent events = ChangeEvent::faces_changed) { changes_.mark(f, events); }
 
   // ---- Properties. Names starting with "v:", "h:", "e:", "f:" are by convention hedge's own. ----
   template <typename T>
@@ -211,10 +217,10 @@ class SurfaceMesh {
   std::vector<std::string> face_property_names() const { return fprops_.names(); }
 
   // ---- Element ranges (skip deleted elements). ----
-  ElementRange<Vertex> vertices() const { return {v_deleted_, vertices_size()}; }
-  ElementRange<Halfedge> halfedges() const { return {e_deleted_, halfedges_size(), 1}; }
-  ElementRange<Edge> edges() const { return {e_deleted_, edges_size()}; }
-  ElementRange<Face> faces() const { return {f_deleted_, faces_size()}; }
+  ElementRange<Vertex> vertices() const { return {v_deleted_, vertex_slots()}; }
+  ElementRange<Halfedge> halfedges() const { return {e_deleted_, halfedge_slots(), 1}; }
+  ElementRange<Edge> edges() const { return {e_deleted_, edge_slots()}; }
+  ElementRange<Face> faces() const { return {f_deleted_, face_slots()}; }
 
   // ---- Circulators (cheap ranges for range-for). The default vertex order is clockwise, which
   // costs O(1) a step; the *_ccw variants cost one prev() a step. ----
@@ -349,7 +355,7 @@ class SurfaceMesh {
 // in bulk, and a property container that holds no array costs one comparison.
 inline Vertex SurfaceMesh::add_vertex(const Vec3& point) {
   const Vec3 p = point;  // point may live in the position array that is about to grow
-  const Vertex v(static_cast<Index>(vertices_size()));
+  const Vertex v(static_cast<Index>(vertex_slots()));
   room_for_vertices(1);
   v_halfedge_.push_back(Halfedge());
   cover(v_deleted_, v_halfedge_.size());
@@ -359,7 +365,7 @@ inline Vertex SurfaceMesh::add_vertex(const Vec3& point) {
 }
 
 inline Halfedge SurfaceMesh::new_edge(Vertex a, Vertex b) {
-  const Halfedge h(static_cast<Index>(halfedges_size()));
+  const Halfedge h(static_cast<Index>(halfedge_slots()));
   room_for_halfedges(2);
   h_vertex_.push_back(b);
   h_vertex_.push_back(a);
@@ -367,14 +373,14 @@ inline Halfedge SurfaceMesh::new_edge(Vertex a, Vertex b) {
   h_next_.push_back(Halfedge());
   h_face_.push_back(Face());
   h_face_.push_back(Face());
-  cover(e_deleted_, edges_size());
+  cover(e_deleted_, edge_slots());
   hprops_.push_back(2);
   eprops_.push_back();
   return h;
 }
 
 inline Face SurfaceMesh::new_face() {
-  const Face f(static_cast<Index>(faces_size()));
+  const Face f(static_cast<Index>(face_slots()));
   room_for_faces(1);
   f_halfedge_.push_back(Halfedge());
   cover(f_deleted_, f_halfedge_.size());
@@ -389,12 +395,12 @@ inline Halfedge SurfaceMesh::new_edges() {
   static constexpr std::array<Vertex, 2 * N> no_vertex{};
   static constexpr std::array<Halfedge, 2 * N> no_halfedge{};
   static constexpr std::array<Face, 2 * N> no_face{};
-  const Halfedge h(static_cast<Index>(halfedges_size()));
+  const Halfedge h(static_cast<Index>(halfedge_slots()));
   room_for_halfedges(2 * N);
   h_vertex_.insert(h_vertex_.end(), no_vertex.begin(), no_vertex.end());
   h_next_.insert(h_next_.end(), no_halfedge.begin(), no_halfedge.end());
   h_face_.insert(h_face_.end(), no_face.begin(), no_face.end());
-  cover(e_deleted_, edges_size());
+  cover(e_deleted_, edge_slots());
   hprops_.push_back(2 * N);
   eprops_.push_back(N);
   return h;
@@ -403,7 +409,7 @@ inline Halfedge SurfaceMesh::new_edges() {
 template <std::size_t N>
 inline Face SurfaceMesh::new_faces() {
   static constexpr std::array<Halfedge, N> no_halfedge{};
-  const Face f(static_cast<Index>(faces_size()));
+  const Face f(static_cast<Index>(face_slots()));
   room_for_faces(N);
   f_halfedge_.insert(f_halfedge_.end(), no_halfedge.begin(), no_halfedge.end());
   cover(f_deleted_, f_halfedge_.size());
@@ -412,5 +418,7 @@ inline Face SurfaceMesh::new_faces() {
 }
 
 }  // namespace hedge
+
+#undef HEDGE_ALWAYS_INLINE
 
 

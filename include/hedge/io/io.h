@@ -12,12 +12,12 @@
 #include "hedge/core/indexed_mesh.h"
 #include "hedge/core/surface_mesh.h"
 
-namespace hedge::io {
+namespace hedge {
 
-enum class Format { obj, off, ply, stl };
+enum class FileFormat { obj, off, ply, stl };
 
 //! The format for a path's extension (case-insensitive). \throw IoError for an unknown one.
-Format format_from_path(const std::string& path);
+FileFormat format_from_path(const std::string& path);
 
 struct WriteOptions {
   //! PLY and STL: binary (little endian) when true, ASCII when false. Ignored for OBJ and OFF.
@@ -55,7 +55,7 @@ IndexedMesh read_ply(std::string_view data, const std::string& name = {});
 //! default_build_options). A file whose size is 84 + 50 n, n being the count at byte 80, is binary
 //! even when its header starts with "solid".
 IndexedMesh read_stl(std::string_view data, const std::string& name = {});
-IndexedMesh read_indexed(std::string_view data, Format format, const std::string& name = {});
+IndexedMesh read_indexed(std::string_view data, FileFormat format, const std::string& name = {});
 
 // Per-format writers into a string (the atomic file writers wrap these). O(mesh size).
 // Coordinates are written so that they read back bit for bit (see WriteOptions::precision).
@@ -74,7 +74,7 @@ std::string write_ply(const IndexedMesh& mesh, const WriteOptions& options = {})
 //! STL: polygons fanned into triangles, facet normals computed (zero for a degenerate triangle).
 //! The binary header never starts with "solid".
 std::string write_stl(const IndexedMesh& mesh, const WriteOptions& options = {});
-std::string write_indexed(const IndexedMesh& mesh, Format format, const WriteOptions& options = {});
+std::string write_indexed(const IndexedMesh& mesh, FileFormat format, const WriteOptions& options = {});
 
 //! Reads a whole file. \throw IoError if it cannot be opened or read.
 std::string read_file(const std::string& path);
@@ -91,7 +91,7 @@ void write_indexed_file(const IndexedMesh& mesh, const std::string& path, const 
 
 //! Build options for loading files: repair policy, and exact welding for STL (which stores no
 //! connectivity). Other formats keep the file's vertices.
-BuildOptions default_build_options(Format format);
+BuildOptions default_build_options(FileFormat format);
 
 //! Reads and builds a SurfaceMesh. Uses default_build_options(format) unless options are given.
 SurfaceMesh read_mesh(const std::string& path, BuildReport* report = nullptr);
@@ -99,4 +99,4 @@ SurfaceMesh read_mesh(const std::string& path, const BuildOptions& options, Buil
 //! Exports (triangulating for STL) and writes atomically.
 void write_mesh(const SurfaceMesh& mesh, const std::string& path, const WriteOptions& options = {});
 
-}  // namespace hedge::io
+}  // namespace hedge

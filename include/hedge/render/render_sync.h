@@ -111,18 +111,22 @@ class RenderSync {
   const VertexLayout& layout() const { return layout_; }
   SurfaceMesh& mesh() const { return *mesh_; }
 
-  // ---- Buffers. Sizes count slots, free ones included. ----
-  std::size_t vertex_count() const { return rv_vertex_.size(); }
+  // ---- Buffers. *_slots count storage slots, free ones included; n_* count the slots in use. ----
+  //! Render vertex slots: the length of the vertex buffer in vertices.
+  std::size_t vertex_slots() const { return rv_vertex_.size(); }
+  //! Triangle slots: the length of the index buffer in triangles.
+  std::size_t triangle_slots() const { return indices_.size() / 3; }
+  //! The length of the index buffer in indices (3 per triangle slot).
   std::size_t index_count() const { return indices_.size(); }
-  //! Live render vertices and triangles (slots in use).
-  std::size_t live_vertex_count() const { return vertex_count() - free_vertices_.size(); }
-  std::size_t live_triangle_count() const { return indices_.size() / 3 - free_triangle_count_; }
+  //! Render vertices and triangles in use.
+  std::size_t n_vertices() const { return vertex_slots() - free_vertices_.size(); }
+  std::size_t n_triangles() const { return triangle_slots() - free_triangle_slots_; }
   //! Sizes to allocate the GPU buffers at (render vertices, indices). The buffers grow within them
   //! without a reallocation; SyncResult::resized says when they grew beyond.
   std::size_t vertex_capacity() const { return vertex_capacity_; }
   std::size_t index_capacity() const { return index_capacity_; }
   //! Free triangle slots (degenerate triangles) waiting for reuse or compact().
-  std::size_t free_triangle_count() const { return free_triangle_count_; }
+  std::size_t free_triangle_slots() const { return free_triangle_slots_; }
   //! Interleaved layout: every vertex, layout().stride floats each. Separate: the positions.
   std::span<const float> vertices() const { return streams_[0]; }
   //! One stream in separate layout (empty if the attribute is absent or the layout interleaved).
@@ -158,7 +162,7 @@ class RenderSync {
   //! Closes the transaction opened by begin(); the outermost commit syncs once.
   const SyncResult& commit();
   bool in_transaction() const { return transaction_depth_ > 0; }
-  //! Rebuilds every buffer from scratch: the original's full GenerateUnityMesh. Slots restart in
+  //! Rebuilds every buffer from scratch, a full export. Slots restart in
   //! face order, so it also compacts.
   const SyncResult& rebuild();
   //! Syncs, then removes free slots by packing live render vertices and face triangles in their
@@ -235,7 +239,7 @@ class RenderSync {
   std::vector<std::uint32_t> indices_;
   std::vector<FaceSlots> face_slots_;
   std::vector<std::vector<std::uint32_t>> free_triangles_;  // by triangle count: first slots
-  std::size_t free_triangle_count_ = 0;
+  std::size_t free_triangle_slots_ = 0;
   std::size_t index_capacity_ = 0;
 
   // Scratch of sync_face, kept to avoid allocating per face.

@@ -105,7 +105,7 @@ namespace Hedge.Unity
         {
             if (result.IsEmpty) return;
             BufferCounts counts = Buffers.Counts;
-            if (result.Resized || counts.VertexCount > gpuVertices || counts.IndexCount > indices.Length)
+            if (result.Resized || counts.VertexSlots > gpuVertices || counts.IndexCount > indices.Length)
             {
                 UploadAll();
                 return;
@@ -158,7 +158,7 @@ namespace Hedge.Unity
         {
             BufferCounts counts = Buffers.Counts;
             VertexLayout layout = Buffers.Layout;
-            gpuVertices = (int)Math.Max(counts.VertexCapacity, counts.VertexCount);
+            gpuVertices = (int)Math.Max(counts.VertexCapacity, counts.VertexSlots);
             indexCount = (int)counts.IndexCount;
             int gpuIndices = (int)Math.Max(counts.IndexCapacity, counts.IndexCount);
             int streams = 1;
