@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "queries.h"
+#include "support/structures/queries.h"
 
 namespace hedge::structures {
 

@@ -25,15 +25,15 @@
 #include <string>
 #include <vector>
 
-#include "edge_table.h"
-#include "half_edge_view.h"
 #include "hedge/io/io.h"
-#include "indexed_triangles.h"
-#include "queries.h"
 #include "report.h"
-#include "subdivide.h"
-#include "triangle_neighbors.h"
-#include "winged_edge.h"
+#include "support/structures/edge_table.h"
+#include "support/structures/half_edge_view.h"
+#include "support/structures/indexed_triangles.h"
+#include "support/structures/queries.h"
+#include "support/structures/subdivide.h"
+#include "support/structures/triangle_neighbors.h"
+#include "support/structures/winged_edge.h"
 
 namespace fs = std::filesystem;
 using namespace hedge::structures;

@@ -557,9 +557,9 @@ HEDGE_API hedge_status hedge_render_dirty_vertex_ranges(const hedge_render* rend
  *  sorted, merged and disjoint. */
 HEDGE_API hedge_status hedge_render_dirty_index_ranges(const hedge_render* render, hedge_range* buffer,
                                                        uint32_t capacity, uint32_t* out_count);
-/** Removes the free slots by moving the last live slots into them; re-upload both buffers
- *  afterwards. Outside a transaction it first syncs pending edits, as hedge_render_sync() does.
- *  Each map is optional (NULL): old render-vertex slot -> new slot, and old triangle slot -> new
+/** Removes the free slots by packing the live render vertices and triangles in their current
+ *  order (live slots keep their relative order); re-upload both buffers afterwards. Outside a
+ *  transaction it first syncs pending edits, as hedge_render_sync() does. Each map is optional (NULL): old render-vertex slot -> new slot, and old triangle slot -> new
  *  triangle slot; freed slots map to HEDGE_INVALID_INDEX. The sizes needed are the vertex_slots and
  *  index_count / 3 of hedge_render_counts() after that sync, and are written to *out_vertex_count
  *  and *out_triangle_count (each optional, NULL); a map too small gives

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <random>
 
-#include "hedge/algorithms/random_edits.h"
+#include "support/random_edits.h"
 #include "hedge/core/operations.h"
 #include "hedge/io/io.h"
 #include "test_meshes.h"
@@ -269,6 +269,7 @@ void random_edit_run(SurfaceMesh m, const RenderOptions& options, std::size_t st
   Mirror mirror;
   mirror.apply(rs, rs.last_result());
   std::mt19937 rng(7);
+  RandomEditor editor(m, 1000);
   for (std::size_t step = 0; step < steps; ++step) {
     if (step % 3 == 0) {
       std::vector<Vertex> live;
@@ -276,11 +277,7 @@ void random_edit_run(SurfaceMesh m, const RenderOptions& options, std::size_t st
       const Vertex v = live[rng() % live.size()];
       m.set_position(v, m.position(v) + Vec3{0.01f, -0.02f, 0.03f});
     } else {
-      RandomEditOptions o;
-      o.seed = 1000 + step;
-      o.operations = 1;
-      o.collect_every = 0;
-      random_edits(m, o);
+      editor.step();
     }
     mirror.apply(rs, rs.sync());
     if (step % 25 == 0 || step + 1 == steps) {

@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "commands.h"
-#include "hedge/algorithms/random_edits.h"
+#include "support/random_edits.h"
 #include "hedge/render/render_sync.h"
 #include "load.h"
 #include "mesh_stats.h"
@@ -51,14 +51,9 @@ int run_render_buffers(const RenderBuffersOptions& options) {
   // Random edits, one sync after each.
   std::vector<double> bytes;
   std::size_t total = 0, resized = 0, applied = 0;
+  RandomEditor editor(mesh, options.seed);
   for (std::size_t i = 0; i < options.edits; ++i) {
-    RandomEditOptions edit;
-    edit.seed = options.seed * 1000003u + i;
-    edit.operations = 1;
-    edit.collect_every = 0;
-    edit.validate_at_end = false;  // validated once, after the sample
-    const RandomEditReport r = random_edits(mesh, edit);
-    applied += r.total_applied();
+    applied += editor.step().applied;  // validated once, after the sample
     const SyncResult& s = rs.sync();
     bytes.push_back(static_cast<double>(s.vertex_bytes + s.index_bytes));
     total += s.vertex_bytes + s.index_bytes;

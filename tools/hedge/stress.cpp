@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "commands.h"
-#include "hedge/algorithms/random_edits.h"
+#include "support/random_edits.h"
 #include "load.h"
 #include "mesh_stats.h"
 

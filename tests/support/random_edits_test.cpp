@@ -1,4 +1,4 @@
-#include "hedge/algorithms/random_edits.h"
+#include "support/random_edits.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,10 @@
-// Seeded random sequences of local operations: the stress driver behind the test suite, the
-// `hedge stress` command and the operation benchmarks.
+// Test support: seeded random sequences of local operations, the stress driver behind the test
+// suite and the `hedge stress` and `hedge render-buffers` commands. Not part of the library's API.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -29,9 +30,6 @@ struct RandomEditOptions {
   std::size_t operations = 1000;
   //! Run validate() after every n-th operation (1: after each); 0 validates only at the end.
   std::size_t validate_every = 0;
-  //! Validate once after the last operation (skipped when validate_every just did). A caller that
-  //! drives one operation per call and validates itself turns this off.
-  bool validate_at_end = true;
   //! Compact with garbage_collection() after every n-th operation; 0 never.
   std::size_t collect_every = 5000;
 };
@@ -50,11 +48,33 @@ struct RandomEditReport {
   std::size_t total_refused() const;
 };
 
-//! Applies `options.operations` random operations chosen with a seeded generator (the same seed
-//! gives the same sequence on every platform). Each pick is checked with the operation's
-//! predicate; a refused pick is counted and must leave the mesh unchanged. The mesh size is kept
-//! within a factor of four of its start by steering between splits and collapses.
-//! Stops early when validation fails. O(operations x valence), plus O(n) per validation.
+//! Random operations on one mesh, one per step(), from one seeded generator: the same seed gives
+//! the same sequence on every platform. Each pick goes to the operation, whose own check may refuse
+//! it (a refused operation leaves the mesh unchanged). The mesh size is kept within a factor of four
+//! of its size at construction by steering between splits and collapses.
+class RandomEditor {
+ public:
+  RandomEditor(SurfaceMesh& mesh, std::uint64_t seed);
+
+  struct Step {
+    EditKind kind = EditKind::count;
+    bool applied = false;
+    //! False if the operation was applied and V - E + F differs from what it predicts.
+    bool euler_kept = true;
+  };
+  //! One random operation. O(valence) (a face removal and re-adding: O(face degree x valence)).
+  Step step();
+
+ private:
+  SurfaceMesh* mesh_;
+  std::mt19937_64 rng_;
+  std::size_t start_faces_;
+};
+
+//! Applies `options.operations` steps of a RandomEditor seeded with `options.seed`, counting what
+//! was applied and refused, collecting garbage and validating as the options say, and validating
+//! once at the end. Stops early when validation fails. O(operations x valence), plus O(n) per
+//! validation.
 RandomEditReport random_edits(SurfaceMesh& mesh, const RandomEditOptions& options);
 
 }  // namespace hedge

@@ -1,6 +1,7 @@
 // The three reference structures must answer every Table 1 query exactly as hedge's SurfaceMesh
 // does (as sets; edges compared by their vertex pairs), and their memory must be what their arrays
-// say. Also checks the edge matching and the midpoint subdivision the benchmark relies on.
+// say. Also checks the edge matching and the midpoint subdivision the benchmark relies on
+// (bench/structures measures these structures; its report code is tested in bench/structures).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,15 +12,14 @@
 #include <string>
 #include <vector>
 
-#include "edge_table.h"
-#include "half_edge_view.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
-#include "indexed_triangles.h"
-#include "report.h"
-#include "subdivide.h"
-#include "triangle_neighbors.h"
-#include "winged_edge.h"
+#include "support/structures/edge_table.h"
+#include "support/structures/half_edge_view.h"
+#include "support/structures/indexed_triangles.h"
+#include "support/structures/subdivide.h"
+#include "support/structures/triangle_neighbors.h"
+#include "support/structures/winged_edge.h"
 
 namespace hedge::structures {
 
@@ -300,49 +300,6 @@ TEST(SubdivideMidpoint, SplitsEveryBoundaryEdgeInTwo) {
   const TriangleArrays s = subdivide_midpoint(grid(2));
   const EdgeTable t = match_edges(s.triangles, s.n_vertices());
   EXPECT_EQ(std::count(t.opposite.begin(), t.opposite.end(), kInvalidIndex), 16);  // 8 boundary edges before
-}
-
-// ---- Report ----
-
-//! A series whose every query of structure 0 costs c * n_t^slope.
-std::vector<MeshResult> synthetic_series(double slope) {
-  std::vector<MeshResult> series;
-  for (std::size_t n = 1000; n <= 1'024'000; n *= 4) {
-    MeshResult m;
-    m.n_faces = n;
-    m.structures[0].ok = true;
-    m.structures[0].build_ns = 30.0 * double(n);
-    for (QueryTiming& q : m.structures[0].queries) q.ns = 5.0 * std::pow(double(n), slope);
-    series.push_back(m);
-  }
-  return series;
-}
-
-TEST(Report, ClassifiesGrowth) {
-  const GrowthFit flat = fit_growth(synthetic_series(0.1), 0, 0);
-  EXPECT_NEAR(flat.slope, 0.1, 1e-9);
-  EXPECT_TRUE(flat.clear);
-  EXPECT_EQ(flat.measured, Growth::constant);
-  const GrowthFit linear = fit_growth(synthetic_series(1.0), 0, 3);
-  EXPECT_NEAR(linear.slope, 1.0, 1e-9);
-  EXPECT_EQ(linear.measured, Growth::linear);
-  EXPECT_FALSE(fit_growth(synthetic_series(0.6), 0, 0).clear);
-  EXPECT_NEAR(fit_growth(synthetic_series(1.0), 0, kQueryCount).slope, 0.0, 1e-9);  // build per triangle
-  EXPECT_FALSE(std::isfinite(fit_growth(synthetic_series(1.0), 1, 0).slope));       // structure not built
-}
-
-TEST(Report, OneDisturbedSizeDoesNotChangeTheClass) {
-  std::vector<MeshResult> series = synthetic_series(0.0);
-  series.back().structures[0].queries[0].ns *= 30;  // one sample hit by a busy machine
-  EXPECT_EQ(fit_growth(series, 0, 0).measured, Growth::constant);
-}
-
-TEST(Report, ReplacesOnlyTheGeneratedSection) {
-  const std::string doc = std::string("intro\n") + kBeginMarker + "\nold\n" + kEndMarker + "\noutro\n";
-  const std::string out = replace_generated(doc, "new\n");
-  EXPECT_EQ(out, std::string("intro\n") + kBeginMarker + "\nnew\n" + kEndMarker + "\noutro\n");
-  EXPECT_EQ(replace_generated(out, "new\n"), out);
-  EXPECT_THROW(replace_generated("no markers", "x"), std::runtime_error);
 }
 
 }  // namespace
