@@ -599,6 +599,10 @@ HEDGE_API hedge_status hedge_render_corner_vertex(const hedge_render* render, ui
 HEDGE_API hedge_status hedge_render_face_triangles(const hedge_render* render, uint32_t face,
                                                    uint32_t* out_first, uint32_t* out_count);
 
+/* ============================================================================================ */
+/* Engine-mesh import (hedge/render/engine_mesh.h)                                              */
+/* ============================================================================================ */
+
 /** Import options for engine meshes (hedge::EngineImportOptions). Layout (24 bytes): weld @0,
  *  policy @4 (int32_t), weld_epsilon @8 (double), winding @16, flip_x @20 (int32_t). */
 typedef struct hedge_engine_import_options {

@@ -1,5 +1,7 @@
-// The C ABI: render buffers (hedge/render/render_sync.h) and engine-mesh import.
+// The C ABI: render buffers (hedge/render/render_sync.h) and engine-mesh import
+// (hedge/render/engine_mesh.h).
 #include "capi_internal.h"
+#include "hedge/render/engine_mesh.h"
 
 using namespace hedge;
 using namespace hedge::capi;
