@@ -72,7 +72,7 @@ std::span<const float> RenderSync::stream(int i) const {
 
 SlotRange RenderSync::triangles(Face f) const {
   if (!f.is_valid() || f.idx() >= face_slots_.size()) return {};
-  return {face_slots_[f.idx()].first, face_slots_[f.idx()].count};
+  return face_slots_[f.idx()];
 }
 
 std::size_t RenderSync::seam_splits() const {
@@ -314,7 +314,7 @@ void RenderSync::mark_indices_written(std::uint32_t first, std::uint32_t count) 
 }
 
 void RenderSync::release_face(Face f) {
-  FaceSlots& s = face_slots_[f.idx()];
+  SlotRange& s = face_slots_[f.idx()];
   if (s.count == 0) return;
   const std::size_t begin = 3 * std::size_t(s.first), end = begin + 3 * std::size_t(s.count);
   for (std::size_t i = begin; i < end; ++i) unref_vertex(indices_[i]);
@@ -356,7 +356,7 @@ void RenderSync::sync_face(Face f) {
     if (options_.winding == Winding::ccw) new_indices_.insert(new_indices_.end(), {a, b, c});
     else new_indices_.insert(new_indices_.end(), {a, c, b});
   }
-  FaceSlots& s = face_slots_[f.idx()];
+  SlotRange& s = face_slots_[f.idx()];
   const bool same_slots = s.count == count;
   if (same_slots && std::equal(new_indices_.begin(), new_indices_.end(), indices_.begin() + 3 * std::size_t(s.first)))
     return;  // nothing changed (a render vertex made for a corner is then already in use)
@@ -415,7 +415,7 @@ void RenderSync::recompute_normals(const ChangeLog::Pending& p) {
       for (Vertex w : m.vertices(f)) seed(w);
     } else if (f.idx() < face_slots_.size() && face_slots_[f.idx()].count > 0) {
       // A removed face cannot be walked any more; its old corners are in its index slots.
-      const FaceSlots& s = face_slots_[f.idx()];
+      const SlotRange& s = face_slots_[f.idx()];
       for (std::size_t i = 3 * std::size_t(s.first); i < 3 * std::size_t(s.first + s.count); ++i)
         seed(rv_vertex_[indices_[i]]);
     }
@@ -447,7 +447,7 @@ void RenderSync::full_build() {
   v_first_rv_.assign(m.vertex_slots(), kInvalidIndex);
   corner_rv_.assign(m.halfedge_slots(), kInvalidIndex);
   indices_.clear();
-  face_slots_.assign(m.face_slots(), FaceSlots{});
+  face_slots_.assign(m.face_slots(), SlotRange{});
   free_triangles_.clear();
   free_triangle_slots_ = 0;
   vertex_normal_.clear();
@@ -613,7 +613,7 @@ RenderRemap RenderSync::compact() {
   std::vector<std::uint32_t> packed;
   packed.reserve(3 * n_triangles());
   for (const auto& [first, f] : order) {
-    FaceSlots& s = face_slots_[f];
+    SlotRange& s = face_slots_[f];
     const std::uint32_t to = static_cast<std::uint32_t>(packed.size() / 3);
     for (std::uint32_t t = 0; t < s.count; ++t) {
       map.triangles[first + t] = to + t;

@@ -162,10 +162,6 @@ class RenderSync {
   RenderRemap compact();
 
  private:
-  struct FaceSlots {
-    std::uint32_t first = 0;  // first triangle slot
-    std::uint32_t count = 0;  // triangles
-  };
   std::span<const float> stream(int i) const;
   bool stream_present(int s) const;
   //! Floats per vertex held in streams_[s]: the whole vertex in stream 0 when interleaved, 0 for a
@@ -229,7 +225,7 @@ class RenderSync {
 
   // Index buffer.
   std::vector<std::uint32_t> indices_;
-  std::vector<FaceSlots> face_slots_;
+  std::vector<SlotRange> face_slots_;  // face -> its triangle slots
   std::vector<std::vector<std::uint32_t>> free_triangles_;  // by triangle count: first slots
   std::size_t free_triangle_slots_ = 0;
   std::size_t index_capacity_ = 0;
