@@ -539,7 +539,8 @@ HEDGE_API hedge_status hedge_render_destroy(hedge_render* render);
 /** Brings the buffers in step with the edits since the last sync. Inside a transaction it does
  *  nothing (an empty result). \param out_result optional (NULL). */
 HEDGE_API hedge_status hedge_render_sync(hedge_render* render, hedge_sync_result* out_result);
-/** Opens a transaction: edits are gathered until the matching commit (transactions nest). */
+/** Opens a transaction: edits are gathered until the matching commit (transactions nest). The
+ *  transaction is this render object's own: other render objects of the mesh keep syncing. */
 HEDGE_API hedge_status hedge_render_begin(hedge_render* render);
 /** Closes the transaction; the outermost commit syncs once. No open transaction:
  *  HEDGE_ERROR_INVALID_ARGUMENT. \param out_result optional (NULL). */

@@ -57,13 +57,7 @@ RenderSync::RenderSync(SurfaceMesh& mesh, const RenderOptions& options) : mesh_(
   }
 }
 
-RenderSync::~RenderSync() {
-  while (transaction_depth_ > 0) {
-    mesh_->changes().commit();
-    --transaction_depth_;
-  }
-  mesh_->changes().detach(consumer_);
-}
+RenderSync::~RenderSync() { mesh_->changes().detach(consumer_); }
 
 std::span<const float> RenderSync::stream(int i) const {
   if (layout_.interleaved) return {};
@@ -498,7 +492,7 @@ const SyncResult& RenderSync::rebuild() {
 
 const SyncResult& RenderSync::sync() {
   result_ = {};
-  if (transaction_depth_ > 0) return result_;
+  if (in_transaction()) return result_;
   const ChangeLog::Pending p = mesh_->changes().pending(consumer_);
   if (p.reset) return rebuild();
   if (p.vertices.empty() && p.faces.empty()) {
@@ -552,19 +546,10 @@ void RenderSync::finish_result() {
   result_.index_bytes = idx * sizeof(std::uint32_t);
 }
 
-void RenderSync::begin() {
-  ++transaction_depth_;
-  mesh_->changes().begin();
-}
+void RenderSync::begin() { mesh_->changes().begin(consumer_); }
 
 const SyncResult& RenderSync::commit() {
-  if (transaction_depth_ == 0) {
-    result_ = {};
-    return result_;
-  }
-  --transaction_depth_;
-  mesh_->changes().commit();
-  if (transaction_depth_ > 0) {
+  if (!mesh_->changes().commit(consumer_)) {  // an inner transaction, or none was open
     result_ = {};
     return result_;
   }
@@ -573,7 +558,7 @@ const SyncResult& RenderSync::commit() {
 
 RenderRemap RenderSync::compact() {
   // Bring everything up to date first, so that the maps describe current buffers.
-  if (transaction_depth_ == 0) sync();
+  if (!in_transaction()) sync();
   RenderRemap map;
   const std::size_t nv = rv_vertex_.size();
   map.vertices.assign(nv, kInvalidIndex);

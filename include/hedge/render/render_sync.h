@@ -10,7 +10,11 @@
 //  - Incremental updates. Operations mark what they touch in the mesh's change log
 //    (core/changes.h); sync() rewrites only the slots of touched faces and vertices and returns the
 //    rewritten ranges, sorted and merged, for a partial GPU upload.
-//  - Transactions. begin() ... edits ... commit() syncs once at the end.
+//  - Transactions. begin() ... edits ... commit() syncs once at the end. A transaction belongs to
+//    the RenderSync that opened it; the mesh's change log counts it for this RenderSync's consumer
+//    (ChangeLog::begin(id)). So another RenderSync of the same mesh, or code that calls
+//    mesh.changes().begin() itself, does not defer this one's syncs, while every open transaction
+//    defers the notifications of the log's subscribers until it closes.
 //
 // The RenderSync refers to the mesh it was made for: the mesh must outlive it and stay at the same
 // address.
@@ -95,6 +99,8 @@ class RenderSync {
  public:
   //! Builds the buffers (a full export) and starts following `mesh`'s change log.
   explicit RenderSync(SurfaceMesh& mesh, const RenderOptions& options = {});
+  //! Stops following the mesh's change log and closes the transactions this RenderSync left open
+  //! (closing the last open one notifies the log's subscribers).
   ~RenderSync();
   RenderSync(const RenderSync&) = delete;
   RenderSync& operator=(const RenderSync&) = delete;
@@ -151,9 +157,11 @@ class RenderSync {
   const SyncResult& last_result() const { return result_; }
   //! Opens a transaction: changes are gathered, and notifications wait (transactions nest).
   void begin();
-  //! Closes the transaction opened by begin(); the outermost commit syncs once.
+  //! Closes the transaction opened by begin(); the outermost commit syncs once. Without an open
+  //! transaction of this RenderSync it does nothing and returns an empty result.
   const SyncResult& commit();
-  bool in_transaction() const { return transaction_depth_ > 0; }
+  //! True between begin() and the matching outermost commit(). O(consumers of the mesh).
+  bool in_transaction() const { return mesh_->changes().in_transaction(consumer_); }
   //! Rebuilds every buffer from scratch, a full export. Slots restart in
   //! face order, so it also compacts.
   const SyncResult& rebuild();
@@ -196,7 +204,6 @@ class RenderSync {
   RenderOptions options_;
   VertexLayout layout_;
   ChangeLog::ConsumerId consumer_ = 0;
-  int transaction_depth_ = 0;
   bool building_ = false;  // a full build reports whole buffers, not written slots
 
   // Attribute sources, resolved against the mesh's properties.
