@@ -287,7 +287,7 @@ std::uint32_t RenderSync::allocate_triangles(std::uint32_t count) {
     free_triangle_slots_ -= count;
     return first;
   }
-  const std::uint32_t first = static_cast<std::uint32_t>(indices_.size() / 3);
+  const std::uint32_t first = static_cast<std::uint32_t>(triangle_slots());
   const std::size_t n = indices_.size() + 3 * std::size_t(count);
   grow_capacity(index_capacity_, n);
   indices_.resize(n, 0);
@@ -589,8 +589,7 @@ RenderRemap RenderSync::compact() {
   free_vertices_.clear();
 
   // Triangles: pack the faces' ranges in their current order.
-  const std::size_t nt = indices_.size() / 3;
-  map.triangles.assign(nt, kInvalidIndex);
+  map.triangles.assign(triangle_slots(), kInvalidIndex);
   std::vector<std::pair<std::uint32_t, Index>> order;  // (first slot, face)
   for (std::size_t f = 0; f < face_slots_.size(); ++f)
     if (face_slots_[f].count > 0) order.push_back({face_slots_[f].first, static_cast<Index>(f)});
