@@ -539,7 +539,8 @@ HEDGE_API hedge_status hedge_render_destroy(hedge_render* render);
 /** Brings the buffers in step with the edits since the last sync. Inside a transaction it does
  *  nothing (an empty result). \param out_result optional (NULL). */
 HEDGE_API hedge_status hedge_render_sync(hedge_render* render, hedge_sync_result* out_result);
-/** Opens a transaction: edits are gathered until the matching commit (transactions nest). */
+/** Opens a transaction: edits are gathered until the matching commit (transactions nest). The
+ *  transaction is this render object's own: other render objects of the mesh keep syncing. */
 HEDGE_API hedge_status hedge_render_begin(hedge_render* render);
 /** Closes the transaction; the outermost commit syncs once. No open transaction:
  *  HEDGE_ERROR_INVALID_ARGUMENT. \param out_result optional (NULL). */
@@ -598,6 +599,10 @@ HEDGE_API hedge_status hedge_render_corner_vertex(const hedge_render* render, ui
  *  *out_count) of the index buffer (*out_count 0 if it has none). */
 HEDGE_API hedge_status hedge_render_face_triangles(const hedge_render* render, uint32_t face,
                                                    uint32_t* out_first, uint32_t* out_count);
+
+/* ============================================================================================ */
+/* Engine-mesh import (hedge/render/engine_mesh.h)                                              */
+/* ============================================================================================ */
 
 /** Import options for engine meshes (hedge::EngineImportOptions). Layout (24 bytes): weld @0,
  *  policy @4 (int32_t), weld_epsilon @8 (double), winding @16, flip_x @20 (int32_t). */

@@ -1,5 +1,7 @@
-// The C ABI: render buffers (hedge/render/render_sync.h) and engine-mesh import.
+// The C ABI: render buffers (hedge/render/render_sync.h) and engine-mesh import
+// (hedge/render/engine_mesh.h).
 #include "capi_internal.h"
+#include "hedge/render/engine_mesh.h"
 
 using namespace hedge;
 using namespace hedge::capi;
@@ -159,12 +161,14 @@ hedge_status hedge_render_compact(hedge_render* render, uint32_t* vertex_map, ui
     RenderSync& sync = *object->sync;
     // compact() syncs first; do it here so that the map sizes are known before compacting.
     if (!sync.in_transaction()) sync.sync();
-    const std::size_t vertices = sync.vertex_slots();
-    const std::size_t triangles = sync.index_count() / 3;
-    if (out_vertex_count != nullptr) *out_vertex_count = to_u32(vertices, "vertex count");
-    if (out_triangle_count != nullptr) *out_triangle_count = to_u32(triangles, "triangle count");
-    if (vertex_map != nullptr) check_capacity(vertices, vertex_map, vertex_capacity, "vertex_map");
-    if (triangle_map != nullptr) check_capacity(triangles, triangle_map, triangle_capacity, "triangle_map");
+    // The maps have one entry per slot, free ones included.
+    const std::size_t vertex_slots = sync.vertex_slots();
+    const std::size_t triangle_slots = sync.triangle_slots();
+    if (out_vertex_count != nullptr) *out_vertex_count = to_u32(vertex_slots, "vertex count");
+    if (out_triangle_count != nullptr) *out_triangle_count = to_u32(triangle_slots, "triangle count");
+    if (vertex_map != nullptr) check_capacity(vertex_slots, vertex_map, vertex_capacity, "vertex_map");
+    if (triangle_map != nullptr)
+      check_capacity(triangle_slots, triangle_map, triangle_capacity, "triangle_map");
     const RenderRemap remap = sync.compact();
     if (vertex_map != nullptr) std::copy(remap.vertices.begin(), remap.vertices.end(), vertex_map);
     if (triangle_map != nullptr) std::copy(remap.triangles.begin(), remap.triangles.end(), triangle_map);

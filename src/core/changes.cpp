@@ -63,6 +63,32 @@ bool ChangeLog::commit() {
   return true;
 }
 
+void ChangeLog::begin(ConsumerId id) {
+  for (Consumer& c : consumers_) {
+    if (c.id != id) continue;
+    ++c.transactions;
+    begin();
+    return;
+  }
+}
+
+bool ChangeLog::commit(ConsumerId id) {
+  for (Consumer& c : consumers_) {
+    if (c.id != id || c.transactions == 0) continue;
+    --c.transactions;
+    const bool outermost = c.transactions == 0;
+    commit();  // may run callbacks that attach or detach consumers: c is not used after it
+    return outermost;
+  }
+  return false;
+}
+
+bool ChangeLog::in_transaction(ConsumerId id) const {
+  for (const Consumer& c : consumers_)
+    if (c.id == id) return c.transactions > 0;
+  return false;
+}
+
 ChangeLog::ConsumerId ChangeLog::attach() {
   Consumer c;
   c.id = next_id_++;
@@ -75,6 +101,10 @@ ChangeLog::ConsumerId ChangeLog::attach() {
 }
 
 void ChangeLog::detach(ConsumerId id) {
+  // Nobody could close the transactions of a consumer that is gone; they end here.
+  int open = 0;
+  for (const Consumer& c : consumers_)
+    if (c.id == id) open = c.transactions;
   std::erase_if(consumers_, [&](const Consumer& c) { return c.id == id; });
   compact_log();
   if (consumers_.empty()) {
@@ -83,6 +113,7 @@ void ChangeLog::detach(ConsumerId id) {
     std::vector<std::uint32_t>().swap(vertex_stamp_);
     std::vector<std::uint32_t>().swap(face_stamp_);
   }
+  for (; open > 0; --open) commit();
 }
 
 ChangeLog::Pending ChangeLog::pending(ConsumerId id) const {

@@ -1,10 +1,12 @@
-// from_engine_mesh(): engine arrays (attributes per vertex, seams as duplicated vertices) into a
-// welded SurfaceMesh that keeps the attributes per corner.
+// from_engine_mesh(): see include/hedge/render/engine_mesh.h. Engine arrays (attributes per
+// vertex, seams as duplicated vertices) into a welded SurfaceMesh that keeps the attributes per
+// corner.
+#include "hedge/render/engine_mesh.h"
+
 #include <cmath>
 #include <string>
 
 #include "hedge/error.h"
-#include "hedge/render/render_sync.h"
 
 namespace hedge {
 

@@ -57,13 +57,7 @@ RenderSync::RenderSync(SurfaceMesh& mesh, const RenderOptions& options) : mesh_(
   }
 }
 
-RenderSync::~RenderSync() {
-  while (transaction_depth_ > 0) {
-    mesh_->changes().commit();
-    --transaction_depth_;
-  }
-  mesh_->changes().detach(consumer_);
-}
+RenderSync::~RenderSync() { mesh_->changes().detach(consumer_); }
 
 std::span<const float> RenderSync::stream(int i) const {
   if (layout_.interleaved) return {};
@@ -72,7 +66,7 @@ std::span<const float> RenderSync::stream(int i) const {
 
 SlotRange RenderSync::triangles(Face f) const {
   if (!f.is_valid() || f.idx() >= face_slots_.size()) return {};
-  return {face_slots_[f.idx()].first, face_slots_[f.idx()].count};
+  return face_slots_[f.idx()];
 }
 
 std::size_t RenderSync::seam_splits() const {
@@ -293,7 +287,7 @@ std::uint32_t RenderSync::allocate_triangles(std::uint32_t count) {
     free_triangle_slots_ -= count;
     return first;
   }
-  const std::uint32_t first = static_cast<std::uint32_t>(indices_.size() / 3);
+  const std::uint32_t first = static_cast<std::uint32_t>(triangle_slots());
   const std::size_t n = indices_.size() + 3 * std::size_t(count);
   grow_capacity(index_capacity_, n);
   indices_.resize(n, 0);
@@ -314,7 +308,7 @@ void RenderSync::mark_indices_written(std::uint32_t first, std::uint32_t count) 
 }
 
 void RenderSync::release_face(Face f) {
-  FaceSlots& s = face_slots_[f.idx()];
+  SlotRange& s = face_slots_[f.idx()];
   if (s.count == 0) return;
   const std::size_t begin = 3 * std::size_t(s.first), end = begin + 3 * std::size_t(s.count);
   for (std::size_t i = begin; i < end; ++i) unref_vertex(indices_[i]);
@@ -356,7 +350,7 @@ void RenderSync::sync_face(Face f) {
     if (options_.winding == Winding::ccw) new_indices_.insert(new_indices_.end(), {a, b, c});
     else new_indices_.insert(new_indices_.end(), {a, c, b});
   }
-  FaceSlots& s = face_slots_[f.idx()];
+  SlotRange& s = face_slots_[f.idx()];
   const bool same_slots = s.count == count;
   if (same_slots && std::equal(new_indices_.begin(), new_indices_.end(), indices_.begin() + 3 * std::size_t(s.first)))
     return;  // nothing changed (a render vertex made for a corner is then already in use)
@@ -415,7 +409,7 @@ void RenderSync::recompute_normals(const ChangeLog::Pending& p) {
       for (Vertex w : m.vertices(f)) seed(w);
     } else if (f.idx() < face_slots_.size() && face_slots_[f.idx()].count > 0) {
       // A removed face cannot be walked any more; its old corners are in its index slots.
-      const FaceSlots& s = face_slots_[f.idx()];
+      const SlotRange& s = face_slots_[f.idx()];
       for (std::size_t i = 3 * std::size_t(s.first); i < 3 * std::size_t(s.first + s.count); ++i)
         seed(rv_vertex_[indices_[i]]);
     }
@@ -447,7 +441,7 @@ void RenderSync::full_build() {
   v_first_rv_.assign(m.vertex_slots(), kInvalidIndex);
   corner_rv_.assign(m.halfedge_slots(), kInvalidIndex);
   indices_.clear();
-  face_slots_.assign(m.face_slots(), FaceSlots{});
+  face_slots_.assign(m.face_slots(), SlotRange{});
   free_triangles_.clear();
   free_triangle_slots_ = 0;
   vertex_normal_.clear();
@@ -498,7 +492,7 @@ const SyncResult& RenderSync::rebuild() {
 
 const SyncResult& RenderSync::sync() {
   result_ = {};
-  if (transaction_depth_ > 0) return result_;
+  if (in_transaction()) return result_;
   const ChangeLog::Pending p = mesh_->changes().pending(consumer_);
   if (p.reset) return rebuild();
   if (p.vertices.empty() && p.faces.empty()) {
@@ -552,19 +546,10 @@ void RenderSync::finish_result() {
   result_.index_bytes = idx * sizeof(std::uint32_t);
 }
 
-void RenderSync::begin() {
-  ++transaction_depth_;
-  mesh_->changes().begin();
-}
+void RenderSync::begin() { mesh_->changes().begin(consumer_); }
 
 const SyncResult& RenderSync::commit() {
-  if (transaction_depth_ == 0) {
-    result_ = {};
-    return result_;
-  }
-  --transaction_depth_;
-  mesh_->changes().commit();
-  if (transaction_depth_ > 0) {
+  if (!mesh_->changes().commit(consumer_)) {  // an inner transaction, or none was open
     result_ = {};
     return result_;
   }
@@ -573,7 +558,7 @@ const SyncResult& RenderSync::commit() {
 
 RenderRemap RenderSync::compact() {
   // Bring everything up to date first, so that the maps describe current buffers.
-  if (transaction_depth_ == 0) sync();
+  if (!in_transaction()) sync();
   RenderRemap map;
   const std::size_t nv = rv_vertex_.size();
   map.vertices.assign(nv, kInvalidIndex);
@@ -604,8 +589,7 @@ RenderRemap RenderSync::compact() {
   free_vertices_.clear();
 
   // Triangles: pack the faces' ranges in their current order.
-  const std::size_t nt = indices_.size() / 3;
-  map.triangles.assign(nt, kInvalidIndex);
+  map.triangles.assign(triangle_slots(), kInvalidIndex);
   std::vector<std::pair<std::uint32_t, Index>> order;  // (first slot, face)
   for (std::size_t f = 0; f < face_slots_.size(); ++f)
     if (face_slots_[f].count > 0) order.push_back({face_slots_[f].first, static_cast<Index>(f)});
@@ -613,7 +597,7 @@ RenderRemap RenderSync::compact() {
   std::vector<std::uint32_t> packed;
   packed.reserve(3 * n_triangles());
   for (const auto& [first, f] : order) {
-    FaceSlots& s = face_slots_[f];
+    SlotRange& s = face_slots_[f];
     const std::uint32_t to = static_cast<std::uint32_t>(packed.size() / 3);
     for (std::uint32_t t = 0; t < s.count; ++t) {
       map.triangles[first + t] = to + t;

@@ -1,3 +1,5 @@
+#include "hedge/render/engine_mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>

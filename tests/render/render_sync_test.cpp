@@ -516,5 +516,78 @@ TEST(RenderSync, TwoConsumersOfOneMeshSyncAtTheirOwnPace) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+// The change log counts each RenderSync's transactions for its consumer: one RenderSync's
+// transaction defers neither another's syncs nor those of code that opens its own on the log, and
+// only the log's subscribers wait for every transaction to close.
+TEST(RenderSync, ATransactionBelongsToTheRenderSyncThatOpenedIt) {
+  SurfaceMesh m = with_uv_seams(6);
+  ChangeLog& log = m.changes();
+  int heard = 0;
+  log.subscribe(ChangeEvent::all, [&](ChangeEvent) { ++heard; });
+  auto flip_one = [&] {
+    for (Edge e : m.edges())
+      if (can_flip(m, e)) return flip(m, e).is_valid();
+    return false;
+  };
+  RenderSync a(m), b(m);
+  Mirror ma, mb;
+  ma.apply(a, a.last_result());
+  mb.apply(b, b.last_result());
+
+  a.begin();
+  a.begin();
+  EXPECT_TRUE(a.in_transaction());
+  EXPECT_FALSE(b.in_transaction());
+  EXPECT_TRUE(log.in_transaction());
+  ASSERT_TRUE(flip_one());
+  EXPECT_TRUE(a.sync().empty());
+  const SyncResult& rb = b.sync();  // b syncs inside a's transaction
+  EXPECT_FALSE(rb.empty());
+  mb.apply(b, rb);
+  EXPECT_TRUE(b.commit().empty());  // b has none open, and a's stays open
+  EXPECT_TRUE(a.in_transaction());
+  EXPECT_EQ(heard, 0);
+  EXPECT_TRUE(a.commit().empty());  // inner
+  EXPECT_EQ(heard, 0);
+  const SyncResult& ra = a.commit();
+  EXPECT_FALSE(ra.empty());
+  ma.apply(a, ra);
+  EXPECT_FALSE(a.in_transaction());
+  EXPECT_FALSE(log.in_transaction());
+  EXPECT_EQ(heard, 1);
+
+  // A transaction opened on the log itself is nobody's: a syncs, and a's commit does not close it.
+  log.begin();
+  EXPECT_FALSE(a.in_transaction());
+  ASSERT_TRUE(flip_one());
+  const SyncResult& r = a.sync();
+  EXPECT_FALSE(r.empty());
+  ma.apply(a, r);
+  EXPECT_TRUE(a.commit().empty());
+  EXPECT_TRUE(log.in_transaction());
+  EXPECT_EQ(heard, 1);
+  EXPECT_TRUE(log.commit());
+  EXPECT_EQ(heard, 2);
+
+  // A RenderSync destroyed inside its transactions closes them.
+  {
+    RenderSync c(m);
+    c.begin();
+    c.begin();
+    ASSERT_TRUE(flip_one());
+    EXPECT_EQ(heard, 2);
+  }
+  EXPECT_FALSE(log.in_transaction());
+  EXPECT_EQ(heard, 3);
+
+  mb.apply(b, b.sync());
+  ma.apply(a, a.sync());
+  ma.expect_equal(a);
+  mb.expect_equal(b);
+  expect_matches_fresh(a);
+  expect_matches_fresh(b);
+  EXPECT_TRUE(m.validate().empty());
+}
+
 }  // namespace
 }  // namespace hedge

@@ -99,6 +99,15 @@ class ChangeLog {
   //! Ends a transaction; the outermost one notifies. Returns true if that was the outermost.
   bool commit();
   bool in_transaction() const { return transaction_depth_ > 0; }
+  //! Opens a transaction on behalf of consumer `id`: an ordinary one, also counted for `id`, so
+  //! that the consumer can defer its own reads until it closes it while other consumers read as
+  //! usual. detach(id) closes the ones still open. Opens nothing for an unknown id. O(consumers).
+  void begin(ConsumerId id);
+  //! Closes one transaction opened by begin(id), as commit() does. Returns true if that was the
+  //! outermost of `id`'s; false, closing nothing, if `id` has none open. O(consumers).
+  bool commit(ConsumerId id);
+  //! True while a transaction opened by begin(id) is open. O(consumers).
+  bool in_transaction(ConsumerId id) const;
 
   // ---- Consumers. ----
   ConsumerId attach();
@@ -118,6 +127,7 @@ class ChangeLog {
     std::size_t vertex_cursor = 0, face_cursor = 0;
     ChangeEvent events = ChangeEvent::none;
     bool reset = false;
+    int transactions = 0;  // opened by begin(id), not yet committed
   };
   struct Subscriber {
     SubscriptionId id;

@@ -10,7 +10,11 @@
 //  - Incremental updates. Operations mark what they touch in the mesh's change log
 //    (core/changes.h); sync() rewrites only the slots of touched faces and vertices and returns the
 //    rewritten ranges, sorted and merged, for a partial GPU upload.
-//  - Transactions. begin() ... edits ... commit() syncs once at the end.
+//  - Transactions. begin() ... edits ... commit() syncs once at the end. A transaction belongs to
+//    the RenderSync that opened it; the mesh's change log counts it for this RenderSync's consumer
+//    (ChangeLog::begin(id)). So another RenderSync of the same mesh, or code that calls
+//    mesh.changes().begin() itself, does not defer this one's syncs, while every open transaction
+//    defers the notifications of the log's subscribers until it closes.
 //
 // The RenderSync refers to the mesh it was made for: the mesh must outlive it and stay at the same
 // address.
@@ -24,17 +28,9 @@
 
 #include "hedge/core/build.h"
 #include "hedge/core/surface_mesh.h"
+#include "hedge/render/color.h"
 
 namespace hedge {
-
-//! RGBA colour, as engines store vertex colours in float.
-struct Color {
-  float r = 1, g = 1, b = 1, a = 1;
-  friend bool operator==(const Color&, const Color&) = default;
-  // Blending, so that colours are interpolated on split edges and faces like other attributes.
-  friend Color operator+(const Color& x, const Color& y) { return {x.r + y.r, x.g + y.g, x.b + y.b, x.a + y.a}; }
-  friend Color operator*(const Color& x, float s) { return {x.r * s, x.g * s, x.b * s, x.a * s}; }
-};
 
 enum class NormalSource {
   none,      //!< no normal stream
@@ -103,6 +99,8 @@ class RenderSync {
  public:
   //! Builds the buffers (a full export) and starts following `mesh`'s change log.
   explicit RenderSync(SurfaceMesh& mesh, const RenderOptions& options = {});
+  //! Stops following the mesh's change log and closes the transactions this RenderSync left open
+  //! (closing the last open one notifies the log's subscribers).
   ~RenderSync();
   RenderSync(const RenderSync&) = delete;
   RenderSync& operator=(const RenderSync&) = delete;
@@ -159,9 +157,11 @@ class RenderSync {
   const SyncResult& last_result() const { return result_; }
   //! Opens a transaction: changes are gathered, and notifications wait (transactions nest).
   void begin();
-  //! Closes the transaction opened by begin(); the outermost commit syncs once.
+  //! Closes the transaction opened by begin(); the outermost commit syncs once. Without an open
+  //! transaction of this RenderSync it does nothing and returns an empty result.
   const SyncResult& commit();
-  bool in_transaction() const { return transaction_depth_ > 0; }
+  //! True between begin() and the matching outermost commit(). O(consumers of the mesh).
+  bool in_transaction() const { return mesh_->changes().in_transaction(consumer_); }
   //! Rebuilds every buffer from scratch, a full export. Slots restart in
   //! face order, so it also compacts.
   const SyncResult& rebuild();
@@ -170,10 +170,6 @@ class RenderSync {
   RenderRemap compact();
 
  private:
-  struct FaceSlots {
-    std::uint32_t first = 0;  // first triangle slot
-    std::uint32_t count = 0;  // triangles
-  };
   std::span<const float> stream(int i) const;
   bool stream_present(int s) const;
   //! Floats per vertex held in streams_[s]: the whole vertex in stream 0 when interleaved, 0 for a
@@ -208,7 +204,6 @@ class RenderSync {
   RenderOptions options_;
   VertexLayout layout_;
   ChangeLog::ConsumerId consumer_ = 0;
-  int transaction_depth_ = 0;
   bool building_ = false;  // a full build reports whole buffers, not written slots
 
   // Attribute sources, resolved against the mesh's properties.
@@ -237,7 +232,7 @@ class RenderSync {
 
   // Index buffer.
   std::vector<std::uint32_t> indices_;
-  std::vector<FaceSlots> face_slots_;
+  std::vector<SlotRange> face_slots_;  // face -> its triangle slots
   std::vector<std::vector<std::uint32_t>> free_triangles_;  // by triangle count: first slots
   std::size_t free_triangle_slots_ = 0;
   std::size_t index_capacity_ = 0;
@@ -255,37 +250,5 @@ class RenderSync {
   std::vector<SlotRange> written_indices_;
   SyncResult result_;
 };
-
-// ---- Engine meshes: one attribute set per vertex, seams as duplicated vertices. ----
-
-//! An engine's mesh arrays (a Unity Mesh, a glTF primitive): n vertices, triangle indices.
-//! Optional streams are empty or hold one entry per vertex.
-struct EngineMeshView {
-  std::span<const Vec3> positions;
-  std::span<const std::uint32_t> indices;  //!< 3 per triangle
-  std::span<const Vec3> normals;
-  std::span<const Vec2> texcoords;
-  std::span<const Color> colors;
-};
-
-struct EngineImportOptions {
-  //! How positions are welded into one topological vertex; attributes stay per corner, so seams
-  //! survive any welding.
-  Weld weld = Weld::exact;
-  double weld_epsilon = 1e-6;
-  TopologyPolicy policy = TopologyPolicy::repair;
-  //! The winding of the engine's triangles (Unity: cw).
-  Winding winding = Winding::ccw;
-  //! Negate x of positions and normals (Unity's left-handed axes).
-  bool flip_x = false;
-};
-
-//! Builds a SurfaceMesh from engine arrays, welding positions for topology and keeping normals,
-//! texcoords and colours per corner ("h:normal", "h:texcoord", "h:color"), so that a RenderSync
-//! with the same winding and axes reproduces the engine's triangles and attributes exactly.
-//! \throw InvalidInputError on mismatched stream sizes, indices out of range or non-finite values;
-//!        TopologyError under the strict policy.
-SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptions& options = {},
-                             BuildReport* report = nullptr);
 
 }  // namespace hedge

@@ -1,0 +1,46 @@
+// Engine meshes: one attribute set per vertex, seams as duplicated vertices. from_engine_mesh()
+// turns such arrays into a SurfaceMesh whose attributes live on the corners, the inverse of what
+// RenderSync (render/render_sync.h) writes.
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "hedge/core/build.h"
+#include "hedge/core/surface_mesh.h"
+#include "hedge/core/vec.h"
+#include "hedge/render/color.h"
+
+namespace hedge {
+
+//! An engine's mesh arrays (a Unity Mesh, a glTF primitive): n vertices, triangle indices.
+//! Optional streams are empty or hold one entry per vertex.
+struct EngineMeshView {
+  std::span<const Vec3> positions;
+  std::span<const std::uint32_t> indices;  //!< 3 per triangle
+  std::span<const Vec3> normals;
+  std::span<const Vec2> texcoords;
+  std::span<const Color> colors;
+};
+
+struct EngineImportOptions {
+  //! How positions are welded into one topological vertex; attributes stay per corner, so seams
+  //! survive any welding.
+  Weld weld = Weld::exact;
+  double weld_epsilon = 1e-6;
+  TopologyPolicy policy = TopologyPolicy::repair;
+  //! The winding of the engine's triangles (Unity: cw).
+  Winding winding = Winding::ccw;
+  //! Negate x of positions and normals (Unity's left-handed axes).
+  bool flip_x = false;
+};
+
+//! Builds a SurfaceMesh from engine arrays, welding positions for topology and keeping normals,
+//! texcoords and colours per corner ("h:normal", "h:texcoord", "h:color"), so that a RenderSync
+//! with the same winding and axes reproduces the engine's triangles and attributes exactly.
+//! \throw InvalidInputError on mismatched stream sizes, indices out of range or non-finite values;
+//!        TopologyError under the strict policy.
+SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptions& options = {},
+                             BuildReport* report = nullptr);
+
+}  // namespace hedge
