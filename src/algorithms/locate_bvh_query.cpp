@@ -17,10 +17,24 @@ using namespace locate_detail;
 
 namespace {
 
-// Subtrees inserted by update() stay mergeable up to this many entries: the last one inserted
-// (rebuilt in place) and the others (copied, leaving as many tombstones).
+// update() policy, for k faces in one call. Removed and replaced entries are tombstoned in their
+// leaves, O(1) each. The k new entries get a subtree, built in O(k log k) and placed by one descent
+// from the root that, at each node, either stops or goes down to the child whose box grows least
+// (surface area):
+//  - reaching a subtree made by an earlier update() (a young one), the new entries are merged into
+//    it and it is rebuilt: in place for the latest one while it holds up to kMergeLimit faces, by
+//    copying (which leaves tombstones) for an older one of up to kCopyMergeLimit faces; a larger one
+//    is descended into;
+//  - otherwise, at a leaf or where stopping is cheaper, the new subtree is hung next to the node.
+// So repeated edits in one spot refine one small subtree instead of stacking levels. Boxes and
+// heights on the path are then refit. One call costs O(m log m + height), m <= k + kMergeLimit.
+// The whole tree is rebuilt when the tombstoned slots (removed and replaced faces, and copies left
+// by merges) exceed rebuild_fraction of all slots, or the height exceeds kHeightFactor times its
+// height after the last build plus kHeightSlack (both in the header's contract of update()).
 constexpr Index kMergeLimit = 128;
 constexpr Index kCopyMergeLimit = 32;
+constexpr unsigned kHeightFactor = 2;
+constexpr unsigned kHeightSlack = 16;
 
 double box_distance_sq(const float* lo, const float* hi, const Vec3d& p) {
   double d = 0;
@@ -234,7 +248,7 @@ void FaceBvh::update(std::span<const Face> changed_or_added, std::span<const Fac
     rebuild();
     return;
   }
-  if (!nodes_.empty() && height_[0] > 2 * height_at_build_ + 16) {
+  if (!nodes_.empty() && height_[0] > kHeightFactor * height_at_build_ + kHeightSlack) {
     rebuild();
     return;
   }
