@@ -100,6 +100,19 @@ ChangeLog::ConsumerId ChangeLog::attach() {
   return c.id;
 }
 
+ChangeLog::ConsumerId ChangeLog::attach_copy(ConsumerId other) {
+  const ConsumerId id = attach();
+  for (const Consumer& c : consumers_) {
+    if (c.id != other) continue;
+    // attach() started a generation, so marks from now on reach the copy like the original.
+    Consumer& copy = consumers_.back();
+    copy = c;
+    copy.id = id;
+    break;
+  }
+  return id;
+}
+
 void ChangeLog::detach(ConsumerId id) {
   // Nobody could close the transactions of a consumer that is gone; they end here.
   int open = 0;

@@ -134,6 +134,54 @@ TEST(ChangeLog, ConsumersStayWithTheMeshObjectAcrossCopiesAndAssignments) {
   EXPECT_TRUE(moved.validate().empty());
 }
 
+TEST(ChangeLog, AttachCopyStartsWithTheUnreadChangesOfAnother) {
+  ChangeLog log;
+  const auto a = log.attach();
+  log.mark(Vertex(1), ChangeEvent::vertices_moved);
+  log.mark(Face(2), ChangeEvent::faces_added);
+  const auto b = log.attach_copy(a);
+  const auto pb = log.pending(b);
+  EXPECT_TRUE(contains(pb.vertices, Vertex(1)));
+  EXPECT_TRUE(contains(pb.faces, Face(2)));
+  EXPECT_EQ(pb.events, ChangeEvent::vertices_moved | ChangeEvent::faces_added);
+  // From then on each reads on its own, and later marks reach both.
+  log.consume(a);
+  EXPECT_TRUE(log.pending(a).empty());
+  EXPECT_TRUE(contains(log.pending(b).faces, Face(2)));
+  log.mark(Face(2), ChangeEvent::faces_changed);
+  EXPECT_TRUE(contains(log.pending(a).faces, Face(2)));
+  log.consume(b);
+  const auto c = log.attach_copy(a);
+  log.mark(Vertex(4), ChangeEvent::vertices_moved);
+  for (auto id : {a, b, c}) EXPECT_TRUE(contains(log.pending(id).vertices, Vertex(4)));
+  log.mark_reset();
+  EXPECT_TRUE(log.pending(log.attach_copy(c)).reset);
+  const auto plain = log.attach_copy(999);  // not attached: a plain attach
+  EXPECT_TRUE(log.pending(plain).empty());
+}
+
+// A reader holding a const mesh watches its changes without a mutable mesh.
+TEST(ChangeLog, AConstMeshLendsItsConsumerSide) {
+  SurfaceMesh m = build(test::grid(2, true));
+  const SurfaceMesh& reader = m;
+  const ChangeWatch watch = reader.watch_changes();
+  const auto id = watch.attach();
+  EXPECT_TRUE(m.changes().active());
+  Vec3 centre{0, 0, 0};
+  for (Vertex v : m.vertices(Face(0))) centre += m.position(v) / 3.f;
+  ASSERT_TRUE(split_face(m, Face(0), centre).is_valid());
+  EXPECT_TRUE(contains(watch.pending(id).faces, Face(0)));
+  EXPECT_TRUE(any(watch.pending(id).events & ChangeEvent::faces_added));
+  const auto copy = watch.attach_copy(id);
+  watch.consume(id);
+  EXPECT_TRUE(watch.pending(id).empty());
+  EXPECT_TRUE(contains(watch.pending(copy).faces, Face(0)));
+  watch.detach(id);
+  watch.detach(copy);
+  EXPECT_FALSE(m.changes().active());
+  EXPECT_TRUE(m.validate().empty());
+}
+
 // The operations mark what they touch.
 TEST(ChangeLog, OperationsMarkTheFacesTheyTouch) {
   SurfaceMesh m = build(test::grid(4, true));

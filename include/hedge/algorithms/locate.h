@@ -155,20 +155,12 @@ class FaceBvh {
   //!   as removed; duplicates are allowed.
   //! \param removed faces deleted from the mesh (or no longer to be found). Unknown faces are ignored.
   //!
-  //! Policy, for k faces in one call. Removed and replaced entries are tombstoned in their leaves,
-  //! O(1) each; their boxes shrink at the next refit() or build. The k new entries get a subtree,
-  //! built in O(k log k) and placed by one descent from the root that, at each node, either stops
-  //! or goes down to the child whose box grows least (surface area):
-  //!  - reaching a subtree made by an earlier update(), the new entries are merged into it and it is
-  //!    rebuilt: in place for the latest one while it holds up to 128 faces, by copying (which
-  //!    leaves tombstones) for an older one of up to 32 faces; a larger one is descended into;
-  //!  - otherwise, at a leaf or where stopping is cheaper, the new subtree is hung next to the node.
-  //! So repeated edits in one spot refine one small subtree instead of stacking levels. Boxes and
-  //! heights on the path are then refit. One call costs O(m log m + height), m <= k + 128.
-  //! The whole tree is rebuilt, O(n log n), when the tombstoned slots (removed and replaced faces,
-  //! and copies left by merges) exceed options.rebuild_fraction of all slots, or the height exceeds
-  //! twice its height after the last build plus 16: amortised, a few microseconds per changed face
-  //! (see bench/locate). Batch the faces of many local operations into one call where you can.
+  //! Removed and replaced entries are tombstoned (their boxes shrink at the next refit() or build);
+  //! the new ones go into a small subtree placed near where they belong, so repeated edits in one
+  //! spot stay cheap. Cost, for k faces: O(k log k + height), plus a rebuild of the whole tree,
+  //! O(n log n), when the tombstoned slots exceed options.rebuild_fraction of all slots or the height
+  //! exceeds 2 * stats().height_at_build + 16: amortised, a few microseconds per changed face (see
+  //! bench/locate). Batch the faces of many local operations into one call where you can.
   //! \pre Faces not listed kept their corners and positions; moved vertices need refit() (or their
   //!   faces listed here). The mesh has not been garbage-collected since build().
   //! \throw InvalidInputError for a handle that is not a face slot of the mesh.

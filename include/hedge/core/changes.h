@@ -112,6 +112,9 @@ class ChangeLog {
   // ---- Consumers. ----
   ConsumerId attach();
   void detach(ConsumerId id);
+  //! Attaches a consumer that starts with what `other` has not read yet: a copy of a consumer.
+  //! A plain attach() if `other` is not attached.
+  ConsumerId attach_copy(ConsumerId other);
   Pending pending(ConsumerId id) const;
   //! Marks everything pending for `id` as read.
   void consume(ConsumerId id);
@@ -151,6 +154,24 @@ class ChangeLog {
   std::uint32_t next_id_ = 1;
   ChangeEvent unnotified_ = ChangeEvent::none;
   int transaction_depth_ = 0;
+};
+
+//! The consumer side of a ChangeLog, which a mesh lends when const (SurfaceMesh::watch_changes()):
+//! attaching, reading and consuming change what the log keeps for a consumer, never the mesh, so a
+//! reader holding a const mesh (FaceBvh) may watch it. Marking needs the mutable log,
+//! SurfaceMesh::changes(). Like the log, it is not thread-safe: attach, detach and consume need the
+//! log to themselves, as edits do; pending() may run alongside other pending() calls.
+class ChangeWatch {
+ public:
+  explicit ChangeWatch(ChangeLog& log) : log_(&log) {}
+  ChangeLog::ConsumerId attach() const { return log_->attach(); }
+  ChangeLog::ConsumerId attach_copy(ChangeLog::ConsumerId other) const { return log_->attach_copy(other); }
+  void detach(ChangeLog::ConsumerId id) const { log_->detach(id); }
+  ChangeLog::Pending pending(ChangeLog::ConsumerId id) const { return log_->pending(id); }
+  void consume(ChangeLog::ConsumerId id) const { log_->consume(id); }
+
+ private:
+  ChangeLog* log_;
 };
 
 }  // namespace hedge

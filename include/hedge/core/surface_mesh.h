@@ -146,6 +146,9 @@ class SurfaceMesh {
   // positions through position() or properties directly marks with mark_changed(). ----
   ChangeLog& changes() { return changes_; }
   const ChangeLog& changes() const { return changes_; }
+  //! The consumer side of the change log, for readers that hold a const mesh (FaceBvh): watching a
+  //! mesh does not change it. See ChangeWatch.
+  ChangeWatch watch_changes() const { return ChangeWatch(changes_); }
   //! v's position or another of its properties changed.
   void mark_changed(Vertex v, ChangeEvent events = ChangeEvent::vertices_moved) { changes_.mark(v, events); }
   //! f's corners, corner properties or face properties changed.
@@ -347,7 +350,8 @@ class SurfaceMesh {
 
   PropertyContainer vprops_, hprops_, eprops_, fprops_;
   VertexProperty<Vec3> positions_;
-  ChangeLog changes_;
+  // mutable for watch_changes(): consumers attach to, read and consume the log of a const mesh.
+  mutable ChangeLog changes_;
 };
 
 // The element appends: room for the kind first (room_for_*: one check, and one doubling of all its
