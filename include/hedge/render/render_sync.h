@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "hedge/core/build.h"
+#include "hedge/core/export.h"
 #include "hedge/core/surface_mesh.h"
 
 namespace hedge {
