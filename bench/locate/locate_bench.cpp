@@ -24,6 +24,7 @@
 
 #include "hedge/algorithms/locate.h"
 #include "hedge/core/build.h"
+#include "hedge/core/export.h"
 #include "hedge/core/operations.h"
 #include "hedge/io/io.h"
 #include "indexed_subdivide.h"

@@ -16,6 +16,7 @@
 
 #include "hedge/c_api.h"
 #include "hedge/core/build.h"
+#include "hedge/core/export.h"
 #include "hedge/core/surface_mesh.h"
 #include "hedge/error.h"
 #include "hedge/render/render_sync.h"

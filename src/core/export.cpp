@@ -1,8 +1,9 @@
 // to_indexed(): SurfaceMesh -> index buffers, with optional triangulation and winding flip.
 #include <algorithm>
+#include <string>
 #include <unordered_map>
 
-#include "hedge/core/build.h"
+#include "hedge/core/export.h"
 #include "hedge/core/triangulate.h"
 
 namespace hedge {

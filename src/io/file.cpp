@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "hedge/core/export.h"
 #include "hedge/io/io.h"
 #include "parse_util.h"
 

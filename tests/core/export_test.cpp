@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "hedge/core/build.h"
+#include "hedge/core/export.h"
 #include "test_meshes.h"
 
 namespace hedge {

@@ -1,4 +1,4 @@
-// Building a SurfaceMesh from index buffers, and exporting one back to them.
+// Building a SurfaceMesh from index buffers (exporting one back to them: core/export.h).
 #pragma once
 
 #include <cstdint>
@@ -76,25 +76,5 @@ SurfaceMesh build_triangles(std::span<const Vec3> positions, std::span<const std
 //! positions in first-seen order. O(n) expected.
 std::vector<Index> weld_positions(std::span<const Vec3> positions, Weld mode, double relative_epsilon,
                                   std::vector<Vec3>& unique);
-
-enum class Winding { ccw, cw };
-enum class Triangulation {
-  none,  //!< polygons as they are
-  fan,   //!< fan from each face's first corner
-  ear,   //!< ear clipping in the face's best-fit plane (robust on concave faces)
-};
-
-struct ExportOptions {
-  Triangulation triangulation = Triangulation::none;
-  //! cw reverses every face: Unity and Direct3D conventions.
-  Winding winding = Winding::ccw;
-  //! Write "h:texcoord" / "h:normal" corner properties into the attribute pools when present.
-  bool corner_attributes = true;
-};
-
-//! Exports live faces to an indexed mesh. Vertex order follows the mesh, deleted vertices skipped.
-//! \param vertex_map if given, receives mesh vertex -> output vertex (kInvalidIndex for deleted).
-IndexedMesh to_indexed(const SurfaceMesh& mesh, const ExportOptions& options = {},
-                       std::vector<Index>* vertex_map = nullptr);
 
 }  // namespace hedge

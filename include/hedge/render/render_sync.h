@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "hedge/core/build.h"
+#include "hedge/core/export.h"
 #include "hedge/core/surface_mesh.h"
 #include "hedge/render/color.h"
 
