@@ -7,6 +7,7 @@
 #include <span>
 
 #include "hedge/core/build.h"
+#include "hedge/core/export.h"
 #include "hedge/core/surface_mesh.h"
 #include "hedge/core/vec.h"
 #include "hedge/render/color.h"
