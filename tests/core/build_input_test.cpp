@@ -36,6 +36,30 @@ TEST(Build, BadIndicesAndCoordinatesAreInputErrors) {
   EXPECT_THROW(build(in), InvalidInputError);
 }
 
+TEST(Build, CornerAttributeIndicesAreInputErrors) {
+  IndexedMesh in = tetrahedron();
+  in.texcoords = {{0, 0}, {1, 0}};
+  in.texcoord_indices.assign(in.indices.size() - 1, 0);  // one index short
+  EXPECT_THROW(build(in), InvalidInputError);
+  in.texcoord_indices.assign(in.indices.size(), 0);
+  in.texcoord_indices[5] = 2;  // past the end of the pool
+  try {
+    build(in);
+    FAIL() << "expected InvalidInputError";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("corner 5 refers to texcoord 2"), std::string::npos) << e.what();
+  }
+  in.texcoord_indices[5] = 1;
+  in.normals = {{0, 0, 1}};
+  in.normal_indices.assign(in.indices.size(), 1);
+  EXPECT_THROW(build(in, repair()), InvalidInputError);  // not a topology defect to repair
+  in.normal_indices.assign(in.indices.size(), 0);
+  SurfaceMesh m = build(in);
+  EXPECT_TRUE(m.get_halfedge_property<Vec2>("h:texcoord"));
+  EXPECT_TRUE(m.get_halfedge_property<Vec3>("h:normal"));
+  EXPECT_TRUE(m.validate().empty());
+}
+
 TEST(Build, RepairDropsOnlyDegenerateFaces) {
   IndexedMesh in = test::grid(2, false);
   in.indices.insert(in.indices.end(), {0, 1, 0});           // repeated vertex: dropped

@@ -30,6 +30,53 @@ IndexedMesh hourglass() {
   return m;
 }
 
+TEST(Build, LinksFacesFromFirstCornerAndBoundaryLoops) {
+  // A 3 x 3 grid without its middle quad: an outer boundary loop of 12 edges and a hole of 4. The
+  // triangle and polygon inputs take different linking loops.
+  for (bool tri : {true, false}) {
+    IndexedMesh in = test::grid(3, tri);
+    const std::ptrdiff_t per_quad = tri ? 6 : 4;
+    in.indices.erase(in.indices.begin() + 4 * per_quad, in.indices.begin() + 5 * per_quad);
+    if (!tri) in.face_sizes.pop_back();
+    const std::size_t n = tri ? 3 : 4;
+    SurfaceMesh m = build(in);
+    ASSERT_EQ(m.n_faces(), in.face_count());
+    // Each face starts at its first input corner and runs through the others in input order.
+    for (Face f : m.faces()) {
+      std::vector<Index> corners;
+      for (Halfedge h : m.halfedges(f)) {
+        EXPECT_EQ(m.face(h), f);
+        corners.push_back(m.to_vertex(h).idx());
+      }
+      const auto first = in.indices.begin() + static_cast<std::ptrdiff_t>(n * f.idx());
+      EXPECT_EQ(corners, std::vector<Index>(first, first + static_cast<std::ptrdiff_t>(n)));
+    }
+    // Boundary loops: each boundary half-edge is followed by the one leaving its target, which is
+    // also that vertex's half-edge.
+    std::vector<std::size_t> lengths;
+    std::vector<Index> hole;
+    for (Halfedge start : m.boundary_loops()) {
+      std::vector<Index> loop;
+      Halfedge h = start;
+      do {
+        EXPECT_TRUE(m.is_boundary(h));
+        EXPECT_EQ(m.halfedge(m.to_vertex(h)), m.next(h));
+        loop.push_back(m.to_vertex(h).idx());
+        h = m.next(h);
+      } while (h != start && loop.size() <= m.n_halfedges());
+      lengths.push_back(loop.size());
+      if (loop.size() == 4) hole = loop;
+    }
+    std::sort(lengths.begin(), lengths.end());
+    EXPECT_EQ(lengths, (std::vector<std::size_t>{4, 12}));
+    // The hole is traversed as the missing quad 5 6 10 9 was.
+    ASSERT_EQ(hole.size(), 4u);
+    std::rotate(hole.begin(), std::find(hole.begin(), hole.end(), Index(5)), hole.end());
+    EXPECT_EQ(hole, (std::vector<Index>{5, 6, 10, 9}));
+    EXPECT_TRUE(m.validate().empty());
+  }
+}
+
 TEST(Build, PolygonsAndIsolatedVertices) {
   IndexedMesh in = test::cube();
   in.positions.push_back({5, 5, 5});
