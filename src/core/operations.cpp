@@ -784,6 +784,16 @@ bool remove_vertex(SurfaceMesh& m, Vertex v) {
   return true;
 }
 
+void remove_faces(SurfaceMesh& m, std::span<const Face> faces_in) {
+  std::vector<Face> faces;
+  for (Face f : faces_in)
+    if (m.is_live(f)) faces.push_back(f);
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  remove_faces_impl(m, faces);
+  m.changes().notify();
+}
+
 // ---------------------------------------------------------------------------------------------
 std::vector<Face> fill_hole(SurfaceMesh& m, Halfedge h) {
   if (!m.is_live(h) || !m.is_boundary(h)) return {};
@@ -878,8 +888,7 @@ SurfaceMesh detach_faces(SurfaceMesh& m, std::span<const Face> faces_in, std::ve
       out.edge_properties().copy_element_from(m.edge_properties(), Mesh::edge(src).idx(), Mesh::edge(h).idx());
     }
   }
-  remove_faces_impl(m, faces);
-  m.changes().notify();
+  remove_faces(m, faces);
   if (vertex_origin) *vertex_origin = std::move(origin);
   return out;
 }

@@ -419,6 +419,81 @@ TEST(AddRemoveFace, RefusesNonManifoldResults) {
   EXPECT_TRUE(g.validate().empty());
 }
 
+TEST(RemoveFaces, SplitsTheVertexItLeavesPinched) {
+  SurfaceMesh m = textured_grid(3, false);
+  // Quads 0 and 4 (the centre) share vertex 5 only: without them, quads 1 and 3 meet at 5 alone.
+  const Vertex pinched(5);
+  const Vec3 at = m.position(pinched);
+  int notified = 0;
+  m.changes().subscribe(ChangeEvent::all, [&](ChangeEvent) { ++notified; });
+  std::vector<Face> set = {Face(4), Face(0), Face(4)};  // repeats are ignored
+  remove_faces(m, set);
+  EXPECT_EQ(notified, 1);
+  EXPECT_TRUE(m.is_deleted(Face(0)));
+  EXPECT_TRUE(m.is_deleted(Face(4)));
+  EXPECT_TRUE(m.is_deleted(Vertex(0)));  // the grid's corner had no other face
+  EXPECT_EQ(counts(m).f, 7);
+  EXPECT_EQ(counts(m).e, 22);  // the corner's two edges go; the centre's edges keep a face
+  EXPECT_EQ(counts(m).v, 16);  // one vertex gone, one copy of the pinched vertex
+  EXPECT_EQ(counts(m).chi(), 1);
+  EXPECT_EQ(m.boundary_loops().size(), 1u);
+  auto w = m.get_vertex_property<float>("v:weight");
+  std::size_t at_pinch = 0;
+  for (Vertex v : m.vertices()) {
+    EXPECT_TRUE(m.is_manifold(v));
+    if (m.position(v) == at) {
+      ++at_pinch;
+      EXPECT_EQ(w[v], at.x);
+      EXPECT_FALSE(m.is_isolated(v));
+    }
+  }
+  EXPECT_EQ(at_pinch, 2u);
+  expect_corner_uv_matches_position(m);
+  EXPECT_TRUE(m.validate().empty());
+  m.garbage_collection();
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RemoveFaces, OneRemovableFaceAsRemoveFace) {
+  for (IndexedMesh in : {test::tetrahedron(), test::grid(3, false), test::grid(3, true)}) {
+    const SurfaceMesh source = build(in);
+    for (Face f : source.faces()) {
+      if (!can_remove_face(source, f)) continue;
+      SurfaceMesh a = source, b = source;
+      ASSERT_TRUE(remove_face(a, f));
+      const Face one[1] = {f};
+      remove_faces(b, one);
+      EXPECT_TRUE(snapshot(b) == snapshot(a)) << "face " << f.idx();
+      EXPECT_TRUE(b.validate().empty());
+    }
+  }
+}
+
+TEST(RemoveFaces, DeadOrNoFacesChangeNothing) {
+  SurfaceMesh m = textured_grid(2, true);
+  ASSERT_TRUE(remove_face(m, Face(0)));
+  const Snapshot s = snapshot(m);
+  int notified = 0;
+  m.changes().subscribe(ChangeEvent::all, [&](ChangeEvent) { ++notified; });
+  remove_faces(m, {});
+  const Face dead[3] = {Face(0), Face(9999), Face()};
+  remove_faces(m, dead);
+  EXPECT_TRUE(snapshot(m) == s);
+  EXPECT_EQ(notified, 0);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RemoveFaces, EveryFaceLeavesAnEmptyMesh) {
+  SurfaceMesh m = build(test::tetrahedron());
+  std::vector<Face> all;
+  for (Face f : m.faces()) all.push_back(f);
+  remove_faces(m, all);
+  EXPECT_EQ(m.n_faces(), 0u);
+  EXPECT_EQ(m.n_edges(), 0u);
+  EXPECT_EQ(m.n_vertices(), 0u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
 TEST(RemoveVertex, InteriorVertexLeavesAHoleThatFillHoleCloses) {
   SurfaceMesh m = build(test::grid(4, true));
   Counts before = counts(m);

@@ -91,6 +91,13 @@ bool can_remove_vertex(const SurfaceMesh& mesh, Vertex v);
 //! Removes v, its faces, and what they leave unused. \return false if refused.
 bool remove_vertex(SurfaceMesh& mesh, Vertex v);
 
+//! Removes the live faces among `faces` (deleted, invalid and repeated handles are ignored); edges
+//! left with no face are removed, and so are vertices left with no edge. Never refused: unlike
+//! remove_face(), it splits a vertex that the removal leaves pinched (two or more fans meeting at
+//! it alone), giving each fan but the first a copy of the vertex with its properties, so the mesh
+//! stays manifold. O(n log n + the one-rings of their corners) for n faces.
+void remove_faces(SurfaceMesh& mesh, std::span<const Face> faces);
+
 //! Fills the boundary loop of boundary half-edge h with triangles, choosing each time the shortest
 //! diagonal that does not exist yet; a loop that cannot be triangulated that way keeps one
 //! polygon for its rest. \return the new faces, empty if h is not a live boundary half-edge.
