@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <random>
 
+#include "hedge/algorithms/fill_hole.h"
 #include "hedge/core/operations.h"
 
 namespace hedge {

@@ -98,12 +98,6 @@ bool remove_vertex(SurfaceMesh& mesh, Vertex v);
 //! stays manifold. O(n log n + the one-rings of their corners) for n faces.
 void remove_faces(SurfaceMesh& mesh, std::span<const Face> faces);
 
-//! Fills the boundary loop of boundary half-edge h with triangles, choosing each time the shortest
-//! diagonal that does not exist yet; a loop that cannot be triangulated that way keeps one
-//! polygon for its rest. \return the new faces, empty if h is not a live boundary half-edge.
-//! O(loop length^2).
-std::vector<Face> fill_hole(SurfaceMesh& mesh, Halfedge h);
-
 //! Copies `faces` out as a new SurfaceMesh with all their properties, and removes them from
 //! `mesh`. Vertices of `mesh` that the removal leaves pinched (two fans) are split, so both
 //! meshes stay manifold. `vertex_origin`, if given, receives new-mesh vertex -> source vertex.
