@@ -636,17 +636,6 @@ Vec3 face_centroid(const SurfaceMesh& m, Face f) {
   return n ? to_float(c / double(n)) : Vec3{};
 }
 
-std::vector<Vertex> split_all_faces(SurfaceMesh& m) {
-  std::vector<Face> faces;
-  for (Face f : m.faces()) faces.push_back(f);
-  std::vector<Vertex> out;
-  out.reserve(faces.size());
-  m.changes().begin();  // one notification for the whole pass
-  for (Face f : faces) out.push_back(split_face(m, f, face_centroid(m, f)));
-  m.changes().commit();
-  return out;
-}
-
 // ---------------------------------------------------------------------------------------------
 namespace {
 struct AddPlan {

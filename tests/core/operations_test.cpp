@@ -325,15 +325,6 @@ TEST(CutFace, AlongADiagonal) {
   EXPECT_FALSE(can_cut_face(m, m.prev(n), m.next(n)));
 }
 
-TEST(SplitFace, SplitAllFacesTriplesTriangles) {
-  SurfaceMesh m = build(test::tetrahedron());
-  auto added = split_all_faces(m);
-  EXPECT_EQ(added.size(), 4u);
-  EXPECT_EQ(m.n_faces(), 12u);
-  EXPECT_EQ(counts(m).chi(), 2);
-  EXPECT_TRUE(m.validate().empty());
-}
-
 TEST(AddRemoveFace, RemoveThenAddRestores) {
   SurfaceMesh m = build(test::tetrahedron());
   std::vector<Vertex> corners;

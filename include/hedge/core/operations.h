@@ -64,9 +64,6 @@ Halfedge cut_face(SurfaceMesh& mesh, Halfedge h0, Halfedge h1);
 //! The mean of f's corner positions (accumulated in double). O(face degree).
 Vec3 face_centroid(const SurfaceMesh& mesh, Face f);
 
-//! Splits every live face at its centroid. \return the new vertices. O(n).
-std::vector<Vertex> split_all_faces(SurfaceMesh& mesh);
-
 //! True if a face with these corners can be added while every vertex and edge stays manifold:
 //! at least 3 distinct live vertices; each existing edge free on the new face's side; each
 //! non-isolated vertex on a boundary, with the new face entering its boundary gap. O(n valence).
