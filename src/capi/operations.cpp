@@ -1,5 +1,6 @@
 // The C ABI: local operations (hedge/core/operations.h) and garbage collection.
 // Every edit checks its handles, its out parameters and its predicate before it changes anything.
+#include "hedge/algorithms/detach_faces.h"
 #include "hedge/algorithms/fill_hole.h"
 #include "hedge/algorithms/split_all_faces.h"
 #include "hedge/core/operations.h"

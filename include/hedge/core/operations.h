@@ -14,7 +14,6 @@
 #pragma once
 
 #include <span>
-#include <vector>
 
 #include "hedge/core/surface_mesh.h"
 
@@ -94,11 +93,5 @@ bool remove_vertex(SurfaceMesh& mesh, Vertex v);
 //! it alone), giving each fan but the first a copy of the vertex with its properties, so the mesh
 //! stays manifold. O(n log n + the one-rings of their corners) for n faces.
 void remove_faces(SurfaceMesh& mesh, std::span<const Face> faces);
-
-//! Copies `faces` out as a new SurfaceMesh with all their properties, and removes them from
-//! `mesh`. Vertices of `mesh` that the removal leaves pinched (two fans) are split, so both
-//! meshes stay manifold. `vertex_origin`, if given, receives new-mesh vertex -> source vertex.
-//! Deleted or repeated faces are ignored. O(size of the set + its one-ring).
-SurfaceMesh detach_faces(SurfaceMesh& mesh, std::span<const Face> faces, std::vector<Vertex>* vertex_origin = nullptr);
 
 }  // namespace hedge
