@@ -7,14 +7,18 @@
 
 namespace hedge {
 
+bool can_fill_hole(const SurfaceMesh& m, Halfedge h) {
+  if (!m.is_live(h) || !m.is_boundary(h)) return false;
+  std::size_t n = 0;
+  for ([[maybe_unused]] Halfedge g : m.loop(h))
+    if (++n > m.halfedge_slots()) return false;  // a damaged loop, which would never end
+  return n >= 3;
+}
+
 std::vector<Face> fill_hole(SurfaceMesh& m, Halfedge h) {
-  if (!m.is_live(h) || !m.is_boundary(h)) return {};
+  if (!can_fill_hole(m, h)) return {};
   std::vector<Halfedge> loop;
-  for (Halfedge g : m.loop(h)) {
-    loop.push_back(g);
-    if (loop.size() > m.halfedge_slots()) return {};  // a damaged loop
-  }
-  if (loop.size() < 3) return {};
+  for (Halfedge g : m.loop(h)) loop.push_back(g);
   m.changes().begin();  // one notification for the whole fill
   const Face f = m.new_face();
   m.mark_changed(f, ChangeEvent::faces_added);
