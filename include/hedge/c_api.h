@@ -292,7 +292,8 @@ HEDGE_API hedge_status hedge_face_halfedges(const hedge_mesh* mesh, uint32_t fac
                                             uint32_t capacity, uint32_t* out_count);
 
 /* ============================================================================================ */
-/* Local operations (hedge/core/operations.h)                                                   */
+/* Local operations (hedge/core/operations.h) and the edits of whole regions beside them        */
+/* (hedge/algorithms/: fill_hole.h, split_all_faces.h, detach_faces.h)                          */
 /* ============================================================================================ */
 /* Each edit has a predicate hedge_can_*(..., int32_t* out_ok). An edit its predicate refuses
  * returns HEDGE_ERROR_REFUSED and leaves the mesh exactly as it was. Deleted elements are left in

@@ -1,5 +1,9 @@
-// The C ABI: local operations (hedge/core/operations.h) and garbage collection.
+// The C ABI: local operations (hedge/core/operations.h), the edits of whole regions beside them
+// (hedge/algorithms/: fill_hole, split_all_faces, detach_faces) and garbage collection.
 // Every edit checks its handles, its out parameters and its predicate before it changes anything.
+#include "hedge/algorithms/detach_faces.h"
+#include "hedge/algorithms/fill_hole.h"
+#include "hedge/algorithms/split_all_faces.h"
 #include "hedge/core/operations.h"
 
 #include <unordered_set>
@@ -16,14 +20,6 @@ namespace {
 }
 
 std::string name(const char* kind, std::uint32_t i) { return std::string(kind) + " " + std::to_string(i); }
-
-//! Length of the boundary loop through h, or 0 for a damaged loop.
-std::size_t loop_length(const SurfaceMesh& m, Halfedge h) {
-  std::size_t n = 0;
-  for ([[maybe_unused]] Halfedge g : m.loop(h))
-    if (++n > m.halfedge_slots()) return 0;
-  return n;
-}
 
 }  // namespace
 
@@ -199,12 +195,8 @@ hedge_status hedge_remove_vertex(hedge_mesh* mesh, uint32_t vertex) {
 }
 
 hedge_status hedge_can_fill_hole(const hedge_mesh* mesh, uint32_t halfedge, int32_t* out_ok) {
-  return guard([&] {
-    auto object = find_mesh(mesh);
-    const SurfaceMesh& m = object->mesh;
-    const Halfedge h = live_halfedge(m, halfedge);
-    need(out_ok, "out_ok") = m.is_boundary(h) && loop_length(m, h) >= 3 ? 1 : 0;
-  });
+  return element_query<Halfedge>(mesh, halfedge, out_ok, "out_ok",
+                                 [](const SurfaceMesh& m, Halfedge x) { return can_fill_hole(m, x) ? 1 : 0; });
 }
 
 hedge_status hedge_fill_hole(hedge_mesh* mesh, uint32_t halfedge, uint32_t* buffer, uint32_t capacity,
@@ -214,16 +206,17 @@ hedge_status hedge_fill_hole(hedge_mesh* mesh, uint32_t halfedge, uint32_t* buff
     SurfaceMesh& m = object->mesh;
     const Halfedge h = live_halfedge(m, halfedge);
     need(out_count, "out_count");
-    const std::string what = "fill_hole of " + name("halfedge", halfedge);
-    if (!m.is_boundary(h)) refused(what + " (not a boundary half-edge)");
-    const std::size_t length = loop_length(m, h);
-    if (length < 3) refused(what + " (a loop of fewer than 3 edges)");
+    // The predicate comes first: the buffer check below walks the loop, which the predicate has
+    // found sound, and a refusal takes precedence over a small buffer.
+    if (!can_fill_hole(m, h))
+      refused("fill_hole of " + name("halfedge", halfedge) + " (not on a boundary loop of 3 edges or more)");
     if (buffer != nullptr) {
+      std::size_t length = 0;
+      for ([[maybe_unused]] Halfedge g : m.loop(h)) ++length;
       *out_count = to_u32(length - 2, "face count");
       check_capacity(length - 2, buffer, capacity);
     }
     const std::vector<Face> faces = fill_hole(m, h);
-    if (faces.empty()) refused(what);
     if (buffer != nullptr)
       for (std::size_t i = 0; i < faces.size(); ++i) buffer[i] = faces[i].idx();
     *out_count = to_u32(faces.size(), "face count");

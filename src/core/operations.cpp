@@ -5,7 +5,6 @@
 #include <array>
 #include <cmath>
 
-#include "hedge/core/build.h"
 #include "hedge/core/small_vector.h"
 
 namespace hedge {
@@ -636,17 +635,6 @@ Vec3 face_centroid(const SurfaceMesh& m, Face f) {
   return n ? to_float(c / double(n)) : Vec3{};
 }
 
-std::vector<Vertex> split_all_faces(SurfaceMesh& m) {
-  std::vector<Face> faces;
-  for (Face f : m.faces()) faces.push_back(f);
-  std::vector<Vertex> out;
-  out.reserve(faces.size());
-  m.changes().begin();  // one notification for the whole pass
-  for (Face f : faces) out.push_back(split_face(m, f, face_centroid(m, f)));
-  m.changes().commit();
-  return out;
-}
-
 // ---------------------------------------------------------------------------------------------
 namespace {
 struct AddPlan {
@@ -784,104 +772,14 @@ bool remove_vertex(SurfaceMesh& m, Vertex v) {
   return true;
 }
 
-// ---------------------------------------------------------------------------------------------
-std::vector<Face> fill_hole(SurfaceMesh& m, Halfedge h) {
-  if (!m.is_live(h) || !m.is_boundary(h)) return {};
-  std::vector<Halfedge> loop;
-  for (Halfedge g : m.loop(h)) {
-    loop.push_back(g);
-    if (loop.size() > m.halfedge_slots()) return {};  // a damaged loop
-  }
-  if (loop.size() < 3) return {};
-  m.changes().begin();  // one notification for the whole fill
-  const Face f = m.new_face();
-  m.mark_changed(f, ChangeEvent::faces_added);
-  for (Halfedge g : loop) m.set_face(g, f);
-  m.set_halfedge(f, h);
-  for (Halfedge g : loop) m.adjust_outgoing_halfedge(m.to_vertex(g));
-  std::vector<Face> faces{f};
-  Face rest = f;
-  while (m.valence(rest) > 3) {
-    Halfedge best0, best1;
-    double best = HUGE_VAL;
-    for (Halfedge h0 : m.halfedges(rest)) {
-      const Halfedge h1 = m.next(m.next(h0));
-      if (!can_cut_face(m, h0, h1)) continue;
-      const Vec3d d = to_double(m.position(m.to_vertex(h0))) - to_double(m.position(m.to_vertex(h1)));
-      const double len = dot(d, d);
-      if (len < best) {
-        best = len;
-        best0 = h0;
-        best1 = h1;
-      }
-    }
-    if (!best0.is_valid()) break;
-    const Halfedge n = cut_face(m, best0, best1);
-    rest = m.face(n);
-    faces.push_back(rest);
-  }
-  m.changes().commit();
-  return faces;
-}
-
-// ---------------------------------------------------------------------------------------------
-SurfaceMesh detach_faces(SurfaceMesh& m, std::span<const Face> faces_in, std::vector<Vertex>* vertex_origin) {
+void remove_faces(SurfaceMesh& m, std::span<const Face> faces_in) {
   std::vector<Face> faces;
   for (Face f : faces_in)
     if (m.is_live(f)) faces.push_back(f);
   std::sort(faces.begin(), faces.end());
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-
-  // The set as an indexed mesh over its own vertices.
-  std::vector<Vertex> verts;
-  for (Face f : faces)
-    for (Vertex v : m.vertices(f)) verts.push_back(v);
-  std::sort(verts.begin(), verts.end());
-  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-  auto local = [&](Vertex v) {
-    return static_cast<Index>(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin());
-  };
-  IndexedMesh part;
-  for (Vertex v : verts) part.positions.push_back(m.position(v));
-  std::vector<Halfedge> corner_src;
-  for (Face f : faces) {
-    std::size_t n = 0;
-    for (Halfedge h : m.halfedges(f)) {
-      part.indices.push_back(local(m.to_vertex(h)));
-      corner_src.push_back(h);
-      ++n;
-    }
-    part.face_sizes.push_back(static_cast<Index>(n));
-  }
-  BuildOptions opt;
-  opt.policy = TopologyPolicy::repair;  // faces of the set may touch at a vertex only
-  BuildReport rep;
-  SurfaceMesh out = build(part, opt, &rep);
-
-  // Every property comes along.
-  out.vertex_properties().add_missing_from(m.vertex_properties());
-  out.halfedge_properties().add_missing_from(m.halfedge_properties());
-  out.edge_properties().add_missing_from(m.edge_properties());
-  out.face_properties().add_missing_from(m.face_properties());
-  std::vector<Vertex> origin(out.vertex_slots());
-  for (Vertex v : out.vertices()) {
-    origin[v.idx()] = verts[rep.vertex_origin[v.idx()]];
-    out.vertex_properties().copy_element_from(m.vertex_properties(), origin[v.idx()].idx(), v.idx());
-  }
-  std::size_t c = 0;
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    const Face nf(rep.face_map[i]);
-    out.face_properties().copy_element_from(m.face_properties(), faces[i].idx(), nf.idx());
-    for (Halfedge h : out.halfedges(nf)) {
-      const Halfedge src = corner_src[c++];
-      out.halfedge_properties().copy_element_from(m.halfedge_properties(), src.idx(), h.idx());
-      out.edge_properties().copy_element_from(m.edge_properties(), Mesh::edge(src).idx(), Mesh::edge(h).idx());
-    }
-  }
   remove_faces_impl(m, faces);
   m.changes().notify();
-  if (vertex_origin) *vertex_origin = std::move(origin);
-  return out;
 }
 
 }  // namespace hedge

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "hedge/algorithms/split_all_faces.h"
 #include "hedge/core/build.h"
 #include "hedge/core/operations.h"
 #include "test_meshes.h"

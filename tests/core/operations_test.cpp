@@ -4,75 +4,19 @@
 
 #include <algorithm>
 
+#include "edit_checks.h"
 #include "hedge/core/build.h"
 #include "test_meshes.h"
 
 namespace hedge {
 namespace {
 
-struct Counts {
-  long long v, e, f;
-  long long chi() const { return v - e + f; }
-};
-Counts counts(const SurfaceMesh& m) {
-  return {static_cast<long long>(m.n_vertices()), static_cast<long long>(m.n_edges()),
-          static_cast<long long>(m.n_faces())};
-}
-
-// Everything observable about a mesh: connectivity, deletion state, positions and a test property.
-struct Snapshot {
-  std::vector<Vertex> hv;
-  std::vector<Halfedge> hn;
-  std::vector<Face> hf;
-  std::vector<Halfedge> vh, fh;
-  std::vector<bool> vdel, edel, fdel;
-  std::vector<Vec3> pos;
-  std::vector<Vec2> uv;
-  std::vector<float> weight;
-  bool operator==(const Snapshot&) const = default;
-};
-Snapshot snapshot(const SurfaceMesh& m) {
-  Snapshot s;
-  s.hv = m.halfedge_vertex_array();
-  s.hn = m.halfedge_next_array();
-  s.hf = m.halfedge_face_array();
-  for (Index i = 0; i < m.vertex_slots(); ++i) {
-    s.vh.push_back(m.halfedge(Vertex(i)));
-    s.vdel.push_back(m.is_deleted(Vertex(i)));
-    s.pos.push_back(m.position(Vertex(i)));
-  }
-  for (Index i = 0; i < m.face_slots(); ++i) {
-    s.fh.push_back(m.halfedge(Face(i)));
-    s.fdel.push_back(m.is_deleted(Face(i)));
-  }
-  for (Index i = 0; i < m.edge_slots(); ++i) s.edel.push_back(m.is_deleted(Edge(i)));
-  if (auto uv = m.get_halfedge_property<Vec2>("h:texcoord")) s.uv = uv.vector();
-  if (auto w = m.get_vertex_property<float>("v:weight")) s.weight = w.vector();
-  return s;
-}
-
-// A grid whose corners carry their xy position as texcoord, and vertices a weight = x.
-SurfaceMesh textured_grid(int n, bool tri) {
-  IndexedMesh in = test::grid(n, tri);
-  for (Index i : in.indices) {
-    in.texcoord_indices.push_back(static_cast<Index>(in.texcoords.size()));
-    in.texcoords.push_back({in.positions[i].x, in.positions[i].y});
-  }
-  SurfaceMesh m = build(in);
-  auto w = m.add_vertex_property<float>("v:weight");
-  for (Vertex v : m.vertices()) w[v] = m.position(v).x;
-  return m;
-}
-
-void expect_corner_uv_matches_position(const SurfaceMesh& m) {
-  auto uv = m.get_halfedge_property<Vec2>("h:texcoord");
-  for (Face f : m.faces())
-    for (Halfedge h : m.halfedges(f)) {
-      const Vec3 p = m.position(m.to_vertex(h));
-      EXPECT_NEAR(uv[h].x, p.x, 1e-5f);
-      EXPECT_NEAR(uv[h].y, p.y, 1e-5f);
-    }
-}
+using test::Counts;
+using test::counts;
+using test::expect_corner_uv_matches_position;
+using test::Snapshot;
+using test::snapshot;
+using test::textured_grid;
 
 TEST(SplitEdge, InteriorEdgeSplitsBothTriangles) {
   SurfaceMesh m = textured_grid(2, true);
@@ -381,15 +325,6 @@ TEST(CutFace, AlongADiagonal) {
   EXPECT_FALSE(can_cut_face(m, m.prev(n), m.next(n)));
 }
 
-TEST(SplitFace, SplitAllFacesTriplesTriangles) {
-  SurfaceMesh m = build(test::tetrahedron());
-  auto added = split_all_faces(m);
-  EXPECT_EQ(added.size(), 4u);
-  EXPECT_EQ(m.n_faces(), 12u);
-  EXPECT_EQ(counts(m).chi(), 2);
-  EXPECT_TRUE(m.validate().empty());
-}
-
 TEST(AddRemoveFace, RemoveThenAddRestores) {
   SurfaceMesh m = build(test::tetrahedron());
   std::vector<Vertex> corners;
@@ -475,62 +410,78 @@ TEST(AddRemoveFace, RefusesNonManifoldResults) {
   EXPECT_TRUE(g.validate().empty());
 }
 
-TEST(RemoveVertex, InteriorVertexLeavesAHoleThatFillHoleCloses) {
-  SurfaceMesh m = build(test::grid(4, true));
-  Counts before = counts(m);
-  Vertex v(12);  // the centre
-  std::size_t ring = m.valence(v);
-  Halfedge outer = m.next(m.halfedge(v));
-  ASSERT_TRUE(remove_vertex(m, v));
-  EXPECT_TRUE(m.is_deleted(v));
-  EXPECT_EQ(m.boundary_loops().size(), 2u);
-  EXPECT_EQ(counts(m).f, before.f - static_cast<long long>(ring));
-  EXPECT_TRUE(m.validate().empty());
-  auto faces = fill_hole(m, outer);
-  EXPECT_EQ(faces.size(), ring - 2);
-  EXPECT_EQ(m.boundary_loops().size(), 1u);
-  EXPECT_EQ(counts(m).chi(), before.chi() - 1 + 1);
-  EXPECT_TRUE(m.is_triangle_mesh());
-  EXPECT_TRUE(m.validate().empty());
-}
-
-TEST(FillHole, OuterLoopOfAGridMakesASphere) {
-  SurfaceMesh m = build(test::grid(3, false));
-  auto loops = m.boundary_loops();
-  ASSERT_EQ(loops.size(), 1u);
-  auto faces = fill_hole(m, loops[0]);
-  EXPECT_FALSE(faces.empty());
-  EXPECT_TRUE(m.boundary_loops().empty());
-  EXPECT_EQ(counts(m).chi(), 2);
-  EXPECT_TRUE(m.validate().empty());
-  EXPECT_TRUE(fill_hole(m, m.halfedge(Face(0))).empty());  // not a boundary half-edge
-}
-
-TEST(DetachFaces, CopiesPropertiesAndSplitsPinchedVertices) {
+TEST(RemoveFaces, SplitsTheVertexItLeavesPinched) {
   SurfaceMesh m = textured_grid(3, false);
-  auto label = m.add_face_property<int>("f:label", 0);
-  for (Face f : m.faces()) label[f] = static_cast<int>(f.idx()) + 100;
-  // Faces 0 and 4 touch at one vertex (5): the piece has two fans there.
-  std::vector<Face> set = {Face(0), Face(4)};
-  std::vector<Vertex> origin;
-  SurfaceMesh piece = detach_faces(m, set, &origin);
-  EXPECT_EQ(piece.n_faces(), 2u);
-  EXPECT_EQ(piece.n_vertices(), 8u);  // vertex 5 split in two
-  EXPECT_TRUE(piece.validate().empty());
-  auto plabel = piece.get_face_property<int>("f:label");
-  ASSERT_TRUE(plabel);
-  EXPECT_EQ(plabel[Face(0)], 100);
-  EXPECT_EQ(plabel[Face(1)], 104);
-  expect_corner_uv_matches_position(piece);
-  for (Vertex v : piece.vertices()) EXPECT_EQ(piece.position(v), m.position(origin[v.idx()]));
-  auto w = piece.get_vertex_property<float>("v:weight");
-  for (Vertex v : piece.vertices()) EXPECT_EQ(w[v], m.position(origin[v.idx()]).x);
-  // The source lost both faces; vertex 5 is pinched there too (faces 1, 3 remain on one side,
-  // and the removal leaves two gaps), so it is split.
-  EXPECT_EQ(m.n_faces(), 7u);
+  // Quads 0 and 4 (the centre) share vertex 5 only: without them, quads 1 and 3 meet at 5 alone.
+  const Vertex pinched(5);
+  const Vec3 at = m.position(pinched);
+  int notified = 0;
+  m.changes().subscribe(ChangeEvent::all, [&](ChangeEvent) { ++notified; });
+  std::vector<Face> set = {Face(4), Face(0), Face(4)};  // repeats are ignored
+  remove_faces(m, set);
+  EXPECT_EQ(notified, 1);
+  EXPECT_TRUE(m.is_deleted(Face(0)));
+  EXPECT_TRUE(m.is_deleted(Face(4)));
+  EXPECT_TRUE(m.is_deleted(Vertex(0)));  // the grid's corner had no other face
+  EXPECT_EQ(counts(m).f, 7);
+  EXPECT_EQ(counts(m).e, 22);  // the corner's two edges go; the centre's edges keep a face
+  EXPECT_EQ(counts(m).v, 16);  // one vertex gone, one copy of the pinched vertex
+  EXPECT_EQ(counts(m).chi(), 1);
+  EXPECT_EQ(m.boundary_loops().size(), 1u);
+  auto w = m.get_vertex_property<float>("v:weight");
+  std::size_t at_pinch = 0;
+  for (Vertex v : m.vertices()) {
+    EXPECT_TRUE(m.is_manifold(v));
+    if (m.position(v) == at) {
+      ++at_pinch;
+      EXPECT_EQ(w[v], at.x);
+      EXPECT_FALSE(m.is_isolated(v));
+    }
+  }
+  EXPECT_EQ(at_pinch, 2u);
+  expect_corner_uv_matches_position(m);
   EXPECT_TRUE(m.validate().empty());
-  for (Vertex v : m.vertices()) EXPECT_TRUE(m.is_manifold(v));
   m.garbage_collection();
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RemoveFaces, OneRemovableFaceAsRemoveFace) {
+  for (IndexedMesh in : {test::tetrahedron(), test::grid(3, false), test::grid(3, true)}) {
+    const SurfaceMesh source = build(in);
+    for (Face f : source.faces()) {
+      if (!can_remove_face(source, f)) continue;
+      SurfaceMesh a = source, b = source;
+      ASSERT_TRUE(remove_face(a, f));
+      const Face one[1] = {f};
+      remove_faces(b, one);
+      EXPECT_TRUE(snapshot(b) == snapshot(a)) << "face " << f.idx();
+      EXPECT_TRUE(b.validate().empty());
+    }
+  }
+}
+
+TEST(RemoveFaces, DeadOrNoFacesChangeNothing) {
+  SurfaceMesh m = textured_grid(2, true);
+  ASSERT_TRUE(remove_face(m, Face(0)));
+  const Snapshot s = snapshot(m);
+  int notified = 0;
+  m.changes().subscribe(ChangeEvent::all, [&](ChangeEvent) { ++notified; });
+  remove_faces(m, {});
+  const Face dead[3] = {Face(0), Face(9999), Face()};
+  remove_faces(m, dead);
+  EXPECT_TRUE(snapshot(m) == s);
+  EXPECT_EQ(notified, 0);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RemoveFaces, EveryFaceLeavesAnEmptyMesh) {
+  SurfaceMesh m = build(test::tetrahedron());
+  std::vector<Face> all;
+  for (Face f : m.faces()) all.push_back(f);
+  remove_faces(m, all);
+  EXPECT_EQ(m.n_faces(), 0u);
+  EXPECT_EQ(m.n_edges(), 0u);
+  EXPECT_EQ(m.n_vertices(), 0u);
   EXPECT_TRUE(m.validate().empty());
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "hedge/algorithms/fill_hole.h"
 #include "hedge/core/operations.h"
 
 namespace hedge {

@@ -14,7 +14,6 @@
 #pragma once
 
 #include <span>
-#include <vector>
 
 #include "hedge/core/surface_mesh.h"
 
@@ -64,9 +63,6 @@ Halfedge cut_face(SurfaceMesh& mesh, Halfedge h0, Halfedge h1);
 //! The mean of f's corner positions (accumulated in double). O(face degree).
 Vec3 face_centroid(const SurfaceMesh& mesh, Face f);
 
-//! Splits every live face at its centroid. \return the new vertices. O(n).
-std::vector<Vertex> split_all_faces(SurfaceMesh& mesh);
-
 //! True if a face with these corners can be added while every vertex and edge stays manifold:
 //! at least 3 distinct live vertices; each existing edge free on the new face's side; each
 //! non-isolated vertex on a boundary, with the new face entering its boundary gap. O(n valence).
@@ -91,16 +87,11 @@ bool can_remove_vertex(const SurfaceMesh& mesh, Vertex v);
 //! Removes v, its faces, and what they leave unused. \return false if refused.
 bool remove_vertex(SurfaceMesh& mesh, Vertex v);
 
-//! Fills the boundary loop of boundary half-edge h with triangles, choosing each time the shortest
-//! diagonal that does not exist yet; a loop that cannot be triangulated that way keeps one
-//! polygon for its rest. \return the new faces, empty if h is not a live boundary half-edge.
-//! O(loop length^2).
-std::vector<Face> fill_hole(SurfaceMesh& mesh, Halfedge h);
-
-//! Copies `faces` out as a new SurfaceMesh with all their properties, and removes them from
-//! `mesh`. Vertices of `mesh` that the removal leaves pinched (two fans) are split, so both
-//! meshes stay manifold. `vertex_origin`, if given, receives new-mesh vertex -> source vertex.
-//! Deleted or repeated faces are ignored. O(size of the set + its one-ring).
-SurfaceMesh detach_faces(SurfaceMesh& mesh, std::span<const Face> faces, std::vector<Vertex>* vertex_origin = nullptr);
+//! Removes the live faces among `faces` (deleted, invalid and repeated handles are ignored); edges
+//! left with no face are removed, and so are vertices left with no edge. Never refused: unlike
+//! remove_face(), it splits a vertex that the removal leaves pinched (two or more fans meeting at
+//! it alone), giving each fan but the first a copy of the vertex with its properties, so the mesh
+//! stays manifold. O(n log n + the one-rings of their corners) for n faces.
+void remove_faces(SurfaceMesh& mesh, std::span<const Face> faces);
 
 }  // namespace hedge
