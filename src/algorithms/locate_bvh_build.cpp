@@ -218,6 +218,8 @@ void FaceBvh::build(const SurfaceMesh& mesh, const BvhOptions& options) {
                             std::to_string(options.max_leaf_size));
   if (!(options.rebuild_fraction > 0 && options.rebuild_fraction <= 1))
     throw InvalidInputError("FaceBvh: rebuild_fraction must be in (0, 1]");
+  if (mesh_ != &mesh || !changes_.attached()) changes_ = ChangeConsumer(mesh.watch_changes());
+  changes_.consume();  // the new tree holds every edit so far
   mesh_ = &mesh;
   options_ = options;
   nodes_.clear();
@@ -232,7 +234,6 @@ void FaceBvh::build(const SurfaceMesh& mesh, const BvhOptions& options) {
   orphan_nodes_ = 0;
   tail_root_ = kInvalidIndex;
   ++builds_;
-  remember_sizes();
   if (live_ > 0) {
     nodes_.reserve(live_ + 1);  // enough for leaves of two faces on average; trimmed below
     nodes_.resize(1);
@@ -249,10 +250,6 @@ void FaceBvh::rebuild() {
   if (mesh_) build(*mesh_, options_);
 }
 
-void FaceBvh::remember_sizes() {
-  sizes_ = {mesh_->vertex_slots(), mesh_->halfedge_slots(), mesh_->face_slots()};
-}
-
 void FaceBvh::update_slack() {
   // Absolute slack for distances near zero, where the double triangle code's error is absolute
   // (about 1e-16 of the squared extent); this is far larger and still negligible.
@@ -266,11 +263,10 @@ void FaceBvh::update_slack() {
 }
 
 void FaceBvh::check_fresh() const {
-  if (mesh_->vertex_slots() < sizes_[0] || mesh_->halfedge_slots() < sizes_[1] ||
-      mesh_->face_slots() < sizes_[2])
+  if (changes_.reset_pending())
     throw InvalidInputError(
-        "FaceBvh: the mesh has fewer elements than when the tree was built (garbage_collection?); "
-        "build the tree again");
+        "FaceBvh: the mesh was renumbered (garbage_collection() or assignment) since the tree was "
+        "built; call update() or rebuild() first");
 }
 
 }  // namespace hedge

@@ -237,7 +237,6 @@ void FaceBvh::update(std::span<const Face> changed_or_added, std::span<const Fac
     entries_.push_back(make_entry(f));
     ++live_;
   }
-  remember_sizes();
   const Index count = static_cast<Index>(entries_.size()) - first;
   if (double(dead_) > options_.rebuild_fraction * double(entries_.size())) {
     rebuild();
@@ -253,6 +252,40 @@ void FaceBvh::update(std::span<const Face> changed_or_added, std::span<const Fac
     return;
   }
   update_slack();
+}
+
+void FaceBvh::update() {
+  if (!mesh_) return;
+  const ChangeLog::Pending pending = changes_.pending();
+  if (pending.reset) {
+    rebuild();  // consumes
+    return;
+  }
+  if (pending.empty()) return;
+  const SurfaceMesh& m = *mesh_;
+  // Copied: a rebuild inside update(faces) consumes the log, which the spans point into.
+  std::vector<Face> changed(pending.faces.begin(), pending.faces.end());
+  // Moved vertices: their faces are re-inserted, unless so many are affected that refitting the
+  // whole tree is cheaper (a smoothing pass, say).
+  bool refit_all = false;
+  std::size_t budget = live_ / 8;
+  for (Vertex v : pending.vertices) {
+    if (!m.is_live(v) || m.is_isolated(v)) continue;
+    for (Face f : m.faces(v)) {
+      if (!f.is_valid()) continue;
+      if (budget == 0) {
+        refit_all = true;
+        break;
+      }
+      --budget;
+      changed.push_back(f);
+    }
+    if (refit_all) break;
+  }
+  const std::size_t builds = builds_;
+  update(changed, {});
+  if (refit_all && builds_ == builds) refit();  // a rebuild has read the current positions already
+  changes_.consume();
 }
 
 // ---- Queries. ----

@@ -143,6 +143,12 @@ ChangeLog::Pending ChangeLog::pending(ConsumerId id) const {
   return p;
 }
 
+bool ChangeLog::reset_pending(ConsumerId id) const {
+  for (const Consumer& c : consumers_)
+    if (c.id == id) return c.reset;
+  return false;
+}
+
 void ChangeLog::consume(ConsumerId id) {
   for (Consumer& c : consumers_) {
     if (c.id != id) continue;

@@ -17,6 +17,7 @@
 #include "hedge/core/operations.h"
 #include "hedge/error.h"
 #include "locate_reference.h"
+#include "support/random_edits.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -533,8 +534,137 @@ TEST(FaceBvh, UpdateRejectsForeignHandlesAndGarbageCollectionNeedsABuild) {
   m.garbage_collection();
   EXPECT_THROW(bvh.closest_point({0, 0, 0}), InvalidInputError);
   EXPECT_THROW(bvh.refit(), InvalidInputError);
+  EXPECT_THROW(bvh.update(std::vector<Face>{Face(0)}), InvalidInputError);
   bvh.build(m);
   expect_matches_brute_force(m, bvh, 73, 600);
+  ASSERT_TRUE(m.validate().empty());
+}
+
+// ---- FaceBvh as a consumer of the mesh's change log. ----
+
+// Every operation of the random-edit driver, then update() with no arguments: the tree finds the
+// touched faces in the change log, and answers as the brute force does.
+TEST(FaceBvh, UpdateFromTheChangeLogFollowsRandomEdits) {
+  SurfaceMesh m = load("spot_triangulated.obj");
+  FaceBvh bvh(m);
+  EXPECT_TRUE(bvh.up_to_date());
+  RandomEditor editor(m, 97);
+  std::size_t applied = 0;
+  for (int round = 0; round < 12; ++round) {
+    for (int i = 0; i < 40; ++i) applied += editor.step().applied;
+    EXPECT_FALSE(bvh.up_to_date());
+    bvh.update();
+    EXPECT_TRUE(bvh.up_to_date());
+    EXPECT_EQ(bvh.stats().live_faces, m.n_faces());
+    if (round % 4 == 3) expect_matches_brute_force(m, bvh, 101 + round, 400);
+  }
+  EXPECT_GT(applied, 300u);
+  ASSERT_TRUE(m.validate().empty()) << m.validate().front();
+}
+
+// One operation at a time, so that a face missing from the log shows up at once.
+TEST(FaceBvh, UpdateFromTheChangeLogAfterEachOperation) {
+  SurfaceMesh m = load("anchor.off");
+  FaceBvh bvh(m);
+  RandomEditor editor(m, 5);
+  for (int i = 0; i < 150; ++i) {
+    const RandomEditor::Step step = editor.step();
+    bvh.update();
+    EXPECT_EQ(bvh.stats().live_faces, m.n_faces()) << "after " << edit_name(step.kind);
+    if (step.applied && i % 10 == 0) expect_matches_brute_force(m, bvh, 200 + i, 60);
+  }
+  expect_matches_brute_force(m, bvh, 7, 600);
+  ASSERT_TRUE(m.validate().empty());
+}
+
+TEST(FaceBvh, UpdateFromTheChangeLogSeesMovedVertices) {
+  SurfaceMesh m = load("anchor.off");
+  FaceBvh bvh(m);
+  // A few vertices: their faces are re-inserted.
+  for (Index i = 0; i < 5; ++i) m.set_position(Vertex(i * 7), m.position(Vertex(i * 7)) + Vec3{0.2f, 0.3f, -0.1f});
+  const std::size_t builds = bvh.stats().builds;
+  bvh.update();
+  EXPECT_GT(bvh.stats().dead_slots, 0u);
+  expect_matches_brute_force(m, bvh, 31, 600);
+  // Every vertex, as a smoothing pass would: the tree is refitted rather than re-inserted.
+  for (Vertex v : m.vertices()) m.set_position(v, m.position(v) * 1.5f + Vec3{1, 0, 0});
+  bvh.update();
+  EXPECT_EQ(bvh.stats().builds, builds);
+  expect_matches_brute_force(m, bvh, 37, 600);
+  ASSERT_TRUE(m.validate().empty());
+}
+
+// A collection renumbers; edits after it may grow the mesh past its old size again, so only the
+// change log's reset tells the tree that its indices are stale.
+TEST(FaceBvh, GarbageCollectionIsSeenEvenAfterTheMeshGrewBack) {
+  SurfaceMesh m = load("anchor.off");
+  FaceBvh bvh(m);
+  const std::size_t slots[3] = {m.vertex_slots(), m.halfedge_slots(), m.face_slots()};
+  ASSERT_TRUE(remove_face(m, Face(3)));
+  m.garbage_collection();  // renumbers
+  EXPECT_THROW(bvh.update(std::vector<Face>{}, std::vector<Face>{}), InvalidInputError);
+  for (Face f = Face(0); m.face_slots() <= slots[2] || m.vertex_slots() <= slots[0]; f = Face(f.idx() + 1))
+    ASSERT_TRUE(split_face(m, f, centroid(m, f)).is_valid());
+  ASSERT_GT(m.halfedge_slots(), slots[1]);
+  m.garbage_collection();  // nothing deleted since: the indices stay, nothing to tell
+  EXPECT_FALSE(bvh.up_to_date());
+  EXPECT_THROW(bvh.closest_point({0, 0, 0}), InvalidInputError);
+  EXPECT_THROW(bvh.first_hit({0, 0, 0}, {1, 0, 0}), InvalidInputError);
+  const std::size_t builds = bvh.stats().builds;
+  bvh.update();  // rebuilds
+  EXPECT_EQ(bvh.stats().builds, builds + 1);
+  EXPECT_TRUE(bvh.up_to_date());
+  expect_matches_brute_force(m, bvh, 41, 300);
+  // So is an assignment to the mesh.
+  m = load("spot_triangulated.obj");
+  EXPECT_THROW(bvh.closest_point({0, 0, 0}), InvalidInputError);
+  bvh.update();
+  EXPECT_EQ(bvh.stats().live_faces, m.n_faces());
+  expect_matches_brute_force(m, bvh, 43, 300);
+  // Garbage collection in the middle of the random edits.
+  RandomEditor editor(m, 3);
+  for (int i = 0; i < 200; ++i) {
+    editor.step();
+    if (i % 50 == 49) m.garbage_collection();
+    if (i % 30 == 0) bvh.update();
+  }
+  bvh.update();
+  expect_matches_brute_force(m, bvh, 47, 300);
+  ASSERT_TRUE(m.validate().empty());
+}
+
+TEST(FaceBvh, CopiesFollowTheLogOnTheirOwnAndDetachWhenDestroyed) {
+  SurfaceMesh m = load("anchor.off");
+  EXPECT_FALSE(m.changes().active());
+  {
+    FaceBvh a(m);
+    EXPECT_TRUE(m.changes().active());
+    ASSERT_TRUE(remove_face(m, Face(3)));
+    FaceBvh b = a;  // b starts with what a has not read: the removal
+    EXPECT_FALSE(b.up_to_date());
+    b.update();
+    EXPECT_TRUE(b.up_to_date());
+    EXPECT_FALSE(a.up_to_date());
+    EXPECT_EQ(b.stats().live_faces, m.n_faces());
+    EXPECT_EQ(a.stats().live_faces, m.n_faces() + 1);
+    FaceBvh c = std::move(a);  // c takes a's place in the log
+    EXPECT_FALSE(c.up_to_date());
+    c.update();
+    expect_matches_brute_force(m, c, 53, 300);
+    expect_matches_brute_force(m, b, 59, 300);
+    b = c;
+    EXPECT_TRUE(b.up_to_date());
+  }
+  // Every tree detached: the mesh records nothing any more.
+  EXPECT_FALSE(m.changes().active());
+  ASSERT_TRUE(m.validate().empty());
+}
+
+TEST(FaceBvh, UpdateOnATreeNeverBuiltDoesNothing) {
+  FaceBvh bvh;
+  bvh.update();
+  EXPECT_TRUE(bvh.up_to_date());
+  EXPECT_FALSE(bvh.closest_point({0, 0, 0}));
 }
 
 }  // namespace

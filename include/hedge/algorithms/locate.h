@@ -25,6 +25,7 @@
 #include <span>
 #include <vector>
 
+#include "hedge/core/changes.h"
 #include "hedge/core/handles.h"
 #include "hedge/core/surface_mesh.h"
 #include "hedge/core/vec.h"
@@ -110,14 +111,18 @@ struct BvhOptions {
 //! About 45 bytes per face with the default options (see memory_bytes()).
 //!
 //! Positions are read from the mesh at query time; connectivity is read at build/update time.
-//! \pre The mesh outlives the FaceBvh and does not move (the FaceBvh keeps its address).
+//!
+//! The tree is a consumer of its mesh's change log (core/changes.h): the operations of
+//! core/operations.h and the algorithms mark what they change, and update() with no arguments
+//! takes in exactly that. After garbage_collection() (or an assignment to the mesh), which renumbers
+//! everything, queries, refit() and update(faces) throw InvalidInputError until update() or
+//! rebuild() builds the tree again; they never read through stale indices.
+//! \pre The mesh outlives the FaceBvh and does not move (the FaceBvh keeps its address and is
+//!   attached to its change log).
 //! \pre Every live face has at least 3 corners.
-//! \attention After vertices move, call refit() before querying; after faces are added, removed or
-//!   re-linked (split, collapse, flip), call update() with those faces. garbage_collection() renumbers
-//!   faces and vertices, so after it only build() is valid (queries on a tree whose mesh shrank
-//!   throw InvalidInputError rather than read out of bounds).
-//! Queries are const and touch no shared mutable state: any number may run concurrently.
-//! build(), refit() and update() need exclusive access.
+//! Queries are const and touch no shared mutable state: any number may run concurrently, as long as
+//! nothing edits the mesh meanwhile. build(), refit() and update() need the mesh to themselves, as
+//! edits do (they read and consume the change log).
 class FaceBvh {
  public:
   //! Sizes and bookkeeping, for tests and tuning.
@@ -149,7 +154,21 @@ class FaceBvh {
   //! large (then rebuild()). Boxes stop covering faces tombstoned by update(). O(n).
   void refit();
 
-  //! Takes the faces touched by local operations into account without rebuilding the whole tree.
+  //! Takes every edit since the last build or update() into account, from the mesh's change log:
+  //! faces added, removed or re-linked, and vertices moved (their faces are re-inserted; when more
+  //! than an eighth of the live faces are affected, the whole tree is refitted instead). After a
+  //! reset (garbage_collection()) it rebuilds. Costs as update(faces) below for the faces the log
+  //! names, plus O(valence) per moved vertex; nothing when nothing changed. No-op on an empty
+  //! FaceBvh that was never built.
+  //! Edits made through the mesh's low-level setters count only if they are marked
+  //! (SurfaceMesh::mark_changed; set_position marks itself).
+  void update();
+  //! True if the change log holds nothing this tree has not taken in: no edit since the last build
+  //! or update(). Edits passed to update(faces) are still pending here. O(1).
+  bool up_to_date() const { return changes_.pending().empty(); }
+
+  //! Takes the given faces into account without rebuilding the whole tree, for edits the change
+  //! log did not see (unmarked low-level edits); update() with no arguments finds the faces itself.
   //! \param changed_or_added faces created, or whose corners (connectivity or positions) changed.
   //!   Each one's old entry, if any, is tombstoned and a new one inserted. Deleted faces are treated
   //!   as removed; duplicates are allowed.
@@ -162,8 +181,9 @@ class FaceBvh {
   //! exceeds 2 * stats().height_at_build + 16: amortised, a few microseconds per changed face (see
   //! bench/locate). Batch the faces of many local operations into one call where you can.
   //! \pre Faces not listed kept their corners and positions; moved vertices need refit() (or their
-  //!   faces listed here). The mesh has not been garbage-collected since build().
-  //! \throw InvalidInputError for a handle that is not a face slot of the mesh.
+  //!   faces listed here).
+  //! \throw InvalidInputError for a handle that is not a face slot of the mesh, or after a reset
+  //!   (garbage_collection()) that the tree has not been rebuilt since.
   void update(std::span<const Face> changed_or_added, std::span<const Face> removed = {});
 
   //! The nearest point of the surface to p, with its face. O(log n) expected for a point near the
@@ -231,7 +251,6 @@ class FaceBvh {
   void refit_leaf(Index node);
   void refit_internal(Index node);
   void set_height(Index node);
-  void remember_sizes();
   void update_slack();
   void check_fresh() const;
 
@@ -254,8 +273,8 @@ class FaceBvh {
   Index tail_root_ = kInvalidIndex;
   Index tail_first_entry_ = 0;
   Index tail_first_node_ = 0;
-  //! The mesh's vertex, half-edge and face slot counts at the last build() or update().
-  std::array<std::size_t, 3> sizes_{};
+  //! This tree's place in the mesh's change log.
+  ChangeConsumer changes_;
   unsigned height_at_build_ = 0;
   std::size_t builds_ = 0;
   std::size_t inserted_ = 0;

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "hedge/core/handles.h"
@@ -118,6 +119,9 @@ class ChangeLog {
   Pending pending(ConsumerId id) const;
   //! Marks everything pending for `id` as read.
   void consume(ConsumerId id);
+  //! True if a reset reached `id` since it last consumed: pending(id).reset without the lists.
+  //! False for an unknown id. O(consumers).
+  bool reset_pending(ConsumerId id) const;
 
   // ---- Coarse event subscribers. ----
   //! Calls `fn` with the events of each notify that intersect `mask`.
@@ -160,18 +164,59 @@ class ChangeLog {
 //! attaching, reading and consuming change what the log keeps for a consumer, never the mesh, so a
 //! reader holding a const mesh (FaceBvh) may watch it. Marking needs the mutable log,
 //! SurfaceMesh::changes(). Like the log, it is not thread-safe: attach, detach and consume need the
-//! log to themselves, as edits do; pending() may run alongside other pending() calls.
+//! log to themselves, as edits do; pending() and reset_pending() may run alongside each other.
 class ChangeWatch {
  public:
+  //! Watches nothing; only a watch from a mesh may be used.
+  ChangeWatch() = default;
   explicit ChangeWatch(ChangeLog& log) : log_(&log) {}
+  explicit operator bool() const { return log_ != nullptr; }
   ChangeLog::ConsumerId attach() const { return log_->attach(); }
   ChangeLog::ConsumerId attach_copy(ChangeLog::ConsumerId other) const { return log_->attach_copy(other); }
   void detach(ChangeLog::ConsumerId id) const { log_->detach(id); }
   ChangeLog::Pending pending(ChangeLog::ConsumerId id) const { return log_->pending(id); }
+  bool reset_pending(ChangeLog::ConsumerId id) const { return log_->reset_pending(id); }
   void consume(ChangeLog::ConsumerId id) const { log_->consume(id); }
 
  private:
-  ChangeLog* log_;
+  ChangeLog* log_ = nullptr;
+};
+
+//! One consumer of a mesh's change log, held by value: it attaches when made from a watch and
+//! detaches when destroyed. A copy is attached too and starts with what the original has not read
+//! (ChangeLog::attach_copy); a move hands the attachment over. A default-made one watches nothing:
+//! pending() is empty and reset_pending() false.
+//! \pre The mesh outlives every consumer attached to it.
+class ChangeConsumer {
+ public:
+  ChangeConsumer() = default;
+  explicit ChangeConsumer(ChangeWatch watch) : watch_(watch), id_(watch ? watch.attach() : 0) {}
+  ChangeConsumer(const ChangeConsumer& other)
+      : watch_(other.watch_), id_(other.watch_ ? other.watch_.attach_copy(other.id_) : 0) {}
+  ChangeConsumer(ChangeConsumer&& other) noexcept : watch_(other.watch_), id_(other.id_) {
+    other.watch_ = ChangeWatch();
+    other.id_ = 0;
+  }
+  ChangeConsumer& operator=(ChangeConsumer other) noexcept {
+    std::swap(watch_, other.watch_);
+    std::swap(id_, other.id_);
+    return *this;
+  }
+  ~ChangeConsumer() {
+    if (watch_) watch_.detach(id_);
+  }
+
+  bool attached() const { return static_cast<bool>(watch_); }
+  ChangeLog::ConsumerId id() const { return id_; }
+  ChangeLog::Pending pending() const { return watch_ ? watch_.pending(id_) : ChangeLog::Pending{}; }
+  bool reset_pending() const { return watch_ && watch_.reset_pending(id_); }
+  void consume() const {
+    if (watch_) watch_.consume(id_);
+  }
+
+ private:
+  ChangeWatch watch_;
+  ChangeLog::ConsumerId id_ = 0;
 };
 
 }  // namespace hedge
