@@ -32,7 +32,8 @@ TEST(Build, FastPairingNumbersEdgesAsTheGeneralPath) {
 }
 
 TEST(Build, HighValenceVertex) {
-  // A fan of 200 triangles around one vertex takes the sorted-bucket path.
+  // A fan of 200 triangles around one vertex: on the fast path, most of its edges go to the overflow
+  // map past the per-vertex slots.
   const int n = 200;
   IndexedMesh in;
   in.positions.push_back({0, 0, 0});

@@ -1,0 +1,243 @@
+// split_face, cut_face, add_face and the removals (src/core/face_operations.cpp).
+#include "hedge/core/operations.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "edit_checks.h"
+#include "hedge/core/build.h"
+#include "test_meshes.h"
+
+namespace hedge {
+namespace {
+
+using test::Counts;
+using test::counts;
+using test::expect_corner_uv_matches_position;
+using test::Snapshot;
+using test::snapshot;
+using test::textured_grid;
+
+TEST(SplitFace, PointInsideThePositionArray) {
+  // As for split_edge: the point may be a reference into the position array that grows.
+  SurfaceMesh m = textured_grid(2, true);
+  for (int i = 0; i < 200; ++i) {
+    const Face f(static_cast<Index>(i % m.face_slots()));
+    const Vertex corner = m.to_vertex(m.halfedge(f));
+    const Vec3 expected = m.position(corner);
+    const Vertex v = split_face(m, f, m.position(corner));
+    ASSERT_TRUE(v.is_valid());
+    EXPECT_EQ(m.position(v), expected);
+  }
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(SplitFace, TriangleAndPolygon) {
+  SurfaceMesh m = textured_grid(1, true);
+  Counts before = counts(m);
+  Vertex v = split_face(m, Face(0), {0.6f, 0.3f, 0});
+  ASSERT_TRUE(v.is_valid());
+  EXPECT_EQ(counts(m).v, before.v + 1);
+  EXPECT_EQ(counts(m).e, before.e + 3);
+  EXPECT_EQ(counts(m).f, before.f + 2);
+  EXPECT_EQ(m.valence(v), 3u);
+  EXPECT_NEAR(m.get_vertex_property<float>("v:weight")[v], 0.6f, 1e-5f);  // barycentric blend of x
+  expect_corner_uv_matches_position(m);
+  EXPECT_TRUE(m.validate().empty());
+
+  SurfaceMesh c = build(test::cube());
+  auto label = c.add_face_property<int>("f:label", 0);
+  label[Face(2)] = 7;
+  v = split_face(c, Face(2), {0.5f, 0, 0.5f});
+  EXPECT_EQ(c.valence(v), 4u);
+  EXPECT_EQ(c.n_faces(), 9u);
+  std::size_t labelled = 0;
+  for (Face f : c.faces(v)) labelled += label[f] == 7;
+  EXPECT_EQ(labelled, 4u);
+  EXPECT_TRUE(c.validate().empty());
+}
+
+TEST(CutFace, AlongADiagonal) {
+  SurfaceMesh m = textured_grid(1, false);  // one quad
+  Halfedge h0 = m.halfedge(Face(0));
+  Halfedge adjacent = m.next(h0);
+  Snapshot s = snapshot(m);
+  EXPECT_FALSE(cut_face(m, h0, adjacent).is_valid());
+  EXPECT_FALSE(cut_face(m, h0, h0).is_valid());
+  EXPECT_TRUE(snapshot(m) == s);
+  Halfedge h1 = m.next(m.next(h0));
+  Halfedge n = cut_face(m, h0, h1);
+  ASSERT_TRUE(n.is_valid());
+  EXPECT_EQ(m.from_vertex(n), m.to_vertex(h0));
+  EXPECT_EQ(m.to_vertex(n), m.to_vertex(h1));
+  EXPECT_TRUE(m.is_triangle_mesh());
+  EXPECT_EQ(m.n_faces(), 2u);
+  expect_corner_uv_matches_position(m);
+  EXPECT_TRUE(m.validate().empty());
+  // The diagonal now exists: cutting again is refused.
+  EXPECT_FALSE(can_cut_face(m, m.prev(n), m.next(n)));
+}
+
+TEST(AddRemoveFace, RemoveThenAddRestores) {
+  SurfaceMesh m = build(test::tetrahedron());
+  std::vector<Vertex> corners;
+  for (Vertex v : m.vertices(Face(1))) corners.push_back(v);
+  ASSERT_TRUE(remove_face(m, Face(1)));
+  EXPECT_EQ(m.boundary_loops().size(), 1u);
+  EXPECT_EQ(m.n_faces(), 3u);
+  EXPECT_TRUE(m.validate().empty());
+  Face f = add_face(m, corners);
+  ASSERT_TRUE(f.is_valid());
+  EXPECT_TRUE(m.boundary_loops().empty());
+  EXPECT_EQ(counts(m).chi(), 2);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(AddRemoveFace, BuildFaceByFaceMatchesBulkBuild) {
+  // add_face keeps every vertex manifold, so a face must meet the mesh along an edge (a face
+  // touching it at a vertex only is refused until a neighbour joins them): add faces in
+  // breadth-first order over their adjacency, deferring those not attachable yet.
+  IndexedMesh in = test::grid(4, true);
+  SurfaceMesh bulk = build(in);
+  std::vector<std::size_t> pending;
+  std::vector<bool> queued(bulk.face_slots(), false);
+  pending.push_back(0);
+  queued[0] = true;
+  for (std::size_t i = 0; i < pending.size(); ++i)
+    for (Face g : bulk.faces(Face(static_cast<Index>(pending[i]))))
+      if (!queued[g.idx()]) {
+        queued[g.idx()] = true;
+        pending.push_back(g.idx());
+      }
+  ASSERT_EQ(pending.size(), bulk.n_faces());
+  for (auto& t : pending) t *= 3;
+  SurfaceMesh m;
+  for (const Vec3& p : in.positions) m.add_vertex(p);
+  while (!pending.empty()) {
+    std::vector<std::size_t> later;
+    for (std::size_t t : pending) {
+      Vertex tri[3] = {Vertex(in.indices[t]), Vertex(in.indices[t + 1]), Vertex(in.indices[t + 2])};
+      if (add_face(m, tri).is_valid()) ASSERT_TRUE(m.validate().empty()) << "after face " << t / 3;
+      else later.push_back(t);
+    }
+    ASSERT_LT(later.size(), pending.size());
+    pending.swap(later);
+  }
+  EXPECT_EQ(m.n_edges(), bulk.n_edges());
+  EXPECT_EQ(m.n_faces(), bulk.n_faces());
+  EXPECT_EQ(m.boundary_loops().size(), 1u);
+  for (std::size_t t = 0; t < in.indices.size(); t += 3) {
+    Halfedge h = m.find_halfedge(Vertex(in.indices[t]), Vertex(in.indices[t + 1]));
+    ASSERT_TRUE(h.is_valid());
+    EXPECT_FALSE(m.is_boundary(h));
+    EXPECT_EQ(m.to_vertex(m.next(h)), Vertex(in.indices[t + 2]));
+  }
+}
+
+TEST(AddRemoveFace, RefusesNonManifoldResults) {
+  IndexedMesh in;
+  in.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}, {0, 1, 0}};
+  in.indices = {0, 1, 2};
+  SurfaceMesh m = build(in);
+  Snapshot s = snapshot(m);
+  Vertex bowtie[3] = {Vertex(0), Vertex(3), Vertex(4)};  // touches the triangle at vertex 0 only
+  EXPECT_FALSE(can_add_face(m, bowtie));
+  EXPECT_FALSE(add_face(m, bowtie).is_valid());
+  Vertex same_side[3] = {Vertex(0), Vertex(1), Vertex(5)};  // edge 0->1 already has its face
+  EXPECT_FALSE(add_face(m, same_side).is_valid());
+  Vertex repeated[3] = {Vertex(0), Vertex(1), Vertex(1)};
+  EXPECT_FALSE(add_face(m, repeated).is_valid());
+  EXPECT_TRUE(snapshot(m) == s);
+  // Across the free side of edge 1-0 is fine.
+  Vertex ok[3] = {Vertex(1), Vertex(0), Vertex(4)};
+  EXPECT_TRUE(add_face(m, ok).is_valid());
+  EXPECT_TRUE(m.validate().empty());
+  // Removing a face that touches the boundary only at a corner would pinch it: refused.
+  SurfaceMesh g = build(test::grid(3, false));
+  Face centre(4);
+  EXPECT_TRUE(can_remove_face(g, centre));
+  ASSERT_TRUE(remove_face(g, centre));
+  Snapshot gs = snapshot(g);
+  EXPECT_FALSE(remove_face(g, Face(0)));  // corner quad meets the new hole at a vertex only
+  EXPECT_TRUE(snapshot(g) == gs);
+  EXPECT_TRUE(g.validate().empty());
+}
+
+TEST(RemoveFaces, SplitsTheVertexItLeavesPinched) {
+  SurfaceMesh m = textured_grid(3, false);
+  // Quads 0 and 4 (the centre) share vertex 5 only: without them, quads 1 and 3 meet at 5 alone.
+  const Vertex pinched(5);
+  const Vec3 at = m.position(pinched);
+  int notified = 0;
+  m.changes().subscribe(ChangeEvent::all, [&](ChangeEvent) { ++notified; });
+  std::vector<Face> set = {Face(4), Face(0), Face(4)};  // repeats are ignored
+  remove_faces(m, set);
+  EXPECT_EQ(notified, 1);
+  EXPECT_TRUE(m.is_deleted(Face(0)));
+  EXPECT_TRUE(m.is_deleted(Face(4)));
+  EXPECT_TRUE(m.is_deleted(Vertex(0)));  // the grid's corner had no other face
+  EXPECT_EQ(counts(m).f, 7);
+  EXPECT_EQ(counts(m).e, 22);  // the corner's two edges go; the centre's edges keep a face
+  EXPECT_EQ(counts(m).v, 16);  // one vertex gone, one copy of the pinched vertex
+  EXPECT_EQ(counts(m).chi(), 1);
+  EXPECT_EQ(m.boundary_loops().size(), 1u);
+  auto w = m.get_vertex_property<float>("v:weight");
+  std::size_t at_pinch = 0;
+  for (Vertex v : m.vertices()) {
+    EXPECT_TRUE(m.is_manifold(v));
+    if (m.position(v) == at) {
+      ++at_pinch;
+      EXPECT_EQ(w[v], at.x);
+      EXPECT_FALSE(m.is_isolated(v));
+    }
+  }
+  EXPECT_EQ(at_pinch, 2u);
+  expect_corner_uv_matches_position(m);
+  EXPECT_TRUE(m.validate().empty());
+  m.garbage_collection();
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RemoveFaces, OneRemovableFaceAsRemoveFace) {
+  for (IndexedMesh in : {test::tetrahedron(), test::grid(3, false), test::grid(3, true)}) {
+    const SurfaceMesh source = build(in);
+    for (Face f : source.faces()) {
+      if (!can_remove_face(source, f)) continue;
+      SurfaceMesh a = source, b = source;
+      ASSERT_TRUE(remove_face(a, f));
+      const Face one[1] = {f};
+      remove_faces(b, one);
+      EXPECT_TRUE(snapshot(b) == snapshot(a)) << "face " << f.idx();
+      EXPECT_TRUE(b.validate().empty());
+    }
+  }
+}
+
+TEST(RemoveFaces, DeadOrNoFacesChangeNothing) {
+  SurfaceMesh m = textured_grid(2, true);
+  ASSERT_TRUE(remove_face(m, Face(0)));
+  const Snapshot s = snapshot(m);
+  int notified = 0;
+  m.changes().subscribe(ChangeEvent::all, [&](ChangeEvent) { ++notified; });
+  remove_faces(m, {});
+  const Face dead[3] = {Face(0), Face(9999), Face()};
+  remove_faces(m, dead);
+  EXPECT_TRUE(snapshot(m) == s);
+  EXPECT_EQ(notified, 0);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RemoveFaces, EveryFaceLeavesAnEmptyMesh) {
+  SurfaceMesh m = build(test::tetrahedron());
+  std::vector<Face> all;
+  for (Face f : m.faces()) all.push_back(f);
+  remove_faces(m, all);
+  EXPECT_EQ(m.n_faces(), 0u);
+  EXPECT_EQ(m.n_edges(), 0u);
+  EXPECT_EQ(m.n_vertices(), 0u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+}  // namespace
+}  // namespace hedge
