@@ -102,7 +102,8 @@ namespace Hedge
             return result;
         }
 
-        /// <summary>Opens a transaction: edits are gathered until the matching commit (transactions nest).</summary>
+        /// <summary>Opens a transaction of these buffers: edits are gathered until the matching commit
+        /// (transactions nest). Other RenderBuffers of the same mesh keep syncing as usual.</summary>
         public void BeginTransaction() { Status.Check(Native.hedge_render_begin(id)); }
 
         /// <summary>Closes the transaction; the outermost commit syncs once. Without an open transaction:
