@@ -117,6 +117,9 @@ Vec3 need_point(float x, float y, float z);
 bool need_bool(std::int32_t value, const char* name);
 std::uint32_t to_u32(std::size_t n, const char* what);
 
+//! \throw ApiError (HEDGE_ERROR_BAD_HANDLE) unless i < slots; `kind` names the element in the message.
+void check_range(const char* kind, std::uint32_t i, std::size_t slots);
+
 //! A live element of the mesh. \throw ApiError (HEDGE_ERROR_BAD_HANDLE) if out of range or deleted.
 Vertex live_vertex(const SurfaceMesh& m, std::uint32_t v);
 Halfedge live_halfedge(const SurfaceMesh& m, std::uint32_t h);
