@@ -16,7 +16,7 @@ hedge_deps_packages() {
   for group in "$@"; do
     case "$group" in
       core) echo cmake g++ ninja-build ;;
-      cli) echo libcli11-dev nlohmann-json3-dev ;;
+      cli) echo libcli11-dev nlohmann-json3-dev libstb-dev fonts-dejavu-core pkg-config ;;
       test) echo libgtest-dev nlohmann-json3-dev ;;
       bench) echo libbenchmark-dev ;;
       peers) echo libopenmesh-dev libcgal-dev libeigen3-dev libmeshoptimizer-dev ;;

@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
       add_convert_command(app),
       add_stress_command(app),
       add_render_buffers_command(app),
+      add_render_command(app),
   };
 
   try {

@@ -1,0 +1,220 @@
+// hedge render: pictures of meshes, headless. A shaded picture (PNG), several meshes side by side
+// with captions (--grid), or the half-edge diagram of a small mesh (--halfedges, PNG or SVG).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "commands.h"
+#include "hedge/error.h"
+#include "load.h"
+#include "picture/diagram.h"
+#include "picture/raster.h"
+#include "picture/sheet.h"
+
+namespace hedge::cli {
+
+namespace {
+
+using namespace hedge::picture;
+
+struct RenderCommandOptions {
+  std::string input;
+  std::vector<std::string> grid;
+  std::string output;
+  std::string size = "800x600";
+  std::string view = "iso";
+  std::vector<double> eye, target, up;
+  double fov = 30;
+  std::string shading = "smooth";
+  std::string color_by = "none";
+  bool wireframe = false;
+  double feature_angle = 60;
+  int supersample = 2;
+  int columns = 0;
+  unsigned threads = 0;
+  bool halfedges = false;
+  std::size_t max_faces = 400;
+  LoadOptions load;
+};
+
+// "WxH" -> (W, H); nothing if malformed.
+std::optional<std::pair<int, int>> parse_size(const std::string& text) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X')) return std::nullopt;
+  return std::pair{w, h};
+}
+
+std::string size_check(const std::string& text) {
+  const auto size = parse_size(text);
+  if (!size) return "expected WIDTHxHEIGHT, such as 800x600, got '" + text + "'";
+  try {
+    check_size(size->first, size->second, "a picture");
+  } catch (const InvalidInputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  if (s.size() < suffix.size()) return false;
+  std::string tail = s.substr(s.size() - suffix.size());
+  std::transform(tail.begin(), tail.end(), tail.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return tail == suffix;
+}
+
+// Mesh vertices that repair split off another: they came from the same input vertex as another.
+std::vector<Vertex> repaired_vertices(const LoadedMesh& loaded) {
+  std::unordered_map<Index, int> uses;
+  for (Index origin : loaded.report.vertex_origin) ++uses[origin];
+  std::vector<Vertex> out;
+  for (std::size_t v = 0; v < loaded.report.vertex_origin.size(); ++v)
+    if (uses[loaded.report.vertex_origin[v]] > 1) out.push_back(Vertex(Index(v)));
+  return out;
+}
+
+Camera camera_for(const SurfaceMesh& mesh, const RenderCommandOptions& o, double aspect) {
+  if (!o.eye.empty()) {
+    Camera c;
+    c.eye = {o.eye[0], o.eye[1], o.eye[2]};
+    c.target = {o.target[0], o.target[1], o.target[2]};
+    if (!o.up.empty()) c.up = {o.up[0], o.up[1], o.up[2]};
+    c.fov_degrees = o.fov;
+    return c;
+  }
+  return frame(mesh, *parse_view(o.view), aspect);
+}
+
+Image picture_of(const std::string& path, const RenderCommandOptions& o, int w, int h, LoadedMesh& loaded) {
+  loaded = load_mesh(path, o.load);
+  if (loaded.mesh.n_faces() == 0) throw InvalidInputError(path + ": nothing to draw: the mesh has no faces");
+  RenderOptions r;
+  r.width = w;
+  r.height = h;
+  r.supersample = o.supersample;
+  r.shading = o.shading == "flat" ? Shading::flat : Shading::smooth;
+  static const std::unordered_map<std::string, ColorBy> kColorBy = {{"none", ColorBy::none},
+                                                                      {"face", ColorBy::face},
+                                                                      {"shard", ColorBy::shard},
+                                                                      {"curvature", ColorBy::curvature},
+                                                                      {"valence", ColorBy::valence}};
+  r.color_by = kColorBy.at(o.color_by);
+  r.wireframe = o.wireframe;
+  r.feature_angle = o.feature_angle;
+  r.marked = repaired_vertices(loaded);
+  r.threads = o.threads;
+  return render(loaded.mesh, camera_for(loaded.mesh, o, double(w) / h), r);
+}
+
+std::string caption_of(const std::string& path, const SurfaceMesh& m) {
+  return std::filesystem::path(path).filename().string() + ": " + std::to_string(m.n_vertices()) + " V, " +
+         std::to_string(m.n_faces()) + " F";
+}
+
+int run_render(const RenderCommandOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto [w, h] = *parse_size(o.size);
+  const bool svg = ends_with(o.output, ".svg");
+  if (!svg && !ends_with(o.output, ".png"))
+    throw InvalidInputError("the output must end in .png (or .svg for --halfedges): " + o.output);
+  if (svg && !o.halfedges)
+    throw InvalidInputError("SVG output is for half-edge diagrams (--halfedges); use .png for " + o.output);
+
+  const std::filesystem::path parent = std::filesystem::path(o.output).parent_path();
+  std::string what;
+  if (o.halfedges) {
+    const LoadedMesh loaded = load_mesh(o.input, o.load);
+    DiagramOptions d;
+    d.max_faces = o.max_faces;
+    const Camera camera = o.eye.empty() ? diagram_camera(loaded.mesh, double(w) / h) : camera_for(loaded.mesh, o, 1);
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+    if (svg) {
+      SvgCanvas canvas(w, h);
+      draw_halfedge_diagram(loaded.mesh, camera, canvas, d);
+      write_file_atomic(o.output, canvas.svg());
+    } else {
+      Image image(w, h);
+      ImageCanvas canvas(image);
+      draw_halfedge_diagram(loaded.mesh, camera, canvas, d);
+      write_png(image, o.output);
+    }
+    what = "the half-edge diagram of " + o.input + " (" + std::to_string(loaded.mesh.n_halfedges()) + " half-edges)";
+  } else if (!o.grid.empty()) {
+    std::vector<Panel> panels;
+    for (const std::string& path : o.grid) {
+      LoadedMesh loaded;
+      Image image = picture_of(path, o, w, h, loaded);
+      panels.push_back({std::move(image), caption_of(path, loaded.mesh)});
+    }
+    const Image sheet = contact_sheet(panels, o.columns);
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+    write_png(sheet, o.output);
+    what = std::to_string(panels.size()) + " meshes side by side (" + std::to_string(sheet.width()) + "x" +
+           std::to_string(sheet.height()) + ")";
+  } else {
+    LoadedMesh loaded;
+    const Image image = picture_of(o.input, o, w, h, loaded);
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+    write_png(image, o.output);
+    what = o.input + " (" + std::to_string(loaded.mesh.n_faces()) + " faces, " + std::to_string(w) + "x" +
+           std::to_string(h) + ")";
+  }
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  std::printf("wrote %s: %s in %.0f ms\n", o.output.c_str(), what.c_str(), ms);
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_render_command(CLI::App& parent) {
+  auto o = std::make_shared<RenderCommandOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "render", "Draw a mesh to a PNG picture without a GPU: shaded, with highlighted boundary, feature and "
+                "repaired elements; several meshes side by side (--grid); or the half-edge diagram of a small "
+                "mesh (--halfedges, PNG or SVG)");
+  app->add_option("FILE", o->input, "Mesh file (.obj, .off, .ply, .stl)");
+  app->add_option("-o,--output", o->output, "Picture to write: .png, or .svg with --halfedges")->required();
+  app->add_option("--grid", o->grid, "Several mesh files, drawn side by side with captions")->expected(1, -1);
+  app->add_option("--columns", o->columns, "Pictures per row with --grid (0: all in one row)")->check(CLI::NonNegativeNumber);
+  app->add_option("--size", o->size, "Picture size WIDTHxHEIGHT (per mesh with --grid)")->capture_default_str()
+      ->check(CLI::Validator(size_check, "WxH", "size"));
+  app->add_option("--view", o->view, std::string("Camera: ") + view_names())->capture_default_str()
+      ->check(CLI::IsMember({"front", "back", "left", "right", "top", "bottom", "iso"}));
+  app->add_option("--eye", o->eye, "Explicit camera position x,y,z (with --target)")->delimiter(',')->expected(3);
+  app->add_option("--target", o->target, "Point the explicit camera looks at, x,y,z")->delimiter(',')->expected(3);
+  app->add_option("--up", o->up, "Up direction of the explicit camera, x,y,z (default 0,1,0)")->delimiter(',')->expected(3);
+  app->add_option("--fov", o->fov, "Vertical field of view in degrees of the explicit camera (0: orthographic)")->capture_default_str()
+      ->check(CLI::Range(0.0, 179.0));
+  app->add_option("--shading", o->shading, "flat or smooth")->capture_default_str()->check(CLI::IsMember({"flat", "smooth"}));
+  app->add_option("--color-by", o->color_by, "none, face, shard (connected piece), curvature or valence")->capture_default_str()
+      ->check(CLI::IsMember({"none", "face", "shard", "curvature", "valence"}));
+  app->add_flag("--wireframe", o->wireframe, "Draw every edge");
+  app->add_option("--feature-angle", o->feature_angle,
+                  "Highlight edges whose faces meet at more than this angle, in degrees (0: none)")->capture_default_str()
+      ->check(CLI::Range(0.0, 180.0));
+  app->add_option("--supersample", o->supersample, "Samples per pixel along each axis, 1..4 (anti-aliasing)")->capture_default_str()
+      ->check(CLI::Range(1, 4));
+  app->add_option("--threads", o->threads, "Threads (0: every core)")->capture_default_str();
+  app->add_flag("--halfedges", o->halfedges, "Draw the half-edge diagram of a small mesh instead");
+  app->add_option("--max-faces", o->max_faces, "Largest mesh --halfedges draws")->capture_default_str()->check(CLI::PositiveNumber);
+  add_load_options(*app, o->load);
+  // Command-line mistakes are usage errors (exit 2), found while parsing.
+  app->parse_complete_callback([o] {
+    if (o->input.empty() == o->grid.empty())
+      throw CLI::ValidationError("render", "give one mesh file, or several after --grid");
+    if (o->eye.empty() != o->target.empty())
+      throw CLI::ValidationError("render", "--eye and --target go together");
+    if (o->halfedges && !o->grid.empty())
+      throw CLI::ValidationError("render", "--halfedges draws one mesh; --grid is for shaded pictures");
+  });
+  return {app, [o] { return run_render(*o); }};
+}
+
+}  // namespace hedge::cli
