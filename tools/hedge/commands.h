@@ -25,5 +25,6 @@ Command add_convert_command(CLI::App& parent);
 Command add_stress_command(CLI::App& parent);
 Command add_render_buffers_command(CLI::App& parent);
 Command add_render_command(CLI::App& parent);
+Command add_tour_command(CLI::App& parent);
 
 }  // namespace hedge::cli

@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
       add_stress_command(app),
       add_render_buffers_command(app),
       add_render_command(app),
+      add_tour_command(app),
   };
 
   try {

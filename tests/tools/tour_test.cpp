@@ -1,0 +1,38 @@
+// hedge tour, run as ./run runs it: the contact sheet, the edited meshes, the table.
+#include <string>
+
+#include "cli_fixture.h"
+
+namespace {
+
+using namespace cli_test;
+
+TEST_F(HedgeCli, TourWritesTheContactSheetAndEveryEditedMesh) {
+  const fs::path out = tmp("out");
+  const Result r = run({"tour", data("spot_control_mesh.obj"), "--out", out.string(), "--panel", "160"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string sheet = read_text(out / "spot_control_mesh_tour.png");
+  ASSERT_GT(sheet.size(), 24u);
+  EXPECT_EQ(sheet.compare(0, 8, "\x89PNG\r\n\x1a\n"), 0);
+  for (const char* stage : {"_split.obj", "_hole.obj", "_filled.obj", "_patch.obj"}) {
+    const fs::path mesh = out / (std::string("spot_control_mesh") + stage);
+    EXPECT_TRUE(fs::exists(mesh)) << mesh;
+    const Result v = run({"validate", mesh.string()});
+    EXPECT_EQ(v.code, 0) << mesh << ": " << v.out << v.err;
+  }
+  // The table: a header and one row per stage, every one valid.
+  EXPECT_NE(r.out.find("stage"), std::string::npos);
+  for (const char* stage : {"loaded", "split all faces", "faces removed", "hole filled", "detached one-ring"})
+    EXPECT_NE(r.out.find(stage), std::string::npos) << stage;
+  EXPECT_EQ(r.out.find(" NO "), std::string::npos) << r.out;
+  // The split stage: 180 faces of 4.4 corners on average become 732 triangles.
+  EXPECT_NE(r.out.find("732"), std::string::npos) << r.out;
+}
+
+TEST_F(HedgeCli, TourOfAMeshWithoutFacesIsADataError) {
+  write_text(tmp("points.obj"), "v 0 0 0\nv 1 0 0\n");
+  expect_data_error({"tour", tmp("points.obj").string(), "--out", tmp("out").string()}, "no faces");
+  EXPECT_FALSE(fs::exists(tmp("out") / "points_tour.png"));
+}
+
+}  // namespace
