@@ -283,3 +283,27 @@ TEST_F(HedgeCli, HelpAndVersion) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace cli_test;
+
+TEST_F(HedgeCli, InfoReportsAreaVolumeAndBoundingBox) {
+  write_text(tmp("box.obj"),
+             "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\nv 0 0 3\nv 2 0 3\nv 2 1 3\nv 0 1 3\n"
+             "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+  const json j = run_json({"info", tmp("box.obj").string(), "--json"});
+  EXPECT_NEAR(j["area"].get<double>(), 2 * (2 + 6 + 3), 1e-9);
+  EXPECT_NEAR(j["volume"].get<double>(), 6, 1e-9);
+  EXPECT_EQ(j["bounding_box"]["min"], json::array({0, 0, 0}));
+  EXPECT_EQ(j["bounding_box"]["max"], json::array({2, 1, 3}));
+  // An open mesh has no volume.
+  const json open = run_json({"info", data("three_peaks.off"), "--json"});
+  EXPECT_TRUE(open["volume"].is_null());
+  EXPECT_GT(open["area"].get<double>(), 0);
+  const Result text = run({"info", tmp("box.obj").string()});
+  EXPECT_NE(text.out.find("volume"), std::string::npos);
+  EXPECT_NE(text.out.find("bounding box"), std::string::npos);
+}
+
+}  // namespace

@@ -2,6 +2,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "commands.h"
 #include "load.h"
@@ -43,6 +44,16 @@ void print_text(const InfoOptions& options, const LoadedMesh& loaded, const Mesh
   row("triangle mesh", yes_no(s.is_triangle_mesh));
   row("quad mesh", yes_no(s.is_quad_mesh));
   row("manifold", yes_no(s.is_manifold));
+  row("area", s.area);
+  if (s.volume) {
+    row("volume", *s.volume);
+  } else {
+    row("volume", "n/a (not closed)");
+  }
+  std::ostringstream box;
+  box << "(" << s.box_min.x << ", " << s.box_min.y << ", " << s.box_min.z << ") - (" << s.box_max.x << ", "
+      << s.box_max.y << ", " << s.box_max.z << ")";
+  row("bounding box", box.str());
   row("valid", yes_no(s.problems.empty()));
   if (!s.problems.empty())
     std::cout << "  (boundary loops, components, genus and manifoldness not computed)\n";

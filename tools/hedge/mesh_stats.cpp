@@ -1,5 +1,7 @@
 #include "mesh_stats.h"
 
+#include "hedge/algorithms/geometry.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -50,6 +52,9 @@ MeshStats compute_stats(const SurfaceMesh& mesh) {
   s.euler_characteristic = static_cast<std::int64_t>(s.vertices) - static_cast<std::int64_t>(s.edges) +
                            static_cast<std::int64_t>(s.faces);
   s.is_triangle_mesh = s.faces > 0 && mesh.is_triangle_mesh();
+  const BoundingBox box = bounding_box(mesh);
+  s.box_min = box.min;
+  s.box_max = box.max;
   s.is_quad_mesh = s.faces > 0 && mesh.is_quad_mesh();
 
   // The queries below walk the connectivity; on a broken mesh they could go astray, so they are
@@ -70,6 +75,8 @@ MeshStats compute_stats(const SurfaceMesh& mesh) {
   if (s.is_closed && s.components == 1 && surface_chi <= 2 && surface_chi % 2 == 0) {
     s.genus = (2 - surface_chi) / 2;
   }
+  s.area = surface_area(mesh);
+  if (s.boundary_loops == 0) s.volume = volume(mesh);
   return s;
 }
 
@@ -101,6 +108,9 @@ nlohmann::json stats_json(const MeshStats& s) {
   j["is_triangle_mesh"] = s.is_triangle_mesh;
   j["is_quad_mesh"] = s.is_quad_mesh;
   j["is_manifold"] = s.is_manifold;
+  j["area"] = s.area;
+  j["volume"] = s.volume ? nlohmann::json(*s.volume) : nlohmann::json(nullptr);
+  j["bounding_box"] = {{"min", {s.box_min.x, s.box_min.y, s.box_min.z}}, {"max", {s.box_max.x, s.box_max.y, s.box_max.z}}};
   j["valid"] = s.problems.empty();
   j["problems"] = s.problems;
   return j;

@@ -29,6 +29,11 @@ struct MeshStats {
   bool is_triangle_mesh = false;
   bool is_quad_mesh = false;
   bool is_manifold = false;
+  //! Geometry: the axis-aligned bounding box, and, on a valid mesh, the surface area and the
+  //! enclosed (signed) volume of a closed one (empty when the mesh has a boundary or is invalid).
+  double area = 0;
+  Vec3 box_min{0, 0, 0}, box_max{0, 0, 0};
+  std::optional<double> volume;
   //! mesh.validate(): one line per broken invariant; empty means valid.
   std::vector<std::string> problems;
 };

@@ -1,0 +1,135 @@
+#include "hedge/algorithms/normals.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hedge/core/build.h"
+#include "hedge/core/export.h"
+#include "hedge/error.h"
+#include "test_meshes.h"
+
+namespace hedge {
+namespace {
+
+void expect_near(const Vec3& a, const Vec3& b, double eps = 1e-6) {
+  EXPECT_NEAR(a.x, b.x, eps);
+  EXPECT_NEAR(a.y, b.y, eps);
+  EXPECT_NEAR(a.z, b.z, eps);
+}
+
+// The outward diagonal direction at a corner of the unit cube.
+Vec3 diagonal(const Vec3& p) {
+  const float s = 1 / std::sqrt(3.f);
+  return {p.x > 0.5f ? s : -s, p.y > 0.5f ? s : -s, p.z > 0.5f ? s : -s};
+}
+
+TEST(Normals, FaceNormalFollowsTheWinding) {
+  const SurfaceMesh m = build(test::cube());
+  for (Face f : m.faces()) {
+    const Vec3 n = face_normal(m, f);
+    // Outward: the face's centre minus the cube's centre points the same way.
+    Vec3 c{0, 0, 0};
+    for (Vertex v : m.vertices(f)) c += m.position(v) * 0.25f;
+    const Vec3 out = c - Vec3{0.5f, 0.5f, 0.5f};
+    expect_near(n, out * 2.f);
+  }
+  // A face whose corners lie on a line: zero.
+  SurfaceMesh flat = build(test::tetrahedron());
+  for (Vertex v : flat.vertices()) flat.set_position(v, Vec3{float(v.idx()), 0, 0});
+  for (Face f : flat.faces()) EXPECT_EQ(face_normal(flat, f), (Vec3{0, 0, 0}));
+}
+
+TEST(Normals, AngleWeightingIsIndependentOfTheTriangulation) {
+  // The triangulated cube: a corner has one or two triangles of each of its three sides.
+  SurfaceMesh m = build(to_indexed(build(test::cube()), {.triangulation = Triangulation::fan}));
+  const auto angle = compute_vertex_normals(m, NormalWeighting::angle);
+  for (Vertex v : m.vertices()) expect_near(angle[v], diagonal(m.position(v)));
+  // Area and uniform weighting see the extra triangles: at some corner they lean off the diagonal.
+  const auto area = compute_vertex_normals(m, NormalWeighting::area, "v:area_normal");
+  const auto uniform = compute_vertex_normals(m, NormalWeighting::uniform, "v:uniform_normal");
+  double off_area = 0, off_uniform = 0;
+  for (Vertex v : m.vertices()) {
+    EXPECT_NEAR(norm(area[v]), 1, 1e-6);
+    const Vec3 d = diagonal(m.position(v));
+    off_area = std::max(off_area, double(norm(area[v] - d)));
+    off_uniform = std::max(off_uniform, double(norm(uniform[v] - d)));
+  }
+  EXPECT_GT(off_area, 0.05);
+  EXPECT_GT(off_uniform, 0.05);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Normals, CornerNormalsSplitAtCreases) {
+  SurfaceMesh m = build(to_indexed(build(test::cube()), {.triangulation = Triangulation::fan}));
+  // 30 degrees: every edge of the cube is a crease, so every corner gets its face's normal.
+  auto hard = compute_corner_normals(m, 30);
+  for (Halfedge h : m.halfedges()) {
+    if (m.is_boundary(h)) continue;
+    expect_near(hard[h], face_normal(m, m.face(h)));
+  }
+  // 180 degrees: nothing is a crease; every corner gets its vertex's (angle-weighted) normal.
+  auto smooth = compute_corner_normals(m, 180, NormalWeighting::angle, "h:smooth");
+  for (Halfedge h : m.halfedges()) expect_near(smooth[h], diagonal(m.position(m.to_vertex(h))));
+  // 0 degrees: flat shading even across the coplanar diagonals.
+  auto flat = compute_corner_normals(m, 0, NormalWeighting::angle, "h:flat");
+  for (Halfedge h : m.halfedges()) expect_near(flat[h], face_normal(m, m.face(h)));
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Normals, ARidgeIsAWedgeBoundaryOnlyBelowItsAngle) {
+  // Two strips meeting at a ridge along x at 90 degrees (a roof), each two triangles deep, plus
+  // their boundary: the ridge vertices have two wedges under a 45-degree crease, one under 100.
+  IndexedMesh in;
+  for (int i = 0; i < 3; ++i) {
+    in.positions.push_back({float(i), 0, -1});  // 3i: left eave
+    in.positions.push_back({float(i), 1, 0});   // 3i + 1: ridge
+    in.positions.push_back({float(i), 0, 1});   // 3i + 2: right eave
+  }
+  for (Index i = 0; i < 2; ++i) {
+    const Index a = 3 * i, b = 3 * i + 1, c = 3 * i + 2, d = 3 * i + 3, e = 3 * i + 4, f = 3 * i + 5;
+    in.indices.insert(in.indices.end(), {a, b, e, a, e, d, b, c, f, b, f, e});
+  }
+  SurfaceMesh m = build(in);
+  ASSERT_TRUE(m.validate().empty());
+  auto sharp = compute_corner_normals(m, 45);
+  auto soft = compute_corner_normals(m, 100, NormalWeighting::angle, "h:soft");
+  const Vertex ridge(4);  // the middle of the ridge
+  ASSERT_EQ(m.position(ridge), (Vec3{1, 1, 0}));
+  for (Halfedge h : m.halfedges()) {
+    if (m.is_boundary(h) || m.to_vertex(h) != ridge) continue;
+    const Vec3 fn = face_normal(m, m.face(h));
+    expect_near(sharp[h], fn);                                     // one side of the ridge or the other
+    expect_near(soft[h], Vec3{0, 1, 0});                           // the two sides blended: straight up
+  }
+  for (Halfedge h : m.halfedges())
+    if (m.is_boundary(h)) EXPECT_EQ(sharp[h], (Vec3{0, 0, 0}));
+}
+
+TEST(Normals, WritesAreMarkedForTheChangeLog) {
+  SurfaceMesh m = build(test::grid(3, true));
+  const ChangeConsumer watch(m.watch_changes());
+  compute_vertex_normals(m);
+  EXPECT_EQ(watch.pending().vertices.size(), m.n_vertices());
+  EXPECT_TRUE(any(watch.pending().events & ChangeEvent::vertex_data_changed));
+  watch.consume();
+  compute_corner_normals(m, 40);
+  EXPECT_EQ(watch.pending().faces.size(), m.n_faces());
+  // A flat grid: every normal is +z.
+  const auto n = m.get_halfedge_property<Vec3>("h:normal");
+  ASSERT_TRUE(n);
+  for (Halfedge h : m.halfedges())
+    if (!m.is_boundary(h)) expect_near(n[h], Vec3{0, 0, 1});
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Normals, BadCreaseAnglesAreRefused) {
+  SurfaceMesh m = build(test::tetrahedron());
+  EXPECT_THROW(compute_corner_normals(m, -1), InvalidInputError);
+  EXPECT_THROW(compute_corner_normals(m, 181), InvalidInputError);
+  EXPECT_THROW(compute_corner_normals(m, std::nan("")), InvalidInputError);
+  EXPECT_FALSE(m.get_halfedge_property<Vec3>("h:normal"));  // nothing was added
+}
+
+}  // namespace
+}  // namespace hedge
