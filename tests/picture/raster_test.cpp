@@ -245,6 +245,10 @@ TEST(Render, BadInputIsRefusedWithAClearError) {
   o.width = o.height = 100000;
   EXPECT_THROW(render(m, ortho_camera(), o), InvalidInputError);
   o = flat_colour(kRed);
+  o.width = o.height = 8192;  // a valid picture, but 16 samples per pixel would need 7.5 GB
+  o.supersample = 4;
+  EXPECT_THROW(render(m, ortho_camera(), o), InvalidInputError);
+  o = flat_colour(kRed);
   o.supersample = 5;
   EXPECT_THROW(render(m, ortho_camera(), o), InvalidInputError);
   o = flat_colour(kRed);

@@ -390,6 +390,10 @@ Image render(const SurfaceMesh& mesh, const Camera& camera, const RenderOptions&
   if (!(o.line_width > 0 && o.line_width <= 64)) throw InvalidInputError("line width must be in (0, 64] pixels");
   if (!(o.feature_angle >= 0 && o.feature_angle <= 180))
     throw InvalidInputError("the feature angle must be in [0, 180] degrees");
+  if (std::int64_t(o.width) * o.height * o.supersample * o.supersample > kMaxPixels)
+    throw InvalidInputError("a picture of " + std::to_string(o.width) + "x" + std::to_string(o.height) + " with " +
+                            std::to_string(o.supersample * o.supersample) + " samples per pixel needs more than " +
+                            std::to_string(kMaxPixels) + " samples; lower the size or the supersampling");
   if (mesh.n_faces() == 0) throw InvalidInputError("nothing to draw: the mesh has no faces");
   const int s = o.supersample;
   const Projection proj(camera, o.width, o.height);

@@ -58,7 +58,8 @@ struct RenderOptions {
 };
 
 //! A picture of the live faces of mesh seen through camera.
-//! \throw InvalidInputError for a size check_size refuses, a supersample outside 1..4, a mesh with
+//! \throw InvalidInputError for a size check_size refuses, a supersample outside 1..4, more than
+//!   kMaxPixels samples in all (about 470 MB of buffers), a mesh with
 //!   no faces, a live vertex whose position is not finite, or a camera Projection refuses.
 //! Cost: O(V + F) plus O(samples covered) per face, in O(width * height * supersample^2) memory.
 Image render(const SurfaceMesh& mesh, const Camera& camera, const RenderOptions& options);
