@@ -401,6 +401,52 @@ HEDGE_API hedge_status hedge_mesh_garbage_collection(hedge_mesh* mesh, uint32_t*
                                                      uint32_t face_capacity);
 
 /* ============================================================================================ */
+/* Geometry and normals (hedge/algorithms/geometry.h, normals.h)                                */
+/* ============================================================================================ */
+
+/** Measures of the whole mesh. Layout (48 bytes): area @0, volume @8 (double), closed @16, empty @20
+ *  (int32_t), box_min @24, box_max @36 (3 floats each). */
+typedef struct hedge_geometry {
+  double area;       /**< the sum of the live faces' areas */
+  double volume;     /**< signed enclosed volume (positive for outward faces); NaN when not closed */
+  int32_t closed;    /**< 1 if the mesh has no boundary half-edge */
+  int32_t empty;     /**< 1 if the mesh has no vertex (then the box is zero) */
+  float box_min[3];  /**< the axis-aligned bounding box of the live vertices */
+  float box_max[3];
+} hedge_geometry;
+
+HEDGE_API hedge_status hedge_mesh_geometry(const hedge_mesh* mesh, hedge_geometry* out_geometry);
+/** The unit normal of a live face (Newell's; zero for a degenerate face). out_xyz receives 3 floats. */
+HEDGE_API hedge_status hedge_face_normal(const hedge_mesh* mesh, uint32_t face, float* out_xyz);
+HEDGE_API hedge_status hedge_face_area(const hedge_mesh* mesh, uint32_t face, double* out_area);
+
+/** How the faces around a vertex are weighted in its normal. */
+typedef enum hedge_normal_weighting {
+  HEDGE_WEIGHTING_AREA = 0,    /**< by face area */
+  HEDGE_WEIGHTING_ANGLE = 1,   /**< by the face's angle at the vertex: independent of the tessellation */
+  HEDGE_WEIGHTING_UNIFORM = 2  /**< every face alike */
+} hedge_normal_weighting;
+
+/** Computes unit vertex normals into the mesh's vertex normals ("v:normal"), which render objects
+ *  made afterwards with HEDGE_NORMALS_ATTRIBUTE (or AUTOMATIC) use. Render objects that exist see
+ *  the change at their next sync if they read attribute normals. */
+HEDGE_API hedge_status hedge_mesh_compute_vertex_normals(hedge_mesh* mesh, int32_t weighting);
+/** Computes corner normals ("h:normal"): around each vertex, the faces between boundary gaps and
+ *  edges sharper than crease_degrees (0..180) share one normal; 0 gives flat shading, 180 smooth.
+ *  Render objects made afterwards with HEDGE_NORMALS_ATTRIBUTE split their vertices along the
+ *  creases. A crease angle outside 0..180 or NaN: HEDGE_ERROR_INVALID_ARGUMENT. */
+HEDGE_API hedge_status hedge_mesh_compute_corner_normals(hedge_mesh* mesh, double crease_degrees, int32_t weighting);
+/** Copies the vertex normals, 3 floats per vertex slot (*out_count floats, 3 x vertex_slots).
+ *  Without computed or loaded vertex normals: HEDGE_ERROR_INVALID_ARGUMENT. */
+HEDGE_API hedge_status hedge_mesh_copy_vertex_normals(const hedge_mesh* mesh, float* buffer, uint64_t capacity,
+                                                      uint64_t* out_count);
+/** Copies the corner normals, 3 floats per half-edge slot, for the corner of the half-edge's face at
+ *  its target vertex (zero on boundary half-edges); *out_count floats, 3 x halfedge_slots. Without
+ *  corner normals: HEDGE_ERROR_INVALID_ARGUMENT. */
+HEDGE_API hedge_status hedge_mesh_copy_corner_normals(const hedge_mesh* mesh, float* buffer, uint64_t capacity,
+                                                      uint64_t* out_count);
+
+/* ============================================================================================ */
 /* Files (hedge/io/io.h): OBJ, OFF, PLY, STL, chosen by the extension                           */
 /* ============================================================================================ */
 

@@ -1419,6 +1419,84 @@ static void test_every_function_error_path(void) {
   CHECK(strcmp(hedge_status_string(-100), "HEDGE_ERROR_UNKNOWN") == 0);
 }
 
+/* ---------------------------------------------------------------------------------------------- */
+/* Geometry and normals                                                                           */
+/* ---------------------------------------------------------------------------------------------- */
+
+/* The unit cube as 6 quads, outward counter-clockwise. */
+static const float kCubePositions[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+static const uint32_t kCubeQuads[] = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7};
+static const uint32_t kCubeSizes[] = {4, 4, 4, 4, 4, 4};
+
+static int near(double a, double b, double eps) { return fabs(a - b) <= eps; }
+
+static void test_geometry(void) {
+  hedge_mesh* cube = make_mesh(kCubePositions, 8, kCubeQuads, 24, kCubeSizes, 6);
+  hedge_geometry g;
+  memset(&g, 0xFF, sizeof g);
+  CHECK(sizeof g == 48);
+  CHECK_OK(hedge_mesh_geometry(cube, &g));
+  CHECK(near(g.area, 6, 1e-12) && near(g.volume, 1, 1e-12) && g.closed == 1 && g.empty == 0);
+  for (int a = 0; a < 3; ++a) CHECK(g.box_min[a] == 0 && g.box_max[a] == 1);
+  double area = 0;
+  float n[3] = {0, 0, 0};
+  CHECK_OK(hedge_face_area(cube, 0, &area));
+  CHECK(near(area, 1, 1e-12));
+  CHECK_OK(hedge_face_normal(cube, 0, n)); /* the bottom face, z = 0 */
+  CHECK(near(n[0], 0, 1e-7) && near(n[1], 0, 1e-7) && near(n[2], -1, 1e-7));
+  CHECK_STATUS(hedge_face_normal(cube, 99, n), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_face_area(cube, 0, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+
+  /* Vertex normals: the outward diagonals. Copying before computing is refused. */
+  float normals[3 * 24];
+  uint64_t count = 0;
+  CHECK_STATUS(hedge_mesh_copy_vertex_normals(cube, normals, 24, &count), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("compute them first");
+  CHECK_STATUS(hedge_mesh_compute_vertex_normals(cube, 7), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_OK(hedge_mesh_compute_vertex_normals(cube, HEDGE_WEIGHTING_ANGLE));
+  CHECK_STATUS(hedge_mesh_copy_vertex_normals(cube, normals, 23, &count), HEDGE_ERROR_BUFFER_TOO_SMALL);
+  CHECK(count == 24);
+  CHECK_OK(hedge_mesh_copy_vertex_normals(cube, normals, 24, &count));
+  for (uint32_t v = 0; v < 8; ++v)
+    for (int a = 0; a < 3; ++a) {
+      const double want = (kCubePositions[3 * v + a] > 0.5f ? 1 : -1) / sqrt(3.0);
+      CHECK(near(normals[3 * v + a], want, 1e-6));
+    }
+
+  /* Corner normals with a 30-degree crease: every corner takes its face's normal. */
+  CHECK_STATUS(hedge_mesh_compute_corner_normals(cube, 200, HEDGE_WEIGHTING_ANGLE), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_copy_corner_normals(cube, normals, 72, &count), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_OK(hedge_mesh_compute_corner_normals(cube, 30, HEDGE_WEIGHTING_AREA));
+  CHECK_OK(hedge_mesh_copy_corner_normals(cube, normals, 72, &count));
+  CHECK(count == 72);
+  for (uint32_t h = 0; h < 24; ++h) {
+    uint32_t face = 0;
+    float fn[3];
+    CHECK_OK(hedge_halfedge_face(cube, h, &face));
+    CHECK_OK(hedge_face_normal(cube, face, fn));
+    for (int a = 0; a < 3; ++a) CHECK(near(normals[3 * h + a], fn[a], 1e-6));
+  }
+
+  /* Render buffers made afterwards with attribute normals split the cube's corners: 24 vertices. */
+  hedge_render_options ro;
+  CHECK_OK(hedge_render_options_default(&ro));
+  ro.normals = HEDGE_NORMALS_ATTRIBUTE;
+  hedge_render* render = NULL;
+  CHECK_OK(hedge_render_create(cube, &ro, &render));
+  hedge_buffer_counts bc;
+  CHECK_OK(hedge_render_counts(render, &bc));
+  CHECK(bc.vertices == 24);
+  CHECK_OK(hedge_render_destroy(render));
+
+  /* An open mesh has no volume: NaN. */
+  hedge_mesh* pyramid = make_mesh(kPyramidPositions, 5, kPyramidTriangles, 12, NULL, 0);
+  CHECK_OK(hedge_mesh_geometry(pyramid, &g));
+  CHECK(g.closed == 0 && isnan(g.volume) && g.area > 0);
+  CHECK_STATUS(hedge_mesh_geometry(pyramid, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_OK(hedge_mesh_destroy(pyramid));
+  CHECK_OK(hedge_mesh_destroy(cube));
+}
+
 int main(void) {
   test_basics();
   test_tetrahedron();
@@ -1430,6 +1508,7 @@ int main(void) {
   test_validation_text();
   test_render();
   test_render_lifetime();
+  test_geometry();
   test_every_function_error_path();
   printf("c_api_test: %d checks passed\n", g_checks);
   return 0;

@@ -275,6 +275,72 @@ namespace Hedge
 
 
         // =========================================================================================
+        // Geometry and normals
+        // =========================================================================================
+
+        /// <summary>Area, volume (NaN unless closed) and bounding box of the mesh (one native call, O(n)).</summary>
+        public MeshGeometry Geometry
+        {
+            get
+            {
+                MeshGeometry g;
+                Status.Check(Native.hedge_mesh_geometry(id, out g));
+                return g;
+            }
+        }
+
+        /// <summary>The unit normal of a live face, by its winding (zero for a degenerate face).</summary>
+        public Vec3 FaceNormal(Face f)
+        {
+            Vec3 n;
+            Status.Check(Native.hedge_face_normal(id, f.Index, out n));
+            return n;
+        }
+
+        /// <summary>The area of a live face.</summary>
+        public double FaceArea(Face f)
+        {
+            double a;
+            Status.Check(Native.hedge_face_area(id, f.Index, out a));
+            return a;
+        }
+
+        /// <summary>Computes unit vertex normals into the mesh. <see cref="RenderBuffers"/> made afterwards with
+        /// <see cref="NormalSource.Attribute"/> (or Automatic) use them.</summary>
+        public void ComputeVertexNormals(NormalWeighting weighting = NormalWeighting.Area)
+        {
+            Status.Check(Native.hedge_mesh_compute_vertex_normals(id, (int)weighting));
+        }
+
+        /// <summary>Computes corner normals into the mesh: around each vertex, the faces between boundary gaps and
+        /// edges sharper than creaseDegrees (0..180) share one normal; 0 is flat shading, 180 smooth. Render buffers
+        /// made afterwards with <see cref="NormalSource.Attribute"/> split their vertices along the creases: hard
+        /// edges on a smooth surface.</summary>
+        public void ComputeCornerNormals(double creaseDegrees, NormalWeighting weighting = NormalWeighting.Angle)
+        {
+            Status.Check(Native.hedge_mesh_compute_corner_normals(id, creaseDegrees, (int)weighting));
+        }
+
+        /// <summary>Copies the vertex normals, 3 floats per vertex slot. Pass null to ask for the size.</summary>
+        /// <returns>The number of floats needed (3 x VertexSlots).</returns>
+        public int CopyVertexNormals(float[] buffer)
+        {
+            ulong count;
+            int status = Native.hedge_mesh_copy_vertex_normals(id, buffer, buffer != null ? (ulong)buffer.Length : 0, out count);
+            return Status.Filled(status, buffer == null, count);
+        }
+
+        /// <summary>Copies the corner normals, 3 floats per half-edge slot (the corner of the half-edge's face at its
+        /// target vertex; zero on boundary half-edges). Pass null to ask for the size.</summary>
+        /// <returns>The number of floats needed (3 x HalfEdgeSlots).</returns>
+        public int CopyCornerNormals(float[] buffer)
+        {
+            ulong count;
+            int status = Native.hedge_mesh_copy_corner_normals(id, buffer, buffer != null ? (ulong)buffer.Length : 0, out count);
+            return Status.Filled(status, buffer == null, count);
+        }
+
+        // =========================================================================================
         // Adjacency (O(1) unless noted)
         // =========================================================================================
 

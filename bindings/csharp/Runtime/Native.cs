@@ -44,6 +44,24 @@ namespace Hedge
         internal static extern int hedge_mesh_copy_positions(IntPtr mesh, [Out] float[] buffer, ulong capacity,
             out ulong count);
 
+        // ---- Geometry and normals ----
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_geometry(IntPtr mesh, out MeshGeometry geometry);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_face_normal(IntPtr mesh, uint face, out Vec3 xyz);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_face_area(IntPtr mesh, uint face, out double area);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_compute_vertex_normals(IntPtr mesh, int weighting);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_compute_corner_normals(IntPtr mesh, double creaseDegrees, int weighting);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_copy_vertex_normals(IntPtr mesh, [Out] float[] buffer, ulong capacity,
+            out ulong count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_copy_corner_normals(IntPtr mesh, [Out] float[] buffer, ulong capacity,
+            out ulong count);
+
         // ---- Adjacency ----
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_halfedge_twin(IntPtr mesh, uint halfedge, out uint result);

@@ -131,6 +131,37 @@ namespace Hedge
         }
     }
 
+    /// <summary>How the faces around a vertex are weighted in its normal.</summary>
+    public enum NormalWeighting
+    {
+        /// <summary>By face area.</summary>
+        Area = 0,
+        /// <summary>By the face's angle at the vertex: independent of how the surface is tessellated.</summary>
+        Angle = 1,
+        /// <summary>Every face alike.</summary>
+        Uniform = 2,
+    }
+
+    /// <summary>Measures of a whole mesh (48 bytes, hedge_geometry).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct MeshGeometry
+    {
+        /// <summary>The sum of the live faces' areas.</summary>
+        public double Area;
+        /// <summary>The signed enclosed volume (positive for outward faces); NaN when the mesh is not closed.</summary>
+        public double Volume;
+        int closed;
+        int empty;
+        /// <summary>The axis-aligned bounding box of the live vertices (zero when there are none).</summary>
+        public Vec3 BoxMin;
+        public Vec3 BoxMax;
+
+        /// <summary>True if the mesh has no boundary, so that <see cref="Volume"/> is defined.</summary>
+        public bool Closed { get { return closed != 0; } }
+        /// <summary>True if the mesh has no vertex.</summary>
+        public bool Empty { get { return empty != 0; } }
+    }
+
     /// <summary>Options of a <see cref="RenderBuffers"/> (24 bytes).</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct RenderOptions

@@ -73,6 +73,53 @@ namespace Hedge.Tests
             r.Add("MeshTests.GridPolygonsAndDiagonals", GridPolygonsAndDiagonals);
             r.Add("MeshTests.DetachAndGarbageCollection", DetachAndGarbageCollection);
             r.Add("MeshTests.OriginalNamesForward", OriginalNamesForward);
+            r.Add("MeshTests.GeometryAndNormals", GeometryAndNormals);
+        }
+
+        // A unit cube of 12 triangles: area, volume, box, face normals, vertex normals along the diagonals,
+        // and corner normals with a crease that render buffers turn into 24 vertices (hard edges).
+        static void GeometryAndNormals()
+        {
+            float[] positions = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1 };
+            uint[] triangles = { 0, 3, 2, 0, 2, 1, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
+                                 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7 };
+            using (var cube = HalfEdgeMesh.FromTriangles(positions, triangles))
+            {
+                MeshGeometry g = cube.Geometry;
+                Check.True(Math.Abs(g.Area - 6) < 1e-9, "area " + g.Area);
+                Check.True(Math.Abs(g.Volume - 1) < 1e-9, "volume " + g.Volume);
+                Check.True(g.Closed && !g.Empty, "closed");
+                Check.Equal(new Vec3(1, 1, 1), g.BoxMax);
+                Check.True(Math.Abs(cube.FaceArea(new Face(0)) - 0.5) < 1e-9, "a triangle of a unit square");
+                Check.Equal(new Vec3(0, 0, -1), cube.FaceNormal(new Face(0)));
+
+                Check.Throws(HedgeStatus.InvalidArgument, () => cube.CopyVertexNormals(new float[24]));
+                cube.ComputeVertexNormals(NormalWeighting.Angle);
+                float[] vn = new float[cube.CopyVertexNormals(null)];
+                Check.Equal(24, cube.CopyVertexNormals(vn));
+                float d = 1 / (float)Math.Sqrt(3);
+                for (int v = 0; v < 8; ++v)
+                    for (int a = 0; a < 3; ++a)
+                        Check.True(Math.Abs(vn[3 * v + a] - (positions[3 * v + a] > 0.5f ? d : -d)) < 1e-6, "diagonal at " + v);
+
+                Check.Throws(HedgeStatus.InvalidArgument, () => cube.ComputeCornerNormals(-5));
+                cube.ComputeCornerNormals(30);
+                float[] cn = new float[cube.CopyCornerNormals(null)];
+                cube.CopyCornerNormals(cn);
+                for (uint h = 0; h < 36; ++h)
+                {
+                    Vec3 fn = cube.FaceNormal(cube.GetFace(new HalfEdge(h)));
+                    Check.True(Math.Abs(cn[3 * h] - fn.X) + Math.Abs(cn[3 * h + 1] - fn.Y) + Math.Abs(cn[3 * h + 2] - fn.Z) < 1e-6,
+                               "corner " + h + " takes its face's normal");
+                }
+                RenderOptions options = RenderOptions.Default;
+                options.Normals = NormalSource.Attribute;
+                using (RenderBuffers buffers = cube.CreateRenderBuffers(options))
+                {
+                    Check.Equal(24u, buffers.Counts.Vertices, "hard edges split the cube's corners");
+                }
+                Check.Valid(cube, "after the normals");
+            }
         }
 
         // The original project's names do exactly what the names they stand for do: the same edits on two
@@ -118,6 +165,8 @@ namespace Hedge.Tests
             Check.Equal(36, Marshal.SizeOf(typeof(BuildReport)), "hedge_build_report");
             Check.Equal(32, (int)Marshal.OffsetOf(typeof(BuildReport), "Repairs"));
             Check.Equal(32, Marshal.SizeOf(typeof(MeshCounts)), "hedge_counts");
+            Check.Equal(48, Marshal.SizeOf(typeof(MeshGeometry)), "hedge_geometry");
+            Check.Equal(24, (int)Marshal.OffsetOf(typeof(MeshGeometry), "BoxMin"));
             Check.Equal(24, Marshal.SizeOf(typeof(RenderOptions)), "hedge_render_options");
             Check.Equal(16, (int)Marshal.OffsetOf(typeof(RenderOptions), "Winding"));
             Check.Equal(24, Marshal.SizeOf(typeof(VertexLayout)), "hedge_vertex_layout");

@@ -1,0 +1,132 @@
+// The C ABI: geometry and normals (hedge/algorithms/geometry.h, normals.h).
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "capi_internal.h"
+#include "hedge/algorithms/geometry.h"
+#include "hedge/algorithms/normals.h"
+
+using namespace hedge;
+using namespace hedge::capi;
+
+namespace {
+
+NormalWeighting to_weighting(std::int32_t w) {
+  switch (w) {
+    case HEDGE_WEIGHTING_AREA: return NormalWeighting::area;
+    case HEDGE_WEIGHTING_ANGLE: return NormalWeighting::angle;
+    case HEDGE_WEIGHTING_UNIFORM: return NormalWeighting::uniform;
+    default:
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "weighting must be HEDGE_WEIGHTING_AREA, _ANGLE or _UNIFORM, got " + std::to_string(w));
+  }
+}
+
+// Copies a Vec3 property, 3 floats per slot.
+template <typename Prop>
+void copy_vec3(const Prop& prop, std::size_t slots, float* buffer, std::uint64_t capacity, std::uint64_t* out_count) {
+  const std::uint64_t needed = 3 * std::uint64_t(slots);
+  *out_count = needed;
+  check_capacity(needed, buffer, capacity);
+  for (std::size_t i = 0; i < slots; ++i) {
+    const Vec3& n = prop.vector()[i];
+    buffer[3 * i] = n.x;
+    buffer[3 * i + 1] = n.y;
+    buffer[3 * i + 2] = n.z;
+  }
+}
+
+}  // namespace
+
+extern "C" {
+
+hedge_status hedge_mesh_geometry(const hedge_mesh* mesh, hedge_geometry* out_geometry) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const SurfaceMesh& m = object->mesh;
+    hedge_geometry& g = need(out_geometry, "out_geometry");
+    const BoundingBox box = bounding_box(m);
+    bool closed = true;
+    for (Halfedge h : m.halfedges())
+      if (m.is_boundary(h)) {
+        closed = false;
+        break;
+      }
+    g.area = surface_area(m);
+    g.volume = closed ? volume(m) : std::numeric_limits<double>::quiet_NaN();
+    g.closed = closed ? 1 : 0;
+    g.empty = box.empty ? 1 : 0;
+    for (int a = 0; a < 3; ++a) {
+      g.box_min[a] = box.min[a];
+      g.box_max[a] = box.max[a];
+    }
+  });
+}
+
+hedge_status hedge_face_normal(const hedge_mesh* mesh, uint32_t face, float* out_xyz) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const Face f = live_face(object->mesh, face);
+    need(out_xyz, "out_xyz");
+    const Vec3 n = face_normal(object->mesh, f);
+    out_xyz[0] = n.x;
+    out_xyz[1] = n.y;
+    out_xyz[2] = n.z;
+  });
+}
+
+hedge_status hedge_face_area(const hedge_mesh* mesh, uint32_t face, double* out_area) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const Face f = live_face(object->mesh, face);
+    need(out_area, "out_area") = face_area(object->mesh, f);
+  });
+}
+
+hedge_status hedge_mesh_compute_vertex_normals(hedge_mesh* mesh, int32_t weighting) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    compute_vertex_normals(object->mesh, to_weighting(weighting));
+  });
+}
+
+hedge_status hedge_mesh_compute_corner_normals(hedge_mesh* mesh, double crease_degrees, int32_t weighting) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const NormalWeighting w = to_weighting(weighting);
+    if (!(crease_degrees >= 0 && crease_degrees <= 180))
+      fail(HEDGE_ERROR_INVALID_ARGUMENT, "crease_degrees must be in 0..180, got " + std::to_string(crease_degrees));
+    compute_corner_normals(object->mesh, crease_degrees, w);
+  });
+}
+
+hedge_status hedge_mesh_copy_vertex_normals(const hedge_mesh* mesh, float* buffer, uint64_t capacity,
+                                            uint64_t* out_count) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const SurfaceMesh& m = object->mesh;
+    need(out_count, "out_count");
+    const auto normals = m.get_vertex_property<Vec3>("v:normal");
+    if (!normals)
+      fail(HEDGE_ERROR_INVALID_ARGUMENT, "the mesh has no vertex normals: compute them first "
+                                         "(hedge_mesh_compute_vertex_normals)");
+    copy_vec3(normals, m.vertex_slots(), buffer, capacity, out_count);
+  });
+}
+
+hedge_status hedge_mesh_copy_corner_normals(const hedge_mesh* mesh, float* buffer, uint64_t capacity,
+                                            uint64_t* out_count) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const SurfaceMesh& m = object->mesh;
+    need(out_count, "out_count");
+    const auto normals = m.get_halfedge_property<Vec3>("h:normal");
+    if (!normals)
+      fail(HEDGE_ERROR_INVALID_ARGUMENT, "the mesh has no corner normals: compute them first "
+                                         "(hedge_mesh_compute_corner_normals)");
+    copy_vec3(normals, m.halfedge_slots(), buffer, capacity, out_count);
+  });
+}
+
+}  // extern "C"
