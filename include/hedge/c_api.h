@@ -447,6 +447,38 @@ HEDGE_API hedge_status hedge_mesh_copy_corner_normals(const hedge_mesh* mesh, fl
                                                       uint64_t* out_count);
 
 /* ============================================================================================ */
+/* Smoothing (hedge/algorithms/smooth.h)                                                        */
+/* ============================================================================================ */
+
+typedef enum hedge_smooth_method {
+  HEDGE_SMOOTH_UNIFORM = 0,   /**< the average of the neighbours */
+  HEDGE_SMOOTH_TAUBIN = 1,    /**< lambda|mu steps: removes noise without shrinking */
+  HEDGE_SMOOTH_COTANGENT = 2  /**< cotangent weights (triangle meshes only) */
+} hedge_smooth_method;
+
+/** Layout (32 bytes): method @0, iterations @4 (int32_t), lambda @8, mu @16 (double), fix_boundary
+ *  @24, reserved @28 (int32_t). */
+typedef struct hedge_smooth_options {
+  int32_t method;       /**< HEDGE_SMOOTH_* */
+  int32_t iterations;   /**< 0..100000 */
+  double lambda;        /**< the step toward the average, in (0, 1] */
+  double mu;            /**< Taubin's inflating step, in [-1, -lambda) */
+  int32_t fix_boundary; /**< 1: boundary vertices stay; 0: they move along the boundary */
+  int32_t reserved;     /**< 0 */
+} hedge_smooth_options;
+
+/** Fills *out_options with the defaults: uniform, 10 iterations, lambda 0.5, mu -0.53, boundary fixed. */
+HEDGE_API hedge_status hedge_smooth_options_default(hedge_smooth_options* out_options);
+/** Smooths the positions of the live vertices (render objects see the moves at their next sync).
+ *  \param options NULL for the defaults.
+ *  \param mask optional (NULL with mask_count 0): one byte per vertex slot; only vertices with a
+ *         nonzero byte move.
+ *  Options out of range, a mask of another size, or cotangent weights on a mesh with a face that is
+ *  not a triangle: HEDGE_ERROR_INVALID_ARGUMENT, and the mesh is unchanged. */
+HEDGE_API hedge_status hedge_mesh_smooth(hedge_mesh* mesh, const hedge_smooth_options* options, const uint8_t* mask,
+                                         uint32_t mask_count);
+
+/* ============================================================================================ */
 /* Files (hedge/io/io.h): OBJ, OFF, PLY, STL, chosen by the extension                           */
 /* ============================================================================================ */
 

@@ -1497,6 +1497,51 @@ static void test_geometry(void) {
   CHECK_OK(hedge_mesh_destroy(cube));
 }
 
+static void test_smooth(void) {
+  hedge_smooth_options o;
+  memset(&o, 0xFF, sizeof o);
+  CHECK(sizeof o == 32);
+  CHECK_OK(hedge_smooth_options_default(&o));
+  CHECK(o.method == HEDGE_SMOOTH_UNIFORM && o.iterations == 10 && o.lambda == 0.5 && o.fix_boundary == 1);
+  /* The grid with its middle vertex (4) lifted: smoothing pulls it down, the boundary stays. */
+  float lifted[27];
+  memcpy(lifted, kGridPositions, sizeof lifted);
+  lifted[3 * 4 + 2] = 1;
+  hedge_mesh* grid = make_mesh(lifted, 9, kGridQuads, 16, kGridSizes, 4);
+  float p[3];
+  CHECK_OK(hedge_mesh_smooth(grid, NULL, NULL, 0));
+  CHECK_OK(hedge_mesh_get_position(grid, 4, p));
+  CHECK(p[2] < 0.01f && p[2] >= 0);
+  CHECK_OK(hedge_mesh_get_position(grid, 0, p));
+  CHECK(p[0] == 0 && p[1] == 0 && p[2] == 0);
+  /* A mask that excludes vertex 4: nothing moves. */
+  hedge_mesh* again = make_mesh(lifted, 9, kGridQuads, 16, kGridSizes, 4);
+  uint8_t mask[9] = {1, 1, 1, 1, 0, 1, 1, 1, 1};
+  CHECK_OK(hedge_mesh_smooth(again, NULL, mask, 9));
+  CHECK_OK(hedge_mesh_get_position(again, 4, p));
+  CHECK(p[2] == 1);
+  CHECK_STATUS(hedge_mesh_smooth(again, NULL, mask, 8), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_smooth(again, NULL, NULL, 9), HEDGE_ERROR_INVALID_ARGUMENT);
+  /* Cotangent weights on quads, a bad method, a bad lambda: refused, nothing moves. */
+  o.method = HEDGE_SMOOTH_COTANGENT;
+  CHECK_STATUS(hedge_mesh_smooth(again, &o, NULL, 0), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("triangles");
+  o.method = 9;
+  CHECK_STATUS(hedge_mesh_smooth(again, &o, NULL, 0), HEDGE_ERROR_INVALID_ARGUMENT);
+  o.method = HEDGE_SMOOTH_TAUBIN;
+  o.lambda = 3;
+  CHECK_STATUS(hedge_mesh_smooth(again, &o, NULL, 0), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_OK(hedge_mesh_get_position(again, 4, p));
+  CHECK(p[2] == 1);
+  o.lambda = 0.5;
+  CHECK_OK(hedge_mesh_smooth(again, &o, NULL, 0));
+  CHECK_OK(hedge_mesh_get_position(again, 4, p));
+  CHECK(p[2] < 1);
+  CHECK_STATUS(hedge_smooth_options_default(NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_OK(hedge_mesh_destroy(again));
+  CHECK_OK(hedge_mesh_destroy(grid));
+}
+
 int main(void) {
   test_basics();
   test_tetrahedron();
@@ -1509,6 +1554,7 @@ int main(void) {
   test_render();
   test_render_lifetime();
   test_geometry();
+  test_smooth();
   test_every_function_error_path();
   printf("c_api_test: %d checks passed\n", g_checks);
   return 0;

@@ -26,5 +26,6 @@ Command add_stress_command(CLI::App& parent);
 Command add_render_buffers_command(CLI::App& parent);
 Command add_render_command(CLI::App& parent);
 Command add_tour_command(CLI::App& parent);
+Command add_smooth_command(CLI::App& parent);
 
 }  // namespace hedge::cli

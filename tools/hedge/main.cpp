@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
       add_render_buffers_command(app),
       add_render_command(app),
       add_tour_command(app),
+      add_smooth_command(app),
   };
 
   try {

@@ -278,6 +278,14 @@ namespace Hedge
         // Geometry and normals
         // =========================================================================================
 
+        /// <summary>Smooths the positions of the live vertices; render buffers see the moves at their next sync.</summary>
+        /// <param name="options">Method, iterations and steps; see <see cref="SmoothOptions.Default"/>.</param>
+        /// <param name="mask">Optional (null): one byte per vertex slot; only vertices with a nonzero byte move.</param>
+        public void Smooth(SmoothOptions options, byte[] mask = null)
+        {
+            Status.Check(Native.hedge_mesh_smooth(id, ref options, mask, mask != null ? (uint)mask.Length : 0));
+        }
+
         /// <summary>Area, volume (NaN unless closed) and bounding box of the mesh (one native call, O(n)).</summary>
         public MeshGeometry Geometry
         {

@@ -44,6 +44,12 @@ namespace Hedge
         internal static extern int hedge_mesh_copy_positions(IntPtr mesh, [Out] float[] buffer, ulong capacity,
             out ulong count);
 
+        // ---- Smoothing ----
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_smooth_options_default(out SmoothOptions options);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_smooth(IntPtr mesh, ref SmoothOptions options, byte[] mask, uint maskCount);
+
         // ---- Geometry and normals ----
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_mesh_geometry(IntPtr mesh, out MeshGeometry geometry);

@@ -142,6 +142,47 @@ namespace Hedge
         Uniform = 2,
     }
 
+    /// <summary>How <see cref="HalfEdgeMesh.Smooth"/> weighs the neighbours.</summary>
+    public enum SmoothMethod
+    {
+        /// <summary>The average of the neighbours.</summary>
+        Uniform = 0,
+        /// <summary>Taubin's lambda|mu steps: removes noise without shrinking.</summary>
+        Taubin = 1,
+        /// <summary>Cotangent weights: follows the geometry, not the tessellation (triangle meshes only).</summary>
+        Cotangent = 2,
+    }
+
+    /// <summary>Options of <see cref="HalfEdgeMesh.Smooth"/> (32 bytes, hedge_smooth_options). Start from
+    /// <see cref="Default"/>.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmoothOptions
+    {
+        public SmoothMethod Method;
+        /// <summary>0..100000; a Taubin iteration is its two steps.</summary>
+        public int Iterations;
+        /// <summary>The step toward the average, in (0, 1].</summary>
+        public double Lambda;
+        /// <summary>Taubin's inflating step, in [-1, -Lambda).</summary>
+        public double Mu;
+        int fixBoundary;
+        int reserved;
+
+        /// <summary>Boundary vertices stay where they are (else they move along the boundary).</summary>
+        public bool FixBoundary { get { return fixBoundary != 0; } set { fixBoundary = value ? 1 : 0; } }
+
+        /// <summary>Uniform, 10 iterations, lambda 0.5, mu -0.53, boundary fixed.</summary>
+        public static SmoothOptions Default
+        {
+            get
+            {
+                SmoothOptions o;
+                Status.Check(Native.hedge_smooth_options_default(out o));
+                return o;
+            }
+        }
+    }
+
     /// <summary>Measures of a whole mesh (48 bytes, hedge_geometry).</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct MeshGeometry

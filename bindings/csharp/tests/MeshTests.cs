@@ -74,6 +74,7 @@ namespace Hedge.Tests
             r.Add("MeshTests.DetachAndGarbageCollection", DetachAndGarbageCollection);
             r.Add("MeshTests.OriginalNamesForward", OriginalNamesForward);
             r.Add("MeshTests.GeometryAndNormals", GeometryAndNormals);
+            r.Add("MeshTests.SmoothingPullsALiftedVertexDown", SmoothingPullsALiftedVertexDown);
         }
 
         // A unit cube of 12 triangles: area, volume, box, face normals, vertex normals along the diagonals,
@@ -122,6 +123,32 @@ namespace Hedge.Tests
             }
         }
 
+        // A 2 x 2 grid of quads with its middle vertex lifted: every method but cotangent (quads) pulls it down,
+        // the boundary stays, and a mask keeps it where it is.
+        static void SmoothingPullsALiftedVertexDown()
+        {
+            float[] positions = { 0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 1, 2, 1, 0, 0, 2, 0, 1, 2, 0, 2, 2, 0 };
+            uint[] quads = { 0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 7 };
+            uint[] sizes = { 4, 4, 4, 4 };
+            BuildReport report;
+            using (var mesh = HalfEdgeMesh.FromPolygons(positions, quads, sizes, BuildOptions.Default, out report))
+            {
+                SmoothOptions o = SmoothOptions.Default;
+                Check.Equal(10, o.Iterations);
+                Check.True(o.FixBoundary, "boundary fixed by default");
+                var mask = new byte[9];
+                mesh.Smooth(o, mask);
+                Check.True(mesh.GetPosition(new Vertex(4)).Z == 1f, "masked out");
+                o.Method = SmoothMethod.Cotangent;
+                Check.Throws(HedgeStatus.InvalidArgument, () => mesh.Smooth(o));
+                o.Method = SmoothMethod.Taubin;
+                mesh.Smooth(o);
+                Check.True(mesh.GetPosition(new Vertex(4)).Z < 0.5f, "pulled down: " + mesh.GetPosition(new Vertex(4)).Z);
+                Check.True(mesh.GetPosition(new Vertex(0)) == new Vec3(0, 0, 0), "the boundary stays");
+                Check.Valid(mesh, "after smoothing");
+            }
+        }
+
         // The original project's names do exactly what the names they stand for do: the same edits on two
         // copies of one mesh give the same results.
         static void OriginalNamesForward()
@@ -166,6 +193,8 @@ namespace Hedge.Tests
             Check.Equal(32, (int)Marshal.OffsetOf(typeof(BuildReport), "Repairs"));
             Check.Equal(32, Marshal.SizeOf(typeof(MeshCounts)), "hedge_counts");
             Check.Equal(48, Marshal.SizeOf(typeof(MeshGeometry)), "hedge_geometry");
+            Check.Equal(32, Marshal.SizeOf(typeof(SmoothOptions)), "hedge_smooth_options");
+            Check.Equal(16, (int)Marshal.OffsetOf(typeof(SmoothOptions), "Mu"));
             Check.Equal(24, (int)Marshal.OffsetOf(typeof(MeshGeometry), "BoxMin"));
             Check.Equal(24, Marshal.SizeOf(typeof(RenderOptions)), "hedge_render_options");
             Check.Equal(16, (int)Marshal.OffsetOf(typeof(RenderOptions), "Winding"));

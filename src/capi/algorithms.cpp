@@ -1,4 +1,5 @@
-// The C ABI: geometry and normals (hedge/algorithms/geometry.h, normals.h).
+// The C ABI: the algorithms on a whole mesh: geometry, normals and smoothing
+// (hedge/algorithms/geometry.h, normals.h, smooth.h).
 #include <cmath>
 #include <limits>
 #include <string>
@@ -6,6 +7,7 @@
 #include "capi_internal.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/normals.h"
+#include "hedge/algorithms/smooth.h"
 
 using namespace hedge;
 using namespace hedge::capi;
@@ -126,6 +128,51 @@ hedge_status hedge_mesh_copy_corner_normals(const hedge_mesh* mesh, float* buffe
       fail(HEDGE_ERROR_INVALID_ARGUMENT, "the mesh has no corner normals: compute them first "
                                          "(hedge_mesh_compute_corner_normals)");
     copy_vec3(normals, m.halfedge_slots(), buffer, capacity, out_count);
+  });
+}
+
+hedge_status hedge_smooth_options_default(hedge_smooth_options* out_options) {
+  return guard([&] {
+    hedge_smooth_options& o = need(out_options, "out_options");
+    const SmoothOptions d;
+    o.method = HEDGE_SMOOTH_UNIFORM;
+    o.iterations = d.iterations;
+    o.lambda = d.lambda;
+    o.mu = d.mu;
+    o.fix_boundary = d.fix_boundary ? 1 : 0;
+    o.reserved = 0;
+  });
+}
+
+hedge_status hedge_mesh_smooth(hedge_mesh* mesh, const hedge_smooth_options* options, const uint8_t* mask,
+                               uint32_t mask_count) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    SurfaceMesh& m = object->mesh;
+    hedge_smooth_options o;
+    if (options != nullptr) {
+      o = *options;
+    } else {
+      hedge_smooth_options_default(&o);
+    }
+    SmoothOptions s;
+    switch (o.method) {
+      case HEDGE_SMOOTH_UNIFORM: s.method = SmoothMethod::uniform; break;
+      case HEDGE_SMOOTH_TAUBIN: s.method = SmoothMethod::taubin; break;
+      case HEDGE_SMOOTH_COTANGENT: s.method = SmoothMethod::cotangent; break;
+      default:
+        fail(HEDGE_ERROR_INVALID_ARGUMENT, "method must be HEDGE_SMOOTH_UNIFORM, _TAUBIN or _COTANGENT, got " +
+                                               std::to_string(o.method));
+    }
+    s.iterations = o.iterations;
+    s.lambda = o.lambda;
+    s.mu = o.mu;
+    s.fix_boundary = need_bool(o.fix_boundary, "fix_boundary");
+    if (mask_count != 0) {
+      need_array(mask, mask_count, "mask");
+      s.mask = std::span<const std::uint8_t>(mask, mask_count);
+    }
+    smooth(m, s);  // its InvalidInputError becomes HEDGE_ERROR_INVALID_ARGUMENT, the mesh unchanged
   });
 }
 

@@ -1,0 +1,50 @@
+// Smoothing: moves vertices toward a weighted average of their neighbours, a given number of times.
+//
+//  - uniform: the average of the neighbours (the umbrella operator). Shrinks a closed surface a
+//    little with every iteration.
+//  - taubin: Taubin's lambda|mu filter, a shrinking step (lambda > 0) then an inflating one
+//    (mu < -lambda) per iteration: it removes noise without the shrinkage.
+//  - cotangent: the cotangent-weighted Laplacian, which follows the surface's geometry rather than
+//    its tessellation: a flat region stays where it is, and vertices slide less along the surface.
+//    Needs triangles. Negative weights (obtuse angles) are clamped to zero, which keeps the explicit
+//    steps stable.
+//
+// All three are explicit (Jacobi) steps: every vertex moves from the positions of the previous
+// step. Boundary vertices stay fixed unless asked otherwise; then they move along the boundary only
+// (the average of their two boundary neighbours), so that an open surface keeps its outline's shape.
+// A mask restricts the smoothing to some vertices. The positions' changes are marked in the change
+// log (ChangeEvent::vertices_moved), once per call.
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "hedge/core/surface_mesh.h"
+
+namespace hedge {
+
+enum class SmoothMethod { uniform, taubin, cotangent };
+
+struct SmoothOptions {
+  SmoothMethod method = SmoothMethod::uniform;
+  //! Iterations; a Taubin iteration is its two steps.
+  int iterations = 10;
+  //! The step toward the average, in (0, 1].
+  double lambda = 0.5;
+  //! Taubin's inflating step: negative, with |mu| > lambda (the default gives a pass band of about
+  //! 0.1 with lambda = 0.5).
+  double mu = -0.53;
+  //! Keep boundary vertices where they are; otherwise they move along the boundary.
+  bool fix_boundary = true;
+  //! Empty: every vertex may move. Else one entry per vertex slot; only vertices whose entry is
+  //! nonzero move (their neighbours still count in the averages).
+  std::span<const std::uint8_t> mask;
+};
+
+//! Smooths the positions of the live vertices. O(iterations x (V + E)).
+//! \throw InvalidInputError, leaving the mesh unchanged, for iterations outside 0..100000, lambda
+//!   outside (0, 1], a Taubin mu that is not below -lambda, a mask of the wrong size, or cotangent
+//!   weights on a mesh with a face that is not a triangle (the message names it).
+void smooth(SurfaceMesh& mesh, const SmoothOptions& options = {});
+
+}  // namespace hedge

@@ -1,0 +1,95 @@
+#include "hedge/algorithms/smooth.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "hedge/error.h"
+
+namespace hedge {
+
+namespace {
+
+void check(const SurfaceMesh& m, const SmoothOptions& o) {
+  if (o.iterations < 0 || o.iterations > 100000)
+    throw InvalidInputError("smooth: iterations must be in 0..100000, got " + std::to_string(o.iterations));
+  if (!(o.lambda > 0 && o.lambda <= 1))
+    throw InvalidInputError("smooth: lambda must be in (0, 1], got " + std::to_string(o.lambda));
+  if (o.method == SmoothMethod::taubin && !(o.mu < -o.lambda && o.mu >= -1))
+    throw InvalidInputError("smooth: Taubin's mu must be in [-1, -lambda), got " + std::to_string(o.mu));
+  if (!o.mask.empty() && o.mask.size() != m.vertex_slots())
+    throw InvalidInputError("smooth: the mask has " + std::to_string(o.mask.size()) + " entries for " +
+                            std::to_string(m.vertex_slots()) + " vertex slots");
+  if (o.method == SmoothMethod::cotangent)
+    for (Face f : m.faces())
+      if (m.valence(f) != 3)
+        throw InvalidInputError("smooth: cotangent weights need triangles, and face " + std::to_string(f.idx()) +
+                                " has " + std::to_string(m.valence(f)) + " corners (triangulate first)");
+}
+
+// The cotangent weight of every edge slot: half the sum of the cotangents of the angles opposite it,
+// clamped to zero; boundary edges have one angle.
+void cotangent_weights(const SurfaceMesh& m, const std::vector<Vec3d>& p, std::vector<double>& w) {
+  w.assign(m.edge_slots(), 0);
+  for (Face f : m.faces()) {
+    const Halfedge h0 = m.halfedge(f), h1 = m.next(h0), h2 = m.next(h1);
+    const Halfedge hs[3] = {h0, h1, h2};
+    for (const Halfedge h : hs) {
+      // The angle at the corner opposite h: at to_vertex(next(h)), between its two other sides.
+      const Vec3d a = p[m.from_vertex(h).idx()], b = p[m.to_vertex(h).idx()], c = p[m.to_vertex(m.next(h)).idx()];
+      const Vec3d u = a - c, v = b - c;
+      const Vec3d x = cross(u, v);
+      const double s = std::sqrt(dot(x, x));
+      if (s > 0) w[SurfaceMesh::edge(h).idx()] += 0.5 * dot(u, v) / s;
+    }
+  }
+  for (double& x : w) x = std::max(0.0, x);
+}
+
+}  // namespace
+
+void smooth(SurfaceMesh& m, const SmoothOptions& o) {
+  check(m, o);
+  if (o.iterations == 0 || m.n_vertices() == 0) return;
+  const std::size_t nv = m.vertex_slots();
+  std::vector<Vec3d> p(nv), next(nv);
+  for (Vertex v : m.vertices()) p[v.idx()] = to_double(m.position(v));
+  // Which vertices move, and how: 0 fixed, 1 interior, 2 along the boundary.
+  std::vector<std::uint8_t> mode(nv, 0);
+  for (Vertex v : m.vertices()) {
+    if (m.is_isolated(v) || (!o.mask.empty() && o.mask[v.idx()] == 0)) continue;
+    mode[v.idx()] = m.is_boundary(v) ? (o.fix_boundary ? 0 : 2) : 1;
+  }
+  std::vector<double> w;
+  auto step = [&](double factor) {
+    if (o.method == SmoothMethod::cotangent) cotangent_weights(m, p, w);
+    for (Vertex v : m.vertices()) {
+      const std::size_t i = v.idx();
+      next[i] = p[i];
+      if (mode[i] == 0) continue;
+      Vec3d sum{0, 0, 0};
+      double weight = 0;
+      for (Halfedge h : m.halfedges(v)) {
+        if (mode[i] == 2 && !m.is_boundary(SurfaceMesh::edge(h))) continue;
+        const double wi = o.method == SmoothMethod::cotangent && mode[i] == 1 ? w[SurfaceMesh::edge(h).idx()] : 1.0;
+        sum += p[m.to_vertex(h).idx()] * wi;
+        weight += wi;
+      }
+      if (weight > 0) next[i] = p[i] + (sum * (1 / weight) - p[i]) * factor;
+    }
+    std::swap(p, next);
+  };
+  for (int it = 0; it < o.iterations; ++it) {
+    step(o.lambda);
+    if (o.method == SmoothMethod::taubin) step(o.mu);
+  }
+  for (Vertex v : m.vertices()) {
+    if (mode[v.idx()] == 0) continue;
+    m.position(v) = to_float(p[v.idx()]);
+    m.mark_changed(v, ChangeEvent::vertices_moved);
+  }
+  m.changes().notify();
+}
+
+}  // namespace hedge

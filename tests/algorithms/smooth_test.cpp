@@ -1,0 +1,176 @@
+#include "hedge/algorithms/smooth.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "hedge/algorithms/geometry.h"
+#include "hedge/core/build.h"
+#include "hedge/core/changes.h"
+#include "hedge/error.h"
+#include "hedge/io/io.h"
+#include "test_meshes.h"
+
+namespace hedge {
+namespace {
+
+// An n x n grid of triangles in z = 0, its interior vertices jittered in x and y (irregular but
+// flat) and, with noise > 0, in z.
+SurfaceMesh bumpy_grid(int n, float jitter, float noise, unsigned seed) {
+  IndexedMesh in = test::grid(n, true);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-1, 1);
+  for (Vec3& p : in.positions) {
+    const bool interior = p.x > 0 && p.y > 0 && p.x < n && p.y < n;
+    if (!interior) continue;
+    p.x += jitter * u(rng);
+    p.y += jitter * u(rng);
+    p.z += noise * u(rng);
+  }
+  return build(in);
+}
+
+double z_spread(const SurfaceMesh& m) {
+  double s = 0;
+  for (Vertex v : m.vertices()) s += double(m.position(v).z) * m.position(v).z;
+  return std::sqrt(s / double(m.n_vertices()));
+}
+
+TEST(Smooth, UniformRemovesNoiseAndKeepsTheBoundary) {
+  SurfaceMesh m = bumpy_grid(10, 0, 0.3f, 1);
+  const SurfaceMesh before = m;
+  const double spread = z_spread(m);
+  smooth(m, {.method = SmoothMethod::uniform, .iterations = 20});
+  EXPECT_LT(z_spread(m), 0.2 * spread);
+  for (Vertex v : m.vertices())
+    if (m.is_boundary(v)) EXPECT_EQ(m.position(v), before.position(v));
+  EXPECT_TRUE(m.validate().empty());
+}
+
+// A flat patch of a triangular lattice (all angles near 60 degrees), its interior vertices jittered
+// in the plane: irregular, but with no obtuse angle.
+SurfaceMesh jittered_lattice(int n, float jitter, unsigned seed) {
+  IndexedMesh in;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-1, 1);
+  const float h = std::sqrt(3.f) / 2;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      Vec3 p{float(i) + 0.5f * float(j % 2), h * float(j), 0};
+      if (i > 0 && j > 0 && i < n && j < n) p += Vec3{jitter * u(rng), jitter * u(rng), 0};
+      in.positions.push_back(p);
+    }
+  auto id = [&](int i, int j) { return Index(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Index a = id(i, j), b = id(i + 1, j), c = id(i, j + 1), d = id(i + 1, j + 1);
+      if (j % 2 == 0) in.indices.insert(in.indices.end(), {a, b, c, b, d, c});
+      else in.indices.insert(in.indices.end(), {a, b, d, a, d, c});
+    }
+  return build(in);
+}
+
+TEST(Smooth, CotangentLeavesAFlatIrregularMeshInPlace) {
+  // On a plane the cotangent Laplacian of the positions is zero: nothing moves (up to rounding),
+  // while the uniform one pulls the jittered vertices toward their neighbours' centroid.
+  SurfaceMesh cot = jittered_lattice(8, 0.12f, 2);
+  SurfaceMesh uni = cot;
+  const SurfaceMesh before = cot;
+  smooth(cot, {.method = SmoothMethod::cotangent, .iterations = 5});
+  smooth(uni, {.method = SmoothMethod::uniform, .iterations = 5});
+  double cot_move = 0, uni_move = 0;
+  for (Vertex v : before.vertices()) {
+    cot_move = std::max(cot_move, double(norm(cot.position(v) - before.position(v))));
+    uni_move = std::max(uni_move, double(norm(uni.position(v) - before.position(v))));
+    EXPECT_EQ(cot.position(v).z, 0);
+  }
+  EXPECT_LT(cot_move, 1e-5);
+  EXPECT_GT(uni_move, 0.03);
+  EXPECT_TRUE(cot.validate().empty());
+}
+
+TEST(Smooth, TaubinShrinksFarLessThanUniform) {
+  const SurfaceMesh start = read_mesh(test::data_path("spot_triangulated.obj"));
+  const double v0 = volume(start);
+  SurfaceMesh uni = start, taubin = start, cot = start;
+  smooth(uni, {.method = SmoothMethod::uniform, .iterations = 10});
+  smooth(taubin, {.method = SmoothMethod::taubin, .iterations = 10});
+  smooth(cot, {.method = SmoothMethod::cotangent, .iterations = 10});
+  const double lost_uniform = 1 - volume(uni) / v0, lost_taubin = std::abs(1 - volume(taubin) / v0);
+  EXPECT_GT(lost_uniform, 0.05);
+  EXPECT_LT(lost_taubin, 0.25 * lost_uniform);
+  EXPECT_GT(1 - volume(cot) / v0, 0);  // the cotangent flow shrinks too
+  EXPECT_TRUE(uni.validate().empty());
+  EXPECT_TRUE(taubin.validate().empty());
+  EXPECT_TRUE(cot.validate().empty());
+}
+
+TEST(Smooth, AFreeBoundaryMovesAlongItself) {
+  SurfaceMesh m = bumpy_grid(6, 0, 0.2f, 3);
+  // One iteration: every side vertex has two collinear boundary neighbours and stays on its side;
+  // only the four corners are pulled inside.
+  smooth(m, {.method = SmoothMethod::uniform, .iterations = 1, .fix_boundary = false});
+  int moved_corners = 0;
+  for (Vertex v : m.vertices()) {
+    if (!m.is_boundary(v)) continue;
+    const Vec3 p = m.position(v);
+    // Sides stay on their lines; corners are pulled inside.
+    const bool on_side = p.x == 0 || p.y == 0 || p.x == 6 || p.y == 6;
+    const bool corner_moved = !on_side;
+    moved_corners += corner_moved;
+    EXPECT_EQ(p.z, 0);
+  }
+  EXPECT_EQ(moved_corners, 4);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Smooth, TheMaskChoosesWhoMoves) {
+  SurfaceMesh m = bumpy_grid(6, 0, 0.3f, 4);
+  const SurfaceMesh before = m;
+  std::vector<std::uint8_t> mask(m.vertex_slots(), 0);
+  mask[24] = 1;  // (3, 3), an interior vertex
+  smooth(m, {.iterations = 5, .mask = mask});
+  for (Vertex v : m.vertices()) {
+    if (v.idx() == 24) EXPECT_NE(m.position(v), before.position(v));
+    else EXPECT_EQ(m.position(v), before.position(v));
+  }
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Smooth, MovesAreMarkedOnce) {
+  SurfaceMesh m = bumpy_grid(4, 0, 0.3f, 5);
+  const ChangeConsumer watch(m.watch_changes());
+  int notified = 0;
+  m.changes().subscribe(ChangeEvent::vertices_moved, [&](ChangeEvent) { ++notified; });
+  smooth(m, {.iterations = 7});
+  EXPECT_EQ(notified, 1);
+  EXPECT_EQ(watch.pending().vertices.size(), 9u);  // the 3 x 3 interior vertices
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Smooth, BadOptionsChangeNothing) {
+  SurfaceMesh m = bumpy_grid(4, 0, 0.3f, 6);
+  const SurfaceMesh before = m;
+  EXPECT_THROW(smooth(m, {.iterations = -1}), InvalidInputError);
+  EXPECT_THROW(smooth(m, {.lambda = 0}), InvalidInputError);
+  EXPECT_THROW(smooth(m, {.lambda = std::nan("")}), InvalidInputError);
+  EXPECT_THROW(smooth(m, {.method = SmoothMethod::taubin, .mu = -0.2}), InvalidInputError);
+  std::vector<std::uint8_t> short_mask(3, 1);
+  EXPECT_THROW(smooth(m, {.mask = short_mask}), InvalidInputError);
+  SurfaceMesh quads = build(test::grid(3, false));
+  try {
+    smooth(quads, {.method = SmoothMethod::cotangent});
+    FAIL() << "cotangent weights on quads";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("face 0 has 4 corners"), std::string::npos) << e.what();
+  }
+  for (Vertex v : m.vertices()) EXPECT_EQ(m.position(v), before.position(v));
+  smooth(quads, {.method = SmoothMethod::taubin, .iterations = 2});  // polygons are fine otherwise
+  EXPECT_TRUE(quads.validate().empty());
+  EXPECT_TRUE(m.validate().empty());
+}
+
+}  // namespace
+}  // namespace hedge
