@@ -15,6 +15,7 @@
 #include "commands.h"
 #include "hedge/algorithms/detach_faces.h"
 #include "hedge/algorithms/fill_hole.h"
+#include "hedge/algorithms/smooth.h"
 #include "hedge/algorithms/split_all_faces.h"
 #include "hedge/core/operations.h"
 #include "hedge/error.h"
@@ -142,8 +143,18 @@ int run_tour(const TourOptions& o) {
     r.wireframe = true;
     r.shading = Shading::flat;
     add("split all faces (1-to-3)", split, ms, r, base + "_split.obj");
+
+    // 4. The split mesh smoothed: Taubin's filter, which does not shrink it.
+    t = Clock::now();
+    SmoothOptions taubin;
+    taubin.method = SmoothMethod::taubin;
+    smooth(split, taubin);
+    const double smooth_ms = ms_since(t);
+    RenderOptions sr;
+    sr.wireframe = true;
+    add("then smoothed (Taubin, 10 iterations)", split, smooth_ms, sr, base + "_smooth.obj");
   }
-  // 4. A hole cut around the vertex nearest the eye, then 5. filled again.
+  // 5. A hole cut around the vertex nearest the eye, then 6. filled again.
   const Vertex centre = front_vertex(mesh, camera);
   if (centre.is_valid() && faces_near(mesh, centre, 1).size() < mesh.n_faces()) {
     // Rings around it until the hole is about a sixtieth of the mesh, keeping at least half.
@@ -186,7 +197,7 @@ int run_tour(const TourOptions& o) {
     f.shading = Shading::flat;
     add("hole filled: " + std::to_string(filled_faces) + " new faces", filled, fill_ms, f, base + "_filled.obj");
 
-    // 6. The half-edge diagram of the faces around that vertex, detached as a mesh of their own.
+    // 7. The half-edge diagram of the faces around that vertex, detached as a mesh of their own.
     SurfaceMesh rest = mesh;
     t = Clock::now();
     const SurfaceMesh patch = detach_faces(rest, faces_near(mesh, centre, 1));
@@ -206,7 +217,7 @@ int run_tour(const TourOptions& o) {
   }
 
   const std::string sheet_path = base + "_tour.png";
-  write_png(contact_sheet(panels, 3), sheet_path);
+  write_png(contact_sheet(panels, 4), sheet_path);
 
   std::printf("%-34s %9s %9s %6s %6s %9s %9s\n", "stage", "vertices", "faces", "holes", "valid", "edit ms",
               "draw ms");
@@ -228,8 +239,8 @@ int run_tour(const TourOptions& o) {
 Command add_tour_command(CLI::App& parent) {
   auto o = std::make_shared<TourOptions>();
   CLI::App* app = parent.add_subcommand(
-      "tour", "Show what hedge does to a mesh: load and repair, validate, split all faces, cut a hole and fill "
-              "it, the half-edge diagram of one vertex's faces; writes a contact sheet PNG of every stage, the "
+      "tour", "Show what hedge does to a mesh: load and repair, validate, split all faces and smooth, cut a hole "
+              "and fill it, the half-edge diagram of one vertex's faces; writes a contact sheet PNG of every stage, the "
               "edited meshes, and prints counts and timings");
   app->add_option("FILE", o->input, "Mesh file (.obj, .off, .ply, .stl)")->required();
   app->add_option("--out", o->out_dir, "Folder for the pictures and meshes (created if missing)")
