@@ -1,0 +1,244 @@
+#include "hedge/algorithms/subdivide.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "hedge/algorithms/geometry.h"
+#include "hedge/core/build.h"
+#include "hedge/core/changes.h"
+#include "hedge/core/operations.h"
+#include "hedge/error.h"
+#include "hedge/io/io.h"
+#include "test_meshes.h"
+
+namespace hedge {
+namespace {
+
+struct Counts {
+  std::size_t v, e, f, loops;
+};
+Counts counts(const SurfaceMesh& m) { return {m.n_vertices(), m.n_edges(), m.n_faces(), m.boundary_loops().size()}; }
+
+TEST(Subdivide, CountsAfterStepsOnClosedAndOpenMeshes) {
+  for (Subdivision scheme : {Subdivision::loop, Subdivision::midpoint}) {
+    SurfaceMesh tet = build(test::tetrahedron());
+    subdivide(tet, scheme, 1);
+    EXPECT_EQ(tet.n_vertices(), 10u);
+    EXPECT_EQ(tet.n_edges(), 24u);
+    EXPECT_EQ(tet.n_faces(), 16u);
+    subdivide(tet, scheme, 2);
+    EXPECT_EQ(tet.n_faces(), 256u);
+    EXPECT_EQ(long(tet.n_vertices()) - long(tet.n_edges()) + long(tet.n_faces()), 2);
+    EXPECT_TRUE(tet.validate().empty()) << tet.validate().front();
+
+    SurfaceMesh grid = build(test::grid(3, true));  // 16 V, 33 E, 18 F, one loop of 12 edges
+    const Counts c = counts(grid);
+    subdivide(grid, scheme, 1);
+    EXPECT_EQ(grid.n_vertices(), c.v + c.e);
+    EXPECT_EQ(grid.n_edges(), 2 * c.e + 3 * c.f);
+    EXPECT_EQ(grid.n_faces(), 4 * c.f);
+    EXPECT_EQ(grid.boundary_loops().size(), 1u);
+    std::size_t boundary_edges = 0;
+    for (Edge e : grid.edges()) boundary_edges += grid.is_boundary(e);
+    EXPECT_EQ(boundary_edges, 24u);
+    EXPECT_TRUE(grid.validate().empty()) << grid.validate().front();
+  }
+}
+
+TEST(Subdivide, MidpointKeepsTheShape) {
+  SurfaceMesh m = read_mesh(test::data_path("spot_triangulated.obj"));
+  const SurfaceMesh before = m;
+  const double v0 = volume(m), a0 = surface_area(m);
+  subdivide(m, Subdivision::midpoint, 2);
+  EXPECT_NEAR(volume(m), v0, 1e-6 * std::abs(v0));
+  EXPECT_NEAR(surface_area(m), a0, 1e-6 * a0);
+  for (Vertex v : before.vertices()) EXPECT_EQ(m.position(v), before.position(v));  // old vertices keep index and place
+  EXPECT_TRUE(m.validate().empty());
+}
+
+// A regular triangular lattice (every interior vertex of valence 6).
+IndexedMesh lattice(int n) {
+  IndexedMesh in;
+  const float h = std::sqrt(3.f) / 2;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) in.positions.push_back({float(i) + 0.5f * float(j % 2), h * float(j), 0});
+  auto id = [&](int i, int j) { return Index(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Index a = id(i, j), b = id(i + 1, j), c = id(i, j + 1), d = id(i + 1, j + 1);
+      if (j % 2 == 0) in.indices.insert(in.indices.end(), {a, b, c, b, d, c});
+      else in.indices.insert(in.indices.end(), {a, b, d, a, d, c});
+    }
+  return in;
+}
+
+TEST(Subdivide, LoopReproducesLinearFunctionsInTheInterior) {
+  IndexedMesh in = lattice(10);
+  for (Vec3& p : in.positions) p.z = 0.3f * p.x + 0.2f * p.y + 1;
+  SurfaceMesh m = build(in);
+  subdivide(m, Subdivision::loop, 2);
+  int checked = 0;
+  for (Vertex v : m.vertices()) {
+    const Vec3 p = m.position(v);
+    if (p.x < 2.5f || p.x > 7.5f || p.y < 2.5f || p.y > 6.0f) continue;  // away from the boundary rules
+    EXPECT_NEAR(p.z, 0.3f * p.x + 0.2f * p.y + 1, 1e-5);
+    ++checked;
+  }
+  EXPECT_GT(checked, 100);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Subdivide, LoopConvergesToTheLimitPositionOfARegularVertex) {
+  // A regular vertex's limit under Loop's scheme is p/2 + (sum of its 6 neighbours)/12.
+  IndexedMesh in = lattice(10);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-0.5f, 0.5f);
+  for (Vec3& p : in.positions) p.z = u(rng);
+  SurfaceMesh m = build(in);
+  const Vertex centre(Index(5 * 11 + 5));
+  ASSERT_EQ(m.valence(centre), 6u);
+  Vec3d sum{0, 0, 0};
+  for (Vertex w : m.vertices(centre)) sum += to_double(m.position(w));
+  const Vec3d limit = to_double(m.position(centre)) * 0.5 + sum * (1.0 / 12);
+  subdivide(m, Subdivision::loop, 6);  // old vertices keep their index
+  EXPECT_NEAR(m.position(centre).x, limit.x, 2e-3);
+  EXPECT_NEAR(m.position(centre).y, limit.y, 2e-3);
+  EXPECT_NEAR(m.position(centre).z, limit.z, 2e-3);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Subdivide, LoopBoundaryFollowsTheCurveRules) {
+  IndexedMesh in = test::grid(4, true);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(-0.3f, 0.3f);
+  for (Vec3& p : in.positions) p.z = u(rng);
+  SurfaceMesh m = build(in);
+  const SurfaceMesh before = m;
+  subdivide(m, Subdivision::loop, 1);
+  for (Vertex v : before.vertices()) {
+    if (!before.is_boundary(v)) continue;
+    Vec3d ends{0, 0, 0};
+    for (Halfedge h : before.halfedges(v))
+      if (before.is_boundary(SurfaceMesh::edge(h))) ends += to_double(before.position(before.to_vertex(h)));
+    const Vec3d want = to_double(before.position(v)) * 0.75 + ends * 0.125;
+    EXPECT_NEAR(m.position(v).z, want.z, 1e-6);
+    EXPECT_NEAR(m.position(v).x, want.x, 1e-6);
+  }
+  for (Edge e : before.edges()) {
+    if (!before.is_boundary(e)) continue;
+    const Vertex mid(Index(before.vertex_slots() + e.idx()));
+    const Vec3 a = before.position(before.vertex(e, 0)), b = before.position(before.vertex(e, 1));
+    EXPECT_NEAR(m.position(mid).z, 0.5f * (a.z + b.z), 1e-6);
+  }
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Subdivide, CreaseEdgesStaySharp) {
+  // The triangulated cube with its 12 cube edges marked: they stay straight and the corners stay.
+  SurfaceMesh m = build(test::cube());
+  {
+    IndexedMesh tri;
+    tri.positions = test::cube().positions;
+    tri.indices = {0, 3, 2, 0, 2, 1, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
+                   1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+    m = build(tri);
+  }
+  auto crease = m.add_edge_property<std::uint8_t>("e:crease", 0);
+  for (Edge e : m.edges()) {
+    const Vec3 d = m.position(m.vertex(e, 0)) - m.position(m.vertex(e, 1));
+    const int axes = (d.x != 0) + (d.y != 0) + (d.z != 0);
+    crease[e] = axes == 1;  // a cube edge, not a face diagonal
+  }
+  subdivide(m, Subdivision::loop, 2);
+  const BoundingBox box = bounding_box(m);
+  EXPECT_EQ(box.min, (Vec3{0, 0, 0}));
+  EXPECT_EQ(box.max, (Vec3{1, 1, 1}));
+  for (Index corner = 0; corner < 8; ++corner)
+    EXPECT_EQ(m.position(Vertex(corner)), test::cube().positions[corner]);
+  // Every vertex on a crease edge lies on a cube edge: two of its coordinates are 0 or 1.
+  const auto c = m.get_edge_property<std::uint8_t>("e:crease");
+  for (Edge e : m.edges()) {
+    if (!c[e]) continue;
+    for (int i = 0; i < 2; ++i) {
+      const Vec3 p = m.position(m.vertex(e, i));
+      const int on = (p.x == 0 || p.x == 1) + (p.y == 0 || p.y == 1) + (p.z == 0 || p.z == 1);
+      EXPECT_GE(on, 2);
+    }
+  }
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Subdivide, CornerTexcoordsKeepTheirSeams) {
+  SurfaceMesh m = read_mesh(test::data_path("spot_triangulated.obj"));
+  const auto uv = m.get_halfedge_property<Vec2>("h:texcoord");
+  ASSERT_TRUE(uv);
+  // A seam edge: the two faces disagree on the texcoords at one of its ends.
+  auto seams = [](const SurfaceMesh& s) {
+    const auto t = s.get_halfedge_property<Vec2>("h:texcoord");
+    std::size_t n = 0;
+    for (Edge e : s.edges()) {
+      const Halfedge h = SurfaceMesh::halfedge(e, 0), g = SurfaceMesh::twin(h);
+      if (s.is_boundary(h) || s.is_boundary(g)) continue;
+      // h enters to(h); in g's face the corner at to(h) is entered by the half-edge before g.
+      Halfedge before_g = g;
+      while (s.next(before_g) != g) before_g = s.next(before_g);
+      Halfedge before_h = h;
+      while (s.next(before_h) != h) before_h = s.next(before_h);
+      n += !(t[h] == t[before_g]) || !(t[g] == t[before_h]);
+    }
+    return n;
+  };
+  const std::size_t seams_before = seams(m);
+  ASSERT_GT(seams_before, 10u);
+  subdivide(m, Subdivision::loop, 1);
+  EXPECT_EQ(seams(m), 2 * seams_before);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Subdivide, FacePropertiesGoToTheChildrenAndTheLogResets) {
+  SurfaceMesh m = build(test::grid(2, true));
+  auto id = m.add_face_property<int>("f:id", -1);
+  for (Face f : m.faces()) id[f] = int(f.idx()) * 10;
+  const ChangeConsumer watch(m.watch_changes());
+  subdivide(m, Subdivision::loop);
+  EXPECT_TRUE(watch.pending().reset);
+  const auto after = m.get_face_property<int>("f:id");
+  for (Face f : m.faces()) EXPECT_EQ(after[f], int(f.idx() / 4) * 10);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Subdivide, DeletedElementsAreCollectedFirst) {
+  SurfaceMesh m = build(test::grid(3, true));
+  ASSERT_TRUE(remove_face(m, Face(4)));
+  const std::size_t faces = m.n_faces();
+  subdivide(m, Subdivision::loop);
+  EXPECT_EQ(m.n_faces(), 4 * faces);
+  EXPECT_FALSE(m.has_garbage());
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Subdivide, PolygonsAndBadStepsAreRefusedUnchanged) {
+  SurfaceMesh quads = build(test::grid(2, false));
+  try {
+    subdivide(quads, Subdivision::loop);
+    FAIL() << "quads were subdivided";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("face 0 has 4 corners"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(quads.n_faces(), 4u);
+  SurfaceMesh tet = build(test::tetrahedron());
+  EXPECT_THROW(subdivide(tet, Subdivision::loop, -1), InvalidInputError);
+  EXPECT_THROW(subdivide(tet, Subdivision::loop, 20), InvalidInputError);
+  EXPECT_EQ(tet.n_faces(), 4u);
+  subdivide(tet, Subdivision::midpoint, 0);
+  EXPECT_EQ(tet.n_faces(), 4u);
+  SurfaceMesh empty;
+  subdivide(empty, Subdivision::loop, 3);
+  EXPECT_EQ(empty.n_faces(), 0u);
+  EXPECT_TRUE(tet.validate().empty());
+}
+
+}  // namespace
+}  // namespace hedge
