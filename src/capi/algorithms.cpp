@@ -1,5 +1,5 @@
-// The C ABI: the algorithms on a whole mesh: geometry, normals and smoothing
-// (hedge/algorithms/geometry.h, normals.h, smooth.h).
+// The C ABI: the algorithms on a whole mesh: geometry, normals, smoothing and subdivision
+// (hedge/algorithms/geometry.h, normals.h, smooth.h, subdivide.h).
 #include <cmath>
 #include <limits>
 #include <string>
@@ -8,6 +8,7 @@
 #include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/normals.h"
 #include "hedge/algorithms/smooth.h"
+#include "hedge/algorithms/subdivide.h"
 
 using namespace hedge;
 using namespace hedge::capi;
@@ -173,6 +174,17 @@ hedge_status hedge_mesh_smooth(hedge_mesh* mesh, const hedge_smooth_options* opt
       s.mask = std::span<const std::uint8_t>(mask, mask_count);
     }
     smooth(m, s);  // its InvalidInputError becomes HEDGE_ERROR_INVALID_ARGUMENT, the mesh unchanged
+  });
+}
+
+hedge_status hedge_mesh_subdivide(hedge_mesh* mesh, int32_t scheme, int32_t steps) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    if (scheme != HEDGE_SUBDIVISION_LOOP && scheme != HEDGE_SUBDIVISION_MIDPOINT)
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "scheme must be HEDGE_SUBDIVISION_LOOP or _MIDPOINT, got " + std::to_string(scheme));
+    if (steps < 0 || steps > 12) fail(HEDGE_ERROR_INVALID_ARGUMENT, "steps must be in 0..12, got " + std::to_string(steps));
+    subdivide(object->mesh, scheme == HEDGE_SUBDIVISION_LOOP ? Subdivision::loop : Subdivision::midpoint, steps);
   });
 }
 

@@ -1542,6 +1542,38 @@ static void test_smooth(void) {
   CHECK_OK(hedge_mesh_destroy(grid));
 }
 
+static void test_subdivide(void) {
+  hedge_mesh* tet = make_mesh(kTetPositions, 4, kTetTriangles, 12, NULL, 0);
+  CHECK_OK(hedge_mesh_subdivide(tet, HEDGE_SUBDIVISION_LOOP, 2));
+  hedge_counts c = counts_of(tet);
+  CHECK(c.faces == 64 && c.vertices == 34 && c.edges == 96);
+  uint32_t problems = 1;
+  CHECK_OK(hedge_mesh_validate(tet, &problems));
+  CHECK(problems == 0);
+  CHECK_STATUS(hedge_mesh_subdivide(tet, 5, 1), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_subdivide(tet, HEDGE_SUBDIVISION_MIDPOINT, 13), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_subdivide(tet, HEDGE_SUBDIVISION_MIDPOINT, 12), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("2^31");
+  CHECK(counts_of(tet).faces == 64);
+  /* Quads are refused, unchanged. */
+  hedge_mesh* grid = make_mesh(kGridPositions, 9, kGridQuads, 16, kGridSizes, 4);
+  CHECK_STATUS(hedge_mesh_subdivide(grid, HEDGE_SUBDIVISION_LOOP, 1), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("face 0 has 4 corners");
+  CHECK(counts_of(grid).faces == 4);
+  /* A render object of the mesh rebuilds at its next sync: 64 triangles. */
+  hedge_render* render = NULL;
+  CHECK_OK(hedge_render_create(tet, NULL, &render));
+  CHECK_OK(hedge_mesh_subdivide(tet, HEDGE_SUBDIVISION_MIDPOINT, 1));
+  hedge_sync_result sync;
+  CHECK_OK(hedge_render_sync(render, &sync));
+  hedge_buffer_counts bc;
+  CHECK_OK(hedge_render_counts(render, &bc));
+  CHECK(bc.triangles == 256);
+  CHECK_OK(hedge_render_destroy(render));
+  CHECK_OK(hedge_mesh_destroy(grid));
+  CHECK_OK(hedge_mesh_destroy(tet));
+}
+
 int main(void) {
   test_basics();
   test_tetrahedron();
@@ -1555,6 +1587,7 @@ int main(void) {
   test_render_lifetime();
   test_geometry();
   test_smooth();
+  test_subdivide();
   test_every_function_error_path();
   printf("c_api_test: %d checks passed\n", g_checks);
   return 0;

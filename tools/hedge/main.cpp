@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
       add_render_command(app),
       add_tour_command(app),
       add_smooth_command(app),
+      add_subdivide_command(app),
   };
 
   try {

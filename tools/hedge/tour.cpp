@@ -17,6 +17,7 @@
 #include "hedge/algorithms/fill_hole.h"
 #include "hedge/algorithms/smooth.h"
 #include "hedge/algorithms/split_all_faces.h"
+#include "hedge/algorithms/subdivide.h"
 #include "hedge/core/operations.h"
 #include "hedge/error.h"
 #include "load.h"
@@ -144,7 +145,17 @@ int run_tour(const TourOptions& o) {
     r.shading = Shading::flat;
     add("split all faces (1-to-3)", split, ms, r, base + "_split.obj");
 
-    // 4. The split mesh smoothed: Taubin's filter, which does not shrink it.
+    // 4. The split mesh (triangles) through one step of Loop's subdivision.
+    {
+      SurfaceMesh loop = split;
+      t = Clock::now();
+      subdivide(loop, Subdivision::loop, 1);
+      const double loop_ms = ms_since(t);
+      RenderOptions lr;
+      lr.wireframe = true;
+      add("then Loop subdivision", loop, loop_ms, lr, base + "_loop.obj");
+    }
+    // 5. The split mesh smoothed instead: Taubin's filter, which does not shrink it.
     t = Clock::now();
     SmoothOptions taubin;
     taubin.method = SmoothMethod::taubin;
@@ -152,9 +163,9 @@ int run_tour(const TourOptions& o) {
     const double smooth_ms = ms_since(t);
     RenderOptions sr;
     sr.wireframe = true;
-    add("then smoothed (Taubin, 10 iterations)", split, smooth_ms, sr, base + "_smooth.obj");
+    add("or smoothed (Taubin, 10 iterations)", split, smooth_ms, sr, base + "_smooth.obj");
   }
-  // 5. A hole cut around the vertex nearest the eye, then 6. filled again.
+  // 6. A hole cut around the vertex nearest the eye, then 7. filled again.
   const Vertex centre = front_vertex(mesh, camera);
   if (centre.is_valid() && faces_near(mesh, centre, 1).size() < mesh.n_faces()) {
     // Rings around it until the hole is about a sixtieth of the mesh, keeping at least half.
@@ -197,7 +208,7 @@ int run_tour(const TourOptions& o) {
     f.shading = Shading::flat;
     add("hole filled: " + std::to_string(filled_faces) + " new faces", filled, fill_ms, f, base + "_filled.obj");
 
-    // 7. The half-edge diagram of the faces around that vertex, detached as a mesh of their own.
+    // 8. The half-edge diagram of the faces around that vertex, detached as a mesh of their own.
     SurfaceMesh rest = mesh;
     t = Clock::now();
     const SurfaceMesh patch = detach_faces(rest, faces_near(mesh, centre, 1));
@@ -239,7 +250,8 @@ int run_tour(const TourOptions& o) {
 Command add_tour_command(CLI::App& parent) {
   auto o = std::make_shared<TourOptions>();
   CLI::App* app = parent.add_subcommand(
-      "tour", "Show what hedge does to a mesh: load and repair, validate, split all faces and smooth, cut a hole "
+      "tour", "Show what hedge does to a mesh: load and repair, validate, split all faces, Loop-subdivide and "
+              "smooth, cut a hole "
               "and fill it, the half-edge diagram of one vertex's faces; writes a contact sheet PNG of every stage, the "
               "edited meshes, and prints counts and timings");
   app->add_option("FILE", o->input, "Mesh file (.obj, .off, .ply, .stl)")->required();

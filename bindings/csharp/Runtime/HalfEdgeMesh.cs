@@ -278,6 +278,16 @@ namespace Hedge
         // Geometry and normals
         // =========================================================================================
 
+        /// <summary>Refines every triangle 1-to-4, steps times (0..12). Every index changes, as after
+        /// <see cref="GarbageCollection"/>: old vertex v keeps index v, the vertex of edge e is VertexSlots + e. Render
+        /// buffers rebuild at their next sync. A face that is not a triangle: HedgeException (InvalidArgument), and the
+        /// mesh is unchanged.</summary>
+        public void Subdivide(Subdivision scheme, int steps = 1)
+        {
+            pendingRenders.Drain();
+            Status.Check(Native.hedge_mesh_subdivide(id, (int)scheme, steps));
+        }
+
         /// <summary>Smooths the positions of the live vertices; render buffers see the moves at their next sync.</summary>
         /// <param name="options">Method, iterations and steps; see <see cref="SmoothOptions.Default"/>.</param>
         /// <param name="mask">Optional (null): one byte per vertex slot; only vertices with a nonzero byte move.</param>

@@ -44,6 +44,10 @@ namespace Hedge
         internal static extern int hedge_mesh_copy_positions(IntPtr mesh, [Out] float[] buffer, ulong capacity,
             out ulong count);
 
+        // ---- Subdivision ----
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_subdivide(IntPtr mesh, int scheme, int steps);
+
         // ---- Smoothing ----
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_smooth_options_default(out SmoothOptions options);

@@ -75,6 +75,7 @@ namespace Hedge.Tests
             r.Add("MeshTests.OriginalNamesForward", OriginalNamesForward);
             r.Add("MeshTests.GeometryAndNormals", GeometryAndNormals);
             r.Add("MeshTests.SmoothingPullsALiftedVertexDown", SmoothingPullsALiftedVertexDown);
+            r.Add("MeshTests.SubdivisionRefinesAndRenderBuffersFollow", SubdivisionRefinesAndRenderBuffersFollow);
         }
 
         // A unit cube of 12 triangles: area, volume, box, face normals, vertex normals along the diagonals,
@@ -120,6 +121,33 @@ namespace Hedge.Tests
                     Check.Equal(24u, buffers.Counts.Vertices, "hard edges split the cube's corners");
                 }
                 Check.Valid(cube, "after the normals");
+            }
+        }
+
+        // Loop subdivision of a tetrahedron: 4 -> 16 -> 64 faces, still closed and valid; its render buffers
+        // rebuild at the next sync; quads are refused unchanged.
+        static void SubdivisionRefinesAndRenderBuffersFollow()
+        {
+            float[] positions = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+            uint[] triangles = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 };
+            using (var tet = HalfEdgeMesh.FromTriangles(positions, triangles))
+            using (RenderBuffers buffers = tet.CreateRenderBuffers())
+            {
+                double before = tet.Geometry.Volume;
+                tet.Subdivide(Subdivision.Loop, 2);
+                Check.Equal(64, tet.FaceCount);
+                Check.True(tet.Geometry.Closed && tet.Geometry.Volume < before, "smaller, still closed");
+                buffers.Sync();
+                Check.Equal(64u, buffers.Counts.Triangles, "the buffers follow");
+                Check.Throws(HedgeStatus.InvalidArgument, () => tet.Subdivide(Subdivision.Midpoint, 20));
+                Check.Valid(tet, "after subdividing");
+            }
+            float[] grid = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };
+            BuildReport report;
+            using (var quad = HalfEdgeMesh.FromPolygons(grid, new uint[] { 0, 1, 2, 3 }, new uint[] { 4 }, BuildOptions.Default, out report))
+            {
+                Check.Throws(HedgeStatus.InvalidArgument, () => quad.Subdivide(Subdivision.Loop));
+                Check.Equal(1, quad.FaceCount);
             }
         }
 

@@ -1,0 +1,42 @@
+// hedge subdivide, run as a user would.
+#include <string>
+
+#include "cli_fixture.h"
+
+namespace {
+
+using namespace cli_test;
+
+TEST_F(HedgeCli, SubdivideMultipliesTheFacesAndKeepsTheMeshValid) {
+  const fs::path out = tmp("sub.ply");
+  const Result r = run({"subdivide", data("tet.obj"), out.string(), "--scheme", "loop", "--steps", "3"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = run_json({"info", out.string(), "--json"});
+  EXPECT_EQ(j["faces"], 256);
+  EXPECT_EQ(j["euler_characteristic"], 2);
+  EXPECT_TRUE(j["valid"].get<bool>());
+  // Loop shrinks a tetrahedron toward a rounder, smaller body.
+  const json before = run_json({"info", data("tet.obj"), "--json"});
+  EXPECT_LT(j["volume"].get<double>(), before["volume"].get<double>());
+
+  const fs::path mid = tmp("mid.obj");
+  ASSERT_EQ(run({"subdivide", data("tet.obj"), mid.string(), "--scheme", "midpoint"}).code, 0);
+  const json m = run_json({"info", mid.string(), "--json"});
+  EXPECT_EQ(m["faces"], 16);
+  EXPECT_NEAR(m["volume"].get<double>(), before["volume"].get<double>(), 1e-6);
+
+  const fs::path split = tmp("split.obj");
+  ASSERT_EQ(run({"subdivide", data("spot_control_mesh.obj"), split.string(), "--scheme", "split-faces"}).code, 0);
+  EXPECT_EQ(run_json({"info", split.string(), "--json"})["faces"], 732);
+}
+
+TEST_F(HedgeCli, SubdivideRefusesPolygonsForLoopAndBadOptions) {
+  const fs::path out = tmp("x.obj");
+  expect_data_error({"subdivide", data("spot_control_mesh.obj"), out.string()}, "triangles");
+  expect_usage_error({"subdivide", data("tet.obj"), out.string(), "--scheme", "butterfly"});
+  expect_usage_error({"subdivide", data("tet.obj"), out.string(), "--steps", "40"});
+  expect_data_error({"subdivide", data("tet.obj"), tmp("x.xyz").string()}, "x.xyz");
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
