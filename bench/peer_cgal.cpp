@@ -7,6 +7,7 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/subdivision_method_3.h>
 #include <CGAL/version.h>
 
 #include <memory>
@@ -102,6 +103,13 @@ std::unique_ptr<MeshBox> copy_mesh(const MeshBox& reference) {
   return box;
 }
 SMesh& edit_mesh(Context& c) { return static_cast<SMBox*>(c.mesh)->m; }
+
+//! One step of CGAL's Subdivision_method_3::Loop_subdivision on the private copy. Returns #V + #F.
+double loop_op(Context& c) {
+  SMesh& m = edit_mesh(c);
+  CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(1));
+  return static_cast<double>(m.number_of_vertices() + m.number_of_faces());
+}
 
 //! Random half-edge h (removed ones redrawn), Euler::does_satisfy_link_condition(edge(h)) (the
 //! documented precondition of Euler::collapse_edge on a triangle mesh besides triangulation), then
@@ -217,6 +225,7 @@ Backend cgal_backend() {
   b.ops["collapse"] = {copy_mesh, collapse_op, check_edit<EditKind::collapse>};
   b.ops["split"] = {copy_mesh, split_op, check_edit<EditKind::split>};
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
+  b.ops["loop"] = {copy_mesh, loop_op};
   return b;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "bench_common.h"
+#include "hedge/algorithms/subdivide.h"
 #include "hedge/core/build.h"
 #include "hedge/core/operations.h"
 #include "hedge/core/surface_mesh.h"
@@ -75,11 +76,19 @@ double vertex_normals(Context& c) {
 }
 
 // ---- Random local edits: the same draws as the peers (EditRng), on a private copy. ----
+// (copy_mesh below also serves the subdivision, which refines a private copy.)
 
 std::unique_ptr<MeshBox> copy_mesh(const MeshBox& reference) {
   return std::make_unique<HBox>(hedge::SurfaceMesh(static_cast<const HBox&>(reference).m));
 }
 hedge::SurfaceMesh& edit_mesh(Context& c) { return static_cast<HBox*>(c.mesh)->m; }
+
+//! One step of Loop's subdivision of the private copy. Returns #V + #F after.
+double loop_op(Context& c) {
+  hedge::SurfaceMesh& m = edit_mesh(c);
+  hedge::subdivide(m, hedge::Subdivision::loop, 1);
+  return static_cast<double>(m.n_vertices() + m.n_faces());
+}
 
 //! Random half-edge (deleted ones redrawn), can_collapse, then collapse: from_vertex(h) merges into
 //! to_vertex(h), which keeps its position. Returns the number of collapses done.
@@ -163,6 +172,7 @@ Backend hedge_backend() {
   b.ops["collapse"] = {copy_mesh, collapse_op, check_edit<EditKind::collapse>};
   b.ops["split"] = {copy_mesh, split_op, check_edit<EditKind::split>};
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
+  b.ops["loop"] = {copy_mesh, loop_op};
   return b;
 }
 

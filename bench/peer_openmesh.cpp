@@ -2,6 +2,7 @@
 // public API only. Built the standard way: reserve, add_vertex for every vertex, add_face for
 // every triangle.
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 #include <OpenMesh/Tools/Utils/MeshCheckerT.hh>
 
 #include <cmath>
@@ -136,6 +137,16 @@ double split_op(Context& c) {
   return static_cast<double>(m.n_vertices() + m.n_faces());
 }
 
+//! One step of OpenMesh's Subdivider::Uniform::LoopT on the private copy. Returns #V + #F after.
+double loop_op(Context& c) {
+  OMesh& m = mesh_of(c);
+  OpenMesh::Subdivider::Uniform::LoopT<OMesh> loop;
+  loop.attach(m);
+  loop(1);
+  loop.detach();
+  return static_cast<double>(m.n_vertices() + m.n_faces());
+}
+
 //! Random edge, is_flip_ok, then flip. Returns the number of flips done.
 double flip_op(Context& c) {
   OMesh& m = mesh_of(c);
@@ -199,6 +210,7 @@ Backend openmesh_backend() {
   b.ops["collapse"] = {copy_mesh, collapse_op, check_edit<EditKind::collapse>};
   b.ops["split"] = {copy_mesh, split_op, check_edit<EditKind::split>};
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
+  b.ops["loop"] = {copy_mesh, loop_op};
   return b;
 }
 

@@ -74,6 +74,8 @@ const OpSpec kOps[] = {
     {"collapse", "random collapses (10^5 checked)", BarKind::faster, 2.0, kEditWorkTol, false, "collapses done"},
     {"split", "random edge splits (10^5)", BarKind::faster, 2.0, 0.0, false, "#V + #F after"},
     {"flip", "random flips (10^5 checked)", BarKind::faster, 2.0, kEditWorkTol, false, "flips done"},
+    // One step of Loop's scheme on a private copy (algorithms/subdivide.h).
+    {"loop", "Loop subdivision, one step", BarKind::faster, 3.0, 0.0, false, "#V + #F after"},
 };
 
 constexpr double kBytesPerVertexBar = 100.0;
