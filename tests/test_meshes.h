@@ -53,6 +53,26 @@ inline IndexedMesh cube() {
   return m;
 }
 
+//! A patch of the regular triangular lattice, (n + 1) x (n + 1) vertices in z = 0, rows offset by
+//! half a step: every interior vertex has valence 6 and every angle is 60 degrees.
+inline IndexedMesh triangle_lattice(int n) {
+  IndexedMesh in;
+  const float h = 0.8660254f;  // sqrt(3) / 2
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) in.positions.push_back({float(i) + 0.5f * float(j % 2), h * float(j), 0});
+  auto id = [&](int i, int j) { return static_cast<Index>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Index a = id(i, j), b = id(i + 1, j), c = id(i, j + 1), d = id(i + 1, j + 1);
+      if (j % 2 == 0) {
+        in.indices.insert(in.indices.end(), {a, b, c, b, d, c});
+      } else {
+        in.indices.insert(in.indices.end(), {a, b, d, a, d, c});
+      }
+    }
+  return in;
+}
+
 inline std::string data_path(const std::string& name) { return std::string(HEDGE_DATA_DIR) + "/" + name; }
 inline std::string shared_mesh_path(const std::string& name) {
   return std::string(HEDGE_SHARED_MESHES_DIR) + "/" + name;

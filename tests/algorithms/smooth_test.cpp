@@ -52,23 +52,11 @@ TEST(Smooth, UniformRemovesNoiseAndKeepsTheBoundary) {
 // A flat patch of a triangular lattice (all angles near 60 degrees), its interior vertices jittered
 // in the plane: irregular, but with no obtuse angle.
 SurfaceMesh jittered_lattice(int n, float jitter, unsigned seed) {
-  IndexedMesh in;
+  IndexedMesh in = test::triangle_lattice(n);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u(-1, 1);
-  const float h = std::sqrt(3.f) / 2;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      Vec3 p{float(i) + 0.5f * float(j % 2), h * float(j), 0};
-      if (i > 0 && j > 0 && i < n && j < n) p += Vec3{jitter * u(rng), jitter * u(rng), 0};
-      in.positions.push_back(p);
-    }
-  auto id = [&](int i, int j) { return Index(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const Index a = id(i, j), b = id(i + 1, j), c = id(i, j + 1), d = id(i + 1, j + 1);
-      if (j % 2 == 0) in.indices.insert(in.indices.end(), {a, b, c, b, d, c});
-      else in.indices.insert(in.indices.end(), {a, b, d, a, d, c});
-    }
+  for (int j = 1; j < n; ++j)
+    for (int i = 1; i < n; ++i) in.positions[std::size_t(j * (n + 1) + i)] += Vec3{jitter * u(rng), jitter * u(rng), 0};
   return build(in);
 }
 

@@ -58,24 +58,8 @@ TEST(Subdivide, MidpointKeepsTheShape) {
   EXPECT_TRUE(m.validate().empty());
 }
 
-// A regular triangular lattice (every interior vertex of valence 6).
-IndexedMesh lattice(int n) {
-  IndexedMesh in;
-  const float h = std::sqrt(3.f) / 2;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) in.positions.push_back({float(i) + 0.5f * float(j % 2), h * float(j), 0});
-  auto id = [&](int i, int j) { return Index(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const Index a = id(i, j), b = id(i + 1, j), c = id(i, j + 1), d = id(i + 1, j + 1);
-      if (j % 2 == 0) in.indices.insert(in.indices.end(), {a, b, c, b, d, c});
-      else in.indices.insert(in.indices.end(), {a, b, d, a, d, c});
-    }
-  return in;
-}
-
 TEST(Subdivide, LoopReproducesLinearFunctionsInTheInterior) {
-  IndexedMesh in = lattice(10);
+  IndexedMesh in = test::triangle_lattice(10);
   for (Vec3& p : in.positions) p.z = 0.3f * p.x + 0.2f * p.y + 1;
   SurfaceMesh m = build(in);
   subdivide(m, Subdivision::loop, 2);
@@ -92,7 +76,7 @@ TEST(Subdivide, LoopReproducesLinearFunctionsInTheInterior) {
 
 TEST(Subdivide, LoopConvergesToTheLimitPositionOfARegularVertex) {
   // A regular vertex's limit under Loop's scheme is p/2 + (sum of its 6 neighbours)/12.
-  IndexedMesh in = lattice(10);
+  IndexedMesh in = test::triangle_lattice(10);
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> u(-0.5f, 0.5f);
   for (Vec3& p : in.positions) p.z = u(rng);

@@ -4,14 +4,12 @@
 
 #include <string>
 
+#include "picture/picture_test_util.h"
+
 namespace hedge::picture {
 namespace {
 
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
+using test::count;
 
 TEST(ImageCanvas, PolygonsFillTheirInsideAndBlendTheirRim) {
   Image img(40, 40, {255, 255, 255});

@@ -11,11 +11,7 @@
 namespace hedge::picture {
 namespace {
 
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
+using test::count;
 
 // Two quads and two triangles in the plane z = 0: 11 edges, 8 of them on the boundary.
 SurfaceMesh patch() {

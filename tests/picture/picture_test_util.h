@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "hedge/core/build.h"
@@ -17,6 +18,13 @@ inline SurfaceMesh mesh_of(std::vector<Vec3> positions, std::vector<std::uint32_
   in.indices = std::move(indices);
   in.face_sizes = std::move(face_sizes);
   return build(in);
+}
+
+//! How often `what` occurs in `text`.
+inline std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
 }
 
 //! Looks down -z from z = 10; world (x, y) lands at pixel ((x + 1) / 2 * width, (1 - y) / 2 * height)

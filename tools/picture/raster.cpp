@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "colors.h"
+#include "hedge/algorithms/geometry.h"
 #include "hedge/error.h"
 
 namespace hedge::picture {
@@ -28,17 +29,6 @@ struct Tri {
 };
 
 enum EdgeClass : std::uint8_t { kNoLine = 0, kWire = 1, kFeature = 2, kBoundary = 3 };
-
-Vec3d newell_normal(const SurfaceMesh& m, Face f) {
-  Vec3d n{0, 0, 0};
-  for (Halfedge h : m.halfedges(f)) {
-    const Vec3d a = to_double(m.position(m.from_vertex(h))), b = to_double(m.position(m.to_vertex(h)));
-    n.x += (a.y - b.y) * (a.z + b.z);
-    n.y += (a.z - b.z) * (a.x + b.x);
-    n.z += (a.x - b.x) * (a.y + b.y);
-  }
-  return n;  // twice the area, for a planar face
-}
 
 Vec3d unit_or_zero(const Vec3d& v) {
   const double l = std::sqrt(dot(v, v));
@@ -164,7 +154,7 @@ Prepared prepare(const SurfaceMesh& m, const Projection& proj, const RenderOptio
   p.face_normal.assign(nf, Vec3{0, 0, 0});
   parallel_for(nf, threads, [&](std::size_t b, std::size_t e, unsigned) {
     for (std::size_t i = b; i < e; ++i)
-      if (!m.is_deleted(Face(Index(i)))) p.face_normal[i] = to_float(newell_normal(m, Face(Index(i))));
+      if (!m.is_deleted(Face(Index(i)))) p.face_normal[i] = to_float(area_vector(m, Face(Index(i))));
   });
   if (o.shading == Shading::smooth || o.color_by == ColorBy::curvature) {
     p.vertex_normal.assign(nv, Vec3{0, 0, 0});
