@@ -484,13 +484,15 @@ HEDGE_API hedge_status hedge_mesh_smooth(hedge_mesh* mesh, const hedge_smooth_op
 
 typedef enum hedge_subdivision {
   HEDGE_SUBDIVISION_LOOP = 0,     /**< Loop's scheme: smooth, triangle meshes */
-  HEDGE_SUBDIVISION_MIDPOINT = 1  /**< 1-to-4 at the edge midpoints: the shape is kept */
+  HEDGE_SUBDIVISION_MIDPOINT = 1,      /**< 1-to-4 at the edge midpoints: the shape is kept */
+  HEDGE_SUBDIVISION_CATMULL_CLARK = 2  /**< Catmull-Clark: any polygons, gives quads */
 } hedge_subdivision;
 
-/** Refines every triangle 1-to-4, steps times (0..12). Every index changes, as after garbage
+/** Subdivides steps times (0..12): Loop and midpoint refine triangles 1-to-4, Catmull-Clark turns
+ *  a face of n corners into n quads (Catmull-Clark's face points are vertex_slots + edge_slots + f). Every index changes, as after garbage
  *  collection: old vertex v keeps index v, the vertex of edge e is vertex_slots + e. Render objects
- *  of the mesh rebuild at their next sync. A face that is not a triangle, or a result beyond 2^31
- *  half-edges: HEDGE_ERROR_INVALID_ARGUMENT, and the mesh is unchanged. */
+ *  of the mesh rebuild at their next sync. A face that is not a triangle (Loop, midpoint), or a
+ *  result beyond 2^31 half-edges: HEDGE_ERROR_INVALID_ARGUMENT, and the mesh is unchanged. */
 HEDGE_API hedge_status hedge_mesh_subdivide(hedge_mesh* mesh, int32_t scheme, int32_t steps);
 
 /* ============================================================================================ */

@@ -180,11 +180,15 @@ hedge_status hedge_mesh_smooth(hedge_mesh* mesh, const hedge_smooth_options* opt
 hedge_status hedge_mesh_subdivide(hedge_mesh* mesh, int32_t scheme, int32_t steps) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    if (scheme != HEDGE_SUBDIVISION_LOOP && scheme != HEDGE_SUBDIVISION_MIDPOINT)
+    if (scheme != HEDGE_SUBDIVISION_LOOP && scheme != HEDGE_SUBDIVISION_MIDPOINT &&
+        scheme != HEDGE_SUBDIVISION_CATMULL_CLARK)
       fail(HEDGE_ERROR_INVALID_ARGUMENT,
-           "scheme must be HEDGE_SUBDIVISION_LOOP or _MIDPOINT, got " + std::to_string(scheme));
+           "scheme must be HEDGE_SUBDIVISION_LOOP, _MIDPOINT or _CATMULL_CLARK, got " + std::to_string(scheme));
     if (steps < 0 || steps > 12) fail(HEDGE_ERROR_INVALID_ARGUMENT, "steps must be in 0..12, got " + std::to_string(steps));
-    subdivide(object->mesh, scheme == HEDGE_SUBDIVISION_LOOP ? Subdivision::loop : Subdivision::midpoint, steps);
+    const Subdivision s = scheme == HEDGE_SUBDIVISION_LOOP       ? Subdivision::loop
+                          : scheme == HEDGE_SUBDIVISION_MIDPOINT ? Subdivision::midpoint
+                                                                 : Subdivision::catmull_clark;
+    subdivide(object->mesh, s, steps);
   });
 }
 

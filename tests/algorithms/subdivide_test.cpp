@@ -21,6 +21,23 @@ struct Counts {
 };
 Counts counts(const SurfaceMesh& m) { return {m.n_vertices(), m.n_edges(), m.n_faces(), m.boundary_loops().size()}; }
 
+// Seam edges: the two faces of an edge disagree on the texcoords at one of its ends.
+std::size_t seam_edges(const SurfaceMesh& s) {
+  const auto t = s.get_halfedge_property<Vec2>("h:texcoord");
+  std::size_t n = 0;
+  for (Edge e : s.edges()) {
+    const Halfedge h = SurfaceMesh::halfedge(e, 0), g = SurfaceMesh::twin(h);
+    if (s.is_boundary(h) || s.is_boundary(g)) continue;
+    // h enters to(h); in g's face the corner at to(h) is entered by the half-edge before g.
+    Halfedge before_g = g;
+    while (s.next(before_g) != g) before_g = s.next(before_g);
+    Halfedge before_h = h;
+    while (s.next(before_h) != h) before_h = s.next(before_h);
+    n += !(t[h] == t[before_g]) || !(t[g] == t[before_h]);
+  }
+  return n;
+}
+
 TEST(Subdivide, CountsAfterStepsOnClosedAndOpenMeshes) {
   for (Subdivision scheme : {Subdivision::loop, Subdivision::midpoint}) {
     SurfaceMesh tet = build(test::tetrahedron());
@@ -158,26 +175,10 @@ TEST(Subdivide, CornerTexcoordsKeepTheirSeams) {
   SurfaceMesh m = read_mesh(test::data_path("spot_triangulated.obj"));
   const auto uv = m.get_halfedge_property<Vec2>("h:texcoord");
   ASSERT_TRUE(uv);
-  // A seam edge: the two faces disagree on the texcoords at one of its ends.
-  auto seams = [](const SurfaceMesh& s) {
-    const auto t = s.get_halfedge_property<Vec2>("h:texcoord");
-    std::size_t n = 0;
-    for (Edge e : s.edges()) {
-      const Halfedge h = SurfaceMesh::halfedge(e, 0), g = SurfaceMesh::twin(h);
-      if (s.is_boundary(h) || s.is_boundary(g)) continue;
-      // h enters to(h); in g's face the corner at to(h) is entered by the half-edge before g.
-      Halfedge before_g = g;
-      while (s.next(before_g) != g) before_g = s.next(before_g);
-      Halfedge before_h = h;
-      while (s.next(before_h) != h) before_h = s.next(before_h);
-      n += !(t[h] == t[before_g]) || !(t[g] == t[before_h]);
-    }
-    return n;
-  };
-  const std::size_t seams_before = seams(m);
+  const std::size_t seams_before = seam_edges(m);
   ASSERT_GT(seams_before, 10u);
   subdivide(m, Subdivision::loop, 1);
-  EXPECT_EQ(seams(m), 2 * seams_before);
+  EXPECT_EQ(seam_edges(m), 2 * seams_before);
   EXPECT_TRUE(m.validate().empty());
 }
 
@@ -222,6 +223,92 @@ TEST(Subdivide, PolygonsAndBadStepsAreRefusedUnchanged) {
   subdivide(empty, Subdivision::loop, 3);
   EXPECT_EQ(empty.n_faces(), 0u);
   EXPECT_TRUE(tet.validate().empty());
+}
+
+
+// ---- Catmull-Clark ----
+
+TEST(CatmullClark, ACubeBecomesQuadsTendingToARoundBody) {
+  SurfaceMesh m = build(test::cube());
+  subdivide(m, Subdivision::catmull_clark, 1);
+  EXPECT_EQ(m.n_vertices(), 26u);
+  EXPECT_EQ(m.n_edges(), 48u);
+  EXPECT_EQ(m.n_faces(), 24u);
+  for (Face f : m.faces()) EXPECT_EQ(m.valence(f), 4u);
+  EXPECT_TRUE(m.validate().empty()) << m.validate().front();
+  double last_volume = 1;
+  auto roundness = [](const SurfaceMesh& s) {
+    double lo = 1e9, hi = 0;
+    for (Vertex v : s.vertices()) {
+      const double d = norm(to_double(s.position(v)) - Vec3d{0.5, 0.5, 0.5});
+      lo = std::min(lo, d), hi = std::max(hi, d);
+    }
+    return hi / lo;
+  };
+  for (int step = 0; step < 3; ++step) {
+    const double v = volume(m);
+    EXPECT_LT(v, last_volume);
+    last_volume = v;
+    subdivide(m, Subdivision::catmull_clark, 1);
+  }
+  EXPECT_LT(roundness(m), 1.1);  // the cube's own ratio is sqrt(3)
+  EXPECT_EQ(long(m.n_vertices()) - long(m.n_edges()) + long(m.n_faces()), 2);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(CatmullClark, AnyPolygonsBecomeOneQuadPerCorner) {
+  SurfaceMesh m = read_mesh(test::data_path("spot_control_mesh.obj"));  // 4 triangles, 160 quads, 16 pentagons
+  const Counts c = counts(m);
+  subdivide(m, Subdivision::catmull_clark, 1);
+  EXPECT_EQ(m.n_faces(), 4u * 3 + 160 * 4 + 16 * 5);
+  EXPECT_EQ(m.n_vertices(), c.v + c.e + c.f);
+  for (Face f : m.faces()) EXPECT_EQ(m.valence(f), 4u);
+  EXPECT_TRUE(m.validate().empty()) << m.validate().front();
+}
+
+TEST(CatmullClark, ReproducesALinearHeightFieldAndKeepsTheBoundaryRules) {
+  IndexedMesh in = test::grid(8, false);
+  for (Vec3& p : in.positions) p.z = 0.25f * p.x - 0.5f * p.y + 2;
+  SurfaceMesh m = build(in);
+  const SurfaceMesh before = m;
+  subdivide(m, Subdivision::catmull_clark, 2);
+  for (Vertex v : m.vertices()) {
+    const Vec3 p = m.position(v);
+    EXPECT_NEAR(p.z, 0.25f * p.x - 0.5f * p.y + 2, 1e-5);  // boundary curves are linear too
+  }
+  EXPECT_EQ(m.boundary_loops().size(), 1u);
+  // One step: a boundary vertex moves by the curve rule, 3/4 itself and 1/8 of each boundary neighbour.
+  SurfaceMesh one = before;
+  subdivide(one, Subdivision::catmull_clark, 1);
+  for (Vertex v : before.vertices()) {
+    if (!before.is_boundary(v)) continue;
+    Vec3d ends{0, 0, 0};
+    for (Halfedge h : before.halfedges(v))
+      if (before.is_boundary(SurfaceMesh::edge(h))) ends += to_double(before.position(before.to_vertex(h)));
+    const Vec3d want = to_double(before.position(v)) * 0.75 + ends * 0.125;
+    EXPECT_NEAR(one.position(v).x, want.x, 1e-6);
+    EXPECT_NEAR(one.position(v).y, want.y, 1e-6);
+  }
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(CatmullClark, TexcoordSeamsAndFacePropertiesFollow) {
+  SurfaceMesh m = read_mesh(test::data_path("spot_control_mesh.obj"));
+  ASSERT_TRUE(m.get_halfedge_property<Vec2>("h:texcoord"));
+  auto id = m.add_face_property<int>("f:id", -1);
+  for (Face f : m.faces()) id[f] = int(f.idx());
+  std::vector<int> corners_of(m.face_slots());
+  for (Face f : m.faces()) corners_of[f.idx()] = int(m.valence(f));
+  const std::size_t seams_before = seam_edges(m);
+  ASSERT_GT(seams_before, 0u);
+  subdivide(m, Subdivision::catmull_clark, 1);
+  EXPECT_EQ(seam_edges(m), 2 * seams_before);
+  // Each face's quads carry its id, as many as it had corners.
+  std::vector<int> quads_of(corners_of.size(), 0);
+  const auto after = m.get_face_property<int>("f:id");
+  for (Face f : m.faces()) ++quads_of[std::size_t(after[f])];
+  EXPECT_EQ(quads_of, corners_of);
+  EXPECT_TRUE(m.validate().empty());
 }
 
 }  // namespace

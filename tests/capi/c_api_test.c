@@ -1560,6 +1560,8 @@ static void test_subdivide(void) {
   CHECK_STATUS(hedge_mesh_subdivide(grid, HEDGE_SUBDIVISION_LOOP, 1), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_ERROR_HAS("face 0 has 4 corners");
   CHECK(counts_of(grid).faces == 4);
+  CHECK_OK(hedge_mesh_subdivide(grid, HEDGE_SUBDIVISION_CATMULL_CLARK, 1));
+  CHECK(counts_of(grid).faces == 16 && counts_of(grid).vertices == 25);
   /* A render object of the mesh rebuilds at its next sync: 64 triangles. */
   hedge_render* render = NULL;
   CHECK_OK(hedge_render_create(tet, NULL, &render));

@@ -32,7 +32,11 @@ int run_subdivide(const SubdivideCommandOptions& o) {
   if (o.scheme == "split-faces") {
     for (int s = 0; s < o.steps; ++s) split_all_faces(m);
   } else {
-    subdivide(m, o.scheme == "midpoint" ? Subdivision::midpoint : Subdivision::loop, o.steps);
+    subdivide(m,
+              o.scheme == "midpoint"         ? Subdivision::midpoint
+              : o.scheme == "catmull-clark" ? Subdivision::catmull_clark
+                                             : Subdivision::loop,
+              o.steps);
   }
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const std::filesystem::path parent = std::filesystem::path(o.output).parent_path();
@@ -53,10 +57,10 @@ Command add_subdivide_command(CLI::App& parent) {
   app->add_option("IN", o->input, "Input mesh file")->required();
   app->add_option("OUT", o->output, "Output mesh file; missing folders are created")->required();
   app->add_option("--scheme", o->scheme,
-                  "loop (smooth, triangles), midpoint (1-to-4, shape kept, triangles) or split-faces (1-to-3 at "
-                  "centroids, any polygons)")
+                  "loop (smooth, triangles), catmull-clark (smooth, any polygons, gives quads), midpoint (1-to-4, "
+                  "shape kept, triangles) or split-faces (1-to-3 at centroids, any polygons)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"loop", "midpoint", "split-faces"}));
+      ->check(CLI::IsMember({"loop", "catmull-clark", "midpoint", "split-faces"}));
   app->add_option("--steps", o->steps, "Steps")->capture_default_str()->check(CLI::Range(0, 12));
   app->add_flag("--ascii", o->ascii, "Write PLY and STL as text instead of binary");
   add_load_options(*app, o->load);

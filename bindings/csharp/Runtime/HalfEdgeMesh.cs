@@ -278,7 +278,8 @@ namespace Hedge
         // Geometry and normals
         // =========================================================================================
 
-        /// <summary>Refines every triangle 1-to-4, steps times (0..12). Every index changes, as after
+        /// <summary>Subdivides steps times (0..12): Loop and Midpoint refine triangles 1-to-4, CatmullClark turns a face of
+        /// n corners into n quads. Every index changes, as after
         /// <see cref="GarbageCollection"/>: old vertex v keeps index v, the vertex of edge e is VertexSlots + e. Render
         /// buffers rebuild at their next sync. A face that is not a triangle: HedgeException (InvalidArgument), and the
         /// mesh is unchanged.</summary>

@@ -142,13 +142,15 @@ namespace Hedge
         Uniform = 2,
     }
 
-    /// <summary>The 1-to-4 subdivision schemes of <see cref="HalfEdgeMesh.Subdivide"/> (triangle meshes).</summary>
+    /// <summary>The subdivision schemes of <see cref="HalfEdgeMesh.Subdivide"/>.</summary>
     public enum Subdivision
     {
         /// <summary>Loop's scheme: smooth.</summary>
         Loop = 0,
         /// <summary>New vertices at the edge midpoints: the shape is kept.</summary>
         Midpoint = 1,
+        /// <summary>Catmull-Clark: any polygons; a face of n corners becomes n quads.</summary>
+        CatmullClark = 2,
     }
 
     /// <summary>How <see cref="HalfEdgeMesh.Smooth"/> weighs the neighbours.</summary>

@@ -148,6 +148,9 @@ namespace Hedge.Tests
             {
                 Check.Throws(HedgeStatus.InvalidArgument, () => quad.Subdivide(Subdivision.Loop));
                 Check.Equal(1, quad.FaceCount);
+                quad.Subdivide(Subdivision.CatmullClark, 2);
+                Check.Equal(16, quad.FaceCount, "Catmull-Clark takes quads");
+                Check.Valid(quad, "after Catmull-Clark");
             }
         }
 
