@@ -104,6 +104,13 @@ std::unique_ptr<MeshBox> copy_mesh(const MeshBox& reference) {
 }
 SMesh& edit_mesh(Context& c) { return static_cast<SMBox*>(c.mesh)->m; }
 
+//! One step of CGAL's Subdivision_method_3::CatmullClark_subdivision on the private copy.
+double catmull_clark_op(Context& c) {
+  SMesh& m = edit_mesh(c);
+  CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(1));
+  return static_cast<double>(m.number_of_vertices() + m.number_of_faces());
+}
+
 //! One step of CGAL's Subdivision_method_3::Loop_subdivision on the private copy. Returns #V + #F.
 double loop_op(Context& c) {
   SMesh& m = edit_mesh(c);
@@ -226,6 +233,7 @@ Backend cgal_backend() {
   b.ops["split"] = {copy_mesh, split_op, check_edit<EditKind::split>};
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   b.ops["loop"] = {copy_mesh, loop_op};
+  b.ops["catmull_clark"] = {copy_mesh, catmull_clark_op};
   return b;
 }
 

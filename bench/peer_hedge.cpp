@@ -83,6 +83,13 @@ std::unique_ptr<MeshBox> copy_mesh(const MeshBox& reference) {
 }
 hedge::SurfaceMesh& edit_mesh(Context& c) { return static_cast<HBox*>(c.mesh)->m; }
 
+//! One step of Catmull-Clark on the private copy (of a triangle mesh: 3 quads a triangle).
+double catmull_clark_op(Context& c) {
+  hedge::SurfaceMesh& m = edit_mesh(c);
+  hedge::subdivide(m, hedge::Subdivision::catmull_clark, 1);
+  return static_cast<double>(m.n_vertices() + m.n_faces());
+}
+
 //! One step of Loop's subdivision of the private copy. Returns #V + #F after.
 double loop_op(Context& c) {
   hedge::SurfaceMesh& m = edit_mesh(c);
@@ -173,6 +180,7 @@ Backend hedge_backend() {
   b.ops["split"] = {copy_mesh, split_op, check_edit<EditKind::split>};
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   b.ops["loop"] = {copy_mesh, loop_op};
+  b.ops["catmull_clark"] = {copy_mesh, catmull_clark_op};
   return b;
 }
 

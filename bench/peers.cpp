@@ -76,6 +76,8 @@ const OpSpec kOps[] = {
     {"flip", "random flips (10^5 checked)", BarKind::faster, 2.0, kEditWorkTol, false, "flips done"},
     // One step of Loop's scheme on a private copy (algorithms/subdivide.h).
     {"loop", "Loop subdivision, one step", BarKind::faster, 3.0, 0.0, false, "#V + #F after"},
+    // Catmull-Clark of the triangle meshes (OpenMesh's CatmullClarkT needs a PolyMesh: n/a).
+    {"catmull_clark", "Catmull-Clark, one step", BarKind::faster, 2.0, 0.0, false, "#V + #F after"},
 };
 
 constexpr double kBytesPerVertexBar = 100.0;
