@@ -14,7 +14,7 @@ TEST_F(HedgeCli, TourWritesTheContactSheetAndEveryEditedMesh) {
   const std::string sheet = read_text(out / "spot_control_mesh_tour.png");
   ASSERT_GT(sheet.size(), 24u);
   EXPECT_EQ(sheet.compare(0, 8, "\x89PNG\r\n\x1a\n"), 0);
-  for (const char* stage : {"_split.obj", "_loop.obj", "_smooth.obj", "_hole.obj", "_filled.obj", "_patch.obj"}) {
+  for (const char* stage : {"_catmull_clark.obj", "_split.obj", "_loop.obj", "_smooth.obj", "_hole.obj", "_filled.obj", "_patch.obj"}) {
     const fs::path mesh = out / (std::string("spot_control_mesh") + stage);
     EXPECT_TRUE(fs::exists(mesh)) << mesh;
     const Result v = run({"validate", mesh.string()});
@@ -22,7 +22,7 @@ TEST_F(HedgeCli, TourWritesTheContactSheetAndEveryEditedMesh) {
   }
   // The table: a header and one row per stage, every one valid.
   EXPECT_NE(r.out.find("stage"), std::string::npos);
-  for (const char* stage : {"loaded", "split all faces", "Loop subdivision", "smoothed", "faces removed", "hole filled", "detached one-ring"})
+  for (const char* stage : {"loaded", "Catmull-Clark", "split all faces", "Loop subdivision", "smoothed", "faces removed", "hole filled", "detached one-ring"})
     EXPECT_NE(r.out.find(stage), std::string::npos) << stage;
   EXPECT_EQ(r.out.find(" NO "), std::string::npos) << r.out;
   // The split stage: 180 faces of 4.4 corners on average become 732 triangles.

@@ -134,7 +134,17 @@ int run_tour(const TourOptions& o) {
     r.color_by = ColorBy::valence;
     add("edges, valence colours", mesh, 0, r, "");
   }
-  // 3. Split all faces 1-to-3 at their centroids.
+  // 3. Catmull-Clark, twice: any polygons become quads, and the surface rounds off.
+  {
+    SurfaceMesh cc = mesh;
+    t = Clock::now();
+    subdivide(cc, Subdivision::catmull_clark, 2);
+    const double ms = ms_since(t);
+    RenderOptions r;
+    r.wireframe = true;
+    add("Catmull-Clark, 2 steps", cc, ms, r, base + "_catmull_clark.obj");
+  }
+  // 4. Split all faces 1-to-3 at their centroids.
   {
     SurfaceMesh split = mesh;
     t = Clock::now();
@@ -145,7 +155,7 @@ int run_tour(const TourOptions& o) {
     r.shading = Shading::flat;
     add("split all faces (1-to-3)", split, ms, r, base + "_split.obj");
 
-    // 4. The split mesh (triangles) through one step of Loop's subdivision.
+    // 5. The split mesh (triangles) through one step of Loop's subdivision.
     {
       SurfaceMesh loop = split;
       t = Clock::now();
@@ -155,7 +165,7 @@ int run_tour(const TourOptions& o) {
       lr.wireframe = true;
       add("then Loop subdivision", loop, loop_ms, lr, base + "_loop.obj");
     }
-    // 5. The split mesh smoothed instead: Taubin's filter, which does not shrink it.
+    // 6. The split mesh smoothed instead: Taubin's filter, which does not shrink it.
     t = Clock::now();
     SmoothOptions taubin;
     taubin.method = SmoothMethod::taubin;
@@ -165,7 +175,7 @@ int run_tour(const TourOptions& o) {
     sr.wireframe = true;
     add("or smoothed (Taubin, 10 iterations)", split, smooth_ms, sr, base + "_smooth.obj");
   }
-  // 6. A hole cut around the vertex nearest the eye, then 7. filled again.
+  // 7. A hole cut around the vertex nearest the eye, then 8. filled again.
   const Vertex centre = front_vertex(mesh, camera);
   if (centre.is_valid() && faces_near(mesh, centre, 1).size() < mesh.n_faces()) {
     // Rings around it until the hole is about a sixtieth of the mesh, keeping at least half.
@@ -208,7 +218,7 @@ int run_tour(const TourOptions& o) {
     f.shading = Shading::flat;
     add("hole filled: " + std::to_string(filled_faces) + " new faces", filled, fill_ms, f, base + "_filled.obj");
 
-    // 8. The half-edge diagram of the faces around that vertex, detached as a mesh of their own.
+    // 9. The half-edge diagram of the faces around that vertex, detached as a mesh of their own.
     SurfaceMesh rest = mesh;
     t = Clock::now();
     const SurfaceMesh patch = detach_faces(rest, faces_near(mesh, centre, 1));
@@ -228,7 +238,7 @@ int run_tour(const TourOptions& o) {
   }
 
   const std::string sheet_path = base + "_tour.png";
-  write_png(contact_sheet(panels, 4), sheet_path);
+  write_png(contact_sheet(panels, 3), sheet_path);
 
   std::printf("%-34s %9s %9s %6s %6s %9s %9s\n", "stage", "vertices", "faces", "holes", "valid", "edit ms",
               "draw ms");
@@ -250,8 +260,8 @@ int run_tour(const TourOptions& o) {
 Command add_tour_command(CLI::App& parent) {
   auto o = std::make_shared<TourOptions>();
   CLI::App* app = parent.add_subcommand(
-      "tour", "Show what hedge does to a mesh: load and repair, validate, split all faces, Loop-subdivide and "
-              "smooth, cut a hole "
+      "tour", "Show what hedge does to a mesh: load and repair, validate, Catmull-Clark, split all faces, "
+              "Loop-subdivide and smooth, cut a hole "
               "and fill it, the half-edge diagram of one vertex's faces; writes a contact sheet PNG of every stage, the "
               "edited meshes, and prints counts and timings");
   app->add_option("FILE", o->input, "Mesh file (.obj, .off, .ply, .stl)")->required();
