@@ -38,6 +38,21 @@ std::size_t seam_edges(const SurfaceMesh& s) {
   return n;
 }
 
+// Boundary vertices of `before` moved by the cubic B-spline curve rule: 3/4 of themselves and 1/8 of
+// each boundary neighbour (old vertices keep their index).
+void expect_boundary_curve_rule(const SurfaceMesh& before, const SurfaceMesh& after) {
+  for (Vertex v : before.vertices()) {
+    if (!before.is_boundary(v)) continue;
+    Vec3d ends{0, 0, 0};
+    for (Halfedge h : before.halfedges(v))
+      if (before.is_boundary(SurfaceMesh::edge(h))) ends += to_double(before.position(before.to_vertex(h)));
+    const Vec3d want = to_double(before.position(v)) * 0.75 + ends * 0.125;
+    EXPECT_NEAR(after.position(v).x, want.x, 1e-6);
+    EXPECT_NEAR(after.position(v).y, want.y, 1e-6);
+    EXPECT_NEAR(after.position(v).z, want.z, 1e-6);
+  }
+}
+
 TEST(Subdivide, CountsAfterStepsOnClosedAndOpenMeshes) {
   for (Subdivision scheme : {Subdivision::loop, Subdivision::midpoint}) {
     SurfaceMesh tet = build(test::tetrahedron());
@@ -118,15 +133,7 @@ TEST(Subdivide, LoopBoundaryFollowsTheCurveRules) {
   SurfaceMesh m = build(in);
   const SurfaceMesh before = m;
   subdivide(m, Subdivision::loop, 1);
-  for (Vertex v : before.vertices()) {
-    if (!before.is_boundary(v)) continue;
-    Vec3d ends{0, 0, 0};
-    for (Halfedge h : before.halfedges(v))
-      if (before.is_boundary(SurfaceMesh::edge(h))) ends += to_double(before.position(before.to_vertex(h)));
-    const Vec3d want = to_double(before.position(v)) * 0.75 + ends * 0.125;
-    EXPECT_NEAR(m.position(v).z, want.z, 1e-6);
-    EXPECT_NEAR(m.position(v).x, want.x, 1e-6);
-  }
+  expect_boundary_curve_rule(before, m);
   for (Edge e : before.edges()) {
     if (!before.is_boundary(e)) continue;
     const Vertex mid(Index(before.vertex_slots() + e.idx()));
@@ -280,15 +287,7 @@ TEST(CatmullClark, ReproducesALinearHeightFieldAndKeepsTheBoundaryRules) {
   // One step: a boundary vertex moves by the curve rule, 3/4 itself and 1/8 of each boundary neighbour.
   SurfaceMesh one = before;
   subdivide(one, Subdivision::catmull_clark, 1);
-  for (Vertex v : before.vertices()) {
-    if (!before.is_boundary(v)) continue;
-    Vec3d ends{0, 0, 0};
-    for (Halfedge h : before.halfedges(v))
-      if (before.is_boundary(SurfaceMesh::edge(h))) ends += to_double(before.position(before.to_vertex(h)));
-    const Vec3d want = to_double(before.position(v)) * 0.75 + ends * 0.125;
-    EXPECT_NEAR(one.position(v).x, want.x, 1e-6);
-    EXPECT_NEAR(one.position(v).y, want.y, 1e-6);
-  }
+  expect_boundary_curve_rule(before, one);
   EXPECT_TRUE(m.validate().empty());
 }
 
