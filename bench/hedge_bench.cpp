@@ -4,6 +4,11 @@
 //   hedge_bench [benchmark flags, e.g. --benchmark_min_time=0.05] [--root DIR] [mesh[:subN] ...]
 //
 // Without meshes it uses the same default list as `peers` (../shared/meshes, else data/).
+//
+// BM_one_ring_order/<mesh>/{as_loaded,shuffled,reordered}: one-ring circulation over every vertex of
+// the mesh as loaded, after a random renumbering of its vertices, edges and faces, and after
+// reorder_spatially() of the shuffled mesh: the cost of a lost element order, and what reordering
+// gets back (algorithms/reorder.h).
 #include <benchmark/benchmark.h>
 
 #include <iostream>
@@ -12,6 +17,12 @@
 #include <vector>
 
 #include "bench_common.h"
+#include "hedge/algorithms/reorder.h"
+#include "hedge/core/build.h"
+
+#include <algorithm>
+#include <numeric>
+#include <random>
 
 namespace {
 
@@ -37,6 +48,27 @@ void run_op(benchmark::State& state, const bench::OpImpl* impl, Loaded* l) {
     state.ResumeTiming();
   }
   state.counters["vertices"] = static_cast<double>(l->input.n_vertices());
+}
+
+// A random renumbering of every element.
+void shuffle(hedge::SurfaceMesh& m, unsigned seed) {
+  std::mt19937 rng(seed);
+  auto perm = [&](std::size_t n) {
+    std::vector<hedge::Index> p(n);
+    std::iota(p.begin(), p.end(), 0);
+    std::shuffle(p.begin(), p.end(), rng);
+    return p;
+  };
+  m.renumber(perm(m.vertex_slots()), perm(m.edge_slots()), perm(m.face_slots()));
+}
+
+void one_ring(benchmark::State& state, const hedge::SurfaceMesh* m) {
+  for (auto _ : state) {
+    std::size_t sum = 0;
+    for (hedge::Vertex v : m->vertices())
+      for (hedge::Vertex w : m->vertices(v)) sum += w.idx();
+    benchmark::DoNotOptimize(sum);
+  }
 }
 
 }  // namespace
@@ -72,6 +104,20 @@ int main(int argc, char** argv) {
     for (const auto& [key, impl] : backend.ops)
       benchmark::RegisterBenchmark(("BM_" + key + "/" + l->input.name).c_str(), run_op, &impl, l.get())
           ->Unit(benchmark::kMillisecond);
+    // The element order's effect on circulation.
+    static std::vector<std::unique_ptr<hedge::SurfaceMesh>> orders;
+    auto as_loaded = std::make_unique<hedge::SurfaceMesh>(hedge::build_triangles(
+        {reinterpret_cast<const hedge::Vec3*>(l->input.xyz.data()), l->input.n_vertices()}, l->input.tri));
+    auto shuffled = std::make_unique<hedge::SurfaceMesh>(*as_loaded);
+    shuffle(*shuffled, 1);
+    auto reordered = std::make_unique<hedge::SurfaceMesh>(*shuffled);
+    hedge::reorder_spatially(*reordered);
+    for (auto* m : {&as_loaded, &shuffled, &reordered}) {
+      const char* what = m == &as_loaded ? "as_loaded" : m == &shuffled ? "shuffled" : "reordered";
+      benchmark::RegisterBenchmark(("BM_one_ring_order/" + l->input.name + "/" + what).c_str(), one_ring, m->get())
+          ->Unit(benchmark::kMillisecond);
+      orders.push_back(std::move(*m));
+    }
     meshes.push_back(std::move(l));
   }
   benchmark::RunSpecifiedBenchmarks();

@@ -495,6 +495,15 @@ typedef enum hedge_subdivision {
  *  result beyond 2^31 half-edges: HEDGE_ERROR_INVALID_ARGUMENT, and the mesh is unchanged. */
 HEDGE_API hedge_status hedge_mesh_subdivide(hedge_mesh* mesh, int32_t scheme, int32_t steps);
 
+/** Renumbers the elements along a Morton curve through their positions (hedge/algorithms/reorder.h),
+ *  so that traversals read memory in order; garbage is collected at the same time. The old-to-new
+ *  maps are written as by hedge_mesh_garbage_collection() (each map optional, NULL). Render objects
+ *  of the mesh rebuild at their next sync. */
+HEDGE_API hedge_status hedge_mesh_reorder_spatially(hedge_mesh* mesh, uint32_t* vertex_map, uint32_t vertex_capacity,
+                                                    uint32_t* halfedge_map, uint32_t halfedge_capacity,
+                                                    uint32_t* edge_map, uint32_t edge_capacity, uint32_t* face_map,
+                                                    uint32_t face_capacity);
+
 /* ============================================================================================ */
 /* Files (hedge/io/io.h): OBJ, OFF, PLY, STL, chosen by the extension                           */
 /* ============================================================================================ */

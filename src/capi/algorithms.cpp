@@ -1,5 +1,6 @@
 // The C ABI: the algorithms on a whole mesh: geometry, normals, smoothing and subdivision
 // (hedge/algorithms/geometry.h, normals.h, smooth.h, subdivide.h).
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -7,6 +8,7 @@
 #include "capi_internal.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/normals.h"
+#include "hedge/algorithms/reorder.h"
 #include "hedge/algorithms/smooth.h"
 #include "hedge/algorithms/subdivide.h"
 
@@ -189,6 +191,27 @@ hedge_status hedge_mesh_subdivide(hedge_mesh* mesh, int32_t scheme, int32_t step
                           : scheme == HEDGE_SUBDIVISION_MIDPOINT ? Subdivision::midpoint
                                                                  : Subdivision::catmull_clark;
     subdivide(object->mesh, s, steps);
+  });
+}
+
+hedge_status hedge_mesh_reorder_spatially(hedge_mesh* mesh, uint32_t* vertex_map, uint32_t vertex_capacity,
+                                          uint32_t* halfedge_map, uint32_t halfedge_capacity, uint32_t* edge_map,
+                                          uint32_t edge_capacity, uint32_t* face_map, uint32_t face_capacity) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    SurfaceMesh& m = object->mesh;
+    if (vertex_map != nullptr) check_capacity(m.vertex_slots(), vertex_map, vertex_capacity, "vertex_map");
+    if (halfedge_map != nullptr) check_capacity(m.halfedge_slots(), halfedge_map, halfedge_capacity, "halfedge_map");
+    if (edge_map != nullptr) check_capacity(m.edge_slots(), edge_map, edge_capacity, "edge_map");
+    if (face_map != nullptr) check_capacity(m.face_slots(), face_map, face_capacity, "face_map");
+    const GarbageMaps maps = reorder_spatially(m);
+    auto put = [](const std::vector<Index>& from, std::uint32_t* to) {
+      if (to != nullptr) std::copy(from.begin(), from.end(), to);
+    };
+    put(maps.vertices, vertex_map);
+    put(maps.halfedges, halfedge_map);
+    put(maps.edges, edge_map);
+    put(maps.faces, face_map);
   });
 }
 

@@ -1,5 +1,7 @@
 #include "hedge/core/surface_mesh.h"
 
+#include "hedge/error.h"
+
 #include <algorithm>
 #include <cstring>
 #include <type_traits>
@@ -267,7 +269,11 @@ GarbageMaps SurfaceMesh::garbage_collection() {
     maps.halfedges[2 * e + 1] = 2 * maps.edges[e] + 1;
   }
   if (!has_garbage()) return maps;
+  apply_maps(maps, nv, ne, nf);
+  return maps;
+}
 
+void SurfaceMesh::apply_maps(const GarbageMaps& maps, std::size_t nv, std::size_t ne, std::size_t nf) {
   for (auto& v : h_vertex_) v = remap(v, maps.vertices);
   for (auto& h : h_next_) h = remap(h, maps.halfedges);
   for (auto& f : h_face_) f = remap(f, maps.faces);
@@ -290,6 +296,44 @@ GarbageMaps SurfaceMesh::garbage_collection() {
   // Every index may have moved: consumers of the change log rebuild.
   changes_.mark_reset();
   changes_.notify();
+}
+
+GarbageMaps SurfaceMesh::renumber(std::vector<Index> new_vertex, std::vector<Index> new_edge,
+                                  std::vector<Index> new_face) {
+  // Each map must send the live elements onto 0..n-1, one to one, and the deleted ones nowhere.
+  auto check = [](const std::vector<Index>& map, const std::vector<bool>& deleted, std::size_t slots,
+                  std::size_t live, const char* what) {
+    if (map.size() != slots)
+      throw InvalidInputError(std::string("renumber: the ") + what + " map has " + std::to_string(map.size()) +
+                              " entries for " + std::to_string(slots) + " slots");
+    std::vector<bool> taken(live, false);
+    for (std::size_t i = 0; i < slots; ++i) {
+      if (deleted[i]) {
+        if (map[i] != kInvalidIndex)
+          throw InvalidInputError(std::string("renumber: deleted ") + what + " " + std::to_string(i) +
+                                  " is given a new index");
+        continue;
+      }
+      if (map[i] >= live || taken[map[i]])
+        throw InvalidInputError(std::string("renumber: the ") + what + " map is not a one-to-one numbering of the " +
+                                std::to_string(live) + " live elements (at " + std::to_string(i) + ")");
+      taken[map[i]] = true;
+    }
+  };
+  check(new_vertex, v_deleted_, vertex_slots(), n_vertices(), "vertex");
+  check(new_edge, e_deleted_, edge_slots(), n_edges(), "edge");
+  check(new_face, f_deleted_, face_slots(), n_faces(), "face");
+  GarbageMaps maps;
+  maps.vertices = std::move(new_vertex);
+  maps.edges = std::move(new_edge);
+  maps.faces = std::move(new_face);
+  maps.halfedges.assign(halfedge_slots(), kInvalidIndex);
+  for (std::size_t e = 0; e < maps.edges.size(); ++e) {
+    if (maps.edges[e] == kInvalidIndex) continue;
+    maps.halfedges[2 * e] = 2 * maps.edges[e];
+    maps.halfedges[2 * e + 1] = 2 * maps.edges[e] + 1;
+  }
+  apply_maps(maps, n_vertices(), n_edges(), n_faces());
   return maps;
 }
 

@@ -1572,6 +1572,21 @@ static void test_subdivide(void) {
   CHECK_OK(hedge_render_counts(render, &bc));
   CHECK(bc.triangles == 256);
   CHECK_OK(hedge_render_destroy(render));
+  /* Reordering: a permutation of the elements, the mesh still valid, with the same counts. */
+  const hedge_counts before = counts_of(tet);
+  uint32_t vmap[512], fmap[1024];
+  CHECK_STATUS(hedge_mesh_reorder_spatially(tet, vmap, 3, NULL, 0, NULL, 0, NULL, 0), HEDGE_ERROR_BUFFER_TOO_SMALL);
+  CHECK_OK(hedge_mesh_reorder_spatially(tet, vmap, 512, NULL, 0, NULL, 0, fmap, 1024));
+  CHECK(same_counts(counts_of(tet), before));
+  {
+    uint8_t seen[512] = {0};
+    for (uint32_t v = 0; v < before.vertex_slots; ++v) {
+      CHECK(vmap[v] < before.vertices && !seen[vmap[v]]);
+      seen[vmap[v]] = 1;
+    }
+  }
+  CHECK_OK(hedge_mesh_validate(tet, &problems));
+  CHECK(problems == 0);
   CHECK_OK(hedge_mesh_destroy(grid));
   CHECK_OK(hedge_mesh_destroy(tet));
 }

@@ -289,6 +289,18 @@ namespace Hedge
             Status.Check(Native.hedge_mesh_subdivide(id, (int)scheme, steps));
         }
 
+        /// <summary>Renumbers the elements along a Morton curve through their positions, so that traversals read memory in
+        /// order; garbage is collected at the same time. The optional maps receive old-to-new indices, as with
+        /// <see cref="GarbageCollection"/>. Render buffers rebuild at their next sync.</summary>
+        public void ReorderSpatially(Vertex[] vertexMap = null, HalfEdge[] halfEdgeMap = null, Edge[] edgeMap = null,
+                                     Face[] faceMap = null)
+        {
+            pendingRenders.Drain();
+            Status.Check(Native.hedge_mesh_reorder_spatially(id, vertexMap, Status.Capacity(vertexMap), halfEdgeMap,
+                                                             Status.Capacity(halfEdgeMap), edgeMap, Status.Capacity(edgeMap),
+                                                             faceMap, Status.Capacity(faceMap)));
+        }
+
         /// <summary>Smooths the positions of the live vertices; render buffers see the moves at their next sync.</summary>
         /// <param name="options">Method, iterations and steps; see <see cref="SmoothOptions.Default"/>.</param>
         /// <param name="mask">Optional (null): one byte per vertex slot; only vertices with a nonzero byte move.</param>

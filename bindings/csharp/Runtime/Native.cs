@@ -44,6 +44,12 @@ namespace Hedge
         internal static extern int hedge_mesh_copy_positions(IntPtr mesh, [Out] float[] buffer, ulong capacity,
             out ulong count);
 
+        // ---- Reordering ----
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_reorder_spatially(IntPtr mesh, [Out] Vertex[] vertexMap, uint vertexCapacity,
+            [Out] HalfEdge[] halfEdgeMap, uint halfEdgeCapacity, [Out] Edge[] edgeMap, uint edgeCapacity,
+            [Out] Face[] faceMap, uint faceCapacity);
+
         // ---- Subdivision ----
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_mesh_subdivide(IntPtr mesh, int scheme, int steps);

@@ -1,6 +1,7 @@
 // Handles, struct layouts, adjacency queries, circulators, predicates and local edits.
 using System;
 using System.Collections.Generic;
+using System.Linq;
 using System.Runtime.InteropServices;
 
 namespace Hedge.Tests
@@ -140,6 +141,11 @@ namespace Hedge.Tests
                 buffers.Sync();
                 Check.Equal(64u, buffers.Counts.Triangles, "the buffers follow");
                 Check.Throws(HedgeStatus.InvalidArgument, () => tet.Subdivide(Subdivision.Midpoint, 20));
+                var map = new Vertex[tet.Counts.VertexSlots];
+                tet.ReorderSpatially(map);
+                Check.Equal((int)tet.Counts.VertexSlots, map.Select(v => v.Index).Distinct().Count(), "a permutation");
+                buffers.Sync();
+                Check.Equal(64u, buffers.Counts.Triangles, "the buffers follow the renumbering");
                 Check.Valid(tet, "after subdividing");
             }
             float[] grid = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };

@@ -302,6 +302,13 @@ class SurfaceMesh {
   //! Removes deleted elements and compacts every array and property. Returns old-to-new maps so
   //! that handles held elsewhere (engine buffers) can be remapped. O(#elements).
   GarbageMaps garbage_collection();
+  //! Renumbers the elements: new_vertex[v] is live vertex v's new index, likewise for edges (the
+  //! half-edges of edge e follow it: 2e + i goes to 2 new_edge[e] + i) and faces. Each map must
+  //! number the live elements 0..n-1 one to one and give deleted ones kInvalidIndex; garbage is
+  //! collected at the same time. Properties move with their elements, and the change log records a
+  //! reset. Returns the maps, as garbage_collection() does. O(#elements).
+  //! \throw InvalidInputError, with the mesh unchanged, if a map is not such a numbering.
+  GarbageMaps renumber(std::vector<Index> new_vertex, std::vector<Index> new_edge, std::vector<Index> new_face);
   //! Releases spare capacity of every array.
   void shrink_to_fit();
   //! Heap bytes held by connectivity, flags and all properties (capacity, not size).
@@ -318,6 +325,8 @@ class SurfaceMesh {
 
  private:
   friend class MeshBuilder;
+  //! Moves every element to its index in maps (kInvalidIndex: dropped), leaving nv, ne and nf.
+  void apply_maps(const GarbageMaps& maps, std::size_t nv, std::size_t ne, std::size_t nf);
 
   std::vector<Vertex> h_vertex_;
   std::vector<Halfedge> h_next_;
