@@ -453,7 +453,8 @@ HEDGE_API hedge_status hedge_mesh_copy_corner_normals(const hedge_mesh* mesh, fl
 typedef enum hedge_smooth_method {
   HEDGE_SMOOTH_UNIFORM = 0,   /**< the average of the neighbours */
   HEDGE_SMOOTH_TAUBIN = 1,    /**< lambda|mu steps: removes noise without shrinking */
-  HEDGE_SMOOTH_COTANGENT = 2  /**< cotangent weights (triangle meshes only) */
+  HEDGE_SMOOTH_COTANGENT = 2, /**< cotangent weights (triangle meshes only) */
+  HEDGE_SMOOTH_IMPLICIT = 3   /**< backward Euler steps of the cotangent flow; lambda is the time step */
 } hedge_smooth_method;
 
 /** Layout (32 bytes): method @0, iterations @4 (int32_t), lambda @8, mu @16 (double), fix_boundary
@@ -461,7 +462,7 @@ typedef enum hedge_smooth_method {
 typedef struct hedge_smooth_options {
   int32_t method;       /**< HEDGE_SMOOTH_* */
   int32_t iterations;   /**< 0..100000 */
-  double lambda;        /**< the step toward the average, in (0, 1] */
+  double lambda;        /**< the step toward the average, in (0, 1]; implicit: the time step (> 0) */
   double mu;            /**< Taubin's inflating step, in [-1, -lambda) */
   int32_t fix_boundary; /**< 1: boundary vertices stay; 0: they move along the boundary */
   int32_t reserved;     /**< 0 */

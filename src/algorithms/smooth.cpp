@@ -1,5 +1,7 @@
 #include "hedge/algorithms/smooth.h"
 
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -14,18 +16,24 @@ namespace {
 void check(const SurfaceMesh& m, const SmoothOptions& o) {
   if (o.iterations < 0 || o.iterations > 100000)
     throw InvalidInputError("smooth: iterations must be in 0..100000, got " + std::to_string(o.iterations));
-  if (!(o.lambda > 0 && o.lambda <= 1))
+  if (o.method == SmoothMethod::implicit) {
+    if (!(o.lambda > 0 && std::isfinite(o.lambda)))
+      throw InvalidInputError("smooth: the implicit time step lambda must be positive, got " +
+                              std::to_string(o.lambda));
+  } else if (!(o.lambda > 0 && o.lambda <= 1)) {
     throw InvalidInputError("smooth: lambda must be in (0, 1], got " + std::to_string(o.lambda));
+  }
   if (o.method == SmoothMethod::taubin && !(o.mu < -o.lambda && o.mu >= -1))
     throw InvalidInputError("smooth: Taubin's mu must be in [-1, -lambda), got " + std::to_string(o.mu));
   if (!o.mask.empty() && o.mask.size() != m.vertex_slots())
     throw InvalidInputError("smooth: the mask has " + std::to_string(o.mask.size()) + " entries for " +
                             std::to_string(m.vertex_slots()) + " vertex slots");
-  if (o.method == SmoothMethod::cotangent)
+  if (o.method == SmoothMethod::cotangent || o.method == SmoothMethod::implicit)
     for (Face f : m.faces())
       if (m.valence(f) != 3)
-        throw InvalidInputError("smooth: cotangent weights need triangles, and face " + std::to_string(f.idx()) +
-                                " has " + std::to_string(m.valence(f)) + " corners (triangulate first)");
+        throw InvalidInputError("smooth: cotangent weights need triangles, and face " +
+                                std::to_string(f.idx()) + " has " + std::to_string(m.valence(f)) +
+                                " corners (triangulate first)");
 }
 
 // The cotangent weight of every edge slot: half the sum of the cotangents of the angles opposite it,
@@ -37,7 +45,8 @@ void cotangent_weights(const SurfaceMesh& m, const std::vector<Vec3d>& p, std::v
     const Halfedge hs[3] = {h0, h1, h2};
     for (const Halfedge h : hs) {
       // The angle at the corner opposite h: at to_vertex(next(h)), between its two other sides.
-      const Vec3d a = p[m.from_vertex(h).idx()], b = p[m.to_vertex(h).idx()], c = p[m.to_vertex(m.next(h)).idx()];
+      const Vec3d a = p[m.from_vertex(h).idx()], b = p[m.to_vertex(h).idx()],
+                  c = p[m.to_vertex(m.next(h)).idx()];
       const Vec3d u = a - c, v = b - c;
       const Vec3d x = cross(u, v);
       const double s = std::sqrt(dot(x, x));
@@ -45,6 +54,74 @@ void cotangent_weights(const SurfaceMesh& m, const std::vector<Vec3d>& p, std::v
     }
   }
   for (double& x : w) x = std::max(0.0, x);
+}
+
+// Backward Euler steps of the cotangent flow: (M + t L) x' = M x over the moving vertices, the
+// fixed ones moved to the right-hand side. M: a third of the areas of the faces around each vertex.
+void smooth_implicit(const SurfaceMesh& m, const SmoothOptions& o, const std::vector<std::uint8_t>& moving,
+                     std::vector<Vec3d>& p) {
+  const std::size_t nv = m.vertex_slots();
+  std::vector<Index> unknown(nv, kInvalidIndex);
+  Index n = 0;
+  for (Vertex v : m.vertices())
+    if (moving[v.idx()] != 0) unknown[v.idx()] = n++;
+  if (n == 0) return;
+  std::vector<double> w;
+  cotangent_weights(m, p, w);
+  std::vector<double> mass(nv, 0);
+  double edge_sum = 0;
+  for (Face f : m.faces()) {
+    const Halfedge h0 = m.halfedge(f);
+    const Vec3d a = p[m.to_vertex(h0).idx()], b = p[m.to_vertex(m.next(h0)).idx()],
+                c = p[m.from_vertex(h0).idx()];
+    const Vec3d x = cross(b - a, c - a);
+    const double third = std::sqrt(dot(x, x)) / 6;
+    for (Vertex v : m.vertices(f)) mass[v.idx()] += third;
+  }
+  for (Edge e : m.edges()) {
+    const Vec3d d = p[m.vertex(e, 0).idx()] - p[m.vertex(e, 1).idx()];
+    edge_sum += std::sqrt(dot(d, d));
+  }
+  const double mean_edge = edge_sum / double(std::max<std::size_t>(1, m.n_edges()));
+  const double t = o.lambda * mean_edge * mean_edge;
+  std::vector<Eigen::Triplet<double>> entries;
+  std::vector<double> diagonal(n, 0);
+  for (Vertex v : m.vertices()) {
+    const Index i = unknown[v.idx()];
+    if (i == kInvalidIndex) continue;
+    diagonal[i] += mass[v.idx()];
+    for (Halfedge h : m.halfedges(v)) {
+      const double wij = t * w[SurfaceMesh::edge(h).idx()];
+      diagonal[i] += wij;
+      const Index j = unknown[m.to_vertex(h).idx()];
+      if (j != kInvalidIndex) entries.emplace_back(i, j, -wij);
+    }
+  }
+  for (Index i = 0; i < n; ++i) entries.emplace_back(i, i, diagonal[i] > 0 ? diagonal[i] : 1.0);
+  Eigen::SparseMatrix<double> a(n, n);
+  a.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(a);
+  if (solver.info() != Eigen::Success)
+    throw InvalidInputError("smooth: the implicit system could not be factored (degenerate faces?)");
+  Eigen::MatrixXd rhs(n, 3), x(n, 3);
+  for (int it = 0; it < o.iterations; ++it) {
+    for (Vertex v : m.vertices()) {
+      const Index i = unknown[v.idx()];
+      if (i == kInvalidIndex) continue;
+      const double mi = mass[v.idx()] > 0 ? mass[v.idx()] : 1.0;
+      Vec3d r = p[v.idx()] * mi;
+      for (Halfedge h : m.halfedges(v)) {
+        const Vertex u = m.to_vertex(h);
+        if (unknown[u.idx()] == kInvalidIndex) r += p[u.idx()] * (t * w[SurfaceMesh::edge(h).idx()]);
+      }
+      rhs(i, 0) = r.x, rhs(i, 1) = r.y, rhs(i, 2) = r.z;
+    }
+    x = solver.solve(rhs);
+    for (Vertex v : m.vertices()) {
+      const Index i = unknown[v.idx()];
+      if (i != kInvalidIndex) p[v.idx()] = Vec3d{x(i, 0), x(i, 1), x(i, 2)};
+    }
+  }
 }
 
 }  // namespace
@@ -61,28 +138,37 @@ void smooth(SurfaceMesh& m, const SmoothOptions& o) {
     if (m.is_isolated(v) || (!o.mask.empty() && o.mask[v.idx()] == 0)) continue;
     mode[v.idx()] = m.is_boundary(v) ? (o.fix_boundary ? 0 : 2) : 1;
   }
-  std::vector<double> w;
-  auto step = [&](double factor) {
-    if (o.method == SmoothMethod::cotangent) cotangent_weights(m, p, w);
-    for (Vertex v : m.vertices()) {
-      const std::size_t i = v.idx();
-      next[i] = p[i];
-      if (mode[i] == 0) continue;
-      Vec3d sum{0, 0, 0};
-      double weight = 0;
-      for (Halfedge h : m.halfedges(v)) {
-        if (mode[i] == 2 && !m.is_boundary(SurfaceMesh::edge(h))) continue;
-        const double wi = o.method == SmoothMethod::cotangent && mode[i] == 1 ? w[SurfaceMesh::edge(h).idx()] : 1.0;
-        sum += p[m.to_vertex(h).idx()] * wi;
-        weight += wi;
+  if (o.method == SmoothMethod::implicit) {
+    std::vector<std::uint8_t> moving(nv, 0);
+    for (std::size_t i = 0; i < nv; ++i) moving[i] = mode[i] == 1 || mode[i] == 2;
+    // A free boundary is solved for with the interior: it follows the cotangent flow of its
+    // one-sided neighbourhood rather than the boundary curve alone (see the header).
+    smooth_implicit(m, o, moving, p);
+  } else {
+    std::vector<double> w;
+    auto step = [&](double factor) {
+      if (o.method == SmoothMethod::cotangent) cotangent_weights(m, p, w);
+      for (Vertex v : m.vertices()) {
+        const std::size_t i = v.idx();
+        next[i] = p[i];
+        if (mode[i] == 0) continue;
+        Vec3d sum{0, 0, 0};
+        double weight = 0;
+        for (Halfedge h : m.halfedges(v)) {
+          if (mode[i] == 2 && !m.is_boundary(SurfaceMesh::edge(h))) continue;
+          const double wi =
+              o.method == SmoothMethod::cotangent && mode[i] == 1 ? w[SurfaceMesh::edge(h).idx()] : 1.0;
+          sum += p[m.to_vertex(h).idx()] * wi;
+          weight += wi;
+        }
+        if (weight > 0) next[i] = p[i] + (sum * (1 / weight) - p[i]) * factor;
       }
-      if (weight > 0) next[i] = p[i] + (sum * (1 / weight) - p[i]) * factor;
+      std::swap(p, next);
+    };
+    for (int it = 0; it < o.iterations; ++it) {
+      step(o.lambda);
+      if (o.method == SmoothMethod::taubin) step(o.mu);
     }
-    std::swap(p, next);
-  };
-  for (int it = 0; it < o.iterations; ++it) {
-    step(o.lambda);
-    if (o.method == SmoothMethod::taubin) step(o.mu);
   }
   for (Vertex v : m.vertices()) {
     if (mode[v.idx()] == 0) continue;

@@ -163,8 +163,9 @@ hedge_status hedge_mesh_smooth(hedge_mesh* mesh, const hedge_smooth_options* opt
       case HEDGE_SMOOTH_UNIFORM: s.method = SmoothMethod::uniform; break;
       case HEDGE_SMOOTH_TAUBIN: s.method = SmoothMethod::taubin; break;
       case HEDGE_SMOOTH_COTANGENT: s.method = SmoothMethod::cotangent; break;
+      case HEDGE_SMOOTH_IMPLICIT: s.method = SmoothMethod::implicit; break;
       default:
-        fail(HEDGE_ERROR_INVALID_ARGUMENT, "method must be HEDGE_SMOOTH_UNIFORM, _TAUBIN or _COTANGENT, got " +
+        fail(HEDGE_ERROR_INVALID_ARGUMENT, "method must be HEDGE_SMOOTH_UNIFORM, _TAUBIN, _COTANGENT or _IMPLICIT, got " +
                                                std::to_string(o.method));
     }
     s.iterations = o.iterations;

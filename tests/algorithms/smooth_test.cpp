@@ -138,6 +138,33 @@ TEST(Smooth, MovesAreMarkedOnce) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+TEST(Smooth, ImplicitTakesOneLargeStableStep) {
+  // One backward Euler step with a large time step flattens the noise; explicit steps of that
+  // size do not exist (lambda is at most 1), and the flat irregular lattice stays in place.
+  SurfaceMesh m = bumpy_grid(10, 0, 0.3f, 8);
+  const SurfaceMesh before = m;
+  const double spread = z_spread(m);
+  smooth(m, {.method = SmoothMethod::implicit, .iterations = 1, .lambda = 20});
+  EXPECT_LT(z_spread(m), 0.25 * spread);
+  for (Vertex v : m.vertices()) {
+    EXPECT_TRUE(std::isfinite(m.position(v).z));
+    if (m.is_boundary(v)) EXPECT_EQ(m.position(v), before.position(v));
+  }
+  SurfaceMesh flat = jittered_lattice(8, 0.12f, 9);
+  const SurfaceMesh flat_before = flat;
+  smooth(flat, {.method = SmoothMethod::implicit, .iterations = 3, .lambda = 5});
+  for (Vertex v : flat.vertices()) EXPECT_LT(norm(flat.position(v) - flat_before.position(v)), 1e-4);
+  // On a closed surface it shrinks, as the cotangent flow does, but stays valid and finite.
+  SurfaceMesh spot = read_mesh(test::data_path("spot_triangulated.obj"));
+  const double v0 = volume(spot);
+  smooth(spot, {.method = SmoothMethod::implicit, .iterations = 2, .lambda = 1});
+  EXPECT_LT(volume(spot), v0);
+  EXPECT_GT(volume(spot), 0.5 * v0);
+  EXPECT_TRUE(m.validate().empty());
+  EXPECT_TRUE(flat.validate().empty());
+  EXPECT_TRUE(spot.validate().empty());
+}
+
 TEST(Smooth, BadOptionsChangeNothing) {
   SurfaceMesh m = bumpy_grid(4, 0, 0.3f, 6);
   const SurfaceMesh before = m;
@@ -145,6 +172,8 @@ TEST(Smooth, BadOptionsChangeNothing) {
   EXPECT_THROW(smooth(m, {.lambda = 0}), InvalidInputError);
   EXPECT_THROW(smooth(m, {.lambda = std::nan("")}), InvalidInputError);
   EXPECT_THROW(smooth(m, {.method = SmoothMethod::taubin, .mu = -0.2}), InvalidInputError);
+  EXPECT_THROW(smooth(m, {.method = SmoothMethod::implicit, .lambda = -1}), InvalidInputError);
+  EXPECT_THROW(smooth(m, {.method = SmoothMethod::implicit, .lambda = std::nan("")}), InvalidInputError);
   std::vector<std::uint8_t> short_mask(3, 1);
   EXPECT_THROW(smooth(m, {.mask = short_mask}), InvalidInputError);
   SurfaceMesh quads = build(test::grid(3, false));

@@ -1535,6 +1535,19 @@ static void test_smooth(void) {
   CHECK(p[2] == 1);
   o.lambda = 0.5;
   CHECK_OK(hedge_mesh_smooth(again, &o, NULL, 0));
+  /* Implicit steps need triangles: the pyramid's apex comes down. */
+  {
+    hedge_mesh* pyramid = make_mesh(kPyramidPositions, 5, kPyramidTriangles, 12, NULL, 0);
+    hedge_smooth_options imp;
+    CHECK_OK(hedge_smooth_options_default(&imp));
+    imp.method = HEDGE_SMOOTH_IMPLICIT;
+    imp.iterations = 1;
+    imp.lambda = 10;
+    CHECK_OK(hedge_mesh_smooth(pyramid, &imp, NULL, 0));
+    CHECK_OK(hedge_mesh_get_position(pyramid, 4, p));
+    CHECK(p[2] < 0.5f && p[2] >= 0);
+    CHECK_OK(hedge_mesh_destroy(pyramid));
+  }
   CHECK_OK(hedge_mesh_get_position(again, 4, p));
   CHECK(p[2] < 1);
   CHECK_STATUS(hedge_smooth_options_default(NULL), HEDGE_ERROR_INVALID_ARGUMENT);

@@ -9,7 +9,7 @@ using namespace cli_test;
 
 TEST_F(HedgeCli, SmoothWritesASmootherMeshWithTheSameConnectivity) {
   const fs::path out = tmp("smooth.obj");
-  for (const char* method : {"uniform", "taubin", "cotan"}) {
+  for (const char* method : {"uniform", "taubin", "cotan", "implicit"}) {
     const Result r = run({"smooth", data("spot_triangulated.obj"), out.string(), "--method", method, "--iterations", "5"});
     ASSERT_EQ(r.code, 0) << method << ": " << r.err;
     EXPECT_NE(r.out.find(method), std::string::npos);

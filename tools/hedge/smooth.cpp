@@ -28,9 +28,10 @@ int run_smooth(const SmoothCommandOptions& o) {
   format_from_path(o.output);  // an unknown extension fails before the work
   LoadedMesh loaded = load_mesh(o.input, o.load);
   SmoothOptions s;
-  s.method = o.method == "taubin" ? SmoothMethod::taubin
-             : o.method == "cotan" ? SmoothMethod::cotangent
-                                   : SmoothMethod::uniform;
+  s.method = o.method == "taubin"     ? SmoothMethod::taubin
+             : o.method == "cotan"    ? SmoothMethod::cotangent
+             : o.method == "implicit" ? SmoothMethod::implicit
+                                      : SmoothMethod::uniform;
   s.iterations = o.iterations;
   s.lambda = o.lambda;
   s.mu = o.mu;
@@ -57,11 +58,14 @@ Command add_smooth_command(CLI::App& parent) {
   app->add_option("IN", o->input, "Input mesh file")->required();
   app->add_option("OUT", o->output, "Output mesh file; missing folders are created")->required();
   app->add_option("--method", o->method,
-                  "uniform (umbrella), taubin (lambda|mu, no shrinking) or cotan (cotangent weights, triangles only)")
+                  "uniform (umbrella), taubin (lambda|mu, no shrinking), cotan (cotangent weights, triangles only) "
+                  "or implicit (backward Euler steps of the cotangent flow; lambda is the time step)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"uniform", "taubin", "cotan"}));
+      ->check(CLI::IsMember({"uniform", "taubin", "cotan", "implicit"}));
   app->add_option("--iterations", o->iterations, "Iterations")->capture_default_str()->check(CLI::Range(0, 100000));
-  app->add_option("--lambda", o->lambda, "Step toward the average, in (0, 1]")->capture_default_str();
+  app->add_option("--lambda", o->lambda,
+                  "Step toward the average, in (0, 1]; for implicit, the time step in squared mean edge lengths")
+      ->capture_default_str();
   app->add_option("--mu", o->mu, "Taubin's inflating step, below -lambda")->capture_default_str();
   app->add_flag("--free-boundary", o->free_boundary, "Let boundary vertices move along the boundary");
   app->add_flag("--ascii", o->ascii, "Write PLY and STL as text instead of binary");

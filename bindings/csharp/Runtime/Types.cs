@@ -162,6 +162,8 @@ namespace Hedge
         Taubin = 1,
         /// <summary>Cotangent weights: follows the geometry, not the tessellation (triangle meshes only).</summary>
         Cotangent = 2,
+        /// <summary>Backward Euler steps of the cotangent flow (Lambda is the time step, any positive value).</summary>
+        Implicit = 3,
     }
 
     /// <summary>Options of <see cref="HalfEdgeMesh.Smooth"/> (32 bytes, hedge_smooth_options). Start from

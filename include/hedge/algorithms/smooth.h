@@ -8,8 +8,13 @@
 //    its tessellation: a flat region stays where it is, and vertices slide less along the surface.
 //    Needs triangles. Negative weights (obtuse angles) are clamped to zero, which keeps the explicit
 //    steps stable.
+//  - implicit: backward Euler steps of the cotangent flow, (M + t L) x' = M x with the vertices'
+//    areas M and the cotangent stiffness L (clamped as above), solved by a sparse Cholesky
+//    factorisation (Eigen). Unconditionally stable: one step with a large time step smooths as
+//    much as many explicit ones. Needs triangles. A free boundary (fix_boundary = false) follows
+//    the same flow, not the boundary curve alone.
 //
-// All three are explicit (Jacobi) steps: every vertex moves from the positions of the previous
+// The first three are explicit (Jacobi) steps: every vertex moves from the positions of the previous
 // step. Boundary vertices stay fixed unless asked otherwise; then they move along the boundary only
 // (the average of their two boundary neighbours), so that an open surface keeps its outline's shape.
 // A mask restricts the smoothing to some vertices. The positions' changes are marked in the change
@@ -23,13 +28,14 @@
 
 namespace hedge {
 
-enum class SmoothMethod { uniform, taubin, cotangent };
+enum class SmoothMethod { uniform, taubin, cotangent, implicit };
 
 struct SmoothOptions {
   SmoothMethod method = SmoothMethod::uniform;
   //! Iterations; a Taubin iteration is its two steps.
   int iterations = 10;
-  //! The step toward the average, in (0, 1].
+  //! The step toward the average, in (0, 1]. For the implicit method, the time step in units of
+  //! the squared mean edge length (any positive value; 1 is a strong smoothing step).
   double lambda = 0.5;
   //! Taubin's inflating step: negative, with |mu| > lambda (the default gives a pass band of about
   //! 0.1 with lambda = 0.5).
@@ -42,9 +48,11 @@ struct SmoothOptions {
 };
 
 //! Smooths the positions of the live vertices. O(iterations x (V + E)).
+//! The implicit method costs a sparse factorisation, O(V^1.5) for a surface, then O(V) per step.
 //! \throw InvalidInputError, leaving the mesh unchanged, for iterations outside 0..100000, lambda
-//!   outside (0, 1], a Taubin mu that is not below -lambda, a mask of the wrong size, or cotangent
-//!   weights on a mesh with a face that is not a triangle (the message names it).
+//!   outside (0, 1] (positive and finite for the implicit method), a Taubin mu that is not below
+//!   -lambda, a mask of the wrong size, or cotangent weights (cotangent, implicit) on a mesh with a
+//!   face that is not a triangle (the message names it).
 void smooth(SurfaceMesh& mesh, const SmoothOptions& options = {});
 
 }  // namespace hedge
