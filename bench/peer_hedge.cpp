@@ -5,6 +5,7 @@
 #include <string>
 
 #include "bench_common.h"
+#include "hedge/algorithms/smooth.h"
 #include "hedge/algorithms/subdivide.h"
 #include "hedge/core/build.h"
 #include "hedge/core/operations.h"
@@ -82,6 +83,20 @@ std::unique_ptr<MeshBox> copy_mesh(const MeshBox& reference) {
   return std::make_unique<HBox>(hedge::SurfaceMesh(static_cast<const HBox&>(reference).m));
 }
 hedge::SurfaceMesh& edit_mesh(Context& c) { return static_cast<HBox*>(c.mesh)->m; }
+
+//! Ten smoothing iterations (lambda 0.5, boundary fixed) of the private copy. Returns the sum of
+//! |x| + |y| + |z| over the vertices after.
+template <hedge::SmoothMethod method>
+double smooth_op(Context& c) {
+  hedge::SurfaceMesh& m = edit_mesh(c);
+  hedge::SmoothOptions o;
+  o.method = method;
+  o.iterations = 10;
+  hedge::smooth(m, o);
+  double sum = 0;
+  for (hedge::Vertex v : m.vertices()) sum += std::abs(m.position(v).x) + std::abs(m.position(v).y) + std::abs(m.position(v).z);
+  return sum;
+}
 
 //! One step of Catmull-Clark on the private copy (of a triangle mesh: 3 quads a triangle).
 double catmull_clark_op(Context& c) {
@@ -181,6 +196,8 @@ Backend hedge_backend() {
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   b.ops["loop"] = {copy_mesh, loop_op};
   b.ops["catmull_clark"] = {copy_mesh, catmull_clark_op};
+  b.ops["smooth_uniform"] = {copy_mesh, smooth_op<hedge::SmoothMethod::uniform>};
+  b.ops["smooth_cotan"] = {copy_mesh, smooth_op<hedge::SmoothMethod::cotangent>};
   return b;
 }
 

@@ -2,6 +2,7 @@
 // public API only. Built the standard way: reserve, add_vertex for every vertex, add_face for
 // every triangle.
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Smoother/JacobiLaplaceSmootherT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 #include <OpenMesh/Tools/Utils/MeshCheckerT.hh>
 
@@ -137,6 +138,21 @@ double split_op(Context& c) {
   return static_cast<double>(m.n_vertices() + m.n_faces());
 }
 
+//! Ten iterations of OpenMesh's JacobiLaplaceSmootherT, C0: with uniform weights in every direction
+//! (Tangential_and_Normal), or with cotangent weights along the normals (Normal), the two
+//! weightings OpenMesh offers. Returns the sum of |x| + |y| + |z| over the vertices after.
+template <bool uniform>
+double smooth_op(Context& c) {
+  OMesh& m = mesh_of(c);
+  using Smoother = OpenMesh::Smoother::JacobiLaplaceSmootherT<OMesh>;
+  Smoother s(m);
+  s.initialize(uniform ? Smoother::Tangential_and_Normal : Smoother::Normal, Smoother::C0);
+  s.smooth(10);
+  double sum = 0;
+  for (auto v : m.vertices()) sum += std::abs(m.point(v)[0]) + std::abs(m.point(v)[1]) + std::abs(m.point(v)[2]);
+  return sum;
+}
+
 //! One step of OpenMesh's Subdivider::Uniform::LoopT on the private copy. Returns #V + #F after.
 double loop_op(Context& c) {
   OMesh& m = mesh_of(c);
@@ -211,6 +227,8 @@ Backend openmesh_backend() {
   b.ops["split"] = {copy_mesh, split_op, check_edit<EditKind::split>};
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   b.ops["loop"] = {copy_mesh, loop_op};
+  b.ops["smooth_uniform"] = {copy_mesh, smooth_op<true>};
+  b.ops["smooth_cotan"] = {copy_mesh, smooth_op<false>};
   return b;
 }
 

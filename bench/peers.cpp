@@ -78,6 +78,11 @@ const OpSpec kOps[] = {
     {"loop", "Loop subdivision, one step", BarKind::faster, 3.0, 0.0, false, "#V + #F after"},
     // Catmull-Clark of the triangle meshes (OpenMesh's CatmullClarkT needs a PolyMesh: n/a).
     {"catmull_clark", "Catmull-Clark, one step", BarKind::faster, 2.0, 0.0, false, "#V + #F after"},
+    // Ten smoothing iterations (CGAL has no explicit Laplacian smoother: n/a). Uniform: the same
+    // umbrella step with damping 0.5 in both, so the results agree. Cotangent: hedge moves along the
+    // cotangent Laplacian, OpenMesh along its normal component only, so the sums differ a little.
+    {"smooth_uniform", "uniform smoothing, 10 iterations", BarKind::faster, 1.0, 1e-4, false, "sum |p| after"},
+    {"smooth_cotan", "cotangent smoothing, 10 iterations", BarKind::faster, 1.0, 1e-2, false, "sum |p| after"},
 };
 
 constexpr double kBytesPerVertexBar = 100.0;
