@@ -200,19 +200,10 @@ hedge_status hedge_mesh_reorder_spatially(hedge_mesh* mesh, uint32_t* vertex_map
                                           uint32_t edge_capacity, uint32_t* face_map, uint32_t face_capacity) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    if (vertex_map != nullptr) check_capacity(m.vertex_slots(), vertex_map, vertex_capacity, "vertex_map");
-    if (halfedge_map != nullptr) check_capacity(m.halfedge_slots(), halfedge_map, halfedge_capacity, "halfedge_map");
-    if (edge_map != nullptr) check_capacity(m.edge_slots(), edge_map, edge_capacity, "edge_map");
-    if (face_map != nullptr) check_capacity(m.face_slots(), face_map, face_capacity, "face_map");
-    const GarbageMaps maps = reorder_spatially(m);
-    auto put = [](const std::vector<Index>& from, std::uint32_t* to) {
-      if (to != nullptr) std::copy(from.begin(), from.end(), to);
-    };
-    put(maps.vertices, vertex_map);
-    put(maps.halfedges, halfedge_map);
-    put(maps.edges, edge_map);
-    put(maps.faces, face_map);
+    const MapBuffers b{vertex_map, vertex_capacity, halfedge_map, halfedge_capacity,
+                       edge_map,   edge_capacity,   face_map,     face_capacity};
+    check_map_buffers(object->mesh, b);
+    write_maps(reorder_spatially(object->mesh), b);
   });
 }
 

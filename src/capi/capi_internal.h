@@ -117,6 +117,23 @@ Vec3 need_point(float x, float y, float z);
 bool need_bool(std::int32_t value, const char* name);
 std::uint32_t to_u32(std::size_t n, const char* what);
 
+//! Caller buffers for old-to-new maps (each optional: NULL), as garbage collection and reordering
+//! fill them.
+struct MapBuffers {
+  std::uint32_t* vertex;
+  std::uint32_t vertex_capacity;
+  std::uint32_t* halfedge;
+  std::uint32_t halfedge_capacity;
+  std::uint32_t* edge;
+  std::uint32_t edge_capacity;
+  std::uint32_t* face;
+  std::uint32_t face_capacity;
+};
+//! \throw ApiError (HEDGE_ERROR_BUFFER_TOO_SMALL) unless every given buffer holds a map of m's slots.
+void check_map_buffers(const SurfaceMesh& m, const MapBuffers& b);
+//! Copies the maps into the given buffers.
+void write_maps(const GarbageMaps& maps, const MapBuffers& b);
+
 //! \throw ApiError (HEDGE_ERROR_BAD_HANDLE) unless i < slots; `kind` names the element in the message.
 void check_range(const char* kind, std::uint32_t i, std::size_t slots);
 

@@ -13,6 +13,23 @@
 using namespace hedge;
 using namespace hedge::capi;
 
+void hedge::capi::check_map_buffers(const SurfaceMesh& m, const MapBuffers& b) {
+  if (b.vertex != nullptr) check_capacity(m.vertex_slots(), b.vertex, b.vertex_capacity, "vertex_map");
+  if (b.halfedge != nullptr) check_capacity(m.halfedge_slots(), b.halfedge, b.halfedge_capacity, "halfedge_map");
+  if (b.edge != nullptr) check_capacity(m.edge_slots(), b.edge, b.edge_capacity, "edge_map");
+  if (b.face != nullptr) check_capacity(m.face_slots(), b.face, b.face_capacity, "face_map");
+}
+
+void hedge::capi::write_maps(const GarbageMaps& maps, const MapBuffers& b) {
+  auto put = [](const std::vector<Index>& from, std::uint32_t* to) {
+    if (to != nullptr) std::copy(from.begin(), from.end(), to);
+  };
+  put(maps.vertices, b.vertex);
+  put(maps.halfedges, b.halfedge);
+  put(maps.edges, b.edge);
+  put(maps.faces, b.face);
+}
+
 namespace {
 
 [[noreturn]] void refused(const std::string& what) {
@@ -265,20 +282,10 @@ hedge_status hedge_mesh_garbage_collection(hedge_mesh* mesh, uint32_t* vertex_ma
                                            uint32_t face_capacity) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    if (vertex_map != nullptr) check_capacity(m.vertex_slots(), vertex_map, vertex_capacity, "vertex_map");
-    if (halfedge_map != nullptr)
-      check_capacity(m.halfedge_slots(), halfedge_map, halfedge_capacity, "halfedge_map");
-    if (edge_map != nullptr) check_capacity(m.edge_slots(), edge_map, edge_capacity, "edge_map");
-    if (face_map != nullptr) check_capacity(m.face_slots(), face_map, face_capacity, "face_map");
-    const GarbageMaps maps = m.garbage_collection();
-    auto put = [](const std::vector<Index>& from, std::uint32_t* to) {
-      if (to != nullptr) std::copy(from.begin(), from.end(), to);
-    };
-    put(maps.vertices, vertex_map);
-    put(maps.halfedges, halfedge_map);
-    put(maps.edges, edge_map);
-    put(maps.faces, face_map);
+    const MapBuffers b{vertex_map, vertex_capacity, halfedge_map, halfedge_capacity,
+                       edge_map,   edge_capacity,   face_map,     face_capacity};
+    check_map_buffers(object->mesh, b);
+    write_maps(object->mesh.garbage_collection(), b);
   });
 }
 
