@@ -29,6 +29,18 @@ TEST_F(HedgeCli, TourWritesTheContactSheetAndEveryEditedMesh) {
   EXPECT_NE(r.out.find("732"), std::string::npos) << r.out;
 }
 
+TEST_F(HedgeCli, TourSkipsTheSubdivisionsALargeMeshCannotAfford) {
+  // spot's 180 faces have 732 corners: one Catmull-Clark step (732 quads) and the 1-to-3 split
+  // (732 triangles) fit under 1000 faces; two steps (2928) and Loop after the split (2928) do not.
+  const Result r = run({"tour", data("spot_control_mesh.obj"), "--out", tmp("out").string(), "--max-faces", "1000"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("Catmull-Clark, 1 step"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Loop subdivision                   skipped"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("split all faces (1-to-3)"), std::string::npos);
+  EXPECT_FALSE(fs::exists(tmp("out") / "spot_control_mesh_loop.obj"));
+  EXPECT_TRUE(fs::exists(tmp("out") / "spot_control_mesh_tour.png"));
+}
+
 TEST_F(HedgeCli, TourOfAMeshWithoutFacesIsADataError) {
   write_text(tmp("points.obj"), "v 0 0 0\nv 1 0 0\n");
   expect_data_error({"tour", tmp("points.obj").string(), "--out", tmp("out").string()}, "no faces");

@@ -33,10 +33,14 @@ namespace {
 using namespace hedge::picture;
 using Clock = std::chrono::steady_clock;
 
+
 struct TourOptions {
   std::string input;
   std::string out_dir = "out";
   int panel = 360;
+  //! The subdivision stages are skipped where their result would pass this many faces, so that the
+  //! tour of a large mesh stays quick and small.
+  std::size_t max_faces = 4'000'000;
   LoadOptions load;
 };
 
@@ -102,6 +106,7 @@ int run_tour(const TourOptions& o) {
   const Camera camera = frame(mesh, View::iso, double(w) / h);
   std::vector<Panel> panels;
   std::vector<Row> rows;
+  std::vector<std::string> skipped;
   auto add = [&](const std::string& stage, const SurfaceMesh& m, double edit_ms, RenderOptions r,
                  const std::string& file) {
     r.width = w;
@@ -134,19 +139,29 @@ int run_tour(const TourOptions& o) {
     r.color_by = ColorBy::valence;
     add("edges, valence colours", mesh, 0, r, "");
   }
-  // 3. Catmull-Clark, twice: any polygons become quads, and the surface rounds off.
-  {
+  // 3. Catmull-Clark: any polygons become quads, and the surface rounds off. Two steps, fewer on a
+  // large mesh (a step makes as many quads as there are face corners).
+  std::size_t corners = 0;
+  for (Face f : mesh.faces()) corners += mesh.valence(f);
+  const int cc_steps = corners * 4 <= o.max_faces ? 2 : corners <= o.max_faces ? 1 : 0;
+  if (cc_steps > 0) {
     SurfaceMesh cc = mesh;
     t = Clock::now();
-    subdivide(cc, Subdivision::catmull_clark, 2);
+    subdivide(cc, Subdivision::catmull_clark, cc_steps);
     const double ms = ms_since(t);
     RenderOptions r;
     r.wireframe = true;
-    add("Catmull-Clark, 2 steps", cc, ms, r, base + "_catmull_clark.obj");
+    add("Catmull-Clark, " + std::to_string(cc_steps) + (cc_steps == 1 ? " step" : " steps"), cc, ms, r,
+        base + "_catmull_clark.obj");
+  } else {
+    skipped.push_back("Catmull-Clark");
   }
-  // 4. Split all faces 1-to-3 at their centroids.
-  {
-    SurfaceMesh split = mesh;
+  // 4. Split all faces 1-to-3 at their centroids (a triangle per corner), 5. the result through one
+  // step of Loop's subdivision, and 6. smoothed instead by Taubin's filter, which does not shrink
+  // it. A mesh too large to split is smoothed as it is.
+  SurfaceMesh split = mesh;
+  const bool split_fits = corners <= o.max_faces;
+  if (split_fits) {
     t = Clock::now();
     split_all_faces(split);
     const double ms = ms_since(t);
@@ -154,18 +169,21 @@ int run_tour(const TourOptions& o) {
     r.wireframe = true;
     r.shading = Shading::flat;
     add("split all faces (1-to-3)", split, ms, r, base + "_split.obj");
-
-    // 5. The split mesh (triangles) through one step of Loop's subdivision.
-    {
-      SurfaceMesh loop = split;
-      t = Clock::now();
-      subdivide(loop, Subdivision::loop, 1);
-      const double loop_ms = ms_since(t);
-      RenderOptions lr;
-      lr.wireframe = true;
-      add("then Loop subdivision", loop, loop_ms, lr, base + "_loop.obj");
-    }
-    // 6. The split mesh smoothed instead: Taubin's filter, which does not shrink it.
+  } else {
+    skipped.push_back("split all faces");
+  }
+  if (split_fits && 4 * split.n_faces() <= o.max_faces) {
+    SurfaceMesh loop = split;
+    t = Clock::now();
+    subdivide(loop, Subdivision::loop, 1);
+    const double loop_ms = ms_since(t);
+    RenderOptions lr;
+    lr.wireframe = true;
+    add("then Loop subdivision", loop, loop_ms, lr, base + "_loop.obj");
+  } else {
+    skipped.push_back("Loop subdivision");
+  }
+  {
     t = Clock::now();
     SmoothOptions taubin;
     taubin.method = SmoothMethod::taubin;
@@ -173,7 +191,8 @@ int run_tour(const TourOptions& o) {
     const double smooth_ms = ms_since(t);
     RenderOptions sr;
     sr.wireframe = true;
-    add("or smoothed (Taubin, 10 iterations)", split, smooth_ms, sr, base + "_smooth.obj");
+    add(split_fits ? "or smoothed (Taubin, 10 iterations)" : "smoothed (Taubin, 10 iterations)", split, smooth_ms, sr,
+        base + "_smooth.obj");
   }
   // 7. A hole cut around the vertex nearest the eye, then 8. filled again.
   const Vertex centre = front_vertex(mesh, camera);
@@ -248,6 +267,8 @@ int run_tour(const TourOptions& o) {
                 r.valid ? "yes" : "NO", r.edit_ms, r.draw_ms);
     all_valid = all_valid && r.valid;
   }
+  for (const std::string& stage : skipped)
+    std::printf("%-34s skipped: the result would pass %zu faces\n", stage.c_str(), o.max_faces);
   std::printf("\nwrote %s (every stage side by side)\n", sheet_path.c_str());
   for (const Row& r : rows)
     if (!r.file.empty()) std::printf("wrote %s\n", r.file.c_str());
@@ -270,6 +291,9 @@ Command add_tour_command(CLI::App& parent) {
   app->add_option("--panel", o->panel, "Width of each picture of the contact sheet, in pixels")
       ->capture_default_str()
       ->check(CLI::Range(64, 2048));
+  app->add_option("--max-faces", o->max_faces, "Skip the subdivision stages whose result would pass this many faces")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   add_load_options(*app, o->load);
   return {app, [o] { return run_tour(*o); }};
 }
