@@ -44,7 +44,7 @@ struct SmoothOptions {
   bool fix_boundary = true;
   //! Empty: every vertex may move. Else one entry per vertex slot; only vertices whose entry is
   //! nonzero move (their neighbours still count in the averages).
-  std::span<const std::uint8_t> mask;
+  std::span<const std::uint8_t> mask{};
 };
 
 //! Smooths the positions of the live vertices. O(iterations x (V + E)).
