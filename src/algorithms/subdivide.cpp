@@ -300,7 +300,7 @@ void refine_catmull_clark(SurfaceMesh& m) {
   const Index inner = Index(2 * o.ne);
   auto to_centre = [&](Index h) { return Halfedge(2 * (inner + q[h])); };
   auto from_centre = [&](Index h) { return Halfedge(2 * (inner + q[h]) + 1); };
-  std::vector<Index> ring;
+  std::vector<Index> ring, corners, old_corners;  // per face, reused
   std::vector<float> weights;
   for (std::size_t f = 0; f < o.nf; ++f) {
     const Vertex centre(Index(o.nv + o.ne + f));
@@ -338,11 +338,11 @@ void refine_catmull_clark(SurfaceMesh& m) {
     m.set_halfedge(centre, from_centre(ring[0]));
     // The face point's vertex properties, and the corners at it: the average of the face's corners.
     weights.assign(n, 1.f / float(n));
-    std::vector<Index> corners(n);
+    corners.resize(n);
     for (std::size_t k = 0; k < n; ++k) corners[k] = o.to[ring[k]].idx();
     m.vertex_properties().interpolate(centre.idx(), corners.data(), weights.data(), n);
     if (corner_data) {
-      std::vector<Index> old_corners(n);
+      old_corners.resize(n);
       for (std::size_t k = 0; k < n; ++k) old_corners[k] = old_base + ring[k];
       for (std::size_t k = 0; k < n; ++k) hprops.interpolate(to_centre(ring[k]).idx(), old_corners.data(), weights.data(), n);
     }

@@ -47,17 +47,12 @@ void merge_ranges(std::vector<SlotRange>& r) {
 }
 }  // namespace
 
-RenderSync::RenderSync(SurfaceMesh& mesh, const RenderOptions& options) : mesh_(&mesh), options_(options) {
-  consumer_ = mesh.changes().attach();
-  try {
-    rebuild();
-  } catch (...) {
-    mesh.changes().detach(consumer_);
-    throw;
-  }
+RenderSync::RenderSync(SurfaceMesh& mesh, const RenderOptions& options)
+    : mesh_(&mesh), options_(options), changes_(mesh.watch_changes()) {
+  rebuild();  // if it throws, changes_ detaches as it is destroyed
 }
 
-RenderSync::~RenderSync() { mesh_->changes().detach(consumer_); }
+RenderSync::~RenderSync() = default;
 
 std::span<const float> RenderSync::stream(int i) const {
   if (layout_.interleaved) return {};
@@ -486,17 +481,17 @@ void RenderSync::report_full() {
 
 const SyncResult& RenderSync::rebuild() {
   full_build();
-  mesh_->changes().consume(consumer_);
+  changes_.consume();
   return result_;
 }
 
 const SyncResult& RenderSync::sync() {
   result_ = {};
   if (in_transaction()) return result_;
-  const ChangeLog::Pending p = mesh_->changes().pending(consumer_);
+  const ChangeLog::Pending p = changes_.pending();
   if (p.reset) return rebuild();
   if (p.vertices.empty() && p.faces.empty()) {
-    mesh_->changes().consume(consumer_);
+    changes_.consume();
     return result_;
   }
   const SurfaceMesh& m = *mesh_;
@@ -524,7 +519,7 @@ const SyncResult& RenderSync::sync() {
   for (Face f : dirty_faces_)
     if (m.is_live(f)) sync_face(f);
   result_.faces_synced = dirty_faces_.size();
-  mesh_->changes().consume(consumer_);
+  changes_.consume();
   finish_result();
   return result_;
 }
@@ -546,10 +541,10 @@ void RenderSync::finish_result() {
   result_.index_bytes = idx * sizeof(std::uint32_t);
 }
 
-void RenderSync::begin() { mesh_->changes().begin(consumer_); }
+void RenderSync::begin() { mesh_->changes().begin(changes_.id()); }
 
 const SyncResult& RenderSync::commit() {
-  if (!mesh_->changes().commit(consumer_)) {  // an inner transaction, or none was open
+  if (!mesh_->changes().commit(changes_.id())) {  // an inner transaction, or none was open
     result_ = {};
     return result_;
   }

@@ -162,7 +162,7 @@ class RenderSync {
   //! transaction of this RenderSync it does nothing and returns an empty result.
   const SyncResult& commit();
   //! True between begin() and the matching outermost commit(). O(consumers of the mesh).
-  bool in_transaction() const { return mesh_->changes().in_transaction(consumer_); }
+  bool in_transaction() const { return mesh_->changes().in_transaction(changes_.id()); }
   //! Rebuilds every buffer from scratch, a full export. Slots restart in
   //! face order, so it also compacts.
   const SyncResult& rebuild();
@@ -204,7 +204,8 @@ class RenderSync {
   SurfaceMesh* mesh_;
   RenderOptions options_;
   VertexLayout layout_;
-  ChangeLog::ConsumerId consumer_ = 0;
+  //! This object's place in the mesh's change log (detached when it is destroyed).
+  ChangeConsumer changes_;
   bool building_ = false;  // a full build reports whole buffers, not written slots
 
   // Attribute sources, resolved against the mesh's properties.
