@@ -1588,9 +1588,21 @@ static void test_subdivide(void) {
   /* Reordering: a permutation of the elements, the mesh still valid, with the same counts. */
   const hedge_counts before = counts_of(tet);
   uint32_t vmap[512], fmap[1024];
-  CHECK_STATUS(hedge_mesh_reorder_spatially(tet, vmap, 3, NULL, 0, NULL, 0, NULL, 0), HEDGE_ERROR_BUFFER_TOO_SMALL);
-  CHECK_OK(hedge_mesh_reorder_spatially(tet, vmap, 512, NULL, 0, NULL, 0, fmap, 1024));
+  CHECK_STATUS(hedge_mesh_reorder(tet, HEDGE_ORDERING_SPATIAL, 0, vmap, 3, NULL, 0, NULL, 0, NULL, 0),
+               HEDGE_ERROR_BUFFER_TOO_SMALL);
+  CHECK_STATUS(hedge_mesh_reorder(tet, 7, 0, NULL, 0, NULL, 0, NULL, 0, NULL, 0), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK(same_counts(counts_of(tet), before));
+  CHECK_OK(hedge_mesh_reorder(tet, HEDGE_ORDERING_SPATIAL, 0, vmap, 512, NULL, 0, NULL, 0, fmap, 1024));
+  CHECK(same_counts(counts_of(tet), before));
+  /* The vertex-cache order draws with fewer vertex loads per triangle than the spatial one. */
+  double spatial_acmr = 0, cache_acmr = 0;
+  CHECK_OK(hedge_mesh_cache_miss_ratio(tet, 16, &spatial_acmr));
+  CHECK_OK(hedge_mesh_reorder(tet, HEDGE_ORDERING_VERTEX_CACHE, 16, NULL, 0, NULL, 0, NULL, 0, NULL, 0));
+  CHECK_OK(hedge_mesh_cache_miss_ratio(tet, 16, &cache_acmr));
+  CHECK(cache_acmr < spatial_acmr && cache_acmr > 0.4);
+  CHECK_STATUS(hedge_mesh_cache_miss_ratio(tet, 16, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK(same_counts(counts_of(tet), before));
+  CHECK_OK(hedge_mesh_reorder(tet, HEDGE_ORDERING_SPATIAL, 0, vmap, 512, NULL, 0, NULL, 0, fmap, 1024));
   {
     uint8_t seen[512] = {0};
     for (uint32_t v = 0; v < before.vertex_slots; ++v) {

@@ -166,6 +166,15 @@ namespace Hedge
         Implicit = 3,
     }
 
+    /// <summary>The element orders of <see cref="HalfEdgeMesh.Reorder"/>.</summary>
+    public enum Ordering
+    {
+        /// <summary>A Morton curve through the positions: traversals read memory in order.</summary>
+        Spatial = 0,
+        /// <summary>Faces for a GPU's vertex cache, vertices in the order the faces first use them.</summary>
+        VertexCache = 1,
+    }
+
     /// <summary>Options of <see cref="HalfEdgeMesh.Smooth"/> (32 bytes, hedge_smooth_options). Start from
     /// <see cref="Default"/>.</summary>
     [StructLayout(LayoutKind.Sequential)]

@@ -142,8 +142,11 @@ namespace Hedge.Tests
                 Check.Equal(64u, buffers.Counts.Triangles, "the buffers follow");
                 Check.Throws(HedgeStatus.InvalidArgument, () => tet.Subdivide(Subdivision.Midpoint, 20));
                 var map = new Vertex[tet.Counts.VertexSlots];
-                tet.ReorderSpatially(map);
+                tet.Reorder(Ordering.Spatial, vertexMap: map);
                 Check.Equal((int)tet.Counts.VertexSlots, map.Select(v => v.Index).Distinct().Count(), "a permutation");
+                double spatial = tet.CacheMissRatio();
+                tet.Reorder(Ordering.VertexCache);
+                Check.True(tet.CacheMissRatio() < spatial, "the vertex-cache order loads fewer vertices per triangle");
                 buffers.Sync();
                 Check.Equal(64u, buffers.Counts.Triangles, "the buffers follow the renumbering");
                 Check.Valid(tet, "after subdividing");
