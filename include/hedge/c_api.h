@@ -588,7 +588,7 @@ typedef struct hedge_render_options {
   int32_t colors;      /**< 1: colours from the mesh's corner or vertex colours when present */
   int32_t interleaved; /**< 1: one buffer of whole vertices; 0: one buffer per stream */
   int32_t winding;     /**< HEDGE_WINDING_*: of the triangles in the index buffer */
-  int32_t flip_x;      /**< 1: negate x of positions and normals (right- <-> left-handed axes) */
+  int32_t flip_x;      /**< 1: negate x of positions and normals (mirrored data; Unity needs none) */
 } hedge_render_options;
 
 /** Where each attribute sits in a vertex, in floats; an absent attribute has offset -1.
@@ -731,8 +731,8 @@ typedef struct hedge_engine_import_options {
   int32_t weld;        /**< HEDGE_WELD_*: positions welded into one topological vertex */
   int32_t policy;      /**< HEDGE_POLICY_* */
   double weld_epsilon; /**< relative to the bounding-box diagonal, with HEDGE_WELD_EPSILON */
-  int32_t winding;     /**< HEDGE_WINDING_*: the engine's triangle winding (Unity: CW) */
-  int32_t flip_x;      /**< 1: negate x of positions and normals (Unity's left-handed axes) */
+  int32_t winding;     /**< HEDGE_WINDING_*: the triangle winding to convert from (Unity: none, CCW) */
+  int32_t flip_x;      /**< 1: negate x of positions and normals (mirrored data; Unity needs none) */
 } hedge_engine_import_options;
 
 /** Fills *out_options with the defaults: HEDGE_WELD_EXACT, HEDGE_POLICY_REPAIR, weld_epsilon 1e-6,
