@@ -28,9 +28,10 @@
  *    alignment (the layout of a C# [StructLayout(LayoutKind.Sequential)] struct); the byte offsets
  *    are given with each.
  *  - Threads: every function may be called from any thread, and different objects may be used
- *    concurrently. One mesh (with its render objects) must not be used from two threads at once.
- *    Destroying an object while another thread uses it is safe: that call finishes on the object,
- *    later calls get HEDGE_ERROR_BAD_HANDLE.
+ *    concurrently. One mesh (with its render objects) takes calls from one thread at a time: a call
+ *    that overlaps another thread's call on the same mesh fails at once with HEDGE_ERROR_BUSY and
+ *    changes nothing (one atomic compare-and-swap per call checks it). Destroying an object while
+ *    another thread uses it fails the same way.
  *  - Strings are UTF-8, NUL-terminated; paths too.
  *
  * Render objects refer to their mesh: hedge_mesh_destroy() also destroys every render object made
@@ -87,7 +88,11 @@ enum {
   /** A caller buffer is too small; the out-count gives the size needed. Nothing was changed. */
   HEDGE_ERROR_BUFFER_TOO_SMALL = -7,
   /** An unexpected internal failure (a bug); the message says what. */
-  HEDGE_ERROR_INTERNAL = -8
+  HEDGE_ERROR_INTERNAL = -8,
+  /** The mesh (or the mesh of a render object) is in a call on another thread. A mesh and its
+   *  render objects take calls from one thread at a time; overlapping calls from a second thread
+   *  fail at once with this status instead of corrupting the mesh or hanging. Nothing was changed. */
+  HEDGE_ERROR_BUSY = -9
 };
 
 /** The invalid element index. */
