@@ -191,7 +191,12 @@ SurfaceMesh read_mesh(const std::string& path, BuildReport* report) {
 }
 
 SurfaceMesh read_mesh(const std::string& path, const BuildOptions& options, BuildReport* report) {
-  return build(read_indexed_file(path), options, report);
+  const IndexedMesh in = read_indexed_file(path);
+  if (!in.warnings.empty() && options.policy == TopologyPolicy::strict) throw in.warnings.front().error();
+  SurfaceMesh mesh = build(in, options, report);
+  if (report)
+    for (const ReadWarning& w : in.warnings) report->warnings.push_back(w.text());
+  return mesh;
 }
 
 void write_mesh(const SurfaceMesh& mesh, const std::string& path, const WriteOptions& options) {

@@ -122,6 +122,7 @@ IndexedMesh read_off(std::string_view data, const std::string& name) {
                 " is out of range (" + std::to_string(nv) + " vertices)");
       mesh.indices.push_back(static_cast<std::uint32_t>(index));
     }
+    if (n < 3) mesh.warnings.push_back({in.name, in.line, -1, detail::short_face_message(f, std::size_t(n))});
     mesh.face_sizes.push_back(static_cast<std::uint32_t>(n));
     // Colour values may follow the indices.
     in.skip_line();

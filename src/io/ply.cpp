@@ -165,6 +165,7 @@ class BinarySource {
   [[noreturn]] void fail(const std::string& message, Location at) const {
     throw IoError(name_, 0, at.offset, message);
   }
+  ReadWarning warning(const std::string& message, Location at) const { return {name_, 0, at.offset, message}; }
   std::uint64_t bytes_left() const { return static_cast<std::uint64_t>(end_ - p_); }
 
   double real(Type t) {
@@ -239,6 +240,7 @@ class AsciiSource {
   [[noreturn]] void fail(const std::string& message, Location at) const {
     throw IoError(in_.name, at.line, -1, message);
   }
+  ReadWarning warning(const std::string& message, Location at) const { return {in_.name, at.line, -1, message}; }
   std::uint64_t bytes_left() const { return in_.bytes_left(); }
 
   double real(Type t) {
@@ -454,7 +456,11 @@ class BodyReader {
           src_.skip(p.type);
           continue;
         }
+        // Where a face record starts: its count's byte (binary), its line (text, known once the
+        // count is read, past any line break before it).
+        Location record_at = src_.where();
         const std::uint64_t n = static_cast<std::uint64_t>(list_count(p));
+        record_at.line = src_.where().line;
         if (k != list) {
           src_.skip(p.type, n);
         } else if (strips) {
@@ -469,6 +475,7 @@ class BodyReader {
             const Location at = src_.where();
             mesh_.indices.push_back(check_index(src_.integer(lp.type), face_number_, at));
           }
+          if (n < 3) mesh_.warnings.push_back(src_.warning(detail::short_face_message(face_number_, n), record_at));
           mesh_.face_sizes.push_back(static_cast<std::uint32_t>(n));
           ++face_number_;
         }

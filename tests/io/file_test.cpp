@@ -198,6 +198,65 @@ TEST_F(FileTest, ErrorsFromFilesNameThePath) {
   }
 }
 
+TEST_F(FileTest, ATruncatedFaceLineIsNamedWithItsLine) {
+  // A file cut in the middle of its last face line: "f 3" has one corner.
+  const std::string cut = path("cut.obj");
+  put(cut, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 3\n");
+  // Strict: refused, with the line.
+  try {
+    read_mesh(cut, BuildOptions{.policy = TopologyPolicy::strict});
+    FAIL() << "a one-corner face under the strict policy";
+  } catch (const IoError& e) {
+    EXPECT_EQ(e.line(), 6u);
+    EXPECT_EQ(std::string(e.what()),
+              cut + ":6: face 1 has 1 corner; a face needs at least 3 (the file may be truncated)");
+  }
+  // Repair: the face is dropped, and the report says where and why, not only a count.
+  BuildReport report;
+  const SurfaceMesh m = read_mesh(cut, &report);
+  EXPECT_EQ(m.n_faces(), 1u);
+  EXPECT_EQ(report.degenerate_faces, 1u);
+  ASSERT_EQ(report.warnings.size(), 1u);
+  EXPECT_EQ(report.warnings[0], cut + ":6: face 1 has 1 corner; a face needs at least 3 (the file may be truncated)");
+  EXPECT_TRUE(m.validate().empty());
+
+  // The same in OFF (line of the record) and PLY (ascii: line; binary: byte offset of the face).
+  const std::string off = path("cut.off");
+  put(off, "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n2 2 1\n");
+  report = {};
+  read_mesh(off, &report);
+  ASSERT_EQ(report.warnings.size(), 1u);
+  EXPECT_EQ(report.warnings[0], off + ":8: face 1 has 2 corners; a face needs at least 3 (the file may be truncated)");
+  EXPECT_THROW(read_mesh(off, BuildOptions{.policy = TopologyPolicy::strict}), IoError);
+
+  const std::string header =
+      "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string ascii = path("cut.ply");
+  put(ascii, "ply\nformat ascii 1.0\n" + header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n1 2\n");
+  report = {};
+  read_mesh(ascii, &report);
+  ASSERT_EQ(report.warnings.size(), 1u);
+  EXPECT_EQ(report.warnings[0], ascii + ":14: face 1 has 1 corner; a face needs at least 3 (the file may be truncated)");
+  const std::string binary = path("cut_binary.ply");
+  std::string body;
+  auto f32 = [&](float v) { body.append(reinterpret_cast<const char*>(&v), 4); };
+  auto i32 = [&](std::int32_t v) { body.append(reinterpret_cast<const char*>(&v), 4); };
+  for (float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) f32(v);
+  body += char(3);
+  for (int v : {0, 1, 2}) i32(v);
+  const std::size_t second_face = body.size();
+  body += char(1);
+  i32(2);
+  const std::string head = "ply\nformat binary_little_endian 1.0\n" + header;
+  put(binary, head + body);
+  report = {};
+  read_mesh(binary, &report);
+  ASSERT_EQ(report.warnings.size(), 1u);
+  EXPECT_EQ(report.warnings[0], binary + " (byte " + std::to_string(head.size() + second_face) +
+                                    "): face 1 has 1 corner; a face needs at least 3 (the file may be truncated)");
+}
+
 TEST(ReadMesh, BuildsWithTheFormatDefaults) {
   BuildReport report;
   const SurfaceMesh tet = read_mesh(data_path("tet.obj"), &report);

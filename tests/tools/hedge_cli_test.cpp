@@ -244,6 +244,28 @@ TEST_F(HedgeCli, ConvertAsciiPly) {
   EXPECT_EQ(read_text(bin).rfind("ply\nformat binary_little_endian", 0), 0u);
 }
 
+TEST_F(HedgeCli, ATruncatedFileIsReportedWithItsLine) {
+  const fs::path cut = tmp("cut.obj");
+  write_text(cut, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 3");
+  const Result r = run({"info", cut.string(), "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err, "hedge: warning: " + cut.string() +
+                       ":6: face 1 has 1 corner; a face needs at least 3 (the file may be truncated)\n");
+  const json j = json::parse(r.out);
+  ASSERT_EQ(j["warnings"].size(), 1u);
+  EXPECT_EQ(j["repairs"]["degenerate_faces"], 1);
+  EXPECT_EQ(j["faces"], 1);
+  // --strict refuses it, naming the line.
+  const Result strict = run({"info", cut.string(), "--strict"});
+  EXPECT_EQ(strict.code, 1);
+  EXPECT_NE(strict.err.find("cut.obj:6: face 1 has 1 corner"), std::string::npos) << strict.err;
+  // Other commands warn too, and still do their work.
+  const Result conv = run({"convert", cut.string(), tmp("out.ply").string()});
+  EXPECT_EQ(conv.code, 0);
+  EXPECT_NE(conv.err.find("hedge: warning: "), std::string::npos);
+  EXPECT_TRUE(fs::exists(tmp("out.ply")));
+}
+
 TEST_F(HedgeCli, MalformedFilesAreDataErrors) {
   const fs::path obj = tmp("broken.obj");
   write_text(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 zz\n");

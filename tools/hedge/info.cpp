@@ -78,6 +78,7 @@ int run_info(const InfoOptions& options) {
     j["file"] = options.file;
     j["format"] = format_name(loaded.format);
     j["repairs"] = repairs_json(loaded.report);
+    j["warnings"] = loaded.report.warnings;
     std::cout << j.dump(2) << '\n';
   } else {
     print_text(options, loaded, stats);

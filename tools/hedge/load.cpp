@@ -1,5 +1,6 @@
 #include "load.h"
 
+#include <iostream>
 #include <map>
 
 #include "hedge/error.h"
@@ -53,6 +54,8 @@ LoadedMesh load_mesh(const std::string& path, const LoadOptions& options) {
   } catch (const Error& e) {
     throw Error(path + ": " + e.what());
   }
+  // What the reader kept but found suspect, where the user sees it whatever the command.
+  for (const std::string& w : loaded.report.warnings) std::cerr << "hedge: warning: " << w << '\n';
   return loaded;
 }
 

@@ -30,7 +30,8 @@ struct LoadedMesh {
 };
 
 //! Reads and builds `path`. Errors that do not name the file already (topology, invalid input) are
-//! rethrown with "path: " in front, keeping their type.
+//! rethrown with "path: " in front, keeping their type. The reader's warnings (a face of fewer
+//! than 3 corners, ...) go to stderr as "hedge: warning: file:line: ..." lines.
 LoadedMesh load_mesh(const std::string& path, const LoadOptions& options);
 
 //! Lower-case name of a format ("obj", "off", "ply", "stl").

@@ -54,6 +54,10 @@ struct BuildReport {
   std::vector<Index> face_map;
   //! mesh vertex -> input vertex it came from.
   std::vector<Index> vertex_origin;
+  //! What the file reader kept but found suspect, each naming the file and line (or byte), e.g.
+  //! a face of fewer than 3 corners that a truncated file leaves (read_mesh() fills it; the
+  //! repair then drops that face and counts it in degenerate_faces).
+  std::vector<std::string> warnings;
 
   //! Total number of repairs (isolated vertices and welding are not repairs).
   std::size_t repairs() const {

@@ -3,11 +3,26 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "hedge/core/vec.h"
+#include "hedge/error.h"
 
 namespace hedge {
+
+//! Something a file reader kept but found suspect (a face with fewer than 3 corners, as a file cut
+//! in the middle of its last face line leaves), with where it is in the file.
+struct ReadWarning {
+  std::string path;
+  std::uint64_t line = 0;         //!< 1-based line of a text file, 0 otherwise
+  std::int64_t byte_offset = -1;  //!< offset into a binary file, -1 otherwise
+  std::string message;
+  //! The error this is under a strict policy.
+  IoError error() const { return IoError(path, line, byte_offset, message); }
+  //! "path:line: message" (text) or "path (byte N): message" (binary), as an IoError says it.
+  std::string text() const { return error().what(); }
+};
 
 //! An indexed polygon mesh.
 //!  - positions: #V positions.
@@ -25,6 +40,10 @@ struct IndexedMesh {
   std::vector<std::uint32_t> texcoord_indices;
   std::vector<Vec3> normals;
   std::vector<std::uint32_t> normal_indices;
+
+  //! What the reader that made this mesh found suspect but kept (empty for meshes not read from a
+  //! file). read_mesh() refuses them under the strict policy and reports them otherwise.
+  std::vector<ReadWarning> warnings;
 
   //! Number of faces, whether or not face_sizes is used.
   std::size_t face_count() const {

@@ -30,7 +30,9 @@ struct WriteOptions {
 // Per-format readers. `name` is used in error messages. Parsing works on the whole file in memory.
 //
 // Every reader returns a mesh whose indices are all in range and whose coordinates are all finite,
-// with face_sizes empty when every face is a triangle. It costs O(file size) time and allocates no
+// with face_sizes empty when every face is a triangle. A face of 1 or 2 corners (what a file cut in
+// the middle of a face line leaves) is kept and noted in IndexedMesh::warnings with its line (text)
+// or byte offset (binary); read_mesh() refuses it under the strict policy, and the repair drops it. It costs O(file size) time and allocates no
 // more than the file's size can justify, whatever counts a header claims.
 // \throw IoError on malformed input: what() is "name:line: message" for text ("name (byte N):
 // message" for binary data) and says what was expected and what was found. Elements are numbered
@@ -94,6 +96,8 @@ void write_indexed_file(const IndexedMesh& mesh, const std::string& path, const 
 BuildOptions default_build_options(FileFormat format);
 
 //! Reads and builds a SurfaceMesh. Uses default_build_options(format) unless options are given.
+//! What the reader found suspect (IndexedMesh::warnings) is an IoError naming the file and line
+//! under TopologyPolicy::strict, and goes to BuildReport::warnings otherwise.
 SurfaceMesh read_mesh(const std::string& path, BuildReport* report = nullptr);
 SurfaceMesh read_mesh(const std::string& path, const BuildOptions& options, BuildReport* report = nullptr);
 //! Exports (triangulating for STL) and writes atomically.
