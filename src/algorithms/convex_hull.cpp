@@ -154,7 +154,7 @@ class Quickhull {
   }
 
   // The largest distance of a point still outside beyond its face's plane (0 after a full run).
-  double max_outside_distance() const { return heap_.empty() ? 0.0 : heap_.top().first; }
+  double max_outside_distance() const { return std::max(dropped_, heap_.empty() ? 0.0 : heap_.top().first); }
 
   // The live faces as triangles of point indices, in creation order.
   std::vector<std::array<std::uint32_t, 3>> triangles() const {
@@ -257,8 +257,21 @@ class Quickhull {
         }
       }
     }
-    // Vertices of the visible region that are not on the horizon leave the hull.
-    for (const HorizonEdge& e : horizon_) point_mark_[e.from] = stamp_;
+    // The horizon of a point beyond a convex hull is one loop. Should rounding ever make the seen
+    // faces pinch or hold a hole (not one loop), the point is left out rather than the
+    // surface broken, and how far out it was is reported.
+    for (std::size_t k = 0; k < horizon_.size(); ++k) {
+      const std::uint32_t from = horizon_[k].from;
+      if (point_mark_[from] == stamp_) return drop(f0);
+      point_mark_[from] = stamp_;
+      start_face_[from] = static_cast<std::uint32_t>(k);  // for now: the horizon edge starting here
+    }
+    std::size_t loop = 0;
+    std::uint32_t at = horizon_[0].to;
+    for (; loop < horizon_.size() && point_mark_[at] == stamp_ && at != horizon_[0].from; ++loop)
+      at = horizon_[start_face_[at]].to;
+    if (at != horizon_[0].from || loop + 1 != horizon_.size()) return drop(f0);  // not one loop
+    // Vertices of the visible region that are not on the horizon (marked just now) leave the hull.
     std::size_t removed = 0;
     for (std::uint32_t f : visible_)
       for (std::uint32_t v : faces_[f].v)
@@ -293,8 +306,20 @@ class Quickhull {
     push_if_outside(new_faces_);
   }
 
+  void drop(std::uint32_t f0) {
+    Face_& f = faces_[f0];
+    dropped_ = std::max(dropped_, f.farthest_distance);
+    std::erase(f.outside, f.farthest);
+    f.farthest = kNone;
+    f.farthest_distance = 0;
+    for (std::uint32_t i : f.outside)
+      if (const double d = distance(f, i); d > f.farthest_distance) f.farthest_distance = d, f.farthest = i;
+    push_if_outside({&f0, 1});
+  }
+
   const std::vector<Vec3d>& p_;
   double eps_, visible_eps_;
+  double dropped_ = 0;  // the farthest a point left out by drop() was beyond its face
   std::vector<Face_> faces_;
   std::priority_queue<std::pair<double, std::uint32_t>> heap_;
   std::size_t n_vertices_ = 0;

@@ -126,6 +126,7 @@ TEST(ConvexHull, RandomCloudsWithFixedSeeds) {
     const ConvexHull h = convex_hull(pts);
     EXPECT_EQ(h.dimension, HullDimension::solid);
     expect_hull_of(h, pts, 1e-6);
+    EXPECT_EQ(h.max_outside_distance, 0) << "a point was left out";
     // The same input gives the same hull.
     const ConvexHull again = convex_hull(pts);
     EXPECT_EQ(again.input_index, h.input_index);
@@ -144,7 +145,21 @@ TEST(ConvexHull, ShardSizedAndQuantizedCloudsWithFixedSeeds) {
     const ConvexHull h = convex_hull(pts);
     if (h.dimension == HullDimension::solid || h.dimension == HullDimension::flat)
       expect_hull_of(h, pts, 1e-6);
+    EXPECT_EQ(h.max_outside_distance, 0) << "a point was left out";
   }
+}
+
+TEST(ConvexHull, ACoarseToleranceDropsNearPointsButStaysConvex) {
+  // Points within 1e-2 of the diagonal of the hull are not added; the hull is still convex to
+  // rounding, not to that tolerance, and contains every point within it.
+  const std::vector<Vec3> pts = sphere(5000, 13);
+  const ConvexHull fine = convex_hull(pts);
+  const ConvexHull coarse = convex_hull(pts, {.relative_tolerance = 1e-2});
+  EXPECT_NEAR(coarse.tolerance, 1e-2 * 2 * std::sqrt(3.0), 1e-3);  // the sample's box is nearly [-1, 1]^3
+  EXPECT_LT(coarse.mesh.n_vertices(), fine.mesh.n_vertices() / 4);
+  expect_hull_of(coarse, pts, 1e-6);
+  const std::vector<Plane> ps = planes(coarse.mesh);
+  for (Vertex v : coarse.mesh.vertices()) EXPECT_LE(outside_distance(ps, coarse.mesh.position(v)), 1e-6);
 }
 
 TEST(ConvexHull, ACubeSampleWithManyCoplanarPoints) {
