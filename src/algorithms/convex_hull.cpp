@@ -110,10 +110,10 @@ Simplex find_simplex(const std::vector<Vec3d>& p, double eps) {
   const Vec3d a = p[s.v[0]], dir = normalize(p[s.v[1]] - a);
   best = -1;
   for (std::uint32_t i = 0; i < n; ++i) {
-    const double d = norm(cross(p[i] - a, dir));
-    if (d > best) best = d, s.v[2] = i;
+    const Vec3d off = cross(p[i] - a, dir);
+    if (const double d = dot(off, off); d > best) best = d, s.v[2] = i;  // squared
   }
-  if (best <= eps) return s;
+  if (std::sqrt(best) <= eps) return s;
   s.dimension = HullDimension::flat;
   const Vec3d nrm = triangle_normal(a, p[s.v[1]], p[s.v[2]]);
   best = -1;

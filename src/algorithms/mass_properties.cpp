@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "hedge/error.h"
@@ -9,10 +10,15 @@
 namespace hedge {
 namespace {
 
+std::string number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.9g", x);
+  return buffer;
+}
+
 void check_input(const SurfaceMesh& mesh, double density) {
   if (!std::isfinite(density) || density <= 0)
-    throw InvalidInputError("mass_properties: density must be finite and positive, got " +
-                            std::to_string(density));
+    throw InvalidInputError("mass_properties: density must be finite and positive, got " + number(density));
   std::size_t boundary = 0;
   for (Halfedge h : mesh.halfedges())
     if (mesh.is_boundary(h)) ++boundary;
@@ -63,7 +69,7 @@ MassProperties mass_properties(const SurfaceMesh& mesh, double density) {
   }
   const double volume = six_volume / 6;
   if (!(volume > 0))
-    throw InvalidInputError("mass_properties: the mesh encloses a volume of " + std::to_string(volume) +
+    throw InvalidInputError("mass_properties: the mesh encloses a volume of " + number(volume) +
                             ", not a positive one (empty, or faces wound inward?)");
   MassProperties m;
   m.volume = volume;
