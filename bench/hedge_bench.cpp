@@ -11,6 +11,8 @@
 // what reordering gets back (algorithms/reorder.h). The counter "acmr" is each order's average cache
 // miss ratio (vertex loads per triangle through a 16-entry FIFO cache), which the vertex_cache
 // ordering lowers for a GPU drawing the faces in index order.
+//
+// BM_convex_hull/<n>: the convex hull of n random points in a ball (200: a shard's size).
 #include <benchmark/benchmark.h>
 
 #include <iostream>
@@ -19,6 +21,7 @@
 #include <vector>
 
 #include "bench_common.h"
+#include "hedge/algorithms/convex_hull.h"
 #include "hedge/algorithms/reorder.h"
 #include "hedge/core/build.h"
 
@@ -73,6 +76,31 @@ void one_ring(benchmark::State& state, const hedge::SurfaceMesh* m) {
   }
   state.counters["acmr"] = hedge::average_cache_miss_ratio(*m, 16);
 }
+
+// ---- BM_convex_hull: quickhull (algorithms/convex_hull.h) of n random points in a unit ball
+// (fixed seed), 10^3 to 10^5, and of a shard-sized set of 200 points. Needs no mesh. ----
+std::vector<hedge::Vec3> ball_points(std::size_t n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-1, 1);
+  std::vector<hedge::Vec3> pts;
+  while (pts.size() < n) {
+    const hedge::Vec3 p{u(rng), u(rng), u(rng)};
+    if (hedge::dot(p, p) <= 1) pts.push_back(p);
+  }
+  return pts;
+}
+
+void BM_convex_hull(benchmark::State& state) {
+  const std::vector<hedge::Vec3> pts = ball_points(static_cast<std::size_t>(state.range(0)), 1);
+  std::size_t hull_vertices = 0;
+  for (auto _ : state) {
+    hedge::ConvexHull h = hedge::convex_hull(pts);
+    hull_vertices = h.mesh.n_vertices();
+    benchmark::DoNotOptimize(h);
+  }
+  state.counters["hull_vertices"] = static_cast<double>(hull_vertices);
+}
+BENCHMARK(BM_convex_hull)->Arg(200)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

@@ -1,0 +1,410 @@
+#include "hedge/algorithms/convex_hull.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <string>
+#include <utility>
+
+#include "hedge/core/build.h"
+#include "hedge/error.h"
+
+namespace hedge {
+namespace {
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+void check_options(const ConvexHullOptions& o) {
+  if (!std::isfinite(o.relative_tolerance) || o.relative_tolerance < 0 || o.relative_tolerance > 0.01)
+    throw InvalidInputError("convex_hull: relative_tolerance must be in [0, 0.01], got " +
+                            std::to_string(o.relative_tolerance));
+  if (!std::isfinite(o.flat_thickness) || o.flat_thickness <= 0 || o.flat_thickness > 1)
+    throw InvalidInputError("convex_hull: flat_thickness must be in (0, 1], got " +
+                            std::to_string(o.flat_thickness));
+  if (o.max_vertices != 0 && o.max_vertices < 4)
+    throw InvalidInputError("convex_hull: max_vertices must be 0 (no limit) or at least 4, got " +
+                            std::to_string(o.max_vertices));
+}
+
+void check_points(std::span<const Vec3> points) {
+  if (points.size() >= kNone)
+    throw InvalidInputError("convex_hull: too many points (" + std::to_string(points.size()) + ")");
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!is_finite(points[i]))
+      throw InvalidInputError("convex_hull: point " + std::to_string(i) + " is not finite (" +
+                              std::to_string(points[i].x) + ", " + std::to_string(points[i].y) + ", " +
+                              std::to_string(points[i].z) + ")");
+}
+
+// The points in double, relative to their bounding-box centre, and the box's diagonal length.
+struct Centred {
+  std::vector<Vec3d> p;
+  double extent = 0;
+  float max_abs = 0;  // the largest absolute input coordinate
+};
+
+Centred centre(std::span<const Vec3> points) {
+  Centred c;
+  if (points.empty()) return c;
+  Vec3 lo = points[0], hi = points[0];
+  for (const Vec3& q : points)
+    for (std::size_t k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], q[k]);
+      hi[k] = std::max(hi[k], q[k]);
+      c.max_abs = std::max(c.max_abs, std::abs(q[k]));
+    }
+  const Vec3d mid = (to_double(lo) + to_double(hi)) * 0.5;
+  c.extent = norm(to_double(hi) - to_double(lo));
+  c.p.reserve(points.size());
+  for (const Vec3& q : points) c.p.push_back(to_double(q) - mid);
+  return c;
+}
+
+// The unit normal of triangle abc from its two shorter edges (the better-conditioned cross
+// product); zero for a triangle without area.
+Vec3d triangle_normal(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+  const Vec3d ab = b - a, bc = c - b, ca = a - c;
+  const double lab = dot(ab, ab), lbc = dot(bc, bc), lca = dot(ca, ca);
+  Vec3d n;
+  if (lab >= lbc && lab >= lca)
+    n = cross(bc, ca);  // ab longest: the edges meeting at c
+  else if (lbc >= lca)
+    n = cross(ca, ab);  // the edges meeting at a
+  else
+    n = cross(ab, bc);  // the edges meeting at b
+  return normalize(n);
+}
+
+// The four points of the starting tetrahedron, or fewer when the set spans less than a volume.
+struct Simplex {
+  HullDimension dimension = HullDimension::empty;
+  std::array<std::uint32_t, 4> v{kNone, kNone, kNone, kNone};
+};
+
+Simplex find_simplex(const std::vector<Vec3d>& p, double eps) {
+  Simplex s;
+  if (p.empty()) return s;
+  s.dimension = HullDimension::point;
+  const auto n = static_cast<std::uint32_t>(p.size());
+  // The extreme points along the axes; the farthest pair of them spans the first edge.
+  std::array<std::uint32_t, 6> ext{};
+  for (std::uint32_t i = 1; i < n; ++i)
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (p[i][k] < p[ext[2 * k]][k]) ext[2 * k] = i;
+      if (p[i][k] > p[ext[2 * k + 1]][k]) ext[2 * k + 1] = i;
+    }
+  double best = -1;
+  for (std::size_t i = 0; i < 6; ++i)
+    for (std::size_t j = i + 1; j < 6; ++j) {
+      const Vec3d d = p[ext[j]] - p[ext[i]];
+      if (dot(d, d) > best) {
+        best = dot(d, d);
+        s.v[0] = ext[i];
+        s.v[1] = ext[j];
+      }
+    }
+  if (std::sqrt(best) <= eps) return s;
+  s.dimension = HullDimension::segment;
+  const Vec3d a = p[s.v[0]], dir = normalize(p[s.v[1]] - a);
+  best = -1;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const Vec3d off = cross(p[i] - a, dir);
+    if (const double d = dot(off, off); d > best) best = d, s.v[2] = i;  // squared
+  }
+  if (std::sqrt(best) <= eps) return s;
+  s.dimension = HullDimension::flat;
+  const Vec3d nrm = triangle_normal(a, p[s.v[1]], p[s.v[2]]);
+  best = -1;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const double d = std::abs(dot(nrm, p[i] - a));
+    if (d > best) best = d, s.v[3] = i;
+  }
+  if (best <= eps) return s;
+  s.dimension = HullDimension::solid;
+  return s;
+}
+
+// Quickhull on a set that spans a volume. Faces are triangles with their three neighbours; a
+// face's outside set holds the unassigned points beyond its plane, and a max-heap over the faces'
+// farthest points picks the next point to add.
+class Quickhull {
+ public:
+  // A point is outside a face when it lies more than eps beyond its plane, so points on the hull
+  // within eps are not added; but a face counts as seen by the point being added as soon as it
+  // lies beyond rounding noise, so the hull stays convex to that noise rather than to eps.
+  Quickhull(const std::vector<Vec3d>& p, double eps, double extent)
+      : p_(p), eps_(eps), visible_eps_(std::min(eps, 1e-12 * extent)) {}
+
+  // Builds the hull from the simplex; stops early once it has max_vertices vertices (0: never).
+  void run(const Simplex& s, std::size_t max_vertices) {
+    start(s);
+    while (!heap_.empty()) {
+      const std::uint32_t f = heap_.top().second;
+      heap_.pop();
+      if (!faces_[f].alive) continue;
+      if (max_vertices != 0 && n_vertices_ >= max_vertices) {
+        heap_.push({faces_[f].farthest_distance, f});  // keep it for max_outside_distance()
+        break;
+      }
+      add_point(f);
+    }
+    while (!heap_.empty() && !faces_[heap_.top().second].alive) heap_.pop();
+  }
+
+  // The largest distance of a point still outside beyond its face's plane (0 after a full run).
+  double max_outside_distance() const { return std::max(dropped_, heap_.empty() ? 0.0 : heap_.top().first); }
+
+  // The live faces as triangles of point indices, in creation order.
+  std::vector<std::array<std::uint32_t, 3>> triangles() const {
+    std::vector<std::array<std::uint32_t, 3>> t;
+    for (const Face_& f : faces_)
+      if (f.alive) t.push_back(f.v);
+    return t;
+  }
+
+ private:
+  struct Face_ {
+    std::array<std::uint32_t, 3> v{};   // counter-clockwise seen from outside
+    std::array<std::uint32_t, 3> nb{};  // nb[i]: the face across edge v[i] -> v[i + 1]
+    Vec3d normal;
+    double offset = 0;
+    std::vector<std::uint32_t> outside;
+    std::uint32_t farthest = kNone;
+    double farthest_distance = 0;
+    bool alive = true;
+  };
+  struct HorizonEdge {
+    std::uint32_t from, to, outer;  // outer: the face beyond it that stays
+    std::size_t outer_slot;         // the edge's slot in the outer face
+  };
+
+  double distance(const Face_& f, std::uint32_t i) const { return dot(f.normal, p_[i]) - f.offset; }
+
+  std::uint32_t new_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    Face_ f;
+    f.v = {a, b, c};
+    f.normal = triangle_normal(p_[a], p_[b], p_[c]);
+    f.offset = dot(f.normal, (p_[a] + p_[b] + p_[c]) * (1.0 / 3.0));
+    faces_.push_back(std::move(f));
+    return static_cast<std::uint32_t>(faces_.size() - 1);
+  }
+
+  // Gives point i to the face among `candidates` it lies farthest beyond, if any is beyond eps.
+  void assign(std::uint32_t i, std::span<const std::uint32_t> candidates) {
+    std::uint32_t best = kNone;
+    double best_d = eps_;
+    for (std::uint32_t f : candidates) {
+      const double d = distance(faces_[f], i);
+      if (d > best_d) best_d = d, best = f;
+    }
+    if (best == kNone) return;  // inside, or on the hull within the tolerance
+    Face_& f = faces_[best];
+    f.outside.push_back(i);
+    if (best_d > f.farthest_distance) f.farthest_distance = best_d, f.farthest = i;
+  }
+
+  void push_if_outside(std::span<const std::uint32_t> fs) {
+    for (std::uint32_t f : fs)
+      if (!faces_[f].outside.empty()) heap_.push({faces_[f].farthest_distance, f});
+  }
+
+  void start(const Simplex& s) {
+    auto [a, b, c, d] = s.v;
+    if (dot(triangle_normal(p_[a], p_[b], p_[c]), p_[d] - p_[a]) > 0) std::swap(b, c);
+    // Now d is below abc: abc, and the three faces through d, wind outward.
+    const std::array<std::uint32_t, 4> f{new_face(a, b, c), new_face(a, d, b), new_face(b, d, c),
+                                         new_face(c, d, a)};
+    for (std::uint32_t x : f)
+      for (std::size_t i = 0; i < 3; ++i) {
+        const std::uint32_t from = faces_[x].v[i], to = faces_[x].v[(i + 1) % 3];
+        for (std::uint32_t y : f)
+          for (std::size_t j = 0; j < 3; ++j)
+            if (faces_[y].v[j] == to && faces_[y].v[(j + 1) % 3] == from) faces_[x].nb[i] = y;
+      }
+    visible_mark_.assign(faces_.size(), 0);
+    point_mark_.assign(p_.size(), 0);
+    start_face_.assign(p_.size(), kNone);
+    end_face_.assign(p_.size(), kNone);
+    for (std::uint32_t i = 0; i < p_.size(); ++i)
+      if (i != a && i != b && i != c && i != d) assign(i, f);
+    push_if_outside(f);
+    n_vertices_ = 4;
+  }
+
+  void add_point(std::uint32_t f0) {
+    const std::uint32_t apex = faces_[f0].farthest;
+    ++stamp_;
+    // The faces the apex sees, found by a walk from f0, and the horizon around them.
+    visible_.clear();
+    horizon_.clear();
+    visible_mark_.resize(faces_.size(), 0);
+    visible_mark_[f0] = stamp_;
+    visible_.push_back(f0);
+    for (std::size_t k = 0; k < visible_.size(); ++k) {
+      const Face_& f = faces_[visible_[k]];
+      for (std::size_t i = 0; i < 3; ++i) {
+        const std::uint32_t g = f.nb[i];
+        if (visible_mark_[g] == stamp_) continue;
+        if (distance(faces_[g], apex) > visible_eps_) {
+          visible_mark_[g] = stamp_;
+          visible_.push_back(g);
+        } else {
+          const std::size_t slot = std::size_t(
+              std::find(faces_[g].nb.begin(), faces_[g].nb.end(), visible_[k]) - faces_[g].nb.begin());
+          horizon_.push_back({f.v[i], f.v[(i + 1) % 3], g, slot});
+        }
+      }
+    }
+    // The horizon of a point beyond a convex hull is one loop. Should rounding ever make the seen
+    // faces pinch or hold a hole (not one loop), the point is left out rather than the
+    // surface broken, and how far out it was is reported.
+    for (std::size_t k = 0; k < horizon_.size(); ++k) {
+      const std::uint32_t from = horizon_[k].from;
+      if (point_mark_[from] == stamp_) return drop(f0);
+      point_mark_[from] = stamp_;
+      start_face_[from] = static_cast<std::uint32_t>(k);  // for now: the horizon edge starting here
+    }
+    std::size_t loop = 0;
+    std::uint32_t at = horizon_[0].to;
+    for (; loop < horizon_.size() && point_mark_[at] == stamp_ && at != horizon_[0].from; ++loop)
+      at = horizon_[start_face_[at]].to;
+    if (at != horizon_[0].from || loop + 1 != horizon_.size()) return drop(f0);  // not one loop
+    // Vertices of the visible region that are not on the horizon (marked just now) leave the hull.
+    std::size_t removed = 0;
+    for (std::uint32_t f : visible_)
+      for (std::uint32_t v : faces_[f].v)
+        if (point_mark_[v] != stamp_) point_mark_[v] = stamp_, ++removed;
+    n_vertices_ = n_vertices_ + 1 - removed;
+
+    // A fan of new faces from the apex to the horizon, linked to the outer faces and each other.
+    new_faces_.clear();
+    for (const HorizonEdge& e : horizon_) {
+      const std::uint32_t nf = new_face(e.from, e.to, apex);
+      faces_[nf].nb[0] = e.outer;
+      faces_[e.outer].nb[e.outer_slot] = nf;
+      start_face_[e.from] = nf;
+      end_face_[e.to] = nf;
+      new_faces_.push_back(nf);
+    }
+    for (std::uint32_t nf : new_faces_) {
+      Face_& f = faces_[nf];
+      f.nb[1] = start_face_[f.v[1]];  // across to -> apex: the face whose horizon edge starts at `to`
+      f.nb[2] = end_face_[f.v[0]];    // across apex -> from: the face whose horizon edge ends at `from`
+    }
+    visible_mark_.resize(faces_.size(), 0);
+
+    // The visible faces' outside points go to the new faces or, now inside, are dropped.
+    for (std::uint32_t f : visible_) {
+      Face_& dead = faces_[f];
+      dead.alive = false;
+      for (std::uint32_t i : dead.outside)
+        if (i != apex) assign(i, new_faces_);
+      std::vector<std::uint32_t>().swap(dead.outside);
+    }
+    push_if_outside(new_faces_);
+  }
+
+  void drop(std::uint32_t f0) {
+    Face_& f = faces_[f0];
+    dropped_ = std::max(dropped_, f.farthest_distance);
+    std::erase(f.outside, f.farthest);
+    f.farthest = kNone;
+    f.farthest_distance = 0;
+    for (std::uint32_t i : f.outside)
+      if (const double d = distance(f, i); d > f.farthest_distance) f.farthest_distance = d, f.farthest = i;
+    push_if_outside({&f0, 1});
+  }
+
+  const std::vector<Vec3d>& p_;
+  double eps_, visible_eps_;
+  double dropped_ = 0;  // the farthest a point left out by drop() was beyond its face
+  std::vector<Face_> faces_;
+  std::priority_queue<std::pair<double, std::uint32_t>> heap_;
+  std::size_t n_vertices_ = 0;
+  std::uint32_t stamp_ = 0;
+  std::vector<std::uint32_t> visible_mark_, point_mark_, start_face_, end_face_;
+  std::vector<std::uint32_t> visible_, new_faces_;
+  std::vector<HorizonEdge> horizon_;
+};
+
+// The hull of a set known to span a volume, as a mesh of the points it uses.
+ConvexHull solid_hull(std::span<const Vec3> points, const Centred& c, const Simplex& s, double eps,
+                      std::size_t max_vertices) {
+  Quickhull qh(c.p, eps, c.extent);
+  qh.run(s, max_vertices);
+  std::vector<std::array<std::uint32_t, 3>> tris = qh.triangles();
+  // Hull vertices numbered in input order, so the output depends on the input only.
+  std::vector<std::uint32_t> index(points.size(), kNone);
+  for (const auto& t : tris)
+    for (std::uint32_t v : t) index[v] = 0;
+  ConvexHull hull;
+  std::vector<Vec3> positions;
+  for (std::uint32_t i = 0; i < points.size(); ++i)
+    if (index[i] != kNone) {
+      index[i] = static_cast<std::uint32_t>(positions.size());
+      positions.push_back(points[i]);
+      hull.input_index.push_back(i);
+    }
+  std::vector<std::uint32_t> flat;
+  flat.reserve(3 * tris.size());
+  for (const auto& t : tris)
+    for (std::uint32_t v : t) flat.push_back(index[v]);
+  hull.mesh = build_triangles(positions, flat, {.corner_attributes = false});
+  hull.dimension = HullDimension::solid;
+  hull.tolerance = eps;
+  hull.max_outside_distance = qh.max_outside_distance();
+  return hull;
+}
+
+float float_step(float x) { return std::nextafter(x, std::numeric_limits<float>::infinity()) - x; }
+
+// Float input is already rounded by half a float step of its coordinates: points of a tilted
+// plane are coplanar only to that, so the tolerance is never finer.
+double tolerance(const ConvexHullOptions& o, const Centred& c) {
+  return std::max(o.relative_tolerance * c.extent, 2.0 * float_step(c.max_abs));
+}
+
+}  // namespace
+
+ConvexHull convex_hull(std::span<const Vec3> points, const ConvexHullOptions& options) {
+  check_options(options);
+  check_points(points);
+  const Centred c = centre(points);
+  const double eps = tolerance(options, c);
+  const Simplex s = find_simplex(c.p, eps);
+  if (s.dimension == HullDimension::solid) return solid_hull(points, c, s, eps, options.max_vertices);
+  if (s.dimension != HullDimension::flat) {
+    ConvexHull hull;
+    hull.dimension = s.dimension;
+    hull.tolerance = eps;
+    return hull;
+  }
+  // A flat set: the hull of the prism of the points moved half the thickness off their plane to
+  // either side. The thickness is kept well above the tolerance and float rounding, so the prism
+  // spans a volume.
+  const double step = float_step(c.max_abs);
+  const double thickness = std::max({options.flat_thickness * c.extent, 16.0 * step, 4.0 * eps});
+  const Vec3d n = triangle_normal(c.p[s.v[0]], c.p[s.v[1]], c.p[s.v[2]]) * (0.5 * thickness);
+  std::vector<Vec3> prism;
+  prism.reserve(2 * points.size());
+  for (const Vec3& q : points) {
+    prism.push_back(to_float(to_double(q) + n));
+    prism.push_back(to_float(to_double(q) - n));
+  }
+  const Centred pc = centre(prism);
+  const double prism_eps = tolerance(options, pc);
+  const Simplex ps = find_simplex(pc.p, prism_eps);
+  if (ps.dimension != HullDimension::solid)
+    throw std::logic_error("convex_hull: the prism of a flat set does not span a volume");
+  ConvexHull hull = solid_hull(prism, pc, ps, prism_eps, options.max_vertices);
+  for (std::uint32_t& i : hull.input_index) i /= 2;
+  hull.dimension = HullDimension::flat;
+  hull.thickness = thickness;
+  // The input points lie within eps of the mid-plane; the prism's corners moved by float rounding.
+  hull.tolerance = std::max(prism_eps, eps + step);
+  return hull;
+}
+
+}  // namespace hedge
