@@ -25,6 +25,7 @@
 //    UVs enter the quadric (the plane quadric is extended with the UV gradient), so collapses that
 //    stretch the texture cost more.
 //
+// Isolated vertices (no face) count toward the vertex target but are never removed.
 // Other vertex properties keep the survivor's value; face and edge properties of surviving elements
 // are kept. Deleted elements are garbage-collected at the end, so the result is compact (indices
 // change; the change log records a reset).
@@ -63,7 +64,7 @@ struct DecimateOptions {
   //! Refuse collapses that turn a face around either end by more than this (prevents flips).
   double max_normal_change_degrees = 60.0;
   //! Called with the fraction of the work done.
-  Progress progress;
+  Progress progress{};
 };
 
 struct DecimateResult {
