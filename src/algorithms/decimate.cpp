@@ -173,6 +173,8 @@ class Decimator {
   double min_cos_ = 0, max_cost_ = 0, tiny_area2_ = 0;
 
   std::vector<Quadric> q_;
+  // Each face's unit normal in the input: small steps must not add up to a face turned over.
+  std::vector<Vec3> input_normal_;
   std::vector<std::uint32_t> stamp_;   // pass in which the vertex survived a collapse
   std::vector<std::uint8_t> seam_count_;  // seam edges at the vertex, saturated at 3
   // Candidates: (cost bits << 32) | half-edge, per edge (kept between passes) and of this pass.
@@ -192,6 +194,7 @@ class Decimator {
 
 void Decimator::gather_quadrics() {
   q_.assign(m_.vertex_slots(), Quadric{});
+  input_normal_.assign(m_.face_slots(), Vec3{0, 0, 0});
   const double feature_cos = o_.feature_angle_degrees >= 180 ? -2.0 : std::cos(o_.feature_angle_degrees * kPi / 180);
   const double wa2 = o_.attribute_weight * o_.attribute_weight;
   double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
@@ -216,6 +219,7 @@ void Decimator::gather_quadrics() {
     if (!(len > 0)) continue;
     const double area = len / 2;
     const Vec3d u = n / len;
+    input_normal_[f.idx()] = to_float(u);
     Quadric face;
     face.add_plane(u, -dot(u, x0), area);
     face.w = area;
@@ -380,6 +384,7 @@ bool Decimator::keeps_normals(Halfedge h, const Vec3d& p) const {
         if (!(l1 > tiny_area2_)) return false;
         const double d = dot(n0, n1), l0 = dot(n0, n0);
         if (l0 > 0 && d < min_cos_ * std::sqrt(l0 * l1)) return false;
+        if (dot(n1, to_double(input_normal_[f.idx()])) < 0) return false;
       }
       o = m_.rotate_cw(o);
     } while (o != start);

@@ -15,8 +15,9 @@
 //    feature_angle_degrees) add the same planes for both faces, weighted by feature_weight.
 //  - A collapse is done only if can_collapse() allows it (the link condition: no boundary loop
 //    shrinks below 3 vertices, no two boundaries are joined), no face around either end would turn
-//    by more than max_normal_change_degrees or lose its area, and, with keep_seams, it does not
-//    break a UV seam.
+//    by more than max_normal_change_degrees, turn more than 90 degrees away from its own normal in
+//    the input (so that small turns cannot add up to a flip), or lose its area, and, with
+//    keep_seams, it does not break a UV seam.
 //  - Corner texture coordinates ("h:texcoord", Vec2) follow: each corner at the surviving vertex
 //    gets the value interpolated at the new position, barycentric in the triangle of its own side
 //    of a seam that the point projects into. A seam edge (the corners on its two sides differ) is
