@@ -239,26 +239,21 @@ void Decimator::gather_quadrics() {
     }
   }
   // Planes through boundary and feature edges, perpendicular to their faces, keep those edges
-  // where they are; scaled by the squared length, like a face's area. The faces' unit normals are
-  // recomputed here rather than stored: two cross products cost less than an array per face.
+  // where they are; scaled by the squared length, like a face's area.
   const bool features = o_.feature_weight > 0 && (feature_cos > -2.0 || crease_);
   if (!(o_.boundary_weight > 0) && !features) return;
   for (Edge e : m_.edges()) {
     const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
-    const bool boundary = m_.is_boundary(h) || m_.is_boundary(t);
+    const Face f0 = m_.face(h), f1 = m_.face(t);
+    const bool boundary = !f0.is_valid() || !f1.is_valid();
     if (boundary ? !(o_.boundary_weight > 0) : !features) continue;
+    auto normal_of = [&](Face f) { return to_double(input_normal_[f.idx()]); };
+    if (!boundary && !(crease_ && crease_[e] != 0) && !(dot(normal_of(f0), normal_of(f1)) < feature_cos)) continue;
     const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
-    const Vec3d xa = pos(a), xb = pos(b), dir = xb - xa;
+    const Vec3d xa = pos(a), dir = pos(b) - xa;
     const double len2 = dot(dir, dir);
-    // The unit normal of the face on half-edge x (x runs from a to b or back).
-    auto unit_normal = [&](Halfedge x) {
-      const Vec3d tip = pos(m_.to_vertex(m_.next(x)));
-      const Vec3d n = x == h ? cross(dir, tip - xa) : cross(tip - xa, dir);
-      const double l = norm(n);
-      return l > 0 ? n / l : Vec3d{0, 0, 0};
-    };
-    auto constrain = [&](const Vec3d& face_normal, double weight) {
-      const Vec3d n = cross(dir, face_normal);
+    auto constrain = [&](Face f, double weight) {
+      const Vec3d n = cross(dir, normal_of(f));
       const double l = norm(n);
       if (!(l > 0)) return;
       const Vec3d u = n / l;
@@ -269,13 +264,10 @@ void Decimator::gather_quadrics() {
       q_[b.idx()].add(plane);
     };
     if (boundary) {
-      constrain(unit_normal(m_.is_boundary(h) ? t : h), o_.boundary_weight);
-      continue;
-    }
-    const Vec3d n0 = unit_normal(h), n1 = unit_normal(t);
-    if ((crease_ && crease_[e] != 0) || dot(n0, n1) < feature_cos) {
-      constrain(n0, o_.feature_weight);
-      constrain(n1, o_.feature_weight);
+      constrain(f0.is_valid() ? f0 : f1, o_.boundary_weight);
+    } else {
+      constrain(f0, o_.feature_weight);
+      constrain(f1, o_.feature_weight);
     }
   }
 }
