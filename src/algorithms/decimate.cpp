@@ -2,9 +2,10 @@
 // passes of rank (every live edge gets its best collapse and cost), sort (a radix sort on the
 // costs' bits) and collapse (cheapest first, each vertex at most once per pass); finally collect
 // the garbage. A pass does half of the collapses still needed (at least 1/32 of all), so about
-// six passes run, each over the edges left. A vertex that survived a collapse is locked until the next pass, because the
-// costs of its edges are stale; the costs of all other edges are still exact, since a collapse
-// changes no other vertex's quadric. No allocation happens per collapse.
+// six to eight passes run. A vertex that survived a collapse is locked until the next pass,
+// because the costs of its edges are stale; the costs of all other edges are still exact, since a
+// collapse changes no other vertex's quadric, so the next pass re-ranks only the survivors' edges.
+// No allocation happens per collapse.
 #include "hedge/algorithms/decimate.h"
 
 #include <algorithm>
@@ -12,7 +13,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
