@@ -28,9 +28,10 @@
  *    alignment (the layout of a C# [StructLayout(LayoutKind.Sequential)] struct); the byte offsets
  *    are given with each.
  *  - Threads: every function may be called from any thread, and different objects may be used
- *    concurrently. One mesh (with its render objects) must not be used from two threads at once.
- *    Destroying an object while another thread uses it is safe: that call finishes on the object,
- *    later calls get HEDGE_ERROR_BAD_HANDLE.
+ *    concurrently. One mesh (with its render objects) takes calls from one thread at a time: a call
+ *    that overlaps another thread's call on the same mesh fails at once with HEDGE_ERROR_BUSY and
+ *    changes nothing (one atomic compare-and-swap per call checks it). Destroying an object while
+ *    another thread uses it fails the same way.
  *  - Strings are UTF-8, NUL-terminated; paths too.
  *
  * Render objects refer to their mesh: hedge_mesh_destroy() also destroys every render object made
@@ -87,7 +88,11 @@ enum {
   /** A caller buffer is too small; the out-count gives the size needed. Nothing was changed. */
   HEDGE_ERROR_BUFFER_TOO_SMALL = -7,
   /** An unexpected internal failure (a bug); the message says what. */
-  HEDGE_ERROR_INTERNAL = -8
+  HEDGE_ERROR_INTERNAL = -8,
+  /** The mesh (or the mesh of a render object) is in a call on another thread. A mesh and its
+   *  render objects take calls from one thread at a time; overlapping calls from a second thread
+   *  fail at once with this status instead of corrupting the mesh or hanging. Nothing was changed. */
+  HEDGE_ERROR_BUSY = -9
 };
 
 /** The invalid element index. */
@@ -539,14 +544,29 @@ typedef enum hedge_subdivision {
  *  result beyond 2^31 half-edges: HEDGE_ERROR_INVALID_ARGUMENT, and the mesh is unchanged. */
 HEDGE_API hedge_status hedge_mesh_subdivide(hedge_mesh* mesh, int32_t scheme, int32_t steps);
 
-/** Renumbers the elements along a Morton curve through their positions (hedge/algorithms/reorder.h),
- *  so that traversals read memory in order; garbage is collected at the same time. The old-to-new
- *  maps are written as by hedge_mesh_garbage_collection() (each map optional, NULL). Render objects
- *  of the mesh rebuild at their next sync. */
-HEDGE_API hedge_status hedge_mesh_reorder_spatially(hedge_mesh* mesh, uint32_t* vertex_map, uint32_t vertex_capacity,
-                                                    uint32_t* halfedge_map, uint32_t halfedge_capacity,
-                                                    uint32_t* edge_map, uint32_t edge_capacity, uint32_t* face_map,
-                                                    uint32_t face_capacity);
+/* ============================================================================================ */
+/* Reordering (hedge/algorithms/reorder.h)                                                      */
+/* ============================================================================================ */
+
+typedef enum hedge_ordering {
+  HEDGE_ORDERING_SPATIAL = 0,      /**< Morton curve: traversals read memory in order */
+  HEDGE_ORDERING_VERTEX_CACHE = 1  /**< faces for a GPU vertex cache, vertices by first use */
+} hedge_ordering;
+
+/** Renumbers the elements in the given order (hedge_ordering), so that traversals or a GPU's
+ *  vertex cache read memory in order; garbage is collected at the same time. cache_size is the
+ *  vertex cache's size for HEDGE_ORDERING_VERTEX_CACHE (16 to 32; 0 means 16). The old-to-new maps
+ *  are written as by hedge_mesh_garbage_collection() (each map optional, NULL). Render objects of
+ *  the mesh rebuild at their next sync. An unknown ordering: HEDGE_ERROR_INVALID_ARGUMENT, and the
+ *  mesh is unchanged. */
+HEDGE_API hedge_status hedge_mesh_reorder(hedge_mesh* mesh, int32_t ordering, uint32_t cache_size,
+                                          uint32_t* vertex_map, uint32_t vertex_capacity, uint32_t* halfedge_map,
+                                          uint32_t halfedge_capacity, uint32_t* edge_map, uint32_t edge_capacity,
+                                          uint32_t* face_map, uint32_t face_capacity);
+
+/** The average cache miss ratio of drawing the faces in index order through a FIFO vertex cache of
+ *  cache_size entries (0 means 16): vertex loads per triangle, 0.5 (best) to 3 (worst). */
+HEDGE_API hedge_status hedge_mesh_cache_miss_ratio(const hedge_mesh* mesh, uint32_t cache_size, double* out_ratio);
 
 /* ============================================================================================ */
 /* Files (hedge/io/io.h): OBJ, OFF, PLY, STL, chosen by the extension                           */
@@ -616,7 +636,7 @@ typedef struct hedge_render_options {
   int32_t colors;      /**< 1: colours from the mesh's corner or vertex colours when present */
   int32_t interleaved; /**< 1: one buffer of whole vertices; 0: one buffer per stream */
   int32_t winding;     /**< HEDGE_WINDING_*: of the triangles in the index buffer */
-  int32_t flip_x;      /**< 1: negate x of positions and normals (right- <-> left-handed axes) */
+  int32_t flip_x;      /**< 1: negate x of positions and normals (mirrored data; Unity needs none) */
 } hedge_render_options;
 
 /** Where each attribute sits in a vertex, in floats; an absent attribute has offset -1.
@@ -759,8 +779,8 @@ typedef struct hedge_engine_import_options {
   int32_t weld;        /**< HEDGE_WELD_*: positions welded into one topological vertex */
   int32_t policy;      /**< HEDGE_POLICY_* */
   double weld_epsilon; /**< relative to the bounding-box diagonal, with HEDGE_WELD_EPSILON */
-  int32_t winding;     /**< HEDGE_WINDING_*: the engine's triangle winding (Unity: CW) */
-  int32_t flip_x;      /**< 1: negate x of positions and normals (Unity's left-handed axes) */
+  int32_t winding;     /**< HEDGE_WINDING_*: the triangle winding to convert from (Unity: none, CCW) */
+  int32_t flip_x;      /**< 1: negate x of positions and normals (mirrored data; Unity needs none) */
 } hedge_engine_import_options;
 
 /** Fills *out_options with the defaults: HEDGE_WELD_EXACT, HEDGE_POLICY_REPAIR, weld_epsilon 1e-6,

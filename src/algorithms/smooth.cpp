@@ -103,6 +103,9 @@ void smooth_implicit(const SurfaceMesh& m, const SmoothOptions& o, const std::ve
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(a);
   if (solver.info() != Eigen::Success)
     throw InvalidInputError("smooth: the implicit system could not be factored (degenerate faces?)");
+  // The factorisation counts as one step of the work.
+  const double steps = double(o.iterations) + 1;
+  report_progress(o.progress, 1 / steps);
   Eigen::MatrixXd rhs(n, 3), x(n, 3);
   for (int it = 0; it < o.iterations; ++it) {
     for (Vertex v : m.vertices()) {
@@ -121,6 +124,7 @@ void smooth_implicit(const SurfaceMesh& m, const SmoothOptions& o, const std::ve
       const Index i = unknown[v.idx()];
       if (i != kInvalidIndex) p[v.idx()] = Vec3d{x(i, 0), x(i, 1), x(i, 2)};
     }
+    report_progress(o.progress, double(it + 2) / steps);
   }
 }
 
@@ -168,6 +172,7 @@ void smooth(SurfaceMesh& m, const SmoothOptions& o) {
     for (int it = 0; it < o.iterations; ++it) {
       step(o.lambda);
       if (o.method == SmoothMethod::taubin) step(o.mu);
+      report_progress(o.progress, double(it + 1) / double(o.iterations));
     }
   }
   for (Vertex v : m.vertices()) {

@@ -240,15 +240,27 @@ hedge_status hedge_mesh_subdivide(hedge_mesh* mesh, int32_t scheme, int32_t step
   });
 }
 
-hedge_status hedge_mesh_reorder_spatially(hedge_mesh* mesh, uint32_t* vertex_map, uint32_t vertex_capacity,
-                                          uint32_t* halfedge_map, uint32_t halfedge_capacity, uint32_t* edge_map,
-                                          uint32_t edge_capacity, uint32_t* face_map, uint32_t face_capacity) {
+hedge_status hedge_mesh_reorder(hedge_mesh* mesh, int32_t ordering, uint32_t cache_size, uint32_t* vertex_map,
+                                uint32_t vertex_capacity, uint32_t* halfedge_map, uint32_t halfedge_capacity,
+                                uint32_t* edge_map, uint32_t edge_capacity, uint32_t* face_map, uint32_t face_capacity) {
   return guard([&] {
     auto object = find_mesh(mesh);
+    if (ordering != HEDGE_ORDERING_SPATIAL && ordering != HEDGE_ORDERING_VERTEX_CACHE)
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "ordering must be HEDGE_ORDERING_SPATIAL or _VERTEX_CACHE, got " + std::to_string(ordering));
     const MapBuffers b{vertex_map, vertex_capacity, halfedge_map, halfedge_capacity,
                        edge_map,   edge_capacity,   face_map,     face_capacity};
     check_map_buffers(object->mesh, b);
-    write_maps(reorder_spatially(object->mesh), b);
+    const Ordering o = ordering == HEDGE_ORDERING_VERTEX_CACHE ? Ordering::vertex_cache : Ordering::spatial;
+    write_maps(reorder(object->mesh, o, cache_size == 0 ? 16 : cache_size), b);
+  });
+}
+
+hedge_status hedge_mesh_cache_miss_ratio(const hedge_mesh* mesh, uint32_t cache_size, double* out_ratio) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    if (!out_ratio) fail(HEDGE_ERROR_INVALID_ARGUMENT, "out_ratio is NULL");
+    *out_ratio = average_cache_miss_ratio(object->mesh, cache_size == 0 ? 16 : cache_size);
   });
 }
 

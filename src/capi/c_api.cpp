@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstring>
 #include <mutex>
+#include <thread>
 #include <shared_mutex>
 #include <type_traits>
 #include <unordered_map>
@@ -71,24 +72,47 @@ hedge_render* register_render(std::shared_ptr<RenderObject> render, const hedge_
   return reinterpret_cast<hedge_render*>(id);
 }
 
-std::shared_ptr<MeshObject> find_mesh(const hedge_mesh* handle) {
+MeshUse::MeshUse(std::shared_ptr<MeshObject> object) : object_(std::move(object)) {
+  const std::thread::id me = std::this_thread::get_id();
+  std::thread::id user{};
+  if (object_->user.compare_exchange_strong(user, me, std::memory_order_acquire)) {
+    object_->depth = 1;
+  } else if (user == me) {
+    ++object_->depth;  // a nested use on the same thread
+  } else {
+    object_.reset();
+    fail(HEDGE_ERROR_BUSY,
+         "the mesh is in a call on another thread; a mesh and its render objects take calls from one thread at "
+         "a time");
+  }
+}
+
+MeshUse::~MeshUse() {
+  if (object_ && --object_->depth == 0) object_->user.store(std::thread::id{}, std::memory_order_release);
+}
+
+MeshUse find_mesh(const hedge_mesh* handle) {
   Registry& r = registry();
+  std::shared_ptr<MeshObject> found;
   {
     std::shared_lock lock(r.mutex);
     auto it = r.meshes.find(id_of(handle));
-    if (it != r.meshes.end()) return it->second;
+    if (it != r.meshes.end()) found = it->second;
   }
-  bad_handle("mesh", handle);
+  if (!found) bad_handle("mesh", handle);
+  return MeshUse(std::move(found));
 }
 
-std::shared_ptr<RenderObject> find_render(const hedge_render* handle) {
+RenderUse find_render(const hedge_render* handle) {
   Registry& r = registry();
+  std::shared_ptr<RenderObject> found;
   {
     std::shared_lock lock(r.mutex);
     auto it = r.renders.find(id_of(handle));
-    if (it != r.renders.end()) return it->second;
+    if (it != r.renders.end()) found = it->second;
   }
-  bad_handle("render", handle);
+  if (!found) bad_handle("render", handle);
+  return RenderUse(std::move(found));
 }
 
 std::pair<std::shared_ptr<MeshObject>, std::vector<std::shared_ptr<RenderObject>>> unregister_mesh(
@@ -325,6 +349,8 @@ const char* hedge_status_string(hedge_status code) {
       return "HEDGE_ERROR_BUFFER_TOO_SMALL";
     case HEDGE_ERROR_INTERNAL:
       return "HEDGE_ERROR_INTERNAL";
+    case HEDGE_ERROR_BUSY:
+      return "HEDGE_ERROR_BUSY";
     default:
       return "HEDGE_ERROR_UNKNOWN";
   }
@@ -409,6 +435,8 @@ hedge_status hedge_mesh_create(const float* positions, uint32_t vertex_count, co
 
 hedge_status hedge_mesh_destroy(hedge_mesh* mesh) {
   return guard([&] {
+    // Held until the objects are gone: destroying render objects touches the mesh's change log.
+    const MeshUse use = find_mesh(mesh);
     auto objects = unregister_mesh(mesh);
     // Render objects first (they detach from the mesh's change log), then the mesh, unless a call
     // on another thread still holds them.

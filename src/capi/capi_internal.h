@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -10,6 +11,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -30,6 +32,10 @@ struct MeshObject {
   std::vector<std::string> problems;
   //! Ids of the render objects made for this mesh (guarded by the registry's lock).
   std::vector<std::uintptr_t> renders;
+  //! The thread in a call on this mesh or one of its render objects (none: the default id), and
+  //! how many nested uses it holds (touched by that thread only). See MeshUse.
+  std::atomic<std::thread::id> user{};
+  int depth = 0;
 };
 
 //! What a hedge_render handle names. It shares ownership of its mesh object, so a call that is
@@ -47,12 +53,44 @@ struct ApiError {
 
 [[noreturn]] void fail(hedge_status status, std::string message);
 
+//! A call's use of a mesh object: while it lives, the mesh belongs to the calling thread. Taking a
+//! mesh that another thread is using fails at once (HEDGE_ERROR_BUSY) rather than racing it: one
+//! compare-and-swap per call. The same thread may take it again (nested).
+class MeshUse {
+ public:
+  //! \throw ApiError (HEDGE_ERROR_BUSY) if another thread uses the mesh.
+  explicit MeshUse(std::shared_ptr<MeshObject> object);
+  MeshUse(MeshUse&& other) noexcept = default;
+  MeshUse& operator=(MeshUse&&) = delete;
+  ~MeshUse();
+  MeshObject* operator->() const { return object_.get(); }
+  MeshObject& operator*() const { return *object_; }
+  const std::shared_ptr<MeshObject>& shared() const { return object_; }
+
+ private:
+  std::shared_ptr<MeshObject> object_;
+};
+
+//! A call's use of a render object, and so of its mesh.
+class RenderUse {
+ public:
+  explicit RenderUse(std::shared_ptr<RenderObject> object) : mesh_(object->mesh), object_(std::move(object)) {}
+  RenderObject* operator->() const { return object_.get(); }
+  RenderObject& operator*() const { return *object_; }
+
+ private:
+  MeshUse mesh_;
+  std::shared_ptr<RenderObject> object_;
+};
+
 // ---- Registry: handles are ids (never addresses, never reused) mapped to live objects. ----
 hedge_mesh* register_mesh(std::shared_ptr<MeshObject> mesh);
 hedge_render* register_render(std::shared_ptr<RenderObject> render, const hedge_mesh* mesh);
-//! The object a handle names. \throw ApiError (HEDGE_ERROR_BAD_HANDLE) if it names none.
-std::shared_ptr<MeshObject> find_mesh(const hedge_mesh* handle);
-std::shared_ptr<RenderObject> find_render(const hedge_render* handle);
+//! The object a handle names, in use by the calling thread until the result is destroyed.
+//! \throw ApiError: HEDGE_ERROR_BAD_HANDLE if it names none, HEDGE_ERROR_BUSY if another thread
+//!   is using the mesh.
+MeshUse find_mesh(const hedge_mesh* handle);
+RenderUse find_render(const hedge_render* handle);
 //! Removes a mesh and its render objects from the registry; returns them (destroyed by the caller,
 //! outside the lock). \throw ApiError if the handle names no mesh.
 std::pair<std::shared_ptr<MeshObject>, std::vector<std::shared_ptr<RenderObject>>> unregister_mesh(

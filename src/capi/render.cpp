@@ -91,14 +91,18 @@ hedge_status hedge_render_create(hedge_mesh* mesh, const hedge_render_options* o
     const RenderOptions render_options =
         to_render_options(options != nullptr ? *options : default_render_options());
     auto object = std::make_shared<RenderObject>();
-    object->mesh = mesh_object;
+    object->mesh = mesh_object.shared();
     object->sync = std::make_unique<RenderSync>(mesh_object->mesh, render_options);
     *out_render = register_render(std::move(object), mesh);
   });
 }
 
 hedge_status hedge_render_destroy(hedge_render* render) {
-  return guard([&] { unregister_render(render).reset(); });
+  return guard([&] {
+    // Destroying the render object detaches it from its mesh's change log: the mesh is used.
+    const RenderUse use = find_render(render);
+    unregister_render(render).reset();
+  });
 }
 
 hedge_status hedge_render_sync(hedge_render* render, hedge_sync_result* out_result) {

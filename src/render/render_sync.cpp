@@ -482,17 +482,32 @@ void RenderSync::report_full() {
 const SyncResult& RenderSync::rebuild() {
   full_build();
   changes_.consume();
+  full_pending_ = false;
   return result_;
 }
 
 const SyncResult& RenderSync::sync() {
+  sync_changes();
+  if (full_pending_ && !in_transaction()) {
+    const std::size_t faces = result_.faces_synced;
+    report_full();
+    result_.faces_synced = faces;
+    full_pending_ = false;
+  }
+  return result_;
+}
+
+void RenderSync::sync_changes() {
   result_ = {};
-  if (in_transaction()) return result_;
+  if (in_transaction()) return;
   const ChangeLog::Pending p = changes_.pending();
-  if (p.reset) return rebuild();
+  if (p.reset) {
+    rebuild();
+    return;
+  }
   if (p.vertices.empty() && p.faces.empty()) {
     changes_.consume();
-    return result_;
+    return;
   }
   const SurfaceMesh& m = *mesh_;
   grow_element_arrays();
@@ -521,7 +536,6 @@ const SyncResult& RenderSync::sync() {
   result_.faces_synced = dirty_faces_.size();
   changes_.consume();
   finish_result();
-  return result_;
 }
 
 void RenderSync::finish_result() {
@@ -604,6 +618,7 @@ RenderRemap RenderSync::compact() {
   free_triangles_.clear();
   free_triangle_slots_ = 0;
   report_full();
+  full_pending_ = true;
   return map;
 }
 

@@ -59,7 +59,7 @@ TEST(Reorder, ShuffledMeshGetsItsLocalityBackWithTheSameSurface) {
   SurfaceMesh m = shuffled(spot, 11);
   const auto before = faces_by_position(m);
   const double gap_before = mean_neighbour_gap(m);
-  const GarbageMaps maps = reorder_spatially(m);
+  const GarbageMaps maps = reorder(m);
   EXPECT_EQ(faces_by_position(m), before);
   EXPECT_LT(mean_neighbour_gap(m), 0.1 * gap_before);
   EXPECT_EQ(maps.vertices.size(), m.vertex_slots());
@@ -79,7 +79,7 @@ TEST(Reorder, FacesMeetTheirEdgesInOrderAndPropertiesFollow) {
     centroid_of_tag[std::size_t(tag[f])] = c;
   }
   const ChangeConsumer watch(m.watch_changes());
-  reorder_spatially(m);
+  reorder(m);
   EXPECT_TRUE(watch.pending().reset);
   const auto tag2 = m.get_face_property<int>("f:tag");
   const auto at2 = m.get_vertex_property<Vec3>("v:copy");
@@ -101,7 +101,7 @@ TEST(Reorder, GarbageIsCollectedAndBadNumberingsAreRefused) {
     if (can_remove_face(m, f)) removable = f;
   ASSERT_TRUE(remove_face(m, removable));
   const std::size_t faces = m.n_faces();
-  reorder_spatially(m);
+  reorder(m);
   EXPECT_FALSE(m.has_garbage());
   EXPECT_EQ(m.n_faces(), faces);
   EXPECT_TRUE(m.validate().empty());
@@ -121,6 +121,75 @@ TEST(Reorder, GarbageIsCollectedAndBadNumberingsAreRefused) {
   // The identity is a valid numbering.
   m.renumber(v, e, f);
   EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Reorder, VertexCacheOrderLoadsFewVerticesPerTriangleAndKeepsTheSurface) {
+  const IndexedMesh spot = read_indexed_file(test::data_path("spot_triangulated.obj"));
+  SurfaceMesh m = shuffled(spot, 3);
+  auto tag = m.add_face_property<int>("f:tag", 0);
+  for (Face f : m.faces()) tag[f] = int(f.idx());
+  const auto before = faces_by_position(m);
+  const double shuffled_acmr = average_cache_miss_ratio(m, 16);
+  EXPECT_GT(shuffled_acmr, 2.5);  // a random order misses nearly every corner
+  const GarbageMaps maps = reorder(m, Ordering::vertex_cache, 16);
+  EXPECT_EQ(faces_by_position(m), before);
+  const double acmr = average_cache_miss_ratio(m, 16);
+  // A closed triangle mesh has about twice as many faces as vertices, so every order needs at least
+  // V / F ~ 0.5 loads per triangle; a fan order with a 16-entry cache gets within about 0.2 of it.
+  EXPECT_GE(acmr, double(m.n_vertices()) / double(m.n_faces()));
+  EXPECT_LT(acmr, 0.75);
+  SurfaceMesh spatial = shuffled(spot, 3);
+  reorder(spatial, Ordering::spatial);
+  EXPECT_LT(acmr, average_cache_miss_ratio(spatial, 16));
+  // Vertices are numbered by first use: face 0 uses vertices 0, 1, 2, and no face uses a vertex
+  // beyond one more than the highest used before it.
+  Index highest = 0;
+  for (Face f : m.faces())
+    for (Vertex v : m.vertices(f)) {
+      EXPECT_LE(v.idx(), highest + 1);
+      highest = std::max(highest, v.idx());
+    }
+  // The maps are permutations and the face property followed its faces.
+  const auto tag2 = m.get_face_property<int>("f:tag");
+  for (std::size_t f = 0; f < maps.faces.size(); ++f) EXPECT_EQ(tag2[Face(maps.faces[f])], int(f));
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Reorder, VertexCacheOrderTakesPolygonsBoundariesIsolatedVerticesAndGarbage) {
+  SurfaceMesh m = build(test::grid(6, false));  // quads with a boundary
+  const Vertex lone = m.add_vertex(Vec3{9, 9, 9});
+  Face removable;
+  for (Face f : m.faces())
+    if (can_remove_face(m, f)) removable = f;
+  ASSERT_TRUE(remove_face(m, removable));
+  const std::size_t faces = m.n_faces(), vertices = m.n_vertices();
+  const GarbageMaps maps = reorder(m, Ordering::vertex_cache, 8);
+  EXPECT_FALSE(m.has_garbage());
+  EXPECT_EQ(m.n_faces(), faces);
+  EXPECT_EQ(m.n_vertices(), vertices);
+  EXPECT_EQ(maps.faces[removable.idx()], kInvalidIndex);
+  EXPECT_EQ(maps.vertices[lone.idx()], Index(vertices - 1));  // isolated vertices last
+  EXPECT_TRUE(m.is_isolated(Vertex(Index(vertices - 1))));
+  EXPECT_TRUE(m.validate().empty());
+
+  SurfaceMesh empty;
+  EXPECT_TRUE(reorder(empty, Ordering::vertex_cache).vertices.empty());
+  EXPECT_EQ(average_cache_miss_ratio(empty), 0.0);
+  EXPECT_TRUE(empty.validate().empty());
+}
+
+TEST(Reorder, CacheMissRatioCountsFifoLoads) {
+  // Two triangles sharing an edge: 4 loads for 2 triangles with any cache of 3 or more entries;
+  // with a single entry every corner after the first of a run misses.
+  IndexedMesh two;
+  two.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  two.indices = {0, 1, 2, 0, 2, 3};
+  const SurfaceMesh m = build(two);
+  EXPECT_DOUBLE_EQ(average_cache_miss_ratio(m, 16), 2.0);
+  EXPECT_DOUBLE_EQ(average_cache_miss_ratio(m, 1), 3.0);
+  // A quad draws as a fan of two triangles: 4 loads.
+  SurfaceMesh quad = build(test::grid(1, false));
+  EXPECT_DOUBLE_EQ(average_cache_miss_ratio(quad, 16), 2.0);
 }
 
 }  // namespace

@@ -165,6 +165,27 @@ TEST(Smooth, ImplicitTakesOneLargeStableStep) {
   EXPECT_TRUE(spot.validate().empty());
 }
 
+TEST(Smooth, ProgressRisesToOneAndAThrowingCallbackChangesNothing) {
+  for (SmoothMethod method : {SmoothMethod::uniform, SmoothMethod::implicit}) {
+    SurfaceMesh m = bumpy_grid(6, 0, 0.3f, 4);
+    std::vector<double> seen;
+    smooth(m, {.method = method, .iterations = 4, .lambda = 0.5, .progress = [&](double f) { seen.push_back(f); }});
+    ASSERT_FALSE(seen.empty());
+    for (std::size_t i = 1; i < seen.size(); ++i) EXPECT_GT(seen[i], seen[i - 1]);
+    EXPECT_DOUBLE_EQ(seen.back(), 1.0);
+    EXPECT_GT(seen.front(), 0.0);
+
+    const SurfaceMesh before = m;
+    struct Stop {};
+    auto stop = [](double f) {
+      if (f > 0.4) throw Stop{};
+    };
+    EXPECT_THROW(smooth(m, {.method = method, .iterations = 4, .lambda = 0.5, .progress = stop}), Stop);
+    for (Vertex v : m.vertices()) EXPECT_EQ(m.position(v), before.position(v));
+    EXPECT_TRUE(m.validate().empty());
+  }
+}
+
 TEST(Smooth, BadOptionsChangeNothing) {
   SurfaceMesh m = bumpy_grid(4, 0, 0.3f, 6);
   const SurfaceMesh before = m;

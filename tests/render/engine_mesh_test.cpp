@@ -6,6 +6,7 @@
 #include <map>
 #include <tuple>
 
+#include "hedge/algorithms/normals.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 #include "hedge/render/render_sync.h"
@@ -95,10 +96,49 @@ TEST(EngineMesh, SeamsSurviveARoundTripOnSpot) {
   expect_round_trip(e, {}, {});
 }
 
-TEST(EngineMesh, UnityConventionsRoundTrip) {
-  // Unity: clockwise triangles, left-handed axes. Importing and exporting with the same
-  // conventions gives the engine its own arrays back; the half-edge mesh in between is CCW and
-  // right-handed, so its normals point outwards.
+TEST(EngineMesh, UnityDataNeedsNoConversion) {
+  // The original project's quad, as a Unity Mesh holds it: Unity's front faces are clockwise in
+  // its left-handed axes, which gives the same cross-product normal as counter-clockwise faces in
+  // right-handed axes. So the default options (no winding change, no mirroring) keep the user's
+  // own coordinates, compute the normals Unity's RecalculateNormals would (-z here), and give the
+  // same triangles back in the same winding.
+  EngineMesh e;
+  e.positions = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
+  e.indices = {0, 1, 2, 2, 1, 3};
+  BuildReport report;
+  SurfaceMesh m = from_engine_mesh(e.view(), {}, &report);
+  ASSERT_EQ(m.n_vertices(), 4u);
+  for (Index v = 0; v < 4; ++v) {
+    const Vertex mv(report.vertex_map[v]);
+    EXPECT_EQ(m.position(mv), e.positions[v]) << "vertex " << v << " kept bit for bit";
+  }
+  for (Face f : m.faces()) EXPECT_EQ(face_normal(m, f), (Vec3{0, 0, -1}));
+  RenderSync rs(m, RenderOptions{.normals = NormalSource::computed});
+  const VertexLayout& l = rs.layout();
+  ASSERT_GE(l.normal, 0);
+  ASSERT_EQ(rs.n_triangles(), 2u);
+  for (std::size_t t = 0; t < 2; ++t) {
+    const SlotRange r = rs.triangles(Face(report.face_map[t]));
+    for (int k = 0; k < 3; ++k) {
+      const float* got = rs.vertices().data() + rs.indices()[3 * r.first + k] * l.stride;
+      const Vec3 want = e.positions[e.indices[3 * t + k]];
+      EXPECT_EQ((Vec3{got[0], got[1], got[2]}), want) << "triangle " << t << " corner " << k;
+      EXPECT_EQ((Vec3{got[l.normal], got[l.normal + 1], got[l.normal + 2]}), (Vec3{0, 0, -1}));
+    }
+  }
+  // Moving a vertex moves it where the user said, in the user's axes.
+  m.set_position(Vertex(report.vertex_map[2]), {1, 0.5f, 0});
+  rs.sync();
+  const SlotRange r = rs.triangles(Face(report.face_map[0]));
+  const float* moved = rs.vertices().data() + rs.indices()[3 * r.first + 2] * l.stride;
+  EXPECT_EQ((Vec3{moved[0], moved[1], moved[2]}), (Vec3{1, 0.5f, 0}));
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(EngineMesh, MirroredConventionsRoundTrip) {
+  // Data in the other handedness (a right-handed file mirrored into left-handed axes, winding
+  // reversed): importing and exporting with winding and flip_x set gives the engine its own arrays
+  // back; the half-edge mesh in between is the file's, so its normals point outwards.
   const IndexedMesh obj = read_indexed_file(std::string(HEDGE_DATA_DIR) + "/spot_triangulated.obj");
   EngineMesh e = engine_mesh_from(obj);
   for (Vec3& p : e.positions) p.x = -p.x;

@@ -395,12 +395,21 @@ TEST(RenderSync, CompactRemovesHolesAndReportsTheMaps) {
   }
   expect_consistent(rs);
   expect_matches_fresh(rs);
-  // Edits go on after compaction.
+  EXPECT_TRUE(rs.last_result().full);
+  // Edits go on after compaction. The first sync after it reports whole buffers, so that a
+  // consumer following only sync results (the Unity component) uploads what compaction moved.
   Edge e;
   for (Edge c : m.edges())
     if (can_flip(m, c)) e = c;
   ASSERT_TRUE(flip(m, e).is_valid());
-  rs.sync();
+  const SyncResult& after = rs.sync();
+  EXPECT_TRUE(after.full && after.resized);
+  ASSERT_EQ(after.index_ranges.size(), 1u);
+  EXPECT_EQ(after.index_ranges[0].count, rs.index_count());
+  EXPECT_EQ(after.faces_synced, 2u);  // the flip's two faces were synced as well
+  EXPECT_FALSE(rs.sync().full);      // once
+  rs.compact();
+  EXPECT_TRUE(rs.sync().full);  // also with nothing edited in between
   expect_consistent(rs);
   expect_matches_fresh(rs);
   EXPECT_TRUE(m.validate().empty());

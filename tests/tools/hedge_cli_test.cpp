@@ -214,6 +214,27 @@ TEST_F(HedgeCli, ConvertWritesAReadableFileInEveryFormat) {
   }
 }
 
+TEST_F(HedgeCli, ConvertReordersForTheVertexCacheAndInfoMeasuresIt) {
+  const json before = run_json({"info", data("spot_triangulated.obj"), "--json"});
+  const fs::path out = tmp("spot_cache.obj"), spatial = tmp("spot_spatial.obj");
+  ASSERT_EQ(run({"convert", data("spot_triangulated.obj"), out.string(), "--reorder", "vertex-cache"}).code, 0);
+  ASSERT_EQ(run({"convert", data("spot_triangulated.obj"), spatial.string(), "--reorder", "spatial"}).code, 0);
+  const json after = run_json({"info", out.string(), "--json"});
+  const json after_spatial = run_json({"info", spatial.string(), "--json"});
+  for (const char* key : {"vertices", "faces", "genus", "valid"}) {
+    EXPECT_EQ(after[key], before[key]) << key;
+    EXPECT_EQ(after_spatial[key], before[key]) << key;
+  }
+  EXPECT_NEAR(after["area"].get<double>(), before["area"].get<double>(), 1e-4 * before["area"].get<double>());
+  const double acmr = after["cache_miss_ratio"].get<double>();
+  EXPECT_GT(acmr, 0.5);
+  EXPECT_LT(acmr, 0.75);
+  EXPECT_LT(acmr, after_spatial["cache_miss_ratio"].get<double>());
+  EXPECT_LT(acmr, before["cache_miss_ratio"].get<double>());
+  expect_usage_error({"convert", data("tet.obj"), tmp("x.obj").string(), "--reorder", "hilbert"});
+  EXPECT_FALSE(fs::exists(tmp("x.obj")));
+}
+
 TEST_F(HedgeCli, ConvertAsciiPly) {
   const fs::path out = tmp("tet.ply");
   ASSERT_EQ(run({"convert", data("tet.obj"), out.string(), "--ascii"}).code, 0);

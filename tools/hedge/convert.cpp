@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "hedge/algorithms/reorder.h"
 #include "load.h"
 
 namespace hedge::cli {
@@ -14,13 +15,16 @@ struct ConvertOptions {
   std::string input;
   std::string output;
   bool ascii = false;
+  std::string reorder = "none";
   LoadOptions load;
 };
 
 int run_convert(const ConvertOptions& options) {
   // Check the output's extension before spending time on the input.
   const FileFormat out_format = format_from_path(options.output);
-  const LoadedMesh loaded = load_mesh(options.input, options.load);
+  LoadedMesh loaded = load_mesh(options.input, options.load);
+  if (options.reorder != "none")
+    reorder(loaded.mesh, options.reorder == "vertex-cache" ? Ordering::vertex_cache : Ordering::spatial);
 
   const std::filesystem::path parent = std::filesystem::path(options.output).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);
@@ -45,6 +49,11 @@ Command add_convert_command(CLI::App& parent) {
   app->add_option("IN", options->input, "Input mesh file")->required();
   app->add_option("OUT", options->output, "Output mesh file; missing folders are created")->required();
   app->add_flag("--ascii", options->ascii, "Write PLY and STL as text instead of binary");
+  app->add_option("--reorder", options->reorder,
+                  "Renumber before writing: spatial (a Morton curve: traversals read memory in order) or "
+                  "vertex-cache (faces for a GPU's vertex cache, vertices by first use)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"none", "spatial", "vertex-cache"}));
   add_load_options(*app, options->load);
   return {app, [options] { return run_convert(*options); }};
 }

@@ -54,6 +54,7 @@ void print_text(const InfoOptions& options, const LoadedMesh& loaded, const Mesh
   box << "(" << s.box_min.x << ", " << s.box_min.y << ", " << s.box_min.z << ") - (" << s.box_max.x << ", "
       << s.box_max.y << ", " << s.box_max.z << ")";
   row("bounding box", box.str());
+  row("cache misses/tri", s.cache_miss_ratio);  // 16-entry FIFO, faces in file order
   row("valid", yes_no(s.problems.empty()));
   if (!s.problems.empty())
     std::cout << "  (boundary loops, components, genus and manifoldness not computed)\n";

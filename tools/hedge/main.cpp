@@ -1,11 +1,13 @@
 // hedge: a command-line front end to the library. Errors never escape as exceptions or aborts:
 // each becomes one "hedge: error: ..." line on stderr and a non-zero exit status (see commands.h).
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <new>
 #include <string>
 
 #include "commands.h"
+#include "progress_bar.h"
 
 #ifndef HEDGE_VERSION
 #define HEDGE_VERSION "unknown"
@@ -55,6 +57,11 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
     return report_error(std::string(e.what()) + " (see 'hedge --help')", kExitUsage);
   }
+
+  if (!ProgressBar::setting())
+    return report_error("HEDGE_PROGRESS must be auto, always or never, got '" +
+                            std::string(std::getenv("HEDGE_PROGRESS")) + "'",
+                        kExitUsage);
 
   try {
     for (const Command& command : commands) {

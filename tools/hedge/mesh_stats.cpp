@@ -1,6 +1,7 @@
 #include "mesh_stats.h"
 
 #include "hedge/algorithms/geometry.h"
+#include "hedge/algorithms/reorder.h"
 
 #include <algorithm>
 #include <numeric>
@@ -77,6 +78,7 @@ MeshStats compute_stats(const SurfaceMesh& mesh) {
   }
   s.area = surface_area(mesh);
   if (s.boundary_loops == 0) s.volume = volume(mesh);
+  s.cache_miss_ratio = average_cache_miss_ratio(mesh, 16);
   return s;
 }
 
@@ -110,6 +112,7 @@ nlohmann::json stats_json(const MeshStats& s) {
   j["is_manifold"] = s.is_manifold;
   j["area"] = s.area;
   j["volume"] = s.volume ? nlohmann::json(*s.volume) : nlohmann::json(nullptr);
+  j["cache_miss_ratio"] = s.cache_miss_ratio;
   j["bounding_box"] = {{"min", {s.box_min.x, s.box_min.y, s.box_min.z}}, {"max", {s.box_max.x, s.box_max.y, s.box_max.z}}};
   j["valid"] = s.problems.empty();
   j["problems"] = s.problems;

@@ -34,6 +34,9 @@ struct MeshStats {
   double area = 0;
   Vec3 box_min{0, 0, 0}, box_max{0, 0, 0};
   std::optional<double> volume;
+  //! Vertex loads per triangle when the faces are drawn in file order through a 16-entry FIFO
+  //! vertex cache (algorithms/reorder.h); `hedge convert --reorder vertex-cache` lowers it.
+  double cache_miss_ratio = 0;
   //! mesh.validate(): one line per broken invariant; empty means valid.
   std::vector<std::string> problems;
 };

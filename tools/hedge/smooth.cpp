@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "hedge/algorithms/smooth.h"
 #include "load.h"
+#include "progress_bar.h"
 
 namespace hedge::cli {
 
@@ -37,7 +38,10 @@ int run_smooth(const SmoothCommandOptions& o) {
   s.mu = o.mu;
   s.fix_boundary = !o.free_boundary;
   const auto start = std::chrono::steady_clock::now();
+  ProgressBar bar("smooth");
+  s.progress = bar.callback();
   smooth(loaded.mesh, s);
+  bar.finish();
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const std::filesystem::path parent = std::filesystem::path(o.output).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);

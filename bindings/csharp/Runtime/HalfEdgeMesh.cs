@@ -289,16 +289,29 @@ namespace Hedge
             Status.Check(Native.hedge_mesh_subdivide(id, (int)scheme, steps));
         }
 
-        /// <summary>Renumbers the elements along a Morton curve through their positions, so that traversals read memory in
-        /// order; garbage is collected at the same time. The optional maps receive old-to-new indices, as with
-        /// <see cref="GarbageCollection"/>. Render buffers rebuild at their next sync.</summary>
-        public void ReorderSpatially(Vertex[] vertexMap = null, HalfEdge[] halfEdgeMap = null, Edge[] edgeMap = null,
-                                     Face[] faceMap = null)
+        /// <summary>Renumbers the elements in the given order: <see cref="Ordering.Spatial"/> (a Morton curve, so that
+        /// traversals read memory in order) or <see cref="Ordering.VertexCache"/> (faces for a GPU vertex cache of
+        /// <paramref name="cacheSize"/> entries, vertices by first use). Garbage is collected at the same time. The optional
+        /// maps receive old-to-new indices, as with <see cref="GarbageCollection"/>. Render buffers rebuild at their next
+        /// sync.</summary>
+        public void Reorder(Ordering ordering = Ordering.Spatial, int cacheSize = 16, Vertex[] vertexMap = null,
+                            HalfEdge[] halfEdgeMap = null, Edge[] edgeMap = null, Face[] faceMap = null)
         {
+            if (cacheSize < 0) throw new ArgumentOutOfRangeException(nameof(cacheSize), "the cache size is 0 or more");
             pendingRenders.Drain();
-            Status.Check(Native.hedge_mesh_reorder_spatially(id, vertexMap, Status.Capacity(vertexMap), halfEdgeMap,
-                                                             Status.Capacity(halfEdgeMap), edgeMap, Status.Capacity(edgeMap),
-                                                             faceMap, Status.Capacity(faceMap)));
+            Status.Check(Native.hedge_mesh_reorder(id, (int)ordering, (uint)cacheSize, vertexMap, Status.Capacity(vertexMap),
+                                                   halfEdgeMap, Status.Capacity(halfEdgeMap), edgeMap,
+                                                   Status.Capacity(edgeMap), faceMap, Status.Capacity(faceMap)));
+        }
+
+        /// <summary>Vertex loads per triangle when the faces are drawn in index order through a first-in first-out
+        /// vertex cache of <paramref name="cacheSize"/> entries: 0.5 (best) to 3 (worst).</summary>
+        public double CacheMissRatio(int cacheSize = 16)
+        {
+            if (cacheSize < 0) throw new ArgumentOutOfRangeException(nameof(cacheSize), "the cache size is 0 or more");
+            double ratio;
+            Status.Check(Native.hedge_mesh_cache_miss_ratio(id, (uint)cacheSize, out ratio));
+            return ratio;
         }
 
         /// <summary>Decimates a triangle mesh by quadric-ranked edge collapses until the targets of the options are met, the

@@ -28,6 +28,9 @@ namespace Hedge
         BufferTooSmall = -7,
         /// <summary>An unexpected internal failure (a bug in the library).</summary>
         Internal = -8,
+        /// <summary>The mesh is in a call on another thread. A mesh and its render buffers take calls from one
+        /// thread at a time; an overlapping call fails at once with this status and changes nothing.</summary>
+        Busy = -9,
     }
 
     /// <summary>A failed call into the native library: its status code and the library's message

@@ -46,9 +46,11 @@ namespace Hedge
 
         // ---- Reordering ----
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_mesh_reorder_spatially(IntPtr mesh, [Out] Vertex[] vertexMap, uint vertexCapacity,
-            [Out] HalfEdge[] halfEdgeMap, uint halfEdgeCapacity, [Out] Edge[] edgeMap, uint edgeCapacity,
+        internal static extern int hedge_mesh_reorder(IntPtr mesh, int ordering, uint cacheSize, [Out] Vertex[] vertexMap,
+            uint vertexCapacity, [Out] HalfEdge[] halfEdgeMap, uint halfEdgeCapacity, [Out] Edge[] edgeMap, uint edgeCapacity,
             [Out] Face[] faceMap, uint faceCapacity);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_cache_miss_ratio(IntPtr mesh, uint cacheSize, out double ratio);
 
         // ---- Subdivision ----
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]

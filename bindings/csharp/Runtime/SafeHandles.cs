@@ -6,8 +6,9 @@
 // The handles of the C ABI are ids checked against a registry on every call and never reused, not
 // addresses. The wrappers therefore pass the raw id to the native functions: a call on a disposed
 // object reaches the library with a dead id and comes back as HedgeException(BadHandle) with the
-// library's message, instead of the marshaller's ObjectDisposedException; and an object destroyed
-// by another thread while a call runs on it is safe on the native side (the call finishes on it).
+// library's message, instead of the marshaller's ObjectDisposedException. Disposing a mesh while
+// another thread is in a call on it is a misuse the library refuses (HEDGE_ERROR_BUSY): the native
+// mesh then stays until the process ends, rather than being freed under the running call.
 using System;
 using System.Collections.Generic;
 using System.Runtime.InteropServices;

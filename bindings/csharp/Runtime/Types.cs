@@ -166,6 +166,15 @@ namespace Hedge
         Implicit = 3,
     }
 
+    /// <summary>The element orders of <see cref="HalfEdgeMesh.Reorder"/>.</summary>
+    public enum Ordering
+    {
+        /// <summary>A Morton curve through the positions: traversals read memory in order.</summary>
+        Spatial = 0,
+        /// <summary>Faces for a GPU's vertex cache, vertices in the order the faces first use them.</summary>
+        VertexCache = 1,
+    }
+
     /// <summary>Options of <see cref="HalfEdgeMesh.Smooth"/> (32 bytes, hedge_smooth_options). Start from
     /// <see cref="Default"/>.</summary>
     [StructLayout(LayoutKind.Sequential)]
@@ -289,7 +298,7 @@ namespace Hedge
         public bool Colors { get { return colors != 0; } set { colors = value ? 1 : 0; } }
         /// <summary>One buffer of whole vertices (true) or one buffer per stream (false).</summary>
         public bool Interleaved { get { return interleaved != 0; } set { interleaved = value ? 1 : 0; } }
-        /// <summary>Negate x of positions and normals (right- to left-handed axes, as Unity).</summary>
+        /// <summary>Negate x of positions and normals, for mirrored data (Unity needs none: see <see cref="Unity"/>).</summary>
         public bool FlipX { get { return flipX != 0; } set { flipX = value ? 1 : 0; } }
 
         /// <summary>The defaults: automatic normals, texcoords, colours, interleaved, counter-clockwise,
@@ -304,16 +313,16 @@ namespace Hedge
             }
         }
 
-        /// <summary>Unity's conventions: clockwise triangles, x flipped (left-handed axes), one stream
-        /// per attribute (position, normal, texcoord, colour: Mesh.SetVertexBufferData streams 0-3),
-        /// automatic normals. Use with a mesh imported with <see cref="EngineImportOptions.Unity"/>.</summary>
+        /// <summary>For a Unity Mesh: one stream per attribute (position, normal, texcoord, colour:
+        /// Mesh.SetVertexBufferData streams 0-3), automatic normals, and Unity's own coordinates and
+        /// triangles as they are (no winding change, no mirroring: Unity's clockwise front faces in its
+        /// left-handed axes have the same cross-product normals as counter-clockwise faces in right-handed
+        /// axes, so none is needed). Use with a mesh imported with <see cref="EngineImportOptions.Unity"/>.</summary>
         public static RenderOptions Unity
         {
             get
             {
                 RenderOptions options = Default;
-                options.Winding = Winding.Clockwise;
-                options.FlipX = true;
                 options.Interleaved = false;
                 return options;
             }
@@ -415,7 +424,7 @@ namespace Hedge
         public Winding Winding;
         int flipX;
 
-        /// <summary>Negate x of positions and normals (Unity's left-handed axes).</summary>
+        /// <summary>Negate x of positions and normals, for mirrored data (Unity needs none: see <see cref="Unity"/>).</summary>
         public bool FlipX { get { return flipX != 0; } set { flipX = value ? 1 : 0; } }
 
         /// <summary>The defaults: exact welding, repair, epsilon 1e-6, counter-clockwise, x not flipped.</summary>
@@ -429,16 +438,15 @@ namespace Hedge
             }
         }
 
-        /// <summary>Unity's conventions: clockwise triangles, left-handed axes (x flipped).</summary>
+        /// <summary>For a Unity Mesh: positions welded exactly, and Unity's coordinates and triangles kept as
+        /// they are, so that the half-edge mesh holds the user's own coordinates (a vertex at (1, 0, 0) in Unity
+        /// is at (1, 0, 0) in the mesh) and computed normals agree with Unity's RecalculateNormals. No
+        /// conversion is needed: Unity's clockwise front faces in its left-handed axes have the same
+        /// cross-product normals as counter-clockwise faces in right-handed axes. <see cref="Winding"/> and
+        /// <see cref="FlipX"/> are for data in another convention.</summary>
         public static EngineImportOptions Unity
         {
-            get
-            {
-                EngineImportOptions options = Default;
-                options.Winding = Winding.Clockwise;
-                options.FlipX = true;
-                return options;
-            }
+            get { return Default; }
         }
     }
 }

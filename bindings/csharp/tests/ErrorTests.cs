@@ -14,6 +14,47 @@ namespace Hedge.Tests
             r.Add("ErrorTests.MalformedAndMissingFiles", MalformedAndMissingFiles);
             r.Add("ErrorTests.FilesRoundTrip", FilesRoundTrip);
             r.Add("ErrorTests.FinalizersRelease", FinalizersRelease);
+            r.Add("ErrorTests.SecondThreadIsRefusedNotHung", SecondThreadIsRefusedNotHung);
+        }
+
+        // One mesh, one thread at a time: a call that overlaps another thread's call on the same mesh throws
+        // HedgeException(Busy) at once, and the mesh is intact afterwards.
+        static void SecondThreadIsRefusedNotHung()
+        {
+            using (HalfEdgeMesh mesh = Meshes.Tet())
+            {
+                mesh.Subdivide(Subdivision.Midpoint, 6);
+                int busy = 0, editorErrors = 0;
+                var editor = new System.Threading.Thread(() =>
+                {
+                    for (int round = 0; round < 3; ++round)
+                    {
+                        for (;;)
+                        {
+                            try { mesh.Subdivide(Subdivision.Midpoint, 1); break; }
+                            catch (HedgeException e) { if (e.Status != HedgeStatus.Busy) { ++editorErrors; break; } }
+                        }
+                    }
+                });
+                editor.Start();
+                string message = null;
+                while (editor.IsAlive)
+                {
+                    try { var c = mesh.Counts; }
+                    catch (HedgeException e)
+                    {
+                        Check.Equal(HedgeStatus.Busy, e.Status);
+                        message = e.Message;
+                        ++busy;
+                    }
+                }
+                editor.Join();
+                Check.Equal(0, editorErrors);
+                Check.True(busy > 0, "the calls collided");
+                Check.Contains(message, "another thread", "the library's message");
+                Check.Equal(4 * 4096 * 64, mesh.FaceCount, "every subdivision ran once");
+                Check.Valid(mesh, "after the collisions");
+            }
         }
 
         static void DisposedMesh()

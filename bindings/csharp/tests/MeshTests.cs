@@ -78,6 +78,46 @@ namespace Hedge.Tests
             r.Add("MeshTests.SmoothingPullsALiftedVertexDown", SmoothingPullsALiftedVertexDown);
             r.Add("MeshTests.SubdivisionRefinesAndRenderBuffersFollow", SubdivisionRefinesAndRenderBuffersFollow);
             r.Add("MeshTests.DecimationReachesItsTarget", DecimationReachesItsTarget);
+            r.Add("MeshTests.UnityQuadKeepsTheUsersCoordinates", UnityQuadKeepsTheUsersCoordinates);
+        }
+
+        // The original project's quad as a Unity Mesh holds it: with the Unity options the mesh holds Unity's
+        // own coordinates, a vertex set to (1, 0.5, 0) lands at (1, 0.5, 0) in the buffers, computed normals
+        // point to -z as Unity's RecalculateNormals gives, and the triangles come back in the same winding.
+        static void UnityQuadKeepsTheUsersCoordinates()
+        {
+            float[] p = { 0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0 };
+            int[] triangles = { 0, 1, 2, 2, 1, 3 };
+            BuildReport report;
+            using (var mesh = HalfEdgeMesh.FromEngineMesh(p, triangles, null, null, null, EngineImportOptions.Unity, out report))
+            {
+                for (int i = 0; i < 4; ++i)
+                {
+                    Vec3 q = mesh.GetPosition(new Vertex((uint)i));
+                    Check.True(q.X == p[3 * i] && q.Y == p[3 * i + 1] && q.Z == p[3 * i + 2], "vertex " + i + " bit for bit");
+                }
+                mesh.SetPosition(new Vertex(2), 1, 0.5f, 0);
+                using (RenderBuffers unity = mesh.GenerateUnityMesh())
+                {
+                    var positions = new float[3 * unity.Counts.VertexSlots];
+                    var normals = new float[3 * unity.Counts.VertexSlots];
+                    var indices = new int[unity.Counts.IndexCount];
+                    unity.CopyStream(VertexStream.Vertices, positions);
+                    unity.CopyStream(VertexStream.Normals, normals);
+                    unity.CopyIndices(indices);
+                    Check.Equal(6, indices.Length);
+                    float[] want = { 0, 0, 0, 0, 1, 0, 1, 0.5f, 0, 1, 0.5f, 0, 0, 1, 0, 1, 1, 0 };
+                    for (int c = 0; c < 6; ++c)
+                    {
+                        int r = indices[c];
+                        Check.True(positions[3 * r] == want[3 * c] && positions[3 * r + 1] == want[3 * c + 1] &&
+                                   positions[3 * r + 2] == want[3 * c + 2], "corner " + c + " in the user's axes and winding");
+                        Check.True(normals[3 * r] == 0 && normals[3 * r + 1] == 0 && normals[3 * r + 2] < -0.99f,
+                                   "computed normals point to -z, as in Unity");
+                    }
+                }
+                Check.Valid(mesh, "the Unity quad");
+            }
         }
 
         // A unit cube of 12 triangles: area, volume, box, face normals, vertex normals along the diagonals,
@@ -143,8 +183,11 @@ namespace Hedge.Tests
                 Check.Equal(64u, buffers.Counts.Triangles, "the buffers follow");
                 Check.Throws(HedgeStatus.InvalidArgument, () => tet.Subdivide(Subdivision.Midpoint, 20));
                 var map = new Vertex[tet.Counts.VertexSlots];
-                tet.ReorderSpatially(map);
+                tet.Reorder(Ordering.Spatial, vertexMap: map);
                 Check.Equal((int)tet.Counts.VertexSlots, map.Select(v => v.Index).Distinct().Count(), "a permutation");
+                double spatial = tet.CacheMissRatio();
+                tet.Reorder(Ordering.VertexCache);
+                Check.True(tet.CacheMissRatio() < spatial, "the vertex-cache order loads fewer vertices per triangle");
                 buffers.Sync();
                 Check.Equal(64u, buffers.Counts.Triangles, "the buffers follow the renumbering");
                 Check.Valid(tet, "after subdividing");
@@ -245,7 +288,8 @@ namespace Hedge.Tests
                 Check.Equal(4, a.FaceCount);
                 using (RenderBuffers unity = a.GenerateUnityMesh())
                 {
-                    Check.True(unity.Options.FlipX && unity.Options.Winding == Winding.Clockwise, "GenerateUnityMesh uses Unity's conventions");
+                    Check.True(!unity.Options.FlipX && unity.Options.Winding == Winding.CounterClockwise && !unity.Options.Interleaved,
+                               "GenerateUnityMesh keeps Unity's coordinates and triangles, one stream per attribute");
                 }
                 Check.Valid(a, "after the original's names");
                 Check.Valid(b, "after hedge's names");
@@ -297,14 +341,15 @@ namespace Hedge.Tests
             Check.True(ro.Texcoords && ro.Colors && ro.Interleaved && !ro.FlipX);
             Check.Equal(Winding.CounterClockwise, ro.Winding);
             RenderOptions unity = RenderOptions.Unity;
-            Check.True(unity.FlipX && !unity.Interleaved);
-            Check.Equal(Winding.Clockwise, unity.Winding);
+            Check.True(!unity.FlipX && !unity.Interleaved);
+            Check.Equal(Winding.CounterClockwise, unity.Winding);
             EngineImportOptions e = EngineImportOptions.Default;
             Check.Equal(Weld.Exact, e.Weld);
             Check.Equal(TopologyPolicy.Repair, e.Policy);
             Check.Equal(Winding.CounterClockwise, e.Winding);
             Check.False(e.FlipX);
-            Check.True(EngineImportOptions.Unity.FlipX);
+            Check.False(EngineImportOptions.Unity.FlipX);
+            Check.Equal(Winding.CounterClockwise, EngineImportOptions.Unity.Winding);
         }
 
         static void HandleArithmetic()

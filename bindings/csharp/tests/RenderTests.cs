@@ -305,16 +305,16 @@ namespace Hedge.Tests
                 Check.Equal(15, buffers.CopyStream(VertexStream.Vertices, null));
                 Check.Equal(15, buffers.CopyStream(VertexStream.Normals, null));
                 Check.Equal(0, buffers.CopyStream(VertexStream.Texcoords, null), "no texcoords in the mesh");
-                CheckBuffersMatchMesh(mesh, buffers); // x flipped, clockwise
+                CheckBuffersMatchMesh(mesh, buffers); // the mesh's own coordinates and winding
 
                 var normals = new float[15];
                 buffers.CopyStream(VertexStream.Normals, normals);
                 var source = new Vertex[5];
                 buffers.CopyVertexSource(source);
                 int apex = Array.IndexOf(source, new Vertex(4));
-                Check.Near(1, normals[3 * apex + 2], 1e-5, "the apex normal is +z in Unity's axes too");
-                int corner1 = Array.IndexOf(source, new Vertex(1)); // at x = 1: its normal leans to +x, flipped to -x
-                Check.True(normals[3 * corner1] < 0, "normal x flipped");
+                Check.Near(1, normals[3 * apex + 2], 1e-5, "the apex normal is +z");
+                int corner1 = Array.IndexOf(source, new Vertex(1)); // at x = 1: its normal leans to +x
+                Check.True(normals[3 * corner1] > 0, "normal x as computed in the mesh's axes (no mirroring for Unity)");
 
                 // Per-stream mirrors take the same dirty ranges.
                 var positions = new float[15];
@@ -323,7 +323,7 @@ namespace Hedge.Tests
                 buffers.Sync();
                 Check.True(buffers.CopyDirtyVertices(VertexStream.Vertices, positions) >= 1);
                 Check.True(buffers.CopyDirtyVertices(VertexStream.Normals, normals) >= 1);
-                Check.Equal(-1.5f, positions[3 * corner1], "x flipped in the mirror");
+                Check.Equal(1.5f, positions[3 * corner1], "the user's x in the mirror");
                 var fresh = new float[15];
                 buffers.CopyStream(VertexStream.Normals, fresh);
                 Check.Same(fresh, normals, 15, "normal mirror");

@@ -16,6 +16,7 @@ namespace Hedge.Tests
         {
             r.Add("SeamTests.SpotRoundTrip", SpotRoundTrip);
             r.Add("SeamTests.SpotRoundTripUnityConventions", SpotRoundTripUnity);
+            r.Add("SeamTests.SpotRoundTripMirrored", SpotRoundTripMirrored);
             r.Add("SeamTests.SpotEditsKeepMirrorsInStep", SpotEdits);
         }
 
@@ -231,10 +232,22 @@ namespace Hedge.Tests
             RoundTrip(spot, EngineImportOptions.Default, Separate(Winding.CounterClockwise, false));
         }
 
+        // Spot as Unity's importer would hold it (x mirrored, winding reversed): Unity's data are taken as they
+        // are, and come back as they were.
         static void SpotRoundTripUnity()
         {
             EngineMesh spot = ToUnity(ReadEngineObj(Context.Data("spot_triangulated.obj")));
-            RoundTrip(spot, EngineImportOptions.Unity, Separate(Winding.Clockwise, true));
+            RoundTrip(spot, EngineImportOptions.Unity, Separate(Winding.CounterClockwise, false));
+        }
+
+        // The conversion options for data in another convention: mirrored on the way in and back out.
+        static void SpotRoundTripMirrored()
+        {
+            EngineMesh spot = ToUnity(ReadEngineObj(Context.Data("spot_triangulated.obj")));
+            EngineImportOptions mirrored = EngineImportOptions.Default;
+            mirrored.Winding = Winding.Clockwise;
+            mirrored.FlipX = true;
+            RoundTrip(spot, mirrored, Separate(Winding.Clockwise, true));
         }
 
         static void SpotEdits()

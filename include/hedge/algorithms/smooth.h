@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <span>
 
+#include "hedge/core/progress.h"
 #include "hedge/core/surface_mesh.h"
 
 namespace hedge {
@@ -45,6 +46,9 @@ struct SmoothOptions {
   //! Empty: every vertex may move. Else one entry per vertex slot; only vertices whose entry is
   //! nonzero move (their neighbours still count in the averages).
   std::span<const std::uint8_t> mask{};
+  //! Told the fraction done after each iteration (core/progress.h). The positions are written
+  //! only at the end, so a callback that throws leaves the mesh unchanged.
+  Progress progress{};
 };
 
 //! Smooths the positions of the live vertices. O(iterations x (V + E)).

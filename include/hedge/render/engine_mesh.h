@@ -30,9 +30,10 @@ struct EngineImportOptions {
   Weld weld = Weld::exact;
   double weld_epsilon = 1e-6;
   TopologyPolicy policy = TopologyPolicy::repair;
-  //! The winding of the engine's triangles (Unity: cw).
+  //! Conversions for data in another convention: reverse the triangles' winding, negate x of
+  //! positions and normals. A Unity mesh needs neither (see RenderOptions::winding): importing it
+  //! with the defaults keeps the user's coordinates bit for bit and gives Unity's normals.
   Winding winding = Winding::ccw;
-  //! Negate x of positions and normals (Unity's left-handed axes).
   bool flip_x = false;
 };
 

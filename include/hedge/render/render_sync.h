@@ -48,9 +48,11 @@ struct RenderOptions {
   bool colors = true;
   //! One buffer of whole vertices (position, normal, texcoord, colour) or one buffer per stream.
   bool interleaved = true;
-  //! Triangle winding in the index buffer: Unity and Direct3D are clockwise.
+  //! Triangle winding in the index buffer, and whether to negate x of positions and normals: for
+  //! writing into a convention other than the mesh's own (mirrored data). Unity needs neither: its
+  //! clockwise front faces in left-handed axes have the same cross-product normals as hedge's
+  //! counter-clockwise faces in right-handed axes, so its meshes are taken and given back as they are.
   Winding winding = Winding::ccw;
-  //! Negate x of positions and normals: converts between right- and left-handed (Unity) axes.
   bool flip_x = false;
 };
 
@@ -167,7 +169,10 @@ class RenderSync {
   //! face order, so it also compacts.
   const SyncResult& rebuild();
   //! Syncs, then removes free slots by packing live render vertices and face triangles in their
-  //! current order; returns the old-to-new maps. O(buffer).
+  //! current order; returns the old-to-new maps. O(buffer). Every slot may have moved, so
+  //! last_result() and the result of the next sync() (or commit()) report whole buffers, `full`
+  //! and `resized`: a consumer that only follows sync results (an engine component) uploads
+  //! everything after a compaction it did not make itself.
   RenderRemap compact();
 
  private:
@@ -180,6 +185,8 @@ class RenderSync {
   //! Grows `capacity` geometrically to hold n; a growth outside a full build is reported as resized.
   void grow_capacity(std::size_t& capacity, std::size_t n);
   void report_full();
+  //! sync() without the full report a compaction leaves pending.
+  void sync_changes();
   void attach_sources();
   void setup_layout();
   void grow_element_arrays();
@@ -207,6 +214,7 @@ class RenderSync {
   //! This object's place in the mesh's change log (detached when it is destroyed).
   ChangeConsumer changes_;
   bool building_ = false;  // a full build reports whole buffers, not written slots
+  bool full_pending_ = false;  // compact() moved every slot: the next sync reports whole buffers
 
   // Attribute sources, resolved against the mesh's properties.
   HalfedgeProperty<Vec3> h_normal_;

@@ -105,7 +105,9 @@ namespace Hedge.Unity
         {
             if (result.IsEmpty) return;
             BufferCounts counts = Buffers.Counts;
-            if (result.Resized || counts.VertexSlots > gpuVertices || counts.IndexCount > indices.Length)
+            // A result that says everything changed (a rebuild, Compact(), garbage collection) uploads
+            // everything: its ranges may not cover what moved.
+            if (result.Resized || result.Full || counts.VertexSlots > gpuVertices || counts.IndexCount > indices.Length)
             {
                 UploadAll();
                 return;

@@ -20,8 +20,8 @@ namespace Hedge.Tests
             return runner.Run(args.Length > 0 ? args[0] : null) > 0 ? 1 : 0;
         }
 
-        // The open pyramid in Unity's conventions (x negated, clockwise), a seam at the apex (two
-        // texcoords), and colours.
+        // An open pyramid as a Unity Mesh holds it (taken as it is: no conversion), a seam at the apex
+        // (two texcoords), and colours.
         static UnityEngine.Mesh SourceMesh()
         {
             var m = new UnityEngine.Mesh();
@@ -95,7 +95,7 @@ namespace Hedge.Tests
             Check.Equal(5, b.HalfEdgeMesh.VertexCount, "the apex copies welded");
             Check.Equal(1u, b.Report.WeldedVertices);
             Check.Equal(4, b.HalfEdgeMesh.FaceCount);
-            Check.Equal(new Vec3(0.5f, 0.5f, 1), b.HalfEdgeMesh.GetPosition(new Vertex(4)), "x flipped back");
+            Check.Equal(new Vec3(-0.5f, 0.5f, 1), b.HalfEdgeMesh.GetPosition(new Vertex(4)), "Unity's own coordinates");
             Check.Equal(6u, b.Buffers.Counts.Vertices, "the seam at the apex survives");
             CheckUploaded(b, "after building");
 
@@ -131,6 +131,20 @@ namespace Hedge.Tests
             Check.True(rendered.VertexBufferCount > gpuVertices, "reallocated: " + rendered.VertexBufferCount);
             CheckUploaded(b, "after growth");
             Check.True(rendered.BoundsRecalculations > 0);
+            Check.Valid(b.HalfEdgeMesh);
+
+            // Removing faces leaves free slots; Compact() on the buffers moves every slot, and the next
+            // upload must send everything (it used to send nothing, leaving stale indices and submesh).
+            int removed = 0;
+            for (uint f = 0; f < b.HalfEdgeMesh.Counts.FaceSlots && removed < 5; ++f)
+                if (b.HalfEdgeMesh.CanRemoveFace(new Face(f)) && b.HalfEdgeMesh.RemoveFace(new Face(f))) ++removed;
+            Check.Equal(5, removed);
+            b.Upload();
+            Check.True(b.Buffers.Counts.FreeTriangleSlots > 0, "holes before compaction");
+            b.Buffers.Compact();
+            Check.Equal(0u, b.Buffers.Counts.FreeTriangleSlots);
+            b.Upload();
+            CheckUploaded(b, "after Compact()");
             Check.Valid(b.HalfEdgeMesh);
 
             // OnDestroy releases the native objects and the Unity mesh.
