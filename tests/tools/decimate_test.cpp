@@ -1,4 +1,5 @@
 // hedge decimate, run as a user would.
+#include <cstdlib>
 #include <string>
 
 #include "cli_fixture.h"
@@ -46,6 +47,21 @@ TEST_F(HedgeCli, DecimateStopsAtTheErrorLimitAndPrintsIt) {
   const json after = run_json({"info", out.string(), "--json"});
   EXPECT_LT(after["vertices"].get<std::size_t>(), before["vertices"].get<std::size_t>());
   EXPECT_TRUE(after["valid"].get<bool>());
+}
+
+TEST_F(HedgeCli, DecimateDrawsItsProgressBarWhenAsked) {
+  const char* old = std::getenv("HEDGE_PROGRESS");
+  const std::string saved = old ? old : "";
+  ::setenv("HEDGE_PROGRESS", "always", 1);
+  const Result r = run({"decimate", data("spot_triangulated.obj"), tmp("d.obj").string(), "--ratio", "0.2"});
+  if (old) {
+    ::setenv("HEDGE_PROGRESS", saved.c_str(), 1);
+  } else {
+    ::unsetenv("HEDGE_PROGRESS");
+  }
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("\rdecimate ["), std::string::npos) << r.err;
+  EXPECT_NE(r.err.rfind("] 100%"), std::string::npos) << r.err;
 }
 
 TEST_F(HedgeCli, DecimateRefusesBadInputWithoutWriting) {

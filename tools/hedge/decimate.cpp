@@ -13,6 +13,7 @@
 #include "hedge/algorithms/decimate.h"
 #include "hedge/error.h"
 #include "load.h"
+#include "progress_bar.h"
 
 namespace hedge::cli {
 
@@ -52,7 +53,10 @@ int run_decimate(const DecimateCommandOptions& o) {
   d.keep_seams = !o.break_seams;
   const std::size_t v0 = mesh.n_vertices(), f0 = mesh.n_faces();
   const auto start = std::chrono::steady_clock::now();
+  ProgressBar bar("decimate");
+  d.progress = bar.callback();
   const DecimateResult r = decimate(mesh, d);
+  bar.finish();
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const std::filesystem::path parent = std::filesystem::path(o.output).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);
