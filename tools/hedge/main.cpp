@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
       add_tour_command(app),
       add_smooth_command(app),
       add_subdivide_command(app),
+      add_decimate_command(app),
   };
 
   try {
