@@ -1,0 +1,89 @@
+// Decimation: removes vertices by edge collapses, cheapest first, ranked by Garland and Heckbert's
+// quadric error metric, until a target vertex or face count is reached or the next collapse would
+// move the surface by more than a given distance.
+//
+//  - Each face contributes the quadric of its plane, weighted by its area; a vertex's quadric is the
+//    sum over its faces, and a collapse's is the sum of its two ends'. The error of a collapse is
+//    sqrt(Q(p) / W): the root-mean-square distance, in model units, of the surviving point p from
+//    the planes the two ends gathered (W: their total weight).
+//  - The surviving point minimises the quadric when its 3x3 system is well conditioned and the
+//    optimum lies near the edge; otherwise (flat or cylindrical regions, where the optimum is a line
+//    or a plane) the best of the two ends and the midpoint is taken, so planar regions do not fold.
+//  - Boundary edges add the plane through the edge perpendicular to its face, weighted by
+//    boundary_weight x length^2, which keeps open outlines in place; keep_boundary pins them.
+//    Feature edges (the edge property "e:crease" nonzero, or a dihedral angle above
+//    feature_angle_degrees) add the same planes for both faces, weighted by feature_weight.
+//  - A collapse is done only if can_collapse() allows it (the link condition: no boundary loop
+//    shrinks below 3 vertices, no two boundaries are joined), no face around either end would turn
+//    by more than max_normal_change_degrees or lose its area, and, with keep_seams, it does not
+//    break a UV seam.
+//  - Corner texture coordinates ("h:texcoord", Vec2) follow: each corner at the surviving vertex
+//    gets the value interpolated at the new position, barycentric in the triangle of its own side
+//    of a seam that the point projects into. A seam edge (the corners on its two sides differ) is
+//    collapsed only along itself, and only when both of its ends stay seam corners consistently;
+//    an edge that would pull a seam vertex off the seam is refused. With attribute_weight > 0 the
+//    UVs enter the quadric (the plane quadric is extended with the UV gradient), so collapses that
+//    stretch the texture cost more.
+//
+// Other vertex properties keep the survivor's value; face and edge properties of surviving elements
+// are kept. Deleted elements are garbage-collected at the end, so the result is compact (indices
+// change; the change log records a reset).
+#pragma once
+
+#include <cstddef>
+#include <limits>
+
+#include "hedge/core/progress.h"
+#include "hedge/core/surface_mesh.h"
+
+namespace hedge {
+
+struct DecimateOptions {
+  //! Stop when at most this many vertices are left (0: no vertex target).
+  std::size_t target_vertices = 0;
+  //! Stop when at most this many faces are left (0: no face target).
+  std::size_t target_faces = 0;
+  //! Stop before a collapse whose error (a distance in model units, the square root of the quadric
+  //! error) exceeds this. Infinity: no limit.
+  double max_error = std::numeric_limits<double>::infinity();
+  //! Weight of the boundary-keeping planes, relative to the faces' area weights (they are scaled by
+  //! the squared edge length, so 1 makes a boundary edge as stiff as a face of its size). 0: none.
+  double boundary_weight = 1.0;
+  //! Edges whose faces meet at a dihedral angle (between their normals) above this, or marked in
+  //! "e:crease", are feature edges. 180 or more: only "e:crease" edges.
+  double feature_angle_degrees = 60.0;
+  //! Weight of the feature-keeping planes, scaled like boundary_weight. 0: features are not kept.
+  double feature_weight = 1.0;
+  //! True: boundary vertices never move and are never removed.
+  bool keep_boundary = false;
+  //! True: never collapse across a UV seam or in a way that breaks it ("h:texcoord" corners).
+  bool keep_seams = true;
+  //! >0: corner UVs enter the quadric with this weight (UV units per model unit). 0: geometry only.
+  double attribute_weight = 0;
+  //! Refuse collapses that turn a face around either end by more than this (prevents flips).
+  double max_normal_change_degrees = 60.0;
+  //! Called with the fraction of the work done.
+  Progress progress;
+};
+
+struct DecimateResult {
+  //! Achieved counts of live elements.
+  std::size_t vertices = 0, faces = 0;
+  //! Collapses done.
+  std::size_t collapses = 0;
+  //! The largest error (a distance) of a collapse done, 0 if none.
+  double max_error = 0;
+};
+
+//! Decimates the triangle mesh by quadric-ranked edge collapses until it has at most
+//! target_vertices vertices and at most target_faces faces (each when nonzero), or the next
+//! collapse's error would exceed max_error, or no legal collapse is left. A target at or above the
+//! mesh's count is met at once (no change). With no target and an infinite max_error it removes
+//! what it can. O(E log E) time, O(V + E) memory.
+//! \pre the mesh is a triangle mesh with finite positions.
+//! \throw InvalidInputError, with the mesh unchanged, for a face that is not a triangle (the message
+//!   names it; triangulate first), a position that is not finite (named), or illegal options:
+//!   a negative or NaN max_error, weight or angle.
+DecimateResult decimate(SurfaceMesh& mesh, const DecimateOptions& options);
+
+}  // namespace hedge

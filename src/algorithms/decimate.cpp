@@ -1,0 +1,553 @@
+// Quadric-error decimation, as named steps: check the input; gather each vertex's quadric; then
+// passes of rank (every live edge gets its best collapse and cost), sort (a radix sort on the
+// costs' bits) and collapse (cheapest first, each vertex at most once per pass); finally collect
+// the garbage. A pass does half of the collapses still needed, so about log2(n) passes run, each
+// over the edges left. A vertex that survived a collapse is locked until the next pass, because the
+// costs of its edges are stale; the costs of all other edges are still exact, since a collapse
+// changes no other vertex's quadric. No allocation happens per collapse.
+#include "hedge/algorithms/decimate.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "hedge/core/operations.h"
+#include "hedge/error.h"
+
+namespace hedge {
+
+namespace {
+
+using Mesh = SurfaceMesh;
+constexpr double kPi = 3.14159265358979323846;
+
+// Sum of weighted squared distances to planes n.x + d = 0: x'Ax + 2b'x + c, with A symmetric
+// (a00 a01 a02 a11 a12 a22) and w the total weight of the geometric planes.
+struct Quadric {
+  double a00 = 0, a01 = 0, a02 = 0, a11 = 0, a12 = 0, a22 = 0, b0 = 0, b1 = 0, b2 = 0, c = 0, w = 0;
+
+  void add(const Quadric& q) {
+    a00 += q.a00, a01 += q.a01, a02 += q.a02, a11 += q.a11, a12 += q.a12, a22 += q.a22;
+    b0 += q.b0, b1 += q.b1, b2 += q.b2, c += q.c, w += q.w;
+  }
+  // Adds weight x (n.x + d)^2; n need not be unit length (its length scales the term).
+  void add_plane(const Vec3d& n, double d, double weight) {
+    a00 += weight * n.x * n.x, a01 += weight * n.x * n.y, a02 += weight * n.x * n.z;
+    a11 += weight * n.y * n.y, a12 += weight * n.y * n.z, a22 += weight * n.z * n.z;
+    b0 += weight * d * n.x, b1 += weight * d * n.y, b2 += weight * d * n.z;
+    c += weight * d * d;
+  }
+  double eval(const Vec3d& p) const {
+    const double x = p.x, y = p.y, z = p.z;
+    return x * (a00 * x + 2 * (a01 * y + a02 * z + b0)) + y * (a11 * y + 2 * (a12 * z + b1)) +
+           z * (a22 * z + 2 * b2) + c;
+  }
+  // The minimiser, if the system is well conditioned: |det A| above a fraction of (trace / 3)^3,
+  // the value it has when every direction is constrained as strongly as the average one. On a
+  // flat or cylindrical patch one eigenvalue is (nearly) zero, the minimiser is a plane or a line,
+  // and the caller falls back to the endpoints or the midpoint.
+  bool minimiser(Vec3d& p) const {
+    const double c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
+    const double det = a00 * c00 + a01 * c01 + a02 * c02;
+    const double s = (a00 + a11 + a22) / 3;
+    if (!(s > 0) || !(std::abs(det) > 1e-3 * s * s * s)) return false;
+    const double c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
+    const double inv = -1 / det;
+    p = {inv * (c00 * b0 + c01 * b1 + c02 * b2), inv * (c01 * b0 + c11 * b1 + c12 * b2),
+         inv * (c02 * b0 + c12 * b1 + c22 * b2)};
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+  }
+};
+
+Quadric sum(const Quadric& a, const Quadric& b) {
+  Quadric q = a;
+  q.add(b);
+  return q;
+}
+
+// Squared distance-like error of q at p: the weighted mean of the squared plane distances.
+double error_at(const Quadric& q, const Vec3d& p) {
+  const double e = q.eval(p);
+  return q.w > 0 ? std::max(0.0, e) / q.w : std::max(0.0, e);
+}
+
+std::string vertex_name(Vertex v) { return "vertex " + std::to_string(v.idx()); }
+
+void check(const Mesh& m, const DecimateOptions& o) {
+  auto non_negative = [](double x, const char* name) {
+    if (!(x >= 0) || !std::isfinite(x))
+      throw InvalidInputError(std::string("decimate: ") + name + " must be finite and not negative, got " +
+                              std::to_string(x));
+  };
+  if (!(o.max_error >= 0))
+    throw InvalidInputError("decimate: max_error must not be negative or NaN, got " + std::to_string(o.max_error));
+  non_negative(o.boundary_weight, "boundary_weight");
+  non_negative(o.feature_weight, "feature_weight");
+  non_negative(o.feature_angle_degrees, "feature_angle_degrees");
+  non_negative(o.attribute_weight, "attribute_weight");
+  if (!(o.max_normal_change_degrees > 0 && o.max_normal_change_degrees <= 180))
+    throw InvalidInputError("decimate: max_normal_change_degrees must be in (0, 180], got " +
+                            std::to_string(o.max_normal_change_degrees));
+  for (Face f : m.faces())
+    if (m.valence(f) != 3)
+      throw InvalidInputError("decimate: face " + std::to_string(f.idx()) + " has " +
+                              std::to_string(m.valence(f)) + " corners; decimation needs triangles (triangulate first)");
+  for (Vertex v : m.vertices()) {
+    if (!is_finite(m.position(v)))
+      throw InvalidInputError("decimate: " + vertex_name(v) + " has a position that is not finite");
+    if (!m.is_manifold(v))
+      throw InvalidInputError("decimate: " + vertex_name(v) + " is not manifold (its faces form more than one fan)");
+  }
+}
+
+// The state of one decimation: per-vertex quadrics, pass stamps and flags, the candidates of the
+// pass, and the scratch lists of one collapse, all allocated once.
+class Decimator {
+ public:
+  Decimator(Mesh& m, const DecimateOptions& o)
+      : m_(m),
+        o_(o),
+        pos_(m.positions().vector().data()),
+        uv_(m.get_halfedge_property<Vec2>("h:texcoord")),
+        crease_(m.get_edge_property<std::uint8_t>("e:crease")) {
+    const double cos_max = std::cos(o.max_normal_change_degrees * kPi / 180);
+    min_cos_ = o.max_normal_change_degrees >= 180 ? -2.0 : cos_max;
+    max_cost_ = std::isinf(o.max_error) ? std::numeric_limits<double>::infinity() : o.max_error * o.max_error;
+    seams_ = uv_ && o.keep_seams;
+  }
+
+  DecimateResult run();
+
+ private:
+  // How many collapses are still needed to meet the targets (a large number when there is none).
+  std::size_t needed() const {
+    std::size_t n = 0;
+    const bool any = o_.target_vertices > 0 || o_.target_faces > 0;
+    if (!any) return std::numeric_limits<std::size_t>::max() / 4;
+    if (o_.target_vertices > 0 && m_.n_vertices() > o_.target_vertices) n = m_.n_vertices() - o_.target_vertices;
+    if (o_.target_faces > 0 && m_.n_faces() > o_.target_faces)
+      n = std::max(n, (m_.n_faces() - o_.target_faces + 1) / 2);
+    return n;
+  }
+  bool done() const {
+    const bool any = o_.target_vertices > 0 || o_.target_faces > 0;
+    return any && (o_.target_vertices == 0 || m_.n_vertices() <= o_.target_vertices) &&
+           (o_.target_faces == 0 || m_.n_faces() <= o_.target_faces);
+  }
+
+  Vec3d pos(Vertex v) const { return to_double(pos_[v.idx()]); }
+  void gather_quadrics();
+  void classify();
+  bool seam(Edge e) const;
+  bool removable(Vertex v, bool seam_edge) const;
+  bool fixed(Vertex v) const;
+  // The best collapse of e: the half-edge to collapse, the surviving point, its cost. False if e
+  // may not collapse either way.
+  bool best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost) const;
+  bool placement(Halfedge h, Vec3d& p, double& cost) const;
+  bool keeps_normals(Halfedge h, const Vec3d& p) const;
+  void gather_ring(Halfedge h);
+  void interpolate_corners(Vertex v, const Vec3d& p);
+  void sort_candidates();
+
+  Mesh& m_;
+  const DecimateOptions& o_;
+  Vec3* pos_;
+  HalfedgeProperty<Vec2> uv_;
+  EdgeProperty<std::uint8_t> crease_;
+  bool seams_ = false;
+  double min_cos_ = 0, max_cost_ = 0, tiny_area2_ = 0;
+
+  std::vector<Quadric> q_;
+  std::vector<std::uint32_t> stamp_;   // pass in which the vertex survived a collapse
+  std::vector<std::uint8_t> seam_count_;  // seam edges at the vertex, saturated at 3
+  // Candidates: (cost bits << 32) | half-edge, per edge (kept between passes) and of this pass.
+  static constexpr std::uint64_t kNoKey = ~std::uint64_t(0);
+  std::vector<std::uint64_t> edge_key_, keys_, scratch_;
+
+  // One collapse's ring: the triangles around both ends before it, their corners' positions and
+  // texture coordinates, and which chart (faces joined across non-seam edges) each belongs to.
+  struct RingFace {
+    Face f;
+    std::array<Vec3d, 3> x;
+    std::array<Vec2, 3> uv;
+    std::uint32_t chart;
+  };
+  std::vector<RingFace> ring_;
+};
+
+void Decimator::gather_quadrics() {
+  q_.assign(m_.vertex_slots(), Quadric{});
+  const double feature_cos = o_.feature_angle_degrees >= 180 ? -2.0 : std::cos(o_.feature_angle_degrees * kPi / 180);
+  const double wa2 = o_.attribute_weight * o_.attribute_weight;
+  std::vector<Vec3d> normal(m_.face_slots());
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (Vertex v : m_.vertices()) {
+    const Vec3d p = pos(v);
+    lo[0] = std::min(lo[0], p.x), lo[1] = std::min(lo[1], p.y), lo[2] = std::min(lo[2], p.z);
+    hi[0] = std::max(hi[0], p.x), hi[1] = std::max(hi[1], p.y), hi[2] = std::max(hi[2], p.z);
+  }
+  const double diag2 = m_.n_vertices() == 0 ? 0
+                                            : (hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                                                  (hi[2] - lo[2]) * (hi[2] - lo[2]);
+  // A face whose doubled area is below 1e-12 of the squared bounding-box diagonal counts as
+  // degenerate: a collapse may not make one.
+  tiny_area2_ = 1e-24 * diag2 * diag2;
+
+  for (Face f : m_.faces()) {
+    const Halfedge h0 = m_.halfedge(f), h1 = m_.next(h0), h2 = m_.next(h1);
+    const Vertex v[3] = {m_.to_vertex(h2), m_.to_vertex(h0), m_.to_vertex(h1)};
+    const Vec3d x0 = pos(v[0]), x1 = pos(v[1]), x2 = pos(v[2]);
+    const Vec3d n = cross(x1 - x0, x2 - x0);
+    const double len = norm(n);
+    normal[f.idx()] = len > 0 ? n / len : Vec3d{0, 0, 0};
+    if (!(len > 0)) continue;
+    const double area = len / 2;
+    const Vec3d u = n / len;
+    Quadric face;
+    face.add_plane(u, -dot(u, x0), area);
+    face.w = area;
+    for (const Vertex c : v) q_[c.idx()].add(face);
+    if (wa2 > 0 && uv_) {
+      // The texture map of the face is linear: uv(x) = G x + d. A corner that keeps its value
+      // while its vertex moves to p is off by G p + d - uv; that costs wa2 x area x its square.
+      const Vec2 s[3] = {uv_[h2], uv_[h0], uv_[h1]};
+      const Vec3d e1 = x1 - x0, e2 = x2 - x0;
+      const Vec3d g1 = cross(e2, n) / (len * len), g2 = cross(n, e1) / (len * len);
+      for (int k = 0; k < 2; ++k) {
+        const double s0 = s[0][k], s1 = s[1][k], s2 = s[2][k];
+        const Vec3d g = g1 * (s1 - s0) + g2 * (s2 - s0);
+        const double d = s0 - dot(g, x0);
+        for (int i = 0; i < 3; ++i) q_[v[i].idx()].add_plane(g, d - double(s[i][k]), wa2 * area);
+      }
+    }
+  }
+  // Planes through boundary and feature edges, perpendicular to their faces, keep those edges
+  // where they are; scaled by the squared length, like a face's area.
+  for (Edge e : m_.edges()) {
+    const Halfedge h = Mesh::halfedge(e, 0);
+    const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
+    const Vec3d xa = pos(a), xb = pos(b), dir = xb - xa;
+    const double len2 = dot(dir, dir);
+    auto constrain = [&](Face f, double weight) {
+      if (!f.is_valid() || !(weight > 0)) return;
+      const Vec3d n = cross(dir, normal[f.idx()]);
+      const double l = norm(n);
+      if (!(l > 0)) return;
+      const Vec3d u = n / l;
+      Quadric plane;
+      plane.add_plane(u, -dot(u, xa), weight * len2);
+      plane.w = weight * len2;
+      q_[a.idx()].add(plane);
+      q_[b.idx()].add(plane);
+    };
+    const Face f0 = m_.face(h), f1 = m_.face(Mesh::twin(h));
+    if (!f0.is_valid() || !f1.is_valid()) {
+      constrain(f0.is_valid() ? f0 : f1, o_.boundary_weight);
+      continue;
+    }
+    const bool feature = (crease_ && crease_[e] != 0) || dot(normal[f0.idx()], normal[f1.idx()]) < feature_cos;
+    if (feature) {
+      constrain(f0, o_.feature_weight);
+      constrain(f1, o_.feature_weight);
+    }
+  }
+}
+
+// A seam edge: an interior edge whose two faces give one of its ends different texture coordinates.
+// The corner of vertex x in face f is stored on the half-edge entering x in f.
+bool Decimator::seam(Edge e) const {
+  const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
+  if (m_.is_boundary(h) || m_.is_boundary(t)) return false;
+  const Halfedge hp = m_.next(m_.next(h)), tp = m_.next(m_.next(t));
+  return uv_[h] != uv_[tp] || uv_[hp] != uv_[t];
+}
+
+void Decimator::classify() {
+  if (!seams_) return;
+  seam_count_.assign(m_.vertex_slots(), 0);
+  for (Edge e : m_.edges()) {
+    if (!seam(e)) continue;
+    for (const Vertex v : m_.vertices(e)) seam_count_[v.idx()] = std::uint8_t(std::min(3, seam_count_[v.idx()] + 1));
+  }
+}
+
+// May v be merged away over an edge (a seam edge or not)? A boundary vertex is kept with
+// keep_boundary; a seam vertex only along its seam, where it has exactly two seam edges.
+bool Decimator::removable(Vertex v, bool seam_edge) const {
+  if (o_.keep_boundary && m_.is_boundary(v)) return false;
+  if (!seams_) return true;
+  const int s = seam_count_[v.idx()];
+  return s == 0 || (s == 2 && seam_edge);
+}
+
+// Must v stay where it is if it survives?
+bool Decimator::fixed(Vertex v) const {
+  return (o_.keep_boundary && m_.is_boundary(v)) || (seams_ && seam_count_[v.idx()] > 0);
+}
+
+// The surviving point of collapsing h and its cost: to_vertex(h)'s position if it must stay,
+// else the quadric's minimiser if it is well defined and within an edge length of the midpoint,
+// else the best of the two ends and the midpoint.
+bool Decimator::placement(Halfedge h, Vec3d& p, double& cost) const {
+  const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
+  const Quadric q = sum(q_[a.idx()], q_[b.idx()]);
+  const Vec3d xa = pos(a), xb = pos(b);
+  p = xb;
+  if (!fixed(b)) {
+    const Vec3d mid = (xa + xb) * 0.5, ab = xb - xa;
+    Vec3d opt;
+    if (q.minimiser(opt) && dot(opt - mid, opt - mid) <= dot(ab, ab)) {
+      p = opt;
+    } else {
+      double best = error_at(q, xb);
+      if (const double em = error_at(q, mid); em < best) p = mid, best = em;
+      if (error_at(q, xa) < best) p = xa;
+    }
+  }
+  // The cost and the checks see the point as it will be stored.
+  p = to_double(to_float(p));
+  cost = error_at(q, p);
+  return true;
+}
+
+bool Decimator::best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost) const {
+  const Halfedge h0 = Mesh::halfedge(e, 0), h1 = Mesh::twin(h0);
+  const bool s = seams_ && seam(e);
+  const bool go0 = removable(m_.from_vertex(h0), s), go1 = removable(m_.from_vertex(h1), s);
+  if (!go0 && !go1) return false;
+  if (go0 && go1) {
+    // Both ways: if one end must stay, collapse into it; else the point is the same either way,
+    // and the end it lands on (if it is one) survives, keeping its own properties.
+    const bool f0 = fixed(m_.to_vertex(h0)), f1 = fixed(m_.to_vertex(h1));
+    if (f0 != f1) {
+      h = f0 ? h0 : h1;
+      return placement(h, p, cost);
+    }
+    Vec3d p0, p1;
+    double c0, c1;
+    placement(h0, p0, c0);
+    if (!f0) {
+      h = p0 == pos(m_.to_vertex(h1)) ? h1 : h0;
+      p = p0, cost = c0;
+      return true;
+    }
+    placement(h1, p1, c1);
+    if (c1 < c0) h = h1, p = p1, cost = c1;
+    else h = h0, p = p0, cost = c0;
+    return true;
+  }
+  h = go0 ? h0 : h1;
+  return placement(h, p, cost);
+}
+
+// No face around either end of h (other than the faces on h, which vanish) may turn by more than
+// the allowed angle or lose its area when the survivor moves to p.
+bool Decimator::keeps_normals(Halfedge h, const Vec3d& p) const {
+  const Face fl = m_.face(h), fr = m_.face(Mesh::twin(h));
+  for (const Halfedge start : {h, Mesh::twin(h)}) {
+    const Vec3d x = pos(m_.from_vertex(start));
+    Halfedge o = start;
+    do {
+      const Face f = m_.face(o);
+      if (f.is_valid() && f != fl && f != fr) {
+        const Halfedge on = m_.next(o);
+        const Vec3d b = pos(m_.to_vertex(o)), c = pos(m_.to_vertex(on));
+        const Vec3d n0 = cross(b - x, c - x), n1 = cross(b - p, c - p);
+        const double l1 = dot(n1, n1);
+        if (!(l1 > tiny_area2_)) return false;
+        const double d = dot(n0, n1), l0 = dot(n0, n0);
+        if (l0 > 0 && d < min_cos_ * std::sqrt(l0 * l1)) return false;
+      }
+      o = m_.rotate_cw(o);
+    } while (o != start);
+  }
+  return true;
+}
+
+// Before collapsing h: the triangles around both ends, their corners, and their charts (faces
+// joined across spoke edges that are not seams, with union-find over the ring's slots).
+void Decimator::gather_ring(Halfedge h) {
+  ring_.clear();
+  for (const Halfedge start : {h, Mesh::twin(h)}) {
+    Halfedge o = start;
+    do {
+      const Face f = m_.face(o);
+      if (f.is_valid() && (start == h || (f != m_.face(h) && f != m_.face(Mesh::twin(h))))) {
+        const Halfedge o1 = m_.next(o), o2 = m_.next(o1);
+        RingFace r{f,
+                   {pos(m_.to_vertex(o2)), pos(m_.to_vertex(o)), pos(m_.to_vertex(o1))},
+                   {uv_[o2], uv_[o], uv_[o1]},
+                   std::uint32_t(ring_.size())};
+        ring_.push_back(r);
+      }
+      o = m_.rotate_cw(o);
+    } while (o != start);
+  }
+  auto find = [&](std::uint32_t i) {
+    while (ring_[i].chart != i) i = ring_[i].chart = ring_[ring_[i].chart].chart;
+    return i;
+  };
+  auto slot = [&](Face f) -> std::uint32_t {
+    for (std::uint32_t i = 0; i < ring_.size(); ++i)
+      if (ring_[i].f == f) return i;
+    return std::uint32_t(-1);
+  };
+  // Every spoke edge of both ends (h's edge included): join its faces unless it is a seam.
+  for (const Halfedge start : {h, Mesh::twin(h)}) {
+    Halfedge o = start;
+    do {
+      const Face f0 = m_.face(o), f1 = m_.face(Mesh::twin(o));
+      if (f0.is_valid() && f1.is_valid() && !seam(Mesh::edge(o))) {
+        const std::uint32_t i = slot(f0), j = slot(f1);
+        if (i != std::uint32_t(-1) && j != std::uint32_t(-1)) ring_[find(i)].chart = find(j);
+      }
+      o = m_.rotate_cw(o);
+    } while (o != start);
+  }
+  for (std::uint32_t i = 0; i < ring_.size(); ++i) ring_[i].chart = find(i);
+}
+
+// After the collapse: each corner at v gets the texture coordinates at p of the nearest old
+// triangle of its own chart (barycentric, clamped to the triangle).
+void Decimator::interpolate_corners(Vertex v, const Vec3d& p) {
+  const Halfedge start = m_.halfedge(v);
+  Halfedge o = start;
+  do {
+    const Halfedge in = Mesh::twin(o);
+    const Face f = m_.face(in);
+    if (f.is_valid()) {
+      std::uint32_t chart = std::uint32_t(-1);
+      for (const RingFace& r : ring_)
+        if (r.f == f) chart = r.chart;
+      double best = HUGE_VAL;
+      Vec2 value = uv_[in];
+      for (const RingFace& r : ring_) {
+        if (r.chart != chart) continue;
+        const Vec3d e1 = r.x[1] - r.x[0], e2 = r.x[2] - r.x[0], d = p - r.x[0];
+        const double d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
+        const double det = d11 * d22 - d12 * d12;
+        if (!(det > 0)) continue;
+        const double t1 = dot(d, e1), t2 = dot(d, e2);
+        double b1 = (d22 * t1 - d12 * t2) / det, b2 = (d11 * t2 - d12 * t1) / det, b0 = 1 - b1 - b2;
+        b0 = std::max(0.0, b0), b1 = std::max(0.0, b1), b2 = std::max(0.0, b2);
+        const double s = b0 + b1 + b2;
+        b0 /= s, b1 /= s, b2 /= s;
+        const Vec3d q = r.x[0] * b0 + r.x[1] * b1 + r.x[2] * b2 - p;
+        const double dist = dot(q, q);
+        if (dist < best) {
+          best = dist;
+          value = Vec2{float(b0 * r.uv[0].x + b1 * r.uv[1].x + b2 * r.uv[2].x),
+                       float(b0 * r.uv[0].y + b1 * r.uv[1].y + b2 * r.uv[2].y)};
+        }
+      }
+      uv_[in] = value;
+    }
+    o = m_.rotate_cw(o);
+  } while (o != start);
+}
+
+// LSD radix sort of the keys by their upper 32 bits (the costs' float bits, which order like the
+// non-negative floats), in three passes of 11 bits.
+void Decimator::sort_candidates() {
+  scratch_.resize(keys_.size());
+  for (int shift = 32; shift < 64; shift += 11) {
+    std::array<std::uint32_t, 2048> count{};
+    for (const std::uint64_t k : keys_) ++count[(k >> shift) & 2047];
+    std::uint32_t total = 0;
+    for (std::uint32_t& c : count) {
+      const std::uint32_t n = c;
+      c = total;
+      total += n;
+    }
+    for (const std::uint64_t k : keys_) scratch_[count[(k >> shift) & 2047]++] = k;
+    keys_.swap(scratch_);
+  }
+}
+
+DecimateResult Decimator::run() {
+  DecimateResult result;
+  report_progress(o_.progress, 0);
+  const std::size_t initial = needed();
+  if (initial == 0 || m_.n_faces() == 0) {
+    result.vertices = m_.n_vertices(), result.faces = m_.n_faces();
+    report_progress(o_.progress, 1);
+    return result;
+  }
+  gather_quadrics();
+  stamp_.assign(m_.vertex_slots(), 0);
+  edge_key_.assign(m_.edge_slots(), kNoKey);
+  double max_cost = 0;
+  const bool endless = o_.target_vertices == 0 && o_.target_faces == 0;
+  for (std::uint32_t pass = 1;; ++pass) {
+    classify();
+    // Rank: every live edge's best collapse within the error limit.
+    // Only edges at a vertex that survived a collapse in the last pass need a new ranking: no
+    // other vertex's quadric, position or class has changed.
+    keys_.clear();
+    const std::size_t slots = m_.edge_slots();
+    for (std::size_t i = 0; i < slots; ++i) {
+      const Edge e(static_cast<Index>(i));
+      if (m_.is_deleted(e)) continue;
+      std::uint64_t& key = edge_key_[i];
+      const Halfedge h0 = Mesh::halfedge(e, 0);
+      if (pass == 1 || stamp_[m_.to_vertex(h0).idx()] == pass - 1 || stamp_[m_.from_vertex(h0).idx()] == pass - 1) {
+        Halfedge h;
+        Vec3d p;
+        double cost;
+        key = kNoKey;
+        if (best_collapse(e, h, p, cost) && cost <= max_cost_)
+          key = std::uint64_t(std::bit_cast<std::uint32_t>(static_cast<float>(cost))) << 32 | h.idx();
+      }
+      if (key != kNoKey) keys_.push_back(key);
+    }
+    sort_candidates();
+    // Collapse: cheapest first, half of what is still needed, each vertex once.
+    const std::size_t budget = endless ? keys_.size() : std::max<std::size_t>(1, (needed() + 1) / 2);
+    std::size_t done_now = 0;
+    for (const std::uint64_t key : keys_) {
+      const Halfedge h(static_cast<Index>(key & 0xffffffffu));
+      if (m_.is_deleted(h)) continue;
+      const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
+      if (stamp_[a.idx()] == pass || stamp_[b.idx()] == pass) continue;
+      Vec3d p;
+      double cost;
+      placement(h, p, cost);
+      if (!(cost <= max_cost_) || !keeps_normals(h, p)) continue;
+      if (uv_) gather_ring(h);
+      if (!collapse(m_, h).is_valid()) continue;
+      pos_[b.idx()] = to_float(p);
+      q_[b.idx()].add(q_[a.idx()]);
+      stamp_[b.idx()] = pass;
+      if (uv_) interpolate_corners(b, p);
+      max_cost = std::max(max_cost, cost);
+      ++result.collapses;
+      ++done_now;
+      if (done() || done_now >= budget) break;
+    }
+    if (!endless) report_progress(o_.progress, double(initial - std::min(initial, needed())) / double(initial));
+    if (done() || done_now == 0) break;
+  }
+  if (result.collapses > 0) {
+    m_.garbage_collection();
+  }
+  result.vertices = m_.n_vertices(), result.faces = m_.n_faces();
+  result.max_error = std::sqrt(max_cost);
+  report_progress(o_.progress, 1);
+  return result;
+}
+
+}  // namespace
+
+DecimateResult decimate(SurfaceMesh& mesh, const DecimateOptions& options) {
+  check(mesh, options);
+  Decimator d(mesh, options);
+  return d.run();
+}
+
+}  // namespace hedge

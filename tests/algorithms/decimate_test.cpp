@@ -1,0 +1,350 @@
+#include "hedge/algorithms/decimate.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "hedge/algorithms/locate.h"
+#include "hedge/core/build.h"
+#include "hedge/error.h"
+#include "hedge/io/io.h"
+#include "test_meshes.h"
+
+namespace hedge {
+namespace {
+
+Vec3d face_normal_d(const SurfaceMesh& m, Face f) {
+  const Halfedge h = m.halfedge(f);
+  const Vec3d a = to_double(m.position(m.from_vertex(h))), b = to_double(m.position(m.to_vertex(h))),
+              c = to_double(m.position(m.to_vertex(m.next(h))));
+  return cross(b - a, c - a);
+}
+
+// Faces of `out` whose normal points away from that of the input face nearest to their centroid.
+std::size_t flipped_faces(const SurfaceMesh& input, const SurfaceMesh& out) {
+  const FaceBvh bvh(input);
+  std::size_t flipped = 0;
+  for (Face f : out.faces()) {
+    Vec3d c{0, 0, 0};
+    for (Vertex v : out.vertices(f)) c += to_double(out.position(v));
+    const auto hit = bvh.closest_point(to_float(c * (1.0 / 3)));
+    if (!hit || dot(face_normal_d(out, f), face_normal_d(input, hit->face)) <= 0) ++flipped;
+  }
+  return flipped;
+}
+
+bool within_ten_percent(std::size_t achieved, std::size_t target) {
+  return double(achieved) <= 1.1 * double(target) && double(achieved) >= 0.9 * double(target);
+}
+
+// Positions and connectivity, compared array by array.
+void expect_same(const SurfaceMesh& a, const SurfaceMesh& b) {
+  ASSERT_EQ(a.vertex_slots(), b.vertex_slots());
+  ASSERT_EQ(a.face_slots(), b.face_slots());
+  EXPECT_EQ(a.positions().vector(), b.positions().vector());
+  EXPECT_EQ(a.halfedge_vertex_array(), b.halfedge_vertex_array());
+  EXPECT_EQ(a.halfedge_next_array(), b.halfedge_next_array());
+  EXPECT_EQ(a.halfedge_face_array(), b.halfedge_face_array());
+}
+
+TEST(Decimate, ReachesAVertexTargetWithoutFlippingFaces) {
+  const SurfaceMesh input = read_mesh(test::data_path("spot_triangulated.obj"));
+  SurfaceMesh m = input;
+  const std::size_t target = input.n_vertices() / 10;
+  const DecimateResult r = decimate(m, {.target_vertices = target});
+  EXPECT_TRUE(within_ten_percent(r.vertices, target)) << r.vertices;
+  EXPECT_EQ(r.vertices, m.n_vertices());
+  EXPECT_EQ(r.faces, m.n_faces());
+  EXPECT_EQ(r.collapses, input.n_vertices() - m.n_vertices());
+  EXPECT_GT(r.max_error, 0);
+  EXPECT_FALSE(m.has_garbage());
+  EXPECT_EQ(flipped_faces(input, m), 0u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Decimate, ReachesAFaceTargetOnAGenusOneMesh) {
+  const SurfaceMesh input = read_mesh(test::data_path("bob_small.ply"));
+  SurfaceMesh m = input;
+  const DecimateResult r = decimate(m, {.target_faces = 200});
+  EXPECT_TRUE(within_ten_percent(r.faces, 200)) << r.faces;
+  EXPECT_LE(r.faces, 200u);
+  // A closed mesh keeps its Euler characteristic (genus 1: V - E + F = 0).
+  EXPECT_EQ(long(m.n_vertices()) - long(m.n_edges()) + long(m.n_faces()), 0);
+  EXPECT_EQ(flipped_faces(input, m), 0u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Decimate, KeepsEveryBoundaryLoop) {
+  for (const char* name : {"three_peaks.off", "elephant-with-holes.off"}) {
+    const SurfaceMesh input = read_mesh(test::data_path(name));
+    SurfaceMesh m = input;
+    const std::size_t target = input.n_vertices() / 5;
+    const DecimateResult r = decimate(m, {.target_vertices = target});
+    EXPECT_TRUE(within_ten_percent(r.vertices, target)) << name << ": " << r.vertices;
+    EXPECT_EQ(m.boundary_loops().size(), input.boundary_loops().size()) << name;
+    for (Halfedge h : m.boundary_loops()) EXPECT_GE(m.loop(h).count(), 3u) << name;
+    EXPECT_EQ(flipped_faces(input, m), 0u) << name;
+    EXPECT_TRUE(m.validate().empty()) << name;
+  }
+}
+
+TEST(Decimate, KeepBoundaryPinsTheOutline) {
+  const SurfaceMesh input = read_mesh(test::data_path("three_peaks.off"));
+  std::set<std::array<float, 3>> outline;
+  std::size_t boundary_vertices = 0;
+  for (Vertex v : input.vertices())
+    if (input.is_boundary(v)) {
+      outline.insert({input.position(v).x, input.position(v).y, input.position(v).z});
+      ++boundary_vertices;
+    }
+  SurfaceMesh m = input;
+  decimate(m, {.target_vertices = input.n_vertices() / 5, .keep_boundary = true});
+  std::size_t kept = 0;
+  for (Vertex v : m.vertices())
+    if (m.is_boundary(v)) {
+      EXPECT_TRUE(outline.count({m.position(v).x, m.position(v).y, m.position(v).z}));
+      ++kept;
+    }
+  EXPECT_EQ(kept, boundary_vertices);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+// A flat grid has no curvature to guide placement: every collapse costs nothing, the quadric's
+// minimiser is undefined, and the fallback must still keep every face facing up.
+TEST(Decimate, AFlatRegionDoesNotFold) {
+  IndexedMesh in = test::grid(24, true);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(-0.3f, 0.3f);
+  for (Vec3& p : in.positions)
+    if (p.x > 0 && p.y > 0 && p.x < 24 && p.y < 24) p.x += u(rng), p.y += u(rng);
+  SurfaceMesh m = build(in);
+  const DecimateResult r = decimate(m, {.target_vertices = 40});
+  EXPECT_TRUE(within_ten_percent(r.vertices, 40)) << r.vertices;
+  EXPECT_LT(r.max_error, 1e-5);
+  double area = 0;
+  for (Face f : m.faces()) {
+    const Vec3d n = face_normal_d(m, f);
+    EXPECT_GT(n.z, 0) << "face " << f.idx();
+    area += n.z / 2;
+  }
+  for (Vertex v : m.vertices()) EXPECT_EQ(m.position(v).z, 0.f);
+  EXPECT_NEAR(area, 24.0 * 24.0, 1e-3);  // the outline stays, so the area does
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Decimate, StopsBeforeTheErrorLimit) {
+  const SurfaceMesh input = read_mesh(test::data_path("spot_triangulated.obj"));
+  SurfaceMesh loose = input, tight = input;
+  const DecimateResult a = decimate(loose, {.max_error = 1e-2});
+  const DecimateResult b = decimate(tight, {.max_error = 1e-3});
+  EXPECT_LE(a.max_error, 1e-2);
+  EXPECT_LE(b.max_error, 1e-3);
+  EXPECT_GT(b.collapses, 0u);
+  EXPECT_GT(a.collapses, b.collapses);
+  EXPECT_TRUE(loose.validate().empty());
+  EXPECT_TRUE(tight.validate().empty());
+  // With no target and no limit it removes what it can.
+  SurfaceMesh all = input;
+  const DecimateResult c = decimate(all, {});
+  EXPECT_LT(c.vertices, 100u);
+  EXPECT_TRUE(all.validate().empty());
+}
+
+// A flat grid with two texture charts: the left half maps to u in [0, 0.5], the right half to
+// u + 10, so the corners on the column x = n / 2 differ across it (a seam).
+SurfaceMesh seamed_grid(int n) {
+  IndexedMesh in = test::grid(n, true);
+  const float half = float(n) / 2;
+  for (std::size_t c = 0; c < in.indices.size(); ++c) {
+    const Index f = Index(c / 3);
+    float cx = 0;  // the face's centroid decides its chart
+    for (int k = 0; k < 3; ++k) cx += in.positions[in.indices[3 * f + k]].x / 3;
+    const Vec3 p = in.positions[in.indices[c]];
+    in.texcoords.push_back({p.x / float(n) + (cx > half ? 10.f : 0.f), p.y / float(n)});
+    in.texcoord_indices.push_back(Index(c));
+  }
+  return build(in);
+}
+
+TEST(Decimate, KeepsSeamsAndInterpolatesTexcoords) {
+  const int n = 16;
+  SurfaceMesh m = seamed_grid(n);
+  const DecimateResult r = decimate(m, {.target_vertices = 60});
+  EXPECT_TRUE(within_ten_percent(r.vertices, 60)) << r.vertices;
+  const auto uv = m.get_halfedge_property<Vec2>("h:texcoord");
+  ASSERT_TRUE(uv);
+  std::size_t seam_vertices = 0;
+  for (Face f : m.faces()) {
+    int right = 0;
+    for (Halfedge h : m.halfedges(f)) {
+      const Vec3 p = m.position(m.to_vertex(h));
+      const bool on_right = uv[h].x >= 5;
+      right += on_right;
+      // Each corner's value is its chart's linear map at the vertex: interpolated, not copied.
+      EXPECT_NEAR(uv[h].x, p.x / n + (on_right ? 10 : 0), 1e-4);
+      EXPECT_NEAR(uv[h].y, p.y / n, 1e-4);
+    }
+    EXPECT_TRUE(right == 0 || right == 3) << "face " << f.idx() << " spans the seam";
+  }
+  for (Vertex v : m.vertices()) {
+    std::set<float> us;
+    for (Halfedge h : m.halfedges(v))
+      if (!m.is_boundary(SurfaceMesh::twin(h))) us.insert(uv[SurfaceMesh::twin(h)].x >= 5 ? 1.f : 0.f);
+    if (us.size() > 1) {
+      ++seam_vertices;
+      EXPECT_EQ(m.position(v).x, float(n) / 2);  // the seam stays on its line
+    }
+  }
+  EXPECT_GE(seam_vertices, 2u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+// A flat grid cut in two by a crease line at y = n / 2 ("e:crease"): collapses may run along it,
+// not across, so it stays a straight chain of edges from one side to the other.
+TEST(Decimate, KeepsMarkedCreases) {
+  const int n = 16;
+  SurfaceMesh m = build(test::grid(n, true));
+  auto crease = m.add_edge_property<std::uint8_t>("e:crease");
+  for (Edge e : m.edges()) {
+    const Vec3 a = m.position(m.vertex(e, 0)), b = m.position(m.vertex(e, 1));
+    crease[e] = a.y == n / 2 && b.y == n / 2;
+  }
+  decimate(m, {.target_vertices = 50, .feature_weight = 10});
+  double length = 0;
+  for (Edge e : m.edges()) {
+    const Vec3 a = m.position(m.vertex(e, 0)), b = m.position(m.vertex(e, 1));
+    if (a.y == n / 2 && b.y == n / 2) length += std::abs(double(a.x) - b.x);
+  }
+  EXPECT_DOUBLE_EQ(length, n);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Decimate, AttributesInTheQuadricKeepTheTextureMapCloser) {
+  // A flat grid whose texture coordinates bend (u = x^2): collapses that slide vertices along x
+  // distort the map, and the attribute term makes them cost.
+  const int n = 16;
+  IndexedMesh in = test::grid(n, true);
+  for (const Vec3& p : in.positions) in.texcoords.push_back({p.x * p.x / float(n * n), p.y / float(n)});
+  in.texcoord_indices = in.indices;
+  auto map_error = [&](double weight) {
+    SurfaceMesh m = build(in);
+    decimate(m, {.target_vertices = 80, .attribute_weight = weight});
+    EXPECT_TRUE(m.validate().empty());
+    // Texture error at face centroids: the interpolated u against the true map.
+    const auto uv = m.get_halfedge_property<Vec2>("h:texcoord");
+    double sum = 0;
+    for (Face f : m.faces()) {
+      double x = 0, u = 0;
+      for (Halfedge h : m.halfedges(f)) x += m.position(m.to_vertex(h)).x / 3.0, u += uv[h].x / 3.0;
+      sum += std::abs(u - x * x / (n * n));
+    }
+    return sum / double(m.n_faces());
+  };
+  EXPECT_LT(map_error(10), 0.7 * map_error(0));
+}
+
+TEST(Decimate, AnEmptyMeshAndAMetTargetChangeNothing) {
+  SurfaceMesh empty;
+  const DecimateResult r = decimate(empty, {.target_vertices = 10});
+  EXPECT_EQ(r.vertices, 0u);
+  EXPECT_EQ(r.collapses, 0u);
+  EXPECT_TRUE(empty.validate().empty());
+
+  const SurfaceMesh input = read_mesh(test::data_path("bob_small.ply"));
+  SurfaceMesh m = input;
+  const DecimateResult s = decimate(m, {.target_vertices = input.n_vertices() + 5});
+  EXPECT_EQ(s.collapses, 0u);
+  EXPECT_EQ(s.vertices, input.n_vertices());
+  expect_same(m, input);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Decimate, RefusesPolygonsNaNsAndBadOptionsAndChangesNothing) {
+  SurfaceMesh quads = build(test::grid(4, false));
+  const SurfaceMesh quads_before = quads;
+  try {
+    decimate(quads, {.target_vertices = 5});
+    ADD_FAILURE() << "no error for a quad mesh";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("face 0"), std::string::npos) << e.what();
+  }
+  expect_same(quads, quads_before);
+
+  SurfaceMesh nan = build(test::grid(4, true));
+  nan.position(Vertex(7)).y = std::numeric_limits<float>::quiet_NaN();
+  try {
+    decimate(nan, {.target_vertices = 5});
+    ADD_FAILURE() << "no error for a NaN position";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex 7"), std::string::npos) << e.what();
+  }
+
+  SurfaceMesh m = build(test::grid(4, true));
+  const SurfaceMesh before = m;
+  const DecimateOptions bad[] = {
+      {.target_vertices = 5, .max_error = -1},
+      {.target_vertices = 5, .max_error = std::numeric_limits<double>::quiet_NaN()},
+      {.target_vertices = 5, .boundary_weight = -1},
+      {.target_vertices = 5, .feature_weight = std::numeric_limits<double>::infinity()},
+      {.target_vertices = 5, .attribute_weight = -0.5},
+      {.target_vertices = 5, .max_normal_change_degrees = 0},
+      {.target_vertices = 5, .max_normal_change_degrees = 200},
+  };
+  for (const DecimateOptions& o : bad) EXPECT_THROW(decimate(m, o), InvalidInputError);
+  expect_same(m, before);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+// Two triangles that share only vertex 0, linked (by the low-level calls) into one figure-eight
+// boundary loop: a non-manifold vertex, which no builder makes but an edit of a foreign mesh can.
+TEST(Decimate, RefusesANonManifoldVertex) {
+  SurfaceMesh m;
+  for (int i = 0; i < 5; ++i) m.add_vertex({float(i % 3), float(i / 3), float(i)});
+  const Vertex v[5] = {Vertex(0), Vertex(1), Vertex(2), Vertex(3), Vertex(4)};
+  const Halfedge a01 = m.new_edge(v[0], v[1]), a12 = m.new_edge(v[1], v[2]), a20 = m.new_edge(v[2], v[0]);
+  const Halfedge b03 = m.new_edge(v[0], v[3]), b34 = m.new_edge(v[3], v[4]), b40 = m.new_edge(v[4], v[0]);
+  const Face fa = m.new_face(), fb = m.new_face();
+  auto link = [&](Face f, Halfedge x, Halfedge y, Halfedge z) {
+    m.set_next(x, y), m.set_next(y, z), m.set_next(z, x);
+    for (Halfedge h : {x, y, z}) m.set_face(h, f);
+    m.set_halfedge(f, x);
+  };
+  link(fa, a01, a12, a20);
+  link(fb, b03, b34, b40);
+  using M = SurfaceMesh;
+  const Halfedge loop[6] = {M::twin(a20), M::twin(a12), M::twin(a01), M::twin(b40), M::twin(b34), M::twin(b03)};
+  for (int i = 0; i < 6; ++i) m.set_next(loop[i], loop[(i + 1) % 6]);
+  m.set_halfedge(v[0], M::twin(b40));
+  m.set_halfedge(v[1], M::twin(a01));
+  m.set_halfedge(v[2], M::twin(a12));
+  m.set_halfedge(v[3], M::twin(b03));
+  m.set_halfedge(v[4], M::twin(b34));
+  ASSERT_FALSE(m.is_manifold(v[0]));
+  const SurfaceMesh before = m;
+  try {
+    decimate(m, {.target_vertices = 3});
+    ADD_FAILURE() << "no error for a non-manifold vertex";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex 0"), std::string::npos) << e.what();
+  }
+  expect_same(m, before);
+}
+
+TEST(Decimate, ReportsProgressUpToOne) {
+  SurfaceMesh m = read_mesh(test::data_path("spot_triangulated.obj"));
+  std::vector<double> seen;
+  decimate(m, {.target_vertices = 500, .progress = [&](double f) { seen.push_back(f); }});
+  ASSERT_GE(seen.size(), 2u);
+  EXPECT_EQ(seen.front(), 0.0);
+  EXPECT_EQ(seen.back(), 1.0);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_TRUE(m.validate().empty());
+}
+
+}  // namespace
+}  // namespace hedge
