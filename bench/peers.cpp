@@ -445,9 +445,7 @@ void print_table(const MeshResult& m, const std::vector<Backend>& backends) {
       std::printf(" %16s  %-14s %s\n", ratio.c_str(), bar, pass_text(r.quality_pass).c_str());
       quality_row("  mean distance to input", [](const bench::Quality& q) { return fmt("%.4g", q.mean); });
       std::printf("\n");
-      quality_row("  vertices / faces after", [](const bench::Quality& q) {
-        return std::to_string(q.vertices) + "/" + std::to_string(q.faces);
-      });
+      quality_row("  faces after", [](const bench::Quality& q) { return std::to_string(q.faces); });
       std::printf("\n");
     }
   }
