@@ -487,6 +487,49 @@ HEDGE_API hedge_status hedge_mesh_smooth(hedge_mesh* mesh, const hedge_smooth_op
                                          uint32_t mask_count);
 
 /* ============================================================================================ */
+/* Decimation (hedge/algorithms/decimate.h)                                                     */
+/* ============================================================================================ */
+
+/** Layout (72 bytes): target_vertices @0, target_faces @8 (uint64_t), max_error @16,
+ *  boundary_weight @24, feature_angle_degrees @32, feature_weight @40, attribute_weight @48,
+ *  max_normal_change_degrees @56 (double), keep_boundary @64, keep_seams @68 (int32_t). */
+typedef struct hedge_decimate_options {
+  uint64_t target_vertices;         /**< stop at this many vertices (0: no vertex target) */
+  uint64_t target_faces;            /**< stop at this many faces (0: no face target) */
+  double max_error;                 /**< stop before a collapse that moves the surface farther (model units); INFINITY: none */
+  double boundary_weight;           /**< weight of the planes that keep open boundaries in place (0: none) */
+  double feature_angle_degrees;     /**< edges with a larger dihedral angle (or "e:crease") are features; 180: crease edges only */
+  double feature_weight;            /**< weight of the planes that keep feature edges (0: none) */
+  double attribute_weight;          /**< > 0: texture distortion ("h:texcoord") enters the error */
+  double max_normal_change_degrees; /**< refuse collapses that turn a face more than this, in (0, 180] */
+  int32_t keep_boundary;            /**< 1: boundary vertices never move and are never removed */
+  int32_t keep_seams;               /**< 1: UV seams are not collapsed across or broken */
+} hedge_decimate_options;
+
+/** Layout (32 bytes): vertices @0, faces @8, collapses @16 (uint64_t), max_error @24 (double). */
+typedef struct hedge_decimate_result {
+  uint64_t vertices;  /**< live vertices left */
+  uint64_t faces;     /**< live faces left */
+  uint64_t collapses; /**< edge collapses done */
+  double max_error;   /**< the largest error (a distance) of a collapse done, 0 if none */
+} hedge_decimate_result;
+
+/** Fills *out_options with the defaults: no target, no error limit (INFINITY), boundary weight 1,
+ *  feature angle 60 and weight 1, no attribute weight, normal change 60 degrees, boundary free,
+ *  seams kept. */
+HEDGE_API hedge_status hedge_decimate_options_default(hedge_decimate_options* out_options);
+/** Decimates a triangle mesh by quadric-ranked edge collapses until both targets that are nonzero
+ *  are met, the next collapse's error would exceed max_error, or no legal collapse is left (see
+ *  hedge/algorithms/decimate.h). Garbage is collected at the end, so every index may change, as after
+ *  hedge_mesh_garbage_collection(); render objects of the mesh rebuild at their next sync.
+ *  \param options NULL for the defaults (which have no target: as much as the error limit allows).
+ *  \param out_result optional (NULL).
+ *  A face that is not a triangle, a position that is not finite, a non-manifold vertex, or options
+ *  out of range: HEDGE_ERROR_INVALID_ARGUMENT, and the mesh is unchanged. */
+HEDGE_API hedge_status hedge_mesh_decimate(hedge_mesh* mesh, const hedge_decimate_options* options,
+                                           hedge_decimate_result* out_result);
+
+/* ============================================================================================ */
 /* Subdivision (hedge/algorithms/subdivide.h)                                                   */
 /* ============================================================================================ */
 

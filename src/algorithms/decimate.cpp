@@ -1,8 +1,8 @@
 // Quadric-error decimation, as named steps: check the input; gather each vertex's quadric; then
 // passes of rank (every live edge gets its best collapse and cost), sort (a radix sort on the
 // costs' bits) and collapse (cheapest first, each vertex at most once per pass); finally collect
-// the garbage. A pass does half of the collapses still needed, so about log2(n) passes run, each
-// over the edges left. A vertex that survived a collapse is locked until the next pass, because the
+// the garbage. A pass does half of the collapses still needed (at least 1/32 of all), so about
+// six passes run, each over the edges left. A vertex that survived a collapse is locked until the next pass, because the
 // costs of its edges are stale; the costs of all other edges are still exact, since a collapse
 // changes no other vertex's quadric. No allocation happens per collapse.
 #include "hedge/algorithms/decimate.h"
@@ -71,9 +71,18 @@ Quadric sum(const Quadric& a, const Quadric& b) {
 }
 
 // Squared distance-like error of q at p: the weighted mean of the squared plane distances.
-double error_at(const Quadric& q, const Vec3d& p) {
+inline double error_at(const Quadric& q, const Vec3d& p) {
   const double e = q.eval(p);
   return q.w > 0 ? std::max(0.0, e) / q.w : std::max(0.0, e);
+}
+
+template <typename T>
+inline void prefetch(const T* p) {
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
 }
 
 std::string vertex_name(Vertex v) { return "vertex " + std::to_string(v.idx()); }
@@ -164,6 +173,8 @@ class Decimator {
   double min_cos_ = 0, max_cost_ = 0, tiny_area2_ = 0;
 
   std::vector<Quadric> q_;
+  // Each face's unit normal in the input: small steps must not add up to a face turned over.
+  std::vector<Vec3> input_normal_;
   std::vector<std::uint32_t> stamp_;   // pass in which the vertex survived a collapse
   std::vector<std::uint8_t> seam_count_;  // seam edges at the vertex, saturated at 3
   // Candidates: (cost bits << 32) | half-edge, per edge (kept between passes) and of this pass.
@@ -183,9 +194,9 @@ class Decimator {
 
 void Decimator::gather_quadrics() {
   q_.assign(m_.vertex_slots(), Quadric{});
+  input_normal_.assign(m_.face_slots(), Vec3{0, 0, 0});
   const double feature_cos = o_.feature_angle_degrees >= 180 ? -2.0 : std::cos(o_.feature_angle_degrees * kPi / 180);
   const double wa2 = o_.attribute_weight * o_.attribute_weight;
-  std::vector<Vec3d> normal(m_.face_slots());
   double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   for (Vertex v : m_.vertices()) {
     const Vec3d p = pos(v);
@@ -205,10 +216,10 @@ void Decimator::gather_quadrics() {
     const Vec3d x0 = pos(v[0]), x1 = pos(v[1]), x2 = pos(v[2]);
     const Vec3d n = cross(x1 - x0, x2 - x0);
     const double len = norm(n);
-    normal[f.idx()] = len > 0 ? n / len : Vec3d{0, 0, 0};
     if (!(len > 0)) continue;
     const double area = len / 2;
     const Vec3d u = n / len;
+    input_normal_[f.idx()] = to_float(u);
     Quadric face;
     face.add_plane(u, -dot(u, x0), area);
     face.w = area;
@@ -228,15 +239,26 @@ void Decimator::gather_quadrics() {
     }
   }
   // Planes through boundary and feature edges, perpendicular to their faces, keep those edges
-  // where they are; scaled by the squared length, like a face's area.
+  // where they are; scaled by the squared length, like a face's area. The faces' unit normals are
+  // recomputed here rather than stored: two cross products cost less than an array per face.
+  const bool features = o_.feature_weight > 0 && (feature_cos > -2.0 || crease_);
+  if (!(o_.boundary_weight > 0) && !features) return;
   for (Edge e : m_.edges()) {
-    const Halfedge h = Mesh::halfedge(e, 0);
+    const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
+    const bool boundary = m_.is_boundary(h) || m_.is_boundary(t);
+    if (boundary ? !(o_.boundary_weight > 0) : !features) continue;
     const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
     const Vec3d xa = pos(a), xb = pos(b), dir = xb - xa;
     const double len2 = dot(dir, dir);
-    auto constrain = [&](Face f, double weight) {
-      if (!f.is_valid() || !(weight > 0)) return;
-      const Vec3d n = cross(dir, normal[f.idx()]);
+    // The unit normal of the face on half-edge x (x runs from a to b or back).
+    auto unit_normal = [&](Halfedge x) {
+      const Vec3d tip = pos(m_.to_vertex(m_.next(x)));
+      const Vec3d n = x == h ? cross(dir, tip - xa) : cross(tip - xa, dir);
+      const double l = norm(n);
+      return l > 0 ? n / l : Vec3d{0, 0, 0};
+    };
+    auto constrain = [&](const Vec3d& face_normal, double weight) {
+      const Vec3d n = cross(dir, face_normal);
       const double l = norm(n);
       if (!(l > 0)) return;
       const Vec3d u = n / l;
@@ -246,15 +268,14 @@ void Decimator::gather_quadrics() {
       q_[a.idx()].add(plane);
       q_[b.idx()].add(plane);
     };
-    const Face f0 = m_.face(h), f1 = m_.face(Mesh::twin(h));
-    if (!f0.is_valid() || !f1.is_valid()) {
-      constrain(f0.is_valid() ? f0 : f1, o_.boundary_weight);
+    if (boundary) {
+      constrain(unit_normal(m_.is_boundary(h) ? t : h), o_.boundary_weight);
       continue;
     }
-    const bool feature = (crease_ && crease_[e] != 0) || dot(normal[f0.idx()], normal[f1.idx()]) < feature_cos;
-    if (feature) {
-      constrain(f0, o_.feature_weight);
-      constrain(f1, o_.feature_weight);
+    const Vec3d n0 = unit_normal(h), n1 = unit_normal(t);
+    if ((crease_ && crease_[e] != 0) || dot(n0, n1) < feature_cos) {
+      constrain(n0, o_.feature_weight);
+      constrain(n1, o_.feature_weight);
     }
   }
 }
@@ -363,6 +384,7 @@ bool Decimator::keeps_normals(Halfedge h, const Vec3d& p) const {
         if (!(l1 > tiny_area2_)) return false;
         const double d = dot(n0, n1), l0 = dot(n0, n0);
         if (l0 > 0 && d < min_cos_ * std::sqrt(l0 * l1)) return false;
+        if (dot(n1, to_double(input_normal_[f.idx()])) < 0) return false;
       }
       o = m_.rotate_cw(o);
     } while (o != start);
@@ -508,10 +530,30 @@ DecimateResult Decimator::run() {
     }
     sort_candidates();
     // Collapse: cheapest first, half of what is still needed, each vertex once.
-    const std::size_t budget = endless ? keys_.size() : std::max<std::size_t>(1, (needed() + 1) / 2);
+    // Half of what is still needed, but not less than 1/32 of the whole, so that the tail of
+    // ever smaller passes (each a full re-sort) stops after a few.
+    const std::size_t budget = endless ? keys_.size() : std::max<std::size_t>({1, (needed() + 1) / 2, initial / 32});
     std::size_t done_now = 0;
-    for (const std::uint64_t key : keys_) {
-      const Halfedge h(static_cast<Index>(key & 0xffffffffu));
+    const std::size_t n_keys = keys_.size();
+    const Vertex* to = m_.halfedge_vertex_array().data();
+    for (std::size_t k = 0; k < n_keys; ++k) {
+      // The keys come in cost order, so every candidate's data is cold: fetch the half-edges of the
+      // 16th next candidate, and the vertex data of the 8th next (whose half-edges arrived by now).
+      if (k + 16 < n_keys) {
+        const std::uint32_t h16 = std::uint32_t(keys_[k + 16]);
+        prefetch(to + h16);
+        prefetch(m_.halfedge_next_array().data() + h16);
+      }
+      if (k + 8 < n_keys) {
+        const std::uint32_t h8 = std::uint32_t(keys_[k + 8]);
+        for (const Vertex v : {to[h8], to[h8 ^ 1u]}) {
+          prefetch(pos_ + v.idx());
+          prefetch(q_.data() + v.idx());
+          prefetch(reinterpret_cast<const char*>(q_.data() + v.idx()) + 64);  // a quadric spans two lines
+          prefetch(stamp_.data() + v.idx());
+        }
+      }
+      const Halfedge h(static_cast<Index>(keys_[k] & 0xffffffffu));
       if (m_.is_deleted(h)) continue;
       const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
       if (stamp_[a.idx()] == pass || stamp_[b.idx()] == pass) continue;

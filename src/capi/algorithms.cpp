@@ -1,11 +1,12 @@
-// The C ABI: the algorithms on a whole mesh: geometry, distance, normals, smoothing and subdivision
-// (hedge/algorithms/geometry.h, distance.h, normals.h, smooth.h, subdivide.h).
+// The C ABI: the algorithms on a whole mesh: geometry, distance, normals, smoothing, decimation and
+// subdivision (hedge/algorithms/geometry.h, distance.h, normals.h, smooth.h, decimate.h, subdivide.h).
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 
 #include "capi_internal.h"
+#include "hedge/algorithms/decimate.h"
 #include "hedge/algorithms/distance.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/normals.h"
@@ -189,6 +190,50 @@ hedge_status hedge_mesh_smooth(hedge_mesh* mesh, const hedge_smooth_options* opt
       s.mask = std::span<const std::uint8_t>(mask, mask_count);
     }
     smooth(m, s);  // its InvalidInputError becomes HEDGE_ERROR_INVALID_ARGUMENT, the mesh unchanged
+  });
+}
+
+hedge_status hedge_decimate_options_default(hedge_decimate_options* out_options) {
+  return guard([&] {
+    hedge_decimate_options& o = need(out_options, "out_options");
+    const DecimateOptions d;
+    o.target_vertices = d.target_vertices;
+    o.target_faces = d.target_faces;
+    o.max_error = d.max_error;
+    o.boundary_weight = d.boundary_weight;
+    o.feature_angle_degrees = d.feature_angle_degrees;
+    o.feature_weight = d.feature_weight;
+    o.attribute_weight = d.attribute_weight;
+    o.max_normal_change_degrees = d.max_normal_change_degrees;
+    o.keep_boundary = d.keep_boundary ? 1 : 0;
+    o.keep_seams = d.keep_seams ? 1 : 0;
+  });
+}
+
+hedge_status hedge_mesh_decimate(hedge_mesh* mesh, const hedge_decimate_options* options,
+                                 hedge_decimate_result* out_result) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    hedge_decimate_options o;
+    if (options != nullptr) {
+      o = *options;
+    } else {
+      hedge_decimate_options_default(&o);
+    }
+    DecimateOptions d;
+    d.target_vertices = o.target_vertices;
+    d.target_faces = o.target_faces;
+    d.max_error = o.max_error;
+    d.boundary_weight = o.boundary_weight;
+    d.feature_angle_degrees = o.feature_angle_degrees;
+    d.feature_weight = o.feature_weight;
+    d.attribute_weight = o.attribute_weight;
+    d.max_normal_change_degrees = o.max_normal_change_degrees;
+    d.keep_boundary = need_bool(o.keep_boundary, "keep_boundary");
+    d.keep_seams = need_bool(o.keep_seams, "keep_seams");
+    // Its InvalidInputError becomes HEDGE_ERROR_INVALID_ARGUMENT, the mesh unchanged.
+    const DecimateResult r = decimate(object->mesh, d);
+    if (out_result != nullptr) *out_result = {r.vertices, r.faces, r.collapses, r.max_error};
   });
 }
 

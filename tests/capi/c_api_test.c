@@ -1576,6 +1576,68 @@ static void test_smooth(void) {
   CHECK_OK(hedge_mesh_destroy(grid));
 }
 
+static void test_decimate(void) {
+  hedge_decimate_options o;
+  memset(&o, 0xFF, sizeof o);
+  CHECK(sizeof o == 72 && sizeof(hedge_decimate_result) == 32);
+  CHECK_OK(hedge_decimate_options_default(&o));
+  CHECK(o.target_vertices == 0 && o.target_faces == 0 && isinf(o.max_error) && o.boundary_weight == 1 &&
+        o.max_normal_change_degrees == 60 && o.keep_boundary == 0 && o.keep_seams == 1);
+  /* A 9 x 9 height field z = x^2 / 20, triangulated: 81 vertices, 128 triangles. */
+  float positions[81 * 3];
+  uint32_t triangles[128 * 3], n = 0;
+  for (uint32_t j = 0; j < 9; ++j)
+    for (uint32_t i = 0; i < 9; ++i) {
+      float* p = positions + 3 * (9 * j + i);
+      p[0] = (float)i, p[1] = (float)j, p[2] = (float)(i * i) / 20;
+    }
+  for (uint32_t j = 0; j < 8; ++j)
+    for (uint32_t i = 0; i < 8; ++i) {
+      const uint32_t a = 9 * j + i, b = a + 1, c = a + 10, d = a + 9;
+      const uint32_t quad[6] = {a, b, c, a, c, d};
+      memcpy(triangles + n, quad, sizeof quad);
+      n += 6;
+    }
+  hedge_mesh* field = make_mesh(positions, 81, triangles, n, NULL, 0);
+  o.target_vertices = 20;
+  hedge_decimate_result r;
+  CHECK_OK(hedge_mesh_decimate(field, &o, &r));
+  hedge_counts c = counts_of(field);
+  CHECK(r.vertices == c.vertices && r.faces == c.faces && c.vertices <= 20 && c.vertices >= 18);
+  CHECK(r.collapses == 81 - c.vertices && r.max_error > 0 && r.max_error < 1);
+  CHECK(c.vertex_slots == c.vertices); /* garbage collected */
+  uint32_t problems = 1;
+  CHECK_OK(hedge_mesh_validate(field, &problems));
+  CHECK(problems == 0);
+  /* Bad options and booleans: refused, nothing changes. */
+  o.target_vertices = 10;
+  o.max_normal_change_degrees = 0;
+  CHECK_STATUS(hedge_mesh_decimate(field, &o, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("max_normal_change_degrees");
+  o.max_normal_change_degrees = 60;
+  o.keep_seams = 2;
+  CHECK_STATUS(hedge_mesh_decimate(field, &o, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  o.keep_seams = 1;
+  o.max_error = -1;
+  CHECK_STATUS(hedge_mesh_decimate(field, &o, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK(counts_of(field).vertices == c.vertices);
+  /* The defaults (NULL): no target, no error limit: as far as the collapses are legal. */
+  hedge_mesh* fresh = make_mesh(positions, 81, triangles, n, NULL, 0);
+  CHECK_OK(hedge_mesh_decimate(fresh, NULL, &r));
+  CHECK(r.vertices < 20 && r.vertices >= 3 && r.faces >= 1 && r.vertices == counts_of(fresh).vertices);
+  CHECK_OK(hedge_mesh_validate(fresh, &problems));
+  CHECK(problems == 0);
+  CHECK_OK(hedge_mesh_destroy(fresh));
+  /* Quads are refused, unchanged. */
+  hedge_mesh* grid = make_mesh(kGridPositions, 9, kGridQuads, 16, kGridSizes, 4);
+  CHECK_STATUS(hedge_mesh_decimate(grid, NULL, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("triangles");
+  CHECK(counts_of(grid).faces == 4);
+  CHECK_STATUS(hedge_decimate_options_default(NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_OK(hedge_mesh_destroy(grid));
+  CHECK_OK(hedge_mesh_destroy(field));
+}
+
 static void test_subdivide(void) {
   hedge_mesh* tet = make_mesh(kTetPositions, 4, kTetTriangles, 12, NULL, 0);
   CHECK_OK(hedge_mesh_subdivide(tet, HEDGE_SUBDIVISION_LOOP, 2));
@@ -1639,6 +1701,7 @@ int main(void) {
   test_geometry();
   test_hausdorff();
   test_smooth();
+  test_decimate();
   test_subdivide();
   test_every_function_error_path();
   printf("c_api_test: %d checks passed\n", g_checks);

@@ -301,6 +301,20 @@ namespace Hedge
                                                              faceMap, Status.Capacity(faceMap)));
         }
 
+        /// <summary>Decimates a triangle mesh by quadric-ranked edge collapses until the targets of the options are met, the
+        /// next collapse's error would exceed MaxError, or no legal collapse is left. Garbage is collected at the end, so
+        /// every index may change, as after <see cref="GarbageCollection"/>; render buffers rebuild at their next sync.
+        /// A face that is not a triangle, a position that is not finite or options out of range: HedgeException
+        /// (InvalidArgument), and the mesh is unchanged.</summary>
+        /// <param name="options">Targets and weights; see <see cref="DecimateOptions.Default"/>.</param>
+        public DecimateResult Decimate(DecimateOptions options)
+        {
+            pendingRenders.Drain();
+            DecimateResult result;
+            Status.Check(Native.hedge_mesh_decimate(id, ref options, out result));
+            return result;
+        }
+
         /// <summary>Smooths the positions of the live vertices; render buffers see the moves at their next sync.</summary>
         /// <param name="options">Method, iterations and steps; see <see cref="SmoothOptions.Default"/>.</param>
         /// <param name="mask">Optional (null): one byte per vertex slot; only vertices with a nonzero byte move.</param>

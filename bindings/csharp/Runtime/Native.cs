@@ -54,6 +54,12 @@ namespace Hedge
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_mesh_subdivide(IntPtr mesh, int scheme, int steps);
 
+        // ---- Decimation ----
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_decimate_options_default(out DecimateOptions options);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_decimate(IntPtr mesh, ref DecimateOptions options, out DecimateResult result);
+
         // ---- Smoothing ----
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_smooth_options_default(out SmoothOptions options);

@@ -196,6 +196,62 @@ namespace Hedge
         }
     }
 
+    /// <summary>Options of <see cref="HalfEdgeMesh.Decimate"/> (72 bytes, hedge_decimate_options). Start from
+    /// <see cref="Default"/> and set a target.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct DecimateOptions
+    {
+        /// <summary>Stop at this many vertices (0: no vertex target).</summary>
+        public ulong TargetVertices;
+        /// <summary>Stop at this many faces (0: no face target).</summary>
+        public ulong TargetFaces;
+        /// <summary>Stop before a collapse that moves the surface farther than this (model units); infinity: no limit.</summary>
+        public double MaxError;
+        /// <summary>Weight of the planes that keep open boundaries in place (0: none).</summary>
+        public double BoundaryWeight;
+        /// <summary>Edges whose faces meet at a larger dihedral angle (degrees) are kept like boundaries.</summary>
+        public double FeatureAngleDegrees;
+        /// <summary>Weight of the planes that keep feature edges (0: none).</summary>
+        public double FeatureWeight;
+        /// <summary>Greater than 0: texture distortion enters the error with this weight.</summary>
+        public double AttributeWeight;
+        /// <summary>Refuse collapses that turn a face by more than this, in (0, 180].</summary>
+        public double MaxNormalChangeDegrees;
+        int keepBoundary;
+        int keepSeams;
+
+        /// <summary>Boundary vertices never move and are never removed.</summary>
+        public bool KeepBoundary { get { return keepBoundary != 0; } set { keepBoundary = value ? 1 : 0; } }
+        /// <summary>UV seams are not collapsed across or broken.</summary>
+        public bool KeepSeams { get { return keepSeams != 0; } set { keepSeams = value ? 1 : 0; } }
+
+        /// <summary>No target, no error limit, boundary weight 1, feature angle 60 and weight 1, normal change 60
+        /// degrees, boundary free, seams kept.</summary>
+        public static DecimateOptions Default
+        {
+            get
+            {
+                DecimateOptions o;
+                Status.Check(Native.hedge_decimate_options_default(out o));
+                return o;
+            }
+        }
+    }
+
+    /// <summary>What <see cref="HalfEdgeMesh.Decimate"/> achieved (32 bytes, hedge_decimate_result).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct DecimateResult
+    {
+        /// <summary>Live vertices left.</summary>
+        public ulong Vertices;
+        /// <summary>Live faces left.</summary>
+        public ulong Faces;
+        /// <summary>Edge collapses done.</summary>
+        public ulong Collapses;
+        /// <summary>The largest error (a distance) of a collapse done, 0 if none.</summary>
+        public double MaxError;
+    }
+
     /// <summary>Measures of a whole mesh (48 bytes, hedge_geometry).</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct MeshGeometry

@@ -78,6 +78,7 @@ namespace Hedge.Tests
             r.Add("MeshTests.SmoothingPullsALiftedVertexDown", SmoothingPullsALiftedVertexDown);
             r.Add("MeshTests.SubdivisionRefinesAndRenderBuffersFollow", SubdivisionRefinesAndRenderBuffersFollow);
             r.Add("MeshTests.HausdorffDistanceOfARaisedCopy", HausdorffDistanceOfARaisedCopy);
+            r.Add("MeshTests.DecimationReachesItsTarget", DecimationReachesItsTarget);
         }
 
         // A unit cube of 12 triangles: area, volume, box, face normals, vertex normals along the diagonals,
@@ -180,6 +181,43 @@ namespace Hedge.Tests
             }
         }
 
+        // A loop-subdivided tetrahedron (130 vertices) decimated to 20: the counts come back, the mesh stays valid and
+        // closed, the render buffers follow the renumbering; quads and bad options are refused.
+        static void DecimationReachesItsTarget()
+        {
+            float[] positions = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+            uint[] triangles = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 };
+            using (var mesh = HalfEdgeMesh.FromTriangles(positions, triangles))
+            using (RenderBuffers buffers = mesh.CreateRenderBuffers())
+            {
+                mesh.Subdivide(Subdivision.Loop, 3);
+                DecimateOptions o = DecimateOptions.Default;
+                Check.True(o.KeepSeams && !o.KeepBoundary && double.IsInfinity(o.MaxError), "defaults");
+                o.TargetVertices = 20;
+                DecimateResult r = mesh.Decimate(o);
+                Check.Equal(20ul, r.Vertices);
+                Check.Equal((ulong)mesh.FaceCount, r.Faces);
+                Check.Equal(36ul, r.Faces, "a closed genus-0 mesh: F = 2V - 4");
+                Check.True(r.Collapses == 110 && r.MaxError > 0, "collapses " + r.Collapses + ", error " + r.MaxError);
+                Check.True(mesh.Geometry.Closed, "still closed");
+                buffers.Sync();
+                Check.Equal(36u, buffers.Counts.Triangles, "the buffers follow");
+                o.MaxNormalChangeDegrees = 0;
+                Check.Throws(HedgeStatus.InvalidArgument, () => mesh.Decimate(o));
+                Check.Equal(36, mesh.FaceCount);
+                Check.Valid(mesh, "after decimating");
+            }
+            float[] grid = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };
+            BuildReport report;
+            using (var quad = HalfEdgeMesh.FromPolygons(grid, new uint[] { 0, 1, 2, 3 }, new uint[] { 4 }, BuildOptions.Default, out report))
+            {
+                DecimateOptions o = DecimateOptions.Default;
+                o.TargetFaces = 1;
+                Check.Throws(HedgeStatus.InvalidArgument, () => quad.Decimate(o));
+                Check.Equal(1, quad.FaceCount);
+            }
+        }
+
         // A 2 x 2 grid of quads with its middle vertex lifted: every method but cotangent (quads) pulls it down,
         // the boundary stays, and a mask keeps it where it is.
         static void SmoothingPullsALiftedVertexDown()
@@ -252,6 +290,9 @@ namespace Hedge.Tests
             Check.Equal(48, Marshal.SizeOf(typeof(MeshGeometry)), "hedge_geometry");
             Check.Equal(32, Marshal.SizeOf(typeof(SmoothOptions)), "hedge_smooth_options");
             Check.Equal(16, (int)Marshal.OffsetOf(typeof(SmoothOptions), "Mu"));
+            Check.Equal(72, Marshal.SizeOf(typeof(DecimateOptions)), "hedge_decimate_options");
+            Check.Equal(56, (int)Marshal.OffsetOf(typeof(DecimateOptions), "MaxNormalChangeDegrees"));
+            Check.Equal(32, Marshal.SizeOf(typeof(DecimateResult)), "hedge_decimate_result");
             Check.Equal(24, (int)Marshal.OffsetOf(typeof(MeshGeometry), "BoxMin"));
             Check.Equal(24, Marshal.SizeOf(typeof(RenderOptions)), "hedge_render_options");
             Check.Equal(16, (int)Marshal.OffsetOf(typeof(RenderOptions), "Winding"));

@@ -15,8 +15,9 @@
 //    feature_angle_degrees) add the same planes for both faces, weighted by feature_weight.
 //  - A collapse is done only if can_collapse() allows it (the link condition: no boundary loop
 //    shrinks below 3 vertices, no two boundaries are joined), no face around either end would turn
-//    by more than max_normal_change_degrees or lose its area, and, with keep_seams, it does not
-//    break a UV seam.
+//    by more than max_normal_change_degrees, turn more than 90 degrees away from its own normal in
+//    the input (so that small turns cannot add up to a flip), or lose its area, and, with
+//    keep_seams, it does not break a UV seam.
 //  - Corner texture coordinates ("h:texcoord", Vec2) follow: each corner at the surviving vertex
 //    gets the value interpolated at the new position, barycentric in the triangle of its own side
 //    of a seam that the point projects into. A seam edge (the corners on its two sides differ) is
@@ -25,6 +26,7 @@
 //    UVs enter the quadric (the plane quadric is extended with the UV gradient), so collapses that
 //    stretch the texture cost more.
 //
+// Isolated vertices (no face) count toward the vertex target but are never removed.
 // Other vertex properties keep the survivor's value; face and edge properties of surviving elements
 // are kept. Deleted elements are garbage-collected at the end, so the result is compact (indices
 // change; the change log records a reset).
@@ -63,7 +65,7 @@ struct DecimateOptions {
   //! Refuse collapses that turn a face around either end by more than this (prevents flips).
   double max_normal_change_degrees = 60.0;
   //! Called with the fraction of the work done.
-  Progress progress;
+  Progress progress{};
 };
 
 struct DecimateResult {

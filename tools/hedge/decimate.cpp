@@ -1,0 +1,119 @@
+// hedge decimate IN OUT: read, decimate by quadric-ranked edge collapses, write; formats by extension.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include "commands.h"
+#include "hedge/algorithms/decimate.h"
+#include "hedge/error.h"
+#include "load.h"
+
+namespace hedge::cli {
+
+namespace {
+
+struct DecimateCommandOptions {
+  std::string input, output;
+  double ratio = 0;  // 0: not given
+  std::size_t faces = 0, vertices = 0;
+  double max_error = std::numeric_limits<double>::infinity();
+  double boundary_weight = DecimateOptions{}.boundary_weight;
+  double feature_angle = DecimateOptions{}.feature_angle_degrees;
+  double feature_weight = DecimateOptions{}.feature_weight;
+  double attribute_weight = 0;
+  double max_normal_change = DecimateOptions{}.max_normal_change_degrees;
+  bool keep_boundary = false;
+  bool break_seams = false;
+  bool ascii = false;
+  LoadOptions load;
+};
+
+int run_decimate(const DecimateCommandOptions& o) {
+  format_from_path(o.output);  // an unknown extension fails before the work
+  LoadedMesh loaded = load_mesh(o.input, o.load);
+  SurfaceMesh& mesh = loaded.mesh;
+  DecimateOptions d;
+  if (o.ratio > 0) d.target_vertices = std::max<std::size_t>(1, std::size_t(std::llround(o.ratio * double(mesh.n_vertices()))));
+  if (o.vertices > 0) d.target_vertices = o.vertices;
+  d.target_faces = o.faces;
+  d.max_error = o.max_error;
+  d.boundary_weight = o.boundary_weight;
+  d.feature_angle_degrees = o.feature_angle;
+  d.feature_weight = o.feature_weight;
+  d.attribute_weight = o.attribute_weight;
+  d.max_normal_change_degrees = o.max_normal_change;
+  d.keep_boundary = o.keep_boundary;
+  d.keep_seams = !o.break_seams;
+  const std::size_t v0 = mesh.n_vertices(), f0 = mesh.n_faces();
+  const auto start = std::chrono::steady_clock::now();
+  const DecimateResult r = decimate(mesh, d);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const std::filesystem::path parent = std::filesystem::path(o.output).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+  WriteOptions write;
+  write.binary = !o.ascii;
+  write_mesh(mesh, o.output, write);
+  std::printf("decimated %s -> %s: %zu -> %zu vertices, %zu -> %zu faces, %zu collapses, max error %.6g, %.1f ms\n",
+              o.input.c_str(), o.output.c_str(), v0, r.vertices, f0, r.faces, r.collapses, r.max_error, ms);
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_decimate_command(CLI::App& parent) {
+  auto o = std::make_shared<DecimateCommandOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "decimate",
+      "Decimate a triangle mesh by quadric-error edge collapses to a vertex or face count or an error, and write it");
+  app->add_option("IN", o->input, "Input mesh file (triangles)")->required();
+  app->add_option("OUT", o->output, "Output mesh file; missing folders are created")->required();
+  auto* ratio = app->add_option("--ratio", o->ratio, "Keep this fraction of the vertices, in (0, 1]")
+                    ->check(CLI::Validator(
+                        [](std::string& s) -> std::string {
+                          char* end = nullptr;
+                          const double v = std::strtod(s.c_str(), &end);
+                          return end != s.c_str() && *end == 0 && v > 0 && v <= 1 ? "" : "must be in (0, 1]";
+                        },
+                        "(0, 1]"));
+  auto* faces = app->add_option("--faces", o->faces, "Stop at this many faces")->check(CLI::PositiveNumber);
+  auto* vertices =
+      app->add_option("--vertices", o->vertices, "Stop at this many vertices")->check(CLI::PositiveNumber);
+  ratio->excludes(vertices);
+  app->add_option("--max-error", o->max_error,
+                  "Stop before a collapse that would move the surface by more than this distance (model units)")
+      ->check(CLI::NonNegativeNumber);
+  app->add_option("--boundary-weight", o->boundary_weight, "Weight of the planes that keep open boundaries (0: none)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  app->add_flag("--keep-boundary", o->keep_boundary, "Boundary vertices never move and are never removed");
+  app->add_option("--feature-angle", o->feature_angle,
+                  "Edges whose faces meet at more than this dihedral angle (degrees) are kept like boundaries")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  app->add_option("--feature-weight", o->feature_weight, "Weight of the planes that keep feature edges (0: none)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  app->add_flag("--break-seams", o->break_seams, "Allow collapses across and off UV seams");
+  app->add_option("--attribute-weight", o->attribute_weight, "Weight of texture distortion in the error (0: none)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  app->add_option("--max-normal-change", o->max_normal_change,
+                  "Refuse collapses that turn a face by more than this many degrees")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 180.0));
+  app->add_flag("--ascii", o->ascii, "Write PLY and STL as text instead of binary");
+  add_load_options(*app, o->load);
+  app->callback([app, ratio, faces, vertices] {
+    if (ratio->count() + faces->count() + vertices->count() + app->get_option("--max-error")->count() == 0)
+      throw CLI::ValidationError("decimate", "give --ratio, --faces, --vertices or --max-error");
+  });
+  return {app, [o] { return run_decimate(*o); }};
+}
+
+}  // namespace hedge::cli
