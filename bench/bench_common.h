@@ -67,6 +67,9 @@ struct OpImpl {
   //! the edited mesh, plus its element counts against the reference mesh and `checksum` (what run
   //! returned). Returns an empty string if all is well, else what is wrong.
   std::string (*check)(const MeshBox& reference, const MeshBox& edited, double checksum) = nullptr;
+  //! Untimed, after the warm-up run: the edited mesh as arrays (live elements only, compacted), whose
+  //! distance to the input is the operation's quality (see OpSpec::quality_factor in peers.cpp).
+  Input (*result)(const MeshBox& edited) = nullptr;
 };
 
 struct Backend {
@@ -75,11 +78,30 @@ struct Backend {
   std::string notes;  //!< configuration worth stating (kernel, build path, ...)
   std::unique_ptr<MeshBox> (*build)(const Input& input) = nullptr;
   std::map<std::string, OpImpl> ops;
+  //! False for a library of flat arrays (meshoptimizer): it has no structure whose memory to
+  //! compare, and it is no reference for the quality bars.
+  bool mesh_structure = true;
 };
 
 Backend hedge_backend();
 Backend openmesh_backend();
 Backend cgal_backend();
+Backend meshopt_backend();
+
+// ---- Decimation: the same target for every library. ----
+
+//! QEM decimation to a tenth of the vertices: the vertex count hedge, OpenMesh and CGAL stop at.
+//! (meshoptimizer, which counts indices, is asked for a tenth of them.)
+inline std::size_t decimate_target_vertices(const Input& in) { return in.n_vertices() / 10; }
+
+//! The sampled surface distances of a result to the input (bench_quality.cpp, through hedge's
+//! algorithms/distance.h): symmetric Hausdorff distance and mean distance, and the result's
+//! counts. The result is built with hedge's repairing policy, so a non-manifold result is measured too.
+struct Quality {
+  double hausdorff = 0, mean = 0;
+  std::size_t vertices = 0, faces = 0;
+};
+Quality surface_distance(const Input& input, const Input& result);
 
 // ---- Arithmetic shared by every backend, so that each computes exactly the same thing. ----
 

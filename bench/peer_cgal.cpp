@@ -7,11 +7,22 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/version.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
+
+// Garland-Heckbert policies (new in CGAL 5.5) need Eigen; without it, the default Lindstrom-Turk.
+#if defined(CGAL_EIGEN3_ENABLED)
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
+#define HEDGE_BENCH_CGAL_GARLAND_HECKBERT 1
+#else
+#define HEDGE_BENCH_CGAL_GARLAND_HECKBERT 0
+#endif
 
 #include "bench_common.h"
 
@@ -216,6 +227,80 @@ std::string check_edit(const MeshBox& reference, const MeshBox& edited, double c
   return err + check_edit_counts(kind, counts(before), counts(after), successes);
 }
 
+// ---- Decimation, on a copy in double coordinates (the quadrics lose too much in float). ----
+
+using DKernel = CGAL::Simple_cartesian<double>;
+using DMesh = CGAL::Surface_mesh<DKernel::Point_3>;
+
+struct DMBox final : MeshBox {
+  DMesh m;
+  std::size_t n_vertices() const override { return m.number_of_vertices(); }
+  std::size_t n_faces() const override { return m.number_of_faces(); }
+};
+
+std::unique_ptr<MeshBox> copy_to_double(const MeshBox& reference) {
+  const SMesh& from = static_cast<const SMBox&>(reference).m;
+  auto box = std::make_unique<DMBox>();
+  DMesh& m = box->m;
+  m.reserve(from.number_of_vertices(), from.number_of_edges(), from.number_of_faces());
+  for (VI v : from.vertices()) m.add_vertex(DKernel::Point_3(from.point(v).x(), from.point(v).y(), from.point(v).z()));
+  for (FI f : from.faces()) {
+    const HI h = from.halfedge(f);
+    m.add_face(DMesh::Vertex_index(from.target(h)), DMesh::Vertex_index(from.target(from.next(h))),
+               DMesh::Vertex_index(from.target(from.next(from.next(h)))));
+  }
+  return box;
+}
+
+//! Stops the edge collapses when the mesh is down to a vertex count (CGAL's own count predicates
+//! count edges).
+struct StopAtVertexCount {
+  const DMesh* mesh;
+  std::size_t target;
+  template <class FT, class Profile>
+  bool operator()(const FT&, const Profile&, std::size_t, std::size_t) const {
+    return mesh->number_of_vertices() <= target;
+  }
+};
+
+//! Surface_mesh_simplification::edge_collapse with the Garland-Heckbert plane policies (cost and
+//! placement) when available, down to the common target vertex count. Returns the vertices left.
+double decimate_op(Context& c) {
+  DMesh& m = static_cast<DMBox*>(c.mesh)->m;
+  namespace SMS = CGAL::Surface_mesh_simplification;
+  const StopAtVertexCount stop{&m, decimate_target_vertices(c.input)};
+#if HEDGE_BENCH_CGAL_GARLAND_HECKBERT
+  SMS::GarlandHeckbert_plane_policies<DMesh, DKernel> policies(m);
+  SMS::edge_collapse(m, stop, CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
+#else
+  SMS::edge_collapse(m, stop);
+#endif
+  return static_cast<double>(m.number_of_vertices());
+}
+
+//! Live vertices and faces, renumbered in order.
+Input decimate_result(const MeshBox& edited) {
+  const DMesh& m = static_cast<const DMBox&>(edited).m;
+  Input out;
+  std::vector<std::uint32_t> index(m.num_vertices(), UINT32_MAX);
+  for (auto v : m.vertices()) {
+    index[static_cast<std::size_t>(v)] = static_cast<std::uint32_t>(out.n_vertices());
+    const DKernel::Point_3& p = m.point(v);
+    out.xyz.insert(out.xyz.end(), {static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())});
+  }
+  for (auto f : m.faces())
+    for (auto v : CGAL::vertices_around_face(m.halfedge(f), m)) out.tri.push_back(index[static_cast<std::size_t>(v)]);
+  return out;
+}
+
+std::string check_decimate(const MeshBox&, const MeshBox& edited, double) {
+  const DMesh& m = static_cast<const DMBox&>(edited).m;
+  std::string err;
+  if (!m.is_valid(false)) err += "Surface_mesh::is_valid failed; ";
+  if (!CGAL::is_triangle_mesh(m)) err += "is_triangle_mesh failed; ";
+  return err;
+}
+
 }  // namespace
 
 Backend cgal_backend() {
@@ -224,7 +309,10 @@ Backend cgal_backend() {
   b.key = "cgal";
   b.notes = "CGAL " + std::to_string(CGAL_VERSION_NR / 10000000 % 100) + "." +
             std::to_string(CGAL_VERSION_NR / 100000 % 100) + "." + std::to_string(CGAL_VERSION_NR / 10000 % 10) +
-            ": Surface_mesh<Simple_cartesian<float>::Point_3>, reserve + add_vertex + add_face";
+            ": Surface_mesh<Simple_cartesian<float>::Point_3>, reserve + add_vertex + add_face; decimation: "
+            "edge_collapse on a Simple_cartesian<double> copy, " +
+            (HEDGE_BENCH_CGAL_GARLAND_HECKBERT ? "GarlandHeckbert_plane_policies" : "default Lindstrom-Turk policies") +
+            ", stopped at the target vertex count";
   b.build = build;
   b.ops["build"] = {nullptr, build_op};
   b.ops["one_ring"] = {nullptr, one_ring};
@@ -234,6 +322,7 @@ Backend cgal_backend() {
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   b.ops["loop"] = {copy_mesh, loop_op};
   b.ops["catmull_clark"] = {copy_mesh, catmull_clark_op};
+  b.ops["decimate"] = {copy_to_double, decimate_op, check_decimate, decimate_result};
   return b;
 }
 

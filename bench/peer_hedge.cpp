@@ -1,10 +1,13 @@
 // hedge backend: build_triangles with default options (strict policy, no welding), then the same
 // operations as the peers through hedge's idiomatic circulators.
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "bench_common.h"
+#include "hedge/algorithms/decimate.h"
 #include "hedge/algorithms/smooth.h"
 #include "hedge/algorithms/subdivide.h"
 #include "hedge/core/build.h"
@@ -165,6 +168,36 @@ double flip_op(Context& c) {
   return static_cast<double>(done);
 }
 
+//! decimate() with its default options down to the common target vertex count
+//! (decimate_target_vertices). Returns the vertices left.
+double decimate_op(Context& c) {
+  hedge::SurfaceMesh& m = edit_mesh(c);
+  hedge::DecimateOptions o;
+  o.target_vertices = decimate_target_vertices(c.input);
+  return static_cast<double>(hedge::decimate(m, o).vertices);
+}
+
+//! Live vertices and faces, renumbered in order.
+Input decimate_result(const MeshBox& edited) {
+  const hedge::SurfaceMesh& m = static_cast<const HBox&>(edited).m;
+  Input out;
+  std::vector<std::uint32_t> index(m.vertex_slots(), UINT32_MAX);
+  for (hedge::Vertex v : m.vertices()) {
+    index[v.idx()] = static_cast<std::uint32_t>(out.n_vertices());
+    const hedge::Vec3& p = m.position(v);
+    out.xyz.insert(out.xyz.end(), {p.x, p.y, p.z});
+  }
+  for (hedge::Face f : m.faces())
+    for (hedge::Vertex v : m.vertices(f)) out.tri.push_back(index[v.idx()]);
+  return out;
+}
+
+std::string check_decimate(const MeshBox&, const MeshBox& edited, double) {
+  const std::vector<std::string> problems = static_cast<const HBox&>(edited).m.validate();
+  return problems.empty() ? ""
+                          : "validate(): " + std::to_string(problems.size()) + " problem(s), first: " + problems.front();
+}
+
 Counts counts(const hedge::SurfaceMesh& m) { return {m.n_vertices(), m.n_edges(), m.n_faces()}; }
 
 template <EditKind kind>
@@ -186,7 +219,8 @@ Backend hedge_backend() {
   Backend b;
   b.label = "hedge";
   b.key = "hedge";
-  b.notes = "hedge: build_triangles, default options (strict, no weld), float positions";
+  b.notes = "hedge: build_triangles, default options (strict, no weld), float positions; decimation: decimate() "
+            "with its default options and target_vertices";
   b.build = build;
   b.ops["build"] = {nullptr, build_op};
   b.ops["one_ring"] = {nullptr, one_ring};
@@ -198,6 +232,7 @@ Backend hedge_backend() {
   b.ops["catmull_clark"] = {copy_mesh, catmull_clark_op};
   b.ops["smooth_uniform"] = {copy_mesh, smooth_op<hedge::SmoothMethod::uniform>};
   b.ops["smooth_cotan"] = {copy_mesh, smooth_op<hedge::SmoothMethod::cotangent>};
+  b.ops["decimate"] = {copy_mesh, decimate_op, check_decimate, decimate_result};
   return b;
 }
 

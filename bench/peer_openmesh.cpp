@@ -2,14 +2,18 @@
 // public API only. Built the standard way: reserve, add_vertex for every vertex, add_face for
 // every triangle.
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 #include <OpenMesh/Tools/Smoother/JacobiLaplaceSmootherT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 #include <OpenMesh/Tools/Utils/MeshCheckerT.hh>
 
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "bench_common.h"
 
@@ -211,6 +215,43 @@ std::string check_edit(const MeshBox& reference, const MeshBox& edited, double c
   return err + check_edit_counts(kind, counts(before), counts(after), successes);
 }
 
+//! DecimaterT with ModQuadricT as its only module, no error limit, down to the common target vertex
+//! count (decimate_target_vertices). Returns the vertices left.
+double decimate_op(Context& c) {
+  OMesh& m = mesh_of(c);
+  OpenMesh::Decimater::DecimaterT<OMesh> decimater(m);
+  OpenMesh::Decimater::ModQuadricT<OMesh>::Handle quadric;
+  decimater.add(quadric);
+  decimater.module(quadric).unset_max_err();
+  decimater.initialize();
+  const std::size_t collapses = decimater.decimate_to(decimate_target_vertices(c.input));
+  return static_cast<double>(m.n_vertices() - collapses);
+}
+
+//! Live vertices and faces, renumbered in order.
+Input decimate_result(const MeshBox& edited) {
+  const OMesh& m = static_cast<const OMBox&>(edited).m;
+  Input out;
+  std::vector<std::uint32_t> index(m.n_vertices(), UINT32_MAX);
+  for (auto v : m.vertices()) {
+    index[static_cast<std::size_t>(v.idx())] = static_cast<std::uint32_t>(out.n_vertices());
+    for (int d = 0; d < 3; ++d) out.xyz.push_back(m.point(v)[d]);
+  }
+  for (auto f : m.faces())
+    for (auto v : m.fv_range(f)) out.tri.push_back(index[static_cast<std::size_t>(v.idx())]);
+  return out;
+}
+
+std::string check_decimate(const MeshBox&, const MeshBox& edited, double) {
+  const OMesh& m = static_cast<const OMBox&>(edited).m;
+  std::ostringstream log;
+  if (!OpenMesh::Utils::MeshCheckerT<OMesh>(m).check(OpenMesh::Utils::MeshCheckerT<OMesh>::CHECK_ALL, log)) {
+    std::string first = log.str();
+    return "MeshCheckerT::check failed: " + first.substr(0, first.find('\n')) + "; ";
+  }
+  return "";
+}
+
 }  // namespace
 
 Backend openmesh_backend() {
@@ -218,7 +259,8 @@ Backend openmesh_backend() {
   b.label = "OpenMesh";
   b.key = "openmesh";
   b.notes = "OpenMesh " + std::to_string(OM_GET_VER) + "." + std::to_string(OM_GET_MAJ) +
-            ": TriMesh_ArrayKernelT<> default traits (float), reserve + add_vertex + add_face";
+            ": TriMesh_ArrayKernelT<> default traits (float), reserve + add_vertex + add_face; decimation: "
+            "DecimaterT with ModQuadricT alone (no error limit), decimate_to(the target vertex count)";
   b.build = build;
   b.ops["build"] = {nullptr, build_op};
   b.ops["one_ring"] = {nullptr, one_ring};
@@ -229,6 +271,7 @@ Backend openmesh_backend() {
   b.ops["loop"] = {copy_mesh, loop_op};
   b.ops["smooth_uniform"] = {copy_mesh, smooth_op<true>};
   b.ops["smooth_cotan"] = {copy_mesh, smooth_op<false>};
+  b.ops["decimate"] = {copy_mesh, decimate_op, check_decimate, decimate_result};
   return b;
 }
 

@@ -1,4 +1,5 @@
-// Same-process comparison of hedge with OpenMesh and CGAL Surface_mesh on the same meshes.
+// Same-process comparison of hedge with OpenMesh and CGAL Surface_mesh on the same meshes, and with
+// meshoptimizer's simplifier for the decimation.
 //
 //   peers [--json] [--quick] [--reps N] [--strict] [--only SEL] [--root DIR] [mesh ...]
 //
@@ -16,7 +17,9 @@
 // after the warm-up run with each library's own validity checks and the element counts the
 // edits imply. Bytes per vertex are the net heap
 // bytes allocated while building (counted by replacing operator new/delete, see alloc_count.cpp),
-// divided by the number of vertices.
+// divided by the number of vertices. The decimation's quality is measured untimed after the warm-up
+// run: the sampled symmetric Hausdorff and mean distances of each result to the input (hedge's
+// algorithms/distance.h on the results converted to hedge meshes), and the counts reached.
 //
 // --only runs a subset (e.g. `--only hedge:split` under a profiler): operations not selected are
 // left out of the table, the JSON and the bars; backends not selected for an operation read n/a
@@ -47,7 +50,8 @@ using json = nlohmann::ordered_json;  // keeps keys in table order
 
 enum class BarKind {
   none,
-  faster,  //!< fastest peer / hedge >= factor
+  faster,          //!< fastest peer / hedge >= factor
+  slower_at_most,  //!< hedge / fastest peer <= factor
 };
 
 // Allowed relative difference between the numbers of collapses (flips) done by hedge and a peer.
@@ -61,6 +65,9 @@ struct OpSpec {
   double checksum_rel_tol;      //!< allowed relative checksum difference to hedge (summation order)
   bool compare_vertex_output;   //!< compare Scratch::vertex_normal element-wise with hedge's
   const char* checksum_meaning = nullptr;  //!< if set, the checksums are printed under the row with this title
+  //! If > 0: the result's distance to the input is measured (OpImpl::result), and hedge's Hausdorff
+  //! distance must be at most this times the best of the mesh-structure peers'.
+  double quality_factor = 0;
 };
 
 // The operations, in table order.
@@ -83,6 +90,9 @@ const OpSpec kOps[] = {
     // cotangent Laplacian, OpenMesh along its normal component only, so the sums differ a little.
     {"smooth_uniform", "uniform smoothing, 10 iterations", BarKind::faster, 1.0, 1e-4, false, "sum |p| after"},
     {"smooth_cotan", "cotangent smoothing, 10 iterations", BarKind::faster, 1.0, 1e-2, false, "sum |p| after"},
+    // QEM decimation of a private copy to a tenth of the vertices (meshoptimizer: of the indices);
+    // the vertex counts reached may differ by a little.
+    {"decimate", "QEM decimation to 10% vertices", BarKind::slower_at_most, 3.0, 0.1, false, "vertices after", 1.1},
 };
 
 constexpr double kBytesPerVertexBar = 100.0;
@@ -115,8 +125,12 @@ struct Options {
 
 std::string bar_text(const OpSpec& op) {
   if (op.bar == BarKind::none) return "-";
-  if (op.factor == 1.0) return "no slower";
   char b[32];
+  if (op.bar == BarKind::slower_at_most) {
+    std::snprintf(b, sizeof b, "<= %gx slower", op.factor);
+    return b;
+  }
+  if (op.factor == 1.0) return "no slower";
   std::snprintf(b, sizeof b, ">= %gx faster", op.factor);
   return b;
 }
@@ -146,6 +160,8 @@ struct Cell {
   bool checksum_ok = true;
   double max_output_diff = 0;
   std::optional<std::string> check_error;  //!< after the warm-up of an editing op: "" = valid
+  std::optional<bench::Quality> quality;   //!< the result's distance to the input (OpSpec::quality_factor)
+  std::string quality_error;
 };
 
 struct OpResult {
@@ -156,6 +172,10 @@ struct OpResult {
   std::optional<bool> pass;
   std::size_t batch = 1;  //!< runs per sample
   bool skipped = false;   //!< not selected by --only
+  //! hedge's Hausdorff distance / the best mesh-structure peer's (< 1: hedge is nearer the input).
+  double quality_ratio = std::numeric_limits<double>::quiet_NaN();
+  int quality_peer = -1;
+  std::optional<bool> quality_pass;
 };
 
 struct MemCell {
@@ -209,6 +229,7 @@ MeshResult run_mesh(const Input& in, std::vector<Backend>& backends, const Optio
       m.peak_per_vertex = static_cast<double>(s.peak) / nv;
       m.own_per_vertex = static_cast<double>(refs[b]->own_memory_bytes()) / nv;
       m.allocations = s.allocations;
+      m.available = backends[b].mesh_structure;  // flat arrays: nothing to compare
       if (refs[b]->n_vertices() != in.n_vertices() || refs[b]->n_faces() != in.n_faces())
         build_errors[b] = "built " + std::to_string(refs[b]->n_vertices()) + " V / " +
                           std::to_string(refs[b]->n_faces()) + " F, expected " +
@@ -277,6 +298,14 @@ MeshResult run_mesh(const Input& in, std::vector<Backend>& backends, const Optio
       if (timed) r.cells[b].ms.push_back(ms);
       else warmup_ms[b] = ms;
       if (!timed && impl[b]->check && work[0]) r.cells[b].check_error = impl[b]->check(*refs[b], *work[0], checksum);
+      if (!timed && spec.quality_factor > 0 && impl[b]->result && work[0]) {
+        try {
+          r.cells[b].quality = bench::surface_distance(in, impl[b]->result(*work[0]));
+        } catch (const std::exception& e) {
+          r.cells[b].quality_error = e.what();
+          std::cerr << "  " << spec.key << ": " << backends[b].label << " result not measured: " << e.what() << "\n";
+        }
+      }
       return checksum;
     };
     // Warm-up, checksums and output comparison (hedge first: it is the reference).
@@ -340,7 +369,18 @@ MeshResult run_mesh(const Input& in, std::vector<Backend>& backends, const Optio
     }
     if (impl[0] && r.best_peer > 0) {
       r.ratio = best / r.cells[0].median_ms;
-      if (spec.bar != BarKind::none) r.pass = r.ratio >= spec.factor;
+      if (spec.bar == BarKind::faster) r.pass = r.ratio >= spec.factor;
+      if (spec.bar == BarKind::slower_at_most) r.pass = r.ratio >= 1.0 / spec.factor;
+    }
+    if (spec.quality_factor > 0 && r.cells[0].quality) {
+      for (std::size_t b = 1; b < nb; ++b)
+        if (backends[b].mesh_structure && r.cells[b].quality &&
+            (r.quality_peer < 0 || r.cells[b].quality->hausdorff < r.cells[r.quality_peer].quality->hausdorff))
+          r.quality_peer = static_cast<int>(b);
+      if (r.quality_peer > 0) {
+        r.quality_ratio = r.cells[0].quality->hausdorff / r.cells[r.quality_peer].quality->hausdorff;
+        r.quality_pass = r.quality_ratio <= spec.quality_factor;
+      }
     }
     res.ops.push_back(std::move(r));
   }
@@ -390,6 +430,22 @@ void print_table(const MeshResult& m, const std::vector<Backend>& backends) {
       for (const auto& c : r.cells)
         if (c.check_error) checked = true, valid = valid && c.check_error->empty();
       if (checked) std::printf("   %s", valid ? "(all meshes valid after the sequence)" : "(INVALID mesh, see warnings)");
+      std::printf("\n");
+    }
+    if (r.spec->quality_factor > 0) {
+      auto quality_row = [&](const char* title, auto text) {
+        std::printf("  %-32s", title);
+        for (const auto& c : r.cells) std::printf(" %10s", c.quality ? text(*c.quality).c_str() : "n/a");
+      };
+      quality_row("  Hausdorff distance to input", [](const bench::Quality& q) { return fmt("%.4g", q.hausdorff); });
+      std::string ratio = fmt("%.2fx", r.quality_ratio);
+      if (r.quality_peer > 0) ratio += " (" + backends[r.quality_peer].label.substr(0, 2) + ")";
+      char bar[32];
+      std::snprintf(bar, sizeof bar, "<= %gx best", r.spec->quality_factor);
+      std::printf(" %16s  %-14s %s\n", ratio.c_str(), bar, pass_text(r.quality_pass).c_str());
+      quality_row("  mean distance to input", [](const bench::Quality& q) { return fmt("%.4g", q.mean); });
+      std::printf("\n");
+      quality_row("  faces after", [](const bench::Quality& q) { return std::to_string(q.faces); });
       std::printf("\n");
     }
   }
@@ -443,8 +499,10 @@ json to_json(const MeshResult& m, const std::vector<Backend>& backends) {
     if (r.spec->checksum_meaning) {
       o["checksum_meaning"] = r.spec->checksum_meaning;
       o["checksum_rel_tol"] = r.spec->checksum_rel_tol;
-      o["attempts"] = bench::kEditCount;
-      o["seed"] = bench::kEditSeed;
+      if (r.spec->quality_factor == 0) {
+        o["attempts"] = bench::kEditCount;
+        o["seed"] = bench::kEditSeed;
+      }
       json valid = json::object();
       for (std::size_t b = 0; b < nb; ++b) {
         const auto& ce = r.cells[b].check_error;
@@ -462,6 +520,27 @@ json to_json(const MeshResult& m, const std::vector<Backend>& backends) {
     o["bar"] = bar_text(*r.spec);
     o["bar_factor"] = r.spec->factor;
     o["pass"] = r.pass ? json(*r.pass) : json(nullptr);
+    if (r.spec->quality_factor > 0) {
+      json q = json::object(), hausdorff = json::object(), mean = json::object(), counts = json::object();
+      for (std::size_t b = 0; b < nb; ++b) {
+        const auto& c = r.cells[b].quality;
+        hausdorff[backends[b].key] = c ? json(c->hausdorff) : json(nullptr);
+        mean[backends[b].key] = c ? json(c->mean) : json(nullptr);
+        counts[backends[b].key] = c ? json{{"vertices", c->vertices}, {"faces", c->faces}} : json(nullptr);
+        if (!r.cells[b].quality_error.empty()) q["errors"][backends[b].key] = r.cells[b].quality_error;
+      }
+      q["hausdorff"] = hausdorff;
+      q["mean_distance"] = mean;
+      q["after"] = counts;
+      q["best_reference"] = r.quality_peer > 0 ? json(backends[r.quality_peer].key) : json(nullptr);
+      q["hedge_over_best_reference"] = std::isnan(r.quality_ratio) ? json(nullptr) : json(r.quality_ratio);
+      q["bar"] = "hedge's Hausdorff distance <= factor x the best mesh-structure peer's";
+      q["bar_factor"] = r.spec->quality_factor;
+      q["pass"] = r.quality_pass ? json(*r.quality_pass) : json(nullptr);
+      q["method"] = "sampled symmetric Hausdorff distance to the input: vertices plus max(10^5, #F of the input) "
+                    "area-proportional seeded samples on each surface, exact closest points (hedge distance.h)";
+      o["quality"] = q;
+    }
     ops[r.spec->key] = o;
   }
   j["ops"] = ops;
@@ -502,8 +581,9 @@ void usage() {
                "  --reps N  N rounds per operation\n"
                "  --strict  exit with 1 when a bar fails\n"
                "  --only    run only these: comma-separated OP or LIB:OP (e.g. split or hedge:split,cgal:split);\n"
-               "            LIB is hedge, openmesh or cgal; OP is build, one_ring, vertex_normals, collapse,\n"
-               "            split or flip; may be repeated\n"
+               "            LIB is hedge, openmesh, cgal or meshopt; OP is build, one_ring, vertex_normals,\n"
+               "            collapse, split, flip, loop, catmull_clark, smooth_uniform, smooth_cotan or\n"
+               "            decimate; may be repeated\n"
                "  --root    repository root (default: found from the working directory)\n"
                "  mesh      a triangle mesh file; ':subN' appends N rounds of 1-to-4 subdivision\n";
 }
@@ -567,6 +647,7 @@ int main(int argc, char** argv) {
   backends.push_back(bench::hedge_backend());
   backends.push_back(bench::openmesh_backend());
   backends.push_back(bench::cgal_backend());
+  backends.push_back(bench::meshopt_backend());
   for (const auto& sel : opt.only) {
     bool known = sel.first.empty();
     for (const Backend& b : backends) known = known || sel.first == b.key;
@@ -604,7 +685,7 @@ int main(int argc, char** argv) {
   bool all_pass = true, checks_ok = true;
   json bars = json::array();
   auto summarize = [&](const std::string& name, const std::string& bar, auto get_ratio, auto get_pass,
-                       bool lower_is_better) {
+                       bool lower_is_better, const char* worst_key = nullptr, const char* worst_format = nullptr) {
     int n = 0, passed = 0;
     double worst = std::numeric_limits<double>::quiet_NaN();
     for (const MeshResult& m : results) {
@@ -618,17 +699,24 @@ int main(int argc, char** argv) {
     if (n == 0) return;
     bool ok = passed == n;
     all_pass = all_pass && ok;
+    if (!worst_key) worst_key = lower_is_better ? "worst_hedge_bytes_per_vertex" : "worst_best_peer_over_hedge";
+    if (!worst_format) worst_format = lower_is_better ? "%.1f B/V" : "%.2fx";
     bars.push_back({{"name", name}, {"bar", bar}, {"pass", ok}, {"meshes_passed", passed}, {"meshes", n},
-                    {lower_is_better ? "worst_hedge_bytes_per_vertex" : "worst_best_peer_over_hedge", worst}});
+                    {worst_key, worst}});
     if (!opt.json)
       std::printf("  %-34s %-16s %s (%d of %d meshes pass; worst %s)\n", name.c_str(), bar.c_str(), ok ? "PASS" : "FAIL",
-                  passed, n, fmt(lower_is_better ? "%.1f B/V" : "%.2fx", worst).c_str());
+                  passed, n, fmt(worst_format, worst).c_str());
   };
   if (!opt.json) std::printf("\nBars (hedge against the faster peer, same run):\n");
   for (std::size_t k = 0; k < std::size(kOps); ++k) {
     if (kOps[k].bar == BarKind::none) continue;
     summarize(kOps[k].label, bar_text(kOps[k]), [k](const MeshResult& m) { return m.ops[k].ratio; },
               [k](const MeshResult& m) { return m.ops[k].pass; }, false);
+    if (kOps[k].quality_factor > 0)
+      summarize(std::string(kOps[k].key) + ": Hausdorff", fmt("<= %gx best", kOps[k].quality_factor),
+                [k](const MeshResult& m) { return m.ops[k].quality_ratio; },
+                [k](const MeshResult& m) { return m.ops[k].quality_pass; }, true, "worst_hedge_over_best_reference",
+                "%.2fx");
   }
   summarize("heap bytes / vertex", "<= 100 B/V", [](const MeshResult& m) { return m.mem[0].bytes_per_vertex; },
             [](const MeshResult& m) { return m.mem_pass; }, true);

@@ -450,6 +450,13 @@ HEDGE_API hedge_status hedge_mesh_copy_vertex_normals(const hedge_mesh* mesh, fl
  *  corner normals: HEDGE_ERROR_INVALID_ARGUMENT. */
 HEDGE_API hedge_status hedge_mesh_copy_corner_normals(const hedge_mesh* mesh, float* buffer, uint64_t capacity,
                                                       uint64_t* out_count);
+/** The sampled symmetric Hausdorff distance between the surfaces of a and b
+ *  (hedge/algorithms/distance.h): each surface's vertices plus `samples` seeded, area-proportional
+ *  points on its faces, each measured exactly against the other surface; O((V + samples) log F).
+ *  out_mean (optional, NULL) gets the mean distance over all points. A mesh without faces or with a
+ *  non-finite position: HEDGE_ERROR_INVALID_ARGUMENT. */
+HEDGE_API hedge_status hedge_mesh_hausdorff(const hedge_mesh* a, const hedge_mesh* b, uint64_t samples, uint64_t seed,
+                                            double* out_distance, double* out_mean);
 
 /* ============================================================================================ */
 /* Smoothing (hedge/algorithms/smooth.h)                                                        */

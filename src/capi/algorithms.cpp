@@ -1,5 +1,5 @@
-// The C ABI: the algorithms on a whole mesh: geometry, normals, smoothing, decimation and
-// subdivision (hedge/algorithms/geometry.h, normals.h, smooth.h, decimate.h, subdivide.h).
+// The C ABI: the algorithms on a whole mesh: geometry, distance, normals, smoothing, decimation and
+// subdivision (hedge/algorithms/geometry.h, distance.h, normals.h, smooth.h, decimate.h, subdivide.h).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,6 +7,7 @@
 
 #include "capi_internal.h"
 #include "hedge/algorithms/decimate.h"
+#include "hedge/algorithms/distance.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/normals.h"
 #include "hedge/algorithms/reorder.h"
@@ -132,6 +133,17 @@ hedge_status hedge_mesh_copy_corner_normals(const hedge_mesh* mesh, float* buffe
       fail(HEDGE_ERROR_INVALID_ARGUMENT, "the mesh has no corner normals: compute them first "
                                          "(hedge_mesh_compute_corner_normals)");
     copy_vec3(normals, m.halfedge_slots(), buffer, capacity, out_count);
+  });
+}
+
+hedge_status hedge_mesh_hausdorff(const hedge_mesh* a, const hedge_mesh* b, uint64_t samples, uint64_t seed,
+                                  double* out_distance, double* out_mean) {
+  return guard([&] {
+    auto first = find_mesh(a), second = find_mesh(b);
+    double& distance = need(out_distance, "out_distance");
+    const HausdorffDistance d = hausdorff_distance(first->mesh, second->mesh, {.samples = samples, .seed = seed});
+    distance = d.distance;
+    if (out_mean != nullptr) *out_mean = d.mean;
   });
 }
 

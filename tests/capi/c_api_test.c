@@ -1501,6 +1501,27 @@ static void test_geometry(void) {
   CHECK_OK(hedge_mesh_destroy(cube));
 }
 
+/* The cube against a copy raised by 0.25: its bottom face is 0.25 from the copy, and nothing is farther. */
+static void test_hausdorff(void) {
+  float raised[24];
+  memcpy(raised, kCubePositions, sizeof raised);
+  for (int v = 0; v < 8; ++v) raised[3 * v + 2] += 0.25f;
+  hedge_mesh* cube = make_mesh(kCubePositions, 8, kCubeQuads, 24, kCubeSizes, 6);
+  hedge_mesh* copy = make_mesh(raised, 8, kCubeQuads, 24, kCubeSizes, 6);
+  hedge_mesh* points = make_mesh(kCubePositions, 8, NULL, 0, NULL, 0);
+  double distance = -1, mean = -1;
+  CHECK_OK(hedge_mesh_hausdorff(cube, copy, 1000, 1, &distance, &mean));
+  CHECK(near(distance, 0.25, 1e-7) && mean > 0 && mean < 0.25);
+  CHECK_OK(hedge_mesh_hausdorff(cube, cube, 1000, 1, &distance, NULL));
+  CHECK(distance >= 0 && distance < 1e-7);
+  CHECK_STATUS(hedge_mesh_hausdorff(cube, copy, 1000, 1, NULL, &mean), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_hausdorff(cube, points, 1000, 1, &distance, &mean), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("no faces");
+  CHECK_OK(hedge_mesh_destroy(points));
+  CHECK_OK(hedge_mesh_destroy(copy));
+  CHECK_OK(hedge_mesh_destroy(cube));
+}
+
 static void test_smooth(void) {
   hedge_smooth_options o;
   memset(&o, 0xFF, sizeof o);
@@ -1773,6 +1794,7 @@ int main(void) {
   test_render();
   test_render_lifetime();
   test_geometry();
+  test_hausdorff();
   test_smooth();
   test_decimate();
   test_subdivide();

@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
       add_smooth_command(app),
       add_subdivide_command(app),
       add_decimate_command(app),
+      add_distance_command(app),
   };
 
   try {

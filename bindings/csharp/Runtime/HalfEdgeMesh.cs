@@ -398,6 +398,18 @@ namespace Hedge
             return Status.Filled(status, buffer == null, count);
         }
 
+        /// <summary>The sampled symmetric Hausdorff distance between this surface and other's: each surface's vertices
+        /// plus samples seeded, area-proportional points on its faces, measured exactly against the other surface;
+        /// O((V + samples) log F). meanDistance: the mean over all those points. A mesh without faces throws
+        /// (InvalidArgument).</summary>
+        public double HausdorffDistance(HalfEdgeMesh other, out double meanDistance, ulong samples = 100000, ulong seed = 1)
+        {
+            if (other == null) throw new ArgumentNullException("other");
+            double distance;
+            Status.Check(Native.hedge_mesh_hausdorff(id, other.id, samples, seed, out distance, out meanDistance));
+            return distance;
+        }
+
         // =========================================================================================
         // Adjacency (O(1) unless noted)
         // =========================================================================================

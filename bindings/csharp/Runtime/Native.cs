@@ -85,6 +85,9 @@ namespace Hedge
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_mesh_copy_corner_normals(IntPtr mesh, [Out] float[] buffer, ulong capacity,
             out ulong count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_hausdorff(IntPtr a, IntPtr b, ulong samples, ulong seed, out double distance,
+            out double mean);
 
         // ---- Adjacency ----
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]

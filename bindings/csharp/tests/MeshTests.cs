@@ -77,6 +77,7 @@ namespace Hedge.Tests
             r.Add("MeshTests.GeometryAndNormals", GeometryAndNormals);
             r.Add("MeshTests.SmoothingPullsALiftedVertexDown", SmoothingPullsALiftedVertexDown);
             r.Add("MeshTests.SubdivisionRefinesAndRenderBuffersFollow", SubdivisionRefinesAndRenderBuffersFollow);
+            r.Add("MeshTests.HausdorffDistanceOfARaisedCopy", HausdorffDistanceOfARaisedCopy);
             r.Add("MeshTests.DecimationReachesItsTarget", DecimationReachesItsTarget);
             r.Add("MeshTests.UnityQuadKeepsTheUsersCoordinates", UnityQuadKeepsTheUsersCoordinates);
         }
@@ -163,6 +164,25 @@ namespace Hedge.Tests
                     Check.Equal(24u, buffers.Counts.Vertices, "hard edges split the cube's corners");
                 }
                 Check.Valid(cube, "after the normals");
+            }
+        }
+
+        // The grid against a copy raised by 0.5: every point is 0.5 from the other; a mesh without faces is refused.
+        static void HausdorffDistanceOfARaisedCopy()
+        {
+            float[] raised = (float[])Meshes.GridPositions.Clone();
+            for (int v = 0; v < raised.Length / 3; ++v) raised[3 * v + 2] += 0.5f;
+            BuildReport report;
+            using (var grid = Meshes.Grid())
+            using (var copy = HalfEdgeMesh.FromPolygons(raised, Meshes.GridQuads, Meshes.GridSizes, BuildOptions.Default,
+                                                        out report))
+            using (var points = HalfEdgeMesh.FromTriangles(raised, new uint[0]))
+            {
+                double mean;
+                Check.Near(0.5, grid.HausdorffDistance(copy, out mean, 1000), 1e-7, "distance");
+                Check.Near(0.5, mean, 1e-7, "mean");
+                Check.Near(0, grid.HausdorffDistance(grid, out mean), 1e-7, "to itself");
+                Check.Throws(HedgeStatus.InvalidArgument, () => grid.HausdorffDistance(points, out mean));
             }
         }
 
