@@ -306,8 +306,10 @@ bool Decimator::fixed(Vertex v) const {
 }
 
 // The surviving point of collapsing h and its cost: to_vertex(h)'s position if it must stay,
-// else the quadric's minimiser if it is well defined and within an edge length of the midpoint,
-// else the best of the two ends and the midpoint.
+// else the quadric's minimiser if it is well defined, within an edge length of the midpoint and
+// clearly better than the best of the two ends and the midpoint, else that best. "Clearly": an
+// end that is already exact (a mesh refined without moving, a flat region) keeps its position bit
+// for bit instead of moving to a minimiser that differs from it only by rounding.
 bool Decimator::placement(Halfedge h, Vec3d& p, double& cost) const {
   const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
   const Quadric q = sum(q_[a.idx()], q_[b.idx()]);
@@ -315,14 +317,13 @@ bool Decimator::placement(Halfedge h, Vec3d& p, double& cost) const {
   p = xb;
   if (!fixed(b)) {
     const Vec3d mid = (xa + xb) * 0.5, ab = xb - xa;
+    double best = error_at(q, xb);
+    if (const double em = error_at(q, mid); em < best) p = mid, best = em;
+    if (const double ea = error_at(q, xa); ea < best) p = xa, best = ea;
     Vec3d opt;
-    if (q.minimiser(opt) && dot(opt - mid, opt - mid) <= dot(ab, ab)) {
+    if (q.minimiser(opt) && dot(opt - mid, opt - mid) <= dot(ab, ab) &&
+        error_at(q, opt) < best - 1e-10 * dot(ab, ab))
       p = opt;
-    } else {
-      double best = error_at(q, xb);
-      if (const double em = error_at(q, mid); em < best) p = mid, best = em;
-      if (error_at(q, xa) < best) p = xa;
-    }
   }
   // The cost and the checks see the point as it will be stored.
   p = to_double(to_float(p));
@@ -528,6 +529,12 @@ DecimateResult Decimator::run() {
     const std::size_t budget = endless ? keys_.size() : std::max<std::size_t>({1, (needed() + 1) / 2, initial / 32});
     std::size_t done_now = 0;
     const std::size_t n_keys = keys_.size();
+    // Nor beyond 16x the cost of the budget-th cheapest candidate: when locked vertices skip cheap
+    // candidates, the pass ends rather than reaching for much dearer ones, which the next pass may
+    // not need (a refined flat region, all of whose cheapest collapses cost 0, collapses back
+    // exactly this way). Adding 4 to a float's exponent bits multiplies it by 16. Unless nothing was
+    // done yet, so that illegal cheap candidates cannot stop the decimation.
+    const std::uint64_t cost_limit = n_keys == 0 ? 0 : (keys_[std::min(budget, n_keys) - 1] >> 32) + (4u << 23);
     const Vertex* to = m_.halfedge_vertex_array().data();
     for (std::size_t k = 0; k < n_keys; ++k) {
       // The keys come in cost order, so every candidate's data is cold: fetch the half-edges of the
@@ -546,6 +553,7 @@ DecimateResult Decimator::run() {
           prefetch(stamp_.data() + v.idx());
         }
       }
+      if ((keys_[k] >> 32) > cost_limit && done_now > 0) break;
       const Halfedge h(static_cast<Index>(keys_[k] & 0xffffffffu));
       if (m_.is_deleted(h)) continue;
       const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
