@@ -287,51 +287,56 @@ void refine_1_to_4(SurfaceMesh& m, Subdivision scheme) {
 
 std::vector<Vec3> catmull_clark_positions(const SurfaceMesh& m, const Old& o) {
   std::vector<Vec3> out(o.nv + o.ne + o.nf);
-  std::vector<Vec3d> face_point(o.nf, Vec3d{0, 0, 0});
-  for (Face f : m.faces()) {
-    Vec3d c{0, 0, 0};
-    std::size_t n = 0;
-    for (Vertex v : m.vertices(f)) c += to_double(m.position(v)), ++n;
-    face_point[f.idx()] = c * (1.0 / double(n));
-    out[o.nv + o.ne + f.idx()] = to_float(face_point[f.idx()]);
-  }
-  const auto crease = m.get_edge_property<std::uint8_t>("e:crease");
-  auto sharp = [&](Edge e) { return m.is_boundary(e) || (crease && crease[e] != 0); };
-  for (Edge e : m.edges()) {
-    const Halfedge h = SurfaceMesh::halfedge(e, 0), t = SurfaceMesh::twin(h);
-    const Vec3d a = to_double(m.position(m.to_vertex(h))), b = to_double(m.position(m.to_vertex(t)));
-    Vec3d p = (a + b) * 0.5;
-    if (!sharp(e)) p = (a + b + face_point[m.face(h).idx()] + face_point[m.face(t).idx()]) * 0.25;
-    out[o.nv + e.idx()] = to_float(p);
-  }
-  for (Vertex v : m.vertices()) {
-    const Vec3d s = to_double(m.position(v));
-    out[v.idx()] = m.position(v);
-    if (m.is_isolated(v)) continue;
-    Vec3d faces{0, 0, 0}, mids{0, 0, 0}, sharp_sum{0, 0, 0};
-    std::size_t n = 0, n_faces = 0, n_sharp = 0;
-    for (Halfedge h : m.halfedges(v)) {
-      const Vec3d w = to_double(m.position(m.to_vertex(h)));
-      mids += (s + w) * 0.5;
-      ++n;
-      if (m.face(h).is_valid()) faces += face_point[m.face(h).idx()], ++n_faces;
-      if (sharp(SurfaceMesh::edge(h))) sharp_sum += w, ++n_sharp;
+  std::vector<Vec3d> face_point(o.nf);
+  detail::parallel_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      Vec3d c{0, 0, 0};
+      std::size_t n = 0;
+      for (Vertex v : m.vertices(Face(Index(f)))) c += to_double(m.position(v)), ++n;
+      face_point[f] = c * (1.0 / double(n));
+      out[o.nv + o.ne + f] = to_float(face_point[f]);
     }
-    Vec3d p = s;
-    if (n_sharp == 2) {
-      p = s * 0.75 + sharp_sum * 0.125;
-    } else if (n_sharp < 2 && n_faces > 0) {
-      const double k = double(n);
-      p = (faces * (1.0 / double(n_faces)) + mids * (2.0 / k) + s * (k - 3)) * (1.0 / k);
+  });
+  detail::parallel_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e) {
+      const Halfedge h(Index(2 * e)), t(Index(2 * e + 1));
+      const Vec3d a = to_double(m.position(o.to[h.idx()])), b = to_double(m.position(o.to[t.idx()]));
+      Vec3d p = (a + b) * 0.5;
+      if (!o.sharp[e]) p = (a + b + face_point[o.face[h.idx()].idx()] + face_point[o.face[t.idx()].idx()]) * 0.25;
+      out[o.nv + e] = to_float(p);
     }
-    out[v.idx()] = to_float(p);
-  }
+  });
+  detail::parallel_ranges(o.nv, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t vi = begin; vi < end; ++vi) {
+      const Vertex v{Index(vi)};
+      const Vec3d s = to_double(m.position(v));
+      out[vi] = m.position(v);
+      if (m.is_isolated(v)) continue;
+      Vec3d faces{0, 0, 0}, mids{0, 0, 0}, sharp_sum{0, 0, 0};
+      std::size_t n = 0, n_faces = 0, n_sharp = 0;
+      for (Halfedge h : m.halfedges(v)) {
+        const Vec3d w = to_double(m.position(m.to_vertex(h)));
+        mids += (s + w) * 0.5;
+        ++n;
+        if (m.face(h).is_valid()) faces += face_point[m.face(h).idx()], ++n_faces;
+        if (o.sharp[h.idx() >> 1]) sharp_sum += w, ++n_sharp;
+      }
+      Vec3d p = s;
+      if (n_sharp == 2) {
+        p = s * 0.75 + sharp_sum * 0.125;
+      } else if (n_sharp < 2 && n_faces > 0) {
+        const double k = double(n);
+        p = (faces * (1.0 / double(n_faces)) + mids * (2.0 / k) + s * (k - 3)) * (1.0 / k);
+      }
+      out[vi] = to_float(p);
+    }
+  });
   return out;
 }
 
 void refine_catmull_clark(SurfaceMesh& m) {
   Old o = read_old(m);
-  const std::vector<Vec3> positions = catmull_clark_positions(m, o);
+  std::vector<Vec3> positions = catmull_clark_positions(m, o);
   // q(h) for the half-edges of faces.
   std::vector<Index> q(2 * o.ne, kInvalidIndex);
   Index quads = 0;
@@ -346,9 +351,38 @@ void refine_catmull_clark(SurfaceMesh& m) {
   const Index inner = Index(2 * o.ne);
   auto to_centre = [&](Index h) { return Halfedge(2 * (inner + q[h])); };
   auto from_centre = [&](Index h) { return Halfedge(2 * (inner + q[h]) + 1); };
+  detail::parallel_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      const Vertex centre(Index(o.nv + o.ne + f));
+      const Index start = o.fhe[f].idx();
+      Index hk = start;
+      do {
+        const Index hn = o.next[hk].idx();
+        const Halfedge s(second_half(hk)), fi(first_half(hn)), in = to_centre(hn), out = from_centre(hk);
+        const Face quad(q[hk]);
+        m.set_vertex(in, centre);
+        m.set_vertex(out, Vertex(Index(o.nv + (hk >> 1))));
+        m.set_next(s, fi);
+        m.set_next(fi, in);
+        m.set_next(in, out);
+        m.set_next(out, s);
+        m.set_face(s, quad);
+        m.set_face(fi, quad);
+        m.set_face(in, quad);
+        m.set_face(out, quad);
+        m.set_halfedge(quad, s);
+        hk = hn;
+      } while (hk != start);
+      m.set_halfedge(centre, from_centre(start));
+    }
+  });
+  // The face point's vertex properties, and the corners: at old vertices copied, at edge middles
+  // the average of the face's own corners at the edge's ends, at the face point the average of the
+  // face's corners.
   std::vector<Index> ring, corners, old_corners;  // per face, reused
   std::vector<float> weights;
-  for (std::size_t f = 0; f < o.nf; ++f) {
+  const bool vertex_data = m.vertex_properties().array_count() > 1;
+  for (std::size_t f = 0; f < o.nf && (vertex_data || corner_data); ++f) {
     const Vertex centre(Index(o.nv + o.ne + f));
     ring.clear();
     Index h = o.fhe[f].idx();
@@ -357,41 +391,23 @@ void refine_catmull_clark(SurfaceMesh& m) {
       h = o.next[h].idx();
     } while (h != o.fhe[f].idx());
     const std::size_t n = ring.size();
-    for (std::size_t k = 0; k < n; ++k) {
-      const Index hk = ring[k], hn = ring[(k + 1) % n], hp = ring[(k + n - 1) % n];
-      const Halfedge s(second_half(hk)), fi(first_half(hn)), in = to_centre(hn), out = from_centre(hk);
-      const Face quad(q[hk]);
-      m.set_vertex(in, centre);
-      m.set_vertex(out, Vertex(Index(o.nv + (hk >> 1))));
-      m.set_next(s, fi);
-      m.set_next(fi, in);
-      m.set_next(in, out);
-      m.set_next(out, s);
-      m.set_face(s, quad);
-      m.set_face(fi, quad);
-      m.set_face(in, quad);
-      m.set_face(out, quad);
-      m.set_halfedge(quad, s);
-      if (corner_data) {
-        const float half[2] = {0.5f, 0.5f};
-        const Index mid_k[2] = {old_base + hp, old_base + hk};
-        const Index mid_n[2] = {old_base + hk, old_base + hn};
-        hprops.copy(old_base + hk, s.idx());
-        hprops.interpolate(fi.idx(), mid_n, half, 2);
-        hprops.interpolate(out.idx(), mid_k, half, 2);
-      }
-    }
-    m.set_halfedge(centre, from_centre(ring[0]));
-    // The face point's vertex properties, and the corners at it: the average of the face's corners.
     weights.assign(n, 1.f / float(n));
     corners.resize(n);
     for (std::size_t k = 0; k < n; ++k) corners[k] = o.to[ring[k]].idx();
-    m.vertex_properties().interpolate(centre.idx(), corners.data(), weights.data(), n);
-    if (corner_data) {
-      old_corners.resize(n);
-      for (std::size_t k = 0; k < n; ++k) old_corners[k] = old_base + ring[k];
-      for (std::size_t k = 0; k < n; ++k) hprops.interpolate(to_centre(ring[k]).idx(), old_corners.data(), weights.data(), n);
+    if (vertex_data) m.vertex_properties().interpolate(centre.idx(), corners.data(), weights.data(), n, m.positions().array());
+    if (!corner_data) continue;
+    const float half[2] = {0.5f, 0.5f};
+    for (std::size_t k = 0; k < n; ++k) {
+      const Index hk = ring[k], hn = ring[(k + 1) % n], hp = ring[(k + n - 1) % n];
+      const Index mid_k[2] = {old_base + hp, old_base + hk};
+      const Index mid_n[2] = {old_base + hk, old_base + hn};
+      hprops.copy(old_base + hk, second_half(hk));
+      hprops.interpolate(first_half(hn), mid_n, half, 2);
+      hprops.interpolate(from_centre(hk).idx(), mid_k, half, 2);
     }
+    old_corners.resize(n);
+    for (std::size_t k = 0; k < n; ++k) old_corners[k] = old_base + ring[k];
+    for (std::size_t k = 0; k < n; ++k) hprops.interpolate(to_centre(ring[k]).idx(), old_corners.data(), weights.data(), n);
   }
   if (corner_data) hprops.resize(2 * ne);
   // Face properties: quad q(h) takes face(h). Quads are numbered by half-edge, not by face, so a
@@ -408,7 +424,7 @@ void refine_catmull_clark(SurfaceMesh& m) {
       } while (h != o.fhe[f].idx());
     }
   }
-  for (std::size_t v = 0; v < nv; ++v) m.position(Vertex(Index(v))) = positions[v];
+  m.positions().vector().swap(positions);
 }
 
 
@@ -432,18 +448,28 @@ Split face_rings(const SurfaceMesh& m) {
   s.nv = m.vertex_slots();
   s.ne = m.edge_slots();
   s.nf = m.face_slots();
-  s.first.resize(s.nf + 1);
-  s.ring.reserve(2 * s.ne);
-  for (std::size_t f = 0; f < s.nf; ++f) {
-    s.first[f] = Index(s.ring.size());
+  const std::vector<Halfedge>& next = m.halfedge_next_array();
+  auto degree = [&](std::size_t f) {
     const Halfedge start = m.halfedge(Face(Index(f)));
+    Index n = 0;
     Halfedge h = start;
-    do {
-      s.ring.push_back(h.idx());
-      h = m.next(h);
-    } while (h != start);
-  }
-  s.first[s.nf] = Index(s.ring.size());
+    do h = next[h.idx()], ++n;
+    while (h != start);
+    return n;
+  };
+  s.first.resize(s.nf + 1);
+  detail::parallel_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) s.first[f + 1] = degree(f);
+  });
+  s.first[0] = 0;
+  for (std::size_t f = 0; f < s.nf; ++f) s.first[f + 1] += s.first[f];
+  s.ring.resize(s.first[s.nf]);
+  detail::parallel_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      Halfedge h = m.halfedge(Face(Index(f)));
+      for (Index c = s.first[f]; c < s.first[f + 1]; ++c, h = next[h.idx()]) s.ring[c] = h.idx();
+    }
+  });
   return s;
 }
 
@@ -451,20 +477,30 @@ Split face_rings(const SurfaceMesh& m) {
 // A vertex on two or more sharp edges (boundary or "e:crease") stays: those edges are not refined.
 std::vector<Vec3> sqrt3_positions(const SurfaceMesh& m, const std::vector<std::uint8_t>& keep) {
   std::vector<Vec3> out(m.vertex_slots());
-  for (Vertex v : m.vertices()) {
-    out[v.idx()] = m.position(v);
-    if (m.is_isolated(v)) continue;
-    Vec3d ring{0, 0, 0};
-    std::size_t n = 0, n_sharp = 0;
-    for (Halfedge h : m.halfedges(v)) {
-      ring += to_double(m.position(m.to_vertex(h)));
-      ++n;
-      n_sharp += keep[h.idx() >> 1];
+  const Vec3* p = m.positions().vector().data();
+  const std::vector<Vertex>& to = m.halfedge_vertex_array();
+  const std::vector<Halfedge>& next = m.halfedge_next_array();
+  double alphas[32];
+  for (std::size_t n = 1; n < 32; ++n) alphas[n] = (4 - 2 * std::cos(2 * std::numbers::pi / double(n))) / 9;
+  detail::parallel_ranges(out.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) {
+      out[v] = p[v];
+      const Halfedge start = m.halfedge(Vertex(Index(v)));
+      if (!start.is_valid()) continue;
+      Vec3d ring{0, 0, 0};
+      std::size_t n = 0, n_sharp = 0;
+      Index h = start.idx();
+      do {
+        ring += to_double(p[to[h].idx()]);
+        ++n;
+        n_sharp += keep[h >> 1];
+        h = next[h ^ 1u].idx();  // clockwise about v
+      } while (h != start.idx());
+      if (n_sharp >= 2) continue;
+      const double a = n < 32 ? alphas[n] : (4 - 2 * std::cos(2 * std::numbers::pi / double(n))) / 9;
+      out[v] = to_float(to_double(p[v]) * (1 - a) + ring * (a / double(n)));
     }
-    if (n_sharp >= 2) continue;
-    const double a = (4 - 2 * std::cos(2 * std::numbers::pi / double(n))) / 9;
-    out[v.idx()] = to_float(to_double(m.position(v)) * (1 - a) + ring * (a / double(n)));
-  }
+  });
   return out;
 }
 
@@ -480,56 +516,73 @@ void refine_at_centres(SurfaceMesh& m, bool sqrt3) {
   if (sqrt3) {
     keep.resize(s.ne);
     const auto crease = m.get_edge_property<std::uint8_t>("e:crease");
-    for (std::size_t e = 0; e < s.ne; ++e)
-      keep[e] = m.is_boundary(Edge(Index(e))) || (crease && crease[Edge(Index(e))] != 0);
-    q.assign(2 * s.ne, kInvalidIndex);
-    for (std::size_t i = 0; i < nc; ++i) q[s.ring[i]] = Index(i);
+    detail::parallel_ranges(s.ne, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t e = begin; e < end; ++e)
+        keep[e] = m.is_boundary(Edge(Index(e))) || (crease && crease[Edge(Index(e))] != 0);
+    });
+    q.resize(2 * s.ne);  // boundary half-edges' entries are never read
+    detail::parallel_ranges(nc, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) q[s.ring[i]] = Index(i);
+    });
     smoothed = sqrt3_positions(m, keep);
   }
+  // Face centroids, summed in double as face_centroid() does.
   std::vector<Vec3> centres(s.nf);
-  for (std::size_t f = 0; f < s.nf; ++f) centres[f] = face_centroid(m, Face(Index(f)));
+  detail::parallel_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
+    const Vec3* p = m.positions().vector().data();
+    const std::vector<Vertex>& to = m.halfedge_vertex_array();
+    for (std::size_t f = begin; f < end; ++f) {
+      Vec3d c{0, 0, 0};
+      for (Index i = s.first[f]; i < s.first[f + 1]; ++i) c += to_double(p[to[s.ring[i]].idx()]);
+      centres[f] = to_float(c / double(s.first[f + 1] - s.first[f]));
+    }
+  });
 
   m.resize(s.nv + s.nf, s.ne + nc, nc);
   auto in = [&](Index c) { return Halfedge(2 * (E + c)); };
   auto out = [&](Index c) { return Halfedge(2 * (E + c) + 1); };
-  for (std::size_t f = 0; f < s.nf; ++f) {
-    const Index b = s.first[f], n = s.first[f + 1] - b;
-    const Vertex centre(V + Index(f));
-    // The corners first: sqrt(3) turns to(h_k) toward the centre below.
-    for (Index k = 0; k < n; ++k) {
-      const Halfedge h(s.ring[b + k]);
-      m.set_vertex(in(b + k), centre);
-      m.set_vertex(out(b + k), m.to_vertex(h));
-    }
-    for (Index k = 0; k < n; ++k) {
-      const Index c = b + k, cp = b + (k + n - 1) % n;
-      const Halfedge h(s.ring[c]);
-      const Face child(c);
-      Halfedge lead = in(c);  // the half-edge before h's successor: in(c) when split
-      if (sqrt3 && !keep[h.idx() >> 1]) {
-        lead = in(q[h.idx() ^ 1u]);
-        m.set_vertex(h, centre);
-        m.set_next(lead, h);
-        m.set_next(h, out(cp));
-      } else {
-        m.set_next(h, lead);
-        m.set_next(lead, out(cp));
+  detail::parallel_ranges(s.nf, [&](std::size_t f_begin, std::size_t f_end) {
+    for (std::size_t f = f_begin; f < f_end; ++f) {
+      const Index b = s.first[f], n = s.first[f + 1] - b;
+      const Vertex centre(V + Index(f));
+      // The corners first: sqrt(3) turns to(h_k) toward the centre below.
+      for (Index k = 0; k < n; ++k) {
+        const Halfedge h(s.ring[b + k]);
+        m.set_vertex(in(b + k), centre);
+        m.set_vertex(out(b + k), m.to_vertex(h));
       }
-      m.set_next(out(cp), sqrt3 && !keep[h.idx() >> 1] ? lead : h);
-      m.set_face(h, child);
-      m.set_face(lead, child);
-      m.set_face(out(cp), child);
-      m.set_halfedge(child, h);
+      for (Index k = 0; k < n; ++k) {
+        const Index c = b + k, cp = b + (k + n - 1) % n;
+        const Halfedge h(s.ring[c]);
+        const Face child(c);
+        Halfedge lead = in(c);  // the half-edge before h's successor: in(c) when split
+        if (sqrt3 && !keep[h.idx() >> 1]) {
+          lead = in(q[h.idx() ^ 1u]);
+          m.set_vertex(h, centre);
+          m.set_next(lead, h);
+          m.set_next(h, out(cp));
+        } else {
+          m.set_next(h, lead);
+          m.set_next(lead, out(cp));
+        }
+        m.set_next(out(cp), sqrt3 && !keep[h.idx() >> 1] ? lead : h);
+        m.set_face(h, child);
+        m.set_face(lead, child);
+        m.set_face(out(cp), child);
+        m.set_halfedge(child, h);
+      }
+      m.set_halfedge(centre, out(b));
     }
-    m.set_halfedge(centre, out(b));
-  }
+  });
   // An interior old vertex whose outgoing half-edge was flipped leaves by the spoke of that edge's twin.
   if (sqrt3)
-    for (std::size_t v = 0; v < s.nv; ++v) {
-      const Halfedge o = m.halfedge(Vertex(Index(v)));
-      if (o.is_valid() && !m.is_boundary(o) && !keep[o.idx() >> 1])
-        m.set_halfedge(Vertex(Index(v)), in(q[o.idx() ^ 1u]));
-    }
+    detail::parallel_ranges(s.nv, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t v = begin; v < end; ++v) {
+        const Halfedge o = m.halfedge(Vertex(Index(v)));
+        if (o.is_valid() && !m.is_boundary(o) && !keep[o.idx() >> 1])
+          m.set_halfedge(Vertex(Index(v)), in(q[o.idx() ^ 1u]));
+      }
+    });
 
   // Properties. Vertex: the centre averages its face's corners. Corner: in(q) enters the centre and
   // averages the face's own corners; out(q - 1) enters from(h_k) and takes the corner before h_k;
@@ -538,12 +591,14 @@ void refine_at_centres(SurfaceMesh& m, bool sqrt3) {
   std::vector<float> weights;
   std::vector<Index> corners;
   PropertyContainer& hprops = m.halfedge_properties();
-  for (std::size_t f = 0; f < s.nf; ++f) {
+  const bool vertex_data = m.vertex_properties().array_count() > 1;
+  for (std::size_t f = 0; f < s.nf && (vertex_data || !hprops.empty()); ++f) {
     const Index b = s.first[f], n = s.first[f + 1] - b;
     weights.assign(n, 1.f / float(n));
     corners.resize(n);
     for (Index k = 0; k < n; ++k) corners[k] = m.to_vertex(out(b + k)).idx();
-    m.vertex_properties().interpolate(V + f, corners.data(), weights.data(), n);
+    if (vertex_data)
+      m.vertex_properties().interpolate(V + f, corners.data(), weights.data(), n, m.positions().array());
     if (hprops.empty()) continue;
     hprops.interpolate(in(b).idx(), &s.ring[b], weights.data(), n);
     for (Index k = 0; k < n; ++k) {
