@@ -111,6 +111,13 @@ double catmull_clark_op(Context& c) {
   return static_cast<double>(m.number_of_vertices() + m.number_of_faces());
 }
 
+//! One step of CGAL's Subdivision_method_3::Sqrt3_subdivision on the private copy. Returns #V + #F.
+double sqrt3_op(Context& c) {
+  SMesh& m = edit_mesh(c);
+  CGAL::Subdivision_method_3::Sqrt3_subdivision(m, CGAL::parameters::number_of_iterations(1));
+  return static_cast<double>(m.number_of_vertices() + m.number_of_faces());
+}
+
 //! One step of CGAL's Subdivision_method_3::Loop_subdivision on the private copy. Returns #V + #F.
 double loop_op(Context& c) {
   SMesh& m = edit_mesh(c);
@@ -234,6 +241,7 @@ Backend cgal_backend() {
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   b.ops["loop"] = {copy_mesh, loop_op};
   b.ops["catmull_clark"] = {copy_mesh, catmull_clark_op};
+  b.ops["sqrt3"] = {copy_mesh, sqrt3_op};
   return b;
 }
 
