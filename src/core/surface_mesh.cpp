@@ -243,6 +243,17 @@ void resize_for_rebuild(std::vector<T>& v, std::size_t n) {
 }
 }  // namespace
 
+SurfaceMesh::Connectivity SurfaceMesh::release_connectivity(std::size_t n_v, std::size_t n_e, std::size_t n_f) {
+  Connectivity old;
+  old.h_vertex.swap(h_vertex_);
+  old.h_next.swap(h_next_);
+  old.h_face.swap(h_face_);
+  old.v_halfedge.swap(v_halfedge_);
+  old.f_halfedge.swap(f_halfedge_);
+  resize(n_v, n_e, n_f);
+  return old;
+}
+
 void SurfaceMesh::resize(std::size_t n_v, std::size_t n_e, std::size_t n_f) {
   resize_for_rebuild(h_vertex_, 2 * n_e);
   resize_for_rebuild(h_next_, 2 * n_e);
