@@ -122,6 +122,13 @@ double catmull_clark_op(Context& c) {
   return static_cast<double>(m.number_of_vertices() + m.number_of_faces());
 }
 
+//! One step of CGAL's Subdivision_method_3::Sqrt3_subdivision on the private copy. Returns #V + #F.
+double sqrt3_op(Context& c) {
+  SMesh& m = edit_mesh(c);
+  CGAL::Subdivision_method_3::Sqrt3_subdivision(m, CGAL::parameters::number_of_iterations(1));
+  return static_cast<double>(m.number_of_vertices() + m.number_of_faces());
+}
+
 //! One step of CGAL's Subdivision_method_3::Loop_subdivision on the private copy. Returns #V + #F.
 double loop_op(Context& c) {
   SMesh& m = edit_mesh(c);
@@ -323,6 +330,7 @@ Backend cgal_backend() {
   b.ops["loop"] = {copy_mesh, loop_op};
   b.ops["catmull_clark"] = {copy_mesh, catmull_clark_op};
   b.ops["decimate"] = {copy_to_double, decimate_op, check_decimate, decimate_result};
+  b.ops["sqrt3"] = {copy_mesh, sqrt3_op};
   return b;
 }
 

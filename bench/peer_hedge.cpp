@@ -108,6 +108,13 @@ double catmull_clark_op(Context& c) {
   return static_cast<double>(m.n_vertices() + m.n_faces());
 }
 
+//! One step of Kobbelt's sqrt(3) scheme on the private copy. Returns #V + #F after.
+double sqrt3_op(Context& c) {
+  hedge::SurfaceMesh& m = static_cast<HBox*>(c.mesh)->m;
+  hedge::subdivide(m, hedge::Subdivision::sqrt3, 1);
+  return static_cast<double>(m.n_vertices() + m.n_faces());
+}
+
 //! One step of Loop's subdivision of the private copy. Returns #V + #F after.
 double loop_op(Context& c) {
   hedge::SurfaceMesh& m = edit_mesh(c);
@@ -230,6 +237,7 @@ Backend hedge_backend() {
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   b.ops["loop"] = {copy_mesh, loop_op};
   b.ops["catmull_clark"] = {copy_mesh, catmull_clark_op};
+  b.ops["sqrt3"] = {copy_mesh, sqrt3_op};
   b.ops["smooth_uniform"] = {copy_mesh, smooth_op<hedge::SmoothMethod::uniform>};
   b.ops["smooth_cotan"] = {copy_mesh, smooth_op<hedge::SmoothMethod::cotangent>};
   b.ops["decimate"] = {copy_mesh, decimate_op, check_decimate, decimate_result};

@@ -6,6 +6,7 @@
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 #include <OpenMesh/Tools/Smoother/JacobiLaplaceSmootherT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
 #include <OpenMesh/Tools/Utils/MeshCheckerT.hh>
 
 #include <cmath>
@@ -167,6 +168,16 @@ double loop_op(Context& c) {
   return static_cast<double>(m.n_vertices() + m.n_faces());
 }
 
+//! One step of OpenMesh's Subdivider::Uniform::Sqrt3T on the private copy. Returns #V + #F after.
+double sqrt3_op(Context& c) {
+  OMesh& m = mesh_of(c);
+  OpenMesh::Subdivider::Uniform::Sqrt3T<OMesh> sqrt3;
+  sqrt3.attach(m);
+  sqrt3(1);
+  sqrt3.detach();
+  return static_cast<double>(m.n_vertices() + m.n_faces());
+}
+
 //! Random edge, is_flip_ok, then flip. Returns the number of flips done.
 double flip_op(Context& c) {
   OMesh& m = mesh_of(c);
@@ -269,6 +280,7 @@ Backend openmesh_backend() {
   b.ops["split"] = {copy_mesh, split_op, check_edit<EditKind::split>};
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   b.ops["loop"] = {copy_mesh, loop_op};
+  b.ops["sqrt3"] = {copy_mesh, sqrt3_op};
   b.ops["smooth_uniform"] = {copy_mesh, smooth_op<true>};
   b.ops["smooth_cotan"] = {copy_mesh, smooth_op<false>};
   b.ops["decimate"] = {copy_mesh, decimate_op, check_decimate, decimate_result};

@@ -85,6 +85,9 @@ const OpSpec kOps[] = {
     {"loop", "Loop subdivision, one step", BarKind::faster, 3.0, 0.0, false, "#V + #F after"},
     // Catmull-Clark of the triangle meshes (OpenMesh's CatmullClarkT needs a PolyMesh: n/a).
     {"catmull_clark", "Catmull-Clark, one step", BarKind::faster, 2.0, 0.0, false, "#V + #F after"},
+    // One step of Kobbelt's sqrt(3) scheme. On a closed mesh every library makes V + F, 3F; on open
+    // ones the boundary rules differ (hedge keeps boundary edges), hence the tolerance.
+    {"sqrt3", "sqrt(3) subdivision, one step", BarKind::faster, 2.0, 0.01, false, "#V + #F after"},
     // Ten smoothing iterations (CGAL has no explicit Laplacian smoother: n/a). Uniform: the same
     // umbrella step with damping 0.5 in both, so the results agree. Cotangent: hedge moves along the
     // cotangent Laplacian, OpenMesh along its normal component only, so the sums differ a little.

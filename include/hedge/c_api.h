@@ -541,13 +541,17 @@ HEDGE_API hedge_status hedge_mesh_decimate(hedge_mesh* mesh, const hedge_decimat
 typedef enum hedge_subdivision {
   HEDGE_SUBDIVISION_LOOP = 0,     /**< Loop's scheme: smooth, triangle meshes */
   HEDGE_SUBDIVISION_MIDPOINT = 1,      /**< 1-to-4 at the edge midpoints: the shape is kept */
-  HEDGE_SUBDIVISION_CATMULL_CLARK = 2  /**< Catmull-Clark: any polygons, gives quads */
+  HEDGE_SUBDIVISION_CATMULL_CLARK = 2, /**< Catmull-Clark: any polygons, gives quads */
+  HEDGE_SUBDIVISION_SQRT3 = 3,         /**< Kobbelt's sqrt(3): smooth 1-to-3 with flips, triangle meshes */
+  HEDGE_SUBDIVISION_SPLIT_FACES = 4    /**< each face fanned about its centroid: any polygons, shape kept */
 } hedge_subdivision;
 
 /** Subdivides steps times (0..12): Loop and midpoint refine triangles 1-to-4, Catmull-Clark turns
- *  a face of n corners into n quads (Catmull-Clark's face points are vertex_slots + edge_slots + f). Every index changes, as after garbage
+ *  a face of n corners into n quads (Catmull-Clark's face points are vertex_slots + edge_slots + f),
+ *  sqrt3 and split-faces turn a face of n corners into n triangles about its centroid, vertex
+ *  vertex_slots + f. Every index changes, as after garbage
  *  collection: old vertex v keeps index v, the vertex of edge e is vertex_slots + e. Render objects
- *  of the mesh rebuild at their next sync. A face that is not a triangle (Loop, midpoint), or a
+ *  of the mesh rebuild at their next sync. A face that is not a triangle (Loop, midpoint, sqrt3), or a
  *  result beyond 2^31 half-edges: HEDGE_ERROR_INVALID_ARGUMENT, and the mesh is unchanged. */
 HEDGE_API hedge_status hedge_mesh_subdivide(hedge_mesh* mesh, int32_t scheme, int32_t steps);
 

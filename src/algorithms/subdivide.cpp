@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "hedge/core/operations.h"
 #include "hedge/error.h"
+#include "parallel.h"
 
 namespace hedge {
 
@@ -24,69 +26,92 @@ struct Old {
   std::vector<Face> face;       // per half-edge
   std::vector<Halfedge> vout;   // per vertex
   std::vector<Halfedge> fhe;    // per face
+  std::vector<std::uint8_t> sharp;  // per edge: boundary or "e:crease"
 };
 
-// Loop's positions for the old vertices (first nv entries) and the edge vertices (then ne).
-std::vector<Vec3> loop_positions(const SurfaceMesh& m, const Old& o) {
+// Loop's weight of the ring for a vertex of valence n (the vertex keeps 1 - n beta).
+double loop_beta(std::size_t n) {
+  const double c = 0.375 + 0.25 * std::cos(2 * std::numbers::pi / double(n));
+  return (0.625 - c * c) / double(n);
+}
+
+// Positions of the 1-to-4 schemes, from the old arrays: the old vertices (first nv entries; Loop
+// moves them) and the edge vertices (then ne; Loop's masks, or midpoints).
+std::vector<Vec3> positions_1_to_4(const SurfaceMesh& m, const Old& o, bool loop) {
   std::vector<Vec3> out(o.nv + o.ne);
-  const auto crease = m.get_edge_property<std::uint8_t>("e:crease");
-  auto sharp = [&](Edge e) { return m.is_boundary(e) || (crease && crease[e] != 0); };
-  for (Vertex v : m.vertices()) {
-    const Vec3d p = to_double(m.position(v));
-    if (m.is_isolated(v)) {
-      out[v.idx()] = m.position(v);
-      continue;
-    }
-    Vec3d ring{0, 0, 0}, sharp_sum{0, 0, 0};
-    std::size_t n = 0, n_sharp = 0;
-    for (Halfedge h : m.halfedges(v)) {
-      const Vec3d q = to_double(m.position(m.to_vertex(h)));
-      ring += q;
-      ++n;
-      if (sharp(SurfaceMesh::edge(h))) {
-        sharp_sum += q;
-        ++n_sharp;
+  const Vec3* p = m.positions().vector().data();
+  detail::parallel_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e) {
+      const Vec3d a = to_double(p[o.to[2 * e].idx()]), b = to_double(p[o.to[2 * e + 1].idx()]);
+      Vec3d np = (a + b) * 0.5;
+      if (loop && !o.sharp[e]) {
+        const Vec3d c = to_double(p[o.to[o.next[2 * e].idx()].idx()]);
+        const Vec3d d = to_double(p[o.to[o.next[2 * e + 1].idx()].idx()]);
+        np = (a + b) * 0.375 + (c + d) * 0.125;
       }
+      out[o.nv + e] = to_float(np);
     }
-    Vec3d np;
-    if (n_sharp > 2) {
-      np = p;  // a corner
-    } else if (n_sharp == 2) {
-      np = p * 0.75 + sharp_sum * 0.125;  // a boundary or crease curve
-    } else {
-      const double c = 0.375 + 0.25 * std::cos(2 * std::numbers::pi / double(n));
-      const double beta = (0.625 - c * c) / double(n);
-      np = p * (1 - double(n) * beta) + ring * beta;
+  });
+  double betas[32];
+  for (std::size_t n = 1; n < 32; ++n) betas[n] = loop_beta(n);
+  detail::parallel_ranges(o.nv, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) {
+      const Halfedge start = o.vout[v];
+      if (!loop || !start.is_valid()) {
+        out[v] = p[v];
+        continue;
+      }
+      Vec3d ring{0, 0, 0}, sharp_sum{0, 0, 0};
+      std::size_t n = 0, n_sharp = 0;
+      Index h = start.idx();
+      do {
+        const Vec3d q = to_double(p[o.to[h].idx()]);
+        ring += q;
+        ++n;
+        if (o.sharp[h >> 1]) sharp_sum += q, ++n_sharp;
+        h = o.next[h ^ 1u].idx();  // clockwise about v
+      } while (h != start.idx());
+      const Vec3d pv = to_double(p[v]);
+      Vec3d np;
+      if (n_sharp > 2) {
+        np = pv;  // a corner
+      } else if (n_sharp == 2) {
+        np = pv * 0.75 + sharp_sum * 0.125;  // a boundary or crease curve
+      } else {
+        const double beta = n < 32 ? betas[n] : loop_beta(n);
+        np = pv * (1 - double(n) * beta) + ring * beta;
+      }
+      out[v] = to_float(np);
     }
-    out[v.idx()] = to_float(np);
-  }
-  for (Edge e : m.edges()) {
-    const Halfedge h = SurfaceMesh::halfedge(e, 0), t = SurfaceMesh::twin(h);
-    const Vec3d a = to_double(m.position(m.to_vertex(h))), b = to_double(m.position(m.to_vertex(t)));
-    Vec3d np = (a + b) * 0.5;
-    if (!sharp(e)) {
-      const Vec3d c = to_double(m.position(m.to_vertex(m.next(h))));
-      const Vec3d d = to_double(m.position(m.to_vertex(m.next(t))));
-      np = (a + b) * 0.375 + (c + d) * 0.125;
-    }
-    out[o.nv + e.idx()] = to_float(np);
-  }
+  });
   return out;
 }
 
 void check(const SurfaceMesh& m, Subdivision scheme, int steps) {
   if (steps < 0) throw InvalidInputError("subdivide: steps must be 0 or more, got " + std::to_string(steps));
-  if (scheme != Subdivision::catmull_clark)
+  const bool any_polygon = scheme == Subdivision::catmull_clark || scheme == Subdivision::split_faces;
+  if (!any_polygon)
     for (Face f : m.faces())
-    if (m.valence(f) != 3)
-      throw InvalidInputError("subdivide: the 1-to-4 schemes need triangles, and face " + std::to_string(f.idx()) +
-                              " has " + std::to_string(m.valence(f)) + " corners (triangulate first)");
-  // Each step multiplies the half-edges by about 4; refuse what would not fit 32-bit indices.
-  // (Catmull-Clark: each step makes 2E + H/2 edges, at most 4x the half-edges.)
-  double halfedges = double(m.n_halfedges()), faces = double(m.n_faces());
+      if (m.valence(f) != 3)
+        throw InvalidInputError(std::string("subdivide: the ") + (scheme == Subdivision::sqrt3 ? "sqrt3" : "1-to-4") +
+                                " scheme needs triangles, and face " + std::to_string(f.idx()) + " has " +
+                                std::to_string(m.valence(f)) + " corners (triangulate first)");
+  // Refuse what would not fit 32-bit indices. With H half-edges, F faces and C face corners, a step
+  // makes: Loop, midpoint 2H + 6F half-edges, 4F faces; Catmull-Clark at most 4H; split-faces and
+  // sqrt3 H + 2C half-edges and C faces of three corners.
+  double halfedges = double(m.n_halfedges()), faces = double(m.n_faces()), corners = 0;
+  for (Face f : m.faces()) corners += double(m.valence(f));
   for (int s = 0; s < steps; ++s) {
-    halfedges = scheme == Subdivision::catmull_clark ? 4 * halfedges : 2 * halfedges + 6 * faces;
-    faces *= 4;
+    if (scheme == Subdivision::catmull_clark) {
+      halfedges *= 4;
+    } else if (any_polygon || scheme == Subdivision::sqrt3) {
+      halfedges += 2 * corners;
+      faces = corners;
+      corners = 3 * faces;
+    } else {
+      halfedges = 2 * halfedges + 6 * faces;
+      faces *= 4;
+    }
     if (halfedges > double(1u << 31))
       throw InvalidInputError("subdivide: " + std::to_string(steps) + " steps would exceed 2^31 half-edges");
   }
@@ -98,19 +123,47 @@ Old read_old(SurfaceMesh& m) {
   o.nv = m.vertex_slots();
   o.ne = m.edge_slots();
   o.nf = m.face_slots();
-  o.to.resize(2 * o.ne);
-  o.next.resize(2 * o.ne);
-  o.face.resize(2 * o.ne);
-  for (std::size_t h = 0; h < 2 * o.ne; ++h) {
-    o.to[h] = m.to_vertex(Halfedge(Index(h)));
-    o.next[h] = m.next(Halfedge(Index(h)));
-    o.face[h] = m.face(Halfedge(Index(h)));
-  }
+  o.to = m.halfedge_vertex_array();
+  o.next = m.halfedge_next_array();
+  o.face = m.halfedge_face_array();
   o.vout.resize(o.nv);
   for (std::size_t v = 0; v < o.nv; ++v) o.vout[v] = m.halfedge(Vertex(Index(v)));
   o.fhe.resize(o.nf);
   for (std::size_t f = 0; f < o.nf; ++f) o.fhe[f] = m.halfedge(Face(Index(f)));
+  o.sharp.resize(o.ne);
+  const auto crease = m.get_edge_property<std::uint8_t>("e:crease");
+  for (std::size_t e = 0; e < o.ne; ++e)
+    o.sharp[e] = !o.face[2 * e].is_valid() || !o.face[2 * e + 1].is_valid() || (crease && crease[Edge(Index(e))] != 0);
   return o;
+}
+
+// For the 1-to-4 schemes: collects garbage, then resizes the mesh for the refined one (V + E
+// vertices, 2E + 3F edges, 4F faces) taking the old connectivity out of it rather than copying it.
+// Corner data is kept as resize_keeping_corners() does; returns that copy's first index.
+Index release_old(SurfaceMesh& m, Old& o) {
+  if (m.has_garbage()) m.garbage_collection();
+  o.nv = m.vertex_slots();
+  o.ne = m.edge_slots();
+  o.nf = m.face_slots();
+  const std::size_t ne = 2 * o.ne + 3 * o.nf, nh = 2 * ne;
+  SurfaceMesh::Connectivity old = m.release_connectivity(o.nv + o.ne, ne, 4 * o.nf);
+  o.to = std::move(old.h_vertex);
+  o.next = std::move(old.h_next);
+  o.face = std::move(old.h_face);
+  o.vout = std::move(old.v_halfedge);
+  o.fhe = std::move(old.f_halfedge);
+  o.sharp.resize(o.ne);
+  const auto crease = m.get_edge_property<std::uint8_t>("e:crease");
+  detail::parallel_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e)
+      o.sharp[e] = !o.face[2 * e].is_valid() || !o.face[2 * e + 1].is_valid() || (crease && crease[Edge(Index(e))] != 0);
+  });
+  PropertyContainer& hprops = m.halfedge_properties();
+  if (!hprops.empty()) {
+    hprops.resize(nh + 2 * o.ne);
+    for (std::size_t h = 0; h < 2 * o.ne; ++h) hprops.copy(h, nh + h);
+  }
+  return Index(nh);
 }
 
 // Resizes the mesh for the refined one (nv, ne, nf) and, when there is corner data, keeps a copy
@@ -128,37 +181,48 @@ Index resize_keeping_corners(SurfaceMesh& m, const Old& o, std::size_t nv, std::
 }
 
 // The halves of every old edge (with the boundary half-edges' links), the outgoing half-edges of
-// the old vertices and of the edge vertices V + e, and the halves' edge properties.
-void write_edge_halves(SurfaceMesh& m, const Old& o, Index old_base) {
+// the old vertices and of the edge vertices V + e.
+void write_edge_halves(SurfaceMesh& m, const Old& o) {
+  detail::parallel_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e) {
+      const Index h0 = Index(2 * e), h1 = h0 + 1;
+      const Vertex a = o.to[h1], b = o.to[h0], mid(Index(o.nv + e));
+      m.set_vertex(Halfedge(first_half(h0)), mid);   // a -> mid
+      m.set_vertex(Halfedge(second_half(h1)), a);    // mid -> a
+      m.set_vertex(Halfedge(second_half(h0)), b);    // mid -> b
+      m.set_vertex(Halfedge(first_half(h1)), mid);   // b -> mid
+      for (const Index h : {h0, h1}) {
+        if (o.face[h].is_valid()) continue;
+        // A boundary half-edge: both halves are boundary, linked along the loop.
+        m.set_face(Halfedge(first_half(h)), Face());
+        m.set_face(Halfedge(second_half(h)), Face());
+        m.set_next(Halfedge(first_half(h)), Halfedge(second_half(h)));
+        m.set_next(Halfedge(second_half(h)), Halfedge(first_half(o.next[h].idx())));
+      }
+      // The edge vertex's outgoing half-edge: a boundary one if the edge is on the boundary.
+      m.set_halfedge(mid, Halfedge(!o.face[h0].is_valid() ? second_half(h0)
+                                   : !o.face[h1].is_valid() ? second_half(h1)
+                                                            : second_half(h0)));
+    }
+  });
+  // Old vertices: the first half of their old outgoing half-edge (boundary stays boundary).
+  detail::parallel_ranges(o.nv, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v)
+      m.set_halfedge(Vertex(Index(v)), o.vout[v].is_valid() ? Halfedge(first_half(o.vout[v].idx())) : Halfedge());
+  });
+}
+
+// The properties of the edge halves: boundary halves' corners (the old corner values sit at
+// old_base + h), edge properties of both halves, and the edge vertices' vertex properties (the
+// average of the ends; positions are the caller's).
+void write_edge_half_properties(SurfaceMesh& m, const Old& o, Index old_base) {
   PropertyContainer& hprops = m.halfedge_properties();
-  const bool corner_data = !hprops.empty();
-  for (std::size_t e = 0; e < o.ne; ++e) {
-    const Index h0 = Index(2 * e), h1 = h0 + 1;
-    const Vertex a = o.to[h1], b = o.to[h0], mid(Index(o.nv + e));
-    m.set_vertex(Halfedge(first_half(h0)), mid);   // a -> mid
-    m.set_vertex(Halfedge(second_half(h1)), a);    // mid -> a
-    m.set_vertex(Halfedge(second_half(h0)), b);    // mid -> b
-    m.set_vertex(Halfedge(first_half(h1)), mid);   // b -> mid
-    for (const Index h : {h0, h1}) {
-      if (o.face[h].is_valid()) continue;
-      // A boundary half-edge: both halves are boundary, linked along the loop.
-      m.set_face(Halfedge(first_half(h)), Face());
-      m.set_face(Halfedge(second_half(h)), Face());
-      m.set_next(Halfedge(first_half(h)), Halfedge(second_half(h)));
-      m.set_next(Halfedge(second_half(h)), Halfedge(first_half(o.next[h].idx())));
-      if (corner_data) {
+  if (!hprops.empty())
+    for (Index h = 0; h < 2 * o.ne; ++h)
+      if (!o.face[h].is_valid()) {
         hprops.copy(old_base + h, first_half(h));
         hprops.copy(old_base + h, second_half(h));
       }
-    }
-    // The edge vertex's outgoing half-edge: a boundary one if the edge is on the boundary.
-    m.set_halfedge(mid, Halfedge(!o.face[h0].is_valid() ? second_half(h0)
-                                 : !o.face[h1].is_valid() ? second_half(h1)
-                                                          : second_half(h0)));
-  }
-  // Old vertices: the first half of their old outgoing half-edge (boundary stays boundary).
-  for (std::size_t v = 0; v < o.nv; ++v)
-    m.set_halfedge(Vertex(Index(v)), o.vout[v].is_valid() ? Halfedge(first_half(o.vout[v].idx())) : Halfedge());
   // Edge properties: both halves; going from the last edge down never overwrites one still to read.
   PropertyContainer& eprops = m.edge_properties();
   if (!eprops.empty())
@@ -166,71 +230,82 @@ void write_edge_halves(SurfaceMesh& m, const Old& o, Index old_base) {
       eprops.copy(e, 2 * e + 1);
       eprops.copy(e, 2 * e);
     }
-  // Vertex properties of the edge vertices: the average of the ends (positions too, for now).
-  const float half[2] = {0.5f, 0.5f};
-  for (std::size_t e = 0; e < o.ne; ++e) {
-    const Index ends[2] = {o.to[2 * e].idx(), o.to[2 * e + 1].idx()};
-    m.vertex_properties().interpolate(o.nv + e, ends, half, 2);
+  PropertyContainer& vprops = m.vertex_properties();
+  if (vprops.array_count() > 1) {
+    const float half[2] = {0.5f, 0.5f};
+    for (std::size_t e = 0; e < o.ne; ++e) {
+      const Index ends[2] = {o.to[2 * e].idx(), o.to[2 * e + 1].idx()};
+      vprops.interpolate(o.nv + e, ends, half, 2, m.positions().array());
+    }
   }
 }
 
 void refine_1_to_4(SurfaceMesh& m, Subdivision scheme) {
-  Old o = read_old(m);
-  const std::vector<Vec3> positions = scheme == Subdivision::loop ? loop_positions(m, o) : std::vector<Vec3>{};
-  const std::size_t nv = o.nv + o.ne, ne = 2 * o.ne + 3 * o.nf, nf = 4 * o.nf, nh = 2 * ne;
-  const Index old_base = resize_keeping_corners(m, o, nv, ne, nf);
-  PropertyContainer& hprops = m.halfedge_properties();
-  const bool corner_data = !hprops.empty();
-  write_edge_halves(m, o, old_base);
+  Old o;
+  const Index old_base = release_old(m, o);
+  // The old positions are the first V of the grown array.
+  std::vector<Vec3> positions = positions_1_to_4(m, o, scheme == Subdivision::loop);
+  const std::size_t nh = old_base;
+  write_edge_halves(m, o);
+  write_edge_half_properties(m, o, old_base);
   // Faces: three corner triangles and the middle one.
-  for (std::size_t f = 0; f < o.nf; ++f) {
-    Index h[3];
-    h[0] = o.fhe[f].idx();
-    h[1] = o.next[h[0]].idx();
-    h[2] = o.next[h[1]].idx();
-    const Index base_edge = Index(2 * o.ne + 3 * f);
-    for (int k = 0; k < 3; ++k) {
-      const int k1 = (k + 1) % 3;
-      const Halfedge s(second_half(h[k])), fi(first_half(h[k1]));
-      const Halfedge in(2 * (base_edge + Index(k)));     // m_{k+1} -> m_k, in the corner face
-      const Halfedge out(2 * (base_edge + Index(k)) + 1);  // m_k -> m_{k+1}, in the middle face
-      const Face corner(Index(4 * f + Index(k))), middle(Index(4 * f + 3));
-      const Vertex mk(Index(o.nv + (h[k] >> 1))), mk1(Index(o.nv + (h[k1] >> 1)));
-      m.set_vertex(in, mk);
-      m.set_vertex(out, mk1);
-      m.set_next(s, fi);
-      m.set_next(fi, in);
-      m.set_next(in, s);
-      m.set_face(s, corner);
-      m.set_face(fi, corner);
-      m.set_face(in, corner);
-      m.set_halfedge(corner, s);
-      m.set_next(out, Halfedge(2 * (base_edge + Index(k1)) + 1));
-      m.set_face(out, middle);
-      if (k == 0) m.set_halfedge(middle, out);
-      if (corner_data) {
-        // Corners: s enters the old corner to(h[k]); fi enters the middle of h[k1]; in enters the
-        // middle of h[k]; out enters the middle of h[k1]. A middle averages the face's own corners
-        // at the ends of its edge, so that values across a seam never mix.
-        const Index k_1 = Index((k + 2) % 3);
-        const float half[2] = {0.5f, 0.5f};
-        const Index mid_k[2] = {old_base + h[k_1], old_base + h[k]};
-        const Index mid_k1[2] = {old_base + h[k], old_base + h[k1]};
-        hprops.copy(old_base + h[k], s.idx());
-        hprops.interpolate(fi.idx(), mid_k1, half, 2);
-        hprops.interpolate(in.idx(), mid_k, half, 2);
-        hprops.interpolate(out.idx(), mid_k1, half, 2);
+  detail::parallel_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      Index h[3];
+      h[0] = o.fhe[f].idx();
+      h[1] = o.next[h[0]].idx();
+      h[2] = o.next[h[1]].idx();
+      const Index base_edge = Index(2 * o.ne + 3 * f);
+      for (int k = 0; k < 3; ++k) {
+        const int k1 = (k + 1) % 3;
+        const Halfedge s(second_half(h[k])), fi(first_half(h[k1]));
+        const Halfedge in(2 * (base_edge + Index(k)));       // m_{k+1} -> m_k, in the corner face
+        const Halfedge out(2 * (base_edge + Index(k)) + 1);  // m_k -> m_{k+1}, in the middle face
+        const Face corner(Index(4 * f + Index(k))), middle(Index(4 * f + 3));
+        m.set_vertex(in, Vertex(Index(o.nv + (h[k] >> 1))));
+        m.set_vertex(out, Vertex(Index(o.nv + (h[k1] >> 1))));
+        m.set_next(s, fi);
+        m.set_next(fi, in);
+        m.set_next(in, s);
+        m.set_face(s, corner);
+        m.set_face(fi, corner);
+        m.set_face(in, corner);
+        m.set_halfedge(corner, s);
+        m.set_next(out, Halfedge(2 * (base_edge + Index(k1)) + 1));
+        m.set_face(out, middle);
+        if (k == 0) m.set_halfedge(middle, out);
       }
     }
+  });
+  PropertyContainer& hprops = m.halfedge_properties();
+  if (!hprops.empty()) {
+    // Corners: s enters the old corner to(h[k]); fi enters the middle of h[k1]; in enters the
+    // middle of h[k]; out enters the middle of h[k1]. A middle averages the face's own corners at
+    // the ends of its edge, so that values across a seam never mix.
+    const float half[2] = {0.5f, 0.5f};
+    for (std::size_t f = 0; f < o.nf; ++f) {
+      Index h[3];
+      h[0] = o.fhe[f].idx();
+      h[1] = o.next[h[0]].idx();
+      h[2] = o.next[h[1]].idx();
+      const Index base_edge = Index(2 * o.ne + 3 * f);
+      for (int k = 0; k < 3; ++k) {
+        const int k1 = (k + 1) % 3, k_1 = (k + 2) % 3;
+        const Index mid_k[2] = {old_base + h[k_1], old_base + h[k]};
+        const Index mid_k1[2] = {old_base + h[k], old_base + h[k1]};
+        hprops.copy(old_base + h[k], second_half(h[k]));
+        hprops.interpolate(first_half(h[k1]), mid_k1, half, 2);
+        hprops.interpolate(2 * (base_edge + Index(k)), mid_k, half, 2);
+        hprops.interpolate(2 * (base_edge + Index(k)) + 1, mid_k1, half, 2);
+      }
+    }
+    hprops.resize(nh);
   }
-  if (corner_data) hprops.resize(nh);
-
   PropertyContainer& fprops = m.face_properties();
   if (!fprops.empty())
     for (std::size_t f = o.nf; f-- > 0;)
       for (std::size_t k = 4; k-- > 0;) fprops.copy(f, 4 * f + k);
-  if (scheme == Subdivision::loop)
-    for (std::size_t v = 0; v < nv; ++v) m.position(Vertex(Index(v))) = positions[v];
+  m.positions().vector().swap(positions);
 }
 
 
@@ -242,51 +317,56 @@ void refine_1_to_4(SurfaceMesh& m, Subdivision scheme) {
 
 std::vector<Vec3> catmull_clark_positions(const SurfaceMesh& m, const Old& o) {
   std::vector<Vec3> out(o.nv + o.ne + o.nf);
-  std::vector<Vec3d> face_point(o.nf, Vec3d{0, 0, 0});
-  for (Face f : m.faces()) {
-    Vec3d c{0, 0, 0};
-    std::size_t n = 0;
-    for (Vertex v : m.vertices(f)) c += to_double(m.position(v)), ++n;
-    face_point[f.idx()] = c * (1.0 / double(n));
-    out[o.nv + o.ne + f.idx()] = to_float(face_point[f.idx()]);
-  }
-  const auto crease = m.get_edge_property<std::uint8_t>("e:crease");
-  auto sharp = [&](Edge e) { return m.is_boundary(e) || (crease && crease[e] != 0); };
-  for (Edge e : m.edges()) {
-    const Halfedge h = SurfaceMesh::halfedge(e, 0), t = SurfaceMesh::twin(h);
-    const Vec3d a = to_double(m.position(m.to_vertex(h))), b = to_double(m.position(m.to_vertex(t)));
-    Vec3d p = (a + b) * 0.5;
-    if (!sharp(e)) p = (a + b + face_point[m.face(h).idx()] + face_point[m.face(t).idx()]) * 0.25;
-    out[o.nv + e.idx()] = to_float(p);
-  }
-  for (Vertex v : m.vertices()) {
-    const Vec3d s = to_double(m.position(v));
-    out[v.idx()] = m.position(v);
-    if (m.is_isolated(v)) continue;
-    Vec3d faces{0, 0, 0}, mids{0, 0, 0}, sharp_sum{0, 0, 0};
-    std::size_t n = 0, n_faces = 0, n_sharp = 0;
-    for (Halfedge h : m.halfedges(v)) {
-      const Vec3d w = to_double(m.position(m.to_vertex(h)));
-      mids += (s + w) * 0.5;
-      ++n;
-      if (m.face(h).is_valid()) faces += face_point[m.face(h).idx()], ++n_faces;
-      if (sharp(SurfaceMesh::edge(h))) sharp_sum += w, ++n_sharp;
+  std::vector<Vec3d> face_point(o.nf);
+  detail::parallel_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      Vec3d c{0, 0, 0};
+      std::size_t n = 0;
+      for (Vertex v : m.vertices(Face(Index(f)))) c += to_double(m.position(v)), ++n;
+      face_point[f] = c * (1.0 / double(n));
+      out[o.nv + o.ne + f] = to_float(face_point[f]);
     }
-    Vec3d p = s;
-    if (n_sharp == 2) {
-      p = s * 0.75 + sharp_sum * 0.125;
-    } else if (n_sharp < 2 && n_faces > 0) {
-      const double k = double(n);
-      p = (faces * (1.0 / double(n_faces)) + mids * (2.0 / k) + s * (k - 3)) * (1.0 / k);
+  });
+  detail::parallel_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e) {
+      const Halfedge h(Index(2 * e)), t(Index(2 * e + 1));
+      const Vec3d a = to_double(m.position(o.to[h.idx()])), b = to_double(m.position(o.to[t.idx()]));
+      Vec3d p = (a + b) * 0.5;
+      if (!o.sharp[e]) p = (a + b + face_point[o.face[h.idx()].idx()] + face_point[o.face[t.idx()].idx()]) * 0.25;
+      out[o.nv + e] = to_float(p);
     }
-    out[v.idx()] = to_float(p);
-  }
+  });
+  detail::parallel_ranges(o.nv, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t vi = begin; vi < end; ++vi) {
+      const Vertex v{Index(vi)};
+      const Vec3d s = to_double(m.position(v));
+      out[vi] = m.position(v);
+      if (m.is_isolated(v)) continue;
+      Vec3d faces{0, 0, 0}, mids{0, 0, 0}, sharp_sum{0, 0, 0};
+      std::size_t n = 0, n_faces = 0, n_sharp = 0;
+      for (Halfedge h : m.halfedges(v)) {
+        const Vec3d w = to_double(m.position(m.to_vertex(h)));
+        mids += (s + w) * 0.5;
+        ++n;
+        if (m.face(h).is_valid()) faces += face_point[m.face(h).idx()], ++n_faces;
+        if (o.sharp[h.idx() >> 1]) sharp_sum += w, ++n_sharp;
+      }
+      Vec3d p = s;
+      if (n_sharp == 2) {
+        p = s * 0.75 + sharp_sum * 0.125;
+      } else if (n_sharp < 2 && n_faces > 0) {
+        const double k = double(n);
+        p = (faces * (1.0 / double(n_faces)) + mids * (2.0 / k) + s * (k - 3)) * (1.0 / k);
+      }
+      out[vi] = to_float(p);
+    }
+  });
   return out;
 }
 
 void refine_catmull_clark(SurfaceMesh& m) {
   Old o = read_old(m);
-  const std::vector<Vec3> positions = catmull_clark_positions(m, o);
+  std::vector<Vec3> positions = catmull_clark_positions(m, o);
   // q(h) for the half-edges of faces.
   std::vector<Index> q(2 * o.ne, kInvalidIndex);
   Index quads = 0;
@@ -296,13 +376,43 @@ void refine_catmull_clark(SurfaceMesh& m) {
   const Index old_base = resize_keeping_corners(m, o, nv, ne, nf);
   PropertyContainer& hprops = m.halfedge_properties();
   const bool corner_data = !hprops.empty();
-  write_edge_halves(m, o, old_base);
+  write_edge_halves(m, o);
+  write_edge_half_properties(m, o, old_base);
   const Index inner = Index(2 * o.ne);
   auto to_centre = [&](Index h) { return Halfedge(2 * (inner + q[h])); };
   auto from_centre = [&](Index h) { return Halfedge(2 * (inner + q[h]) + 1); };
+  detail::parallel_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      const Vertex centre(Index(o.nv + o.ne + f));
+      const Index start = o.fhe[f].idx();
+      Index hk = start;
+      do {
+        const Index hn = o.next[hk].idx();
+        const Halfedge s(second_half(hk)), fi(first_half(hn)), in = to_centre(hn), out = from_centre(hk);
+        const Face quad(q[hk]);
+        m.set_vertex(in, centre);
+        m.set_vertex(out, Vertex(Index(o.nv + (hk >> 1))));
+        m.set_next(s, fi);
+        m.set_next(fi, in);
+        m.set_next(in, out);
+        m.set_next(out, s);
+        m.set_face(s, quad);
+        m.set_face(fi, quad);
+        m.set_face(in, quad);
+        m.set_face(out, quad);
+        m.set_halfedge(quad, s);
+        hk = hn;
+      } while (hk != start);
+      m.set_halfedge(centre, from_centre(start));
+    }
+  });
+  // The face point's vertex properties, and the corners: at old vertices copied, at edge middles
+  // the average of the face's own corners at the edge's ends, at the face point the average of the
+  // face's corners.
   std::vector<Index> ring, corners, old_corners;  // per face, reused
   std::vector<float> weights;
-  for (std::size_t f = 0; f < o.nf; ++f) {
+  const bool vertex_data = m.vertex_properties().array_count() > 1;
+  for (std::size_t f = 0; f < o.nf && (vertex_data || corner_data); ++f) {
     const Vertex centre(Index(o.nv + o.ne + f));
     ring.clear();
     Index h = o.fhe[f].idx();
@@ -311,41 +421,23 @@ void refine_catmull_clark(SurfaceMesh& m) {
       h = o.next[h].idx();
     } while (h != o.fhe[f].idx());
     const std::size_t n = ring.size();
-    for (std::size_t k = 0; k < n; ++k) {
-      const Index hk = ring[k], hn = ring[(k + 1) % n], hp = ring[(k + n - 1) % n];
-      const Halfedge s(second_half(hk)), fi(first_half(hn)), in = to_centre(hn), out = from_centre(hk);
-      const Face quad(q[hk]);
-      m.set_vertex(in, centre);
-      m.set_vertex(out, Vertex(Index(o.nv + (hk >> 1))));
-      m.set_next(s, fi);
-      m.set_next(fi, in);
-      m.set_next(in, out);
-      m.set_next(out, s);
-      m.set_face(s, quad);
-      m.set_face(fi, quad);
-      m.set_face(in, quad);
-      m.set_face(out, quad);
-      m.set_halfedge(quad, s);
-      if (corner_data) {
-        const float half[2] = {0.5f, 0.5f};
-        const Index mid_k[2] = {old_base + hp, old_base + hk};
-        const Index mid_n[2] = {old_base + hk, old_base + hn};
-        hprops.copy(old_base + hk, s.idx());
-        hprops.interpolate(fi.idx(), mid_n, half, 2);
-        hprops.interpolate(out.idx(), mid_k, half, 2);
-      }
-    }
-    m.set_halfedge(centre, from_centre(ring[0]));
-    // The face point's vertex properties, and the corners at it: the average of the face's corners.
     weights.assign(n, 1.f / float(n));
     corners.resize(n);
     for (std::size_t k = 0; k < n; ++k) corners[k] = o.to[ring[k]].idx();
-    m.vertex_properties().interpolate(centre.idx(), corners.data(), weights.data(), n);
-    if (corner_data) {
-      old_corners.resize(n);
-      for (std::size_t k = 0; k < n; ++k) old_corners[k] = old_base + ring[k];
-      for (std::size_t k = 0; k < n; ++k) hprops.interpolate(to_centre(ring[k]).idx(), old_corners.data(), weights.data(), n);
+    if (vertex_data) m.vertex_properties().interpolate(centre.idx(), corners.data(), weights.data(), n, m.positions().array());
+    if (!corner_data) continue;
+    const float half[2] = {0.5f, 0.5f};
+    for (std::size_t k = 0; k < n; ++k) {
+      const Index hk = ring[k], hn = ring[(k + 1) % n], hp = ring[(k + n - 1) % n];
+      const Index mid_k[2] = {old_base + hp, old_base + hk};
+      const Index mid_n[2] = {old_base + hk, old_base + hn};
+      hprops.copy(old_base + hk, second_half(hk));
+      hprops.interpolate(first_half(hn), mid_n, half, 2);
+      hprops.interpolate(from_centre(hk).idx(), mid_k, half, 2);
     }
+    old_corners.resize(n);
+    for (std::size_t k = 0; k < n; ++k) old_corners[k] = old_base + ring[k];
+    for (std::size_t k = 0; k < n; ++k) hprops.interpolate(to_centre(ring[k]).idx(), old_corners.data(), weights.data(), n);
   }
   if (corner_data) hprops.resize(2 * ne);
   // Face properties: quad q(h) takes face(h). Quads are numbered by half-edge, not by face, so a
@@ -362,19 +454,215 @@ void refine_catmull_clark(SurfaceMesh& m) {
       } while (h != o.fhe[f].idx());
     }
   }
-  for (std::size_t v = 0; v < nv; ++v) m.position(Vertex(Index(v))) = positions[v];
+  m.positions().vector().swap(positions);
+}
+
+
+// ---- Splitting at face centres, and Kobbelt's sqrt(3) ----
+// Old vertices, edges and half-edges keep their index; face f's centre is vertex V + f. Face f's
+// half-edges h_0..h_{n-1} (from halfedge(f)) get the compact numbers q = first[f] + k, the running
+// sum of the face degrees, so for triangles q = 3f + k. The spoke from the centre to to(h_k) is edge
+// E + q, whose half-edge in(q) = 2(E + q) runs to the centre and out(q) = 2(E + q) + 1 away from it.
+// Face q is the triangle at h_k: h_k, in(q), out(q - 1) when split. sqrt(3) then flips every edge it
+// may: the triangle at h_k becomes in(q(twin h_k)), h_k, out(q - 1), h_k now running from the far
+// face's centre to its own face's centre.
+
+struct Split {
+  std::size_t nv = 0, ne = 0, nf = 0;
+  std::vector<Index> first;  // per face, and the total at the end
+  std::vector<Index> ring;   // face half-edges in face order: ring[first[f] + k] = h_k
+};
+
+Split face_rings(const SurfaceMesh& m) {
+  Split s;
+  s.nv = m.vertex_slots();
+  s.ne = m.edge_slots();
+  s.nf = m.face_slots();
+  const std::vector<Halfedge>& next = m.halfedge_next_array();
+  auto degree = [&](std::size_t f) {
+    const Halfedge start = m.halfedge(Face(Index(f)));
+    Index n = 0;
+    Halfedge h = start;
+    do h = next[h.idx()], ++n;
+    while (h != start);
+    return n;
+  };
+  s.first.resize(s.nf + 1);
+  detail::parallel_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) s.first[f + 1] = degree(f);
+  });
+  s.first[0] = 0;
+  for (std::size_t f = 0; f < s.nf; ++f) s.first[f + 1] += s.first[f];
+  s.ring.resize(s.first[s.nf]);
+  detail::parallel_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      Halfedge h = m.halfedge(Face(Index(f)));
+      for (Index c = s.first[f]; c < s.first[f + 1]; ++c, h = next[h.idx()]) s.ring[c] = h.idx();
+    }
+  });
+  return s;
+}
+
+// Kobbelt's smoothing of the old vertices: (1 - a) p + a * (mean of the ring), a = (4 - 2 cos(2 pi / n)) / 9.
+// A vertex on two or more sharp edges (boundary or "e:crease") stays: those edges are not refined.
+std::vector<Vec3> sqrt3_positions(const SurfaceMesh& m, const std::vector<std::uint8_t>& keep) {
+  std::vector<Vec3> out(m.vertex_slots());
+  const Vec3* p = m.positions().vector().data();
+  const std::vector<Vertex>& to = m.halfedge_vertex_array();
+  const std::vector<Halfedge>& next = m.halfedge_next_array();
+  double alphas[32];
+  for (std::size_t n = 1; n < 32; ++n) alphas[n] = (4 - 2 * std::cos(2 * std::numbers::pi / double(n))) / 9;
+  detail::parallel_ranges(out.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) {
+      out[v] = p[v];
+      const Halfedge start = m.halfedge(Vertex(Index(v)));
+      if (!start.is_valid()) continue;
+      Vec3d ring{0, 0, 0};
+      std::size_t n = 0, n_sharp = 0;
+      Index h = start.idx();
+      do {
+        ring += to_double(p[to[h].idx()]);
+        ++n;
+        n_sharp += keep[h >> 1];
+        h = next[h ^ 1u].idx();  // clockwise about v
+      } while (h != start.idx());
+      if (n_sharp >= 2) continue;
+      const double a = n < 32 ? alphas[n] : (4 - 2 * std::cos(2 * std::numbers::pi / double(n))) / 9;
+      out[v] = to_float(to_double(p[v]) * (1 - a) + ring * (a / double(n)));
+    }
+  });
+  return out;
+}
+
+void refine_at_centres(SurfaceMesh& m, bool sqrt3) {
+  if (m.has_garbage()) m.garbage_collection();
+  const Split s = face_rings(m);
+  const std::size_t nc = s.ring.size();
+  const Index E = Index(s.ne), V = Index(s.nv);
+  // Which edges sqrt(3) leaves unflipped (boundary and crease edges), and each half-edge's q.
+  std::vector<std::uint8_t> keep;
+  std::vector<Index> q;
+  std::vector<Vec3> smoothed;
+  if (sqrt3) {
+    keep.resize(s.ne);
+    const auto crease = m.get_edge_property<std::uint8_t>("e:crease");
+    detail::parallel_ranges(s.ne, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t e = begin; e < end; ++e)
+        keep[e] = m.is_boundary(Edge(Index(e))) || (crease && crease[Edge(Index(e))] != 0);
+    });
+    q.resize(2 * s.ne);  // boundary half-edges' entries are never read
+    detail::parallel_ranges(nc, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) q[s.ring[i]] = Index(i);
+    });
+    smoothed = sqrt3_positions(m, keep);
+  }
+  // Face centroids, summed in double as face_centroid() does.
+  std::vector<Vec3> centres(s.nf);
+  detail::parallel_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
+    const Vec3* p = m.positions().vector().data();
+    const std::vector<Vertex>& to = m.halfedge_vertex_array();
+    for (std::size_t f = begin; f < end; ++f) {
+      Vec3d c{0, 0, 0};
+      for (Index i = s.first[f]; i < s.first[f + 1]; ++i) c += to_double(p[to[s.ring[i]].idx()]);
+      centres[f] = to_float(c / double(s.first[f + 1] - s.first[f]));
+    }
+  });
+
+  m.resize(s.nv + s.nf, s.ne + nc, nc);
+  auto in = [&](Index c) { return Halfedge(2 * (E + c)); };
+  auto out = [&](Index c) { return Halfedge(2 * (E + c) + 1); };
+  detail::parallel_ranges(s.nf, [&](std::size_t f_begin, std::size_t f_end) {
+    for (std::size_t f = f_begin; f < f_end; ++f) {
+      const Index b = s.first[f], n = s.first[f + 1] - b;
+      const Vertex centre(V + Index(f));
+      // The corners first: sqrt(3) turns to(h_k) toward the centre below.
+      for (Index k = 0; k < n; ++k) {
+        const Halfedge h(s.ring[b + k]);
+        m.set_vertex(in(b + k), centre);
+        m.set_vertex(out(b + k), m.to_vertex(h));
+      }
+      for (Index k = 0; k < n; ++k) {
+        const Index c = b + k, cp = b + (k + n - 1) % n;
+        const Halfedge h(s.ring[c]);
+        const Face child(c);
+        Halfedge lead = in(c);  // the half-edge before h's successor: in(c) when split
+        if (sqrt3 && !keep[h.idx() >> 1]) {
+          lead = in(q[h.idx() ^ 1u]);
+          m.set_vertex(h, centre);
+          m.set_next(lead, h);
+          m.set_next(h, out(cp));
+        } else {
+          m.set_next(h, lead);
+          m.set_next(lead, out(cp));
+        }
+        m.set_next(out(cp), sqrt3 && !keep[h.idx() >> 1] ? lead : h);
+        m.set_face(h, child);
+        m.set_face(lead, child);
+        m.set_face(out(cp), child);
+        m.set_halfedge(child, h);
+      }
+      m.set_halfedge(centre, out(b));
+    }
+  });
+  // An interior old vertex whose outgoing half-edge was flipped leaves by the spoke of that edge's twin.
+  if (sqrt3)
+    detail::parallel_ranges(s.nv, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t v = begin; v < end; ++v) {
+        const Halfedge o = m.halfedge(Vertex(Index(v)));
+        if (o.is_valid() && !m.is_boundary(o) && !keep[o.idx() >> 1])
+          m.set_halfedge(Vertex(Index(v)), in(q[o.idx() ^ 1u]));
+      }
+    });
+
+  // Properties. Vertex: the centre averages its face's corners. Corner: in(q) enters the centre and
+  // averages the face's own corners; out(q - 1) enters from(h_k) and takes the corner before h_k;
+  // a flipped h_k enters its face's centre. Edge: old edges keep theirs (a flipped edge too), spokes
+  // get the default. Face: the children of f take f's.
+  std::vector<float> weights;
+  std::vector<Index> corners;
+  PropertyContainer& hprops = m.halfedge_properties();
+  const bool vertex_data = m.vertex_properties().array_count() > 1;
+  for (std::size_t f = 0; f < s.nf && (vertex_data || !hprops.empty()); ++f) {
+    const Index b = s.first[f], n = s.first[f + 1] - b;
+    weights.assign(n, 1.f / float(n));
+    corners.resize(n);
+    for (Index k = 0; k < n; ++k) corners[k] = m.to_vertex(out(b + k)).idx();
+    if (vertex_data)
+      m.vertex_properties().interpolate(V + f, corners.data(), weights.data(), n, m.positions().array());
+    if (hprops.empty()) continue;
+    hprops.interpolate(in(b).idx(), &s.ring[b], weights.data(), n);
+    for (Index k = 0; k < n; ++k) {
+      if (k > 0) hprops.copy(in(b).idx(), in(b + k).idx());
+      hprops.copy(s.ring[b + (k + n - 1) % n], out(b + (k + n - 1) % n).idx());
+    }
+  }
+  if (sqrt3 && !hprops.empty())
+    for (std::size_t c = 0; c < nc; ++c)
+      if (!keep[s.ring[c] >> 1]) hprops.copy(in(Index(c)).idx(), s.ring[c]);
+  PropertyContainer& fprops = m.face_properties();
+  if (!fprops.empty())
+    for (std::size_t f = s.nf; f-- > 0;)
+      for (Index c = s.first[f + 1]; c-- > s.first[f];) fprops.copy(f, c);
+  for (std::size_t f = 0; f < s.nf; ++f) m.position(Vertex(V + Index(f))) = centres[f];
+  if (sqrt3)
+    for (std::size_t v = 0; v < s.nv; ++v) m.position(Vertex(Index(v))) = smoothed[v];
 }
 
 }  // namespace
 
-void subdivide(SurfaceMesh& mesh, Subdivision scheme, int steps) {
+void subdivide(SurfaceMesh& mesh, Subdivision scheme, int steps, const Progress& progress) {
   check(mesh, scheme, steps);
+  report_progress(progress, 0);
   for (int s = 0; s < steps; ++s) {
-    if (scheme == Subdivision::catmull_clark) {
-      refine_catmull_clark(mesh);
-    } else {
-      refine_1_to_4(mesh, scheme);
+    switch (scheme) {
+      case Subdivision::catmull_clark: refine_catmull_clark(mesh); break;
+      case Subdivision::sqrt3: refine_at_centres(mesh, true); break;
+      case Subdivision::split_faces: refine_at_centres(mesh, false); break;
+      default: refine_1_to_4(mesh, scheme);
     }
+    // Each step costs about as much as all the steps before it together times the growth (4 or 3).
+    const double growth = scheme == Subdivision::sqrt3 || scheme == Subdivision::split_faces ? 3 : 4;
+    report_progress(progress, (std::pow(growth, s + 1) - 1) / (std::pow(growth, steps) - 1));
   }
   if (steps > 0) mesh.changes().notify();
 }

@@ -240,14 +240,16 @@ hedge_status hedge_mesh_decimate(hedge_mesh* mesh, const hedge_decimate_options*
 hedge_status hedge_mesh_subdivide(hedge_mesh* mesh, int32_t scheme, int32_t steps) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    if (scheme != HEDGE_SUBDIVISION_LOOP && scheme != HEDGE_SUBDIVISION_MIDPOINT &&
-        scheme != HEDGE_SUBDIVISION_CATMULL_CLARK)
+    if (scheme < HEDGE_SUBDIVISION_LOOP || scheme > HEDGE_SUBDIVISION_SPLIT_FACES)
       fail(HEDGE_ERROR_INVALID_ARGUMENT,
-           "scheme must be HEDGE_SUBDIVISION_LOOP, _MIDPOINT or _CATMULL_CLARK, got " + std::to_string(scheme));
+           "scheme must be HEDGE_SUBDIVISION_LOOP, _MIDPOINT, _CATMULL_CLARK, _SQRT3 or _SPLIT_FACES, got " +
+               std::to_string(scheme));
     if (steps < 0 || steps > 12) fail(HEDGE_ERROR_INVALID_ARGUMENT, "steps must be in 0..12, got " + std::to_string(steps));
-    const Subdivision s = scheme == HEDGE_SUBDIVISION_LOOP       ? Subdivision::loop
-                          : scheme == HEDGE_SUBDIVISION_MIDPOINT ? Subdivision::midpoint
-                                                                 : Subdivision::catmull_clark;
+    const Subdivision s = scheme == HEDGE_SUBDIVISION_LOOP          ? Subdivision::loop
+                          : scheme == HEDGE_SUBDIVISION_MIDPOINT    ? Subdivision::midpoint
+                          : scheme == HEDGE_SUBDIVISION_SQRT3       ? Subdivision::sqrt3
+                          : scheme == HEDGE_SUBDIVISION_SPLIT_FACES ? Subdivision::split_faces
+                                                                    : Subdivision::catmull_clark;
     subdivide(object->mesh, s, steps);
   });
 }

@@ -7,6 +7,10 @@
 #include <type_traits>
 #include <utility>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 namespace hedge {
 
 namespace {
@@ -213,17 +217,54 @@ void SurfaceMesh::reserve(std::size_t n_v, std::size_t n_e, std::size_t n_f) {
   fprops_.reserve(n_f);
 }
 
+namespace {
+// Resizes v to n. A large growth (a subdivision step, a big build) goes to a fresh block that is
+// advised for transparent huge pages before anything touches it: first touches of fresh memory
+// (one page fault and one page clear per 4 KB) measured a third of a subdivision step's time on
+// a 1.38M-triangle mesh, and a huge page takes one fault per 2 MB. Only advice: where the system
+// does not take it, nothing changes.
+template <typename T>
+void resize_for_rebuild(std::vector<T>& v, std::size_t n) {
+  constexpr std::size_t kHuge = std::size_t(2) << 20;
+  if (n <= v.capacity() || n * sizeof(T) < 4 * kHuge) {
+    v.resize(n);
+    return;
+  }
+  std::vector<T> fresh;
+  fresh.reserve(n);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(fresh.data()) + kHuge - 1) & ~(kHuge - 1);
+  const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(fresh.data() + n) & ~(kHuge - 1);
+  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#endif
+  fresh.insert(fresh.end(), v.begin(), v.end());
+  fresh.resize(n);
+  v.swap(fresh);
+}
+}  // namespace
+
+SurfaceMesh::Connectivity SurfaceMesh::release_connectivity(std::size_t n_v, std::size_t n_e, std::size_t n_f) {
+  Connectivity old;
+  old.h_vertex.swap(h_vertex_);
+  old.h_next.swap(h_next_);
+  old.h_face.swap(h_face_);
+  old.v_halfedge.swap(v_halfedge_);
+  old.f_halfedge.swap(f_halfedge_);
+  resize(n_v, n_e, n_f);
+  return old;
+}
+
 void SurfaceMesh::resize(std::size_t n_v, std::size_t n_e, std::size_t n_f) {
-  v_halfedge_.resize(n_v);
+  resize_for_rebuild(h_vertex_, 2 * n_e);
+  resize_for_rebuild(h_next_, 2 * n_e);
+  resize_for_rebuild(h_face_, 2 * n_e);
+  resize_for_rebuild(v_halfedge_, n_v);
+  resize_for_rebuild(f_halfedge_, n_f);
   v_deleted_.resize(n_v, false);
   vprops_.resize(n_v);
-  h_vertex_.resize(2 * n_e);
-  h_next_.resize(2 * n_e);
-  h_face_.resize(2 * n_e);
   e_deleted_.resize(n_e, false);
   hprops_.resize(2 * n_e);
   eprops_.resize(n_e);
-  f_halfedge_.resize(n_f);
   f_deleted_.resize(n_f, false);
   fprops_.resize(n_f);
   changes_.mark_reset();

@@ -37,5 +37,20 @@ TEST(SplitAllFaces, QuadsBecomeFourTrianglesAboutTheirCentroids) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+TEST(SplitAllFaces, WithGarbageEveryIndexStays) {
+  SurfaceMesh m = build(test::grid(3, true));
+  ASSERT_TRUE(remove_face(m, Face(4)));
+  const std::size_t faces = m.n_faces(), slots = m.vertex_slots();
+  const SurfaceMesh before = m;
+  const std::vector<Vertex> added = split_all_faces(m);
+  EXPECT_EQ(added.size(), faces);
+  EXPECT_TRUE(m.has_garbage());
+  EXPECT_TRUE(m.is_deleted(Face(4)));
+  for (Vertex v : added) EXPECT_GE(v.idx(), slots);
+  for (Vertex v : before.vertices()) EXPECT_EQ(m.position(v), before.position(v));
+  EXPECT_EQ(m.n_faces(), 3 * faces);
+  EXPECT_TRUE(m.validate().empty());
+}
+
 }  // namespace
 }  // namespace hedge

@@ -1662,6 +1662,13 @@ static void test_subdivide(void) {
   CHECK(counts_of(grid).faces == 4);
   CHECK_OK(hedge_mesh_subdivide(grid, HEDGE_SUBDIVISION_CATMULL_CLARK, 1));
   CHECK(counts_of(grid).faces == 16 && counts_of(grid).vertices == 25);
+  CHECK_STATUS(hedge_mesh_subdivide(grid, HEDGE_SUBDIVISION_SPLIT_FACES + 1, 1), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_OK(hedge_mesh_subdivide(grid, HEDGE_SUBDIVISION_SPLIT_FACES, 1)); /* quads fan into 4 triangles */
+  CHECK(counts_of(grid).faces == 64 && counts_of(grid).vertices == 41);
+  CHECK_OK(hedge_mesh_subdivide(grid, HEDGE_SUBDIVISION_SQRT3, 2));
+  CHECK(counts_of(grid).faces == 9 * 64 && counts_of(grid).vertices == 41 + 64 + 192);
+  CHECK_OK(hedge_mesh_validate(grid, &problems));
+  CHECK(problems == 0);
   /* A render object of the mesh rebuilds at its next sync: 64 triangles. */
   hedge_render* render = NULL;
   CHECK_OK(hedge_render_create(tet, NULL, &render));

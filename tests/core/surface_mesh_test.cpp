@@ -236,5 +236,38 @@ TEST(SurfaceMesh, MemoryPerVertexOfClosedTriangleMesh) {
   EXPECT_LE(m.memory_bytes(), arrays + 3 * 8);
 }
 
+TEST(SurfaceMesh, ReleaseConnectivityHandsTheOldLinksOverAndResizes) {
+  SurfaceMesh m = build(tetrahedron());
+  auto id = m.add_face_property<int>("f:id", -1);
+  for (Face f : m.faces()) id[f] = int(f.idx());
+  const std::vector<Vertex> to = m.halfedge_vertex_array();
+  const std::vector<Halfedge> next = m.halfedge_next_array();
+  const SurfaceMesh::Connectivity old = m.release_connectivity(5, 8, 6);
+  EXPECT_EQ(old.h_vertex, to);
+  EXPECT_EQ(old.h_next, next);
+  EXPECT_EQ(old.v_halfedge.size(), 4u);
+  EXPECT_EQ(old.f_halfedge.size(), 4u);
+  EXPECT_EQ(m.vertex_slots(), 5u);
+  EXPECT_EQ(m.edge_slots(), 8u);
+  EXPECT_EQ(m.face_slots(), 6u);
+  for (Halfedge h : m.halfedges()) EXPECT_FALSE(m.to_vertex(h).is_valid());
+  EXPECT_EQ(m.get_face_property<int>("f:id")[Face(3)], 3);  // properties keep their values
+  EXPECT_EQ(m.get_face_property<int>("f:id")[Face(5)], -1);
+  EXPECT_FALSE(m.validate().empty());  // no links: the caller writes them all
+
+  // Writing the links back, as an algorithm writes its new ones, gives a valid mesh again.
+  SurfaceMesh t = build(tetrahedron());
+  const SurfaceMesh::Connectivity links = t.release_connectivity(4, 6, 4);
+  for (std::size_t i = 0; i < links.h_vertex.size(); ++i) {
+    const Halfedge h(static_cast<Index>(i));
+    t.set_vertex(h, links.h_vertex[i]);
+    t.set_next(h, links.h_next[i]);
+    t.set_face(h, links.h_face[i]);
+  }
+  for (std::size_t v = 0; v < links.v_halfedge.size(); ++v) t.set_halfedge(Vertex(static_cast<Index>(v)), links.v_halfedge[v]);
+  for (std::size_t f = 0; f < links.f_halfedge.size(); ++f) t.set_halfedge(Face(static_cast<Index>(f)), links.f_halfedge[f]);
+  EXPECT_TRUE(t.validate().empty());
+}
+
 }  // namespace
 }  // namespace hedge

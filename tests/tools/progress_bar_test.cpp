@@ -47,6 +47,15 @@ TEST_F(HedgeCli, ProgressIsDrawnWhenAskedAndEndsAtOneHundredPercent) {
   EXPECT_EQ(lines(r.err).size(), 1u) << "one line, redrawn in place";
 }
 
+TEST_F(HedgeCli, SubdivideReportsItsStepsOnTheBar) {
+  const ProgressSetting always("always");
+  const Result r = run({"subdivide", data("spot_triangulated.obj"), tmp("s.ply").string(), "--steps", "3"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("\rsubdivide ["), std::string::npos) << r.err;
+  EXPECT_NE(r.err.rfind("[" + std::string(30, '#') + "] 100%"), std::string::npos) << r.err;
+  EXPECT_EQ(lines(r.err).size(), 1u);
+}
+
 TEST_F(HedgeCli, ProgressStaysOutOfFilesAndPipesByDefault) {
   for (const char* setting : {static_cast<const char*>(nullptr), "auto", "never"}) {
     const ProgressSetting s(setting);

@@ -46,4 +46,19 @@ TEST_F(HedgeCli, SubdivideRefusesPolygonsForLoopAndBadOptions) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+TEST_F(HedgeCli, SubdivideBySqrt3TriplesTheFacesOfTriangles) {
+  const fs::path out = tmp("sqrt3.obj");
+  const Result r = run({"subdivide", data("tet.obj"), out.string(), "--scheme", "sqrt3", "--steps", "2"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = run_json({"info", out.string(), "--json"});
+  EXPECT_EQ(j["faces"], 36);
+  EXPECT_EQ(j["vertices"], 20);
+  EXPECT_EQ(j["euler_characteristic"], 2);
+  EXPECT_TRUE(j["valid"].get<bool>());
+  const json before = run_json({"info", data("tet.obj"), "--json"});
+  EXPECT_LT(j["volume"].get<double>(), before["volume"].get<double>());
+  expect_data_error({"subdivide", data("spot_control_mesh.obj"), tmp("q.obj").string(), "--scheme", "sqrt3"},
+                    "triangles");
+}
+
 }  // namespace

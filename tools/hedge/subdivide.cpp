@@ -6,10 +6,10 @@
 #include <string>
 
 #include "commands.h"
-#include "hedge/algorithms/split_all_faces.h"
 #include "hedge/algorithms/subdivide.h"
 #include "hedge/error.h"
 #include "load.h"
+#include "progress_bar.h"
 
 namespace hedge::cli {
 
@@ -29,15 +29,15 @@ int run_subdivide(const SubdivideCommandOptions& o) {
   SurfaceMesh& m = loaded.mesh;
   const std::size_t faces_before = m.n_faces();
   const auto start = std::chrono::steady_clock::now();
-  if (o.scheme == "split-faces") {
-    for (int s = 0; s < o.steps; ++s) split_all_faces(m);
-  } else {
-    subdivide(m,
-              o.scheme == "midpoint"         ? Subdivision::midpoint
-              : o.scheme == "catmull-clark" ? Subdivision::catmull_clark
-                                             : Subdivision::loop,
-              o.steps);
-  }
+  ProgressBar bar("subdivide");
+  subdivide(m,
+            o.scheme == "midpoint"        ? Subdivision::midpoint
+            : o.scheme == "catmull-clark" ? Subdivision::catmull_clark
+            : o.scheme == "sqrt3"         ? Subdivision::sqrt3
+            : o.scheme == "split-faces"   ? Subdivision::split_faces
+                                          : Subdivision::loop,
+            o.steps, bar.callback());
+  bar.finish();
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const std::filesystem::path parent = std::filesystem::path(o.output).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);
@@ -57,10 +57,11 @@ Command add_subdivide_command(CLI::App& parent) {
   app->add_option("IN", o->input, "Input mesh file")->required();
   app->add_option("OUT", o->output, "Output mesh file; missing folders are created")->required();
   app->add_option("--scheme", o->scheme,
-                  "loop (smooth, triangles), catmull-clark (smooth, any polygons, gives quads), midpoint (1-to-4, "
-                  "shape kept, triangles) or split-faces (1-to-3 at centroids, any polygons)")
+                  "loop (smooth, triangles), catmull-clark (smooth, any polygons, gives quads), sqrt3 (Kobbelt's "
+                  "smooth 1-to-3 with flips, triangles), midpoint (1-to-4, shape kept, triangles) or split-faces "
+                  "(1-to-3 at centroids, any polygons, shape kept)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"loop", "catmull-clark", "midpoint", "split-faces"}));
+      ->check(CLI::IsMember({"loop", "catmull-clark", "sqrt3", "midpoint", "split-faces"}));
   app->add_option("--steps", o->steps, "Steps")->capture_default_str()->check(CLI::Range(0, 12));
   app->add_flag("--ascii", o->ascii, "Write PLY and STL as text instead of binary");
   add_load_options(*app, o->load);

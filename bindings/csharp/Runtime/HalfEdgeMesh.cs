@@ -279,9 +279,9 @@ namespace Hedge
         // =========================================================================================
 
         /// <summary>Subdivides steps times (0..12): Loop and Midpoint refine triangles 1-to-4, CatmullClark turns a face of
-        /// n corners into n quads. Every index changes, as after
+        /// n corners into n quads, Sqrt3 (triangles) and SplitFaces turn it into n triangles about its centroid. Every index changes, as after
         /// <see cref="GarbageCollection"/>: old vertex v keeps index v, the vertex of edge e is VertexSlots + e. Render
-        /// buffers rebuild at their next sync. A face that is not a triangle: HedgeException (InvalidArgument), and the
+        /// buffers rebuild at their next sync. A face that is not a triangle (Loop, Midpoint, Sqrt3): HedgeException (InvalidArgument), and the
         /// mesh is unchanged.</summary>
         public void Subdivide(Subdivision scheme, int steps = 1)
         {

@@ -151,6 +151,10 @@ namespace Hedge
         Midpoint = 1,
         /// <summary>Catmull-Clark: any polygons; a face of n corners becomes n quads.</summary>
         CatmullClark = 2,
+        /// <summary>Kobbelt's sqrt(3): triangles; each face gets a centre vertex and the old edges are flipped.</summary>
+        Sqrt3 = 3,
+        /// <summary>Each face of n corners becomes n triangles about its centroid: any polygons, the shape is kept.</summary>
+        SplitFaces = 4,
     }
 
     /// <summary>How <see cref="HalfEdgeMesh.Smooth"/> weighs the neighbours.</summary>

@@ -221,6 +221,12 @@ namespace Hedge.Tests
                 quad.Subdivide(Subdivision.CatmullClark, 2);
                 Check.Equal(16, quad.FaceCount, "Catmull-Clark takes quads");
                 Check.Valid(quad, "after Catmull-Clark");
+                Check.Throws(HedgeStatus.InvalidArgument, () => quad.Subdivide(Subdivision.Sqrt3));
+                quad.Subdivide(Subdivision.SplitFaces);
+                Check.Equal(64, quad.FaceCount, "each quad fans into 4 triangles");
+                quad.Subdivide(Subdivision.Sqrt3);
+                Check.Equal(192, quad.FaceCount, "sqrt(3) triples the triangles");
+                Check.Valid(quad, "after sqrt(3)");
             }
         }
 

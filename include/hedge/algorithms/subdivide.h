@@ -1,5 +1,6 @@
 // Subdivision: Loop's scheme and the midpoint split refine triangle meshes 1-to-4 (every edge gets a
-// vertex at its middle); Catmull-Clark refines any polygon mesh into quads.
+// vertex at its middle); Catmull-Clark refines any polygon mesh into quads; sqrt3 and split-faces
+// put a vertex at every face's centroid and fan the face into triangles about it.
 //
 //  - loop: Loop's scheme. New vertices are placed by Loop's masks (3/8, 3/8, 1/8, 1/8 on an
 //    interior edge), old vertices move toward their neighbours (Loop's beta); boundaries follow
@@ -13,6 +14,16 @@
 //    (its centroid); edge points average the edge's ends and the two face points; old vertices move
 //    by (Q + 2R + (n - 3) S) / n. Boundaries and "e:crease" edges follow the cubic B-spline curve
 //    rules, as in Loop's scheme. After one step every face is a quad.
+//  - sqrt3: Kobbelt's sqrt(3) scheme, for triangle meshes. Every face gets its centroid as a new
+//    vertex, every old edge is flipped so that it joins the centroids of its two faces, and old
+//    vertices move by (1 - a) p + a (mean of the n neighbours), a = (4 - 2 cos(2 pi / n)) / 9. A
+//    closed mesh goes from V, E, F to V + F, E + 3F, 3F; two steps make each edge three (a triadic
+//    split). Boundaries: Kobbelt's every-second-step boundary rule is not used; instead boundary
+//    edges and "e:crease" edges are never flipped nor split, and a vertex on two or more of them
+//    stays where it is. So the boundary polygon is kept exactly (interpolated) while the interior
+//    is smoothed; a vertex on one crease edge is smoothed as an interior one.
+//  - split_faces: the 1-to-n split of every face of n corners at its centroid (no flip, nothing
+//    moves): the original's SplitAllFaces. Any polygons; gives triangles.
 //
 // The refined mesh is built in one pass by index arithmetic rather than by local operations: with
 // V vertices, E edges and F faces, old vertex v keeps index v, the vertex of edge e is V + e, the
@@ -21,25 +32,38 @@
 // to their parents, so the order keeps the input's locality. Catmull-Clark adds face f's point as
 // vertex V + E + f and numbers its quads and inner edges after the faces' half-edges, in order.
 //
+// sqrt3 and split_faces: old vertices, edges and half-edges keep their index (old edges flipped),
+// face f's centroid is vertex V + f, and with the faces' corners numbered face by face
+// (q = 3f + k for triangles), corner q gets the spoke edge E + q and the new face q. So again
+// children sit next to their parents.
+//
 // Properties follow: vertex properties of new vertices are the average of the edge's ends (the
 // positions by the scheme); corner properties (texture coordinates) are copied at old corners and
 // averaged along each face's own edges, so UV seams stay seams; edge properties go to both halves
-// (inner edges get the default); face properties go to the four children. Deleted elements are
+// (inner edges get the default); face properties go to the four children. In sqrt3 and
+// split_faces the centroid averages its face's vertex and corner properties, corners at old
+// vertices keep their face's value, old edges keep theirs and spokes get the default, and the
+// children take their face's properties. A sqrt3 flip across a UV seam cannot keep the seam: the
+// new triangle takes each side's centroid value and the first face's value at the old vertex.
+// Deleted elements are
 // collected first. The change log records a reset: every index changed.
 #pragma once
 
+#include "hedge/core/progress.h"
 #include "hedge/core/surface_mesh.h"
 
 namespace hedge {
 
-enum class Subdivision { loop, midpoint, catmull_clark };
+enum class Subdivision { loop, midpoint, catmull_clark, sqrt3, split_faces };
 
 //! Refines every face, `steps` times. Cost per step: O(V + E + F) time; the output has four times the
-//! faces (Loop, midpoint) or as many quads as the input had face corners (Catmull-Clark). An empty
-//! mesh stays empty.
-//! \throw InvalidInputError, with the mesh unchanged, if a face is not a triangle for Loop's or the
-//!   midpoint scheme (the message names it), if steps is negative, or if the result would exceed
-//!   2^31 half-edges.
-void subdivide(SurfaceMesh& mesh, Subdivision scheme, int steps = 1);
+//! faces (Loop, midpoint), as many quads as the input had face corners (Catmull-Clark) or as many
+//! triangles as it had face corners (sqrt3: 3F; split_faces). An empty mesh stays empty. `progress`
+//! is called with the fraction done after each step (see core/progress.h); if it throws, the steps
+//! already done stay done.
+//! \throw InvalidInputError, with the mesh unchanged, if a face is not a triangle for Loop's, the
+//!   midpoint or the sqrt3 scheme (the message names it), if steps is negative, or if the result
+//!   would exceed 2^31 half-edges.
+void subdivide(SurfaceMesh& mesh, Subdivision scheme, int steps = 1, const Progress& progress = {});
 
 }  // namespace hedge

@@ -299,6 +299,17 @@ class SurfaceMesh {
   void reserve(std::size_t n_v, std::size_t n_e, std::size_t n_f);
   //! Resizes every element array (connectivity set to invalid). Used by builders.
   void resize(std::size_t n_v, std::size_t n_e, std::size_t n_f);
+  //! The connectivity arrays, as release_connectivity() hands them over.
+  struct Connectivity {
+    std::vector<Vertex> h_vertex;
+    std::vector<Halfedge> h_next;
+    std::vector<Face> h_face;
+    std::vector<Halfedge> v_halfedge, f_halfedge;
+  };
+  //! resize(n_v, n_e, n_f) for an algorithm that rewrites every link (subdivision): the old
+  //! connectivity arrays are moved out and returned, not copied, and every link of the resized mesh
+  //! is invalid, the old elements' too. Properties and deletion flags resize as in resize(). O(size).
+  Connectivity release_connectivity(std::size_t n_v, std::size_t n_e, std::size_t n_f);
   //! Removes deleted elements and compacts every array and property. Returns old-to-new maps so
   //! that handles held elsewhere (engine buffers) can be remapped. O(#elements).
   GarbageMaps garbage_collection();
