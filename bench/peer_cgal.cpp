@@ -122,6 +122,14 @@ double catmull_clark_op(Context& c) {
   return static_cast<double>(m.number_of_vertices() + m.number_of_faces());
 }
 
+//! A private copy made all quads by one untimed Catmull-Clark step: the input of catmull_clark_quads.
+std::unique_ptr<MeshBox> quad_copy(const MeshBox& reference) {
+  auto box = std::make_unique<SMBox>();
+  box->m = static_cast<const SMBox&>(reference).m;
+  CGAL::Subdivision_method_3::CatmullClark_subdivision(box->m, CGAL::parameters::number_of_iterations(1));
+  return box;
+}
+
 //! One step of CGAL's Subdivision_method_3::Sqrt3_subdivision on the private copy. Returns #V + #F.
 double sqrt3_op(Context& c) {
   SMesh& m = edit_mesh(c);
@@ -329,6 +337,7 @@ Backend cgal_backend() {
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   b.ops["loop"] = {copy_mesh, loop_op};
   b.ops["catmull_clark"] = {copy_mesh, catmull_clark_op};
+  b.ops["catmull_clark_quads"] = {quad_copy, catmull_clark_op};
   b.ops["decimate"] = {copy_to_double, decimate_op, check_decimate, decimate_result};
   b.ops["sqrt3"] = {copy_mesh, sqrt3_op};
   return b;

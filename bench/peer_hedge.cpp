@@ -108,6 +108,13 @@ double catmull_clark_op(Context& c) {
   return static_cast<double>(m.n_vertices() + m.n_faces());
 }
 
+//! A private copy made all quads by one untimed Catmull-Clark step: the input of catmull_clark_quads.
+std::unique_ptr<MeshBox> quad_copy(const MeshBox& reference) {
+  auto box = std::make_unique<HBox>(hedge::SurfaceMesh(static_cast<const HBox&>(reference).m));
+  hedge::subdivide(box->m, hedge::Subdivision::catmull_clark, 1);
+  return box;
+}
+
 //! One step of Kobbelt's sqrt(3) scheme on the private copy. Returns #V + #F after.
 double sqrt3_op(Context& c) {
   hedge::SurfaceMesh& m = static_cast<HBox*>(c.mesh)->m;
@@ -237,6 +244,7 @@ Backend hedge_backend() {
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   b.ops["loop"] = {copy_mesh, loop_op};
   b.ops["catmull_clark"] = {copy_mesh, catmull_clark_op};
+  b.ops["catmull_clark_quads"] = {quad_copy, catmull_clark_op};
   b.ops["sqrt3"] = {copy_mesh, sqrt3_op};
   b.ops["smooth_uniform"] = {copy_mesh, smooth_op<hedge::SmoothMethod::uniform>};
   b.ops["smooth_cotan"] = {copy_mesh, smooth_op<hedge::SmoothMethod::cotangent>};

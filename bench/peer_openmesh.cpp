@@ -1,7 +1,9 @@
 // OpenMesh backend: TriMesh_ArrayKernelT with default traits (float Vec3f points), used through its
 // public API only. Built the standard way: reserve, add_vertex for every vertex, add_face for
 // every triangle.
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 #include <OpenMesh/Tools/Smoother/JacobiLaplaceSmootherT.hh>
@@ -30,6 +32,46 @@ struct OMBox final : MeshBox {
 };
 
 OMesh& mesh_of(Context& c) { return static_cast<OMBox*>(c.mesh)->m; }
+
+// Catmull-Clark needs OpenMesh's polygon mesh type.
+using OPolyMesh = OpenMesh::PolyMesh_ArrayKernelT<>;
+struct OPolyBox final : MeshBox {
+  OPolyMesh m;
+  std::size_t n_vertices() const override { return m.n_vertices(); }
+  std::size_t n_faces() const override { return m.n_faces(); }
+};
+
+void catmull_clark_step(OPolyMesh& m) {
+  OpenMesh::Subdivider::Uniform::CatmullClarkT<OPolyMesh> cc;
+  cc.attach(m);
+  cc(1);
+  cc.detach();
+}
+
+//! The reference triangle mesh as a polygon mesh, made all quads by one untimed Catmull-Clark
+//! step: the input of catmull_clark_quads.
+std::unique_ptr<MeshBox> quad_copy(const MeshBox& reference) {
+  const OMesh& t = static_cast<const OMBox&>(reference).m;
+  auto box = std::make_unique<OPolyBox>();
+  OPolyMesh& m = box->m;
+  m.reserve(t.n_vertices(), t.n_edges(), t.n_faces());
+  for (OMesh::VertexHandle v : t.vertices()) m.add_vertex(t.point(v));
+  std::vector<OPolyMesh::VertexHandle> corners;
+  for (OMesh::FaceHandle f : t.faces()) {
+    corners.clear();
+    for (OMesh::VertexHandle v : t.fv_range(f)) corners.push_back(OPolyMesh::VertexHandle(v.idx()));
+    m.add_face(corners);
+  }
+  catmull_clark_step(m);
+  return box;
+}
+
+//! One Catmull-Clark step of the quad mesh. Returns #V + #F after.
+double catmull_clark_quads_op(Context& c) {
+  OPolyMesh& m = static_cast<OPolyBox*>(c.mesh)->m;
+  catmull_clark_step(m);
+  return static_cast<double>(m.n_vertices() + m.n_faces());
+}
 F3 f3(const OMesh::Point& p) { return {p[0], p[1], p[2]}; }
 
 std::unique_ptr<MeshBox> build(const Input& in) {
@@ -281,6 +323,7 @@ Backend openmesh_backend() {
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   b.ops["loop"] = {copy_mesh, loop_op};
   b.ops["sqrt3"] = {copy_mesh, sqrt3_op};
+  b.ops["catmull_clark_quads"] = {quad_copy, catmull_clark_quads_op};
   b.ops["smooth_uniform"] = {copy_mesh, smooth_op<true>};
   b.ops["smooth_cotan"] = {copy_mesh, smooth_op<false>};
   b.ops["decimate"] = {copy_mesh, decimate_op, check_decimate, decimate_result};

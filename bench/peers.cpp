@@ -85,6 +85,9 @@ const OpSpec kOps[] = {
     {"loop", "Loop subdivision, one step", BarKind::faster, 3.0, 0.0, false, "#V + #F after"},
     // Catmull-Clark of the triangle meshes (OpenMesh's CatmullClarkT needs a PolyMesh: n/a).
     {"catmull_clark", "Catmull-Clark, one step", BarKind::faster, 2.0, 0.0, false, "#V + #F after"},
+    // Catmull-Clark of a quad mesh: the input made all quads by one untimed step (OpenMesh's
+    // CatmullClarkT on its polygon mesh type), then one timed step.
+    {"catmull_clark_quads", "Catmull-Clark of quads, one step", BarKind::faster, 2.0, 0.0, false, "#V + #F after"},
     // One step of Kobbelt's sqrt(3) scheme. On a closed mesh every library makes V + F, 3F; on open
     // ones the boundary rules differ (hedge keeps boundary edges), hence the tolerance.
     {"sqrt3", "sqrt(3) subdivision, one step", BarKind::faster, 2.0, 0.01, false, "#V + #F after"},
@@ -585,7 +588,7 @@ void usage() {
                "  --strict  exit with 1 when a bar fails\n"
                "  --only    run only these: comma-separated OP or LIB:OP (e.g. split or hedge:split,cgal:split);\n"
                "            LIB is hedge, openmesh, cgal or meshopt; OP is build, one_ring, vertex_normals,\n"
-               "            collapse, split, flip, loop, catmull_clark, smooth_uniform, smooth_cotan or\n"
+               "            collapse, split, flip, loop, catmull_clark, catmull_clark_quads, smooth_uniform, smooth_cotan or\n"
                "            decimate; may be repeated\n"
                "  --root    repository root (default: found from the working directory)\n"
                "  mesh      a triangle mesh file; ':subN' appends N rounds of 1-to-4 subdivision\n";

@@ -307,9 +307,10 @@ bool Decimator::fixed(Vertex v) const {
 
 // The surviving point of collapsing h and its cost: to_vertex(h)'s position if it must stay,
 // else the quadric's minimiser if it is well defined, within an edge length of the midpoint and
-// clearly better than the best of the two ends and the midpoint, else that best. "Clearly": an
-// end that is already exact (a mesh refined without moving, a flat region) keeps its position bit
-// for bit instead of moving to a minimiser that differs from it only by rounding.
+// clearly better than the best of the two ends and the midpoint, else that best (the midpoint
+// only if clearly better than the ends). "Clearly": an end that is already exact (a mesh refined
+// without moving, a flat region) keeps its position bit for bit instead of moving to a point that
+// differs from it only by rounding.
 bool Decimator::placement(Halfedge h, Vec3d& p, double& cost) const {
   const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
   const Quadric q = sum(q_[a.idx()], q_[b.idx()]);
@@ -317,13 +318,14 @@ bool Decimator::placement(Halfedge h, Vec3d& p, double& cost) const {
   p = xb;
   if (!fixed(b)) {
     const Vec3d mid = (xa + xb) * 0.5, ab = xb - xa;
+    // Each further candidate must beat the best so far clearly, so that rounding never moves a
+    // point off an exact end: the ends first, then the midpoint, then the minimiser.
+    const double clearly = 1e-10 * dot(ab, ab);
     double best = error_at(q, xb);
-    if (const double em = error_at(q, mid); em < best) p = mid, best = em;
-    if (const double ea = error_at(q, xa); ea < best) p = xa, best = ea;
+    if (const double ea = error_at(q, xa); ea < best - clearly) p = xa, best = ea;
+    if (const double em = error_at(q, mid); em < best - clearly) p = mid, best = em;
     Vec3d opt;
-    if (q.minimiser(opt) && dot(opt - mid, opt - mid) <= dot(ab, ab) &&
-        error_at(q, opt) < best - 1e-10 * dot(ab, ab))
-      p = opt;
+    if (q.minimiser(opt) && dot(opt - mid, opt - mid) <= dot(ab, ab) && error_at(q, opt) < best - clearly) p = opt;
   }
   // The cost and the checks see the point as it will be stored.
   p = to_double(to_float(p));

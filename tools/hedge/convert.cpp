@@ -1,5 +1,4 @@
 // hedge convert IN OUT: read, build (repairing unless --strict) and write; formats by extension.
-#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -26,11 +25,7 @@ int run_convert(const ConvertOptions& options) {
   if (options.reorder != "none")
     reorder(loaded.mesh, options.reorder == "vertex-cache" ? Ordering::vertex_cache : Ordering::spatial);
 
-  const std::filesystem::path parent = std::filesystem::path(options.output).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
-  WriteOptions write;
-  write.binary = !options.ascii;
-  write_mesh(loaded.mesh, options.output, write);
+  save_mesh(loaded.mesh, options.output, options.ascii);
 
   const bool has_encoding = out_format == FileFormat::ply || out_format == FileFormat::stl;
   std::cout << "converted " << options.input << " -> " << options.output << " (" << format_name(out_format)

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <limits>
 #include <memory>
 #include <string>
@@ -58,11 +57,7 @@ int run_decimate(const DecimateCommandOptions& o) {
   const DecimateResult r = decimate(mesh, d);
   bar.finish();
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  const std::filesystem::path parent = std::filesystem::path(o.output).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
-  WriteOptions write;
-  write.binary = !o.ascii;
-  write_mesh(mesh, o.output, write);
+  save_mesh(mesh, o.output, o.ascii);
   std::printf("decimated %s -> %s: %zu -> %zu vertices, %zu -> %zu faces, %zu collapses, max error %.6g, %.1f ms\n",
               o.input.c_str(), o.output.c_str(), v0, r.vertices, f0, r.faces, r.collapses, r.max_error, ms);
   return kExitOk;

@@ -1,5 +1,6 @@
 #include "load.h"
 
+#include <filesystem>
 #include <iostream>
 #include <map>
 
@@ -57,6 +58,14 @@ LoadedMesh load_mesh(const std::string& path, const LoadOptions& options) {
   // What the reader kept but found suspect, where the user sees it whatever the command.
   for (const std::string& w : loaded.report.warnings) std::cerr << "hedge: warning: " << w << '\n';
   return loaded;
+}
+
+void save_mesh(const SurfaceMesh& mesh, const std::string& path, bool ascii) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+  WriteOptions write;
+  write.binary = !ascii;
+  write_mesh(mesh, path, write);
 }
 
 const char* format_name(FileFormat format) {

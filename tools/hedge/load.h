@@ -34,6 +34,10 @@ struct LoadedMesh {
 //! than 3 corners, ...) go to stderr as "hedge: warning: file:line: ..." lines.
 LoadedMesh load_mesh(const std::string& path, const LoadOptions& options);
 
+//! Writes `mesh` to `path` (format from the extension; PLY and STL binary unless `ascii`),
+//! creating missing folders; the file is replaced atomically.
+void save_mesh(const SurfaceMesh& mesh, const std::string& path, bool ascii);
+
 //! Lower-case name of a format ("obj", "off", "ply", "stl").
 const char* format_name(FileFormat format);
 

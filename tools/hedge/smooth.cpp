@@ -1,7 +1,6 @@
 // hedge smooth IN OUT: read, smooth the positions, write; formats by extension.
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -43,11 +42,7 @@ int run_smooth(const SmoothCommandOptions& o) {
   smooth(loaded.mesh, s);
   bar.finish();
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  const std::filesystem::path parent = std::filesystem::path(o.output).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
-  WriteOptions write;
-  write.binary = !o.ascii;
-  write_mesh(loaded.mesh, o.output, write);
+  save_mesh(loaded.mesh, o.output, o.ascii);
   std::printf("smoothed %s -> %s: %s, %d iterations, %zu vertices, %.1f ms\n", o.input.c_str(), o.output.c_str(),
               o.method.c_str(), o.iterations, loaded.mesh.n_vertices(), ms);
   return kExitOk;

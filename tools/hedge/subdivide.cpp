@@ -1,7 +1,6 @@
 // hedge subdivide IN OUT: read, subdivide, write; formats by extension.
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -39,11 +38,7 @@ int run_subdivide(const SubdivideCommandOptions& o) {
             o.steps, bar.callback());
   bar.finish();
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  const std::filesystem::path parent = std::filesystem::path(o.output).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
-  WriteOptions write;
-  write.binary = !o.ascii;
-  write_mesh(m, o.output, write);
+  save_mesh(m, o.output, o.ascii);
   std::printf("subdivided %s -> %s: %s x%d, %zu -> %zu faces, %zu vertices, %.1f ms\n", o.input.c_str(),
               o.output.c_str(), o.scheme.c_str(), o.steps, faces_before, m.n_faces(), m.n_vertices(), ms);
   return kExitOk;
