@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "hedge/algorithms/geometry.h"
 #include "hedge/core/operations.h"
 #include "hedge/error.h"
 
@@ -198,15 +199,9 @@ void Decimator::gather_quadrics() {
   input_normal_.assign(m_.face_slots(), Vec3{0, 0, 0});
   const double feature_cos = o_.feature_angle_degrees >= 180 ? -2.0 : std::cos(o_.feature_angle_degrees * kPi / 180);
   const double wa2 = o_.attribute_weight * o_.attribute_weight;
-  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-  for (Vertex v : m_.vertices()) {
-    const Vec3d p = pos(v);
-    lo[0] = std::min(lo[0], p.x), lo[1] = std::min(lo[1], p.y), lo[2] = std::min(lo[2], p.z);
-    hi[0] = std::max(hi[0], p.x), hi[1] = std::max(hi[1], p.y), hi[2] = std::max(hi[2], p.z);
-  }
-  const double diag2 = m_.n_vertices() == 0 ? 0
-                                            : (hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                                                  (hi[2] - lo[2]) * (hi[2] - lo[2]);
+  const BoundingBox box = bounding_box(m_);
+  const Vec3d extent = to_double(box.max) - to_double(box.min);
+  const double diag2 = dot(extent, extent);
   // A face whose doubled area is below 1e-12 of the squared bounding-box diagonal counts as
   // degenerate: a collapse may not make one.
   tiny_area2_ = 1e-24 * diag2 * diag2;

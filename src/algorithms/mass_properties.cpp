@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "hedge/algorithms/geometry.h"
 #include "hedge/error.h"
 
 namespace hedge {
@@ -32,14 +33,8 @@ void check_input(const SurfaceMesh& mesh, double density) {
 }
 
 Vec3d reference_point(const SurfaceMesh& mesh) {
-  bool first = true;
-  Vec3 lo, hi;
-  for (Vertex v : mesh.vertices()) {
-    const Vec3& p = mesh.position(v);
-    if (first) lo = hi = p, first = false;
-    for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  }
-  return (to_double(lo) + to_double(hi)) * 0.5;
+  const BoundingBox box = bounding_box(mesh);
+  return (to_double(box.min) + to_double(box.max)) * 0.5;
 }
 
 }  // namespace
