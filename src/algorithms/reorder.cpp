@@ -138,12 +138,10 @@ GarbageMaps reorder_vertex_cache(SurfaceMesh& m, std::size_t cache_size) {
       if (age + 2 * std::int64_t(left[w.idx()]) <= k) priority = age;
       if (priority > best_priority) best_priority = priority, best = w;
     }
-    if (!best.is_valid()) {
-      while (!dead_ends.empty() && !best.is_valid()) {
-        const Vertex w = dead_ends.back();
-        dead_ends.pop_back();
-        if (left[w.idx()] > 0) best = w;
-      }
+    while (!best.is_valid() && !dead_ends.empty()) {
+      const Vertex w = dead_ends.back();
+      dead_ends.pop_back();
+      if (left[w.idx()] > 0) best = w;
     }
     if (!best.is_valid()) best = next_by_index();
     centre = best;

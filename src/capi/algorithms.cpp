@@ -273,8 +273,7 @@ hedge_status hedge_mesh_reorder(hedge_mesh* mesh, int32_t ordering, uint32_t cac
 hedge_status hedge_mesh_cache_miss_ratio(const hedge_mesh* mesh, uint32_t cache_size, double* out_ratio) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    if (!out_ratio) fail(HEDGE_ERROR_INVALID_ARGUMENT, "out_ratio is NULL");
-    *out_ratio = average_cache_miss_ratio(object->mesh, cache_size == 0 ? 16 : cache_size);
+    need(out_ratio, "out_ratio") = average_cache_miss_ratio(object->mesh, cache_size == 0 ? 16 : cache_size);
   });
 }
 
