@@ -631,13 +631,13 @@ HEDGE_API hedge_status hedge_mesh_validation_report(const hedge_mesh* mesh, char
 /** Where a query met the surface. Layout (48 bytes): face @0, corners @4 (3 uint32_t), point @16
  *  (3 floats), barycentric @28 (3 floats), t @40, distance @44 (float). */
 typedef struct hedge_surface_hit {
-  uint32_t face;         /**< the face found */
-  uint32_t corners[3];   /**< the fan triangle of the face the point is in; corners[0] is the face's
-                              first corner, the target of hedge_face_halfedge() */
-  float point[3];        /**< the point on the surface: sum of barycentric[i] x position(corners[i]) */
-  float barycentric[3];  /**< weights of corners[0..2], each in [0, 1], summing to 1 */
-  float t;               /**< hedge_mesh_raycast: point = origin + t x direction; 0 for the others */
-  float distance;        /**< from the query's origin or point to `point` */
+  uint32_t face;        /**< the face found */
+  uint32_t corners[3];  /**< the fan triangle of the face the point is in; corners[0] is the face's
+                             first corner, the target of hedge_face_halfedge() */
+  float point[3];       /**< the point on the surface: sum of barycentric[i] x position(corners[i]) */
+  float barycentric[3]; /**< weights of corners[0..2], each in [0, 1], summing to 1 */
+  float t;              /**< hedge_mesh_raycast: point = origin + t x direction; 0 for the others */
+  float distance;       /**< from the query's origin or point to `point` */
 } hedge_surface_hit;
 
 /** The coordinate plane of hedge_mesh_face_containing_point_2d (hedge::ProjectionPlane): the two

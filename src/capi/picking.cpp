@@ -12,8 +12,10 @@ namespace {
 
 //! The mesh's picking tree, built or brought up to date with the edits since the last call.
 const FaceBvh& current_bvh(MeshObject& object) {
-  if (!object.bvh) object.bvh = std::make_unique<FaceBvh>(object.mesh);
-  else object.bvh->update();
+  if (!object.bvh)
+    object.bvh = std::make_unique<FaceBvh>(object.mesh);
+  else
+    object.bvh->update();
   return *object.bvh;
 }
 
@@ -22,7 +24,8 @@ Vec3 need_vector(const float* xyz, const char* name) {
   const Vec3 p{xyz[0], xyz[1], xyz[2]};
   if (!is_finite(p)) {
     char text[128];
-    std::snprintf(text, sizeof text, "%s (%g, %g, %g) is not finite", name, double(p.x), double(p.y), double(p.z));
+    std::snprintf(text, sizeof text, "%s (%g, %g, %g) is not finite", name, double(p.x), double(p.y),
+                  double(p.z));
     fail(HEDGE_ERROR_INVALID_ARGUMENT, text);
   }
   return p;
@@ -139,7 +142,8 @@ hedge_status hedge_mesh_face_containing_point_2d(hedge_mesh* mesh, float u, floa
         projection = ProjectionPlane::yz;
         break;
       default:
-        fail(HEDGE_ERROR_INVALID_ARGUMENT, "plane is " + std::to_string(plane) + ", not a HEDGE_PLANE_* value");
+        fail(HEDGE_ERROR_INVALID_ARGUMENT,
+             "plane is " + std::to_string(plane) + ", not a HEDGE_PLANE_* value");
     }
     const auto found = current_bvh(object).face_containing(Vec2{u, v}, projection);
     if (!found) return false;

@@ -1790,7 +1790,6 @@ static void test_threads(void) {
   CHECK_OK(hedge_mesh_destroy(mesh));
 }
 
-
 /* ---------------------------------------------------------------------------------------------- */
 /* Picking and the render-triangle-to-face map                                                    */
 /* ---------------------------------------------------------------------------------------------- */
@@ -1923,9 +1922,11 @@ static void test_picking(void) {
   CHECK_STATUS(hedge_mesh_raycast(mesh, origin, down, 1, &hit, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_STATUS(hedge_mesh_closest_point(mesh, above, NAN, &hit, &found), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_ERROR_HAS("max_distance");
-  CHECK_STATUS(hedge_mesh_face_containing_point(mesh, on, INFINITY, &hit, &found), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_face_containing_point(mesh, on, INFINITY, &hit, &found),
+               HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_ERROR_HAS("tolerance");
-  CHECK_STATUS(hedge_mesh_face_containing_point_2d(mesh, 0, 0, 7, &hit, &found), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_face_containing_point_2d(mesh, 0, 0, 7, &hit, &found),
+               HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_ERROR_HAS("HEDGE_PLANE_");
   CHECK_STATUS(hedge_mesh_face_containing_point_2d(mesh, INFINITY, 0, HEDGE_PLANE_XY, &hit, &found),
                HEDGE_ERROR_INVALID_ARGUMENT);
@@ -1981,7 +1982,8 @@ static void test_triangle_faces(void) {
   /* Collapse the new vertex away. Before the next sync, the slots of the faces it deleted name no
    * face (the buffers still hold them), and after the sync they are free. */
   uint32_t old_first[4], count = 0, f = 0;
-  for (uint32_t i = 0; i < 4; ++i) CHECK_OK(hedge_render_face_triangles(render, faces[i], &old_first[i], &count));
+  for (uint32_t i = 0; i < 4; ++i)
+    CHECK_OK(hedge_render_face_triangles(render, faces[i], &old_first[i], &count));
   uint32_t out_h[8], survivor = INVALID;
   CHECK_OK(hedge_vertex_halfedges(mesh, v, out_h, 8, &n));
   int32_t ok = 0;

@@ -440,7 +440,8 @@ TEST(RenderSync, TriangleFaceFollowsSplitCollapseAndCompact) {
     return std::size_t(-1);
   };
   Edge e = *m.edges().begin();
-  const Vec3 mid = 0.5f * (m.position(m.from_vertex(m.halfedge(e, 0))) + m.position(m.to_vertex(m.halfedge(e, 0))));
+  const Vec3 mid =
+      0.5f * (m.position(m.from_vertex(m.halfedge(e, 0))) + m.position(m.to_vertex(m.halfedge(e, 0))));
   const Vertex v = split_edge(m, e, mid);
   ASSERT_TRUE(v.is_valid());
   rs.sync();
