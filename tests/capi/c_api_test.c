@@ -1935,6 +1935,18 @@ static void test_picking(void) {
   CHECK_STATUS(hedge_mesh_closest_point(NULL, above, 1, &hit, &found), HEDGE_ERROR_BAD_HANDLE);
   CHECK_VALID(mesh);
   CHECK_OK(hedge_mesh_destroy(mesh));
+
+  /* A mesh with no face yet: nothing is found, and a face added later is. */
+  hedge_mesh* empty = make_mesh(kGridPositions, 9, NULL, 0, NULL, 0);
+  CHECK_OK(hedge_mesh_raycast(empty, origin, down, INFINITY, &hit, &found));
+  CHECK(found == 0);
+  const uint32_t corners[3] = {3, 4, 6}; /* (0, 1), (1, 1), (0, 2): under (0.25, 1.5) */
+  uint32_t face = INVALID;
+  CHECK_OK(hedge_add_face(empty, corners, 3, &face));
+  CHECK_OK(hedge_mesh_raycast(empty, origin, down, INFINITY, &hit, &found));
+  CHECK(found == 1 && hit.face == face);
+  CHECK_VALID(empty);
+  CHECK_OK(hedge_mesh_destroy(empty));
 }
 
 /* Every live triangle slot names the face that owns it, after a split, a collapse and compaction. */
