@@ -615,6 +615,76 @@ HEDGE_API hedge_status hedge_mesh_validation_report(const hedge_mesh* mesh, char
                                                     uint32_t* out_size);
 
 /* ============================================================================================ */
+/* Picking (hedge/algorithms/locate.h): rays, nearest points, the face under a point            */
+/* ============================================================================================ */
+/* The mesh handle owns a bounding volume hierarchy over its live faces (hedge::FaceBvh), made by
+ * the first picking call: O(n log n) for n faces, about 45 bytes a face. Each later picking call
+ * first takes in the edits made since the previous one from the mesh's change log (FaceBvh::update:
+ * a few microseconds per changed face, nothing when nothing changed; after garbage collection or
+ * another renumbering it rebuilds), then answers in O(log n) expected time. While the tree exists
+ * the change log keeps what was edited since the last picking call (a few bytes per edited element);
+ * hedge_mesh_bvh_release() frees both. Faces are located through triangles: a polygon face through
+ * the fan from its first corner, exact for convex planar polygons. Positions are floats; the
+ * queries compute in double. Ties go to the smallest face index. Every query below returns HEDGE_OK
+ * with *out_found 0 (and *out_hit unchanged) when nothing is found. */
+
+/** Where a query met the surface. Layout (48 bytes): face @0, corners @4 (3 uint32_t), point @16
+ *  (3 floats), barycentric @28 (3 floats), t @40, distance @44 (float). */
+typedef struct hedge_surface_hit {
+  uint32_t face;        /**< the face found */
+  uint32_t corners[3];  /**< the fan triangle of the face the point is in; corners[0] is the face's
+                             first corner, the target of hedge_face_halfedge() */
+  float point[3];       /**< the point on the surface: sum of barycentric[i] x position(corners[i]) */
+  float barycentric[3]; /**< weights of corners[0..2], each in [0, 1], summing to 1 */
+  float t;              /**< hedge_mesh_raycast: point = origin + t x direction; 0 for the others */
+  float distance;       /**< from the query's origin or point to `point` */
+} hedge_surface_hit;
+
+/** The coordinate plane of hedge_mesh_face_containing_point_2d (hedge::ProjectionPlane): the two
+ *  coordinates kept; the third is dropped. */
+enum {
+  HEDGE_PLANE_XY = 0, /**< (x, y): drop z */
+  HEDGE_PLANE_XZ = 1, /**< (x, z): drop y, the ground plane of y-up engines (Unity) */
+  HEDGE_PLANE_YZ = 2  /**< (y, z): drop x */
+};
+
+/** Builds the picking tree now, or brings it up to date with the edits since the last picking
+ *  call, so that the next query does not pay for it (call it after loading, or once after a batch
+ *  of edits). \param out_bytes optional (NULL): heap bytes the tree holds. */
+HEDGE_API hedge_status hedge_mesh_bvh_update(hedge_mesh* mesh, uint64_t* out_bytes);
+/** Frees the picking tree (the next picking call builds it again). No tree: does nothing. */
+HEDGE_API hedge_status hedge_mesh_bvh_release(hedge_mesh* mesh);
+
+/** The first face hit by the ray origin + t x direction, 0 <= t <= t_max: watertight (a ray through
+ *  a shared edge or vertex hits one of its faces) and two-sided (back faces are hit too).
+ *  \param origin    3 floats, finite.
+ *  \param direction 3 floats, finite and not zero; need not be unit length (t is in its units).
+ *  \param t_max     >= 0; INFINITY for an unbounded ray.
+ *  eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite origin or direction, a zero direction, a
+ *          NaN or negative t_max. */
+HEDGE_API hedge_status hedge_mesh_raycast(hedge_mesh* mesh, const float* origin, const float* direction,
+                                          float t_max, hedge_surface_hit* out_hit, int32_t* out_found);
+/** The nearest point of the surface to a point, within max_distance of it.
+ *  \param point        3 floats, finite.
+ *  \param max_distance >= 0; INFINITY for no limit (a limit also makes the search cheaper).
+ *  eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite point or a NaN or negative max_distance. */
+HEDGE_API hedge_status hedge_mesh_closest_point(hedge_mesh* mesh, const float* point, float max_distance,
+                                                hedge_surface_hit* out_hit, int32_t* out_found);
+/** The face a point on the surface lies on: the nearest face, if the point is within tolerance of it
+ *  (an impact point reported by a physics engine, a point on a plate in any orientation).
+ *  \param tolerance >= 0 and finite, in the mesh's units.
+ *  eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite point or a bad tolerance. */
+HEDGE_API hedge_status hedge_mesh_face_containing_point(hedge_mesh* mesh, const float* point, float tolerance,
+                                                        hedge_surface_hit* out_hit, int32_t* out_found);
+/** 2D plates and height fields: the face whose projection onto a coordinate plane contains (u, v),
+ *  boundary included; `point` is the point of that face that projects onto (u, v) (the dropped
+ *  coordinate interpolated), `distance` 0. Faces seen edge-on contain nothing.
+ *  \param plane HEDGE_PLANE_*: (u, v) are (x, y), (x, z) or (y, z).
+ *  eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite u or v or an unknown plane. */
+HEDGE_API hedge_status hedge_mesh_face_containing_point_2d(hedge_mesh* mesh, float u, float v, int32_t plane,
+                                                           hedge_surface_hit* out_hit, int32_t* out_found);
+
+/* ============================================================================================ */
 /* Render buffers (hedge/render/render_sync.h)                                                  */
 /* ============================================================================================ */
 /* A render object keeps engine-ready vertex and index buffers in step with its mesh: each face
@@ -779,6 +849,14 @@ HEDGE_API hedge_status hedge_render_corner_vertex(const hedge_render* render, ui
  *  *out_count) of the index buffer (*out_count 0 if it has none). */
 HEDGE_API hedge_status hedge_render_face_triangles(const hedge_render* render, uint32_t face,
                                                    uint32_t* out_first, uint32_t* out_count);
+/** The face that owns triangle slot `triangle` of the index buffer (entries 3 x triangle to
+ *  3 x triangle + 2), as of the last sync: the inverse of hedge_render_face_triangles(). This is what
+ *  an engine's own ray hit gives back (Unity's RaycastHit.triangleIndex on a MeshCollider of the
+ *  uploaded mesh). *out_face is HEDGE_INVALID_INDEX (with HEDGE_OK) for a free slot and for a face
+ *  deleted by an edit since that sync. O(1). A triangle out of range (>= index_count / 3):
+ *  HEDGE_ERROR_BAD_HANDLE. */
+HEDGE_API hedge_status hedge_render_triangle_face(const hedge_render* render, uint32_t triangle,
+                                                  uint32_t* out_face);
 
 /* ============================================================================================ */
 /* Engine-mesh import (hedge/render/engine_mesh.h)                                              */

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "hedge/algorithms/locate.h"
 #include "hedge/c_api.h"
 #include "hedge/core/build.h"
 #include "hedge/core/export.h"
@@ -28,6 +29,9 @@ namespace hedge::capi {
 //! What a hedge_mesh handle names.
 struct MeshObject {
   SurfaceMesh mesh;
+  //! The picking tree, made by the first picking call and brought up to date by each later one
+  //! (src/capi/picking.cpp). Declared after `mesh`: destroyed first, as it follows mesh's change log.
+  std::unique_ptr<FaceBvh> bvh;
   //! Problems found by the last hedge_mesh_validate().
   std::vector<std::string> problems;
   //! Ids of the render objects made for this mesh (guarded by the registry's lock).

@@ -283,6 +283,17 @@ hedge_status hedge_render_face_triangles(const hedge_render* render, uint32_t fa
   });
 }
 
+hedge_status hedge_render_triangle_face(const hedge_render* render, uint32_t triangle, uint32_t* out_face) {
+  return guard([&] {
+    auto object = find_render(render);
+    const RenderSync& sync = *object->sync;
+    check_range("triangle", triangle, sync.triangle_slots());
+    need(out_face, "out_face");
+    const Face f = sync.triangle_face(triangle);
+    *out_face = f.is_valid() && !object->mesh->mesh.is_deleted(f) ? f.idx() : HEDGE_INVALID_INDEX;
+  });
+}
+
 hedge_status hedge_engine_import_options_default(hedge_engine_import_options* out_options) {
   return guard([&] {
     need(out_options, "out_options") = {HEDGE_WELD_EXACT, HEDGE_POLICY_REPAIR, 1e-6, HEDGE_WINDING_CCW, 0};

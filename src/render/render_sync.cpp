@@ -286,12 +286,14 @@ std::uint32_t RenderSync::allocate_triangles(std::uint32_t count) {
   const std::size_t n = indices_.size() + 3 * std::size_t(count);
   grow_capacity(index_capacity_, n);
   indices_.resize(n, 0);
+  triangle_face_.resize(triangle_slots(), kInvalidIndex);
   return first;
 }
 
 void RenderSync::free_triangles(std::uint32_t first, std::uint32_t count) {
   // The triangles stay in the buffer as degenerate ones until they are reused or compacted.
   std::fill_n(indices_.begin() + 3 * std::size_t(first), 3 * std::size_t(count), 0u);
+  std::fill_n(triangle_face_.begin() + first, count, kInvalidIndex);
   mark_indices_written(3 * first, 3 * count);
   if (free_triangles_.size() <= count) free_triangles_.resize(count + 1);
   free_triangles_[count].push_back(first);
@@ -365,6 +367,7 @@ void RenderSync::sync_face(Face f) {
   release_face(f);  // the face's corner count changed (or it is new): slots of the new size
   s.first = allocate_triangles(count);
   s.count = count;
+  std::fill_n(triangle_face_.begin() + s.first, count, f.idx());
   std::copy(new_indices_.begin(), new_indices_.end(), indices_.begin() + 3 * std::size_t(s.first));
   mark_indices_written(3 * s.first, 3 * count);
 }
@@ -436,6 +439,7 @@ void RenderSync::full_build() {
   v_first_rv_.assign(m.vertex_slots(), kInvalidIndex);
   corner_rv_.assign(m.halfedge_slots(), kInvalidIndex);
   indices_.clear();
+  triangle_face_.clear();
   face_slots_.assign(m.face_slots(), SlotRange{});
   free_triangles_.clear();
   free_triangle_slots_ = 0;
@@ -605,11 +609,13 @@ RenderRemap RenderSync::compact() {
   std::sort(order.begin(), order.end());
   std::vector<std::uint32_t> packed;
   packed.reserve(3 * n_triangles());
+  triangle_face_.clear();
   for (const auto& [first, f] : order) {
     SlotRange& s = face_slots_[f];
     const std::uint32_t to = static_cast<std::uint32_t>(packed.size() / 3);
     for (std::uint32_t t = 0; t < s.count; ++t) {
       map.triangles[first + t] = to + t;
+      triangle_face_.push_back(f);
       for (int k = 0; k < 3; ++k) packed.push_back(map.vertices[indices_[3 * std::size_t(first + t) + k]]);
     }
     s.first = to;

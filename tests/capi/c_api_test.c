@@ -1403,6 +1403,7 @@ static void test_every_function_error_path(void) {
     BAD(hedge_render_vertex_source(r, buffer, 16, &u));
     BAD(hedge_render_corner_vertex(r, 0, &u));
     BAD(hedge_render_face_triangles(r, 0, &u, &u));
+    BAD(hedge_render_triangle_face(r, 0, &u));
     BAD(hedge_render_destroy(r));
 #undef BAD
   }
@@ -1789,6 +1790,241 @@ static void test_threads(void) {
   CHECK_OK(hedge_mesh_destroy(mesh));
 }
 
+/* ---------------------------------------------------------------------------------------------- */
+/* Picking and the render-triangle-to-face map                                                    */
+/* ---------------------------------------------------------------------------------------------- */
+
+/* The 2 x 2 quad grid, triangulated: 8 triangles in the plane z = 0, x and y in [0, 2]. */
+static hedge_mesh* make_triangle_grid(void) {
+  uint32_t tris[24];
+  for (int q = 0; q < 4; ++q) {
+    const uint32_t* c = kGridQuads + 4 * q;
+    const uint32_t t[6] = {c[0], c[1], c[2], c[0], c[2], c[3]};
+    memcpy(tris + 6 * q, t, sizeof t);
+  }
+  return make_mesh(kGridPositions, 9, tris, 24, NULL, 0);
+}
+
+/* The face of the grid whose triangle contains (x, y), by brute force over its corners. */
+static int face_has_point(const hedge_mesh* mesh, uint32_t face, float x, float y) {
+  uint32_t c[3], n = 0;
+  CHECK_OK(hedge_face_vertices(mesh, face, c, 3, &n));
+  float p[3][3];
+  for (int i = 0; i < 3; ++i) get_position(mesh, c[i], p[i]);
+  float lo[2] = {p[0][0], p[0][1]}, hi[2] = {p[0][0], p[0][1]};
+  for (int i = 1; i < 3; ++i)
+    for (int k = 0; k < 2; ++k) {
+      lo[k] = fminf(lo[k], p[i][k]);
+      hi[k] = fmaxf(hi[k], p[i][k]);
+    }
+  return x >= lo[0] && x <= hi[0] && y >= lo[1] && y <= hi[1];
+}
+
+static void test_picking(void) {
+  hedge_mesh* mesh = make_triangle_grid();
+  hedge_surface_hit hit;
+  int32_t found = -1;
+  uint64_t bytes = 0;
+  CHECK(sizeof(hedge_surface_hit) == 48);
+
+  /* A ray straight down onto (0.25, 1.5). */
+  const float origin[3] = {0.25f, 1.5f, 5}, down[3] = {0, 0, -2};
+  CHECK_OK(hedge_mesh_raycast(mesh, origin, down, INFINITY, &hit, &found));
+  CHECK(found == 1);
+  CHECK(fabsf(hit.t - 2.5f) < 1e-6f);        /* in units of the direction's length 2 */
+  CHECK(fabsf(hit.distance - 5.0f) < 1e-6f); /* in the mesh's units */
+  CHECK(fabsf(hit.point[0] - 0.25f) < 1e-6f && fabsf(hit.point[1] - 1.5f) < 1e-6f && hit.point[2] == 0);
+  CHECK(face_has_point(mesh, hit.face, 0.25f, 1.5f));
+  CHECK(fabsf(hit.barycentric[0] + hit.barycentric[1] + hit.barycentric[2] - 1) < 1e-6f);
+  {
+    float p[3] = {0, 0, 0}, q[3];
+    for (int i = 0; i < 3; ++i) {
+      get_position(mesh, hit.corners[i], q);
+      for (int k = 0; k < 3; ++k) p[k] += hit.barycentric[i] * q[k];
+    }
+    CHECK(fabsf(p[0] - 0.25f) < 1e-5f && fabsf(p[1] - 1.5f) < 1e-5f);
+  }
+  /* Too short, and pointing away: no hit, and *out_hit is left alone. */
+  hedge_surface_hit untouched;
+  memset(&untouched, 0x5A, sizeof untouched);
+  hit = untouched;
+  CHECK_OK(hedge_mesh_raycast(mesh, origin, down, 2.0f, &hit, &found));
+  CHECK(found == 0 && memcmp(&hit, &untouched, sizeof hit) == 0);
+  const float up[3] = {0, 0, 1};
+  CHECK_OK(hedge_mesh_raycast(mesh, origin, up, INFINITY, &hit, &found));
+  CHECK(found == 0);
+
+  /* The nearest point to a point above the grid, outside it. */
+  const float above[3] = {3, 1, 2};
+  CHECK_OK(hedge_mesh_closest_point(mesh, above, INFINITY, &hit, &found));
+  CHECK(found == 1);
+  CHECK(fabsf(hit.point[0] - 2) < 1e-6f && fabsf(hit.point[1] - 1) < 1e-6f && hit.point[2] == 0);
+  CHECK(fabsf(hit.distance - sqrtf(5)) < 1e-5f && hit.t == 0);
+  CHECK_OK(hedge_mesh_closest_point(mesh, above, 2.0f, &hit, &found)); /* sqrt(5) > 2 */
+  CHECK(found == 0);
+
+  /* A point on the surface within a tolerance, and not. */
+  const float on[3] = {1.5f, 0.5f, 0.001f}, off[3] = {1.5f, 0.5f, 0.5f};
+  CHECK_OK(hedge_mesh_face_containing_point(mesh, on, 0.01f, &hit, &found));
+  CHECK(found == 1 && face_has_point(mesh, hit.face, 1.5f, 0.5f));
+  CHECK(fabsf(hit.distance - 0.001f) < 1e-6f);
+  CHECK_OK(hedge_mesh_face_containing_point(mesh, off, 0.01f, &hit, &found));
+  CHECK(found == 0);
+
+  /* The 2D variant: the grid lies in xy. In xz it is seen edge-on and contains nothing. */
+  CHECK_OK(hedge_mesh_face_containing_point_2d(mesh, 1.75f, 1.25f, HEDGE_PLANE_XY, &hit, &found));
+  CHECK(found == 1 && face_has_point(mesh, hit.face, 1.75f, 1.25f) && hit.distance == 0);
+  CHECK_OK(hedge_mesh_face_containing_point_2d(mesh, 2.5f, 1.25f, HEDGE_PLANE_XY, &hit, &found));
+  CHECK(found == 0);
+  CHECK_OK(hedge_mesh_face_containing_point_2d(mesh, 1.0f, 0.0f, HEDGE_PLANE_XZ, &hit, &found));
+  CHECK(found == 0);
+  CHECK_OK(hedge_mesh_face_containing_point_2d(mesh, 1.0f, 0.0f, HEDGE_PLANE_YZ, &hit, &found));
+  CHECK(found == 0);
+
+  /* Edits are seen by the next query: lift vertex 4 (the centre) and a ray through it finds it. */
+  CHECK_OK(hedge_mesh_bvh_update(mesh, &bytes));
+  CHECK(bytes > 0);
+  CHECK_OK(hedge_mesh_set_position(mesh, 4, 1, 1, 3));
+  const float centre[3] = {1, 1, 10};
+  CHECK_OK(hedge_mesh_raycast(mesh, centre, down, INFINITY, &hit, &found));
+  CHECK(found == 1 && fabsf(hit.point[2] - 3) < 1e-5f);
+  CHECK_OK(hedge_mesh_set_position(mesh, 4, 1, 1, 0));
+  /* A split adds faces: the new vertex's faces are found. */
+  uint32_t h = INVALID, e = INVALID, v = INVALID;
+  CHECK_OK(hedge_mesh_find_halfedge(mesh, 0, 1, &h));
+  CHECK(h != INVALID);
+  CHECK_OK(hedge_halfedge_edge(mesh, h, &e));
+  CHECK_OK(hedge_split_edge(mesh, e, 0.5f, 0, 0, &v));
+  const float near_new[3] = {0.5f, 0.05f, 1};
+  CHECK_OK(hedge_mesh_raycast(mesh, near_new, down, INFINITY, &hit, &found));
+  CHECK(found == 1);
+  CHECK(hit.corners[0] == v || hit.corners[1] == v || hit.corners[2] == v);
+  CHECK_VALID(mesh);
+  /* Garbage collection renumbers: the tree is rebuilt, answers name the new indices. */
+  CHECK_OK(hedge_mesh_garbage_collection(mesh, NULL, 0, NULL, 0, NULL, 0, NULL, 0));
+  CHECK_OK(hedge_mesh_raycast(mesh, origin, down, INFINITY, &hit, &found));
+  CHECK(found == 1 && face_has_point(mesh, hit.face, 0.25f, 1.5f));
+  CHECK_OK(hedge_mesh_bvh_release(mesh));
+  CHECK_OK(hedge_mesh_bvh_release(mesh)); /* no tree: nothing to do */
+  CHECK_OK(hedge_mesh_raycast(mesh, origin, down, INFINITY, &hit, &found));
+  CHECK(found == 1);
+
+  /* Bad input: a clear error naming what, and nothing found. */
+  const float nan3[3] = {NAN, 0, 0}, zero[3] = {0, 0, 0};
+  CHECK_STATUS(hedge_mesh_raycast(mesh, nan3, down, INFINITY, &hit, &found), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("origin");
+  CHECK_STATUS(hedge_mesh_raycast(mesh, origin, zero, INFINITY, &hit, &found), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("direction is zero");
+  CHECK_STATUS(hedge_mesh_raycast(mesh, origin, down, -1, &hit, &found), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("t_max");
+  CHECK_STATUS(hedge_mesh_raycast(mesh, NULL, down, 1, &hit, &found), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_raycast(mesh, origin, down, 1, NULL, &found), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_raycast(mesh, origin, down, 1, &hit, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_closest_point(mesh, above, NAN, &hit, &found), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("max_distance");
+  CHECK_STATUS(hedge_mesh_face_containing_point(mesh, on, INFINITY, &hit, &found),
+               HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("tolerance");
+  CHECK_STATUS(hedge_mesh_face_containing_point_2d(mesh, 0, 0, 7, &hit, &found),
+               HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("HEDGE_PLANE_");
+  CHECK_STATUS(hedge_mesh_face_containing_point_2d(mesh, INFINITY, 0, HEDGE_PLANE_XY, &hit, &found),
+               HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_bvh_update(NULL, NULL), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_mesh_bvh_release(NULL), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_mesh_closest_point(NULL, above, 1, &hit, &found), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_VALID(mesh);
+  CHECK_OK(hedge_mesh_destroy(mesh));
+
+  /* A mesh with no face yet: nothing is found, and a face added later is. */
+  hedge_mesh* empty = make_mesh(kGridPositions, 9, NULL, 0, NULL, 0);
+  CHECK_OK(hedge_mesh_raycast(empty, origin, down, INFINITY, &hit, &found));
+  CHECK(found == 0);
+  const uint32_t corners[3] = {3, 4, 6}; /* (0, 1), (1, 1), (0, 2): under (0.25, 1.5) */
+  uint32_t face = INVALID;
+  CHECK_OK(hedge_add_face(empty, corners, 3, &face));
+  CHECK_OK(hedge_mesh_raycast(empty, origin, down, INFINITY, &hit, &found));
+  CHECK(found == 1 && hit.face == face);
+  CHECK_VALID(empty);
+  CHECK_OK(hedge_mesh_destroy(empty));
+}
+
+/* Every live triangle slot names the face that owns it, after a split, a collapse and compaction. */
+static void check_triangle_faces(const hedge_mesh* mesh, const hedge_render* render) {
+  hedge_buffer_counts bc;
+  CHECK_OK(hedge_render_counts(render, &bc));
+  hedge_counts c = counts_of(mesh);
+  uint32_t named = 0;
+  for (uint32_t t = 0; t < bc.index_count / 3; ++t) {
+    uint32_t f = 12345, first = 0, count = 0;
+    CHECK_OK(hedge_render_triangle_face(render, t, &f));
+    if (f == INVALID) continue;
+    ++named;
+    CHECK_OK(hedge_render_face_triangles(render, f, &first, &count));
+    CHECK(t >= first && t < first + count);
+  }
+  CHECK(named == c.faces);
+  uint32_t f = 0;
+  CHECK_STATUS(hedge_render_triangle_face(render, bc.index_count / 3, &f), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_ERROR_HAS("triangle");
+  CHECK_STATUS(hedge_render_triangle_face(render, 0, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+}
+
+static void test_triangle_faces(void) {
+  hedge_mesh* mesh = make_triangle_grid();
+  hedge_render* render = NULL;
+  CHECK_OK(hedge_render_create(mesh, NULL, &render));
+  check_triangle_faces(mesh, render);
+  /* Split the edge 1-4: the new vertex's four faces each own their triangle. */
+  uint32_t h = INVALID, e = INVALID, v = INVALID, faces[8], n = 0;
+  CHECK_OK(hedge_mesh_find_halfedge(mesh, 1, 4, &h));
+  CHECK_OK(hedge_halfedge_edge(mesh, h, &e));
+  CHECK_OK(hedge_split_edge(mesh, e, 1, 0.5f, 0, &v));
+  CHECK_OK(hedge_render_sync(render, NULL));
+  CHECK_OK(hedge_vertex_faces(mesh, v, faces, 8, &n));
+  CHECK(n == 4);
+  for (uint32_t i = 0; i < n; ++i) {
+    uint32_t first = 0, count = 0, f = INVALID;
+    CHECK_OK(hedge_render_face_triangles(render, faces[i], &first, &count));
+    CHECK(count == 1);
+    CHECK_OK(hedge_render_triangle_face(render, first, &f));
+    CHECK(f == faces[i]);
+  }
+  check_triangle_faces(mesh, render);
+  /* Collapse the new vertex away. Before the next sync, the slots of the faces it deleted name no
+   * face (the buffers still hold them), and after the sync they are free. */
+  uint32_t old_first[4], count = 0, f = 0;
+  for (uint32_t i = 0; i < 4; ++i)
+    CHECK_OK(hedge_render_face_triangles(render, faces[i], &old_first[i], &count));
+  uint32_t out_h[8], survivor = INVALID;
+  CHECK_OK(hedge_vertex_halfedges(mesh, v, out_h, 8, &n));
+  int32_t ok = 0;
+  uint32_t k = 0;
+  for (; k < n; ++k) {
+    CHECK_OK(hedge_can_collapse(mesh, out_h[k], &ok));
+    if (ok) break;
+  }
+  CHECK(k < n);
+  CHECK_OK(hedge_collapse(mesh, out_h[k], &survivor));
+  int dead_faces = 0;
+  for (uint32_t i = 0; i < 4; ++i) {
+    int32_t dead = 0;
+    CHECK_OK(hedge_face_is_deleted(mesh, faces[i], &dead));
+    if (!dead) continue;
+    ++dead_faces;
+    CHECK_OK(hedge_render_triangle_face(render, old_first[i], &f));
+    CHECK(f == INVALID);
+  }
+  CHECK(dead_faces == 2);
+  CHECK_OK(hedge_render_sync(render, NULL));
+  check_triangle_faces(mesh, render);
+  /* Compaction moves the triangles; the map follows. */
+  CHECK_OK(hedge_render_compact(render, NULL, 0, NULL, NULL, 0, NULL));
+  check_triangle_faces(mesh, render);
+  CHECK_VALID(mesh);
+  CHECK_OK(hedge_mesh_destroy(mesh));
+}
+
 int main(void) {
   test_basics();
   test_tetrahedron();
@@ -1805,6 +2041,8 @@ int main(void) {
   test_smooth();
   test_decimate();
   test_subdivide();
+  test_picking();
+  test_triangle_faces();
   test_every_function_error_path();
   test_threads();
   printf("c_api_test: %d checks passed\n", g_checks);

@@ -90,6 +90,7 @@ void expect_consistent(const RenderSync& rs) {
     for (std::uint32_t t = r.first; t < r.first + r.count; ++t) {
       ASSERT_LT(t, slot_owner.size());
       EXPECT_EQ(slot_owner[t]++, 0) << "triangle slot " << t << " owned twice";
+      EXPECT_EQ(rs.triangle_face(t), f) << "triangle slot " << t;
       for (int k = 0; k < 3; ++k) {
         const Index rv = ix[3 * t + k];
         ASSERT_LT(rv, rs.vertex_slots());
@@ -122,7 +123,12 @@ void expect_consistent(const RenderSync& rs) {
   }
   EXPECT_EQ(live_rv, rs.n_vertices());
   for (std::size_t t = 0; t < slot_owner.size(); ++t)
-    if (!slot_owner[t]) EXPECT_TRUE(ix[3 * t] == ix[3 * t + 1] && ix[3 * t] == ix[3 * t + 2]) << "free slot " << t;
+    if (!slot_owner[t]) {
+      EXPECT_TRUE(ix[3 * t] == ix[3 * t + 1] && ix[3 * t] == ix[3 * t + 2]) << "free slot " << t;
+      EXPECT_FALSE(rs.triangle_face(t).is_valid()) << "free slot " << t;
+    }
+  EXPECT_EQ(rs.triangle_faces().size(), rs.triangle_slots());
+  EXPECT_FALSE(rs.triangle_face(rs.triangle_slots()).is_valid());
   EXPECT_LE(rs.vertex_slots(), rs.vertex_capacity());
   EXPECT_LE(rs.index_count(), rs.index_capacity());
 }
@@ -412,6 +418,68 @@ TEST(RenderSync, CompactRemovesHolesAndReportsTheMaps) {
   EXPECT_TRUE(rs.sync().full);  // also with nothing edited in between
   expect_consistent(rs);
   expect_matches_fresh(rs);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+// An engine's ray hit names a triangle of the uploaded index buffer; triangle_face() must name the
+// face whose triangle that is after splits, collapses and compaction, as the buffers do.
+TEST(RenderSync, TriangleFaceFollowsSplitCollapseAndCompact) {
+  SurfaceMesh m = with_uv_seams(6);
+  RenderSync rs(m);
+  // The triangle a hit reports, found the way an engine would: by its corners in the index buffer.
+  auto triangle_of_corners = [&](Face f) {
+    std::vector<Vertex> want;
+    for (Vertex v : m.vertices(f)) want.push_back(v);
+    std::sort(want.begin(), want.end());
+    for (std::size_t t = 0; t < rs.triangle_slots(); ++t) {
+      std::vector<Vertex> got;
+      for (int k = 0; k < 3; ++k) got.push_back(rs.render_vertex_source()[rs.indices()[3 * t + k]]);
+      std::sort(got.begin(), got.end());
+      if (got == want) return t;
+    }
+    return std::size_t(-1);
+  };
+  Edge e = *m.edges().begin();
+  const Vec3 mid =
+      0.5f * (m.position(m.from_vertex(m.halfedge(e, 0))) + m.position(m.to_vertex(m.halfedge(e, 0))));
+  const Vertex v = split_edge(m, e, mid);
+  ASSERT_TRUE(v.is_valid());
+  rs.sync();
+  for (Face f : m.faces(v)) {
+    const std::size_t t = triangle_of_corners(f);
+    ASSERT_NE(t, std::size_t(-1));
+    EXPECT_EQ(rs.triangle_face(t), f);
+  }
+  expect_consistent(rs);
+  // Collapse the new vertex away again: the slots of the faces it deletes are freed and name no face.
+  std::vector<std::pair<Face, std::size_t>> before;
+  for (Face f : m.faces(v)) before.push_back({f, rs.triangles(f).first});
+  Halfedge h;
+  for (Halfedge c : m.halfedges(v))
+    if (can_collapse(m, c)) h = c;
+  ASSERT_TRUE(h.is_valid());
+  const Vertex survivor = collapse(m, h);
+  ASSERT_TRUE(survivor.is_valid());
+  rs.sync();
+  std::size_t deleted = 0;
+  for (const auto& [f, t] : before) {
+    if (!m.is_deleted(f)) continue;
+    ++deleted;
+    EXPECT_FALSE(rs.triangle_face(t).is_valid()) << "the freed slot " << t << " of a deleted face";
+  }
+  EXPECT_GE(deleted, 1u);  // one face on a boundary edge, two inside
+  for (Face f : m.faces(survivor)) EXPECT_EQ(rs.triangle_face(rs.triangles(f).first), f);
+  expect_consistent(rs);
+  // Compaction moves every triangle: the map moves with it.
+  ASSERT_GT(rs.free_triangle_slots(), 0u);
+  rs.compact();
+  EXPECT_EQ(rs.triangle_faces().size(), rs.n_triangles());
+  for (Face f : m.faces()) {
+    const std::size_t t = triangle_of_corners(f);
+    ASSERT_NE(t, std::size_t(-1));
+    EXPECT_EQ(rs.triangle_face(t), f);
+  }
+  expect_consistent(rs);
   EXPECT_TRUE(m.validate().empty());
 }
 

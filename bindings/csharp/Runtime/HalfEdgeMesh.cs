@@ -23,7 +23,7 @@ namespace Hedge
 {
     /// <summary>A half-edge mesh: adjacency queries, local edits checked by predicates, building from
     /// index buffers and engine arrays, files, validation, and engine-ready render buffers.</summary>
-    public sealed class HalfEdgeMesh : IDisposable
+    public sealed partial class HalfEdgeMesh : IDisposable
     {
         const int Refused = (int)HedgeStatus.Refused;
         static readonly string[] NoProblems = new string[0];

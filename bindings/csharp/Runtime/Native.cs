@@ -9,11 +9,17 @@ using System.Runtime.InteropServices;
 
 namespace Hedge
 {
-    internal static class Native
+    internal static partial class Native
     {
         // "hedge_c" is resolved to libhedge_c.so (Linux), hedge_c.dll (Windows) and
-        // libhedge_c.dylib (macOS) by Mono, .NET and Unity.
+        // libhedge_c.dylib (macOS) by Mono, .NET and Unity. Platforms that link native code into
+        // the player statically (iOS, WebGL) name it "__Internal": define HEDGE_INTERNAL_LIB to build
+        // for a static library elsewhere.
+#if HEDGE_INTERNAL_LIB || UNITY_IOS || UNITY_WEBGL
+        internal const string Library = "__Internal";
+#else
         internal const string Library = "hedge_c";
+#endif
 
         // ---- Status, errors, version ----
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]

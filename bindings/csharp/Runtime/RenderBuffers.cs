@@ -24,7 +24,7 @@ using System.Runtime.InteropServices;
 namespace Hedge
 {
     /// <summary>Vertex and index buffers that follow the edits of a <see cref="HalfEdgeMesh"/>.</summary>
-    public sealed class RenderBuffers : IDisposable
+    public sealed partial class RenderBuffers : IDisposable
     {
 
         readonly RenderHandle handle;

@@ -39,6 +39,7 @@ namespace Hedge.Tests
             SeamTests.Register(runner);
             ErrorTests.Register(runner);
             ExampleTests.Register(runner);
+            PickingTests.Register(runner);
             int failed = runner.Run(args.Length > 3 ? args[3] : null);
             return failed > 0 ? 1 : 0;
         }

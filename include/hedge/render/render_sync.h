@@ -147,6 +147,15 @@ class RenderSync {
   }
   //! First triangle slot of face f and its triangle count (count 0 if f has none).
   SlotRange triangles(Face f) const;
+  //! The face that owns triangle slot t, the inverse of triangles(Face): what an engine's ray hit
+  //! (Unity's RaycastHit.triangleIndex, which counts triangles of the uploaded index buffer) names.
+  //! Invalid for a free slot or t >= triangle_slots(). As of the last sync, like the buffers: the
+  //! face may have been deleted by an edit since. O(1).
+  Face triangle_face(std::size_t t) const {
+    return t < triangle_face_.size() ? Face(triangle_face_[t]) : Face();
+  }
+  //! Triangle slot -> face index (kInvalidIndex for a free slot), triangle_slots() entries.
+  std::span<const Index> triangle_faces() const { return triangle_face_; }
   //! Render vertices beyond one per used mesh vertex: what seams cost.
   std::size_t seam_splits() const;
   //! Bytes of the whole vertex and index buffers (a full upload).
@@ -243,6 +252,7 @@ class RenderSync {
   // Index buffer.
   std::vector<std::uint32_t> indices_;
   std::vector<SlotRange> face_slots_;  // face -> its triangle slots
+  std::vector<Index> triangle_face_;   // triangle slot -> its face (the inverse of face_slots_)
   std::vector<std::vector<std::uint32_t>> free_triangles_;  // by triangle count: first slots
   std::size_t free_triangle_slots_ = 0;
   std::size_t index_capacity_ = 0;

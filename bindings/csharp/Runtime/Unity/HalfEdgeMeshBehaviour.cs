@@ -163,21 +163,8 @@ namespace Hedge.Unity
             gpuVertices = (int)Math.Max(counts.VertexCapacity, counts.VertexSlots);
             indexCount = (int)counts.IndexCount;
             int gpuIndices = (int)Math.Max(counts.IndexCapacity, counts.IndexCount);
-            int streams = 1;
-            normalStream = layout.HasNormals ? streams++ : -1;
-            texcoordStream = layout.HasTexcoords ? streams++ : -1;
-            colorStream = layout.HasColors ? streams++ : -1;
-            var attributes = new VertexAttributeDescriptor[streams];
-            attributes[0] = new VertexAttributeDescriptor(VertexAttribute.Position, VertexAttributeFormat.Float32, 3, 0);
-            if (normalStream >= 0)
-                attributes[normalStream] = new VertexAttributeDescriptor(VertexAttribute.Normal,
-                                                                         VertexAttributeFormat.Float32, 3, normalStream);
-            if (texcoordStream >= 0)
-                attributes[texcoordStream] = new VertexAttributeDescriptor(VertexAttribute.TexCoord0,
-                                                                           VertexAttributeFormat.Float32, 2, texcoordStream);
-            if (colorStream >= 0)
-                attributes[colorStream] = new VertexAttributeDescriptor(VertexAttribute.Color,
-                                                                        VertexAttributeFormat.Float32, 4, colorStream);
+            VertexAttributeDescriptor[] attributes = UnityStreams.Describe(layout, out normalStream, out texcoordStream,
+                                                                           out colorStream);
             positions = new float[3 * gpuVertices];
             normals = normalStream >= 0 ? new float[3 * gpuVertices] : null;
             texcoords = texcoordStream >= 0 ? new float[2 * gpuVertices] : null;

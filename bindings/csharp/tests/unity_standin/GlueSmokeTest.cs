@@ -17,6 +17,7 @@ namespace Hedge.Tests
         {
             var runner = new Runner();
             runner.Add("GlueSmokeTest.BuildEditUpload", BuildEditUpload);
+            NativeUploadTests.Register(runner);
             return runner.Run(args.Length > 0 ? args[0] : null) > 0 ? 1 : 0;
         }
 

@@ -16,7 +16,7 @@ namespace UnityEngine
         public Vector2(float x, float y) { this.x = x; this.y = y; }
     }
 
-    public struct Vector3
+    public partial struct Vector3
     {
         public float x, y, z;
         public Vector3(float x, float y, float z) { this.x = x; this.y = y; this.z = z; }
@@ -67,7 +67,7 @@ namespace UnityEngine
         }
     }
 
-    public class Component : Object
+    public partial class Component : Object
     {
         public GameObject gameObject { get; internal set; }
         public T GetComponent<T>() where T : Component { return gameObject.GetComponent<T>(); }
@@ -82,7 +82,7 @@ namespace UnityEngine
         public Mesh sharedMesh { get; set; }
     }
 
-    public sealed class Mesh : Object
+    public sealed partial class Mesh : Object
     {
         // The simple API: per-vertex arrays.
         public Vector3[] vertices { get; set; }

@@ -1,0 +1,106 @@
+// Unity's own array types in and out of a HalfEdgeMesh without managed copies: Vector3[], Vector2[],
+// Color[] and int[] go to the native library pinned, as the float[] overloads do (all are
+// blittable: three, two and four floats). Also Vector3 overloads of the picking and edit calls.
+using System;
+using System.Runtime.InteropServices;
+using UnityEngine;
+
+namespace Hedge.Unity
+{
+    /// <summary>HalfEdgeMesh calls in Unity's types.</summary>
+    public static class UnityMeshes
+    {
+        /// <summary>Builds a mesh from a Unity Mesh's arrays (mesh.vertices, mesh.triangles, mesh.normals,
+        /// mesh.uv, mesh.colors) with <see cref="EngineImportOptions.Unity"/>: positions welded for the
+        /// topology, normals, texcoords and colours kept per corner (seams stay seams).</summary>
+        /// <param name="vertices">One position per Unity vertex.</param>
+        /// <param name="triangles">Three vertex indices per triangle (the Unity winding).</param>
+        /// <param name="normals">Optional (null or empty): one per vertex.</param>
+        /// <param name="uv">Optional (null or empty): one per vertex.</param>
+        /// <param name="colors">Optional (null or empty): one per vertex.</param>
+        public static HalfEdgeMesh FromUnityMesh(Vector3[] vertices, int[] triangles, Vector3[] normals = null,
+                                                 Vector2[] uv = null, Color[] colors = null)
+        {
+            BuildReport report;
+            return FromUnityMesh(vertices, triangles, normals, uv, colors, EngineImportOptions.Unity, out report);
+        }
+
+        /// <summary>As above, with the options and the report of what was welded and repaired.</summary>
+        public static HalfEdgeMesh FromUnityMesh(Vector3[] vertices, int[] triangles, Vector3[] normals, Vector2[] uv,
+                                                 Color[] colors, EngineImportOptions options, out BuildReport report)
+        {
+            if (vertices == null) throw new ArgumentNullException("vertices");
+            if (triangles == null) throw new ArgumentNullException("triangles");
+            normals = Optional(normals, vertices.Length, "normals");
+            uv = Optional(uv, vertices.Length, "uv");
+            colors = Optional(colors, vertices.Length, "colors");
+            IntPtr mesh;
+            int status = hedge_mesh_from_engine_mesh(vertices, (uint)vertices.Length, triangles, (uint)triangles.Length,
+                                                     normals, uv, colors, ref options, out report, out mesh);
+            return HalfEdgeMesh.Adopt(status, mesh);
+        }
+
+        // Unity returns empty arrays for absent attributes; those mean "none" here.
+        static T[] Optional<T>(T[] array, int vertexCount, string name)
+        {
+            if (array == null || array.Length == 0) return null;
+            if (array.Length != vertexCount)
+                throw new ArgumentException("length " + array.Length + ", " + vertexCount + " expected (one per vertex)",
+                                            name);
+            return array;
+        }
+
+        /// <summary>Copies the position of every vertex slot (deleted ones with stale data) into buffer.</summary>
+        /// <returns>The vertex slots (the length needed); with a null buffer, only that.</returns>
+        /// <exception cref="HedgeException">BufferTooSmall if buffer holds fewer; nothing is written.</exception>
+        public static int CopyPositions(this HalfEdgeMesh mesh, Vector3[] buffer)
+        {
+            if (mesh == null) throw new ArgumentNullException("mesh");
+            ulong floats;
+            int status = hedge_mesh_copy_positions(mesh.Id, buffer, buffer != null ? 3UL * (ulong)buffer.Length : 0,
+                                                   out floats);
+            return Status.Filled(status, buffer == null, floats / 3);
+        }
+
+        public static Vector3 ToVector3(this Vec3 p) { return new Vector3(p.X, p.Y, p.Z); }
+        public static Vec3 ToVec3(this Vector3 p) { return new Vec3(p.x, p.y, p.z); }
+
+        /// <summary>The position of a live vertex.</summary>
+        public static Vector3 GetPositionVector(this HalfEdgeMesh mesh, Vertex v) { return mesh.GetPosition(v).ToVector3(); }
+
+        /// <summary><see cref="HalfEdgeMesh.SetPosition(Vertex, Vec3)"/> with a Vector3.</summary>
+        public static void SetPosition(this HalfEdgeMesh mesh, Vertex v, Vector3 p) { mesh.SetPosition(v, p.ToVec3()); }
+
+        /// <summary><see cref="HalfEdgeMesh.SplitEdge(Edge, Vec3)"/> with a Vector3.</summary>
+        public static Vertex SplitEdge(this HalfEdgeMesh mesh, Edge e, Vector3 p) { return mesh.SplitEdge(e, p.ToVec3()); }
+
+        /// <summary><see cref="HalfEdgeMesh.Raycast"/> with Vector3s, in the mesh's own (local) space.</summary>
+        public static bool Raycast(this HalfEdgeMesh mesh, Vector3 origin, Vector3 direction, out SurfaceHit hit,
+                                   float maxT = float.PositiveInfinity)
+        {
+            return mesh.Raycast(origin.ToVec3(), direction.ToVec3(), out hit, maxT);
+        }
+
+        /// <summary><see cref="HalfEdgeMesh.TryGetClosestPoint"/> with a Vector3.</summary>
+        public static bool TryGetClosestPoint(this HalfEdgeMesh mesh, Vector3 point, out SurfaceHit hit,
+                                              float maxDistance = float.PositiveInfinity)
+        {
+            return mesh.TryGetClosestPoint(point.ToVec3(), out hit, maxDistance);
+        }
+
+        /// <summary><see cref="HalfEdgeMesh.TryGetFaceContainingPoint(Vec3, out Face, float)"/> with a Vector3:
+        /// the face a point on the surface (a physics hit point in local space) lies on.</summary>
+        public static bool TryGetFaceContainingPoint(this HalfEdgeMesh mesh, Vector3 point, out Face face,
+                                                     float tolerance = 1e-4f)
+        {
+            return mesh.TryGetFaceContainingPoint(point.ToVec3(), out face, tolerance);
+        }
+
+        [DllImport(Native.Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        static extern int hedge_mesh_from_engine_mesh(Vector3[] positions, uint vertexCount, int[] indices,
+            uint indexCount, Vector3[] normals, Vector2[] texcoords, Color[] colors, ref EngineImportOptions options,
+            out BuildReport report, out IntPtr mesh);
+        [DllImport(Native.Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        static extern int hedge_mesh_copy_positions(IntPtr mesh, [Out] Vector3[] buffer, ulong capacity, out ulong count);
+    }
+}
