@@ -323,6 +323,12 @@ export class Mesh {
     return this._call('toArrays', triangulate);
   }
 
+  /** The mesh as the bytes of a file in the format of name's extension (.obj, .off, .ply, .stl),
+   *  as hedge writes files: PLY and STL binary, STL fanned into triangles. A Uint8Array copy. */
+  toFile(name) {
+    return this._call('toFile', String(name));
+  }
+
   /** Heap bytes held by the mesh and its picking tree. */
   memoryBytes() {
     return this._call('memoryBytes');
