@@ -250,6 +250,22 @@ std::string why_not_collapse(const SurfaceMesh& m, Halfedge h) {
          "with too few edges, or a boundary would close up)";
 }
 
+//! Runs body(), which rewrites the whole mesh (subdivision, decimation, garbage collection), so that
+//! it either succeeds or leaves the mesh as it was: a copy is kept and put back if body() throws.
+//! The library's algorithms check their input before they change anything, but running out of wasm
+//! memory halfway through a step (a subdivision past what 2 GB holds) would leave a broken mesh.
+//! Costs a copy of the mesh (time and memory), small next to what these algorithms allocate.
+template <typename Body>
+auto with_rollback(SurfaceMesh& mesh, Body&& body) -> decltype(body()) {
+  SurfaceMesh backup = mesh;  // throws before anything changed if memory is short already
+  try {
+    return body();
+  } catch (...) {
+    mesh = std::move(backup);  // noexcept; the change log records a reset for its consumers
+    throw;
+  }
+}
+
 // ---- Picking results ---------------------------------------------------------------------------
 
 //! Filled by Mesh::pick and read by the JS layer as a Float64Array at pickScratchAddress():
@@ -672,13 +688,16 @@ class WasmMesh {
 
   //! Removes deleted elements; every index may change.
   void garbage_collection() {
-    guarded([&] { s_->mesh.garbage_collection(); });
+    guarded([&] { with_rollback(s_->mesh, [&] { s_->mesh.garbage_collection(); }); });
   }
 
   // ---- Algorithms ----
 
   void subdivide(const std::string& scheme, int steps) {
-    guarded([&] { hedge::subdivide(s_->mesh, scheme_from(scheme), steps); });
+    guarded([&] {
+      const Subdivision s = scheme_from(scheme);
+      with_rollback(s_->mesh, [&] { hedge::subdivide(s_->mesh, s, steps); });
+    });
   }
 
   void smooth(const std::string& method, int iterations, double lambda, double mu, bool fix_boundary) {
@@ -703,7 +722,7 @@ class WasmMesh {
       options.target_faces = std::size_t(target_faces);
       options.target_vertices = std::size_t(target_vertices);
       if (max_error >= 0) options.max_error = max_error;
-      const DecimateResult r = hedge::decimate(s_->mesh, options);
+      const DecimateResult r = with_rollback(s_->mesh, [&] { return hedge::decimate(s_->mesh, options); });
       val out = val::object();
       out.set("vertices", double(r.vertices));
       out.set("faces", double(r.faces));
