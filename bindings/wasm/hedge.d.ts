@@ -83,6 +83,8 @@ export interface FaceRecord {
   halfedges: number[];
   vertices: number[];
   edges: number[];
+  /** Across each edge; -1 on the boundary. */
+  faces: number[];
   boundary: boolean;
 }
 

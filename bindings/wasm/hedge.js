@@ -120,15 +120,16 @@ export class Hedge {
   }
 }
 
-/** A half-edge mesh in wasm memory. */
-export class Mesh {
-  constructor(hedge, native) {
+/** What Mesh and Render share: a native object freed on dispose() or when collected. */
+class NativeOwner {
+  constructor(hedge, native, what) {
     this.hedge = hedge;
     this._native = native;
+    this._what = what;
     registry.register(this, native, this);
   }
 
-  /** Frees the mesh now. Idempotent. A Render made from it keeps working (it shares the mesh). */
+  /** Frees the native object now. Idempotent. */
   dispose() {
     if (this._native) {
       registry.unregister(this);
@@ -142,13 +143,20 @@ export class Mesh {
   }
 
   _n() {
-    if (!this._native) throw new HedgeError('disposed', 'this mesh was disposed');
+    if (!this._native) throw new HedgeError('disposed', `this ${this._what} was disposed`);
     return this._native;
   }
 
   _call(name, ...args) {
-    const native = this._n();
-    return this.hedge._check(native[name](...args));
+    return this.hedge._check(this._n()[name](...args));
+  }
+}
+
+/** A half-edge mesh in wasm memory. dispose() frees it now; a Render made from it keeps working
+ *  (it shares the mesh). */
+export class Mesh extends NativeOwner {
+  constructor(hedge, native) {
+    super(hedge, native, 'mesh');
   }
 
   /** An independent copy. */
@@ -213,8 +221,8 @@ export class Mesh {
     return this._call('edge', e);
   }
 
-  /** The half-edges of face f in order, with their target vertices and edges:
-   *  {face, halfedge, halfedges, vertices, edges, boundary}. */
+  /** The half-edges of face f in order, with their target vertices, edges and the faces across:
+   *  {face, halfedge, halfedges, vertices, edges, faces (-1 on the boundary), boundary}. */
   face(f) {
     return this._call('face', f);
   }
@@ -361,28 +369,9 @@ export class Mesh {
 }
 
 /** Vertex and index buffers for a GPU, updated by dirty ranges (RenderSync). */
-export class Render {
+export class Render extends NativeOwner {
   constructor(hedge, native) {
-    this.hedge = hedge;
-    this._native = native;
-    registry.register(this, native, this);
-  }
-
-  dispose() {
-    if (this._native) {
-      registry.unregister(this);
-      this._native.delete();
-      this._native = null;
-    }
-  }
-
-  get disposed() {
-    return this._native === null;
-  }
-
-  _call(name, ...args) {
-    if (!this._native) throw new HedgeError('disposed', 'this render object was disposed');
-    return this.hedge._check(this._native[name](...args));
+    super(hedge, native, 'render object');
   }
 
   /** Floats per vertex and the offset of each attribute (-1: absent):

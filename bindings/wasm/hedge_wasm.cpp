@@ -171,7 +171,9 @@ struct MeshState {
   BuildReport report;
 };
 
-std::string element_name(const char* kind, std::uint32_t index) { return std::string(kind) + " " + std::to_string(index); }
+std::string element_name(const char* kind, std::uint32_t index) {
+  return std::string(kind) + " " + std::to_string(index);
+}
 
 const char* none_if_missing(std::size_t slots) { return slots == 0 ? " (the mesh has none)" : ""; }
 
@@ -183,7 +185,8 @@ Vertex live_vertex(const SurfaceMesh& m, std::uint32_t v) {
 }
 Halfedge live_halfedge(const SurfaceMesh& m, std::uint32_t h) {
   if (!m.is_live(Halfedge(h)))
-    throw InvalidInputError(element_name("half-edge", h) + " is not a live half-edge of the mesh (half-edge slots: " +
+    throw InvalidInputError(element_name("half-edge", h) +
+                            " is not a live half-edge of the mesh (half-edge slots: " +
                             std::to_string(m.halfedge_slots()) + ")" + none_if_missing(m.halfedge_slots()));
   return Halfedge(h);
 }
@@ -215,8 +218,8 @@ std::string why_not_flip(const SurfaceMesh& m, Edge e) {
   const Vertex c = m.to_vertex(m.next(h0)), d = m.to_vertex(m.next(h1));
   if (c == d) return "the two triangles of " + name + " share their tip, " + element_name("vertex", c.idx());
   if (const Edge cd = m.find_edge(c, d); cd.is_valid())
-    return "the tips of " + name + ", " + element_name("vertex", c.idx()) + " and " + element_name("vertex", d.idx()) +
-           ", are already joined by " + element_name("edge", cd.idx());
+    return "the tips of " + name + ", " + element_name("vertex", c.idx()) + " and " +
+           element_name("vertex", d.idx()) + ", are already joined by " + element_name("edge", cd.idx());
   for (const Vertex v : m.vertices(e))
     if (!m.is_boundary(v) && m.valence(v) == 3)
       return element_name("vertex", v.idx()) + ", an end of " + name +
@@ -236,17 +239,19 @@ std::string why_not_collapse(const SurfaceMesh& m, Halfedge h) {
   for (const Vertex n : m.vertices(a)) {
     if (n == b || std::find(tips.begin(), tips.end(), n) != tips.end()) continue;
     if (m.find_edge(n, b).is_valid())
-      return "the ends of " + name + " (" + element_name("vertex", a.idx()) + " and " + element_name("vertex", b.idx()) +
-             ") share the neighbour " + element_name("vertex", n.idx()) +
+      return "the ends of " + name + " (" + element_name("vertex", a.idx()) + " and " +
+             element_name("vertex", b.idx()) + ") share the neighbour " + element_name("vertex", n.idx()) +
              " outside the triangles on the edge: collapsing would pinch the surface (the link condition)";
   }
   if (!m.is_boundary(SurfaceMesh::edge(h)) && m.is_boundary(a) && m.is_boundary(b))
-    return name + " crosses the interior between two boundary vertices: collapsing would join the boundaries there";
+    return name +
+           " crosses the interior between two boundary vertices: collapsing would join the boundaries there";
   for (const Vertex t : tips)
     if (!m.is_boundary(t) && m.valence(t) <= 3)
       return element_name("vertex", t.idx()) + ", a tip of a triangle on " + name +
              ", is an interior vertex of valence 3: the collapse would leave it with 2";
-  return "collapsing " + name + " would leave a degenerate or non-manifold surface (an end or a tip would be left "
+  return "collapsing " + name +
+         " would leave a degenerate or non-manifold surface (an end or a tip would be left "
          "with too few edges, or a boundary would close up)";
 }
 
@@ -292,10 +297,14 @@ TopologyPolicy policy_from(int policy) {
 
 Weld weld_from(int weld) {
   switch (weld) {
-    case 0: return Weld::none;
-    case 1: return Weld::exact;
-    case 2: return Weld::epsilon;
-    default: throw InvalidInputError("unknown weld mode " + std::to_string(weld) + " (0 none, 1 exact, 2 epsilon)");
+    case 0:
+      return Weld::none;
+    case 1:
+      return Weld::exact;
+    case 2:
+      return Weld::epsilon;
+    default:
+      throw InvalidInputError("unknown weld mode " + std::to_string(weld) + " (0 none, 1 exact, 2 epsilon)");
   }
 }
 
@@ -331,6 +340,25 @@ val report_to_js(const BuildReport& r) {
   val warnings = val::array();
   for (std::size_t i = 0; i < r.warnings.size(); ++i) warnings.set(i, r.warnings[i]);
   out.set("warnings", warnings);
+  return out;
+}
+
+//! {halfedges, vertices (their targets), edges, faces} of a list of half-edges; the faces are those
+//! of the twins (across) or of the half-edges themselves, -1 for none.
+val halfedge_lists(const SurfaceMesh& m, const std::vector<Halfedge>& hs, bool faces_across) {
+  std::vector<Vertex> vs;
+  std::vector<Edge> es;
+  std::vector<Face> fs;
+  for (const Halfedge h : hs) {
+    vs.push_back(m.to_vertex(h));
+    es.push_back(SurfaceMesh::edge(h));
+    fs.push_back(m.face(faces_across ? SurfaceMesh::twin(h) : h));
+  }
+  val out = val::object();
+  out.set("halfedges", js_index_array(hs));
+  out.set("vertices", js_index_array(vs));
+  out.set("edges", js_index_array(es));
+  out.set("faces", js_index_array(fs));
   return out;
 }
 
@@ -480,7 +508,8 @@ class WasmMesh {
       const Edge eh = live_edge(m, e);
       val out = val::object();
       out.set("edge", double(e));
-      out.set("halfedges", js_index_array(std::vector<Halfedge>{SurfaceMesh::halfedge(eh, 0), SurfaceMesh::halfedge(eh, 1)}));
+      out.set("halfedges", js_index_array(std::vector<Halfedge>{SurfaceMesh::halfedge(eh, 0),
+                                                                SurfaceMesh::halfedge(eh, 1)}));
       out.set("vertices", js_index_array(std::vector<Vertex>{m.vertex(eh, 0), m.vertex(eh, 1)}));
       out.set("faces", js_index_array(std::vector<Face>{m.face(eh, 0), m.face(eh, 1)}));
       out.set("boundary", m.is_boundary(eh));
@@ -488,24 +517,17 @@ class WasmMesh {
     });
   }
 
+  //! f's half-edges in order: {face, halfedge, halfedges, vertices (their targets), edges, faces
+  //! (across each edge, -1 on the boundary), boundary}.
   val face(std::uint32_t f) const {
     return guarded([&] {
       const SurfaceMesh& m = s_->mesh;
       const Face fh = live_face(m, f);
       std::vector<Halfedge> hs;
-      std::vector<Vertex> vs;
-      std::vector<Edge> es;
-      for (const Halfedge h : m.halfedges(fh)) {
-        hs.push_back(h);
-        vs.push_back(m.to_vertex(h));
-        es.push_back(SurfaceMesh::edge(h));
-      }
-      val out = val::object();
+      for (const Halfedge h : m.halfedges(fh)) hs.push_back(h);
+      val out = halfedge_lists(m, hs, true);
       out.set("face", double(f));
       out.set("halfedge", js_index(m.halfedge(fh).idx()));
-      out.set("halfedges", js_index_array(hs));
-      out.set("vertices", js_index_array(vs));
-      out.set("edges", js_index_array(es));
       out.set("boundary", m.is_boundary(fh));
       return out;
     });
@@ -518,22 +540,10 @@ class WasmMesh {
       const SurfaceMesh& m = s_->mesh;
       const Vertex vh = live_vertex(m, v);
       std::vector<Halfedge> hs;
-      std::vector<Vertex> vs;
-      std::vector<Edge> es;
-      std::vector<Face> fs;
       if (!m.is_isolated(vh))
-        for (const Halfedge h : m.halfedges(vh)) {
-          hs.push_back(h);
-          vs.push_back(m.to_vertex(h));
-          es.push_back(SurfaceMesh::edge(h));
-          fs.push_back(m.face(h));
-        }
-      val out = val::object();
+        for (const Halfedge h : m.halfedges(vh)) hs.push_back(h);
+      val out = halfedge_lists(m, hs, false);
       out.set("vertex", double(v));
-      out.set("halfedges", js_index_array(hs));
-      out.set("vertices", js_index_array(vs));
-      out.set("edges", js_index_array(es));
-      out.set("faces", js_index_array(fs));
       return out;
     });
   }
@@ -559,7 +569,8 @@ class WasmMesh {
         const double dv = norm(p - b);
         if (dv < best_v_d) best_v_d = dv, best_v = m.to_vertex(h);
       }
-      const double values[16] = {double(hit->face.idx()),   hit->t,
+      const double values[16] = {double(hit->face.idx()),
+                                 hit->t,
                                  p.x,
                                  p.y,
                                  p.z,
@@ -585,7 +596,8 @@ class WasmMesh {
     return guarded([&]() -> std::uint32_t {
       std::vector<float> r;
       const std::uint32_t n_floats = js_length(rays, "rays");
-      if (n_floats % 6 != 0) throw InvalidInputError("rays: " + std::to_string(n_floats) + " floats is not 6 per ray");
+      if (n_floats % 6 != 0)
+        throw InvalidInputError("rays: " + std::to_string(n_floats) + " floats is not 6 per ray");
       const std::uint32_t n = n_floats / 6;
       if (js_length(out, "out") != n)
         throw InvalidInputError("out: expected " + std::to_string(n) + " entries, one per ray");
@@ -613,10 +625,13 @@ class WasmMesh {
       const SurfaceMesh& m = s_->mesh;
       if (op == "splitEdge")
         return can_split_edge(m, Edge(element)) ? "" : element_name("edge", element) + " is not a live edge";
-      if (op == "flip") return m.is_valid(Edge(element)) ? why_not_flip(m, Edge(element)) : element_name("edge", element) + " is not a live edge";
+      if (op == "flip")
+        return m.is_valid(Edge(element)) ? why_not_flip(m, Edge(element))
+                                         : element_name("edge", element) + " is not a live edge";
       if (op == "collapse")
-        return m.is_valid(Halfedge(element)) ? why_not_collapse(m, Halfedge(element))
-                                             : element_name("half-edge", element) + " is not a live half-edge";
+        return m.is_valid(Halfedge(element))
+                   ? why_not_collapse(m, Halfedge(element))
+                   : element_name("half-edge", element) + " is not a live half-edge";
       if (op == "splitFace")
         return can_split_face(m, Face(element)) ? "" : element_name("face", element) + " is not a live face";
       throw InvalidInputError("unknown operation '" + op + "' (splitEdge, flip, collapse, splitFace)");
@@ -645,7 +660,8 @@ class WasmMesh {
       SurfaceMesh& m = s_->mesh;
       if (!m.is_valid(Edge(e)) || !can_flip(m, Edge(e)))
         throw Refused("flip of " + element_name("edge", e) + " refused: " +
-                      (m.is_valid(Edge(e)) ? why_not_flip(m, Edge(e)) : element_name("edge", e) + " is not a live edge"));
+                      (m.is_valid(Edge(e)) ? why_not_flip(m, Edge(e))
+                                           : element_name("edge", e) + " is not a live edge"));
       const Edge out = hedge::flip(m, Edge(e));
       if (!out.is_valid()) throw Refused("flip of " + element_name("edge", e) + " refused");
       return double(out.idx());
@@ -678,8 +694,9 @@ class WasmMesh {
       if (!m.is_valid(Face(f)) || !can_split_face(m, Face(f)))
         throw Refused("split of " + element_name("face", f) + " refused: " + element_name("face", f) +
                       " is not a live face");
-      const Vec3 p = point.isUndefined() || point.isNull() ? face_centroid(m, Face(f))
-                                                           : point_from_js(point, "splitFace of " + element_name("face", f));
+      const Vec3 p = point.isUndefined() || point.isNull()
+                         ? face_centroid(m, Face(f))
+                         : point_from_js(point, "splitFace of " + element_name("face", f));
       const Vertex v = hedge::split_face(m, Face(f), p);
       if (!v.is_valid()) throw Refused("split of " + element_name("face", f) + " refused");
       return double(v.idx());
@@ -742,13 +759,13 @@ class WasmMesh {
       val result = val::object();
       const val f32 = val::global("Float32Array"), u32 = val::global("Uint32Array");
       result.set("positions",
-                 f32.new_(val(emscripten::typed_memory_view(out.positions.size() * 3,
-                                                            out.positions.empty() ? nullptr : &out.positions[0].x))));
-      result.set("indices", u32.new_(val(emscripten::typed_memory_view(out.indices.size(), out.indices.data()))));
-      result.set("faceSizes",
-                 out.face_sizes.empty()
-                     ? val::null()
-                     : u32.new_(val(emscripten::typed_memory_view(out.face_sizes.size(), out.face_sizes.data()))));
+                 f32.new_(val(emscripten::typed_memory_view(
+                     out.positions.size() * 3, out.positions.empty() ? nullptr : &out.positions[0].x))));
+      result.set("indices",
+                 u32.new_(val(emscripten::typed_memory_view(out.indices.size(), out.indices.data()))));
+      result.set("faceSizes", out.face_sizes.empty() ? val::null()
+                                                     : u32.new_(val(emscripten::typed_memory_view(
+                                                           out.face_sizes.size(), out.face_sizes.data()))));
       return result;
     });
   }
@@ -762,7 +779,8 @@ class WasmMesh {
       if (format == FileFormat::stl) options.triangulation = Triangulation::fan;
       const std::string bytes = write_indexed(to_indexed(s_->mesh, options), format);
       return val::global("Uint8Array")
-          .new_(val(emscripten::typed_memory_view(bytes.size(), reinterpret_cast<const std::uint8_t*>(bytes.data()))));
+          .new_(val(emscripten::typed_memory_view(bytes.size(),
+                                                  reinterpret_cast<const std::uint8_t*>(bytes.data()))));
     });
   }
 
@@ -796,8 +814,8 @@ val ranges_to_js(const std::vector<SlotRange>& ranges) {
   val out = val::global("Uint32Array").new_(double(ranges.size() * 2));
   if (!ranges.empty()) {
     static_assert(sizeof(SlotRange) == 8);
-    out.call<void>("set", val(emscripten::typed_memory_view(ranges.size() * 2,
-                                                            reinterpret_cast<const std::uint32_t*>(ranges.data()))));
+    out.call<void>("set", val(emscripten::typed_memory_view(
+                              ranges.size() * 2, reinterpret_cast<const std::uint32_t*>(ranges.data()))));
   }
   return out;
 }
@@ -872,11 +890,20 @@ class WasmRender {
       const RenderSync& r = sync();
       std::span<const float> s;
       switch (stream) {
-        case 0: s = r.vertices(); break;
-        case 1: s = r.normals(); break;
-        case 2: s = r.texcoords(); break;
-        case 3: s = r.colors(); break;
-        default: throw InvalidInputError("unknown stream " + std::to_string(stream));
+        case 0:
+          s = r.vertices();
+          break;
+        case 1:
+          s = r.normals();
+          break;
+        case 2:
+          s = r.texcoords();
+          break;
+        case 3:
+          s = r.colors();
+          break;
+        default:
+          throw InvalidInputError("unknown stream " + std::to_string(stream));
       }
       return val(emscripten::typed_memory_view(s.size(), s.data()));
     });
