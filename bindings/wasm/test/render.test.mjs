@@ -1,7 +1,7 @@
 // RenderSync through JS: views into wasm memory and dirty ranges after edits.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { hedge, grid } from './support.mjs';
+import { hedge, grid, sample } from './support.mjs';
 
 test('the buffers are views into wasm memory holding every triangle of the mesh', () => {
   const mesh = grid(4);
@@ -118,4 +118,42 @@ test('a render outlives the disposal of its mesh', () => {
   render.dispose();
   render.dispose();
   assert.throws(() => render.sizes(), (e) => e.kind === 'disposed');
+});
+
+test('an algorithm that renumbers everything makes the next sync full, with the new triangles', () => {
+  const mesh = grid(3);
+  const render = mesh.createRender();
+  mesh.subdivide('loop');
+  const result = render.sync();
+  assert.equal(result.full, true);
+  assert.equal(render.sizes().triangles, 4 * 18);
+  assert.equal(result.indexBytes, 4 * render.sizes().indexCount);
+  mesh.decimate({ ratio: 0.5 });
+  assert.equal(render.sync().full, true);
+  assert.equal(render.sizes().triangles, mesh.counts().faces);
+  assert.deepEqual(mesh.validate(), []);
+  render.dispose();
+  mesh.dispose();
+});
+
+test('texture coordinates from a file reach the vertex layout, UV seams as separate render vertices', () => {
+  const mesh = hedge.fromFile(sample('spot_triangulated.obj'), 'spot.obj');
+  const render = mesh.createRender({ normals: 'computed' });
+  const layout = render.layout;
+  assert.equal(layout.stride, 8);
+  assert.equal(layout.texcoord, 6);
+  const sizes = render.sizes();
+  assert.ok(sizes.vertices > mesh.counts().vertices, 'seams split vertices');
+  // Every render vertex carries one of the file's vt pairs.
+  const uvs = new Set(
+    new TextDecoder()
+      .decode(sample('spot_triangulated.obj'))
+      .split('\n')
+      .filter((l) => l.startsWith('vt '))
+      .map((l) => l.trim().split(/\s+/).slice(1, 3).map((x) => Math.fround(Number(x))).join(' ')),
+  );
+  const v = render.vertices;
+  for (let r = 0; r < sizes.vertexSlots; ++r) assert.ok(uvs.has(`${v[r * 8 + 6]} ${v[r * 8 + 7]}`), `render vertex ${r}`);
+  render.dispose();
+  mesh.dispose();
 });
