@@ -8,6 +8,7 @@
 #   peers  other mesh libraries the benchmarks compare against (large)
 #   fuzz   the libFuzzer targets
 #   csharp Mono's C# compiler and runtime, for the C# binding's tests (bindings/csharp/)
+#   wasm   emscripten (with its node and clang) for the WebAssembly module (bindings/wasm/)
 # Only missing packages are installed; when everything is present nothing is run, so the check is
 # fast on a machine that is already set up. Debian 12 (apt-get) is assumed.
 
@@ -22,6 +23,7 @@ hedge_deps_packages() {
       peers) echo libopenmesh-dev libcgal-dev libeigen3-dev libmeshoptimizer-dev ;;
       fuzz) echo clang libclang-rt-14-dev ;;
       csharp) echo mono-mcs mono-runtime ;;
+      wasm) echo emscripten nodejs ;;
       *)
         echo "deps.sh: unknown dependency group '$group'" >&2
         return 1
