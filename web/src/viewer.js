@@ -121,6 +121,13 @@ export class Viewer {
     return h / (2 * distance * Math.tan(THREE.MathUtils.degToRad(this.camera.fov) / 2));
   }
 
+  //! Client pixel coordinates of world point p ([x, y, z]).
+  project(p) {
+    const v = new THREE.Vector3(...p).project(this.camera);
+    const rect = this.canvas.getBoundingClientRect();
+    return { x: rect.left + (v.x + 1) / 2 * rect.width, y: rect.top + (1 - v.y) / 2 * rect.height };
+  }
+
   clearOverlay() {
     for (const child of [...this.overlay.children]) {
       this.overlay.remove(child);
