@@ -155,6 +155,29 @@ test('samples match hedge info', async ({ page }) => {
   }
 });
 
+test('hovering an edge shows its half-edge records, one-ring and arrows', async ({ page }) => {
+  await page.check('#show-ring');
+  await page.check('#show-arrows');
+  const c = await hoverEdge(page);
+  const text = await page.textContent('#records');
+  const h = Number(/half-edge h(\d+)/.exec(text)?.[1]);
+  check(Number.isInteger(h), `no half-edge in the records panel: ${text}`);
+  // The panel's records against hedge's own (read through the page's session) and the pairing rule.
+  const record = await page.evaluate((k) => window.playground.state.session.record(k), h);
+  checkEqual(record.twin, h ^ 1, 'twin of the hovered half-edge');
+  for (const key of ['origin', 'twin', 'next', 'prev']) {
+    const prefix = key === 'origin' ? 'v' : 'h';
+    check(new RegExp(`${key}\\s+${prefix}${record[key]}\\b`).test(text), `records panel lacks ${key} ${prefix}${record[key]}: ${text}`);
+  }
+  check(text.includes(`edge e${record.edge}: v${record.origin} - v${record.target}`), `edge line missing: ${text}`);
+  // Highlight, one-ring spokes and four arrows (the half-edge, next, prev and twin) are drawn.
+  const overlay = await page.evaluate(() => window.playground.state.viewer.overlay.children.length);
+  const ring = await page.evaluate((v) => window.playground.state.session.oneRing(v).length, record.origin);
+  check(overlay >= 1 + 2 * ring + 4, `${overlay} overlay objects for an edge with a ${ring}-vertex ring and 4 arrows`);
+  await page.mouse.move(c.x, c.y);
+  await page.screenshot({ path: join(outDir, 'inspect_edge.png') });
+});
+
 test('click on an edge splits it with a partial upload', async ({ page }) => {
   const before = await counts(page);
   await clickEdge(page, 'split');
@@ -229,7 +252,7 @@ test('a malformed file shows an error and the page keeps working', async ({ page
   await dropFile(page, 'broken.obj', 'v 0 0 0\nv 1 0 0\nv 0 1 zero\nf 1 2 3\n');
   await page.waitForSelector('#error', { state: 'visible', timeout: 5000 });
   const message = await page.textContent('#error-text');
-  check(message.includes('broken.obj'), `the error does not name the file: ${message}`);
+  check(/broken\.obj\b.*\b3\b/.test(message), `the error does not name the file and line 3: ${message}`);
   checkEqual(JSON.stringify(await counts(page)), JSON.stringify(before), 'the loaded mesh after a bad file');
   checkEqual(await page.getAttribute('body', 'data-mesh'), 'spot_triangulated.obj', 'mesh kept');
 
