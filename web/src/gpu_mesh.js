@@ -4,7 +4,9 @@
 // The vertex buffer is one interleaved buffer (position, normal, ...) shared by the surface and by
 // the wireframe; the surface draws the triangle index buffer, the wireframe draws a line index
 // buffer derived from it (triangle t's three sides sit at line indices [6t, 6t + 6)), so both follow
-// the same dirty ranges. The buffers are allocated at RenderSync's capacity, and only a sync that
+// the same dirty ranges. A polygon's triangles have sides that are no edges of the mesh (its
+// diagonals); an `isEdge(a, b)` test on render vertices, when given, leaves those out of the
+// wireframe (a degenerate line instead). The buffers are allocated at RenderSync's capacity, and only a sync that
 // reports `resized` or `full` reallocates and uploads them whole.
 import * as THREE from 'three';
 
@@ -41,7 +43,9 @@ export class GpuMesh {
   //! Reallocates every buffer from `buffers` and uploads it whole.
   //! buffers: { vertices: Float32Array, indices: Uint32Array, layout: {stride, position, normal},
   //!            vertexCapacity, indexCapacity } (capacities in render vertices and in indices).
-  rebuild(buffers) {
+  //! isEdge: null (every side is an edge: a triangle mesh) or (a, b) => whether render vertices a
+  //! and b are joined by an edge of the mesh.
+  rebuild(buffers, isEdge = null) {
     const { layout } = buffers;
     const vertexCapacity = Math.max(buffers.vertexCapacity, buffers.vertices.length / layout.stride, 1);
     const indexCapacity = Math.max(buffers.indexCapacity, buffers.indices.length, 3);
@@ -51,7 +55,9 @@ export class GpuMesh {
     this.indexArray = new Uint32Array(indexCapacity);
     this.indexArray.set(buffers.indices);
     this.lineArray = new Uint32Array(indexCapacity * 2);
-    this.writeLines(0, buffers.indices.length);
+    const indexCount = buffers.indices.length;
+    // The views into wasm memory are used up: isEdge may call into the module and move them.
+    this.writeLines(0, indexCount, isEdge);
 
     const interleaved = new THREE.InterleavedBuffer(this.vertexArray, layout.stride);
     interleaved.setUsage(THREE.DynamicDrawUsage);
@@ -71,7 +77,7 @@ export class GpuMesh {
     this.lineGeometry.setIndex(lines);
     this.surface.geometry = this.geometry;
     this.wireframe.geometry = this.lineGeometry;
-    this.indexCount = buffers.indices.length;
+    this.indexCount = indexCount;
     this.geometry.setDrawRange(0, this.indexCount);
     this.lineGeometry.setDrawRange(0, this.indexCount * 2);
     this.geometry.computeBoundingSphere();
@@ -81,11 +87,12 @@ export class GpuMesh {
   //! Copies the rewritten ranges of `result` from `buffers` and asks three.js to upload only them.
   //! Falls back to rebuild() when the sync resized or rebuilt the buffers, or they outgrew ours.
   //! Returns the bytes queued for upload.
-  update(buffers, result) {
+  update(buffers, result, isEdge = null) {
     const stride = buffers.layout.stride;
     if (result.resized || result.full || !this.vertexArray || stride !== this.stride ||
         buffers.vertices.length > this.vertexArray.length || buffers.indices.length > this.indexArray.length)
-      return { bytes: this.rebuild(buffers), full: true, ranges: 1 };
+      return { bytes: this.rebuild(buffers, isEdge), full: true, ranges: 1 };
+    const indexCount = buffers.indices.length;
 
     const position = this.geometry.getAttribute('position');
     const interleaved = position.data;
@@ -102,32 +109,37 @@ export class GpuMesh {
       if (count === 0) continue;
       copyRange(this.indexArray, buffers.indices, first, count, 1);
       index.addUpdateRange(first, count);
-      // Index ranges cover whole triangles, so they map onto whole line triples.
-      this.writeLines(first, count);
       lines.addUpdateRange(first * 2, count * 2);
       bytes += count * 4 * 3;
     }
+    // After every copy: isEdge may call into the module, which can move the views.
+    // Index ranges cover whole triangles, so they map onto whole line triples.
+    for (const { first, count } of result.indexRanges) this.writeLines(first, count, isEdge);
     if (result.vertexRanges.length) interleaved.needsUpdate = true;
     if (result.indexRanges.length) {
       index.needsUpdate = true;
       lines.needsUpdate = true;
     }
-    this.indexCount = buffers.indices.length;
+    this.indexCount = indexCount;
     this.geometry.setDrawRange(0, this.indexCount);
     this.lineGeometry.setDrawRange(0, this.indexCount * 2);
     return { bytes, full: false, ranges: result.vertexRanges.length + result.indexRanges.length };
   }
 
-  // Line indices for index-buffer entries [first, first + count), whole triangles.
-  writeLines(first, count) {
+  // Line indices for index-buffer entries [first, first + count), whole triangles; a side that
+  // isEdge rejects becomes a zero-length line.
+  writeLines(first, count, isEdge) {
     const tri = this.indexArray;
     const out = this.lineArray;
     for (let i = first; i < first + count; i += 3) {
-      const a = tri[i], b = tri[i + 1], c = tri[i + 2];
-      const o = i * 2;
-      out[o] = a; out[o + 1] = b;
-      out[o + 2] = b; out[o + 3] = c;
-      out[o + 4] = c; out[o + 5] = a;
+      const corners = [tri[i], tri[i + 1], tri[i + 2]];
+      for (let k = 0; k < 3; ++k) {
+        const a = corners[k], b = corners[(k + 1) % 3];
+        const o = i * 2 + k * 2;
+        const keep = a !== b && (!isEdge || isEdge(a, b));
+        out[o] = a;
+        out[o + 1] = keep ? b : a;
+      }
     }
   }
 

@@ -94,7 +94,8 @@ function adopt(session, name, ms) {
   $('records').textContent = 'Hover the mesh.';
   $('mesh-name').textContent = name;
   const before = state.viewer.meter.snapshot();
-  const bytes = state.viewer.mesh.rebuild(session.buffers());
+  const isEdge = session.edgeTest();
+  const bytes = state.viewer.mesh.rebuild(session.buffers(), isEdge);
   state.viewer.frame(session.boundingBox());
   state.viewer.render();
   state.lastUpload = { bytes, full: true, ranges: 1, gl: state.viewer.meter.since(before) };
@@ -239,18 +240,26 @@ function drawHover() {
   const s = state.session;
   if (!el || !s) return;
   const loopPoints = (f) => s.faceHalfedges(f).map((h) => s.position(s.record(h).origin));
-  if (el.kind === 'face') viewer.addPolygon(loopPoints(el.face), COLORS.face);
+  // Overlay sizes follow the hovered face's edges, so they read the same at any zoom and density.
+  const points = loopPoints(el.face);
+  let unit = 0;
+  for (let i = 0; i < points.length; ++i) {
+    const a = points[i], b = points[(i + 1) % points.length];
+    unit += Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]) / points.length;
+  }
+  if (el.kind === 'face') viewer.addPolygon(points, COLORS.face);
   if (el.kind === 'edge') {
     const r = s.record(el.halfedge);
-    viewer.addSegment(s.position(r.origin), s.position(r.target), COLORS.edge);
+    viewer.addSegment(s.position(r.origin), s.position(r.target), COLORS.edge, unit * 0.035);
   }
   const ringVertex = el.kind === 'vertex' ? el.vertex : s.record(el.halfedge).origin;
-  if (el.kind === 'vertex') viewer.addPoint(s.position(el.vertex), COLORS.vertex);
+  if (el.kind === 'vertex') viewer.addPoint(s.position(el.vertex), COLORS.vertex, unit * 0.1);
   if ($('show-ring').checked) {
     const centre = s.position(ringVertex);
+    viewer.addPoint(centre, COLORS.ring, unit * 0.08);
     for (const v of s.oneRing(ringVertex)) {
-      viewer.addSegment(centre, s.position(v), COLORS.ring, 0.003);
-      viewer.addPoint(s.position(v), COLORS.ring, 0.008);
+      viewer.addSegment(centre, s.position(v), COLORS.ring, unit * 0.02);
+      viewer.addPoint(s.position(v), COLORS.ring, unit * 0.06);
     }
   }
   if ($('show-arrows').checked) {
@@ -295,7 +304,8 @@ function applyEdit(name, edit) {
   state.hover = null;
   viewer.clearOverlay();
   const before = viewer.meter.snapshot();
-  const upload = viewer.mesh.update(s.buffers(), result);
+  const isEdge = s.edgeTest();
+  const upload = viewer.mesh.update(s.buffers(), result, isEdge);
   viewer.render();
   state.lastUpload = { ...upload, gl: viewer.meter.since(before) };
   showUpload(state.lastUpload);
@@ -421,8 +431,7 @@ function wireInput() {
   })));
   $('pick-bench').addEventListener('click', () => guard('picking benchmark', async () => {
     $('stat-pick').textContent = 'measuring...';
-    const size = Number($('pick-size').value);
-    const report = await measurePicking(state.hedge, state.session, size);
+    const report = await measurePicking(state.hedge, state.session, Number($('pick-size').value));
     $('stat-pick').textContent = report.text;
     document.body.dataset.pick = JSON.stringify(report);
   }));
@@ -453,7 +462,8 @@ window.playground = {
   project(p) {
     return state.viewer.project(p);
   },
-  //! Edges whose midpoint is visible and picks back as that edge: [{edge, halfedge, x, y}].
+  //! Edges whose midpoint is visible and picks back as that edge: [{edge, halfedge, x, y, length}]
+  //! (screen pixels).
   visibleEdges(limit = 20) {
     const s = state.session;
     const out = [];
@@ -466,22 +476,34 @@ window.playground = {
       const a = s.position(r.origin), b = s.position(r.target);
       const mid = [0, 1, 2].map((i) => (a[i] + b[i]) / 2);
       const { x, y } = state.viewer.project(mid);
+      const pa = state.viewer.project(a), pb = state.viewer.project(b);
+      const length = Math.hypot(pa.x - pb.x, pa.y - pb.y);
       const el = elementAt({ clientX: x, clientY: y });
-      if (el && el.kind === 'edge' && s.record(el.halfedge).edge === r.edge) out.push({ edge: r.edge, halfedge: h, x, y });
+      if (el && el.kind === 'edge' && s.record(el.halfedge).edge === r.edge) out.push({ edge: r.edge, halfedge: h, x, y, length });
     }
     return out;
   },
-  //! Screen position of the centroid of a visible face that picks back as that face, or null.
-  visibleFaceCentre() {
+  //! Screen position of the centroid of a visible face that picks back as that face, or null;
+  //! `largest`: of the face that looks largest on screen (its screen-space area) instead of the first.
+  visibleFaceCentre({ largest = false } = {}) {
     const s = state.session;
     const faces = s.counts().faces;
+    let best = null;
     for (let f = 0; f < faces; ++f) {
       if (!s.isFaceLive(f)) continue;
       const { x, y } = state.viewer.project(faceCentre(s, f));
       const el = elementAt({ clientX: x, clientY: y });
-      if (el && el.kind === 'face' && el.face === f) return { face: f, x, y };
+      if (!el || el.kind !== 'face' || el.face !== f) continue;
+      if (!largest) return { face: f, x, y };
+      const corners = s.faceHalfedges(f).map((h) => state.viewer.project(s.position(s.record(h).origin)));
+      let area = 0;
+      for (let i = 0; i < corners.length; ++i) {
+        const p = corners[i], q = corners[(i + 1) % corners.length];
+        area += (p.x * q.y - q.x * p.y) / 2;
+      }
+      if (!best || Math.abs(area) > best.area) best = { face: f, x, y, area: Math.abs(area) };
     }
-    return null;
+    return best;
   },
 };
 

@@ -88,6 +88,24 @@ export class Session {
     };
   }
 
+  //! Null for a triangle mesh (every side of a render triangle is an edge); else a test whether
+  //! render vertices a and b are joined by an edge, for drawing polygons without their diagonals.
+  //! Valid until the next edit.
+  edgeTest() {
+    if (this.mesh.isTriangleMesh()) return null;
+    const source = this.render.vertexSource.slice();  // a copy: the test calls into the module
+    const rings = new Map();
+    return (a, b) => {
+      const va = source[a], vb = source[b];
+      let ring = rings.get(va);
+      if (!ring) {
+        ring = new Set(this.mesh.oneRing(va).vertices);
+        rings.set(va, ring);
+      }
+      return ring.has(vb);
+    };
+  }
+
   //! Syncs the render buffers with the mesh: { vertexRanges, indexRanges: [{first, count}], resized, full }.
   sync() {
     const r = this.render.sync();

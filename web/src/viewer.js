@@ -14,7 +14,7 @@ const COLORS = {
   halfedge: 0xe0206a,
   next: 0x1a8cff,
   prev: 0x8a4fd0,
-  twin: 0x18a558,
+  twin: 0xe69500,
 };
 export { COLORS };
 
@@ -40,7 +40,7 @@ export class Viewer {
 
     const material = new THREE.MeshStandardMaterial({
       color: COLORS.surface, roughness: 0.7, metalness: 0.0, side: THREE.DoubleSide,
-      flatShading: true, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1,
+      flatShading: false, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1,
     });
     const lineMaterial = new THREE.LineBasicMaterial({ color: COLORS.wire, transparent: true, opacity: 0.45 });
     this.mesh = new GpuMesh(material, lineMaterial);
@@ -94,7 +94,7 @@ export class Viewer {
     this.controls.target.copy(center);
     const fov = THREE.MathUtils.degToRad(this.camera.fov);
     const distance = radius / Math.sin(fov / 2) * 1.05;
-    this.camera.position.copy(center).add(new THREE.Vector3(0.35, 0.25, 1).normalize().multiplyScalar(distance));
+    this.camera.position.copy(center).add(new THREE.Vector3(-0.7, 0.35, -1).normalize().multiplyScalar(distance));
     this.camera.near = distance / 100;
     this.camera.far = distance * 100;
     this.camera.updateProjectionMatrix();
@@ -153,12 +153,13 @@ export class Viewer {
     this.overlay.add(new THREE.Mesh(geometry, material));
   }
 
-  addSegment(a, b, color, radius = 0.004) {
+  //! A cylinder of `radius` (world units) from a to b.
+  addSegment(a, b, color, radius) {
     const start = new THREE.Vector3(...a);
     const end = new THREE.Vector3(...b);
     const length = start.distanceTo(end);
     if (length === 0) return;
-    const r = radius * this.scale;
+    const r = radius;
     const geometry = new THREE.CylinderGeometry(r, r, length, 8, 1, false);
     const mesh = new THREE.Mesh(geometry, new THREE.MeshBasicMaterial({ color }));
     mesh.position.copy(start).add(end).multiplyScalar(0.5);
@@ -166,8 +167,9 @@ export class Viewer {
     this.overlay.add(mesh);
   }
 
-  addPoint(p, color, radius = 0.012) {
-    const geometry = new THREE.SphereGeometry(radius * this.scale, 12, 8);
+  //! A ball of `radius` (world units) at p.
+  addPoint(p, color, radius) {
+    const geometry = new THREE.SphereGeometry(radius, 12, 8);
     const mesh = new THREE.Mesh(geometry, new THREE.MeshBasicMaterial({ color }));
     mesh.position.set(...p);
     this.overlay.add(mesh);
@@ -185,8 +187,7 @@ export class Viewer {
     const dir = to.clone().sub(from);
     const length = dir.length();
     if (length === 0) return;
-    const arrow = new THREE.ArrowHelper(dir.normalize(), from, length, color, Math.min(length * 0.3, this.scale * 0.05),
-      Math.min(length * 0.15, this.scale * 0.025));
+    const arrow = new THREE.ArrowHelper(dir.normalize(), from, length, color, length * 0.3, length * 0.15);
     arrow.line.material.depthTest = false;
     arrow.cone.material.depthTest = false;
     arrow.renderOrder = 10;

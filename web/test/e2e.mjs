@@ -81,8 +81,15 @@ async function drawnPixels(page) {
 }
 
 // Moves the pointer onto a visible interior edge until the page highlights it; returns it.
-async function hoverEdge(page) {
-  const candidates = await page.evaluate(() => window.playground.visibleEdges(20));
+// `central`: the edges nearest the middle of the view first.
+async function hoverEdge(page, { central = false } = {}) {
+  const candidates = await page.evaluate((n) => window.playground.visibleEdges(n), central ? 200 : 20);
+  if (central) {
+    const box = await page.locator('#canvas').boundingBox();
+    const cx = box.x + box.width / 2, cy = box.y + box.height / 2;
+    const score = (e) => Math.hypot(e.x - cx, e.y - cy) - 2 * e.length;
+    candidates.sort((a, b) => score(a) - score(b));
+  }
   check(candidates.length > 0, 'no visible edge found to click');
   for (const c of candidates) {
     await page.mouse.move(c.x + 40, c.y + 40);
@@ -156,9 +163,10 @@ test('samples match hedge info', async ({ page }) => {
 });
 
 test('hovering an edge shows its half-edge records, one-ring and arrows', async ({ page }) => {
+  await loadSample(page, 'spot_control_mesh.obj');
   await page.check('#show-ring');
   await page.check('#show-arrows');
-  const c = await hoverEdge(page);
+  const c = await hoverEdge(page, { central: true });
   const text = await page.textContent('#records');
   const h = Number(/half-edge h(\d+)/.exec(text)?.[1]);
   check(Number.isInteger(h), `no half-edge in the records panel: ${text}`);
@@ -173,9 +181,19 @@ test('hovering an edge shows its half-edge records, one-ring and arrows', async 
   // Highlight, one-ring spokes and four arrows (the half-edge, next, prev and twin) are drawn.
   const overlay = await page.evaluate(() => window.playground.state.viewer.overlay.children.length);
   const ring = await page.evaluate((v) => window.playground.state.session.oneRing(v).length, record.origin);
-  check(overlay >= 1 + 2 * ring + 4, `${overlay} overlay objects for an edge with a ${ring}-vertex ring and 4 arrows`);
-  await page.mouse.move(c.x, c.y);
+  check(overlay >= 2 + 2 * ring + 4, `${overlay} overlay objects for an edge with a ${ring}-vertex ring and 4 arrows`);
   await page.screenshot({ path: join(outDir, 'inspect_edge.png') });
+
+  // A face: the panel lists its loop, the arrows go round it (the picture in the README).
+  const face = await page.evaluate(() => window.playground.visibleFaceCentre({ largest: true }));
+  check(face, 'no visible face found to hover');
+  await page.mouse.move(face.x, face.y);
+  await page.waitForFunction(() => document.body.dataset.hover === 'face', null, { timeout: 2000 });
+  const loop = await page.evaluate((f) => window.playground.state.session.faceHalfedges(f), face.face);
+  const faceText = await page.textContent('#records');
+  check(faceText.includes(`face f${face.face}: ${loop.length} corners, half-edges ${loop.map((g) => 'h' + g).join(' ')}`),
+    `face records: ${faceText}`);
+  await page.screenshot({ path: join(outDir, 'inspect_face.png') });
 });
 
 test('click on an edge splits it with a partial upload', async ({ page }) => {
@@ -245,6 +263,16 @@ test('subdivide, smooth and decimate', async ({ page }) => {
     `decimation to 25% left ${decimated.faces} of ${loop.faces} faces`);
   checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity after decimation');
   check(await page.isHidden('#error'), `the page shows an error: ${await page.textContent('#error-text')}`);
+
+  // Catmull-Clark of the quad mesh: a quad per corner, a vertex per vertex, edge and face.
+  await loadSample(page, 'spot_control_mesh.obj');
+  const quads = await counts(page);
+  await page.click('#subdivide-catmull-clark');
+  await page.waitForFunction(() => Number(document.body.dataset.edits || 0) >= 4);
+  const cc = await counts(page);
+  checkEqual(cc.faces, quads.faces * 4, 'faces after Catmull-Clark of a quad mesh');
+  checkEqual(cc.vertices, quads.vertices + quads.edges + quads.faces, 'vertices after Catmull-Clark');
+  checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity after Catmull-Clark');
 });
 
 test('a malformed file shows an error and the page keeps working', async ({ page }) => {
@@ -269,12 +297,13 @@ test('a malformed file shows an error and the page keeps working', async ({ page
   check(await page.isHidden('#error'), 'the error stays after a good file');
 });
 
-test('picking: 500 rays per frame on about 80k triangles', async ({ page, log }) => {
-  await page.selectOption('#pick-size', '80000');
+test('picking: 500 rays per frame on 93,696 triangles', async ({ page, log }) => {
+  await page.selectOption('#pick-size', '2');
   await page.click('#pick-bench');
   await page.waitForFunction(() => document.body.dataset.pick, null, { timeout: 120000 });
   const report = JSON.parse(await page.getAttribute('body', 'data-pick'));
-  check(report.triangles >= 72000, `the picking mesh has ${report.triangles} triangles`);
+  checkEqual(report.triangles, 93696, 'triangles of spot after 2 Loop steps');
+  check(report.triangles >= 80000, `the picking mesh has ${report.triangles} triangles`);
   check(report.hits > report.rays / 4, `only ${report.hits} of ${report.rays} rays hit the mesh`);
   check(report.medianMs > 0, 'no time measured');
   log(`    ${report.text}`);
