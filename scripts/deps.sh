@@ -8,6 +8,7 @@
 #   peers  other mesh libraries the benchmarks compare against (large)
 #   fuzz   the libFuzzer targets
 #   csharp Mono's C# compiler and runtime, for the C# binding's tests (bindings/csharp/)
+#   wasm   emscripten (with its node and clang) for the WebAssembly module (bindings/wasm/)
 #   web    Debian's chromium (and its driver), for the playground's browser tests (web/); node 20
 #          and npm must be present already (hedge_web_npm checks)
 # Only missing packages are installed; when everything is present nothing is run, so the check is
@@ -24,6 +25,7 @@ hedge_deps_packages() {
       peers) echo libopenmesh-dev libcgal-dev libeigen3-dev libmeshoptimizer-dev ;;
       fuzz) echo clang libclang-rt-14-dev ;;
       csharp) echo mono-mcs mono-runtime ;;
+      wasm) echo emscripten nodejs ;;
       web) echo chromium chromium-driver ;;
       *)
         echo "deps.sh: unknown dependency group '$group'" >&2

@@ -10,9 +10,9 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -27,6 +27,14 @@ namespace {
 
 using Mesh = SurfaceMesh;
 constexpr double kPi = 3.14159265358979323846;
+
+//! The bits of a float (memcpy rather than std::bit_cast, which older standard libraries such as
+//! emscripten's libc++ lack). For a non-negative float they order as the values do.
+std::uint32_t float_bits(float f) {
+  std::uint32_t out;
+  std::memcpy(&out, &f, sizeof(out));
+  return out;
+}
 
 // Sum of weighted squared distances to planes n.x + d = 0: x'Ax + 2b'x + c, with A symmetric
 // (a00 a01 a02 a11 a12 a22) and w the total weight of the geometric planes.
@@ -515,7 +523,7 @@ DecimateResult Decimator::run() {
         double cost;
         key = kNoKey;
         if (best_collapse(e, h, p, cost) && cost <= max_cost_)
-          key = std::uint64_t(std::bit_cast<std::uint32_t>(static_cast<float>(cost))) << 32 | h.idx();
+          key = std::uint64_t(float_bits(static_cast<float>(cost))) << 32 | h.idx();
       }
       if (key != kNoKey) keys_.push_back(key);
     }

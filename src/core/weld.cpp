@@ -1,7 +1,6 @@
 // Welding duplicate positions: exact (bit-identical after folding -0 into +0) or within a
 // distance relative to the bounding box, through a uniform grid so that it stays O(n).
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstring>
 #include <unordered_map>
@@ -21,7 +20,13 @@ std::uint64_t mix(std::uint64_t x) {
   return x;
 }
 
-std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f == 0.0f ? 0.0f : f); }
+// memcpy rather than std::bit_cast, which older standard libraries (emscripten's libc++) lack.
+std::uint32_t bits(float f) {
+  const float g = f == 0.0f ? 0.0f : f;
+  std::uint32_t out;
+  std::memcpy(&out, &g, sizeof(out));
+  return out;
+}
 
 std::vector<Index> weld_exact(std::span<const Vec3> p, std::vector<Vec3>& unique) {
   const std::size_t n = p.size();

@@ -1,12 +1,16 @@
-// Private helpers shared by the format readers and writers: number parsing with std::from_chars,
+// Private helpers shared by the format readers and writers: number parsing with std::from_chars
+// (or a fallback with the same contract),
 // text scanning with line tracking, bounds-checked binary access and error reporting.
 #pragma once
 
 #include <algorithm>
 #include <bit>
 #include <charconv>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -65,6 +69,70 @@ inline float narrow(double d) {
   return static_cast<float>(d);
 }
 
+//! std::from_chars for float and double. Where the standard library lacks those overloads (it has
+//! only the integer ones before libstdc++ 11 and in emscripten's libc++; __cpp_lib_to_chars tells),
+//! the same contract is kept through strtof / strtod on a copy of the number's text: the grammar of
+//! from_chars's general format (an optional '-', digits with an optional point and exponent, or
+//! "inf", "infinity", "nan"; no blanks, no '+', no hexadecimal), correct rounding by the C library,
+//! and result_out_of_range, with `out` unchanged, when the value overflows or underflows.
+template <typename T>
+std::from_chars_result chars_to_floating(const char* first, const char* last, T& out) {
+#if defined(__cpp_lib_to_chars)
+  return std::from_chars(first, last, out);
+#else
+  static_assert(std::is_same_v<T, float> || std::is_same_v<T, double>);
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  const auto lower = [](char c) { return static_cast<char>(c | 0x20); };
+  const char* p = first;
+  if (p != last && *p == '-') ++p;
+  const auto word = [&](const char* w) -> const char* {
+    const char* q = p;
+    for (; *w; ++w, ++q)
+      if (q == last || lower(*q) != *w) return nullptr;
+    return q;
+  };
+  if (const char* q = word("infinity")) {
+    p = q;
+  } else if (const char* r = word("inf")) {
+    p = r;
+  } else if (const char* n = word("nan")) {
+    p = n;
+    if (p != last && *p == '(') {
+      const char* c = p + 1;
+      while (c != last && (digit(*c) || (lower(*c) >= 'a' && lower(*c) <= 'z') || *c == '_')) ++c;
+      if (c != last && *c == ')') p = c + 1;
+    }
+  } else {
+    bool any = false;
+    while (p != last && digit(*p)) ++p, any = true;
+    if (p != last && *p == '.') {
+      ++p;
+      while (p != last && digit(*p)) ++p, any = true;
+    }
+    if (!any) return {first, std::errc::invalid_argument};
+    if (p != last && (*p == 'e' || *p == 'E')) {
+      const char* e = p + 1;
+      if (e != last && (*e == '+' || *e == '-')) ++e;
+      const char* d = e;
+      while (e != last && digit(*e)) ++e;
+      if (e != d) p = e;
+    }
+  }
+  const std::string text(first, p);
+  char* end = nullptr;
+  errno = 0;
+  T value;
+  if constexpr (std::is_same_v<T, float>)
+    value = std::strtof(text.c_str(), &end);
+  else
+    value = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size()) return {first, std::errc::invalid_argument};
+  if (errno == ERANGE) return {p, std::errc::result_out_of_range};
+  out = value;
+  return {p, std::errc()};
+#endif
+}
+
 //! Parses a float at `p` (no leading blanks); returns the end of the number, or nullptr when there
 //! is none. std::from_chars does the work: in libstdc++ 12 it is as fast as a hand-written parser
 //! (measured: 15-30 ns per coordinate either way) and exact. A leading '+', which from_chars
@@ -76,11 +144,11 @@ inline const char* parse_float(const char* p, const char* end, float& out) {
     ++s;
     if (s == end || *s == '-' || *s == '+') return nullptr;
   }
-  auto [ptr, ec] = std::from_chars(s, end, out);
+  auto [ptr, ec] = chars_to_floating(s, end, out);
   if (ec == std::errc()) return ptr;
   if (ec != std::errc::result_out_of_range) return nullptr;
   double d = 0;
-  auto [ptr2, ec2] = std::from_chars(s, end, d);
+  auto [ptr2, ec2] = chars_to_floating(s, end, d);
   if (ec2 == std::errc()) {
     out = narrow(d);
     return ptr2;
@@ -245,8 +313,11 @@ void store_le(std::string& out, T v) {
 
 //! Appends a float: the shortest text that reads back to the same float when precision >= 9 (every
 //! float then survives a round trip exactly), else `precision` significant digits.
+//! Without the floating-point std::to_chars (see chars_to_floating) the shortest text is found by
+//! printing 1 to 9 significant digits until the text reads back to the same float.
 inline void append_float(std::string& out, float v, int precision) {
   char buf[64];
+#if defined(__cpp_lib_to_chars)
   std::to_chars_result r;
   if (precision >= 9) {
     r = std::to_chars(buf, buf + sizeof(buf), v);
@@ -254,6 +325,18 @@ inline void append_float(std::string& out, float v, int precision) {
     r = std::to_chars(buf, buf + sizeof(buf), v, std::chars_format::general, std::max(precision, 1));
   }
   out.append(buf, static_cast<std::size_t>(r.ptr - buf));
+#else
+  int n = 0;
+  if (precision >= 9) {
+    for (int digits = 1; digits <= 9; ++digits) {
+      n = std::snprintf(buf, sizeof(buf), "%.*g", digits, static_cast<double>(v));
+      if (std::strtof(buf, nullptr) == v) break;
+    }
+  } else {
+    n = std::snprintf(buf, sizeof(buf), "%.*g", std::max(precision, 1), static_cast<double>(v));
+  }
+  out.append(buf, static_cast<std::size_t>(std::max(n, 0)));
+#endif
 }
 
 inline void append_uint(std::string& out, std::uint64_t v) {

@@ -1,0 +1,453 @@
+// hedge in JavaScript: the public API over the WebAssembly module (hedge.mjs + hedge.wasm).
+//
+//   import { loadHedge } from './hedge.js';
+//   const hedge = await loadHedge();
+//   const mesh = hedge.fromBuffers({ positions, indices });
+//
+// Elements are numbers: vertex, half-edge, edge and face indices; -1 means "none". Half-edge h
+// belongs to edge h >> 1 and its twin is h ^ 1. Every failure throws a HedgeError whose message is
+// hedge's own (the file and line of a malformed file, why an operation was refused).
+//
+// Memory: a Mesh or Render frees its wasm memory when it is garbage-collected, and dispose() frees
+// it at once (calling it again does nothing; any other call on a disposed object throws).
+//
+// Views: positions, render buffers and the like are typed arrays over wasm memory, not copies. A
+// view stays valid until the next call that edits the mesh or syncs its Render (which may move the
+// buffer) or until wasm memory grows (any call that allocates may grow it; the old views then
+// have length 0). Take views right before use; taking one costs no copy.
+import createHedge from './hedge.mjs';
+
+const KINDS = ['none', 'invalid-argument', 'io', 'topology', 'refused', 'out-of-memory', 'internal'];
+
+/** An error raised by hedge. kind: 'invalid-argument', 'io', 'topology', 'refused',
+ *  'out-of-memory', 'internal' or 'disposed'. */
+export class HedgeError extends Error {
+  constructor(kind, message) {
+    super(message);
+    this.name = 'HedgeError';
+    this.kind = kind;
+  }
+}
+
+const SCHEMES = ['loop', 'midpoint', 'catmull-clark', 'sqrt3', 'split-faces'];
+const METHODS = ['uniform', 'taubin', 'cotangent', 'implicit'];
+/** Subdivision schemes and smoothing methods, for menus. */
+export const subdivisionSchemes = Object.freeze([...SCHEMES]);
+export const smoothingMethods = Object.freeze([...METHODS]);
+
+/** Loads the module. options go to the emscripten factory: wasmBinary (the bytes of hedge.wasm)
+ *  or locateFile(name) (where to fetch it from), as a bundler or a page needs. */
+export async function loadHedge(options = {}) {
+  const module = await createHedge(options);
+  return new Hedge(module);
+}
+
+// Natives are deleted when their JS object is collected; the held value is the native itself.
+const registry = new FinalizationRegistry((native) => {
+  if (!native.isDeleted()) native.delete();
+});
+
+/** The loaded module: makes meshes and reports memory. */
+export class Hedge {
+  /** @param module the emscripten module (from createHedge). */
+  constructor(module) {
+    this.module = module;
+    this._errorSlot = module.errorSlotAddress() >> 2;
+    this._pick = module.pickScratchAddress() >> 3;
+  }
+
+  /** Throws the error the last native call recorded, deleting `result` if it is a native object. */
+  _check(result) {
+    const M = this.module;
+    if (M.HEAP32[this._errorSlot] !== 0) {
+      const kind = KINDS[M.HEAP32[this._errorSlot + 1]] ?? 'internal';
+      const message = M.takeErrorMessage();
+      if (result && typeof result.delete === 'function' && !result.isDeleted()) result.delete();
+      throw new HedgeError(kind, message);
+    }
+    return result;
+  }
+
+  /** Builds a mesh from index buffers.
+   *  positions: Float32Array, 3 per vertex. indices: Uint32Array, the corners of all faces.
+   *  faceSizes: Uint32Array of corners per face, or omitted for triangles.
+   *  policy: 'repair' (default: split non-manifold input, drop degenerate faces) or 'strict'
+   *  (throw). weld: 'none' (default), 'exact' or 'epsilon'. */
+  fromBuffers({ positions, indices, faceSizes, policy = 'repair', weld = 'none' }) {
+    const p = { strict: 0, repair: 1 }[policy];
+    const w = { none: 0, exact: 1, epsilon: 2 }[weld];
+    if (p === undefined) throw new HedgeError('invalid-argument', `unknown policy '${policy}' (strict, repair)`);
+    if (w === undefined) throw new HedgeError('invalid-argument', `unknown weld '${weld}' (none, exact, epsilon)`);
+    const native = this._check(this.module.NativeMesh.fromBuffers(positions, indices, faceSizes, p, w));
+    return new Mesh(this, native);
+  }
+
+  /** Builds a mesh from a file's bytes (Uint8Array or ArrayBuffer), read by hedge's reader for the
+   *  format of name's extension (.obj, .off, .ply, .stl, and the others the library reads), with
+   *  the file defaults: repair policy, exact welding for STL. A malformed file throws a
+   *  HedgeError of kind 'io' naming the file and the line (or byte offset). */
+  fromFile(bytes, name) {
+    const data = bytes instanceof ArrayBuffer ? new Uint8Array(bytes) : bytes;
+    if (!(data instanceof Uint8Array)) throw new HedgeError('invalid-argument', 'fromFile: expected a Uint8Array or ArrayBuffer');
+    const native = this._check(this.module.NativeMesh.fromFile(data, String(name)));
+    return new Mesh(this, native);
+  }
+
+  /** Bytes of wasm heap in use by the allocator (what a leak makes grow). */
+  heapBytesInUse() {
+    return this.module.heapBytesInUse();
+  }
+
+  /** Size of wasm memory in bytes (it grows, never shrinks). */
+  get memoryBytes() {
+    return this.module.HEAP8.length;
+  }
+
+  get version() {
+    return this.module.version();
+  }
+}
+
+/** A half-edge mesh in wasm memory. */
+export class Mesh {
+  constructor(hedge, native) {
+    this.hedge = hedge;
+    this._native = native;
+    registry.register(this, native, this);
+  }
+
+  /** Frees the mesh now. Idempotent. A Render made from it keeps working (it shares the mesh). */
+  dispose() {
+    if (this._native) {
+      registry.unregister(this);
+      this._native.delete();
+      this._native = null;
+    }
+  }
+
+  get disposed() {
+    return this._native === null;
+  }
+
+  _n() {
+    if (!this._native) throw new HedgeError('disposed', 'this mesh was disposed');
+    return this._native;
+  }
+
+  _call(name, ...args) {
+    const native = this._n();
+    return this.hedge._check(native[name](...args));
+  }
+
+  /** An independent copy. */
+  clone() {
+    return new Mesh(this.hedge, this._call('clone'));
+  }
+
+  /** What building repaired: {repairs, weldedVertices, degenerateFaces, ..., warnings}. */
+  buildReport() {
+    return this._call('buildReport');
+  }
+
+  // ---- Queries ----
+
+  /** {vertices, edges, halfedges, faces} (live elements) and the slot counts
+   *  {vertexSlots, halfedgeSlots, edgeSlots, faceSlots} (indices run below them). */
+  counts() {
+    return this._call('counts');
+  }
+
+  /** Every broken invariant, one message each; [] for a valid mesh. */
+  validate() {
+    return this._call('validate');
+  }
+
+  isValid() {
+    return this.validate().length === 0;
+  }
+
+  isTriangleMesh() {
+    return this._call('isTriangleMesh');
+  }
+
+  /** Float32Array view of the positions, 3 per vertex slot (deleted slots included). No copy; see
+   *  the note on views at the top of this file. */
+  get positions() {
+    return this._call('positionsView');
+  }
+
+  /** [x, y, z] of vertex v. */
+  position(v) {
+    return this._call('position', v);
+  }
+
+  setPosition(v, point) {
+    this._call('setPosition', v, Array.from(point));
+  }
+
+  /** The records of half-edge h: {halfedge, origin, target, twin, face, next, prev, edge, boundary}
+   *  (face -1 on a boundary half-edge). */
+  halfedge(h) {
+    return this._call('halfedge', h);
+  }
+
+  /** {vertex, halfedge (outgoing), position, valence, boundary, isolated}. */
+  vertex(v) {
+    return this._call('vertex', v);
+  }
+
+  /** {edge, halfedges: [h0, h1], vertices: [a, b], faces: [f0, f1] (-1 on the boundary side), boundary}. */
+  edge(e) {
+    return this._call('edge', e);
+  }
+
+  /** The half-edges of face f in order, with their target vertices and edges:
+   *  {face, halfedge, halfedges, vertices, edges, boundary}. */
+  face(f) {
+    return this._call('face', f);
+  }
+
+  /** The one-ring of v, clockwise: {vertex, halfedges (outgoing), vertices, edges, faces (-1 across a
+   *  boundary gap)}. */
+  oneRing(v) {
+    return this._call('oneRing', v);
+  }
+
+  /** The face, edge and vertex under a ray: null if it misses, else {face, t, point,
+   *  halfedge (of the face, nearest the hit point), edge, vertex (nearest corner), edgeDistance,
+   *  vertexDistance, corners (of the fan triangle hit), barycentric}. A bounding volume hierarchy
+   *  is built on the first call and kept up to date with edits. */
+  pick(origin, direction) {
+    const face = this._call('pick', origin[0], origin[1], origin[2], direction[0], direction[1], direction[2]);
+    if (face < 0) return null;
+    const f = this.hedge.module.HEAPF64;
+    const o = this.hedge._pick;
+    return {
+      face: f[o],
+      t: f[o + 1],
+      point: [f[o + 2], f[o + 3], f[o + 4]],
+      halfedge: f[o + 5],
+      edge: f[o + 6],
+      vertex: f[o + 7],
+      edgeDistance: f[o + 8],
+      vertexDistance: f[o + 9],
+      corners: [f[o + 10], f[o + 11], f[o + 12]],
+      barycentric: [f[o + 13], f[o + 14], f[o + 15]],
+    };
+  }
+
+  /** Casts many rays at once. rays: Float32Array of 6 per ray (origin, direction). Returns an
+   *  Int32Array of the face hit by each ray, -1 for a miss (written into `out` if given). */
+  pickMany(rays, out = new Int32Array(rays.length / 6)) {
+    this._call('pickMany', rays, out);
+    return out;
+  }
+
+  // ---- Local operations. Each throws a HedgeError of kind 'refused', saying why, when its
+  // predicate refuses; the mesh is then unchanged. ----
+
+  /** null if op ('splitEdge', 'flip', 'collapse' (element: a half-edge), 'splitFace') is allowed on
+   *  the element, else the reason in words. */
+  whyNot(op, element) {
+    const reason = this._call('whyNot', op, element);
+    return reason === '' ? null : reason;
+  }
+
+  canSplitEdge(e) {
+    return this.whyNot('splitEdge', e) === null;
+  }
+  canFlip(e) {
+    return this.whyNot('flip', e) === null;
+  }
+  canCollapse(h) {
+    return this.whyNot('collapse', h) === null;
+  }
+  canSplitFace(f) {
+    return this.whyNot('splitFace', f) === null;
+  }
+
+  /** Inserts a vertex on edge e at point (default: the midpoint); triangles beside it are split in
+   *  two. Returns the new vertex. */
+  splitEdge(e, point) {
+    return this._call('splitEdge', e, point === undefined ? undefined : Array.from(point));
+  }
+
+  /** Turns edge e between its two triangles. Returns e. */
+  flip(e) {
+    return this._call('flip', e);
+  }
+
+  /** Merges the origin of half-edge h into its target, which survives and moves to point if given
+   *  (e.g. the midpoint). Returns the surviving vertex. */
+  collapse(h, point) {
+    return this._call('collapse', h, point === undefined ? undefined : Array.from(point));
+  }
+
+  /** Inserts a vertex into face f at point (default: its centroid), fanning the face into
+   *  triangles. Returns the new vertex. */
+  splitFace(f, point) {
+    return this._call('splitFace', f, point === undefined ? undefined : Array.from(point));
+  }
+
+  /** Removes deleted elements, renumbering every element. */
+  garbageCollection() {
+    this._call('garbageCollection');
+  }
+
+  // ---- Algorithms ----
+
+  /** scheme: 'loop', 'midpoint', 'catmull-clark', 'sqrt3' or 'split-faces'. Renumbers elements. */
+  subdivide(scheme = 'loop', steps = 1) {
+    this._call('subdivide', String(scheme), steps);
+  }
+
+  /** method: 'uniform', 'taubin', 'cotangent' or 'implicit'. */
+  smooth({ method = 'uniform', iterations = 10, lambda = 0.5, mu = -0.53, fixBoundary = true } = {}) {
+    this._call('smooth', String(method), iterations, lambda, mu, fixBoundary);
+  }
+
+  /** Quadric edge-collapse decimation of a triangle mesh. ratio: the fraction of faces to keep
+   *  (or targetFaces / targetVertices as counts); maxError: stop before a collapse moving the
+   *  surface further than this. Renumbers elements. Returns {vertices, faces, collapses, maxError}. */
+  decimate({ ratio, targetFaces = 0, targetVertices = 0, maxError = -1 } = {}) {
+    if (ratio !== undefined) {
+      if (!(ratio > 0 && ratio <= 1)) throw new HedgeError('invalid-argument', `decimate: ratio ${ratio} is not in (0, 1]`);
+      targetFaces = Math.max(1, Math.round(ratio * this.counts().faces));
+    }
+    return this._call('decimate', targetFaces, targetVertices, maxError);
+  }
+
+  /** The mesh as index buffers (copies): {positions, indices, faceSizes (null for triangles)};
+   *  triangulate: true fans polygons into triangles (ear clipping). */
+  toArrays({ triangulate = false } = {}) {
+    return this._call('toArrays', triangulate);
+  }
+
+  /** Heap bytes held by the mesh and its picking tree. */
+  memoryBytes() {
+    return this._call('memoryBytes');
+  }
+
+  /** Engine-ready buffers kept in step with this mesh (RenderSync). options: normals ('auto',
+   *  'computed', 'attribute', 'none'), interleaved (true), texcoords (true), colors (true). */
+  createRender({ normals = 'auto', interleaved = true, texcoords = true, colors = true } = {}) {
+    const native = this.hedge._check(this.hedge.module.NativeRender.create(this._n(), normals, interleaved, texcoords, colors));
+    return new Render(this.hedge, native);
+  }
+}
+
+/** Vertex and index buffers for a GPU, updated by dirty ranges (RenderSync). */
+export class Render {
+  constructor(hedge, native) {
+    this.hedge = hedge;
+    this._native = native;
+    registry.register(this, native, this);
+  }
+
+  dispose() {
+    if (this._native) {
+      registry.unregister(this);
+      this._native.delete();
+      this._native = null;
+    }
+  }
+
+  get disposed() {
+    return this._native === null;
+  }
+
+  _call(name, ...args) {
+    if (!this._native) throw new HedgeError('disposed', 'this render object was disposed');
+    return this.hedge._check(this._native[name](...args));
+  }
+
+  /** Floats per vertex and the offset of each attribute (-1: absent):
+   *  {stride, position, normal, texcoord, color, interleaved}. */
+  get layout() {
+    return this._call('layout');
+  }
+
+  /** {vertexSlots, triangleSlots, indexCount, vertices, triangles, vertexCapacity, indexCapacity,
+   *  freeTriangleSlots, bufferBytes}. Allocate GPU buffers at the capacities. */
+  sizes() {
+    return this._call('sizes');
+  }
+
+  /** Float32Array views (no copy): the whole interleaved vertex buffer (or the positions), and the
+   *  separate streams (empty when interleaved or absent). Valid until the next sync or memory growth. */
+  get vertices() {
+    return this._call('streamView', 0);
+  }
+  get normals() {
+    return this._call('streamView', 1);
+  }
+  get texcoords() {
+    return this._call('streamView', 2);
+  }
+  get colors() {
+    return this._call('streamView', 3);
+  }
+
+  /** Uint32Array view of the index buffer (3 per triangle slot; a free slot is degenerate). */
+  get indices() {
+    return this._call('indicesView');
+  }
+
+  /** Uint32Array view: render vertex -> mesh vertex (0xFFFFFFFF for a free slot). */
+  get vertexSource() {
+    return this._call('vertexSourceView');
+  }
+
+  /** [first triangle slot, count] of face f. */
+  faceTriangles(f) {
+    return this._call('faceTriangles', f);
+  }
+
+  /** Brings the buffers in step with the mesh's edits since the last sync and says what was
+   *  rewritten: {vertexRanges, indexRanges (Uint32Array pairs [first, count] in vertices and in
+   *  indices), vertexBytes, indexBytes, facesSynced, verticesSynced, resized (reallocate the GPU
+   *  buffers and upload all), full (everything was rewritten)}. Upload only the ranges: for
+   *  interleaved vertices the floats [first * stride, (first + count) * stride). Take the views
+   *  again after a sync. */
+  sync() {
+    return this._call('sync');
+  }
+
+  /** The dirty ranges of a sync result as views into the buffers (no copy):
+   *  {vertices: Float32Array[], indices: Uint32Array[]}. */
+  dirtyViews(result) {
+    const stride = this.layout.interleaved ? this.layout.stride : 3;
+    const vertices = this.vertices;
+    const indices = this.indices;
+    const v = [];
+    const i = [];
+    for (let k = 0; k < result.vertexRanges.length; k += 2) {
+      const first = result.vertexRanges[k];
+      const count = result.vertexRanges[k + 1];
+      v.push(vertices.subarray(first * stride, (first + count) * stride));
+    }
+    for (let k = 0; k < result.indexRanges.length; k += 2) {
+      const first = result.indexRanges[k];
+      i.push(indices.subarray(first, first + result.indexRanges[k + 1]));
+    }
+    return { vertices: v, indices: i };
+  }
+
+  /** Rebuilds everything (a full export); returns the result as sync() does. */
+  rebuild() {
+    return this._call('rebuild');
+  }
+
+  /** Packs the buffers, removing free slots; the next sync reports everything. */
+  compact() {
+    this._call('compact');
+  }
+
+  /** begin() ... edits ... commit(): one sync for many edits. */
+  begin() {
+    this._call('begin');
+  }
+  commit() {
+    return this._call('commit');
+  }
+}

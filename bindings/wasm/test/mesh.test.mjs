@@ -1,0 +1,176 @@
+// Building meshes from typed arrays and from file bytes, queries, and errors.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { hedge, HedgeError, sample, grid, gridArrays, octahedron, cube } from './support.mjs';
+
+test('a grid from typed arrays has the counts of its construction and its positions', () => {
+  const input = gridArrays(3);
+  const mesh = hedge.fromBuffers(input);
+  const c = mesh.counts();
+  assert.equal(c.vertices, 16);
+  assert.equal(c.faces, 18);
+  // 3 x 4 horizontal + 4 x 3 vertical + 9 diagonals.
+  assert.equal(c.edges, 33);
+  assert.equal(c.halfedges, 66);
+  assert.deepEqual(Array.from(mesh.positions), Array.from(input.positions));
+  assert.deepEqual(mesh.position(5), [1, 1, 0]);
+  assert.equal(mesh.isTriangleMesh(), true);
+  assert.deepEqual(mesh.validate(), []);
+  mesh.dispose();
+});
+
+test('polygons come in through faceSizes', () => {
+  const mesh = cube();
+  assert.deepEqual(
+    { v: mesh.counts().vertices, e: mesh.counts().edges, f: mesh.counts().faces },
+    { v: 8, e: 12, f: 6 },
+  );
+  assert.equal(mesh.isTriangleMesh(), false);
+  for (let f = 0; f < 6; ++f) assert.equal(mesh.face(f).vertices.length, 4);
+  assert.deepEqual(mesh.validate(), []);
+  mesh.dispose();
+});
+
+test('half-edge records are consistent: twin, next, prev, origin and face', () => {
+  const mesh = grid(2);
+  const { halfedges } = mesh.counts();
+  for (let h = 0; h < halfedges; ++h) {
+    const r = mesh.halfedge(h);
+    assert.equal(r.twin, h ^ 1);
+    assert.equal(r.edge, h >> 1);
+    assert.equal(mesh.halfedge(r.next).origin, r.target);
+    assert.equal(mesh.halfedge(r.prev).target, r.origin);
+    assert.equal(mesh.halfedge(r.next).prev, h);
+    assert.equal(mesh.halfedge(r.twin).origin, r.target);
+    assert.equal(r.boundary, r.face === -1);
+    if (r.face !== -1) assert.ok(mesh.face(r.face).halfedges.includes(h));
+  }
+  mesh.dispose();
+});
+
+test('the one-ring of an interior vertex and the half-edges of a face', () => {
+  const mesh = octahedron();
+  const ring = mesh.oneRing(4); // the top: neighbours 0, 1, 2, 3
+  assert.equal(ring.halfedges.length, 4);
+  assert.deepEqual([...ring.vertices].sort(), [0, 1, 2, 3]);
+  assert.equal(ring.faces.filter((f) => f >= 0).length, 4);
+  for (let k = 0; k < 4; ++k) {
+    const h = mesh.halfedge(ring.halfedges[k]);
+    assert.equal(h.origin, 4);
+    assert.equal(h.target, ring.vertices[k]);
+    assert.equal(h.face, ring.faces[k]);
+  }
+  assert.equal(mesh.vertex(4).valence, 4);
+  assert.equal(mesh.vertex(4).boundary, false);
+  const face = mesh.face(0);
+  assert.deepEqual([...face.vertices].sort(), [0, 2, 4]);
+  for (let k = 0; k < 3; ++k) assert.equal(mesh.halfedge(face.halfedges[k]).next, face.halfedges[(k + 1) % 3]);
+  const edge = mesh.edge(face.edges[0]);
+  assert.deepEqual(edge.halfedges, [2 * face.edges[0], 2 * face.edges[0] + 1]);
+  assert.ok(edge.faces.includes(0));
+  mesh.dispose();
+});
+
+test('a grid corner is a boundary vertex with a boundary gap in its ring', () => {
+  const mesh = grid(2);
+  const ring = mesh.oneRing(0);
+  assert.equal(mesh.vertex(0).boundary, true);
+  assert.ok(ring.faces.includes(-1));
+  mesh.dispose();
+});
+
+test('each file format goes through hedge\'s own readers', () => {
+  // Counts from the files themselves: the tetrahedron of tet.obj, the OFF and PLY headers, and
+  // the icosahedron of the binary STL (welded: 12 vertices, 30 edges, 20 faces).
+  const tet = hedge.fromFile(sample('tet.obj'), 'tet.obj');
+  const text = new TextDecoder().decode(sample('tet.obj'));
+  assert.equal(tet.counts().vertices, text.split('\n').filter((l) => l.startsWith('v ')).length);
+  assert.equal(tet.counts().faces, text.split('\n').filter((l) => l.startsWith('f ')).length);
+
+  const offBytes = sample('anchor.off');
+  const header = new TextDecoder()
+    .decode(offBytes.subarray(0, 200))
+    .split('\n')
+    .filter((l) => l.trim() && !l.startsWith('#'));
+  const [nv, nf] = (header[0].trim() === 'OFF' ? header[1] : header[0].replace(/^OFF/, '')).trim().split(/\s+/).map(Number);
+  const off = hedge.fromFile(offBytes, 'anchor.off');
+  assert.equal(off.counts().faces, nf);
+  assert.equal(off.counts().vertices, nv);
+
+  const plyBytes = sample('bob_small.ply');
+  const plyHeader = new TextDecoder().decode(plyBytes.subarray(0, 600));
+  const plyFaces = Number(/element face (\d+)/.exec(plyHeader)[1]);
+  const ply = hedge.fromFile(plyBytes.buffer.slice(plyBytes.byteOffset, plyBytes.byteOffset + plyBytes.byteLength), 'bob_small.ply');
+  assert.equal(ply.counts().faces, plyFaces);
+
+  const stl = hedge.fromFile(sample('icosahedron_binary.stl'), 'icosahedron_binary.stl');
+  assert.deepEqual([stl.counts().vertices, stl.counts().edges, stl.counts().faces], [12, 30, 20]);
+
+  for (const m of [tet, off, ply, stl]) {
+    assert.deepEqual(m.validate(), []);
+    m.dispose();
+  }
+});
+
+test('toArrays gives back what fromBuffers took', () => {
+  const input = gridArrays(2);
+  const mesh = hedge.fromBuffers(input);
+  const out = mesh.toArrays();
+  assert.deepEqual(Array.from(out.positions), Array.from(input.positions));
+  assert.deepEqual(Array.from(out.indices).length, input.indices.length);
+  assert.equal(out.faceSizes, null);
+  const again = hedge.fromBuffers(out);
+  assert.deepEqual(again.counts(), mesh.counts());
+  mesh.dispose();
+  again.dispose();
+});
+
+test('a malformed file throws a HedgeError naming the file and line, and the module keeps working', () => {
+  const bad = new TextEncoder().encode('v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 oops\n');
+  assert.throws(
+    () => hedge.fromFile(bad, 'broken.obj'),
+    (e) => e instanceof HedgeError && e instanceof Error && e.kind === 'io' && /broken\.obj:4/.test(e.message),
+  );
+  const truncated = sample('icosahedron_binary.stl').subarray(0, 200);
+  assert.throws(() => hedge.fromFile(truncated, 'cut.stl'), (e) => e.kind === 'io' && /cut\.stl/.test(e.message));
+  assert.throws(() => hedge.fromFile(bad, 'mesh.xyz'), (e) => e.kind === 'io' && /xyz/.test(e.message));
+  const mesh = grid(1);
+  assert.equal(mesh.counts().faces, 2);
+  mesh.dispose();
+});
+
+test('bad typed-array input is refused with a clear message', () => {
+  assert.throws(
+    () => hedge.fromBuffers({ positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, NaN, 0]), indices: new Uint32Array([0, 1, 2]) }),
+    (e) => e.kind === 'invalid-argument' && /finite|NaN/i.test(e.message),
+  );
+  assert.throws(
+    () => hedge.fromBuffers({ positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0]), indices: new Uint32Array([0, 1, 7]) }),
+    (e) => e.kind === 'invalid-argument' && /7/.test(e.message),
+  );
+  assert.throws(
+    () => hedge.fromBuffers({ positions: new Float32Array([0, 0, 0, 1, 0]), indices: new Uint32Array([0, 1, 2]) }),
+    (e) => e.kind === 'invalid-argument' && /3 per vertex/.test(e.message),
+  );
+  // Three triangles on one edge: not a manifold, refused under the strict policy.
+  const fan = {
+    positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1]),
+    indices: new Uint32Array([0, 1, 2, 1, 0, 3, 0, 1, 4]),
+  };
+  assert.throws(() => hedge.fromBuffers({ ...fan, policy: 'strict' }), (e) => e.kind === 'topology');
+  const repaired = hedge.fromBuffers(fan);
+  assert.ok(repaired.buildReport().repairs > 0);
+  assert.deepEqual(repaired.validate(), []);
+  repaired.dispose();
+});
+
+test('queries on dead elements and disposed meshes throw', () => {
+  const mesh = grid(1);
+  assert.throws(() => mesh.halfedge(1000), (e) => e.kind === 'invalid-argument' && /half-edge 1000/.test(e.message));
+  assert.throws(() => mesh.vertex(-1), (e) => e.kind === 'invalid-argument');
+  assert.throws(() => mesh.setPosition(0, [0, NaN, 0]), (e) => e.kind === 'invalid-argument' && /finite/.test(e.message));
+  mesh.dispose();
+  mesh.dispose(); // idempotent
+  assert.equal(mesh.disposed, true);
+  assert.throws(() => mesh.counts(), (e) => e instanceof HedgeError && e.kind === 'disposed');
+});
