@@ -93,6 +93,7 @@ function adopt(session, name, ms) {
   state.viewer.clearOverlay();
   $('records').textContent = 'Hover the mesh.';
   $('mesh-name').textContent = name;
+  $('mesh-notes').textContent = session.loadNotes();
   const before = state.viewer.meter.snapshot();
   const isEdge = session.edgeTest();
   const bytes = state.viewer.mesh.rebuild(session.buffers(), isEdge);
@@ -392,6 +393,13 @@ function wireInput() {
     guard(`loading ${file.name}`, () => loadFile(file));
   });
 
+  $('file').addEventListener('change', (event) => {
+    const file = event.target.files[0];
+    if (!file) return;
+    guard(`loading ${file.name}`, () => loadFile(file)).finally(() => {
+      event.target.value = '';
+    });
+  });
   $('error-close').addEventListener('click', clearError);
   $('load-sample').addEventListener('click', () => {
     const name = $('sample').value;

@@ -47,6 +47,23 @@ export class Session {
     this.mesh = null;
   }
 
+  //! What loading repaired and the reader's warnings, in a line ('' when there is nothing to say).
+  loadNotes() {
+    const report = this.mesh.buildReport();
+    const notes = [];
+    const labels = {
+      weldedVertices: 'welded vertices', degenerateFaces: 'degenerate faces dropped',
+      repeatedCorners: 'repeated corners', reorientedFaces: 'faces reoriented',
+      nonManifoldEdges: 'non-manifold edges split', nonManifoldVertices: 'non-manifold vertices split',
+      duplicatedVertices: 'vertices duplicated', isolatedVertices: 'isolated vertices',
+    };
+    for (const [key, label] of Object.entries(labels)) if (report[key]) notes.push(`${report[key]} ${label}`);
+    const warnings = report.warnings || [];
+    const shown = warnings.slice(0, 3);
+    if (warnings.length > shown.length) shown.push(`and ${warnings.length - shown.length} more warnings`);
+    return [...(notes.length ? [`repairs: ${notes.join(', ')}`] : []), ...shown].join('; ');
+  }
+
   counts() {
     return this.mesh.counts();
   }

@@ -188,9 +188,12 @@ export class Viewer {
     const length = dir.length();
     if (length === 0) return;
     const arrow = new THREE.ArrowHelper(dir.normalize(), from, length, color, length * 0.3, length * 0.15);
-    arrow.line.material.depthTest = false;
-    arrow.cone.material.depthTest = false;
-    arrow.renderOrder = 10;
+    // Drawn over everything, after the transparent face highlight (so marked transparent too).
+    for (const part of [arrow.line, arrow.cone]) {
+      part.material.depthTest = false;
+      part.material.transparent = true;
+      part.renderOrder = 10;
+    }
     this.overlay.add(arrow);
   }
 

@@ -196,7 +196,7 @@ test('hovering an edge shows its half-edge records, one-ring and arrows', async 
   await page.screenshot({ path: join(outDir, 'inspect_face.png') });
 });
 
-test('click on an edge splits it with a partial upload', async ({ page }) => {
+test('click on an edge splits it with a partial upload', async ({ page, log }) => {
   const before = await counts(page);
   await clickEdge(page, 'split');
   const after = await counts(page);
@@ -206,15 +206,18 @@ test('click on an edge splits it with a partial upload', async ({ page }) => {
   checkEqual(after.vertices - before.vertices, 1, 'vertices added by the split');
   checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity after the split');
   checkPartialUpload(await lastUpload(page), 'split');
-  check((await page.textContent('#stat-upload')).includes('partial'), 'the upload line says partial');
+  const line = await page.textContent('#stat-upload');
+  check(line.includes('partial'), 'the upload line says partial');
+  log(`    split: ${line}`);
 });
 
-test('flip and collapse an edge, split a face', async ({ page }) => {
+test('flip and collapse an edge, split a face', async ({ page, log }) => {
   let before = await counts(page);
   await clickEdge(page, 'flip');
   let after = await counts(page);
   checkEqual(JSON.stringify(after), JSON.stringify(before), 'counts after a flip');
   checkPartialUpload(await lastUpload(page), 'flip');
+  log(`    flip: ${await page.textContent('#stat-upload')}`);
 
   before = after;
   await clickEdge(page, 'collapse');
@@ -224,6 +227,7 @@ test('flip and collapse an edge, split a face', async ({ page }) => {
   checkEqual(before.edges - after.edges, 3, 'edges removed by the collapse');
   checkEqual(before.vertices - after.vertices, 1, 'vertices removed by the collapse');
   checkPartialUpload(await lastUpload(page), 'collapse');
+  log(`    collapse: ${await page.textContent('#stat-upload')}`);
 
   // A face: zoom in (mouse wheel), hover a face's centre until the page highlights the face, click.
   before = after;
@@ -240,7 +244,25 @@ test('flip and collapse an edge, split a face', async ({ page }) => {
   checkEqual(after.faces - before.faces, 2, 'faces added by splitting a triangle');
   checkEqual(after.vertices - before.vertices, 1, 'vertices added by splitting a triangle');
   checkPartialUpload(await lastUpload(page), 'face split');
+  log(`    face split: ${await page.textContent('#stat-upload')}`);
   checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity after the edits');
+});
+
+test('a refused collapse says why and changes nothing', async ({ page }) => {
+  // Every edge collapse of a tetrahedron is refused (it would leave valence-2 vertices).
+  await loadSample(page, 'tet.obj');
+  const before = await counts(page);
+  await page.check('input[name="edge-mode"][value="collapse"]');
+  const c = await hoverEdge(page);
+  await page.mouse.click(c.x, c.y);
+  await page.waitForSelector('#error', { state: 'visible', timeout: 5000 });
+  const message = await page.textContent('#error-text');
+  check(/collapse of half-edge \d+ refused: \S/.test(message), `the refusal does not say why: ${message}`);
+  checkEqual(JSON.stringify(await counts(page)), JSON.stringify(before), 'counts after a refused collapse');
+  checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity after a refused collapse');
+  // And the page still edits: a split of the same edge.
+  await clickEdge(page, 'split');
+  checkEqual((await counts(page)).faces - before.faces, 2, 'faces added by a split after the refusal');
 });
 
 test('subdivide, smooth and decimate', async ({ page }) => {
@@ -288,6 +310,14 @@ test('a malformed file shows an error and the page keeps working', async ({ page
   await dropFile(page, 'empty.stl', '');
   await page.waitForFunction(() => (document.body.dataset.error || '').includes('empty.stl'), null, { timeout: 5000 });
   await page.screenshot({ path: join(outDir, 'malformed_file_error.png') });
+
+  // A truncated face is dropped with a warning naming the line; the rest of the file loads.
+  await dropFile(page, 'short.obj', 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2\n');
+  await page.waitForFunction(() => document.body.dataset.mesh === 'short.obj', null, { timeout: 5000 });
+  checkEqual((await counts(page)).faces, 1, 'faces of short.obj');
+  const notes = await page.textContent('#mesh-notes');
+  check(notes.includes('short.obj:6'), `the warning does not name line 6: ${notes}`);
+  await loadSample(page, 'spot_triangulated.obj');
 
   // Still working: an edit, then a good file by drop, which also clears the message.
   await clickEdge(page, 'split');
