@@ -67,9 +67,12 @@ function showStats() {
   document.body.dataset.valid = problems.length === 0 ? '1' : '0';
 }
 
-function showOperation(name, ms) {
+const ms = (t) => `${t.toFixed(t < 10 ? 2 : 1)} ms`;
+
+//! The last operation and its time; `syncMs`: the RenderSync sync and the buffer copies after it.
+function showOperation(name, opMs, syncMs) {
   $('stat-op').textContent = name;
-  $('stat-time').textContent = `${ms.toFixed(ms < 10 ? 2 : 1)} ms`;
+  $('stat-time').textContent = syncMs === undefined ? ms(opMs) : `${ms(opMs)} (then sync and upload ${ms(syncMs)})`;
 }
 
 function showUpload(upload) {
@@ -85,7 +88,7 @@ function showUpload(upload) {
 // ---- loading ------------------------------------------------------------------------------------
 
 // Replaces the current mesh by `session` (already loaded) and uploads it whole.
-function adopt(session, name, ms) {
+function adopt(session, name, loadMs) {
   const old = state.session;
   state.session = session;
   if (old) old.dispose();
@@ -101,7 +104,7 @@ function adopt(session, name, ms) {
   state.viewer.render();
   state.lastUpload = { bytes, full: true, ranges: 1, gl: state.viewer.meter.since(before) };
   showUpload(state.lastUpload);
-  showOperation(`load ${name}`, ms);
+  showOperation(`load ${name}`, loadMs);
   showStats();
   document.body.dataset.mesh = name;
 }
@@ -109,9 +112,9 @@ function adopt(session, name, ms) {
 async function loadBytes(bytes, name) {
   const t0 = performance.now();
   const session = Session.load(state.hedge, bytes, name);
-  const ms = performance.now() - t0;
+  const loadMs = performance.now() - t0;
   clearError();
-  adopt(session, name, ms);
+  adopt(session, name, loadMs);
 }
 
 async function loadSample(name) {
@@ -299,7 +302,7 @@ function applyEdit(name, edit) {
   if (!s) throw new Error('no mesh loaded');
   const t0 = performance.now();
   const description = edit(s);
-  const ms = performance.now() - t0;
+  const t1 = performance.now();
   const result = s.sync();
   const viewer = state.viewer;
   state.hover = null;
@@ -308,9 +311,10 @@ function applyEdit(name, edit) {
   const isEdge = s.edgeTest();
   const upload = viewer.mesh.update(s.buffers(), result, isEdge);
   viewer.render();
+  const t2 = performance.now();
   state.lastUpload = { ...upload, gl: viewer.meter.since(before) };
   showUpload(state.lastUpload);
-  showOperation(description || name, ms);
+  showOperation(description || name, t1 - t0, t2 - t1);
   showStats();
   clearError();
   $('records').textContent = 'Hover the mesh.';
