@@ -169,6 +169,7 @@ export class Mesh {
   smooth(options?: { method?: SmoothMethod; iterations?: number; lambda?: number; mu?: number; fixBoundary?: boolean }): void;
   decimate(options: { ratio?: number; targetFaces?: number; targetVertices?: number; maxError?: number }): DecimateResult;
   toArrays(options?: { triangulate?: boolean }): Arrays;
+  toFile(name: string): Uint8Array;
   memoryBytes(): number;
   createRender(options?: {
     normals?: 'auto' | 'computed' | 'attribute' | 'none';

@@ -17,6 +17,14 @@
 // have length 0). Take views right before use; taking one costs no copy.
 import createHedge from './hedge.mjs';
 
+// Arguments are checked or converted here, before the call: a JS exception raised inside the
+// module (converting a bad value) would unwind wasm frames without their destructors.
+const isArrayLike = (x) => ArrayBuffer.isView(x) || Array.isArray(x);
+const point3 = (p, what) => {
+  if (!isArrayLike(p) || p.length !== 3) throw new HedgeError('invalid-argument', `${what}: expected [x, y, z]`);
+  return Array.from(p, Number);
+};
+
 const KINDS = ['none', 'invalid-argument', 'io', 'topology', 'refused', 'out-of-memory', 'internal'];
 
 /** An error raised by hedge. kind: 'invalid-argument', 'io', 'topology', 'refused',
@@ -78,6 +86,10 @@ export class Hedge {
     const w = { none: 0, exact: 1, epsilon: 2 }[weld];
     if (p === undefined) throw new HedgeError('invalid-argument', `unknown policy '${policy}' (strict, repair)`);
     if (w === undefined) throw new HedgeError('invalid-argument', `unknown weld '${weld}' (none, exact, epsilon)`);
+    if (!isArrayLike(positions)) throw new HedgeError('invalid-argument', 'positions: expected a Float32Array');
+    if (!isArrayLike(indices)) throw new HedgeError('invalid-argument', 'indices: expected a Uint32Array');
+    if (faceSizes != null && !isArrayLike(faceSizes))
+      throw new HedgeError('invalid-argument', 'faceSizes: expected a Uint32Array or nothing');
     const native = this._check(this.module.NativeMesh.fromBuffers(positions, indices, faceSizes, p, w));
     return new Mesh(this, native);
   }
@@ -182,7 +194,7 @@ export class Mesh {
   }
 
   setPosition(v, point) {
-    this._call('setPosition', v, Array.from(point));
+    this._call('setPosition', v, point3(point, 'setPosition'));
   }
 
   /** The records of half-edge h: {halfedge, origin, target, twin, face, next, prev, edge, boundary}
@@ -218,27 +230,31 @@ export class Mesh {
    *  vertexDistance, corners (of the fan triangle hit), barycentric}. A bounding volume hierarchy
    *  is built on the first call and kept up to date with edits. */
   pick(origin, direction) {
-    const face = this._call('pick', origin[0], origin[1], origin[2], direction[0], direction[1], direction[2]);
+    const o = point3(origin, 'pick origin');
+    const d = point3(direction, 'pick direction');
+    const face = this._call('pick', o[0], o[1], o[2], d[0], d[1], d[2]);
     if (face < 0) return null;
     const f = this.hedge.module.HEAPF64;
-    const o = this.hedge._pick;
+    const k = this.hedge._pick;
     return {
-      face: f[o],
-      t: f[o + 1],
-      point: [f[o + 2], f[o + 3], f[o + 4]],
-      halfedge: f[o + 5],
-      edge: f[o + 6],
-      vertex: f[o + 7],
-      edgeDistance: f[o + 8],
-      vertexDistance: f[o + 9],
-      corners: [f[o + 10], f[o + 11], f[o + 12]],
-      barycentric: [f[o + 13], f[o + 14], f[o + 15]],
+      face: f[k],
+      t: f[k + 1],
+      point: [f[k + 2], f[k + 3], f[k + 4]],
+      halfedge: f[k + 5],
+      edge: f[k + 6],
+      vertex: f[k + 7],
+      edgeDistance: f[k + 8],
+      vertexDistance: f[k + 9],
+      corners: [f[k + 10], f[k + 11], f[k + 12]],
+      barycentric: [f[k + 13], f[k + 14], f[k + 15]],
     };
   }
 
   /** Casts many rays at once. rays: Float32Array of 6 per ray (origin, direction). Returns an
    *  Int32Array of the face hit by each ray, -1 for a miss (written into `out` if given). */
-  pickMany(rays, out = new Int32Array(rays.length / 6)) {
+  pickMany(rays, out = new Int32Array(Math.floor(rays.length / 6))) {
+    if (!isArrayLike(rays)) throw new HedgeError('invalid-argument', 'pickMany: rays must be a Float32Array');
+    if (!(out instanceof Int32Array)) throw new HedgeError('invalid-argument', 'pickMany: out must be an Int32Array');
     this._call('pickMany', rays, out);
     return out;
   }
@@ -249,7 +265,7 @@ export class Mesh {
   /** null if op ('splitEdge', 'flip', 'collapse' (element: a half-edge), 'splitFace') is allowed on
    *  the element, else the reason in words. */
   whyNot(op, element) {
-    const reason = this._call('whyNot', op, element);
+    const reason = this._call('whyNot', String(op), element);
     return reason === '' ? null : reason;
   }
 
@@ -269,7 +285,7 @@ export class Mesh {
   /** Inserts a vertex on edge e at point (default: the midpoint); triangles beside it are split in
    *  two. Returns the new vertex. */
   splitEdge(e, point) {
-    return this._call('splitEdge', e, point === undefined ? undefined : Array.from(point));
+    return this._call('splitEdge', e, point === undefined ? undefined : point3(point, 'splitEdge'));
   }
 
   /** Turns edge e between its two triangles. Returns e. */
@@ -280,13 +296,13 @@ export class Mesh {
   /** Merges the origin of half-edge h into its target, which survives and moves to point if given
    *  (e.g. the midpoint). Returns the surviving vertex. */
   collapse(h, point) {
-    return this._call('collapse', h, point === undefined ? undefined : Array.from(point));
+    return this._call('collapse', h, point === undefined ? undefined : point3(point, 'collapse'));
   }
 
   /** Inserts a vertex into face f at point (default: its centroid), fanning the face into
    *  triangles. Returns the new vertex. */
   splitFace(f, point) {
-    return this._call('splitFace', f, point === undefined ? undefined : Array.from(point));
+    return this._call('splitFace', f, point === undefined ? undefined : point3(point, 'splitFace'));
   }
 
   /** Removes deleted elements, renumbering every element. */
@@ -321,6 +337,12 @@ export class Mesh {
    *  triangulate: true fans polygons into triangles (ear clipping). */
   toArrays({ triangulate = false } = {}) {
     return this._call('toArrays', triangulate);
+  }
+
+  /** The mesh as the bytes of a file in the format of name's extension (.obj, .off, .ply, .stl),
+   *  as hedge writes files: PLY and STL binary, STL fanned into triangles. A Uint8Array copy. */
+  toFile(name) {
+    return this._call('toFile', String(name));
   }
 
   /** Heap bytes held by the mesh and its picking tree. */

@@ -734,6 +734,19 @@ class WasmMesh {
     });
   }
 
+  //! The mesh written in the format of name's extension, as write_mesh() writes a file (STL
+  //! triangulated by fans; PLY and STL binary). A copy (Uint8Array).
+  val to_file(const std::string& name) const {
+    return guarded([&] {
+      const FileFormat format = format_from_path(name);
+      ExportOptions options;
+      if (format == FileFormat::stl) options.triangulation = Triangulation::fan;
+      const std::string bytes = write_indexed(to_indexed(s_->mesh, options), format);
+      return val::global("Uint8Array")
+          .new_(val(emscripten::typed_memory_view(bytes.size(), reinterpret_cast<const std::uint8_t*>(bytes.data()))));
+    });
+  }
+
   double memory_bytes() const {
     return guarded([&] { return double(s_->mesh.memory_bytes() + (s_->bvh ? s_->bvh->memory_bytes() : 0)); });
   }
@@ -956,6 +969,7 @@ EMSCRIPTEN_BINDINGS(hedge) {
       .function("smooth", &WasmMesh::smooth)
       .function("decimate", &WasmMesh::decimate)
       .function("toArrays", &WasmMesh::to_arrays)
+      .function("toFile", &WasmMesh::to_file)
       .function("memoryBytes", &WasmMesh::memory_bytes);
 
   class_<WasmRender>("NativeRender")

@@ -174,3 +174,18 @@ test('queries on dead elements and disposed meshes throw', () => {
   assert.equal(mesh.disposed, true);
   assert.throws(() => mesh.counts(), (e) => e instanceof HedgeError && e.kind === 'disposed');
 });
+
+test('arguments of the wrong type are refused before they reach the module', () => {
+  const mesh = grid(2);
+  assert.throws(() => hedge.fromBuffers({ positions: 'abc', indices: new Uint32Array(3) }), (e) => e.kind === 'invalid-argument');
+  assert.throws(() => mesh.setPosition(0, ['a', 0, 0]), (e) => e.kind === 'invalid-argument' && /finite/.test(e.message));
+  assert.throws(() => mesh.setPosition(0, [1, 2]), (e) => e.kind === 'invalid-argument');
+  assert.equal(mesh.pick(['x', 0, 1], [0, 0, -1]), null, 'a NaN origin finds nothing');
+  assert.throws(() => mesh.pickMany(new Float32Array(6), [0]), (e) => e.kind === 'invalid-argument');
+  assert.throws(() => mesh.pickMany(new Float32Array(12), new Int32Array(1)), (e) => e.kind === 'invalid-argument' && /2 entries/.test(e.message));
+  assert.deepEqual(mesh.position(0), [0, 0, 0]);
+  // Still working after all that.
+  assert.equal(mesh.pick([0.5, 0.2, 1], [0, 0, -1]).face, 0);
+  assert.deepEqual(mesh.validate(), []);
+  mesh.dispose();
+});
