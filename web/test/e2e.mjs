@@ -336,8 +336,31 @@ test('picking: 500 rays per frame on 93,696 triangles', async ({ page, log }) =>
   checkEqual(report.triangles, 93696, 'triangles of spot after 2 Loop steps');
   check(report.triangles >= 80000, `the picking mesh has ${report.triangles} triangles`);
   check(report.hits > report.rays / 4, `only ${report.hits} of ${report.rays} rays hit the mesh`);
-  check(report.medianMs > 0, 'no time measured');
+  checkEqual(report.frames, 60, 'frames measured');
+  check(report.fps > 0 && report.medianMs <= report.p95Ms, `implausible timing: ${report.text}`);
   log(`    ${report.text}`);
+});
+
+test('the server serves its roots only, with the right types', async ({ url }) => {
+  const get = async (path) => {
+    // node's http keeps the path as written (fetch would resolve the dots first).
+    const { request } = await import('node:http');
+    return new Promise((resolveGet, rejectGet) => {
+      const req = request(new URL(path, url), { method: 'GET', path }, (res) => {
+        res.resume();
+        res.on('end', () => resolveGet({ status: res.statusCode, type: res.headers['content-type'] }));
+      });
+      req.on('error', rejectGet);
+      req.end();
+    });
+  };
+  checkEqual((await get('/wasm/hedge.wasm')).type, 'application/wasm', 'type of hedge.wasm');
+  checkEqual((await get('/wasm/hedge.mjs')).type, 'text/javascript; charset=utf-8', 'type of hedge.mjs');
+  checkEqual((await get('/data/anchor.off')).status, 200, 'a sample');
+  // Each of these would reach the repository's README.md if the dots were followed.
+  for (const path of ['/../README.md', '/data/..%2fREADME.md', '/data/%2e%2e%2fREADME.md', '/%2e%2e/README.md',
+    '/wasm/..%2f..%2f..%2fREADME.md', '/node_modules/..%2f..%2fREADME.md'])
+    checkEqual((await get(path)).status, 404, `GET ${path}`);
 });
 
 // ---- runner -------------------------------------------------------------------------------------
@@ -377,7 +400,7 @@ async function run() {
           null, { timeout: 30000 });
         check(await page.getAttribute('body', 'data-ready') === '1',
           `the page did not start: ${await page.getAttribute('body', 'data-error')}`);
-        await t.body({ page, problems, log: (s) => lines.push(s) });
+        await t.body({ page, problems, url, log: (s) => lines.push(s) });
         check(problems.length === 0, `browser errors: ${problems.join(' | ')}`);
         console.log(`PASS ${t.name} (${Date.now() - t0} ms)`);
       } catch (error) {
