@@ -124,6 +124,23 @@ async function dropFile(page, name, text) {
   await page.dispatchEvent('#view', 'drop', { dataTransfer: transfer });
 }
 
+// The page's copies of the buffers (what three.js uploads) against RenderSync's buffers in wasm:
+// after partial updates they must be equal, element for element.
+async function checkGpuCopy(page, what) {
+  const mismatch = await page.evaluate(() => {
+    const { session, viewer } = window.playground.state;
+    const b = session.buffers();
+    const gpu = viewer.mesh;
+    for (let i = 0; i < b.vertices.length; ++i)
+      if (gpu.vertexArray[i] !== b.vertices[i]) return `vertex float ${i}: ${gpu.vertexArray[i]} != ${b.vertices[i]}`;
+    for (let i = 0; i < b.indices.length; ++i)
+      if (gpu.indexArray[i] !== b.indices[i]) return `index ${i}: ${gpu.indexArray[i]} != ${b.indices[i]}`;
+    if (gpu.indexCount !== b.indices.length) return `draw range ${gpu.indexCount} != ${b.indices.length}`;
+    return null;
+  });
+  check(mismatch === null, `${what}: the GPU copy differs from RenderSync's buffers: ${mismatch}`);
+}
+
 // The partial-upload check shared by the edit tests: some bytes went up through bufferSubData, no
 // buffer was reallocated, and far less than the whole buffers was sent.
 function checkPartialUpload(upload, what) {
@@ -206,6 +223,7 @@ test('click on an edge splits it with a partial upload', async ({ page, log }) =
   checkEqual(after.vertices - before.vertices, 1, 'vertices added by the split');
   checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity after the split');
   checkPartialUpload(await lastUpload(page), 'split');
+  await checkGpuCopy(page, 'split');
   const line = await page.textContent('#stat-upload');
   check(line.includes('partial'), 'the upload line says partial');
   log(`    split: ${line}`);
@@ -217,6 +235,7 @@ test('flip and collapse an edge, split a face', async ({ page, log }) => {
   let after = await counts(page);
   checkEqual(JSON.stringify(after), JSON.stringify(before), 'counts after a flip');
   checkPartialUpload(await lastUpload(page), 'flip');
+  await checkGpuCopy(page, 'flip');
   log(`    flip: ${await page.textContent('#stat-upload')}`);
 
   before = after;
@@ -227,6 +246,7 @@ test('flip and collapse an edge, split a face', async ({ page, log }) => {
   checkEqual(before.edges - after.edges, 3, 'edges removed by the collapse');
   checkEqual(before.vertices - after.vertices, 1, 'vertices removed by the collapse');
   checkPartialUpload(await lastUpload(page), 'collapse');
+  await checkGpuCopy(page, 'collapse');
   log(`    collapse: ${await page.textContent('#stat-upload')}`);
 
   // A face: zoom in (mouse wheel), hover a face's centre until the page highlights the face, click.
@@ -244,6 +264,7 @@ test('flip and collapse an edge, split a face', async ({ page, log }) => {
   checkEqual(after.faces - before.faces, 2, 'faces added by splitting a triangle');
   checkEqual(after.vertices - before.vertices, 1, 'vertices added by splitting a triangle');
   checkPartialUpload(await lastUpload(page), 'face split');
+  await checkGpuCopy(page, 'face split');
   log(`    face split: ${await page.textContent('#stat-upload')}`);
   checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity after the edits');
 });
