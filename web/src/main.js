@@ -1,7 +1,7 @@
 // The playground: loads meshes with hedge (WebAssembly), draws them with three.js, shows the
 // half-edge records under the cursor and edits the mesh, updating the GPU buffers range by range.
 import { Viewer, COLORS } from './viewer.js';
-import { loadHedge, Session, SUBDIVISION_SCHEMES } from './session.js';
+import { loadHedge, PageMesh, SUBDIVISION_SCHEMES } from './page_mesh.js';
 import { measurePicking } from './picking_bench.js';
 
 const $ = (id) => document.getElementById(id);
@@ -9,7 +9,7 @@ const fmt = (n) => n.toLocaleString('en-US');
 
 const state = {
   hedge: null,
-  session: null,
+  current: null,     // the PageMesh shown
   viewer: null,
   hover: null,      // { kind: 'face' | 'edge' | 'vertex', face, halfedge, vertex, point }
   busy: false,
@@ -53,7 +53,7 @@ async function guard(what, action) {
 // ---- stats --------------------------------------------------------------------------------------
 
 function showStats() {
-  const s = state.session;
+  const s = state.current;
   if (!s) return;
   const c = s.counts();
   $('stat-v').textContent = fmt(c.vertices);
@@ -87,20 +87,20 @@ function showUpload(upload) {
 
 // ---- loading ------------------------------------------------------------------------------------
 
-// Replaces the current mesh by `session` (already loaded) and uploads it whole.
-function adopt(session, name, loadMs) {
-  const old = state.session;
-  state.session = session;
+// Replaces the current mesh by `next` (already loaded) and uploads it whole.
+function adopt(next, name, loadMs) {
+  const old = state.current;
+  state.current = next;
   if (old) old.dispose();
   state.hover = null;
   state.viewer.clearOverlay();
   $('records').textContent = 'Hover the mesh.';
   $('mesh-name').textContent = name;
-  $('mesh-notes').textContent = session.loadNotes();
+  $('mesh-notes').textContent = next.loadNotes();
   const before = state.viewer.meter.snapshot();
-  const isEdge = session.edgeTest();
-  const bytes = state.viewer.mesh.rebuild(session.buffers(), isEdge);
-  state.viewer.frame(session.boundingBox());
+  const isEdge = next.edgeTest();
+  const bytes = state.viewer.mesh.rebuild(next.buffers(), isEdge);
+  state.viewer.frame(next.boundingBox());
   state.viewer.render();
   state.lastUpload = { bytes, full: true, ranges: 1, gl: state.viewer.meter.since(before) };
   showUpload(state.lastUpload);
@@ -111,10 +111,10 @@ function adopt(session, name, loadMs) {
 
 async function loadBytes(bytes, name) {
   const t0 = performance.now();
-  const session = Session.load(state.hedge, bytes, name);
+  const loaded = PageMesh.load(state.hedge, bytes, name);
   const loadMs = performance.now() - t0;
   clearError();
-  adopt(session, name, loadMs);
+  adopt(loaded, name, loadMs);
 }
 
 async function loadSample(name) {
@@ -147,7 +147,7 @@ const EDGE_PIXELS = 6;
 //! pixels of one. The reach shrinks on faces that look small, so that a face's middle always picks
 //! the face and an edge's middle the edge. Null when the ray misses.
 function elementAt(event) {
-  const s = state.session;
+  const s = state.current;
   if (!s) return null;
   const ray = state.viewer.rayAt(event);
   const hit = s.pick(ray.origin, ray.direction);
@@ -193,7 +193,7 @@ function recordLines(s, h, label) {
 }
 
 function describe(el) {
-  const s = state.session;
+  const s = state.current;
   const lines = [];
   if (el.kind === 'face') {
     const loop = s.faceHalfedges(el.face);
@@ -241,7 +241,7 @@ function drawHover() {
   const viewer = state.viewer;
   viewer.clearOverlay();
   const el = state.hover;
-  const s = state.session;
+  const s = state.current;
   if (!el || !s) return;
   const loopPoints = (f) => s.faceHalfedges(f).map((h) => s.position(s.record(h).origin));
   // Overlay sizes follow the hovered face's edges, so they read the same at any zoom and density.
@@ -298,7 +298,7 @@ function setHover(el) {
 // rewritten ranges. The frame right after the edit is rendered here, with the overlays hidden, so
 // that the upload meter counts this edit's buffers alone.
 function applyEdit(name, edit) {
-  const s = state.session;
+  const s = state.current;
   if (!s) throw new Error('no mesh loaded');
   const t0 = performance.now();
   const description = edit(s);
@@ -361,7 +361,7 @@ function wireInput() {
     requestAnimationFrame(() => {
       const e = moveQueued;
       moveQueued = null;
-      if (state.busy || !state.session) return;
+      if (state.busy || !state.current) return;
       try {
         setHover(elementAt(e));
       } catch (error) {
@@ -443,7 +443,7 @@ function wireInput() {
   })));
   $('pick-bench').addEventListener('click', () => guard('picking benchmark', async () => {
     $('stat-pick').textContent = 'measuring...';
-    const report = await measurePicking(state.hedge, state.session, Number($('pick-size').value));
+    const report = await measurePicking(state.hedge, state.current, Number($('pick-size').value));
     $('stat-pick').textContent = report.text;
     document.body.dataset.pick = JSON.stringify(report);
   }));
@@ -477,7 +477,7 @@ window.playground = {
   //! Edges whose midpoint is visible and picks back as that edge: [{edge, halfedge, x, y, length}]
   //! (screen pixels).
   visibleEdges(limit = 20) {
-    const s = state.session;
+    const s = state.current;
     const out = [];
     const faces = s.counts().faces;
     for (let f = 0; f < faces && out.length < limit; f += Math.max(1, Math.floor(faces / 400))) {
@@ -498,7 +498,7 @@ window.playground = {
   //! Screen position of the centroid of a visible face that picks back as that face, or null;
   //! `largest`: of the face that looks largest on screen (its screen-space area) instead of the first.
   visibleFaceCentre({ largest = false } = {}) {
-    const s = state.session;
+    const s = state.current;
     const faces = s.counts().faces;
     let best = null;
     for (let f = 0; f < faces; ++f) {

@@ -2,7 +2,7 @@
 // the current mesh or a large one made by Loop subdivision of the spot sample (5,856 triangles:
 // 2 steps give 93,696, 4 steps 1,499,136). Reports the time of
 // the 500 rays per frame (median and 95th percentile over the frames) and the frame rate reached.
-import { Session } from './session.js';
+import { PageMesh } from './page_mesh.js';
 
 const RAYS_PER_FRAME = 500;
 const FRAMES = 60;
@@ -51,32 +51,32 @@ function percentile(sorted, p) {
 //! subdivisions (a separate mesh, freed afterwards). The rays go in one pickMany call per frame.
 //! Returns { triangles, rays, frames, medianMs, p95Ms, fps, hits, buildMs, text }.
 export async function measurePicking(hedge, current, loopSteps) {
-  let session = current;
+  let mesh = current;
   let owned = null;
   let subdivideMs = 0;
   if (loopSteps > 0) {
     const response = await fetch('/data/spot_triangulated.obj');
     if (!response.ok) throw new Error(`could not fetch the spot sample (HTTP ${response.status})`);
-    owned = Session.load(hedge, new Uint8Array(await response.arrayBuffer()), 'spot_triangulated.obj', { render: false });
-    session = owned;
+    owned = PageMesh.load(hedge, new Uint8Array(await response.arrayBuffer()), 'spot_triangulated.obj', { render: false });
+    mesh = owned;
     const t0 = performance.now();
-    for (let i = 0; i < loopSteps; ++i) session.subdivide('loop');
+    for (let i = 0; i < loopSteps; ++i) mesh.subdivide('loop');
     subdivideMs = performance.now() - t0;
   }
-  if (!session) throw new Error('no mesh loaded');
+  if (!mesh) throw new Error('no mesh loaded');
   try {
-    const triangles = session.triangleCount();
+    const triangles = mesh.triangleCount();
     const t0 = performance.now();
-    session.buildPicking();
+    mesh.buildPicking();
     const buildMs = performance.now() - t0;
-    const rays = makeRays(session.boundingBox(), RAYS_PER_FRAME, 12345);
+    const rays = makeRays(mesh.boundingBox(), RAYS_PER_FRAME, 12345);
     const times = [];
     let hits = 0;
     await nextFrame();
     const start = performance.now();
     for (let frame = 0; frame < FRAMES; ++frame) {
       const f0 = performance.now();
-      hits = session.castRays(rays.origins, rays.directions);
+      hits = mesh.castRays(rays.origins, rays.directions);
       times.push(performance.now() - f0);
       await nextFrame();
     }

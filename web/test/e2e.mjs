@@ -128,8 +128,8 @@ async function dropFile(page, name, text) {
 // after partial updates they must be equal, element for element.
 async function checkGpuCopy(page, what) {
   const mismatch = await page.evaluate(() => {
-    const { session, viewer } = window.playground.state;
-    const b = session.buffers();
+    const { current, viewer } = window.playground.state;
+    const b = current.buffers();
     const gpu = viewer.mesh;
     for (let i = 0; i < b.vertices.length; ++i)
       if (gpu.vertexArray[i] !== b.vertices[i]) return `vertex float ${i}: ${gpu.vertexArray[i]} != ${b.vertices[i]}`;
@@ -187,8 +187,8 @@ test('hovering an edge shows its half-edge records, one-ring and arrows', async 
   const text = await page.textContent('#records');
   const h = Number(/half-edge h(\d+)/.exec(text)?.[1]);
   check(Number.isInteger(h), `no half-edge in the records panel: ${text}`);
-  // The panel's records against hedge's own (read through the page's session) and the pairing rule.
-  const record = await page.evaluate((k) => window.playground.state.session.record(k), h);
+  // The panel's records against hedge's own (read through the page's current) and the pairing rule.
+  const record = await page.evaluate((k) => window.playground.state.current.record(k), h);
   checkEqual(record.twin, h ^ 1, 'twin of the hovered half-edge');
   for (const key of ['origin', 'twin', 'next', 'prev']) {
     const prefix = key === 'origin' ? 'v' : 'h';
@@ -197,7 +197,7 @@ test('hovering an edge shows its half-edge records, one-ring and arrows', async 
   check(text.includes(`edge e${record.edge}: v${record.origin} - v${record.target}`), `edge line missing: ${text}`);
   // Highlight, one-ring spokes and four arrows (the half-edge, next, prev and twin) are drawn.
   const overlay = await page.evaluate(() => window.playground.state.viewer.overlay.children.length);
-  const ring = await page.evaluate((v) => window.playground.state.session.oneRing(v).length, record.origin);
+  const ring = await page.evaluate((v) => window.playground.state.current.oneRing(v).length, record.origin);
   check(overlay >= 2 + 2 * ring + 4, `${overlay} overlay objects for an edge with a ${ring}-vertex ring and 4 arrows`);
   await page.screenshot({ path: join(outDir, 'inspect_edge.png') });
 
@@ -206,7 +206,7 @@ test('hovering an edge shows its half-edge records, one-ring and arrows', async 
   check(face, 'no visible face found to hover');
   await page.mouse.move(face.x, face.y);
   await page.waitForFunction(() => document.body.dataset.hover === 'face', null, { timeout: 2000 });
-  const loop = await page.evaluate((f) => window.playground.state.session.faceHalfedges(f), face.face);
+  const loop = await page.evaluate((f) => window.playground.state.current.faceHalfedges(f), face.face);
   const faceText = await page.textContent('#records');
   check(faceText.includes(`face f${face.face}: ${loop.length} corners, half-edges ${loop.map((g) => 'h' + g).join(' ')}`),
     `face records: ${faceText}`);

@@ -16,7 +16,7 @@ export async function loadHedge() {
   return load();
 }
 
-export class Session {
+export class PageMesh {
   //! `render`: keep render buffers (RenderSync) for drawing; false for a mesh only measured.
   constructor(hedge, mesh, { render = true } = {}) {
     this.hedge = hedge;
@@ -33,7 +33,7 @@ export class Session {
     if (bytes.length === 0) throw new Error(`${name}: the file is empty`);
     const mesh = hedge.fromFile(bytes, name);
     try {
-      return new Session(hedge, mesh, options);
+      return new PageMesh(hedge, mesh, options);
     } catch (error) {
       mesh.dispose();
       throw error;
