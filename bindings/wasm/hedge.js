@@ -230,9 +230,11 @@ export class Mesh {
    *  vertexDistance, corners (of the fan triangle hit), barycentric}. A bounding volume hierarchy
    *  is built on the first call and kept up to date with edits. */
   pick(origin, direction) {
-    const o = point3(origin, 'pick origin');
-    const d = point3(direction, 'pick direction');
-    const face = this._call('pick', o[0], o[1], o[2], d[0], d[1], d[2]);
+    // The hot path of hovering: no argument arrays are made (a missing or non-numeric coordinate
+    // becomes NaN, and a ray with a NaN finds nothing).
+    const native = this._n();
+    const face = native.pick(+origin[0], +origin[1], +origin[2], +direction[0], +direction[1], +direction[2]);
+    this.hedge._check(face);
     if (face < 0) return null;
     const f = this.hedge.module.HEAPF64;
     const k = this.hedge._pick;
