@@ -178,7 +178,6 @@ function elementAt(event) {
   return { kind: 'face', face: hit.face, halfedge: loop[0].h, point: hit.point };
 }
 
-const handle = (x) => (x < 0 ? '-' : String(x));
 
 function recordLines(s, h, label) {
   const r = s.record(h);

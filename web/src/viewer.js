@@ -48,7 +48,6 @@ export class Viewer {
 
     this.overlay = new THREE.Group();
     this.scene.add(this.overlay);
-    this.scale = 1;
 
     this.raycaster = new THREE.Raycaster();
     this.pending = false;
@@ -90,7 +89,6 @@ export class Viewer {
     const max = new THREE.Vector3(...box.max);
     const center = min.clone().add(max).multiplyScalar(0.5);
     const radius = Math.max(max.distanceTo(min) * 0.5, 1e-6);
-    this.scale = radius;
     this.controls.target.copy(center);
     const fov = THREE.MathUtils.degToRad(this.camera.fov);
     const distance = radius / Math.sin(fov / 2) * 1.05;
