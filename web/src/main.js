@@ -178,7 +178,6 @@ function elementAt(event) {
   return { kind: 'face', face: hit.face, halfedge: loop[0].h, point: hit.point };
 }
 
-
 function recordLines(s, h, label) {
   const r = s.record(h);
   return [
