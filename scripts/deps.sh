@@ -9,6 +9,8 @@
 #   fuzz   the libFuzzer targets
 #   csharp Mono's C# compiler and runtime, for the C# binding's tests (bindings/csharp/)
 #   wasm   emscripten (with its node and clang) for the WebAssembly module (bindings/wasm/)
+#   web    Debian's chromium (and its driver), for the playground's browser tests (web/); node 20
+#          and npm must be present already (hedge_web_npm checks)
 # Only missing packages are installed; when everything is present nothing is run, so the check is
 # fast on a machine that is already set up. Debian 12 (apt-get) is assumed.
 
@@ -24,6 +26,7 @@ hedge_deps_packages() {
       fuzz) echo clang libclang-rt-14-dev ;;
       csharp) echo mono-mcs mono-runtime ;;
       wasm) echo emscripten nodejs ;;
+      web) echo chromium chromium-driver ;;
       *)
         echo "deps.sh: unknown dependency group '$group'" >&2
         return 1
@@ -61,4 +64,28 @@ hedge_install_deps() {
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q || return 1
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive \
     apt-get install -y -q --no-install-recommends "${missing[@]}" </dev/null || return 1
+}
+
+# Installs the playground's npm packages (web/node_modules) from web/package-lock.json with
+# `npm ci`, unless they are installed already and the lock file has not changed since.
+hedge_web_npm() {
+  local root web
+  root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+  web=$root/web
+  if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+    echo "deps.sh: node (20 or newer) and npm are needed for web/; install them first" >&2
+    return 1
+  fi
+  local major
+  major=$(node -p 'process.versions.node.split(".")[0]')
+  if [ "$major" -lt 20 ]; then
+    echo "deps.sh: web/ needs node 20 or newer, found $(node --version)" >&2
+    return 1
+  fi
+  if [ -f "$web/node_modules/.package-lock.json" ] &&
+    [ ! "$web/package-lock.json" -nt "$web/node_modules/.package-lock.json" ]; then
+    return 0
+  fi
+  echo "==> npm ci in web/"
+  (cd "$web" && npm ci --no-audit --no-fund) || return 1
 }

@@ -1,0 +1,221 @@
+// One loaded mesh as the page uses it: the hedge mesh in wasm, its RenderSync, and the queries and
+// edits of the inspect and edit panels. Every failure is thrown as an Error whose message says what
+// and where (hedge's own message, with the file and line for a bad file).
+import { loadHedge as load } from 'hedge';
+
+export const SUBDIVISION_SCHEMES = [
+  { id: 'loop', label: 'Loop' },
+  { id: 'sqrt3', label: 'sqrt(3)' },
+  { id: 'midpoint', label: 'Midpoint' },
+  { id: 'catmull-clark', label: 'Catmull-Clark' },
+  { id: 'split-faces', label: 'Split faces' },
+];
+
+//! Instantiates the WebAssembly module (hedge.wasm is fetched next to hedge.mjs).
+export async function loadHedge() {
+  return load();
+}
+
+export class PageMesh {
+  //! `render`: keep render buffers (RenderSync) for drawing; false for a mesh only measured.
+  constructor(hedge, mesh, { render = true } = {}) {
+    this.hedge = hedge;
+    this.mesh = mesh;
+    // Computed normals: the same smooth shading for every file, updated around each edit.
+    this.render = render ? mesh.createRender({ normals: 'computed', texcoords: false, colors: false }) : null;
+    this.rays = null;
+    this.pickFaces = null;
+  }
+
+  //! Reads a mesh file's bytes (a Uint8Array) with the reader for `name`'s extension. A malformed
+  //! file throws hedge's message, which names the file and the line or byte.
+  static load(hedge, bytes, name, options = {}) {
+    if (bytes.length === 0) throw new Error(`${name}: the file is empty`);
+    const mesh = hedge.fromFile(bytes, name);
+    try {
+      return new PageMesh(hedge, mesh, options);
+    } catch (error) {
+      mesh.dispose();
+      throw error;
+    }
+  }
+
+  dispose() {
+    if (this.render) this.render.dispose();
+    if (this.mesh) this.mesh.dispose();
+    this.render = null;
+    this.mesh = null;
+  }
+
+  //! What loading repaired and the reader's warnings, in a line ('' when there is nothing to say).
+  loadNotes() {
+    const report = this.mesh.buildReport();
+    const notes = [];
+    const labels = {
+      weldedVertices: 'welded vertices', degenerateFaces: 'degenerate faces dropped',
+      repeatedCorners: 'repeated corners', reorientedFaces: 'faces reoriented',
+      nonManifoldEdges: 'non-manifold edges split', nonManifoldVertices: 'non-manifold vertices split',
+      duplicatedVertices: 'vertices duplicated', isolatedVertices: 'isolated vertices',
+    };
+    for (const [key, label] of Object.entries(labels)) if (report[key]) notes.push(`${report[key]} ${label}`);
+    const warnings = report.warnings || [];
+    const shown = warnings.slice(0, 3);
+    if (warnings.length > shown.length) shown.push(`and ${warnings.length - shown.length} more warnings`);
+    return [...(notes.length ? [`repairs: ${notes.join(', ')}`] : []), ...shown].join('; ');
+  }
+
+  counts() {
+    return this.mesh.counts();
+  }
+
+  //! Triangles of the mesh (n - 2 for an n-gon). O(faces).
+  triangleCount() {
+    if (this.mesh.isTriangleMesh()) return this.counts().faces;
+    return this.mesh.toArrays({ triangulate: true }).indices.length / 3;
+  }
+
+  problems() {
+    return this.mesh.validate();
+  }
+
+  boundingBox() {
+    const p = this.mesh.positions;
+    const min = [Infinity, Infinity, Infinity];
+    const max = [-Infinity, -Infinity, -Infinity];
+    for (let i = 0; i < p.length; i += 3) {
+      for (let k = 0; k < 3; ++k) {
+        const x = p[i + k];
+        if (x < min[k]) min[k] = x;
+        if (x > max[k]) max[k] = x;
+      }
+    }
+    if (!(min[0] <= max[0])) return { min: [-1, -1, -1], max: [1, 1, 1] };
+    return { min, max };
+  }
+
+  //! Views of the render buffers in wasm memory; valid until the next call into the module.
+  buffers() {
+    const sizes = this.render.sizes();
+    return {
+      layout: this.render.layout,
+      vertices: this.render.vertices,
+      indices: this.render.indices,
+      vertexCapacity: sizes.vertexCapacity,
+      indexCapacity: sizes.indexCapacity,
+    };
+  }
+
+  //! Null for a triangle mesh (every side of a render triangle is an edge); else a test whether
+  //! render vertices a and b are joined by an edge, for drawing polygons without their diagonals.
+  //! Valid until the next edit.
+  edgeTest() {
+    if (this.mesh.isTriangleMesh()) return null;
+    const source = this.render.vertexSource.slice();  // a copy: the test calls into the module
+    const rings = new Map();
+    return (a, b) => {
+      const va = source[a], vb = source[b];
+      let ring = rings.get(va);
+      if (!ring) {
+        ring = new Set(this.mesh.oneRing(va).vertices);
+        rings.set(va, ring);
+      }
+      return ring.has(vb);
+    };
+  }
+
+  //! Syncs the render buffers with the mesh: { vertexRanges, indexRanges: [{first, count}], resized, full }.
+  sync() {
+    const r = this.render.sync();
+    const ranges = (flat) => {
+      const out = [];
+      for (let i = 0; i < flat.length; i += 2) out.push({ first: flat[i], count: flat[i + 1] });
+      return out;
+    };
+    return { ...r, vertexRanges: ranges(r.vertexRanges), indexRanges: ranges(r.indexRanges) };
+  }
+
+  //! The first face hit by a ray: { face, point, ... } or null.
+  pick(origin, direction) {
+    return this.mesh.pick(origin, direction);
+  }
+
+  //! Builds (or updates) the picking BVH.
+  buildPicking() {
+    this.mesh.pick([0, 0, 0], [0, 0, 1]);
+  }
+
+  //! Casts rays (origins and directions, 3 floats each) in one call; returns the number of hits.
+  castRays(origins, directions) {
+    const n = origins.length / 3;
+    if (!this.rays || this.rays.length !== n * 6) {
+      this.rays = new Float32Array(n * 6);
+      this.pickFaces = new Int32Array(n);
+    }
+    for (let i = 0; i < n; ++i) {
+      this.rays.set(origins.subarray(i * 3, i * 3 + 3), i * 6);
+      this.rays.set(directions.subarray(i * 3, i * 3 + 3), i * 6 + 3);
+    }
+    const faces = this.mesh.pickMany(this.rays, this.pickFaces);
+    let hits = 0;
+    for (let i = 0; i < n; ++i) hits += faces[i] >= 0 ? 1 : 0;
+    return hits;
+  }
+
+  isFaceLive(f) {
+    try {
+      this.mesh.face(f);
+      return true;
+    } catch {
+      return false;
+    }
+  }
+
+  faceHalfedges(f) {
+    return this.mesh.face(f).halfedges;
+  }
+
+  //! { halfedge, origin, target, twin, face, next, prev, edge, boundary } of half-edge h.
+  record(h) {
+    return this.mesh.halfedge(h);
+  }
+
+  position(v) {
+    return this.mesh.position(v);
+  }
+
+  outgoing(v) {
+    return this.mesh.vertex(v).halfedge;
+  }
+
+  oneRing(v) {
+    return this.mesh.oneRing(v).vertices;
+  }
+
+  splitEdge(e, point) {
+    return this.mesh.splitEdge(e, point);
+  }
+
+  flip(e) {
+    return this.mesh.flip(e);
+  }
+
+  collapse(h) {
+    return this.mesh.collapse(h);
+  }
+
+  splitFace(f, point) {
+    return this.mesh.splitFace(f, point);
+  }
+
+  subdivide(scheme) {
+    return this.mesh.subdivide(scheme, 1);
+  }
+
+  smooth() {
+    return this.mesh.smooth({ method: 'taubin', iterations: 10 });
+  }
+
+  decimate(targetFaces) {
+    return this.mesh.decimate({ targetFaces });
+  }
+}
