@@ -320,6 +320,18 @@ SurfaceMesh extrude(const SurfaceMesh& s, double thickness) {
   return out;
 }
 
+//! How far the farthest point lies beyond a face plane of the hull (0 for an empty hull).
+double farthest_outside(const ConvexHull& hull, const std::vector<Vec3>& points) {
+  double worst = 0;
+  const SurfaceMesh& h = hull.mesh;
+  for (Face f : h.faces()) {
+    const Vec3d n = normalize(area_vector(h, f));
+    const Vec3d a = to_double(h.position(h.to_vertex(h.halfedge(f))));
+    for (const Vec3& q : points) worst = std::max(worst, dot(sub(to_double(q), a), n));
+  }
+  return worst;
+}
+
 void measure_shard(Shard& shard, const FractureOptions& o) {
   const SurfaceMesh& s = shard.mesh;
   double area = 0;
@@ -355,6 +367,10 @@ void measure_shard(Shard& shard, const FractureOptions& o) {
     points.reserve(shard.mesh.n_vertices());
     for (Vertex v : shard.mesh.vertices()) points.push_back(shard.mesh.position(v));
     shard.hull = convex_hull(points, o.hull_options);
+    // Quickhull's rounding on a nearly flat set can, rarely, leave a point outside beyond its
+    // tolerance: checked here (O(points x hull faces), small for a shard) and reported.
+    const double beyond = farthest_outside(shard.hull, points) - shard.hull.tolerance;
+    shard.hull.max_outside_distance = std::max(shard.hull.max_outside_distance, beyond);
   }
 }
 
