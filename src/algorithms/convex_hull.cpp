@@ -171,6 +171,10 @@ class Quickhull {
     Vec3d normal;
     double offset = 0;
     std::vector<std::uint32_t> outside;
+    // Points within eps of the plane, neither outside nor clearly inside. They are sorted again
+    // when the face is replaced or a face is built next to it: a nearly coplanar new face, tilted
+    // against this one, may have them outside.
+    std::vector<std::uint32_t> near;
     std::uint32_t farthest = kNone;
     double farthest_distance = 0;
     bool alive = true;
@@ -191,16 +195,21 @@ class Quickhull {
     return static_cast<std::uint32_t>(faces_.size() - 1);
   }
 
-  // Gives point i to the face among `candidates` it lies farthest beyond, if any is beyond eps.
+  // Gives point i to the face among `candidates` it lies farthest beyond: as an outside point if
+  // that is beyond eps, as a near point if within eps; a point inside by more is dropped.
   void assign(std::uint32_t i, std::span<const std::uint32_t> candidates) {
     std::uint32_t best = kNone;
-    double best_d = eps_;
+    double best_d = -std::numeric_limits<double>::infinity();
     for (std::uint32_t f : candidates) {
       const double d = distance(faces_[f], i);
       if (d > best_d) best_d = d, best = f;
     }
-    if (best == kNone) return;  // inside, or on the hull within the tolerance
+    if (best == kNone || best_d < -eps_) return;  // inside
     Face_& f = faces_[best];
+    if (best_d <= eps_) {  // on the hull within the tolerance, for now
+      f.near.push_back(i);
+      return;
+    }
     f.outside.push_back(i);
     if (best_d > f.farthest_distance) f.farthest_distance = best_d, f.farthest = i;
   }
@@ -301,7 +310,28 @@ class Quickhull {
       dead.alive = false;
       for (std::uint32_t i : dead.outside)
         if (i != apex) assign(i, new_faces_);
+      for (std::uint32_t i : dead.near) assign(i, new_faces_);
       std::vector<std::uint32_t>().swap(dead.outside);
+      std::vector<std::uint32_t>().swap(dead.near);
+    }
+    // The near points of the faces beyond the horizon, against their face and the new ones.
+    for (const HorizonEdge& e : horizon_) {
+      Face_& outer = faces_[e.outer];
+      if (outer.near.empty()) continue;
+      std::vector<std::uint32_t> near;
+      near.swap(outer.near);
+      std::array<std::uint32_t, 1> self{e.outer};
+      for (std::uint32_t i : near) {
+        std::uint32_t best = kNone;
+        double best_d = -std::numeric_limits<double>::infinity();
+        for (std::uint32_t f : new_faces_)
+          if (const double d = distance(faces_[f], i); d > best_d) best_d = d, best = f;
+        if (best_d > eps_) {
+          assign(i, {&best, 1});
+        } else {
+          assign(i, self);
+        }
+      }
     }
     push_if_outside(new_faces_);
   }

@@ -367,8 +367,8 @@ void measure_shard(Shard& shard, const FractureOptions& o) {
     points.reserve(shard.mesh.n_vertices());
     for (Vertex v : shard.mesh.vertices()) points.push_back(shard.mesh.position(v));
     shard.hull = convex_hull(points, o.hull_options);
-    // Quickhull's rounding on a nearly flat set can, rarely, leave a point outside beyond its
-    // tolerance: checked here (O(points x hull faces), small for a shard) and reported.
+    // A safeguard on quickhull's rounding: every vertex is checked against the hull (O(points x
+    // hull faces), small for a shard), and any that sticks out beyond the tolerance is reported.
     const double beyond = farthest_outside(shard.hull, points) - shard.hull.tolerance;
     shard.hull.max_outside_distance = std::max(shard.hull.max_outside_distance, beyond);
   }

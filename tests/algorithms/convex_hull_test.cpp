@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -268,6 +269,21 @@ TEST(ConvexHull, AFlatSetWithRunsOfCollinearPointsKeepsThemInside) {
   EXPECT_EQ(sq.dimension, HullDimension::flat);
   EXPECT_EQ(sq.mesh.n_vertices(), 8u);
   expect_hull_of(sq, square, 1e-7);
+}
+
+TEST(ConvexHull, APointNearAFaceThatIsReplacedLaterIsNotLost) {
+  // A nearly flat shard of a curved surface: point 7 lies within the tolerance of a face of the
+  // first tetrahedron, and a nearly coplanar face built later next to it has it 1.8e-5 outside
+  // (ten times the tolerance). It is a corner of the hull and must be one.
+  const std::vector<Vec3> pts{{1.85828996f, 12.8351002f, -2.26317f},    {2.1122601f, 12.8323002f, -2.26268005f},
+                              {2.10625005f, 12.6082001f, -2.22318006f}, {2.10558009f, 13.2533998f, -2.33693004f},
+                              {1.84082997f, 13.2761002f, -2.34094f},    {1.85353005f, 13.0513f, -2.30130005f},
+                              {1.59774995f, 13.0655003f, -2.30379009f}, {2.1177001f, 13.0323f, -2.29795003f}};
+  const ConvexHull h = convex_hull(pts);
+  EXPECT_EQ(h.dimension, HullDimension::solid);
+  expect_hull_of(h, pts, 1e-7);
+  EXPECT_EQ(h.max_outside_distance, 0);
+  EXPECT_NE(std::find(h.input_index.begin(), h.input_index.end(), 7u), h.input_index.end());
 }
 
 TEST(ConvexHull, AFlatSetFarFromTheOriginIsThickerThanFloatSteps) {

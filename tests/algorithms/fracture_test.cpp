@@ -49,8 +49,8 @@ void expect_hull_contains(const Shard& s) {
   const double size = norm(to_double(box.max - box.min));
   ++g_hulls;
   if (s.hull.max_outside_distance > 0) ++g_hulls_outside;
-  EXPECT_LE(s.hull.max_outside_distance, 1e-4 * size);
-  const double slack = s.hull.tolerance + s.hull.max_outside_distance + 1e-6 * size;
+  EXPECT_EQ(s.hull.max_outside_distance, 0);
+  const double slack = s.hull.tolerance + 1e-6 * size;
   for (Face f : s.hull.mesh.faces()) {
     const Vec3d n = normalize(area_vector(s.hull.mesh, f));
     const Vec3d a = to_double(s.hull.mesh.position(s.hull.mesh.to_vertex(s.hull.mesh.halfedge(f))));
@@ -477,8 +477,8 @@ TEST(Fracture, RandomImpactsOverRealMeshes) {
     if (::testing::Test::HasFailure()) break;
   }
   EXPECT_GT(shards, impacts * 5);
-  // Quickhull's rounding leaves a vertex outside only rarely.
-  EXPECT_LE(g_hulls_outside, g_hulls / 1000 + 1) << g_hulls_outside << " of " << g_hulls;
+  // No hull reports a vertex outside.
+  EXPECT_EQ(g_hulls_outside, 0u) << g_hulls_outside << " of " << g_hulls;
 }
 
 }  // namespace

@@ -128,9 +128,8 @@ struct Shard {
   //! Of `mesh` at the options' density when it is closed; all zero when it is open.
   MassProperties mass;
   //! Of `mesh`'s vertices, when options.hulls (else empty). Every vertex is checked to lie inside
-  //! within hull.tolerance; where quickhull's rounding on a nearly flat shard left one farther out
-  //! (about one shard in 10^4 in the test sweep, by 1e-5 of its size), hull.max_outside_distance
-  //! says by how much.
+  //! within hull.tolerance; should one stick out farther, hull.max_outside_distance says by how
+  //! much (never seen in the test sweep since convex_hull keeps its near points).
   ConvexHull hull;
 };
 
