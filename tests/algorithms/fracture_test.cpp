@@ -161,6 +161,10 @@ TEST(Fracture, WoodShardsAreLongerAlongTheGrain) {
   };
   EXPECT_GT(mean_aspect("wood", {1, 0, 0}), 1.8);
   EXPECT_LT(mean_aspect("wood", {0, 1, 0}), 1 / 1.8);
+  // A grain along the plate's normal cuts across it: round cells.
+  const double across = mean_aspect("wood", {0, 0, 1});
+  EXPECT_GT(across, 0.6);
+  EXPECT_LT(across, 1.6);
   const double glass = mean_aspect("glass", {});
   EXPECT_GT(glass, 0.6);
   EXPECT_LT(glass, 1.6);
