@@ -429,10 +429,11 @@ FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOpt
                             number(impact.z) + ") is " + number(distance) + " from the nearest face (" +
                             std::to_string(hit->face.idx()) + "), beyond the tolerance " + number(tolerance));
   bool neighbour = false;
-  for (Face g : mesh.faces(hit->face)) {
-    (void)g;
-    neighbour = true;
-  }
+  for (Halfedge h : mesh.halfedges(hit->face))
+    if (!mesh.is_boundary(SurfaceMesh::twin(h))) {
+      neighbour = true;
+      break;
+    }
   if (!neighbour)
     throw InvalidInputError("fracture: face " + std::to_string(hit->face.idx()) +
                             " at the impact has no neighbour: too small to break");
