@@ -356,6 +356,26 @@ TEST(GltfWrite, TheUvSeamsSurviveAFileRoundTrip) {
   fs::remove_all(dir);
 }
 
+TEST(GltfWrite, HardEdgesSplitVerticesAndComeBackAsCornerNormals) {
+  // A flat-shaded cube: 8 positions, one normal per side, so every vertex has 3 distinct normals.
+  IndexedMesh cube;
+  for (int i = 0; i < 8; ++i) cube.positions.push_back({float(i & 1), float(i >> 1 & 1), float(i >> 2 & 1)});
+  cube.indices = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
+                  2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
+  cube.normals = {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {0, 1, 0}, {-1, 0, 0}, {1, 0, 0}};
+  for (std::uint32_t t = 0; t < 12; ++t) cube.normal_indices.insert(cube.normal_indices.end(), {t / 2, t / 2, t / 2});
+  const IndexedMesh back = read_gltf(write_glb(cube), "cube.glb");
+  EXPECT_EQ(back.positions.size(), 24u);  // 8 vertices x 3 sides
+  expect_same_corners(cube, back);
+  // Built with the default welding: the closed cube again, its normals on the corners.
+  const SurfaceMesh mesh = build(back, default_build_options(FileFormat::glb));
+  EXPECT_EQ(mesh.n_vertices(), 8u);
+  EXPECT_EQ(mesh.n_faces(), 12u);
+  EXPECT_TRUE(mesh.boundary_loops().empty());
+  EXPECT_TRUE(mesh.validate().empty());
+  expect_same_corners(cube, to_indexed(mesh));
+}
+
 TEST(GltfWrite, TheDocumentHasWhatTheSpecificationRequires) {
   IndexedMesh quad;
   quad.positions = {{-1, 0, 2}, {1, 0, 2}, {1, 3, 2}, {-1, 3, 5}};
