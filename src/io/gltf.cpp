@@ -553,7 +553,10 @@ std::string write_model(const IndexedMesh& mesh, bool binary) {
   // keeps number v with the attributes of its first corner, so positions come back in their order;
   // corners that differ from it (seams, hard edges) get vertices after the mesh's own.
   const std::size_t nv = mesh.positions.size();
-  std::vector<CornerKey> keys(nv, CornerKey{0, 0, 0});
+  // A vertex no corner uses keeps its position with out-of-range attribute indices: zeros.
+  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  std::vector<CornerKey> keys(nv);
+  for (std::size_t v = 0; v < nv; ++v) keys[v] = {static_cast<std::uint32_t>(v), kNone, kNone};
   std::vector<char> keyed(nv, 0);
   std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> extra;
   std::vector<std::uint32_t> out_indices;

@@ -429,6 +429,21 @@ TEST(GltfWrite, LargeMeshesGetThirtyTwoBitIndices) {
   EXPECT_EQ(back.positions.size(), strip.positions.size());
 }
 
+TEST(GltfWrite, VerticesNoFaceUsesKeepTheirPositionsAndGetZeroAttributes) {
+  IndexedMesh m;
+  m.positions = {{5, 6, 7}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {8, 9, 10}};
+  m.indices = {1, 2, 3};
+  m.texcoords = {{0.25f, 0.5f}};
+  m.texcoord_indices = {0, 0, 0};
+  const IndexedMesh back = read_gltf(write_gltf(m), "m");
+  ASSERT_EQ(back.positions.size(), 5u);
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_TRUE(same_bits(back.positions[i], m.positions[i])) << i;
+  EXPECT_EQ(back.indices, m.indices);
+  EXPECT_EQ(back.texcoords[0].x, 0.f);  // isolated: zeros
+  EXPECT_EQ(back.texcoords[0].y, 0.f);
+  EXPECT_EQ(back.texcoords[2].x, 0.25f);
+}
+
 TEST(GltfWrite, AMeshWithoutFacesGivesNoSceneAndBadMeshesAreRefused) {
   IndexedMesh none;
   none.positions = {{1, 2, 3}};
