@@ -136,6 +136,17 @@ TEST(GltfRead, TheHandWrittenFileGivesBothNodesWithTheirAttributes) {
   EXPECT_THROW(read_mesh(data_path("two_quads.gltf"), strict), IoError);  // the skipped lines
 }
 
+TEST(GltfRead, TheCommittedGlbHoldsTheSameQuads) {
+  const IndexedMesh text = read_indexed_file(data_path("two_quads.gltf"));
+  const IndexedMesh binary = read_indexed_file(data_path("two_quads.glb"));
+  EXPECT_TRUE(binary.warnings.empty());
+  ASSERT_EQ(binary.positions.size(), text.positions.size());
+  EXPECT_EQ(std::memcmp(binary.positions.data(), text.positions.data(), text.positions.size() * sizeof(Vec3)), 0);
+  EXPECT_EQ(binary.indices, text.indices);
+  EXPECT_EQ(binary.texcoords.size(), text.texcoords.size());
+  EXPECT_EQ(binary.normals.size(), text.normals.size());
+}
+
 TEST(GltfRead, NodeTransformsAreAppliedAndAMirrorKeepsTheOrientation) {
   Triangle t;
   t.doc["nodes"] = json::parse(R"([{"children": [1], "translation": [10, 0, 0]},
