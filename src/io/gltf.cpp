@@ -83,7 +83,8 @@ bool refuse_write(std::string* err, const std::string& path, const std::vector<u
 }
 
 // Images are not needed for the mesh: accepted and left undecoded.
-bool skip_image(tg::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+bool skip_image(tg::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
+                void*) {
   return true;
 }
 
@@ -124,12 +125,14 @@ class Reader {
     if (!model_.scenes.empty()) {
       const int scene = model_.defaultScene >= 0 ? model_.defaultScene : 0;
       if (scene >= static_cast<int>(model_.scenes.size()))
-        fail("scene " + std::to_string(scene) + " does not exist (the file has " + str(model_.scenes.size()) + ")");
+        fail("scene " + std::to_string(scene) + " does not exist (the file has " + str(model_.scenes.size()) +
+             ")");
       std::vector<char> seen(model_.nodes.size(), 0);
       for (const int node : model_.scenes[static_cast<std::size_t>(scene)].nodes)
         visit(node, seen, "scene " + std::to_string(scene));
     } else {
-      for (std::size_t m = 0; m < model_.meshes.size(); ++m) add_mesh(static_cast<int>(m), kIdentity, "the file");
+      for (std::size_t m = 0; m < model_.meshes.size(); ++m)
+        add_mesh(static_cast<int>(m), kIdentity, "the file");
     }
     return assemble();
   }
@@ -149,9 +152,11 @@ class Reader {
     std::vector<Step> stack;
     auto enter = [&](int node, const Mat4& parent, const std::string& by) {
       if (node < 0 || node >= static_cast<int>(model_.nodes.size()))
-        fail(by + ": node " + std::to_string(node) + " does not exist (the file has " + str(model_.nodes.size()) + ")");
+        fail(by + ": node " + std::to_string(node) + " does not exist (the file has " +
+             str(model_.nodes.size()) + ")");
       const auto ni = static_cast<std::size_t>(node);
-      if (seen[ni]) fail(by + ": node " + std::to_string(node) + " is reached a second time (glTF nodes form trees)");
+      if (seen[ni])
+        fail(by + ": node " + std::to_string(node) + " is reached a second time (glTF nodes form trees)");
       seen[ni] = 1;
       const tg::Node& n = model_.nodes[ni];
       const Mat4 world = multiply(parent, local_matrix(n, node));
@@ -196,7 +201,8 @@ class Reader {
       for (int c = 0; c < 3; ++c)
         for (int row = 0; row < 3; ++row) m[static_cast<std::size_t>(c * 4 + row)] = r[c * 3 + row] * s[c];
       if (!n.translation.empty())
-        for (int row = 0; row < 3; ++row) m[static_cast<std::size_t>(12 + row)] = n.translation[static_cast<std::size_t>(row)];
+        for (int row = 0; row < 3; ++row)
+          m[static_cast<std::size_t>(12 + row)] = n.translation[static_cast<std::size_t>(row)];
     }
     for (const double v : m)
       if (!std::isfinite(v)) fail(where + "transform is not finite");
@@ -205,7 +211,8 @@ class Reader {
 
   void add_mesh(int mesh, const Mat4& world, const std::string& from) {
     if (mesh < 0 || mesh >= static_cast<int>(model_.meshes.size()))
-      fail(from + ": mesh " + std::to_string(mesh) + " does not exist (the file has " + str(model_.meshes.size()) + ")");
+      fail(from + ": mesh " + std::to_string(mesh) + " does not exist (the file has " +
+           str(model_.meshes.size()) + ")");
     const tg::Mesh& m = model_.meshes[static_cast<std::size_t>(mesh)];
     for (std::size_t p = 0; p < m.primitives.size(); ++p)
       add_primitive(m.primitives[p], world, "mesh " + std::to_string(mesh) + " primitive " + str(p));
@@ -222,7 +229,8 @@ class Reader {
     const int n = tg::GetNumComponentsInType(static_cast<std::uint32_t>(a.type));
     const int size = tg::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.componentType));
     if (n < 1 || n > 4) fail(at + "type " + std::to_string(a.type) + " is not SCALAR or VEC2..4");
-    if (size < 1 || size > 4) fail(at + "componentType " + std::to_string(a.componentType) + " is not a glTF component type");
+    if (size < 1 || size > 4)
+      fail(at + "componentType " + std::to_string(a.componentType) + " is not a glTF component type");
     *components = n;
     const std::size_t elem = static_cast<std::size_t>(n) * static_cast<std::size_t>(size);
     if (a.bufferView < 0 && !a.sparse.isSparse) fail(at + "has neither a bufferView nor sparse values");
@@ -254,12 +262,15 @@ class Reader {
         fail(at + "sparse indices must be unsigned integers");
       const auto count = static_cast<std::size_t>(sp.count);
       std::size_t unused = 0;
-      const unsigned char* ip = view_bytes(sp.indices.bufferView, static_cast<std::size_t>(sp.indices.byteOffset),
-                                           count, static_cast<std::size_t>(isize), false, at + "sparse indices: ", &unused);
-      const unsigned char* vp = view_bytes(sp.values.bufferView, static_cast<std::size_t>(sp.values.byteOffset),
-                                           count, elem, false, at + "sparse values: ", &unused);
+      const unsigned char* ip =
+          view_bytes(sp.indices.bufferView, static_cast<std::size_t>(sp.indices.byteOffset), count,
+                     static_cast<std::size_t>(isize), false, at + "sparse indices: ", &unused);
+      const unsigned char* vp =
+          view_bytes(sp.values.bufferView, static_cast<std::size_t>(sp.values.byteOffset), count, elem, false,
+                     at + "sparse values: ", &unused);
       for (std::size_t k = 0; k < count; ++k) {
-        const double target = component(ip + k * static_cast<std::size_t>(isize), sp.indices.componentType, false);
+        const double target =
+            component(ip + k * static_cast<std::size_t>(isize), sp.indices.componentType, false);
         if (target >= static_cast<double>(a.count))
           fail(at + "sparse index " + str(static_cast<std::uint64_t>(target)) + " (entry " + str(k) +
                ") is out of range (count " + str(a.count) + ")");
@@ -277,15 +288,16 @@ class Reader {
 
   // Checks that `count` elements of `elem` bytes at `offset` in buffer view `view` lie inside the
   // view and its buffer, and returns the first one. `strided` allows the view's byteStride.
-  const unsigned char* view_bytes(int view, std::size_t offset, std::size_t count, std::size_t elem, bool strided,
-                                  const std::string& at, std::size_t* stride) const {
+  const unsigned char* view_bytes(int view, std::size_t offset, std::size_t count, std::size_t elem,
+                                  bool strided, const std::string& at, std::size_t* stride) const {
     if (view < 0 || view >= static_cast<int>(model_.bufferViews.size()))
       fail(at + "bufferView " + std::to_string(view) + " does not exist (the file has " +
            str(model_.bufferViews.size()) + ")");
     const tg::BufferView& v = model_.bufferViews[static_cast<std::size_t>(view)];
     const std::string vat = at + "bufferView " + std::to_string(view) + ": ";
     if (v.buffer < 0 || v.buffer >= static_cast<int>(model_.buffers.size()))
-      fail(vat + "buffer " + std::to_string(v.buffer) + " does not exist (the file has " + str(model_.buffers.size()) + ")");
+      fail(vat + "buffer " + std::to_string(v.buffer) + " does not exist (the file has " +
+           str(model_.buffers.size()) + ")");
     const std::size_t buffer_size = model_.buffers[static_cast<std::size_t>(v.buffer)].data.size();
     if (v.byteOffset > buffer_size || v.byteLength > buffer_size - v.byteOffset)
       fail(vat + "bytes [" + str(v.byteOffset) + ", " + str(v.byteOffset) + " + " + str(v.byteLength) +
@@ -293,14 +305,16 @@ class Reader {
     *stride = elem;
     if (strided && v.byteStride != 0) {
       if (v.byteStride < elem)
-        fail(vat + "byteStride " + str(v.byteStride) + " is smaller than an element (" + str(elem) + " bytes)");
+        fail(vat + "byteStride " + str(v.byteStride) + " is smaller than an element (" + str(elem) +
+             " bytes)");
       *stride = v.byteStride;
     }
     if (count == 0) return nullptr;
     if (offset > v.byteLength || elem > v.byteLength - offset ||
         (count - 1) > (v.byteLength - offset - elem) / *stride)
       fail(at + str(count) + " elements of " + str(elem) + " bytes (stride " + str(*stride) + ") from byte " +
-           str(offset) + " do not fit in bufferView " + std::to_string(view) + " (" + str(v.byteLength) + " bytes)");
+           str(offset) + " do not fit in bufferView " + std::to_string(view) + " (" + str(v.byteLength) +
+           " bytes)");
     return model_.buffers[static_cast<std::size_t>(v.buffer)].data.data() + v.byteOffset + offset;
   }
 
@@ -338,14 +352,15 @@ class Reader {
   }
 
   // An attribute's accessor, checked against what glTF allows for it.
-  std::vector<double> attribute(const tg::Primitive& prim, const char* semantic, int components, bool integers,
-                                const std::string& where) const {
+  std::vector<double> attribute(const tg::Primitive& prim, const char* semantic, int components,
+                                bool integers, const std::string& where) const {
     const int index = prim.attributes.at(semantic);
     int n = 0;
     std::vector<double> values = decode(index, where + " " + semantic, &n);
     const tg::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
     const std::string at = where + " " + semantic + ": accessor " + std::to_string(index) + ": ";
-    if (n != components) fail(at + "has " + std::to_string(n) + " components, expected " + std::to_string(components));
+    if (n != components)
+      fail(at + "has " + std::to_string(n) + " components, expected " + std::to_string(components));
     const bool is_float = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
     const bool is_unorm = a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
                                            a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
@@ -359,12 +374,15 @@ class Reader {
     const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
     if (mode >= TINYGLTF_MODE_POINTS && mode <= TINYGLTF_MODE_LINE_STRIP) {
       static constexpr const char* kNames[] = {"points", "lines", "line loop", "line strip"};
-      warnings_.push_back({name_, 0, -1, where + ": mode " + std::to_string(mode) + " (" + kNames[mode] +
-                                             ") is not a surface and is not read"});
+      warnings_.push_back({name_, 0, -1,
+                           where + ": mode " + std::to_string(mode) + " (" + kNames[mode] +
+                               ") is not a surface and is not read"});
       return;
     }
-    if (mode > TINYGLTF_MODE_TRIANGLE_FAN) fail(where + ": mode " + std::to_string(mode) + " is not a glTF mode");
-    if (prim.attributes.find("POSITION") == prim.attributes.end()) fail(where + ": has no POSITION attribute");
+    if (mode > TINYGLTF_MODE_TRIANGLE_FAN)
+      fail(where + ": mode " + std::to_string(mode) + " is not a glTF mode");
+    if (prim.attributes.find("POSITION") == prim.attributes.end())
+      fail(where + ": has no POSITION attribute");
 
     Primitive out;
     const std::vector<double> pos = attribute(prim, "POSITION", 3, false, where);
@@ -378,18 +396,20 @@ class Reader {
            str(file_size_) + " bytes justifies");
     out.positions.resize(vertices);
     for (std::size_t i = 0; i < vertices; ++i)
-      out.positions[i] = {static_cast<float>(pos[3 * i]), static_cast<float>(pos[3 * i + 1]), static_cast<float>(pos[3 * i + 2])};
+      out.positions[i] = {static_cast<float>(pos[3 * i]), static_cast<float>(pos[3 * i + 1]),
+                          static_cast<float>(pos[3 * i + 2])};
     auto same_count = [&](const char* semantic, std::size_t count) {
       if (count != vertices)
-        fail(where + " " + semantic + ": accessor " + std::to_string(prim.attributes.at(semantic)) + ": count " +
-             str(count) + " differs from POSITION's " + str(vertices));
+        fail(where + " " + semantic + ": accessor " + std::to_string(prim.attributes.at(semantic)) +
+             ": count " + str(count) + " differs from POSITION's " + str(vertices));
     };
     if (prim.attributes.count("NORMAL")) {
       const std::vector<double> nor = attribute(prim, "NORMAL", 3, false, where);
       same_count("NORMAL", nor.size() / 3);
       out.normals.resize(vertices);
       for (std::size_t i = 0; i < vertices; ++i)
-        out.normals[i] = {static_cast<float>(nor[3 * i]), static_cast<float>(nor[3 * i + 1]), static_cast<float>(nor[3 * i + 2])};
+        out.normals[i] = {static_cast<float>(nor[3 * i]), static_cast<float>(nor[3 * i + 1]),
+                          static_cast<float>(nor[3 * i + 2])};
     }
     if (prim.attributes.count("TEXCOORD_0")) {
       const std::vector<double> uv = attribute(prim, "TEXCOORD_0", 2, true, where);
@@ -462,22 +482,25 @@ class Reader {
     }
     // Normals go through the cofactor matrix (the inverse transpose times the determinant).
     const double a = m[0], b = m[4], c = m[8], d = m[1], e = m[5], f = m[9], g = m[2], h = m[6], i = m[10];
-    const double cof[9] = {e * i - f * h, -(d * i - f * g), d * h - e * g,   // row 0
-                           -(b * i - c * h), a * i - c * g, -(a * h - b * g),  // row 1
-                           b * f - c * e, -(a * f - c * d), a * e - b * d};   // row 2
+    const double cof[9] = {e * i - f * h,    -(d * i - f * g), d * h - e * g,     // row 0
+                           -(b * i - c * h), a * i - c * g,    -(a * h - b * g),  // row 1
+                           b * f - c * e,    -(a * f - c * d), a * e - b * d};    // row 2
     const double det = a * cof[0] + b * cof[1] + c * cof[2];
     const double sign = det < 0 ? -1.0 : 1.0;
     for (Vec3& n : p.normals) {
       const double x = n.x, y = n.y, z = n.z;
       double r[3];
-      for (int row = 0; row < 3; ++row) r[row] = sign * (cof[row * 3] * x + cof[row * 3 + 1] * y + cof[row * 3 + 2] * z);
+      for (int row = 0; row < 3; ++row)
+        r[row] = sign * (cof[row * 3] * x + cof[row * 3 + 1] * y + cof[row * 3 + 2] * z);
       const double len = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
-      n = len > 0 ? Vec3{static_cast<float>(r[0] / len), static_cast<float>(r[1] / len), static_cast<float>(r[2] / len)}
+      n = len > 0 ? Vec3{static_cast<float>(r[0] / len), static_cast<float>(r[1] / len),
+                         static_cast<float>(r[2] / len)}
                   : Vec3{0, 0, 0};
     }
     // A mirroring transform turns counter-clockwise triangles clockwise: reverse them back.
     if (det < 0)
-      for (std::size_t t = 0; t + 2 < p.triangles.size(); t += 3) std::swap(p.triangles[t + 1], p.triangles[t + 2]);
+      for (std::size_t t = 0; t + 2 < p.triangles.size(); t += 3)
+        std::swap(p.triangles[t + 1], p.triangles[t + 2]);
   }
 
   IndexedMesh assemble() {
@@ -562,7 +585,8 @@ std::string write_model(const IndexedMesh& mesh, bool binary) {
   std::vector<std::uint32_t> out_indices;
   out_indices.reserve(corners.size());
   for (const std::size_t c : corners) {
-    const CornerKey key{mesh.indices[c], has_t ? mesh.texcoord_indices[c] : 0, has_n ? mesh.normal_indices[c] : 0};
+    const CornerKey key{mesh.indices[c], has_t ? mesh.texcoord_indices[c] : 0,
+                        has_n ? mesh.normal_indices[c] : 0};
     if (!keyed[key.v]) {
       keyed[key.v] = 1;
       keys[key.v] = key;
@@ -628,8 +652,8 @@ std::string write_model(const IndexedMesh& mesh, bool binary) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
   }
-  prim.attributes["POSITION"] =
-      add_accessor(add_view(begin, TINYGLTF_TARGET_ARRAY_BUFFER), TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, count);
+  prim.attributes["POSITION"] = add_accessor(add_view(begin, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                             TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, count);
   model.accessors.back().minValues = {lo.x, lo.y, lo.z};
   model.accessors.back().maxValues = {hi.x, hi.y, hi.z};
 
@@ -641,8 +665,8 @@ std::string write_model(const IndexedMesh& mesh, bool binary) {
       append_pod(bytes, n.y);
       append_pod(bytes, n.z);
     }
-    prim.attributes["NORMAL"] =
-        add_accessor(add_view(begin, TINYGLTF_TARGET_ARRAY_BUFFER), TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, count);
+    prim.attributes["NORMAL"] = add_accessor(add_view(begin, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                             TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, count);
   }
   if (has_t) {
     begin = bytes.size();
@@ -651,8 +675,8 @@ std::string write_model(const IndexedMesh& mesh, bool binary) {
       append_pod(bytes, t.x);
       append_pod(bytes, 1.0f - t.y);  // top-left texture origin
     }
-    prim.attributes["TEXCOORD_0"] =
-        add_accessor(add_view(begin, TINYGLTF_TARGET_ARRAY_BUFFER), TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, count);
+    prim.attributes["TEXCOORD_0"] = add_accessor(add_view(begin, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                                 TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, count);
   }
 
   // 16-bit indices when they fit; the largest value of a type is reserved (primitive restart).
@@ -663,9 +687,10 @@ std::string write_model(const IndexedMesh& mesh, bool binary) {
       append_pod(bytes, static_cast<std::uint16_t>(i));
     else
       append_pod(bytes, i);
-  prim.indices = add_accessor(add_view(begin, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
-                              shorts ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
-                              TINYGLTF_TYPE_SCALAR, out_indices.size());
+  prim.indices =
+      add_accessor(add_view(begin, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
+                   shorts ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+                   TINYGLTF_TYPE_SCALAR, out_indices.size());
   if (bytes.size() > std::numeric_limits<std::uint32_t>::max() - 1024u)
     throw InvalidInputError("mesh too large for one glTF buffer");
 
@@ -700,11 +725,12 @@ IndexedMesh read_gltf(std::string_view data, const std::string& name) {
   const bool glb = data.size() >= 4 && data.substr(0, 4) == "glTF";
   try {
     if (glb)
-      ok = loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(data.data()),
+      ok = loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                       reinterpret_cast<const unsigned char*>(data.data()),
                                        static_cast<unsigned int>(data.size()), folder_of(name));
     else
-      ok = loader.LoadASCIIFromString(&model, &err, &warn, data.data(), static_cast<unsigned int>(data.size()),
-                                      folder_of(name));
+      ok = loader.LoadASCIIFromString(&model, &err, &warn, data.data(),
+                                      static_cast<unsigned int>(data.size()), folder_of(name));
   } catch (const std::bad_alloc&) {
     throw;
   } catch (const std::exception& e) {
@@ -712,8 +738,9 @@ IndexedMesh read_gltf(std::string_view data, const std::string& name) {
   }
   if (!ok) {
     const std::string why = one_line(err.empty() ? warn : err);
-    throw IoError(name, 0, -1, std::string(glb ? "malformed glTF binary: " : "malformed glTF: ") +
-                                   (why.empty() ? "rejected by the parser" : why));
+    throw IoError(name, 0, -1,
+                  std::string(glb ? "malformed glTF binary: " : "malformed glTF: ") +
+                      (why.empty() ? "rejected by the parser" : why));
   }
   return Reader(model, name, data.size()).read();
 }

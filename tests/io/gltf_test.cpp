@@ -141,7 +141,8 @@ TEST(GltfRead, TheCommittedGlbHoldsTheSameQuads) {
   const IndexedMesh binary = read_indexed_file(data_path("two_quads.glb"));
   EXPECT_TRUE(binary.warnings.empty());
   ASSERT_EQ(binary.positions.size(), text.positions.size());
-  EXPECT_EQ(std::memcmp(binary.positions.data(), text.positions.data(), text.positions.size() * sizeof(Vec3)), 0);
+  EXPECT_EQ(std::memcmp(binary.positions.data(), text.positions.data(), text.positions.size() * sizeof(Vec3)),
+            0);
   EXPECT_EQ(binary.indices, text.indices);
   EXPECT_EQ(binary.texcoords.size(), text.texcoords.size());
   EXPECT_EQ(binary.normals.size(), text.normals.size());
@@ -177,7 +178,8 @@ TEST(GltfRead, WithoutScenesEveryMeshIsReadOnceAsStored) {
   EXPECT_TRUE(same_bits(m.positions[1], Vec3{1, 0, 0}));
   // Two nodes may place one mesh twice.
   Triangle twice;
-  twice.doc["nodes"] = json::parse(R"([{"mesh": 0, "children": [1]}, {"mesh": 0, "translation": [0, 0, 1]}])");
+  twice.doc["nodes"] =
+      json::parse(R"([{"mesh": 0, "children": [1]}, {"mesh": 0, "translation": [0, 0, 1]}])");
   const IndexedMesh two = read_gltf(twice.text(), "m.gltf");
   EXPECT_EQ(two.face_count(), 2u);
   EXPECT_TRUE(same_bits(two.positions[4], Vec3{1, 0, 1}));
@@ -236,7 +238,8 @@ TEST(GltfRead, MalformedFilesSayWhatAndWhere) {
   {
     Triangle t;  // more elements than the view holds
     t.doc["accessors"][0]["count"] = 4;
-    expect_error(t.text(), "accessor 0: 4 elements of 12 bytes (stride 12) from byte 0 do not fit in bufferView 0");
+    expect_error(t.text(),
+                 "accessor 0: 4 elements of 12 bytes (stride 12) from byte 0 do not fit in bufferView 0");
   }
   {
     Triangle t;
@@ -246,7 +249,9 @@ TEST(GltfRead, MalformedFilesSayWhatAndWhere) {
   {
     Triangle t;
     t.buffer[38] = 9;  // the second index
-    expect_error(t.text(), "mesh 0 primitive 0 indices: accessor 1: index 9 (element 1) is out of range (POSITION has 3 vertices)");
+    expect_error(t.text(),
+                 "mesh 0 primitive 0 indices: accessor 1: index 9 (element 1) is out of range (POSITION has "
+                 "3 vertices)");
   }
   {
     Triangle t;
@@ -289,8 +294,11 @@ TEST(GltfRead, MalformedFilesSayWhatAndWhere) {
   {
     Triangle t;  // integer texture coordinates must be normalized
     t.doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 2;
-    t.doc["accessors"].push_back({{"bufferView", 1}, {"componentType", 5121}, {"count", 3}, {"type", "VEC2"}});
-    expect_error(t.text(), "TEXCOORD_0: accessor 2: componentType 5121 is not FLOAT or a normalized unsigned byte or short");
+    t.doc["accessors"].push_back(
+        {{"bufferView", 1}, {"componentType", 5121}, {"count", 3}, {"type", "VEC2"}});
+    expect_error(
+        t.text(),
+        "TEXCOORD_0: accessor 2: componentType 5121 is not FLOAT or a normalized unsigned byte or short");
   }
   {
     Triangle t;
@@ -339,7 +347,8 @@ TEST(GltfWrite, BothFormsRoundTripSpotsCornersAndKeepVertexOrder) {
     expect_same_corners(spot, back);
     // Mesh vertex v is glTF vertex v; the copies split off at seams come after.
     ASSERT_GT(back.positions.size(), spot.positions.size());
-    EXPECT_EQ(std::memcmp(back.positions.data(), spot.positions.data(), spot.positions.size() * sizeof(Vec3)), 0);
+    EXPECT_EQ(std::memcmp(back.positions.data(), spot.positions.data(), spot.positions.size() * sizeof(Vec3)),
+              0);
     EXPECT_TRUE(back.warnings.empty());
   }
 }
@@ -374,7 +383,8 @@ TEST(GltfWrite, HardEdgesSplitVerticesAndComeBackAsCornerNormals) {
   cube.indices = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
                   2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
   cube.normals = {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {0, 1, 0}, {-1, 0, 0}, {1, 0, 0}};
-  for (std::uint32_t t = 0; t < 12; ++t) cube.normal_indices.insert(cube.normal_indices.end(), {t / 2, t / 2, t / 2});
+  for (std::uint32_t t = 0; t < 12; ++t)
+    cube.normal_indices.insert(cube.normal_indices.end(), {t / 2, t / 2, t / 2});
   const IndexedMesh back = read_gltf(write_glb(cube), "cube.glb");
   EXPECT_EQ(back.positions.size(), 24u);  // 8 vertices x 3 sides
   expect_same_corners(cube, back);
@@ -407,7 +417,8 @@ TEST(GltfWrite, TheDocumentHasWhatTheSpecificationRequires) {
   const json& idx = doc["accessors"][prim["indices"].get<int>()];
   EXPECT_EQ(idx["componentType"], 5123);  // u16
   EXPECT_EQ(idx["count"], 6);             // the quad fanned into two triangles
-  EXPECT_EQ(doc["buffers"][0]["uri"].get<std::string>().rfind("data:application/octet-stream;base64,", 0), 0u);
+  EXPECT_EQ(doc["buffers"][0]["uri"].get<std::string>().rfind("data:application/octet-stream;base64,", 0),
+            0u);
   const IndexedMesh back = read_gltf(write_gltf(quad), "q");
   EXPECT_EQ(back.indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}));
 
@@ -425,7 +436,8 @@ TEST(GltfWrite, TheDocumentHasWhatTheSpecificationRequires) {
 TEST(GltfWrite, LargeMeshesGetThirtyTwoBitIndices) {
   IndexedMesh strip;
   const std::uint32_t n = 70000;
-  for (std::uint32_t i = 0; i < n; ++i) strip.positions.push_back({static_cast<float>(i / 2), static_cast<float>(i % 2), 0});
+  for (std::uint32_t i = 0; i < n; ++i)
+    strip.positions.push_back({static_cast<float>(i / 2), static_cast<float>(i % 2), 0});
   for (std::uint32_t i = 0; i + 2 < n; ++i) {
     if (i % 2 == 0)
       strip.indices.insert(strip.indices.end(), {i, i + 1, i + 2});

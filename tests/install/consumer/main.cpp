@@ -22,7 +22,8 @@ int main() {
     std::fprintf(stderr, "unexpected counts or an invalid mesh\n");
     return 1;
   }
-  const hedge::IndexedMesh back = hedge::read_gltf(hedge::write_glb(hedge::to_indexed(mesh)), "tetrahedron.glb");
+  const hedge::IndexedMesh back =
+      hedge::read_gltf(hedge::write_glb(hedge::to_indexed(mesh)), "tetrahedron.glb");
   if (back.positions != positions || back.indices.size() != triangles.size()) {
     std::fprintf(stderr, "the glTF round trip changed the tetrahedron\n");
     return 1;
