@@ -1,7 +1,8 @@
 # Build dependencies of hedge, in one place. Source this file, then call
 #   hedge_install_deps GROUP...
 # Groups:
-#   core   compiler, CMake, Ninja and Eigen (header-only): enough to build the library
+#   core   compiler, CMake, Ninja, Eigen and tinygltf with nlohmann-json (used from their headers):
+#          enough to build the library
 #   cli    what the hedge command-line tool needs
 #   test   the unit tests
 #   bench  the benchmarks
@@ -18,7 +19,7 @@ hedge_deps_packages() {
   local group
   for group in "$@"; do
     case "$group" in
-      core) echo cmake g++ ninja-build libeigen3-dev ;;
+      core) echo cmake g++ ninja-build libeigen3-dev libtinygltf-dev nlohmann-json3-dev ;;
       cli) echo libcli11-dev nlohmann-json3-dev libstb-dev fonts-dejavu-core pkg-config ;;
       test) echo libgtest-dev nlohmann-json3-dev ;;
       bench) echo libbenchmark-dev ;;

@@ -657,18 +657,19 @@ HEDGE_API hedge_status hedge_mesh_reorder(hedge_mesh* mesh, int32_t ordering, ui
 HEDGE_API hedge_status hedge_mesh_cache_miss_ratio(const hedge_mesh* mesh, uint32_t cache_size, double* out_ratio);
 
 /* ============================================================================================ */
-/* Files (hedge/io/io.h): OBJ, OFF, PLY, STL, chosen by the extension                           */
+/* Files (hedge/io/io.h): OBJ, OFF, PLY, STL, glTF (.gltf, .glb), chosen by the extension       */
 /* ============================================================================================ */
 
 /** Reads and builds a mesh.
- *  \param options NULL for the format's defaults (repair policy; exact welding for STL).
+ *  \param options NULL for the format's defaults (repair policy; exact welding for STL and glTF).
  *  \param out_report optional (NULL).
  *  \return HEDGE_ERROR_IO for an unreadable or malformed file or an unknown extension; the message
  *          is "path:line: what was expected" (text) or "path (byte N): ..." (binary). */
 HEDGE_API hedge_status hedge_mesh_read(const char* path, const hedge_build_options* options,
                                        hedge_build_report* out_report, hedge_mesh** out_mesh);
 /** Writes the live faces to a file atomically (a failed write leaves the target as it was).
- *  \param binary PLY and STL: 1 binary (little endian), 0 ASCII; ignored for OBJ and OFF.
+ *  \param binary PLY and STL: 1 binary (little endian), 0 ASCII; ignored for OBJ, OFF and glTF
+ *         (.glb is binary, .gltf JSON).
  *  \param precision significant digits of ASCII coordinates; 0 for the default (9, exact round
  *         trip of every float). */
 HEDGE_API hedge_status hedge_mesh_write(const hedge_mesh* mesh, const char* path, int32_t binary,

@@ -59,8 +59,10 @@ FileFormat format_from_path(const std::string& path) {
     if (ext == "off") return FileFormat::off;
     if (ext == "ply") return FileFormat::ply;
     if (ext == "stl") return FileFormat::stl;
+    if (ext == "gltf") return FileFormat::gltf;
+    if (ext == "glb") return FileFormat::glb;
   }
-  throw IoError(path, 0, -1, "unknown file extension (expected .obj, .off, .ply or .stl)");
+  throw IoError(path, 0, -1, "unknown file extension (expected .obj, .off, .ply, .stl, .gltf or .glb)");
 }
 
 IndexedMesh read_indexed(std::string_view data, FileFormat format, const std::string& name) {
@@ -73,6 +75,9 @@ IndexedMesh read_indexed(std::string_view data, FileFormat format, const std::st
       return read_ply(data, name);
     case FileFormat::stl:
       return read_stl(data, name);
+    case FileFormat::gltf:
+    case FileFormat::glb:
+      return read_gltf(data, name);
   }
   throw IoError(name, 0, -1, "unknown format");
 }
@@ -87,6 +92,10 @@ std::string write_indexed(const IndexedMesh& mesh, FileFormat format, const Writ
       return write_ply(mesh, options);
     case FileFormat::stl:
       return write_stl(mesh, options);
+    case FileFormat::gltf:
+      return write_gltf(mesh, options);
+    case FileFormat::glb:
+      return write_glb(mesh, options);
   }
   throw InvalidInputError("unknown format");
 }
@@ -182,7 +191,8 @@ void write_indexed_file(const IndexedMesh& mesh, const std::string& path, const 
 BuildOptions default_build_options(FileFormat format) {
   BuildOptions options;
   options.policy = TopologyPolicy::repair;
-  options.weld = format == FileFormat::stl ? Weld::exact : Weld::none;
+  const bool welds = format == FileFormat::stl || format == FileFormat::gltf || format == FileFormat::glb;
+  options.weld = welds ? Weld::exact : Weld::none;
   return options;
 }
 
@@ -204,6 +214,8 @@ void write_mesh(const SurfaceMesh& mesh, const std::string& path, const WriteOpt
   ExportOptions export_options;
   // STL stores triangles only.
   if (format == FileFormat::stl) export_options.triangulation = Triangulation::fan;
+  // glTF stores triangles only; ear clipping keeps concave polygons inside their outline.
+  if (format == FileFormat::gltf || format == FileFormat::glb) export_options.triangulation = Triangulation::ear;
   write_file_atomic(path, write_indexed(to_indexed(mesh, export_options), format, options));
 }
 

@@ -55,7 +55,9 @@ TEST(FormatFromPath, ExtensionsAreCaseInsensitive) {
   EXPECT_EQ(format_from_path("MESH.OFF"), FileFormat::off);
   EXPECT_EQ(format_from_path("x.y.Ply"), FileFormat::ply);
   EXPECT_EQ(format_from_path("/abs/part.StL"), FileFormat::stl);
-  EXPECT_THROW(format_from_path("mesh.gltf"), IoError);
+  EXPECT_EQ(format_from_path("mesh.GLTF"), FileFormat::gltf);
+  EXPECT_EQ(format_from_path("mesh.Glb"), FileFormat::glb);
+  EXPECT_THROW(format_from_path("mesh.fbx"), IoError);
   EXPECT_THROW(format_from_path("dir.obj/mesh"), IoError);
   EXPECT_THROW(format_from_path("obj"), IoError);
   try {
@@ -66,11 +68,13 @@ TEST(FormatFromPath, ExtensionsAreCaseInsensitive) {
   }
 }
 
-TEST(DefaultBuildOptions, RepairEverywhereAndWeldOnlyStl) {
-  for (FileFormat f : {FileFormat::obj, FileFormat::off, FileFormat::ply, FileFormat::stl}) {
+TEST(DefaultBuildOptions, RepairEverywhereAndWeldOnlyStlAndGltf) {
+  for (FileFormat f :
+       {FileFormat::obj, FileFormat::off, FileFormat::ply, FileFormat::stl, FileFormat::gltf, FileFormat::glb}) {
     const BuildOptions o = default_build_options(f);
     EXPECT_EQ(o.policy, TopologyPolicy::repair);
-    EXPECT_EQ(o.weld, f == FileFormat::stl ? Weld::exact : Weld::none);
+    const bool welds = f == FileFormat::stl || f == FileFormat::gltf || f == FileFormat::glb;
+    EXPECT_EQ(o.weld, welds ? Weld::exact : Weld::none);
   }
 }
 
@@ -79,8 +83,10 @@ TEST(ReadIndexed, DispatchesOnTheFormat) {
   EXPECT_EQ(read_indexed(off, FileFormat::off).indices, (std::vector<std::uint32_t>{0, 1, 2}));
   EXPECT_THROW(read_indexed(off, FileFormat::obj), IoError);
   EXPECT_THROW(read_indexed(off, FileFormat::ply), IoError);
+  EXPECT_THROW(read_indexed(off, FileFormat::gltf), IoError);
   IndexedMesh m = read_indexed(off, FileFormat::off);
-  for (FileFormat f : {FileFormat::obj, FileFormat::off, FileFormat::ply, FileFormat::stl})
+  for (FileFormat f :
+       {FileFormat::obj, FileFormat::off, FileFormat::ply, FileFormat::stl, FileFormat::gltf, FileFormat::glb})
     EXPECT_EQ(read_indexed(write_indexed(m, f), f).positions, m.positions);
 }
 

@@ -235,6 +235,41 @@ TEST_F(HedgeCli, ConvertReordersForTheVertexCacheAndInfoMeasuresIt) {
   EXPECT_FALSE(fs::exists(tmp("x.obj")));
 }
 
+TEST_F(HedgeCli, ConvertToGlbAndInfoOnItKeepTheMeshAndItsSeams) {
+  const fs::path glb = tmp("out/spot.glb");
+  const Result r = run({"convert", data("spot_triangulated.obj"), glb.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("(glb)"), std::string::npos) << r.out;
+  EXPECT_EQ(read_text(glb).rfind("glTF", 0), 0u);
+
+  const json before = run_json({"info", data("spot_triangulated.obj"), "--json"});
+  const json after = run_json({"info", glb.string(), "--json"});
+  for (const char* key : {"vertices", "edges", "faces", "boundary_loops", "genus", "valid", "is_manifold"})
+    EXPECT_EQ(after[key], before[key]) << key;
+  // The file splits vertices at UV seams as engines do; loading welds exactly those copies back.
+  const json buffers = run_json({"render-buffers", data("spot_triangulated.obj"), "--edits", "0", "--json"});
+  const std::size_t seams = buffers["seam_splits"].get<std::size_t>();
+  EXPECT_GT(seams, 0u);
+  EXPECT_EQ(after["repairs"]["welded_vertices"].get<std::size_t>(), seams);
+  EXPECT_EQ(run_json({"render-buffers", glb.string(), "--edits", "0", "--json"})["seam_splits"].get<std::size_t>(), seams);
+
+  // .glb -> .gltf -> .obj: the same mesh all the way.
+  const fs::path gltf = tmp("spot.gltf"), obj = tmp("spot.obj");
+  ASSERT_EQ(run({"convert", glb.string(), gltf.string()}).code, 0);
+  ASSERT_EQ(run({"convert", gltf.string(), obj.string()}).code, 0);
+  EXPECT_EQ(read_text(gltf).rfind("{", 0), 0u);
+  const json last = run_json({"info", obj.string(), "--json"});
+  for (const char* key : {"vertices", "faces", "genus"}) EXPECT_EQ(last[key], before[key]) << key;
+  EXPECT_NEAR(last["area"].get<double>(), before["area"].get<double>(), 1e-9 * before["area"].get<double>());
+
+  // A malformed file: one error line that names the file and the accessor.
+  const fs::path bad = tmp("bad.gltf");
+  write_text(bad, R"({"asset": {"version": "2.0"}, "meshes": [{"primitives": [{"attributes": {"POSITION": 4}}]}]})");
+  expect_data_error({"info", bad.string()}, "bad.gltf");
+  const Result e = run({"info", bad.string()});
+  EXPECT_NE(e.err.find("accessor 4 does not exist"), std::string::npos) << e.err;
+}
+
 TEST_F(HedgeCli, ConvertAsciiPly) {
   const fs::path out = tmp("tet.ply");
   ASSERT_EQ(run({"convert", data("tet.obj"), out.string(), "--ascii"}).code, 0);

@@ -92,7 +92,7 @@ Command add_info_command(CLI::App& parent) {
   auto options = std::make_shared<InfoOptions>();
   CLI::App* app = parent.add_subcommand(
       "info", "Load a mesh (repairing it unless --strict) and report counts, topology and repairs");
-  app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl)")->required();
+  app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
   app->add_flag("--json", options->json, "Print one JSON object instead of text");
   add_load_options(*app, options->load);
   return {app, [options] { return run_info(*options); }};

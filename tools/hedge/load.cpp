@@ -78,6 +78,10 @@ const char* format_name(FileFormat format) {
       return "ply";
     case FileFormat::stl:
       return "stl";
+    case FileFormat::gltf:
+      return "gltf";
+    case FileFormat::glb:
+      return "glb";
   }
   return "unknown";
 }

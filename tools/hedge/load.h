@@ -38,7 +38,7 @@ LoadedMesh load_mesh(const std::string& path, const LoadOptions& options);
 //! creating missing folders; the file is replaced atomically.
 void save_mesh(const SurfaceMesh& mesh, const std::string& path, bool ascii);
 
-//! Lower-case name of a format ("obj", "off", "ply", "stl").
+//! Lower-case name of a format ("obj", "off", "ply", "stl", "gltf", "glb").
 const char* format_name(FileFormat format);
 
 }  // namespace hedge::cli

@@ -33,7 +33,7 @@ int report_error(const std::string& message, int exit_code) {
 
 int main(int argc, char** argv) {
   using namespace hedge::cli;
-  CLI::App app{"hedge: inspect, check, convert and edit polygon meshes (OBJ, OFF, PLY, STL)", "hedge"};
+  CLI::App app{"hedge: inspect, check, convert and edit polygon meshes (OBJ, OFF, PLY, STL, glTF)", "hedge"};
   app.set_version_flag("--version", HEDGE_VERSION);
   app.require_subcommand(1);
 

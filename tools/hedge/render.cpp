@@ -179,7 +179,7 @@ Command add_render_command(CLI::App& parent) {
       "render", "Draw a mesh to a PNG picture without a GPU: shaded, with highlighted boundary, feature and "
                 "repaired elements; several meshes side by side (--grid); or the half-edge diagram of a small "
                 "mesh (--halfedges, PNG or SVG)");
-  app->add_option("FILE", o->input, "Mesh file (.obj, .off, .ply, .stl)");
+  app->add_option("FILE", o->input, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)");
   app->add_option("-o,--output", o->output, "Picture to write: .png, or .svg with --halfedges")->required();
   app->add_option("--grid", o->grid, "Several mesh files, drawn side by side with captions")->expected(1, -1);
   app->add_option("--columns", o->columns, "Pictures per row with --grid (0: all in one row)")->check(CLI::NonNegativeNumber);

@@ -105,7 +105,7 @@ Command add_render_buffers_command(CLI::App& parent) {
   auto options = std::make_shared<RenderBuffersOptions>();
   CLI::App* app = parent.add_subcommand(
       "render-buffers", "Show the engine buffers of a mesh and how little a sync after an edit uploads");
-  app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl)")->required();
+  app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
   app->add_option("--edits", options->edits, "Random local edits in the sample")
       ->capture_default_str()
       ->check(CLI::Range(0, 10000000));

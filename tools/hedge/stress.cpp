@@ -82,7 +82,7 @@ int run_stress(const StressOptions& options) {
 Command add_stress_command(CLI::App& parent) {
   auto options = std::make_shared<StressOptions>();
   CLI::App* app = parent.add_subcommand("stress", "Apply a seeded random sequence of local operations and check validity");
-  app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl)")->required();
+  app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
   app->add_option("--ops", options->ops, "Number of operations")->capture_default_str()->check(CLI::Range(0, 100000000));
   app->add_option("--seed", options->seed, "Random seed")->capture_default_str();
   app->add_option("--validate-every", options->validate_every,

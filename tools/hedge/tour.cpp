@@ -285,7 +285,7 @@ Command add_tour_command(CLI::App& parent) {
               "Loop-subdivide and smooth, cut a hole "
               "and fill it, the half-edge diagram of one vertex's faces; writes a contact sheet PNG of every stage, the "
               "edited meshes, and prints counts and timings");
-  app->add_option("FILE", o->input, "Mesh file (.obj, .off, .ply, .stl)")->required();
+  app->add_option("FILE", o->input, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
   app->add_option("--out", o->out_dir, "Folder for the pictures and meshes (created if missing)")
       ->capture_default_str();
   app->add_option("--panel", o->panel, "Width of each picture of the contact sheet, in pixels")

@@ -59,7 +59,7 @@ Command add_validate_command(CLI::App& parent) {
   auto options = std::make_shared<ValidateOptions>();
   CLI::App* app = parent.add_subcommand(
       "validate", "Check every half-edge invariant; exit status 0 when valid, 1 when invalid");
-  app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl)")->required();
+  app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
   app->add_flag("--json", options->json, "Print one JSON object instead of text");
   add_load_options(*app, options->load);
   return {app, [options] { return run_validate(*options); }};

@@ -1,4 +1,5 @@
-// Reading and writing mesh files: OBJ, OFF, PLY and STL, through the indexed form.
+// Reading and writing mesh files: OBJ, OFF, PLY, STL and glTF 2.0 (.gltf, .glb), through the
+// indexed form.
 //
 // Readers throw IoError (path, line or byte offset, what was expected) on malformed input and
 // never trust a header's counts for allocation. Writers are atomic: they write a temporary file in
@@ -14,13 +15,16 @@
 
 namespace hedge {
 
-enum class FileFormat { obj, off, ply, stl };
+//! gltf and glb are both read by read_gltf(), which tells them apart by their first bytes; they
+//! differ in what is written: JSON with the buffer embedded, or the binary container.
+enum class FileFormat { obj, off, ply, stl, gltf, glb };
 
 //! The format for a path's extension (case-insensitive). \throw IoError for an unknown one.
 FileFormat format_from_path(const std::string& path);
 
 struct WriteOptions {
-  //! PLY and STL: binary (little endian) when true, ASCII when false. Ignored for OBJ and OFF.
+  //! PLY and STL: binary (little endian) when true, ASCII when false. Ignored for OBJ and OFF, and
+  //! for glTF, whose extension (FileFormat::gltf or glb) chooses.
   bool binary = true;
   //! Significant digits of ASCII coordinates. 9 or more writes the shortest text that reads back to
   //! the same float (so every float survives a round trip); fewer rounds to that many digits.
@@ -57,6 +61,30 @@ IndexedMesh read_ply(std::string_view data, const std::string& name = {});
 //! default_build_options). A file whose size is 84 + 50 n, n being the count at byte 80, is binary
 //! even when its header starts with "solid".
 IndexedMesh read_stl(std::string_view data, const std::string& name = {});
+//! glTF 2.0, JSON (.gltf) or binary (.glb, recognised by its "glTF" magic), with its buffers in
+//! the GLB chunk, in data URIs or in files beside it (relative to the folder of `name`).
+//!  - What is read: the default scene (else scene 0) walked from its root nodes, each node's mesh
+//!    placed by the node's world transform (matrix or translation/rotation/scale; a mirroring one
+//!    reverses the winding; an identity one leaves positions bit for bit). A file without scenes
+//!    gives every mesh once, untransformed. All primitives of all placed meshes are merged into one
+//!    mesh, in that order, vertices kept apart (default_build_options() welds equal positions, so
+//!    seams become corner attributes); which primitive a face came from is not kept.
+//!  - Attributes: POSITION (float VEC3, required), NORMAL (float VEC3) and TEXCOORD_0 (float or
+//!    normalized unsigned byte/short VEC2) as per-vertex attributes, kept only when every merged
+//!    primitive has them; v is flipped (v' = 1 - v) from glTF's top-left texture origin to hedge's
+//!    bottom-left one (OBJ's). COLOR_n, TEXCOORD_1.., tangents, skins, morph targets, materials and
+//!    images are not read (IndexedMesh has no colours; images are never decoded).
+//!  - Modes TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN (strip and fan triangles with a repeated
+//!    index dropped). A POINTS or LINES primitive is skipped with a ReadWarning naming it.
+//!  - Indices u8, u16 or u32, or none (vertices in order). Sparse accessors and byteStride are
+//!    handled. KHR_draco_mesh_compression and KHR_mesh_quantization data is refused.
+//! \throw IoError "name: where: what" for bad JSON or GLB framing, a missing POSITION, a reference
+//!        to a scene, node, mesh, accessor, bufferView or buffer that does not exist, an accessor
+//!        whose bytes are outside its bufferView or buffer, a component type glTF does not allow
+//!        for the attribute, an index out of range, a non-finite value, a node reached twice (glTF
+//!        nodes form trees), more placed vertices than 64 per byte of the file (instancing); e.g.
+//!        "m.gltf: mesh 0 primitive 0 indices: accessor 3: index 9 (element 4) is out of range".
+IndexedMesh read_gltf(std::string_view data, const std::string& name = {});
 IndexedMesh read_indexed(std::string_view data, FileFormat format, const std::string& name = {});
 
 // Per-format writers into a string (the atomic file writers wrap these). O(mesh size).
@@ -76,6 +104,16 @@ std::string write_ply(const IndexedMesh& mesh, const WriteOptions& options = {})
 //! STL: polygons fanned into triangles, facet normals computed (zero for a degenerate triangle).
 //! The binary header never starts with "solid".
 std::string write_stl(const IndexedMesh& mesh, const WriteOptions& options = {});
+//! glTF 2.0 JSON with the one buffer embedded as a base64 data URI (one self-contained file), or
+//! the binary .glb container. One mesh of one TRIANGLES primitive on one node of one scene:
+//! POSITION (float, with the min/max the specification requires), NORMAL and TEXCOORD_0 when the
+//! mesh has them (v flipped as read_gltf() says), u16 indices when the vertex count allows, else
+//! u32. Polygons are fanned from their first corner. A mesh vertex splits into one glTF vertex per
+//! distinct (texcoord, normal) of its corners (seams, hard edges); vertex v keeps number v with
+//! its first corner's attributes and the split copies follow, so positions read back in order. A
+//! vertex no face uses is written with zero attributes. A mesh without faces gives a file without scenes or meshes.
+std::string write_gltf(const IndexedMesh& mesh, const WriteOptions& options = {});
+std::string write_glb(const IndexedMesh& mesh, const WriteOptions& options = {});
 std::string write_indexed(const IndexedMesh& mesh, FileFormat format, const WriteOptions& options = {});
 
 //! Reads a whole file. \throw IoError if it cannot be opened or read.
@@ -92,7 +130,7 @@ IndexedMesh read_indexed_file(const std::string& path);
 void write_indexed_file(const IndexedMesh& mesh, const std::string& path, const WriteOptions& options = {});
 
 //! Build options for loading files: repair policy, and exact welding for STL (which stores no
-//! connectivity). Other formats keep the file's vertices.
+//! connectivity) and glTF (which splits vertices at seams). Other formats keep the file's vertices.
 BuildOptions default_build_options(FileFormat format);
 
 //! Reads and builds a SurfaceMesh. Uses default_build_options(format) unless options are given.
@@ -100,7 +138,7 @@ BuildOptions default_build_options(FileFormat format);
 //! under TopologyPolicy::strict, and goes to BuildReport::warnings otherwise.
 SurfaceMesh read_mesh(const std::string& path, BuildReport* report = nullptr);
 SurfaceMesh read_mesh(const std::string& path, const BuildOptions& options, BuildReport* report = nullptr);
-//! Exports (triangulating for STL) and writes atomically.
+//! Exports (triangulating for STL, and by ear clipping for glTF) and writes atomically.
 void write_mesh(const SurfaceMesh& mesh, const std::string& path, const WriteOptions& options = {});
 
 }  // namespace hedge

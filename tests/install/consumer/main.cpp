@@ -1,6 +1,9 @@
-// Uses an installed hedge: builds a tetrahedron and checks its counts and validity.
+// Uses an installed hedge: builds a tetrahedron and checks its counts and validity, then sends it
+// through the glTF writer and reader, which link without any glTF library of the consumer's.
 #include <hedge/core/build.h>
+#include <hedge/core/export.h>
 #include <hedge/core/surface_mesh.h>
+#include <hedge/io/io.h>
 
 #include <cstdint>
 #include <cstdio>
@@ -17,6 +20,12 @@ int main() {
                   mesh.n_halfedges() == 12 && mesh.boundary_loops().empty() && mesh.validate().empty();
   if (!ok) {
     std::fprintf(stderr, "unexpected counts or an invalid mesh\n");
+    return 1;
+  }
+  const hedge::IndexedMesh back =
+      hedge::read_gltf(hedge::write_glb(hedge::to_indexed(mesh)), "tetrahedron.glb");
+  if (back.positions != positions || back.indices.size() != triangles.size()) {
+    std::fprintf(stderr, "the glTF round trip changed the tetrahedron\n");
     return 1;
   }
   std::printf("ok\n");
