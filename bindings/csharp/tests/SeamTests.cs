@@ -18,6 +18,7 @@ namespace Hedge.Tests
             r.Add("SeamTests.SpotRoundTripUnityConventions", SpotRoundTripUnity);
             r.Add("SeamTests.SpotRoundTripMirrored", SpotRoundTripMirrored);
             r.Add("SeamTests.SpotEditsKeepMirrorsInStep", SpotEdits);
+            r.Add("SeamTests.SplitThenCollapseLeavesOneRenderVertex", SplitThenCollapse);
         }
 
         /// <summary>Engine arrays: one entry per engine vertex.</summary>
@@ -248,6 +249,80 @@ namespace Hedge.Tests
             mirrored.Winding = Winding.Clockwise;
             mirrored.FlipX = true;
             RoundTrip(spot, mirrored, Separate(Winding.Clockwise, true));
+        }
+
+        /// <summary>A UV-mapped n x n grid of unit squares as engine arrays: uv = (x, y) / n, normal +z. Squares
+        /// right of column seamColumn (if 0 &lt; seamColumn &lt; n) map to uv + (10, 0), so the line x = seamColumn is
+        /// a UV seam: its vertices are duplicated, as an engine holds seams.</summary>
+        public static HalfEdgeMesh UvGrid(int n, int seamColumn = -1)
+        {
+            int side = n + 1;
+            bool seam = seamColumn > 0 && seamColumn < n;
+            int count = side * side + (seam ? side : 0);
+            var p = new float[3 * count];
+            var uv = new float[2 * count];
+            var normals = new float[3 * count];
+            for (int v = 0; v < count; ++v)
+            {
+                int i = v < side * side ? v % side : seamColumn, j = v < side * side ? v / side : v - side * side;
+                bool right = v >= side * side || (seam && i > seamColumn);
+                p[3 * v] = i;
+                p[3 * v + 1] = j;
+                uv[2 * v] = (float)i / n + (right ? 10 : 0);
+                uv[2 * v + 1] = (float)j / n;
+                normals[3 * v + 2] = 1;
+            }
+            var tris = new List<int>();
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i)
+                {
+                    int a = j * side + i, b = a + 1, c = a + side + 1, d = a + side;
+                    if (seam && i == seamColumn)  // the right side's copies of the seam vertices
+                    {
+                        a = side * side + j;
+                        d = side * side + j + 1;
+                    }
+                    tris.AddRange(new[] { a, b, c, a, c, d });
+                }
+            BuildReport report;
+            return HalfEdgeMesh.FromEngineMesh(p, tris.ToArray(), normals, uv, null, EngineImportOptions.Unity,
+                                               out report);
+        }
+
+        // The reported case: on a seamless grid, split the edge from uv (0.5, 0.5) to (0.75, 0.5) at a quarter and
+        // merge the new vertex back into the first end: the survivor must keep one render vertex.
+        static void SplitThenCollapse()
+        {
+            using (HalfEdgeMesh mesh = UvGrid(4))
+            using (RenderBuffers buffers = mesh.GenerateUnityMesh())
+            {
+                Check.Equal(0u, buffers.Counts.SeamSplits, "seamless");
+                Vertex a = new Vertex(12), b = new Vertex(13);
+                Check.Equal(new Vec3(2, 2, 0), mesh.GetPosition(a));
+                Vertex v = mesh.SplitHalfEdge(mesh.FindHalfEdge(a, b), 2.25f, 2, 0);
+                Check.True(v.IsValid, "split");
+                buffers.Sync();
+                Check.Equal(0u, buffers.Counts.SeamSplits, "after the split");
+                Check.Equal(a, mesh.Collapse(mesh.FindHalfEdge(v, a)), "the first end survives");
+                buffers.Sync();
+                Check.Equal(0u, buffers.Counts.SeamSplits, "after the collapse");
+                BufferCounts counts = buffers.Counts;
+                var source = new Vertex[counts.VertexSlots];
+                buffers.CopyVertexSource(source);
+                var uv = new float[buffers.CopyStream(VertexStream.Texcoords, null)];
+                buffers.CopyStream(VertexStream.Texcoords, uv);
+                int survivors = 0;
+                for (int r = 0; r < source.Length; ++r)
+                {
+                    if (source[r] != a) continue;
+                    ++survivors;
+                    Check.Equal(0.5f, uv[2 * r], "u of the survivor");
+                    Check.Equal(0.5f, uv[2 * r + 1], "v of the survivor");
+                }
+                Check.Equal(1, survivors, "one render vertex for the survivor");
+                RenderTests.CheckBuffersMatchMesh(mesh, buffers);
+                Check.Valid(mesh);
+            }
         }
 
         static void SpotEdits()
