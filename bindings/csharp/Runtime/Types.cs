@@ -42,11 +42,14 @@ namespace Hedge
     {
         /// <summary>No normal stream.</summary>
         None = 0,
-        /// <summary>The mesh's corner or vertex normals; none if it has none.</summary>
+        /// <summary>The mesh's corner or vertex normals as they are: imported normals are kept, a moved
+        /// vertex keeps its normal. None if the mesh has none.</summary>
         Attribute = 1,
         /// <summary>Area-weighted smooth vertex normals.</summary>
         Computed = 2,
-        /// <summary>Attribute if the mesh has normals, computed otherwise.</summary>
+        /// <summary>The default. The mesh's normals if it has some, following the geometry: each sync
+        /// recomputes the normals about what the edits touched (into the mesh's normals; creases stay).
+        /// Computed normals if the mesh has none.</summary>
         Automatic = 3,
     }
 

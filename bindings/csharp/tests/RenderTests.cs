@@ -13,6 +13,7 @@ namespace Hedge.Tests
             r.Add("RenderTests.HolesCompactRebuild", HolesCompactRebuild);
             r.Add("RenderTests.UnityConventions", UnityConventions);
             r.Add("RenderTests.NoAllocationOnHotPaths", NoAllocationOnHotPaths);
+            r.Add("RenderTests.ImportedNormalsFollowOrStay", ImportedNormalsFollowOrStay);
         }
 
         /// <summary>Every live triangle of the index buffer is a face of the mesh (corners in order, up to
@@ -119,6 +120,57 @@ namespace Hedge.Tests
                 Check.Same(vertices, Vertices, vertices.Length, "vertex mirror " + what);
                 Check.Same(indices, Indices, indices.Length, "index mirror " + what);
             }
+        }
+
+        // The render normal of the corner entered by h (interleaved layout).
+        static Vec3 RenderNormal(RenderBuffers buffers, HalfEdge h)
+        {
+            var v = new float[buffers.CopyVertices(null)];
+            buffers.CopyVertices(v);
+            VertexLayout layout = buffers.Layout;
+            long at = (long)buffers.GetRenderVertex(h) * layout.Stride + layout.Normal;
+            return new Vec3(v[at], v[at + 1], v[at + 2]);
+        }
+
+        // Imported normals follow a moved vertex by default (Automatic): its render normal becomes the
+        // area-weighted normal of its faces, as ComputeVertexNormals gives it. With Attribute they stay.
+        static void ImportedNormalsFollowOrStay()
+        {
+            foreach (NormalSource source in new[] { NormalSource.Automatic, NormalSource.Attribute })
+                using (HalfEdgeMesh mesh = SeamTests.UvGrid(4))
+                {
+                    RenderOptions options = RenderOptions.Default;
+                    Check.Equal(NormalSource.Automatic, options.Normals, "the default");
+                    options.Normals = source;
+                    using (RenderBuffers buffers = mesh.CreateRenderBuffers(options))
+                    {
+                        Vertex v = new Vertex(6), neighbour = new Vertex(7);  // (1, 1) and (2, 1)
+                        HalfEdge corner = mesh.FindHalfEdge(neighbour, v), other = mesh.FindHalfEdge(v, neighbour);
+                        Check.Equal(new Vec3(0, 0, 1), RenderNormal(buffers, corner), "imported");
+                        mesh.SetPosition(v, 1, 1, 0.5f);
+                        buffers.Sync();
+                        CheckBuffersMatchMesh(mesh, buffers);
+                        Vec3 n = RenderNormal(buffers, corner), m = RenderNormal(buffers, other);
+                        if (source == NormalSource.Attribute)
+                        {
+                            Check.Equal(new Vec3(0, 0, 1), n, "kept at the moved vertex");
+                            Check.Equal(new Vec3(0, 0, 1), m, "kept at its neighbour");
+                        }
+                        else
+                        {
+                            mesh.ComputeVertexNormals(NormalWeighting.Area);
+                            var expected = new float[mesh.CopyVertexNormals(null)];
+                            mesh.CopyVertexNormals(expected);
+                            int i = (int)v.Index, j = (int)neighbour.Index;
+                            Check.True(Math.Abs(n.X - expected[3 * i]) < 1e-5f && Math.Abs(n.Y - expected[3 * i + 1]) < 1e-5f &&
+                                       Math.Abs(n.Z - expected[3 * i + 2]) < 1e-5f, "recomputed at the moved vertex: " + n);
+                            Check.True(Math.Abs(m.X) + Math.Abs(m.Y) > 0.05f, "the neighbour tilted: " + m);
+                            Check.True(Math.Abs(m.X - expected[3 * j]) < 1e-5f && Math.Abs(m.Y - expected[3 * j + 1]) < 1e-5f &&
+                                       Math.Abs(m.Z - expected[3 * j + 2]) < 1e-5f, "recomputed at its neighbour: " + m);
+                        }
+                        Check.Valid(mesh);
+                    }
+                }
         }
 
         static void BuffersMatchMesh()
