@@ -725,14 +725,26 @@ namespace Hedge
         }
 
         // =========================================================================================
-        // Edits. A refused edit returns false / an invalid handle / 0 and changes nothing.
-        // Render buffers of the mesh see every edit at their next sync.
+        // Edits. A refused edit returns false / an invalid handle / 0 and changes nothing; LastRefusal
+        // then says why. Render buffers of the mesh see every edit at their next sync.
         // =========================================================================================
 
-        // True if the status says "refused"; throws for any other failure.
-        static bool WasRefused(int status)
+        /// <summary>Why the last edit of this mesh was refused (the library's message, as hedge_last_error()
+        /// gave it right after the call, e.g. "collapse of halfedge 12 refused: it would pull a seam vertex off
+        /// its seam; nothing was changed"), or null if the last edit was done. Every edit (split, collapse,
+        /// flip, cut, add, remove, fill) sets it; nothing throws for a refusal, and only a refusal allocates
+        /// (the string).</summary>
+        public string LastRefusal { get; private set; }
+
+        // True if the status says "refused" (then LastRefusal holds the reason); throws for any other failure.
+        bool WasRefused(int status)
         {
-            if (status == Refused) return true;
+            if (status == Refused)
+            {
+                LastRefusal = Status.FromUtf8(Native.hedge_last_error());
+                return true;
+            }
+            LastRefusal = null;
             Status.Check(status);
             return false;
         }

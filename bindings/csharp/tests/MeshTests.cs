@@ -70,6 +70,7 @@ namespace Hedge.Tests
             r.Add("MeshTests.HandleArithmetic", HandleArithmetic);
             r.Add("MeshTests.TetrahedronAdjacency", TetrahedronAdjacency);
             r.Add("MeshTests.TetrahedronCollapseRefused", TetrahedronCollapseRefused);
+            r.Add("MeshTests.RefusalsCarryTheirReason", RefusalsCarryTheirReason);
             r.Add("MeshTests.PyramidEdits", PyramidEdits);
             r.Add("MeshTests.GridPolygonsAndDiagonals", GridPolygonsAndDiagonals);
             r.Add("MeshTests.DetachAndGarbageCollection", DetachAndGarbageCollection);
@@ -467,6 +468,38 @@ namespace Hedge.Tests
                 var small = new Vertex[] { new Vertex(77), new Vertex(77) };
                 Check.Throws(HedgeStatus.BufferTooSmall, () => mesh.GetVertexNeighbours(new Vertex(0), small));
                 Check.Equal(new Vertex(77), small[0], "untouched");
+                Check.Valid(mesh);
+            }
+        }
+
+        // A refused edit returns false / an invalid handle, throws nothing, and LastRefusal says why; the next
+        // edit that is done clears it.
+        static void RefusalsCarryTheirReason()
+        {
+            using (HalfEdgeMesh mesh = Meshes.Tet())
+            {
+                Check.Equal(null, mesh.LastRefusal, "nothing refused yet");
+                Check.Equal(Vertex.Invalid, mesh.Collapse(new HalfEdge(0)));
+                string why = mesh.LastRefusal;
+                Check.True(why != null && why.StartsWith("collapse of halfedge 0 refused: ") &&
+                           why.EndsWith("; nothing was changed"), "the reason: " + why);
+                Check.False(mesh.Flip(new Edge(1)));
+                Check.True(mesh.LastRefusal.StartsWith("flip of edge 1 refused"), mesh.LastRefusal);
+                Check.True(mesh.SplitEdge(new Edge(0), 0.5f, 0, 0).IsValid);
+                Check.Equal(null, mesh.LastRefusal, "cleared by an edit that was done");
+                Check.Valid(mesh);
+            }
+            // A seam vertex pulled off its seam: the reason names the seam.
+            using (HalfEdgeMesh mesh = SeamTests.UvGrid(4, 2))
+            {
+                Vertex onSeam = new Vertex(12), off = new Vertex(13);  // (2, 2) and (3, 2)
+                Check.Equal(new Vec3(2, 2, 0), mesh.GetPosition(onSeam));
+                HalfEdge h = mesh.FindHalfEdge(onSeam, off);
+                Check.False(mesh.CanCollapse(h));
+                Check.Equal(Vertex.Invalid, mesh.Collapse(h));
+                Check.True(mesh.LastRefusal.Contains("it would pull a seam vertex off its seam"), mesh.LastRefusal);
+                Check.Equal(onSeam, mesh.Collapse(mesh.FindHalfEdge(off, onSeam)), "an off-seam vertex onto the seam");
+                Check.Equal(null, mesh.LastRefusal);
                 Check.Valid(mesh);
             }
         }
