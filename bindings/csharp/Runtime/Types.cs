@@ -1,7 +1,10 @@
 // Enums and plain structs of the C ABI. Every struct is [StructLayout(LayoutKind.Sequential)] with
-// the field types and order of its C counterpart (int32 booleans stay int fields behind bool
+// the field order and sizes of its C counterpart (int32 booleans stay int fields behind bool
 // properties), so it is blittable and passed by pointer without conversion. The byte sizes are
-// checked against the header's layouts by the tests.
+// checked against the header's layouts by the tests. Counts and slot indices, uint32_t in the C
+// ABI, are int here, the type Unity's APIs take: the same bits for every value up to int.MaxValue,
+// and the binding's Counts properties refuse a mesh beyond that.
+using System;
 using System.Runtime.InteropServices;
 
 // The private fields of these structs are written by the native library only.
@@ -93,23 +96,23 @@ namespace Hedge
     public struct BuildReport
     {
         /// <summary>Input vertices merged into another by welding.</summary>
-        public uint WeldedVertices;
+        public int WeldedVertices;
         /// <summary>Faces dropped: fewer than 3 distinct corners.</summary>
-        public uint DegenerateFaces;
+        public int DegenerateFaces;
         /// <summary>Consecutive repeated corners removed from kept faces.</summary>
-        public uint RepeatedCorners;
+        public int RepeatedCorners;
         /// <summary>Faces whose winding was reversed.</summary>
-        public uint ReorientedFaces;
+        public int ReorientedFaces;
         /// <summary>Input edges cut apart.</summary>
-        public uint NonManifoldEdges;
+        public int NonManifoldEdges;
         /// <summary>Vertices whose faces formed several fans.</summary>
-        public uint NonManifoldVertices;
+        public int NonManifoldVertices;
         /// <summary>Vertices added to split them.</summary>
-        public uint DuplicatedVertices;
+        public int DuplicatedVertices;
         /// <summary>Vertices no face uses (kept; not a repair).</summary>
-        public uint IsolatedVertices;
+        public int IsolatedVertices;
         /// <summary>Total repairs (welding and isolated vertices excluded).</summary>
-        public uint Repairs;
+        public int Repairs;
     }
 
     /// <summary>Element counts (32 bytes). Live counts skip deleted elements; slot counts include
@@ -118,14 +121,14 @@ namespace Hedge
     [StructLayout(LayoutKind.Sequential)]
     public struct MeshCounts
     {
-        public uint Vertices;
-        public uint HalfEdges;
-        public uint Edges;
-        public uint Faces;
-        public uint VertexSlots;
-        public uint HalfEdgeSlots;
-        public uint EdgeSlots;
-        public uint FaceSlots;
+        public int Vertices;
+        public int HalfEdges;
+        public int Edges;
+        public int Faces;
+        public int VertexSlots;
+        public int HalfEdgeSlots;
+        public int EdgeSlots;
+        public int FaceSlots;
 
         public override string ToString()
         {
@@ -343,7 +346,7 @@ namespace Hedge
     [StructLayout(LayoutKind.Sequential)]
     public struct VertexLayout
     {
-        public uint Stride;
+        public int Stride;
         public int Position;
         public int Normal;
         public int Texcoord;
@@ -360,10 +363,16 @@ namespace Hedge
     [StructLayout(LayoutKind.Sequential)]
     public struct SlotRange
     {
-        public uint First;
-        public uint Count;
+        public int First;
+        public int Count;
 
-        public SlotRange(uint first, uint count) { First = first; Count = count; }
+        public SlotRange(int first, int count)
+        {
+            if (first < 0) throw new ArgumentOutOfRangeException("first", first, "a slot index is 0 or more");
+            if (count < 0) throw new ArgumentOutOfRangeException("count", count, "a slot count is 0 or more");
+            First = first;
+            Count = count;
+        }
         public override string ToString() { return "[" + First + ", " + (First + Count) + ")"; }
     }
 
@@ -377,11 +386,11 @@ namespace Hedge
         /// <summary>Bytes in the index ranges.</summary>
         public ulong IndexBytes;
         /// <summary>Rewritten render-vertex ranges.</summary>
-        public uint VertexRangeCount;
+        public int VertexRangeCount;
         /// <summary>Rewritten index-buffer ranges (in indices, not triangles).</summary>
-        public uint IndexRangeCount;
-        public uint FacesSynced;
-        public uint VerticesSynced;
+        public int IndexRangeCount;
+        public int FacesSynced;
+        public int VerticesSynced;
         int resized;
         int full;
 
@@ -399,23 +408,23 @@ namespace Hedge
     public struct BufferCounts
     {
         /// <summary>Render vertex slots, free ones included: the vertex buffer's length in vertices.</summary>
-        public uint VertexSlots;
+        public int VertexSlots;
         /// <summary>The index buffer's length in indices (3 per triangle slot).</summary>
-        public uint IndexCount;
+        public int IndexCount;
         /// <summary>Render vertex slots in use.</summary>
-        public uint Vertices;
+        public int Vertices;
         /// <summary>Triangle slots in use.</summary>
-        public uint Triangles;
+        public int Triangles;
         /// <summary>Render vertices beyond one per used mesh vertex: what seams cost.</summary>
-        public uint SeamSplits;
+        public int SeamSplits;
         /// <summary>Degenerate triangle slots waiting for reuse or compaction.</summary>
-        public uint FreeTriangleSlots;
+        public int FreeTriangleSlots;
         /// <summary>Bytes of the whole vertex and index buffers (a full upload).</summary>
         public ulong BufferBytes;
         /// <summary>Render vertex slots to allocate (at least VertexSlots).</summary>
-        public uint VertexCapacity;
+        public int VertexCapacity;
         /// <summary>Index-buffer entries to allocate (at least IndexCount).</summary>
-        public uint IndexCapacity;
+        public int IndexCapacity;
     }
 
     /// <summary>Options for <c>HalfEdgeMesh.FromEngineMesh</c> (24 bytes).</summary>

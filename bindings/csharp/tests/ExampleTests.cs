@@ -11,7 +11,7 @@ namespace Hedge.Tests
         {
             // ---- from README.md ----
             float[] positions = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5f, 0.5f, 1 };
-            uint[] triangles = { 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4 };
+            int[] triangles = { 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4 };
             using (var mesh = HalfEdgeMesh.FromTriangles(positions, triangles))
             using (var buffers = mesh.CreateRenderBuffers())         // or mesh.GenerateUnityMesh()
             {

@@ -94,7 +94,7 @@ namespace Hedge.Tests
         static Vec3 UploadedNormal(HalfEdgeMeshBehaviour b, HalfEdge h)
         {
             var n = (float[])b.RenderedMesh.Streams[1];
-            uint rv = b.Buffers.GetRenderVertex(h);
+            int rv = b.Buffers.GetRenderVertex(h);
             return new Vec3(n[3 * rv], n[3 * rv + 1], n[3 * rv + 2]);
         }
 
@@ -134,10 +134,10 @@ namespace Hedge.Tests
             Check.True(filter.sharedMesh == b.RenderedMesh && b.RenderedMesh != source, "renders its own mesh");
             Check.True(b.RenderedMesh.Dynamic, "marked dynamic");
             Check.Equal(5, b.HalfEdgeMesh.VertexCount, "the apex copies welded");
-            Check.Equal(1u, b.Report.WeldedVertices);
+            Check.Equal(1, b.Report.WeldedVertices);
             Check.Equal(4, b.HalfEdgeMesh.FaceCount);
             Check.Equal(new Vec3(-0.5f, 0.5f, 1), b.HalfEdgeMesh.GetPosition(new Vertex(4)), "Unity's own coordinates");
-            Check.Equal(6u, b.Buffers.Counts.Vertices, "the seam at the apex survives");
+            Check.Equal(6, b.Buffers.Counts.Vertices, "the seam at the apex survives");
             CheckUploaded(b, "after building");
             CheckBounds(b.RenderedMesh.bounds, new Vector3(-1, 0, 0), new Vector3(0, 1, 1), "after building");
 
@@ -195,13 +195,13 @@ namespace Hedge.Tests
             // Removing faces leaves free slots; Compact() on the buffers moves every slot, and the next
             // upload must send everything (it used to send nothing, leaving stale indices and submesh).
             int removed = 0;
-            for (uint f = 0; f < b.HalfEdgeMesh.Counts.FaceSlots && removed < 5; ++f)
+            for (int f = 0; f < b.HalfEdgeMesh.Counts.FaceSlots && removed < 5; ++f)
                 if (b.HalfEdgeMesh.CanRemoveFace(new Face(f)) && b.HalfEdgeMesh.RemoveFace(new Face(f))) ++removed;
             Check.Equal(5, removed);
             b.Upload();
             Check.True(b.Buffers.Counts.FreeTriangleSlots > 0, "holes before compaction");
             b.Buffers.Compact();
-            Check.Equal(0u, b.Buffers.Counts.FreeTriangleSlots);
+            Check.Equal(0, b.Buffers.Counts.FreeTriangleSlots);
             b.Upload();
             CheckUploaded(b, "after Compact()");
             Check.Valid(b.HalfEdgeMesh);
