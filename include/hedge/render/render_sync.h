@@ -39,7 +39,8 @@ namespace hedge {
 enum class NormalSource {
   none,      //!< no normal stream
   //! "h:normal" corners, else "v:normal" vertices, as they are: never recomputed, so a moved vertex
-  //! keeps its imported normal. None if neither exists.
+  //! keeps its imported normal. None if neither exists. (A RenderSync of the same mesh with
+  //! `automatic` normals rewrites that property, and this one then shows what it wrote.)
   attribute,
   computed,  //!< area-weighted smooth vertex normals, recomputed around every edit
   //! The mesh's normals ("h:normal", else "v:normal") if it has some, following the geometry: at
