@@ -155,7 +155,7 @@ namespace Hedge.Unity
             boundsMin = new Vector3(float.PositiveInfinity, float.PositiveInfinity, float.PositiveInfinity);
             boundsMax = new Vector3(float.NegativeInfinity, float.NegativeInfinity, float.NegativeInfinity);
             BufferCounts counts = Buffers.Counts;
-            int n = (int)counts.VertexSlots;
+            int n = counts.VertexSlots;
             if (counts.Vertices == counts.VertexSlots)
                 for (int v = 0; v < n; ++v) Encapsulate(v);
             else  // free slots hold stale positions: only the render vertices of triangles count
@@ -168,7 +168,7 @@ namespace Hedge.Unity
         {
             Vector3 min = boundsMin, max = boundsMax;
             for (int i = 0; i < rangeCount; ++i)
-                for (int v = (int)ranges[i].First, end = v + (int)ranges[i].Count; v < end; ++v) Encapsulate(v);
+                for (int v = ranges[i].First, end = v + ranges[i].Count; v < end; ++v) Encapsulate(v);
             if (min.x != boundsMin.x || min.y != boundsMin.y || min.z != boundsMin.z || max.x != boundsMax.x ||
                 max.y != boundsMax.y || max.z != boundsMax.z)
                 SetBounds();
