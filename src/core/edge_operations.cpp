@@ -332,9 +332,24 @@ const char* CollapseCorners::plan(const Mesh& m, Halfedge h) {
 }
 }  // namespace
 
+namespace {
+// collapse_refusal(); with corner properties it plans their copies into `corners` (collapse() plans
+// once), or into a plan of its own, out of line, if `corners` is null: the plan is large, and the
+// common case (no corner property) does not set it up.
+const char* check_collapse(const SurfaceMesh& m, Halfedge h, CollapseCorners* corners);
+
+[[gnu::noinline]] const char* plan_corners(const Mesh& m, Halfedge h) {
+  CollapseCorners corners;
+  return corners.plan(m, h);
+}
+}  // namespace
+
 bool can_collapse(const SurfaceMesh& m, Halfedge h) { return collapse_refusal(m, h) == nullptr; }
 
-const char* collapse_refusal(const SurfaceMesh& m, Halfedge h) {
+const char* collapse_refusal(const SurfaceMesh& m, Halfedge h) { return check_collapse(m, h, nullptr); }
+
+namespace {
+const char* check_collapse(const SurfaceMesh& m, Halfedge h, CollapseCorners* corners) {
   if (!m.is_live(h)) return "the half-edge is not live";
   const Halfedge t = Mesh::twin(h);
   const Vertex v0 = m.from_vertex(h), v1 = m.to_vertex(h);
@@ -381,12 +396,11 @@ const char* collapse_refusal(const SurfaceMesh& m, Halfedge h) {
   const std::size_t val_after = n0.size() + val1 - 2 - tips;
   const bool boundary_after = m.is_boundary(v0) || m.is_boundary(v1);
   if (val_after < (boundary_after ? 2u : 3u)) return "the surviving vertex would be left with too few edges";
-  if (!m.halfedge_properties().empty()) [[unlikely]] {
-    CollapseCorners corners;
-    return corners.plan(m, h);
-  }
+  if (!m.halfedge_properties().empty()) [[unlikely]]
+    return corners ? corners->plan(m, h) : plan_corners(m, h);
   return nullptr;
 }
+}  // namespace
 
 namespace {
 // Removes the two-sided face left by a collapse: g and next(g) join the same two vertices. The
@@ -410,11 +424,12 @@ void remove_two_gon(Mesh& m, Halfedge g) {
 }  // namespace
 
 Vertex collapse(SurfaceMesh& m, Halfedge h) {
-  if (!can_collapse(m, h)) return {};
   if (!m.halfedge_properties().empty()) [[unlikely]] {
     CollapseCorners corners;
-    corners.plan(m, h);
+    if (check_collapse(m, h, &corners)) return {};
     corners.apply(m);
+  } else if (check_collapse(m, h, nullptr)) {
+    return {};
   }
   const Halfedge t = Mesh::twin(h);
   const Vertex v0 = m.from_vertex(h), v1 = m.to_vertex(h);
