@@ -25,7 +25,8 @@ namespace Hedge.Tests
                 buffers.UpdateVertexMirror(VertexStream.Vertices, ref vertices);
                 buffers.UpdateIndexMirror(ref indices);
 
-                // Edits. A refused edit returns an invalid handle or false, and changes nothing.
+                // Edits. A refused edit returns an invalid handle or false, and changes nothing;
+                // mesh.LastRefusal then says why.
                 buffers.BeginTransaction();
                 HalfEdge h = mesh.FindHalfEdge(new Vertex(0), new Vertex(1));
                 Vertex mid = mesh.SplitEdge(h.Edge, 0.5f, 0, 0);        // a new vertex on the edge 0-1
