@@ -774,9 +774,14 @@ HEDGE_API hedge_status hedge_mesh_face_containing_point_2d(hedge_mesh* mesh, flo
 /** Normal source (hedge::NormalSource). */
 enum {
   HEDGE_NORMALS_NONE = 0,      /**< no normal stream */
-  HEDGE_NORMALS_ATTRIBUTE = 1, /**< the mesh's corner or vertex normals; none if it has none */
+  /** the mesh's corner or vertex normals as they are, never recomputed (imported normals kept);
+   *  none if it has none */
+  HEDGE_NORMALS_ATTRIBUTE = 1,
   HEDGE_NORMALS_COMPUTED = 2,  /**< area-weighted smooth vertex normals */
-  HEDGE_NORMALS_AUTOMATIC = 3  /**< attribute if the mesh has normals, computed otherwise */
+  /** the default: the mesh's normals if it has some, following the geometry (each sync recomputes
+   *  the normals about what the edits touched into the mesh's normals, creases kept); computed
+   *  normals otherwise */
+  HEDGE_NORMALS_AUTOMATIC = 3
 };
 
 /** Vertex streams for hedge_render_vertex_data() and hedge_render_copy_vertex_data(). */

@@ -32,8 +32,9 @@ void hedge::capi::write_maps(const GarbageMaps& maps, const MapBuffers& b) {
 
 namespace {
 
-[[noreturn]] void refused(const std::string& what) {
-  fail(HEDGE_ERROR_REFUSED, what + " refused: the operation would break the mesh; nothing was changed");
+[[noreturn]] void refused(const std::string& what, const char* why = nullptr) {
+  fail(HEDGE_ERROR_REFUSED,
+       what + " refused: " + (why ? why : "the operation would break the mesh") + "; nothing was changed");
 }
 
 std::string name(const char* kind, std::uint32_t i) { return std::string(kind) + " " + std::to_string(i); }
@@ -73,7 +74,7 @@ hedge_status hedge_collapse(hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_v
     const Halfedge h = live_halfedge(m, halfedge);
     need(out_vertex, "out_vertex");
     const Vertex v = collapse(m, h);
-    if (!v.is_valid()) refused("collapse of " + name("halfedge", halfedge));
+    if (!v.is_valid()) refused("collapse of " + name("halfedge", halfedge), collapse_refusal(m, h));
     *out_vertex = v.idx();
   });
 }

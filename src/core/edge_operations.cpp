@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include "hedge/core/small_vector.h"
 #include "operations_internal.h"
@@ -237,13 +238,125 @@ Vertex split_edge(SurfaceMesh& m, Edge e, const Vec3& point) {
 }
 
 // ---------------------------------------------------------------------------------------------
-bool can_collapse(const SurfaceMesh& m, Halfedge h) {
-  if (!m.is_live(h)) return false;
+namespace {
+// True if corners a and b hold the same values in every corner property.
+bool same_corner(const Mesh& m, Halfedge a, Halfedge b) { return m.halfedge_properties().equal(a.idx(), b.idx()); }
+
+// True if the edge of o (an interior edge) is a seam: its two faces hold different corner values at
+// either end. The corner of vertex x in face f is stored on the half-edge entering x in f.
+bool is_seam(const Mesh& m, Halfedge o) {
+  const Halfedge t = Mesh::twin(o);
+  return !same_corner(m, o, m.prev(t)) || !same_corner(m, m.prev(o), t);
+}
+
+// The corner rule of collapse(h) (see operations.h): the faces about both ends are grouped into
+// charts, faces joined across spoke edges that are no seams; each corner of from_vertex(h) takes
+// the value of the corners of to_vertex(h) in its chart.
+class CollapseCorners {
+ public:
+  //! Plans the corner copies. \return null, or why the collapse would break or stretch a seam.
+  const char* plan(const Mesh& m, Halfedge h);
+  //! Copies the planned values. Called before the collapse relinks anything.
+  void apply(Mesh& m) const {
+    for (std::size_t i = 0; i < copies_.size(); ++i)
+      m.halfedge_properties().copy(copies_[i].second.idx(), copies_[i].first.idx());
+  }
+
+ private:
+  std::size_t slot(Face f) {
+    for (std::size_t i = 0; i < faces_.size(); ++i)
+      if (faces_[i] == f) return i;
+    faces_.push_back(f);
+    parent_.push_back(faces_.size() - 1);
+    v1_corner_.push_back(Halfedge());
+    v0_corner_.push_back(Halfedge());
+    return faces_.size() - 1;
+  }
+  std::size_t root(std::size_t i) const {
+    while (parent_[i] != i) i = parent_[i];
+    return i;
+  }
+
+  SmallVector<Face, 32> faces_;
+  SmallVector<std::size_t, 32> parent_;
+  SmallVector<Halfedge, 32> v1_corner_;  // per chart root: a corner of the survivor
+  SmallVector<Halfedge, 32> v0_corner_;  // per chart root: a corner of the vertex merged away
+  SmallVector<std::pair<Halfedge, Halfedge>, 16> copies_;  // (corner of v0, corner of v1)
+};
+
+const char* CollapseCorners::plan(const Mesh& m, Halfedge h) {
+  const Halfedge t = Mesh::twin(h);
+  for (const Halfedge start : {h, t}) {  // the spokes of from_vertex(h), then of to_vertex(h)
+    Halfedge x = start;
+    do {
+      const Face a = m.face(x), b = m.face(Mesh::twin(x));
+      if (a.is_valid() && b.is_valid()) {
+        const std::size_t i = root(slot(a)), j = root(slot(b));
+        if (i != j && !is_seam(m, x)) parent_[i] = j;
+      }
+      x = m.rotate_cw(x);
+    } while (x != start);
+  }
+  // The survivor's corners: one value per chart, else two sides of a seam would meet.
+  Halfedge x = t;
+  do {
+    const Halfedge c = Mesh::twin(x);  // enters to_vertex(h)
+    if (m.face(c).is_valid()) {
+      const std::size_t r = root(slot(m.face(c)));
+      if (!v1_corner_[r].is_valid()) v1_corner_[r] = c;
+      else if (!same_corner(m, v1_corner_[r], c))
+        return "it would join the two sides of a seam at the surviving vertex";
+    }
+    x = m.rotate_cw(x);
+  } while (x != t);
+  // The merged vertex's corners: each chart must reach the survivor (else the collapse pulls a seam
+  // vertex off its seam) and hold one value (else a seam would lose its end there).
+  const Face fl = m.face(h), fr = m.face(t);
+  const bool tri_l = fl.is_valid() && is_triangle(m, h), tri_r = fr.is_valid() && is_triangle(m, t);
+  x = h;
+  do {
+    const Halfedge c = Mesh::twin(x);  // enters from_vertex(h)
+    const Face f = m.face(c);
+    if (f.is_valid()) {
+      const std::size_t r = root(slot(f));
+      if (!v1_corner_[r].is_valid()) return "it would pull a seam vertex off its seam";
+      if (!v0_corner_[r].is_valid()) v0_corner_[r] = c;
+      else if (!same_corner(m, v0_corner_[r], c))
+        return "it would shorten a seam that ends at the merged vertex";
+      // A triangle on h vanishes; its corners are taken care of as it goes.
+      if (!(f == fl && tri_l) && !(f == fr && tri_r)) copies_.push_back({c, v1_corner_[r]});
+    }
+    x = m.rotate_cw(x);
+  } while (x != h);
+  return nullptr;
+}
+}  // namespace
+
+namespace {
+// collapse_refusal(); with corner properties it plans their copies into `corners` (collapse() plans
+// once), or into a plan of its own, out of line, if `corners` is null: the plan is large, and the
+// common case (no corner property) does not set it up.
+const char* check_collapse(const SurfaceMesh& m, Halfedge h, CollapseCorners* corners);
+
+[[gnu::noinline]] const char* plan_corners(const Mesh& m, Halfedge h) {
+  CollapseCorners corners;
+  return corners.plan(m, h);
+}
+}  // namespace
+
+bool can_collapse(const SurfaceMesh& m, Halfedge h) { return collapse_refusal(m, h) == nullptr; }
+
+const char* collapse_refusal(const SurfaceMesh& m, Halfedge h) { return check_collapse(m, h, nullptr); }
+
+namespace {
+const char* check_collapse(const SurfaceMesh& m, Halfedge h, CollapseCorners* corners) {
+  if (!m.is_live(h)) return "the half-edge is not live";
   const Halfedge t = Mesh::twin(h);
   const Vertex v0 = m.from_vertex(h), v1 = m.to_vertex(h);
   const Face fl = m.face(h), fr = m.face(t);
-  if (fl.is_valid() && fl == fr) return false;
-  if (!m.is_boundary(Mesh::edge(h)) && m.is_boundary(v0) && m.is_boundary(v1)) return false;
+  if (fl.is_valid() && fl == fr) return "the edge has the same face on both sides";
+  if (!m.is_boundary(Mesh::edge(h)) && m.is_boundary(v0) && m.is_boundary(v1))
+    return "an interior edge joins two boundary vertices (the surface would pinch)";
   const Vertex tl = fl.is_valid() && is_triangle(m, h) ? m.to_vertex(m.next(h)) : Vertex();
   const Vertex tr = fr.is_valid() && is_triangle(m, t) ? m.to_vertex(m.next(t)) : Vertex();
 
@@ -258,13 +371,14 @@ bool can_collapse(const SurfaceMesh& m, Halfedge h) {
     to_v1 += w == v1;
     x = m.rotate_cw(x);
   } while (x != h);
-  if (to_v1 != 1) return false;
+  if (to_v1 != 1) return "a second edge joins its ends";
   std::size_t val1 = 0;
   x = t;
   do {
     const Vertex w = m.to_vertex(x);
     ++val1;
-    if (w != v0 && w != tl && w != tr && n0.contains(w)) return false;
+    if (w != v0 && w != tl && w != tr && n0.contains(w))
+      return "its ends share a neighbour besides the tips of its triangles (the link condition)";
     x = m.rotate_cw(x);
   } while (x != t);
   // Tips lose an edge; merged edges must keep a face on one side.
@@ -272,16 +386,21 @@ bool can_collapse(const SurfaceMesh& m, Halfedge h) {
     const Vertex tip = side == 0 ? tl : tr;
     if (!tip.is_valid()) continue;
     const Halfedge s = side == 0 ? h : t;
-    if (m.is_boundary(Mesh::twin(m.next(s))) && m.is_boundary(Mesh::twin(m.next(m.next(s))))) return false;
-    if (!valence_above(m, tip, m.is_boundary(tip) ? 2u : 3u)) return false;
+    if (m.is_boundary(Mesh::twin(m.next(s))) && m.is_boundary(Mesh::twin(m.next(m.next(s)))))
+      return "a triangle on the edge has the boundary on both other sides (an edge would dangle)";
+    if (!valence_above(m, tip, m.is_boundary(tip) ? 2u : 3u))
+      return "a tip of its triangles would be left with too few edges";
   }
   // The survivor must keep valence 3 if interior.
   const std::size_t tips = (tl.is_valid() ? 1 : 0) + (tr.is_valid() ? 1 : 0);
   const std::size_t val_after = n0.size() + val1 - 2 - tips;
   const bool boundary_after = m.is_boundary(v0) || m.is_boundary(v1);
-  if (val_after < (boundary_after ? 2u : 3u)) return false;
-  return true;
+  if (val_after < (boundary_after ? 2u : 3u)) return "the surviving vertex would be left with too few edges";
+  if (!m.halfedge_properties().empty()) [[unlikely]]
+    return corners ? corners->plan(m, h) : plan_corners(m, h);
+  return nullptr;
 }
+}  // namespace
 
 namespace {
 // Removes the two-sided face left by a collapse: g and next(g) join the same two vertices. The
@@ -305,7 +424,13 @@ void remove_two_gon(Mesh& m, Halfedge g) {
 }  // namespace
 
 Vertex collapse(SurfaceMesh& m, Halfedge h) {
-  if (!can_collapse(m, h)) return {};
+  if (!m.halfedge_properties().empty()) [[unlikely]] {
+    CollapseCorners corners;
+    if (check_collapse(m, h, &corners)) return {};
+    corners.apply(m);
+  } else if (check_collapse(m, h, nullptr)) {
+    return {};
+  }
   const Halfedge t = Mesh::twin(h);
   const Vertex v0 = m.from_vertex(h), v1 = m.to_vertex(h);
   const Halfedge hn = m.next(h), hp = m.prev(h), tn = m.next(t), tp = m.prev(t);

@@ -84,9 +84,13 @@ void RenderSync::attach_sources() {
   h_color_ = {};
   v_color_ = {};
   computed_normals_ = false;
+  follow_normals_ = false;
   const bool has_normal_attr = m.get_halfedge_property<Vec3>("h:normal") || m.get_vertex_property<Vec3>("v:normal");
   NormalSource ns = options_.normals;
-  if (ns == NormalSource::automatic) ns = has_normal_attr ? NormalSource::attribute : NormalSource::computed;
+  if (ns == NormalSource::automatic) {
+    follow_normals_ = has_normal_attr;
+    ns = has_normal_attr ? NormalSource::attribute : NormalSource::computed;
+  }
   if (ns == NormalSource::attribute) {
     h_normal_ = m.get_halfedge_property<Vec3>("h:normal");
     if (!h_normal_) v_normal_ = m.get_vertex_property<Vec3>("v:normal");
@@ -385,7 +389,40 @@ void RenderSync::update_normal(Vertex w) {
   vertex_normal_[w.idx()] = to_float(normalize(sum));
 }
 
-void RenderSync::recompute_normals(const ChangeLog::Pending& p) {
+void RenderSync::follow_normal(Vertex w) {
+  SurfaceMesh& m = *mesh_;
+  if (m.is_isolated(w)) return;
+  if (v_normal_) {
+    update_normal(w);
+    v_normal_[w] = vertex_normal_[w.idx()];
+    return;
+  }
+  // Corners that held one value form a group; each group gets the normalised sum of its faces.
+  normal_groups_.clear();
+  auto group = [&](const Vec3& n) {
+    std::size_t g = 0;
+    while (g < normal_groups_.size() && !(normal_groups_[g].first == n)) ++g;
+    if (g == normal_groups_.size()) normal_groups_.push_back({n, Vec3d{0, 0, 0}});
+    return g;
+  };
+  for (Halfedge o : m.halfedges(w)) {
+    const Halfedge c = SurfaceMesh::twin(o);  // enters w: w's corner in face(c)
+    if (!m.is_boundary(c)) normal_groups_[group(h_normal_[c])].second += face_normal_sum(m, m.face(c));
+  }
+  // Every corner's group is found by its old value before any corner is rewritten.
+  normal_corner_group_.clear();
+  for (Halfedge o : m.halfedges(w)) {
+    const Halfedge c = SurfaceMesh::twin(o);
+    if (!m.is_boundary(c)) normal_corner_group_.push_back(group(h_normal_[c]));
+  }
+  std::size_t i = 0;
+  for (Halfedge o : m.halfedges(w)) {
+    const Halfedge c = SurfaceMesh::twin(o);
+    if (!m.is_boundary(c)) h_normal_[c] = to_float(normalize(normal_groups_[normal_corner_group_[i++]].second));
+  }
+}
+
+void RenderSync::seed_normals(const ChangeLog::Pending& p) {
   const SurfaceMesh& m = *mesh_;
   ++normal_generation_;
   auto seed = [&](Vertex w) {
@@ -412,7 +449,6 @@ void RenderSync::recompute_normals(const ChangeLog::Pending& p) {
         seed(rv_vertex_[indices_[i]]);
     }
   }
-  for (Vertex w : normal_seeds_) update_normal(w);
 }
 
 // ---- Sync ---------------------------------------------------------------------------------------------
@@ -421,7 +457,7 @@ void RenderSync::grow_element_arrays() {
   if (v_first_rv_.size() < m.vertex_slots()) v_first_rv_.resize(m.vertex_slots(), kInvalidIndex);
   if (corner_rv_.size() < m.halfedge_slots()) corner_rv_.resize(m.halfedge_slots(), kInvalidIndex);
   if (face_slots_.size() < m.face_slots()) face_slots_.resize(m.face_slots());
-  if (computed_normals_) {
+  if (computed_normals_ || follow_normals_) {
     if (vertex_normal_.size() < m.vertex_slots()) vertex_normal_.resize(m.vertex_slots());
     if (normal_stamp_.size() < m.vertex_slots()) normal_stamp_.resize(m.vertex_slots(), 0);
   }
@@ -518,14 +554,25 @@ void RenderSync::sync_changes() {
   written_vertices_.clear();
   written_indices_.clear();
 
-  // Moved vertices (and, with computed normals, every vertex whose normal was recomputed, moved
-  // ones included): rewrite the vertex-sourced floats of their render vertices.
-  if (computed_normals_) recompute_normals(p);
-  for (Vertex v : computed_normals_ ? std::span<const Vertex>(normal_seeds_) : p.vertices)
+  // Moved vertices (and, with computed or following normals, every vertex whose normal was
+  // recomputed, moved ones included): rewrite the vertex-sourced floats of their render vertices.
+  const bool renormal = computed_normals_ || follow_normals_;
+  if (renormal) seed_normals(p);
+  if (computed_normals_)
+    for (Vertex w : normal_seeds_) update_normal(w);
+  if (follow_normals_)
+    for (Vertex w : normal_seeds_)
+      if (m.is_live(w)) follow_normal(w);
+  for (Vertex v : renormal ? std::span<const Vertex>(normal_seeds_) : p.vertices)
     if (m.is_live(v)) rewrite_vertex_data(v);
   // Faces: removed ones free their slots first, so that new faces can reuse them. A polygon's
   // triangulation depends on its corner positions, so polygons about a moved vertex are redone.
+  // Following corner normals changed the corners of every face about a seed.
   dirty_faces_.assign(p.faces.begin(), p.faces.end());
+  if (follow_normals_ && h_normal_)
+    for (Vertex w : normal_seeds_)
+      if (m.is_live(w) && !m.is_isolated(w))
+        for (Face f : m.faces(w)) dirty_faces_.push_back(f);
   for (Vertex v : p.vertices) {
     if (!m.is_live(v) || m.is_isolated(v)) continue;
     for (Face f : m.faces(v))

@@ -383,6 +383,7 @@ static void test_tetrahedron(void) {
       CHECK(ok == 0);
       CHECK_STATUS(hedge_collapse(tet, h, &survivor), HEDGE_ERROR_REFUSED);
       CHECK_ERROR_HAS("refused");
+      CHECK_ERROR_HAS("would be left with too few edges"); /* the reason, not only the verdict */
       CHECK(survivor == 1234);
       CHECK(same_counts(counts_of(tet), c));
       CHECK(next_of(tet, next_of(tet, next_of(tet, h))) == h);
@@ -1493,6 +1494,43 @@ static void test_geometry(void) {
   CHECK_OK(hedge_render_counts(render, &bc));
   CHECK(bc.vertices == 24);
   CHECK_OK(hedge_render_destroy(render));
+
+  /* Raising a corner of the top face: by default (AUTOMATIC) the corner normals follow the geometry;
+   * ATTRIBUTE keeps them as they were. */
+  {
+    uint32_t top = INVALID; /* the corner of vertex 6 (1, 1, 1) in the top face (normal +z) */
+    for (uint32_t h = 0; h < 24; ++h) {
+      uint32_t v = INVALID;
+      CHECK_OK(hedge_halfedge_to_vertex(cube, h, &v));
+      if (v == 6 && normals[3 * h + 2] > 0.5f) top = h;
+    }
+    CHECK(top != INVALID);
+    hedge_render_options follow;
+    CHECK_OK(hedge_render_options_default(&follow));
+    hedge_render *kept = NULL, *followed = NULL;
+    CHECK_OK(hedge_render_create(cube, &ro, &kept));
+    CHECK_OK(hedge_render_create(cube, &follow, &followed));
+    CHECK_OK(hedge_mesh_set_position(cube, 6, 1, 1, 1.5f));
+    hedge_render* both[2] = {kept, followed};
+    float n[2][3];
+    for (int i = 0; i < 2; ++i) {
+      CHECK_OK(hedge_render_sync(both[i], NULL));
+      hedge_vertex_layout layout;
+      CHECK_OK(hedge_render_layout(both[i], &layout));
+      uint32_t rv = INVALID;
+      CHECK_OK(hedge_render_corner_vertex(both[i], top, &rv));
+      const float* data = NULL;
+      uint64_t floats = 0;
+      CHECK_OK(hedge_render_vertex_data(both[i], HEDGE_STREAM_VERTICES, &data, &floats));
+      CHECK((uint64_t)(rv + 1) * layout.stride <= floats && layout.normal >= 0);
+      for (int a = 0; a < 3; ++a) n[i][a] = data[(uint64_t)rv * layout.stride + (uint32_t)layout.normal + a];
+    }
+    CHECK(n[0][0] == 0 && n[0][1] == 0 && n[0][2] == 1); /* kept */
+    CHECK(n[1][2] < 0.99f && n[1][2] > 0.5f);           /* tilted by the raised corner */
+    CHECK(near(n[1][0] * n[1][0] + n[1][1] * n[1][1] + n[1][2] * n[1][2], 1, 1e-6));
+    CHECK_OK(hedge_render_destroy(kept));
+    CHECK_OK(hedge_render_destroy(followed));
+  }
 
   /* An open mesh has no volume: NaN. */
   hedge_mesh* pyramid = make_mesh(kPyramidPositions, 5, kPyramidTriangles, 12, NULL, 0);

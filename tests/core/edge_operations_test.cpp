@@ -4,9 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
+#include <string>
+#include <vector>
 
 #include "edit_checks.h"
 #include "hedge/core/build.h"
+#include "hedge/io/io.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -236,6 +240,156 @@ TEST(Collapse, UntilRefusedEndsValid) {
   }
   EXPECT_EQ(counts(m).chi(), 1);
   EXPECT_LE(m.n_faces(), 2u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+// ---- Corner attributes through split and collapse ----------------------------------------------
+
+// A triangulated n x n grid of unit squares whose corners carry texcoords. Columns of squares left
+// of `seam_column` map with uv = (x, y) / n; the others with uv = (x / n + 10, y / n), so the
+// vertical line x = seam_column is a UV seam (none if seam_column >= n).
+SurfaceMesh uv_grid(int n, int seam_column) {
+  IndexedMesh in = test::grid(n, true);
+  for (std::size_t t = 0; t < in.indices.size(); t += 3) {
+    float cx = 0;
+    for (int k = 0; k < 3; ++k) cx += in.positions[in.indices[t + k]].x / 3;
+    const float shift = cx > float(seam_column) ? 10.f : 0.f;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 p = in.positions[in.indices[t + k]];
+      in.texcoord_indices.push_back(static_cast<Index>(in.texcoords.size()));
+      in.texcoords.push_back({p.x / float(n) + shift, p.y / float(n)});
+    }
+  }
+  return build(in);
+}
+
+// The distinct texcoords among v's corners (the half-edges entering v in a face).
+std::vector<Vec2> corner_uvs(const SurfaceMesh& m, Vertex v) {
+  auto uv = m.get_halfedge_property<Vec2>("h:texcoord");
+  std::vector<Vec2> out;
+  for (Halfedge o : m.halfedges(v)) {
+    const Halfedge c = m.twin(o);
+    if (m.is_boundary(c)) continue;
+    if (std::find(out.begin(), out.end(), uv[c]) == out.end()) out.push_back(uv[c]);
+  }
+  return out;
+}
+
+// Render vertices beyond one per vertex, as an engine export makes them: what the seams cost.
+std::size_t seam_splits(const SurfaceMesh& m) {
+  std::size_t n = 0;
+  for (Vertex v : m.vertices())
+    if (!m.is_isolated(v)) n += corner_uvs(m, v).size() - 1;
+  return n;
+}
+
+// A live half-edge, uniformly at random.
+Halfedge random_halfedge(const SurfaceMesh& m, std::mt19937& rng) {
+  std::uniform_int_distribution<Index> pick(0, static_cast<Index>(m.halfedge_slots() - 1));
+  for (;;) {
+    const Halfedge h(pick(rng));
+    if (m.is_live(h)) return h;
+  }
+}
+
+TEST(CollapseCorners, SplitThenCollapseLeavesOneCornerValue) {
+  // The reported case: split the edge from uv (0.5, 0.5) to (0.75, 0.5) at a quarter, then merge
+  // the new vertex (uv (0.5625, 0.5)) into the first end. The survivor must keep one texcoord.
+  SurfaceMesh m = uv_grid(4, 4);
+  const Vertex a(12), b(13);  // positions (2, 2) and (3, 2)
+  ASSERT_EQ(m.position(a), (Vec3{2, 2, 0}));
+  const Vertex v = split_edge(m, m.find_edge(a, b), {2.25f, 2, 0});
+  ASSERT_TRUE(v.is_valid());
+  ASSERT_EQ(corner_uvs(m, v), (std::vector<Vec2>{{0.5625f, 0.5f}}));
+  EXPECT_EQ(seam_splits(m), 0u);
+  const Halfedge h = m.find_halfedge(v, a);
+  ASSERT_TRUE(can_collapse(m, h));
+  ASSERT_EQ(collapse(m, h), a);
+  EXPECT_EQ(corner_uvs(m, a), (std::vector<Vec2>{{0.5f, 0.5f}}));
+  EXPECT_EQ(seam_splits(m), 0u);
+  // And the other way round: the new vertex survives with its own value.
+  const Vertex w = split_edge(m, m.find_edge(a, b), {2.25f, 2, 0});
+  ASSERT_EQ(collapse(m, m.find_halfedge(a, w)), w);
+  EXPECT_EQ(corner_uvs(m, w), (std::vector<Vec2>{{0.5625f, 0.5f}}));
+  EXPECT_EQ(seam_splits(m), 0u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(CollapseCorners, RandomSplitsAndCollapsesMakeNoSeam) {
+  for (std::uint32_t seed : {1u, 2u, 3u, 4u, 5u}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937 rng(seed);
+    SurfaceMesh m = uv_grid(6, 6);
+    std::size_t collapses = 0;
+    for (int i = 0; i < 600; ++i) {
+      const Halfedge h = random_halfedge(m, rng);
+      const int kind = static_cast<int>(rng() % 3);
+      if (kind == 0) {
+        const Vec3 a = m.position(m.from_vertex(h)), b = m.position(m.to_vertex(h));
+        const float s = std::uniform_real_distribution<float>(0.1f, 0.9f)(rng);
+        ASSERT_TRUE(split_edge(m, m.edge(h), a + (b - a) * s).is_valid());
+      } else if (kind == 1 && !m.is_boundary(h)) {
+        ASSERT_TRUE(split_face(m, m.face(h), face_centroid(m, m.face(h))).is_valid());
+      } else if (collapse(m, h).is_valid()) {
+        ++collapses;
+      }
+      ASSERT_EQ(seam_splits(m), 0u) << "after operation " << i;
+    }
+    EXPECT_GT(collapses, 50u);
+    EXPECT_TRUE(m.validate().empty());
+  }
+}
+
+TEST(CollapseCorners, AlongASeamKeepsBothSidesAndOffItIsRefused) {
+  // Seam at x = 2 of a 4 x 4 grid: vertices 2, 7, 12, 17, 22 lie on it.
+  SurfaceMesh m = uv_grid(4, 2);
+  const Vertex s0(12), s1(17), off(13);  // (2, 2), (2, 3) on the seam; (3, 2) right of it
+  ASSERT_EQ(corner_uvs(m, s0).size(), 2u);
+  ASSERT_EQ(seam_splits(m), 5u);  // every vertex on the seam, its boundary ends included
+  // A seam vertex pulled off its seam: refused, and nothing changes.
+  const Snapshot before = snapshot(m);
+  EXPECT_FALSE(can_collapse(m, m.find_halfedge(s0, off)));
+  EXPECT_FALSE(collapse(m, m.find_halfedge(s0, off)).is_valid());
+  EXPECT_TRUE(snapshot(m) == before);
+  // Along the seam: each side of s1 takes s0's value on that side.
+  ASSERT_EQ(collapse(m, m.find_halfedge(s1, s0)), s0);
+  EXPECT_EQ(corner_uvs(m, s0).size(), 2u);
+  auto uv = m.get_halfedge_property<Vec2>("h:texcoord");
+  for (Face f : m.faces()) {
+    const bool right = face_centroid(m, f).x > 2;
+    for (Halfedge c : m.halfedges(f)) {
+      const Vec3 p = m.position(m.to_vertex(c));
+      EXPECT_EQ(uv[c], (Vec2{p.x / 4 + (right ? 10.f : 0.f), p.y / 4}));
+    }
+  }
+  EXPECT_EQ(seam_splits(m), 4u);
+  // An off-seam vertex onto the seam: it joins the side it comes from.
+  ASSERT_EQ(collapse(m, m.find_halfedge(off, s0)), s0);
+  EXPECT_EQ(corner_uvs(m, s0).size(), 2u);
+  EXPECT_EQ(seam_splits(m), 4u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(CollapseCorners, SpotKeepsItsSeamsUnderRandomCollapses) {
+  SurfaceMesh m = read_mesh(test::data_path("spot_triangulated.obj"));
+  ASSERT_TRUE(m.get_halfedge_property<Vec2>("h:texcoord"));
+  std::size_t splits = seam_splits(m);
+  ASSERT_GT(splits, 0u);
+  std::mt19937 rng(13);
+  std::size_t done = 0, along_seams = 0;
+  for (int i = 0; i < 1500; ++i) {
+    const Halfedge h = random_halfedge(m, rng);
+    const std::size_t merged = corner_uvs(m, m.from_vertex(h)).size() - 1;  // its own splits
+    if (!collapse(m, h).is_valid()) continue;
+    ++done;
+    along_seams += merged > 0;
+    // The merged vertex's splits go with it; no other vertex gains or loses one.
+    ASSERT_EQ(seam_splits(m), splits - merged) << "after collapse " << done;
+    splits -= merged;
+  }
+  EXPECT_GT(done, 500u);
+  EXPECT_GT(along_seams, 0u);
+  EXPECT_GT(splits, 0u);
   EXPECT_TRUE(m.validate().empty());
 }
 

@@ -312,6 +312,115 @@ TEST(RenderSync, RandomEditsOnAnOpenMeshWithComputedNormals) {
   random_edit_run(read_mesh(data("elephant-with-holes.off")), {}, 300);
 }
 
+// ---- Normals that follow the geometry --------------------------------------------------------------
+
+// A flat grid with imported corner normals that are not its geometric ones: (0.6, 0, 0.8) left of
+// x = 2 and (0, 0.6, 0.8) right of it, so the column x = 2 is a crease (two render vertices per
+// vertex there).
+SurfaceMesh with_imported_normals() {
+  SurfaceMesh m = build(test::grid(4, true));
+  auto n = m.add_halfedge_property<Vec3>("h:normal");
+  for (Face f : m.faces()) {
+    const bool right = face_centroid(m, f).x > 2;
+    for (Halfedge h : m.halfedges(f)) n[h] = right ? Vec3{0, 0.6f, 0.8f} : Vec3{0.6f, 0, 0.8f};
+  }
+  return m;
+}
+
+// The area-weighted normal of the faces about v accepted by `side` (all faces: any side).
+Vec3 expected_normal(const SurfaceMesh& m, Vertex v, int side = 0) {
+  Vec3d sum{0, 0, 0};
+  for (Face f : m.faces(v)) {
+    const double cx = face_centroid(m, f).x;
+    if ((side < 0 && cx > 2) || (side > 0 && cx < 2)) continue;
+    std::vector<Vec3d> p;
+    for (Vertex w : m.vertices(f)) p.push_back(to_double(m.position(w)));
+    sum += cross(p[1] - p[0], p[2] - p[0]);
+  }
+  return to_float(normalize(sum));
+}
+
+Vec3 render_normal(const RenderSync& rs, Halfedge corner) {
+  const Index rv = rs.render_vertex(corner);
+  const float* n = rs.vertices().data() + std::size_t(rv) * rs.layout().stride + rs.layout().normal;
+  return {n[0], n[1], n[2]};
+}
+
+void expect_near(const Vec3& a, const Vec3& b, const char* what) {
+  EXPECT_NEAR(a.x, b.x, 1e-6f) << what;
+  EXPECT_NEAR(a.y, b.y, 1e-6f) << what;
+  EXPECT_NEAR(a.z, b.z, 1e-6f) << what;
+}
+
+TEST(RenderSync, ImportedNormalsFollowAMovedVertexByDefault) {
+  SurfaceMesh m = with_imported_normals();
+  RenderSync rs(m);  // automatic
+  Mirror mirror;
+  mirror.apply(rs, rs.last_result());
+  const Vertex v(6), far(19);  // (1, 1) inside the left half; (4, 3) on the far right edge
+  const Halfedge far_corner = SurfaceMesh::twin(m.halfedge(far));
+  ASSERT_TRUE(!m.is_boundary(far_corner));
+  m.set_position(v, m.position(v) + Vec3{0, 0, 0.5f});
+  mirror.apply(rs, rs.sync());
+  // Area-weighted, the lifted vertex's normal is its flat link's: +z, no longer the imported one.
+  const Vec3 want = expected_normal(m, v);
+  expect_near(want, Vec3{0, 0, 1}, "the lifted vertex's normal");
+  auto n = m.get_halfedge_property<Vec3>("h:normal");
+  for (Halfedge o : m.halfedges(v)) {
+    const Halfedge c = SurfaceMesh::twin(o);
+    if (m.is_boundary(c)) continue;
+    expect_near(render_normal(rs, c), want, "the moved vertex's render normal");
+    expect_near(n[c], want, "written into the mesh's corner normals");
+  }
+  // A neighbour's normal tilts too; a vertex away from the edit keeps its imported normal.
+  const Vertex neighbour(11);  // (1, 2)
+  ASSERT_TRUE(m.find_halfedge(v, neighbour).is_valid());
+  const Vec3 tilted = expected_normal(m, neighbour);
+  EXPECT_GT(std::abs(tilted.x) + std::abs(tilted.y), 0.01f);
+  for (Halfedge o : m.halfedges(neighbour))
+    expect_near(render_normal(rs, SurfaceMesh::twin(o)), tilted, "the neighbour");
+  EXPECT_EQ(render_normal(rs, far_corner), (Vec3{0, 0.6f, 0.8f}));
+  mirror.expect_equal(rs);
+  expect_consistent(rs);
+  expect_matches_fresh(rs);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RenderSync, ACreaseStaysWhenItsVertexMoves) {
+  SurfaceMesh m = with_imported_normals();
+  RenderSync rs(m);
+  const Vertex v(12);  // (2, 2), on the crease
+  const std::size_t before = rs.n_vertices();
+  m.set_position(v, m.position(v) + Vec3{0, 0, 0.5f});
+  rs.sync();
+  EXPECT_EQ(rs.n_vertices(), before);  // still two render vertices at v
+  for (Halfedge o : m.halfedges(v)) {
+    const Halfedge c = SurfaceMesh::twin(o);
+    const int side = face_centroid(m, m.face(c)).x > 2 ? 1 : -1;
+    expect_near(render_normal(rs, c), expected_normal(m, v, side), "each side from its own faces");
+  }
+  expect_consistent(rs);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RenderSync, KeptImportedNormalsDoNotFollow) {
+  SurfaceMesh m = with_imported_normals();
+  RenderSync rs(m, RenderOptions{.normals = NormalSource::attribute});
+  const Vertex v(6);
+  m.set_position(v, m.position(v) + Vec3{0, 0, 0.5f});
+  const SyncResult& r = rs.sync();
+  EXPECT_GT(r.vertices_synced, 0u);  // the position moved
+  for (Halfedge o : m.halfedges(v))
+    EXPECT_EQ(render_normal(rs, SurfaceMesh::twin(o)), (Vec3{0.6f, 0, 0.8f}));
+  EXPECT_EQ(m.get_halfedge_property<Vec3>("h:normal")[SurfaceMesh::twin(m.halfedge(v))], (Vec3{0.6f, 0, 0.8f}));
+  expect_consistent(rs);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RenderSync, RandomEditsWithImportedNormalsFollowing) {
+  random_edit_run(with_imported_normals(), {}, 300);
+}
+
 TEST(RenderSync, TransactionSyncsOnceAtCommit) {
   SurfaceMesh m = build(test::grid(8, true));
   RenderSync rs(m);

@@ -98,7 +98,7 @@ Command add_decimate_command(CLI::App& parent) {
   app->add_option("--feature-weight", o->feature_weight, "Weight of the planes that keep feature edges (0: none)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
-  app->add_flag("--break-seams", o->break_seams, "Allow collapses across and off UV seams");
+  app->add_flag("--break-seams", o->break_seams, "Lift the seam rule of decimation (collapses off a UV seam stay refused)");
   app->add_option("--attribute-weight", o->attribute_weight, "Weight of texture distortion in the error (0: none)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);

@@ -77,21 +77,23 @@ namespace Hedge
         /// <summary>Builds a mesh from triangles with the default options (repair, no welding).</summary>
         /// <param name="positions">x, y, z per vertex.</param>
         /// <param name="triangles">Three vertex indices per triangle, counter-clockwise.</param>
-        public static HalfEdgeMesh FromTriangles(float[] positions, uint[] triangles)
+        public static HalfEdgeMesh FromTriangles(float[] positions, int[] triangles)
         {
+            CheckNotNegative(triangles, "triangles", "a vertex index");
             BuildReport report;
             return Build(positions, triangles, null, BuildOptions.Default, out report, null, null);
         }
 
         /// <summary>Builds a mesh from triangles, welding and repairing as the options say.</summary>
-        public static HalfEdgeMesh FromTriangles(float[] positions, uint[] triangles, BuildOptions options,
+        public static HalfEdgeMesh FromTriangles(float[] positions, int[] triangles, BuildOptions options,
                                                  out BuildReport report)
         {
+            CheckNotNegative(triangles, "triangles", "a vertex index");
             return Build(positions, triangles, null, options, out report, null, null);
         }
 
         /// <summary>Builds a mesh from polygons: faceSizes[i] corners per face, taken in order from indices.</summary>
-        public static HalfEdgeMesh FromPolygons(float[] positions, uint[] indices, uint[] faceSizes,
+        public static HalfEdgeMesh FromPolygons(float[] positions, int[] indices, int[] faceSizes,
                                                 BuildOptions options, out BuildReport report)
         {
             if (faceSizes == null) throw new ArgumentNullException("faceSizes");
@@ -108,11 +110,13 @@ namespace Hedge
         /// became (after welding; a split vertex maps to its first copy).</param>
         /// <param name="faceMap">Optional (null), one entry per input face: the mesh face, or
         /// <see cref="Face.Invalid"/> if it was dropped.</param>
-        public static HalfEdgeMesh Build(float[] positions, uint[] indices, uint[] faceSizes, BuildOptions options,
+        /// <exception cref="ArgumentException">A negative index or face size (ArgumentOutOfRangeException).</exception>
+        public static HalfEdgeMesh Build(float[] positions, int[] indices, int[] faceSizes, BuildOptions options,
                                          out BuildReport report, Vertex[] vertexMap, Face[] faceMap)
         {
             uint vertexCount = VertexCountOf(positions, "positions");
-            if (indices == null) throw new ArgumentNullException("indices");
+            CheckNotNegative(indices, "indices", "a vertex index");
+            if (faceSizes != null) CheckNotNegative(faceSizes, "faceSizes", "a face size");
             int faceCount = faceSizes != null ? faceSizes.Length : indices.Length / 3;
             if (vertexMap != null && vertexMap.Length < vertexCount)
                 throw new ArgumentException("holds " + vertexMap.Length + " entries, " + vertexCount + " needed",
@@ -120,7 +124,7 @@ namespace Hedge
             if (faceMap != null && faceMap.Length < faceCount)
                 throw new ArgumentException("holds " + faceMap.Length + " entries, " + faceCount + " needed", "faceMap");
             IntPtr mesh;
-            int status = Native.hedge_mesh_create(positions, vertexCount, indices, (uint)indices.Length, faceSizes,
+            int status = Native.hedge_mesh_create_int(positions, vertexCount, indices, (uint)indices.Length, faceSizes,
                                                   faceSizes != null ? (uint)faceSizes.Length : 0u, ref options,
                                                   out report, vertexMap, faceMap, out mesh);
             return Created(status, mesh);
@@ -136,30 +140,28 @@ namespace Hedge
         /// <param name="colors">Optional (null): r, g, b, a per engine vertex.</param>
         /// <param name="options">Welding, policy, winding and axes (see <see cref="EngineImportOptions.Unity"/>).</param>
         /// <param name="report">What was welded and repaired.</param>
-        public static HalfEdgeMesh FromEngineMesh(float[] positions, uint[] triangles, float[] normals,
-                                                  float[] texcoords, float[] colors, EngineImportOptions options,
-                                                  out BuildReport report)
-        {
-            uint n = CheckEngineArrays(positions, normals, texcoords, colors);
-            if (triangles == null) throw new ArgumentNullException("triangles");
-            IntPtr mesh;
-            int status = Native.hedge_mesh_from_engine_mesh(positions, n, triangles, (uint)triangles.Length, normals,
-                                                            texcoords, colors, ref options, out report, out mesh);
-            return Created(status, mesh);
-        }
-
-        /// <summary>As above, with int indices (the type of Unity's Mesh.triangles).</summary>
+        /// <exception cref="ArgumentException">A negative index (ArgumentOutOfRangeException).</exception>
         public static HalfEdgeMesh FromEngineMesh(float[] positions, int[] triangles, float[] normals,
                                                   float[] texcoords, float[] colors, EngineImportOptions options,
                                                   out BuildReport report)
         {
             uint n = CheckEngineArrays(positions, normals, texcoords, colors);
-            if (triangles == null) throw new ArgumentNullException("triangles");
+            CheckNotNegative(triangles, "triangles", "a vertex index");
             IntPtr mesh;
             int status = Native.hedge_mesh_from_engine_mesh_int(positions, n, triangles, (uint)triangles.Length,
                                                                 normals, texcoords, colors, ref options, out report,
                                                                 out mesh);
             return Created(status, mesh);
+        }
+
+        // Throws for a null array or a negative entry, which the C ABI would read as a huge uint32_t.
+        static void CheckNotNegative(int[] values, string name, string what)
+        {
+            if (values == null) throw new ArgumentNullException(name);
+            for (int i = 0; i < values.Length; ++i)
+                if (values[i] < 0)
+                    throw new ArgumentOutOfRangeException(name, values[i],
+                                                          name + "[" + i + "] is " + values[i] + ": " + what + " is 0 or more");
         }
 
         static uint VertexCountOf(float[] positions, string name)
@@ -236,6 +238,7 @@ namespace Hedge
             {
                 MeshCounts counts;
                 Status.Check(Native.hedge_mesh_counts(id, out counts));
+                if (counts.HalfEdgeSlots < 0) throw Status.TooLarge("half-edge slots");
                 return counts;
             }
         }
@@ -252,14 +255,14 @@ namespace Hedge
         public Vec3 GetPosition(Vertex v)
         {
             Vec3 p;
-            Status.Check(Native.hedge_mesh_get_position(id, v.Index, out p));
+            Status.Check(Native.hedge_mesh_get_position(id, v.Raw, out p));
             return p;
         }
 
         /// <summary>Moves a vertex; render buffers see it at their next sync. Coordinates must be finite.</summary>
         public void SetPosition(Vertex v, float x, float y, float z)
         {
-            Status.Check(Native.hedge_mesh_set_position(id, v.Index, x, y, z));
+            Status.Check(Native.hedge_mesh_set_position(id, v.Raw, x, y, z));
         }
 
         public void SetPosition(Vertex v, Vec3 p) { SetPosition(v, p.X, p.Y, p.Z); }
@@ -387,7 +390,7 @@ namespace Hedge
         public Vec3 FaceNormal(Face f)
         {
             Vec3 n;
-            Status.Check(Native.hedge_face_normal(id, f.Index, out n));
+            Status.Check(Native.hedge_face_normal(id, f.Raw, out n));
             return n;
         }
 
@@ -395,7 +398,7 @@ namespace Hedge
         public double FaceArea(Face f)
         {
             double a;
-            Status.Check(Native.hedge_face_area(id, f.Index, out a));
+            Status.Check(Native.hedge_face_area(id, f.Raw, out a));
             return a;
         }
 
@@ -454,7 +457,7 @@ namespace Hedge
         public HalfEdge Twin(HalfEdge h)
         {
             uint r;
-            Status.Check(Native.hedge_halfedge_twin(id, h.Index, out r));
+            Status.Check(Native.hedge_halfedge_twin(id, h.Raw, out r));
             return new HalfEdge(r);
         }
 
@@ -462,7 +465,7 @@ namespace Hedge
         public HalfEdge Next(HalfEdge h)
         {
             uint r;
-            Status.Check(Native.hedge_halfedge_next(id, h.Index, out r));
+            Status.Check(Native.hedge_halfedge_next(id, h.Raw, out r));
             return new HalfEdge(r);
         }
 
@@ -470,7 +473,7 @@ namespace Hedge
         public HalfEdge Prev(HalfEdge h)
         {
             uint r;
-            Status.Check(Native.hedge_halfedge_prev(id, h.Index, out r));
+            Status.Check(Native.hedge_halfedge_prev(id, h.Raw, out r));
             return new HalfEdge(r);
         }
 
@@ -478,7 +481,7 @@ namespace Hedge
         public Vertex ToVertex(HalfEdge h)
         {
             uint r;
-            Status.Check(Native.hedge_halfedge_to_vertex(id, h.Index, out r));
+            Status.Check(Native.hedge_halfedge_to_vertex(id, h.Raw, out r));
             return new Vertex(r);
         }
 
@@ -486,7 +489,7 @@ namespace Hedge
         public Vertex FromVertex(HalfEdge h)
         {
             uint r;
-            Status.Check(Native.hedge_halfedge_from_vertex(id, h.Index, out r));
+            Status.Check(Native.hedge_halfedge_from_vertex(id, h.Raw, out r));
             return new Vertex(r);
         }
 
@@ -494,7 +497,7 @@ namespace Hedge
         public Face GetFace(HalfEdge h)
         {
             uint r;
-            Status.Check(Native.hedge_halfedge_face(id, h.Index, out r));
+            Status.Check(Native.hedge_halfedge_face(id, h.Raw, out r));
             return new Face(r);
         }
 
@@ -502,7 +505,7 @@ namespace Hedge
         public Edge GetEdge(HalfEdge h)
         {
             uint r;
-            Status.Check(Native.hedge_halfedge_edge(id, h.Index, out r));
+            Status.Check(Native.hedge_halfedge_edge(id, h.Raw, out r));
             return new Edge(r);
         }
 
@@ -511,7 +514,7 @@ namespace Hedge
         public HalfEdge GetHalfEdge(Vertex v)
         {
             uint r;
-            Status.Check(Native.hedge_vertex_halfedge(id, v.Index, out r));
+            Status.Check(Native.hedge_vertex_halfedge(id, v.Raw, out r));
             return new HalfEdge(r);
         }
 
@@ -519,15 +522,16 @@ namespace Hedge
         public HalfEdge GetHalfEdge(Face f)
         {
             uint r;
-            Status.Check(Native.hedge_face_halfedge(id, f.Index, out r));
+            Status.Check(Native.hedge_face_halfedge(id, f.Raw, out r));
             return new HalfEdge(r);
         }
 
         /// <summary>Half-edge i (0 or 1) of the edge.</summary>
         public HalfEdge GetHalfEdge(Edge e, int i)
         {
+            if (i < 0) throw new ArgumentOutOfRangeException("i", i, "a half-edge of an edge is 0 or 1");
             uint r;
-            Status.Check(Native.hedge_edge_halfedge(id, e.Index, (uint)i, out r));
+            Status.Check(Native.hedge_edge_halfedge(id, e.Raw, (uint)i, out r));
             return new HalfEdge(r);
         }
 
@@ -535,7 +539,7 @@ namespace Hedge
         public bool IsBoundary(Vertex v)
         {
             int r;
-            Status.Check(Native.hedge_vertex_is_boundary(id, v.Index, out r));
+            Status.Check(Native.hedge_vertex_is_boundary(id, v.Raw, out r));
             return r != 0;
         }
 
@@ -543,7 +547,7 @@ namespace Hedge
         public bool IsBoundary(HalfEdge h)
         {
             int r;
-            Status.Check(Native.hedge_halfedge_is_boundary(id, h.Index, out r));
+            Status.Check(Native.hedge_halfedge_is_boundary(id, h.Raw, out r));
             return r != 0;
         }
 
@@ -551,7 +555,7 @@ namespace Hedge
         public bool IsBoundary(Edge e)
         {
             int r;
-            Status.Check(Native.hedge_edge_is_boundary(id, e.Index, out r));
+            Status.Check(Native.hedge_edge_is_boundary(id, e.Raw, out r));
             return r != 0;
         }
 
@@ -559,7 +563,7 @@ namespace Hedge
         public bool IsBoundary(Face f)
         {
             int r;
-            Status.Check(Native.hedge_face_is_boundary(id, f.Index, out r));
+            Status.Check(Native.hedge_face_is_boundary(id, f.Raw, out r));
             return r != 0;
         }
 
@@ -567,7 +571,7 @@ namespace Hedge
         public int Valence(Vertex v)
         {
             uint r;
-            Status.Check(Native.hedge_vertex_valence(id, v.Index, out r));
+            Status.Check(Native.hedge_vertex_valence(id, v.Raw, out r));
             return (int)r;
         }
 
@@ -575,7 +579,7 @@ namespace Hedge
         public int Valence(Face f)
         {
             uint r;
-            Status.Check(Native.hedge_face_valence(id, f.Index, out r));
+            Status.Check(Native.hedge_face_valence(id, f.Raw, out r));
             return (int)r;
         }
 
@@ -584,7 +588,7 @@ namespace Hedge
         public HalfEdge FindHalfEdge(Vertex from, Vertex to)
         {
             uint r;
-            Status.Check(Native.hedge_mesh_find_halfedge(id, from.Index, to.Index, out r));
+            Status.Check(Native.hedge_mesh_find_halfedge(id, from.Raw, to.Raw, out r));
             return new HalfEdge(r);
         }
 
@@ -592,28 +596,28 @@ namespace Hedge
         public bool IsDeleted(Vertex v)
         {
             int r;
-            Status.Check(Native.hedge_vertex_is_deleted(id, v.Index, out r));
+            Status.Check(Native.hedge_vertex_is_deleted(id, v.Raw, out r));
             return r != 0;
         }
 
         public bool IsDeleted(HalfEdge h)
         {
             int r;
-            Status.Check(Native.hedge_halfedge_is_deleted(id, h.Index, out r));
+            Status.Check(Native.hedge_halfedge_is_deleted(id, h.Raw, out r));
             return r != 0;
         }
 
         public bool IsDeleted(Edge e)
         {
             int r;
-            Status.Check(Native.hedge_edge_is_deleted(id, e.Index, out r));
+            Status.Check(Native.hedge_edge_is_deleted(id, e.Raw, out r));
             return r != 0;
         }
 
         public bool IsDeleted(Face f)
         {
             int r;
-            Status.Check(Native.hedge_face_is_deleted(id, f.Index, out r));
+            Status.Check(Native.hedge_face_is_deleted(id, f.Raw, out r));
             return r != 0;
         }
 
@@ -627,7 +631,7 @@ namespace Hedge
         public int GetVertexHalfEdges(Vertex v, HalfEdge[] result)
         {
             uint count;
-            int status = Native.hedge_vertex_halfedges(id, v.Index, result, Status.Capacity(result), out count);
+            int status = Native.hedge_vertex_halfedges(id, v.Raw, result, Status.Capacity(result), out count);
             return Status.Filled(status, result == null, count);
         }
 
@@ -635,7 +639,7 @@ namespace Hedge
         public int GetVertexNeighbours(Vertex v, Vertex[] result)
         {
             uint count;
-            int status = Native.hedge_vertex_vertices(id, v.Index, result, Status.Capacity(result), out count);
+            int status = Native.hedge_vertex_vertices(id, v.Raw, result, Status.Capacity(result), out count);
             return Status.Filled(status, result == null, count);
         }
 
@@ -643,7 +647,7 @@ namespace Hedge
         public int GetVertexFaces(Vertex v, Face[] result)
         {
             uint count;
-            int status = Native.hedge_vertex_faces(id, v.Index, result, Status.Capacity(result), out count);
+            int status = Native.hedge_vertex_faces(id, v.Raw, result, Status.Capacity(result), out count);
             return Status.Filled(status, result == null, count);
         }
 
@@ -651,7 +655,7 @@ namespace Hedge
         public int GetFaceVertices(Face f, Vertex[] result)
         {
             uint count;
-            int status = Native.hedge_face_vertices(id, f.Index, result, Status.Capacity(result), out count);
+            int status = Native.hedge_face_vertices(id, f.Raw, result, Status.Capacity(result), out count);
             return Status.Filled(status, result == null, count);
         }
 
@@ -660,7 +664,7 @@ namespace Hedge
         public int GetFaceHalfEdges(Face f, HalfEdge[] result)
         {
             uint count;
-            int status = Native.hedge_face_halfedges(id, f.Index, result, Status.Capacity(result), out count);
+            int status = Native.hedge_face_halfedges(id, f.Raw, result, Status.Capacity(result), out count);
             return Status.Filled(status, result == null, count);
         }
 
@@ -677,7 +681,7 @@ namespace Hedge
         public bool CanSplitEdge(Edge e)
         {
             int ok;
-            return Ok(Native.hedge_can_split_edge(id, e.Index, out ok), ok);
+            return Ok(Native.hedge_can_split_edge(id, e.Raw, out ok), ok);
         }
 
         /// <summary>True if collapsing h keeps the mesh a valid manifold (link condition, no valence
@@ -685,14 +689,14 @@ namespace Hedge
         public bool CanCollapse(HalfEdge h)
         {
             int ok;
-            return Ok(Native.hedge_can_collapse(id, h.Index, out ok), ok);
+            return Ok(Native.hedge_can_collapse(id, h.Raw, out ok), ok);
         }
 
         /// <summary>True if the edge is interior between two triangles and can be turned. O(valence).</summary>
         public bool CanFlip(Edge e)
         {
             int ok;
-            return Ok(Native.hedge_can_flip(id, e.Index, out ok), ok);
+            return Ok(Native.hedge_can_flip(id, e.Raw, out ok), ok);
         }
 
         public bool CanFlip(HalfEdge h) { return CanFlip(h.Edge); }
@@ -700,7 +704,7 @@ namespace Hedge
         public bool CanSplitFace(Face f)
         {
             int ok;
-            return Ok(Native.hedge_can_split_face(id, f.Index, out ok), ok);
+            return Ok(Native.hedge_can_split_face(id, f.Raw, out ok), ok);
         }
 
         /// <summary>True if the face of h0 and h1 can be cut along a new edge from the target of h0 to the
@@ -708,7 +712,7 @@ namespace Hedge
         public bool CanCutFace(HalfEdge h0, HalfEdge h1)
         {
             int ok;
-            return Ok(Native.hedge_can_cut_face(id, h0.Index, h1.Index, out ok), ok);
+            return Ok(Native.hedge_can_cut_face(id, h0.Raw, h1.Raw, out ok), ok);
         }
 
         /// <summary>True if a face with the first count corners (counter-clockwise) can be added while every
@@ -737,20 +741,20 @@ namespace Hedge
         public bool CanRemoveFace(Face f)
         {
             int ok;
-            return Ok(Native.hedge_can_remove_face(id, f.Index, out ok), ok);
+            return Ok(Native.hedge_can_remove_face(id, f.Raw, out ok), ok);
         }
 
         public bool CanRemoveVertex(Vertex v)
         {
             int ok;
-            return Ok(Native.hedge_can_remove_vertex(id, v.Index, out ok), ok);
+            return Ok(Native.hedge_can_remove_vertex(id, v.Raw, out ok), ok);
         }
 
         /// <summary>True if h is a boundary half-edge whose loop has at least 3 edges.</summary>
         public bool CanFillHole(HalfEdge h)
         {
             int ok;
-            return Ok(Native.hedge_can_fill_hole(id, h.Index, out ok), ok);
+            return Ok(Native.hedge_can_fill_hole(id, h.Raw, out ok), ok);
         }
 
         static void CheckSpan(Array array, int count, string name)
@@ -761,14 +765,26 @@ namespace Hedge
         }
 
         // =========================================================================================
-        // Edits. A refused edit returns false / an invalid handle / 0 and changes nothing.
-        // Render buffers of the mesh see every edit at their next sync.
+        // Edits. A refused edit returns false / an invalid handle / 0 and changes nothing; LastRefusal
+        // then says why. Render buffers of the mesh see every edit at their next sync.
         // =========================================================================================
 
-        // True if the status says "refused"; throws for any other failure.
-        static bool WasRefused(int status)
+        /// <summary>Why the last edit of this mesh was refused (the library's message, as hedge_last_error()
+        /// gave it right after the call, e.g. "collapse of halfedge 12 refused: it would pull a seam vertex off
+        /// its seam; nothing was changed"), or null if the last edit was done. Every edit (split, collapse,
+        /// flip, cut, add, remove, fill) sets it; nothing throws for a refusal, and only a refusal allocates
+        /// (the string).</summary>
+        public string LastRefusal { get; private set; }
+
+        // True if the status says "refused" (then LastRefusal holds the reason); throws for any other failure.
+        bool WasRefused(int status)
         {
-            if (status == Refused) return true;
+            if (status == Refused)
+            {
+                LastRefusal = Status.FromUtf8(Native.hedge_last_error());
+                return true;
+            }
+            LastRefusal = null;
             Status.Check(status);
             return false;
         }
@@ -779,7 +795,7 @@ namespace Hedge
         public Vertex SplitEdge(Edge e, Vec3 p)
         {
             uint v;
-            return WasRefused(Native.hedge_split_edge(id, e.Index, p.X, p.Y, p.Z, out v)) ? Vertex.Invalid : new Vertex(v);
+            return WasRefused(Native.hedge_split_edge(id, e.Raw, p.X, p.Y, p.Z, out v)) ? Vertex.Invalid : new Vertex(v);
         }
 
         public Vertex SplitEdge(Edge e, float x, float y, float z) { return SplitEdge(e, new Vec3(x, y, z)); }
@@ -791,12 +807,12 @@ namespace Hedge
         public Vertex Collapse(HalfEdge h)
         {
             uint v;
-            return WasRefused(Native.hedge_collapse(id, h.Index, out v)) ? Vertex.Invalid : new Vertex(v);
+            return WasRefused(Native.hedge_collapse(id, h.Raw, out v)) ? Vertex.Invalid : new Vertex(v);
         }
 
         /// <summary>Turns the edge to join the opposite corners of its two triangles; the edge keeps its index.</summary>
         /// <returns>False if <see cref="CanFlip(Edge)"/> refuses.</returns>
-        public bool Flip(Edge e) { return !WasRefused(Native.hedge_flip(id, e.Index)); }
+        public bool Flip(Edge e) { return !WasRefused(Native.hedge_flip(id, e.Raw)); }
 
         public bool Flip(HalfEdge h) { return Flip(h.Edge); }
 
@@ -806,7 +822,7 @@ namespace Hedge
         public Vertex SplitFace(Face f, Vec3 p)
         {
             uint v;
-            return WasRefused(Native.hedge_split_face(id, f.Index, p.X, p.Y, p.Z, out v)) ? Vertex.Invalid : new Vertex(v);
+            return WasRefused(Native.hedge_split_face(id, f.Raw, p.X, p.Y, p.Z, out v)) ? Vertex.Invalid : new Vertex(v);
         }
 
         public Vertex SplitFace(Face f, float x, float y, float z) { return SplitFace(f, new Vec3(x, y, z)); }
@@ -818,7 +834,7 @@ namespace Hedge
         public HalfEdge CutFace(HalfEdge h0, HalfEdge h1)
         {
             uint h;
-            return WasRefused(Native.hedge_cut_face(id, h0.Index, h1.Index, out h)) ? HalfEdge.Invalid : new HalfEdge(h);
+            return WasRefused(Native.hedge_cut_face(id, h0.Raw, h1.Raw, out h)) ? HalfEdge.Invalid : new HalfEdge(h);
         }
 
         /// <summary>Splits every live face at its centroid. Never refused.</summary>
@@ -857,11 +873,11 @@ namespace Hedge
 
         /// <summary>Removes the face; edges and vertices it leaves unused go too.</summary>
         /// <returns>False if <see cref="CanRemoveFace"/> refuses.</returns>
-        public bool RemoveFace(Face f) { return !WasRefused(Native.hedge_remove_face(id, f.Index)); }
+        public bool RemoveFace(Face f) { return !WasRefused(Native.hedge_remove_face(id, f.Raw)); }
 
         /// <summary>Removes the vertex, its faces and whatever they leave unused.</summary>
         /// <returns>False if <see cref="CanRemoveVertex"/> refuses.</returns>
-        public bool RemoveVertex(Vertex v) { return !WasRefused(Native.hedge_remove_vertex(id, v.Index)); }
+        public bool RemoveVertex(Vertex v) { return !WasRefused(Native.hedge_remove_vertex(id, v.Raw)); }
 
         /// <summary>Fills the boundary loop of h with triangles (shortest diagonals first).</summary>
         /// <param name="h">A boundary half-edge.</param>
@@ -871,7 +887,7 @@ namespace Hedge
         public int FillHole(HalfEdge h, Face[] newFaces = null)
         {
             uint count;
-            return WasRefused(Native.hedge_fill_hole(id, h.Index, newFaces, Status.Capacity(newFaces), out count)) ? 0 : (int)count;
+            return WasRefused(Native.hedge_fill_hole(id, h.Raw, newFaces, Status.Capacity(newFaces), out count)) ? 0 : (int)count;
         }
 
         /// <summary>Moves the faces out of this mesh into a new mesh, with all their properties. Vertices the

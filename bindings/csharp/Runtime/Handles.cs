@@ -1,7 +1,9 @@
-// Element handles: one uint index each, blittable, so arrays of them go to the C ABI as uint*.
+// Element handles: one int index each, blittable, so arrays of them go to the C ABI as its
+// uint32_t* (the same bits: the C ABI's "none", 0xFFFFFFFF, is -1 here).
 //
-// A handle is only an index; the mesh it belongs to is not part of it. Index InvalidIndex
-// (0xFFFFFFFF) means "none": the face of a boundary half-edge, a refused edit's result.
+// A handle is only an index; the mesh it belongs to is not part of it. Index InvalidIndex (-1)
+// means "none": the face of a boundary half-edge, a refused edit's result. A handle is made from an
+// index of 0 or more; a negative one throws ArgumentOutOfRangeException (use Invalid for "none").
 using System;
 using System.Runtime.InteropServices;
 
@@ -12,20 +14,24 @@ namespace Hedge
     public readonly struct Vertex : IEquatable<Vertex>
     {
         /// <summary>The "none" index.</summary>
-        public const uint InvalidIndex = 0xFFFFFFFFu;
+        public const int InvalidIndex = -1;
 
-        /// <summary>The vertex index (a slot: 0 .. vertex slot count - 1).</summary>
-        public readonly uint Index;
+        /// <summary>The vertex index (a slot: 0 .. vertex slot count - 1), or -1 for none.</summary>
+        public readonly int Index;
 
-        public Vertex(uint index) { Index = index; }
+        /// <summary>The vertex of index 0 or more.</summary>
+        public Vertex(int index) { Index = Handle.Checked(index); }
+        internal Vertex(uint raw) { Index = unchecked((int)raw); }
+        /// <summary>The index as the C ABI takes it (0xFFFFFFFF for none).</summary>
+        internal uint Raw { get { return unchecked((uint)Index); } }
 
         /// <summary>The handle that names no vertex.</summary>
-        public static Vertex Invalid { get { return new Vertex(InvalidIndex); } }
+        public static Vertex Invalid { get { return new Vertex(uint.MaxValue); } }
         public bool IsValid { get { return Index != InvalidIndex; } }
 
         public bool Equals(Vertex other) { return Index == other.Index; }
         public override bool Equals(object obj) { return obj is Vertex && Equals((Vertex)obj); }
-        public override int GetHashCode() { return (int)Index; }
+        public override int GetHashCode() { return Index; }
         public static bool operator ==(Vertex a, Vertex b) { return a.Index == b.Index; }
         public static bool operator !=(Vertex a, Vertex b) { return a.Index != b.Index; }
         public override string ToString() { return IsValid ? "v" + Index : "v(invalid)"; }
@@ -36,22 +42,26 @@ namespace Hedge
     [StructLayout(LayoutKind.Sequential)]
     public readonly struct HalfEdge : IEquatable<HalfEdge>
     {
-        public readonly uint Index;
+        /// <summary>The index, or -1 for none.</summary>
+        public readonly int Index;
 
-        public HalfEdge(uint index) { Index = index; }
+        /// <summary>The half-edge of index 0 or more.</summary>
+        public HalfEdge(int index) { Index = Handle.Checked(index); }
+        internal HalfEdge(uint raw) { Index = unchecked((int)raw); }
+        internal uint Raw { get { return unchecked((uint)Index); } }
 
-        public static HalfEdge Invalid { get { return new HalfEdge(Vertex.InvalidIndex); } }
+        public static HalfEdge Invalid { get { return new HalfEdge(uint.MaxValue); } }
         public bool IsValid { get { return Index != Vertex.InvalidIndex; } }
 
         /// <summary>The opposite half-edge of the same edge (index arithmetic, not checked against a
         /// mesh; <see cref="HalfEdgeMesh.Twin"/> checks). Invalid stays invalid.</summary>
-        public HalfEdge Twin { get { return IsValid ? new HalfEdge(Index ^ 1u) : Invalid; } }
+        public HalfEdge Twin { get { return IsValid ? new HalfEdge(Index ^ 1) : Invalid; } }
         /// <summary>The edge of this half-edge (index arithmetic). Invalid stays invalid.</summary>
         public Edge Edge { get { return IsValid ? new Edge(Index >> 1) : Hedge.Edge.Invalid; } }
 
         public bool Equals(HalfEdge other) { return Index == other.Index; }
         public override bool Equals(object obj) { return obj is HalfEdge && Equals((HalfEdge)obj); }
-        public override int GetHashCode() { return (int)Index; }
+        public override int GetHashCode() { return Index; }
         public static bool operator ==(HalfEdge a, HalfEdge b) { return a.Index == b.Index; }
         public static bool operator !=(HalfEdge a, HalfEdge b) { return a.Index != b.Index; }
         public override string ToString() { return IsValid ? "h" + Index : "h(invalid)"; }
@@ -61,23 +71,27 @@ namespace Hedge
     [StructLayout(LayoutKind.Sequential)]
     public readonly struct Edge : IEquatable<Edge>
     {
-        public readonly uint Index;
+        /// <summary>The index, or -1 for none.</summary>
+        public readonly int Index;
 
-        public Edge(uint index) { Index = index; }
+        /// <summary>The edge of index 0 or more.</summary>
+        public Edge(int index) { Index = Handle.Checked(index); }
+        internal Edge(uint raw) { Index = unchecked((int)raw); }
+        internal uint Raw { get { return unchecked((uint)Index); } }
 
-        public static Edge Invalid { get { return new Edge(Vertex.InvalidIndex); } }
+        public static Edge Invalid { get { return new Edge(uint.MaxValue); } }
         public bool IsValid { get { return Index != Vertex.InvalidIndex; } }
 
         /// <summary>Half-edge i (0 or 1) of the edge (index arithmetic, not checked against a mesh).</summary>
         public HalfEdge GetHalfEdge(int i)
         {
             if (i != 0 && i != 1) throw new ArgumentOutOfRangeException("i", i, "a half-edge of an edge is 0 or 1");
-            return IsValid ? new HalfEdge(Index * 2u + (uint)i) : HalfEdge.Invalid;
+            return IsValid ? new HalfEdge(Index * 2 + i) : HalfEdge.Invalid;
         }
 
         public bool Equals(Edge other) { return Index == other.Index; }
         public override bool Equals(object obj) { return obj is Edge && Equals((Edge)obj); }
-        public override int GetHashCode() { return (int)Index; }
+        public override int GetHashCode() { return Index; }
         public static bool operator ==(Edge a, Edge b) { return a.Index == b.Index; }
         public static bool operator !=(Edge a, Edge b) { return a.Index != b.Index; }
         public override string ToString() { return IsValid ? "e" + Index : "e(invalid)"; }
@@ -87,19 +101,35 @@ namespace Hedge
     [StructLayout(LayoutKind.Sequential)]
     public readonly struct Face : IEquatable<Face>
     {
-        public readonly uint Index;
+        /// <summary>The index, or -1 for none.</summary>
+        public readonly int Index;
 
-        public Face(uint index) { Index = index; }
+        /// <summary>The face of index 0 or more.</summary>
+        public Face(int index) { Index = Handle.Checked(index); }
+        internal Face(uint raw) { Index = unchecked((int)raw); }
+        internal uint Raw { get { return unchecked((uint)Index); } }
 
-        public static Face Invalid { get { return new Face(Vertex.InvalidIndex); } }
+        public static Face Invalid { get { return new Face(uint.MaxValue); } }
         public bool IsValid { get { return Index != Vertex.InvalidIndex; } }
 
         public bool Equals(Face other) { return Index == other.Index; }
         public override bool Equals(object obj) { return obj is Face && Equals((Face)obj); }
-        public override int GetHashCode() { return (int)Index; }
+        public override int GetHashCode() { return Index; }
         public static bool operator ==(Face a, Face b) { return a.Index == b.Index; }
         public static bool operator !=(Face a, Face b) { return a.Index != b.Index; }
         public override string ToString() { return IsValid ? "f" + Index : "f(invalid)"; }
+    }
+
+    static class Handle
+    {
+        // An index given to a handle's public constructor: 0 or more.
+        internal static int Checked(int index)
+        {
+            if (index < 0)
+                throw new ArgumentOutOfRangeException("index", index,
+                                                      "an element index is 0 or more (Invalid names no element)");
+            return index;
+        }
     }
 
     /// <summary>A point or direction of three floats (x, y, z), laid out as the C ABI's float[3].</summary>

@@ -85,6 +85,13 @@ namespace Hedge
             return new HedgeException((HedgeStatus)status, FromUtf8(Native.hedge_last_error()));
         }
 
+        /// <summary>The exception for a count beyond int.MaxValue, which the binding's int counts cannot hold.</summary>
+        internal static OverflowException TooLarge(string what)
+        {
+            return new OverflowException("more than " + int.MaxValue + " " + what +
+                                         ": beyond the int counts and indices of the C# binding");
+        }
+
         internal static string Name(HedgeStatus status)
         {
             return FromUtf8(Native.hedge_status_string((int)status));

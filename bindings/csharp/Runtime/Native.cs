@@ -36,6 +36,12 @@ namespace Hedge
         internal static extern int hedge_mesh_create(float[] positions, uint vertexCount, uint[] indices,
             uint indexCount, uint[] faceSizes, uint faceCount, ref BuildOptions options, out BuildReport report,
             [Out] Vertex[] vertexMap, [Out] Face[] faceMap, out IntPtr mesh);
+        // The same function with int[] indices and face sizes (the binding's public type; same bits).
+        [DllImport(Library, EntryPoint = "hedge_mesh_create", CallingConvention = CallingConvention.Cdecl,
+            ExactSpelling = true)]
+        internal static extern int hedge_mesh_create_int(float[] positions, uint vertexCount, int[] indices,
+            uint indexCount, int[] faceSizes, uint faceCount, ref BuildOptions options, out BuildReport report,
+            [Out] Vertex[] vertexMap, [Out] Face[] faceMap, out IntPtr mesh);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_mesh_destroy(IntPtr mesh);
 
@@ -265,6 +271,11 @@ namespace Hedge
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_render_compact(IntPtr render, [Out] uint[] vertexMap, uint vertexCapacity,
             out uint vertexCount, [Out] uint[] triangleMap, uint triangleCapacity, out uint triangleCount);
+        // The same function with int[] maps (freed slots: -1, the same bits as 0xFFFFFFFF).
+        [DllImport(Library, EntryPoint = "hedge_render_compact", CallingConvention = CallingConvention.Cdecl,
+            ExactSpelling = true)]
+        internal static extern int hedge_render_compact_int(IntPtr render, [Out] int[] vertexMap, uint vertexCapacity,
+            out uint vertexCount, [Out] int[] triangleMap, uint triangleCapacity, out uint triangleCount);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_render_counts(IntPtr render, out BufferCounts counts);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]

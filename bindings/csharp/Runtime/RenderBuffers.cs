@@ -71,6 +71,7 @@ namespace Hedge
             {
                 BufferCounts counts;
                 Status.Check(Native.hedge_render_counts(id, out counts));
+                if (counts.IndexCount < 0 || counts.IndexCapacity < 0) throw Status.TooLarge("index-buffer entries");
                 return counts;
             }
         }
@@ -157,14 +158,13 @@ namespace Hedge
 
         /// <summary>Removes the free slots by packing the live slots in their current order; upload both buffers again
         /// afterwards. Outside a transaction it syncs pending edits first. Each map is optional (null): old
-        /// render-vertex slot -> new slot, old triangle slot -> new triangle slot (freed slots map to
-        /// 0xFFFFFFFF); they must hold the vertex count and index count / 3 of <see cref="Counts"/> after that
-        /// sync.</summary>
-        public void Compact(uint[] vertexMap = null, uint[] triangleMap = null)
+        /// render-vertex slot -> new slot, old triangle slot -> new triangle slot (freed slots map to -1);
+        /// they must hold the vertex count and index count / 3 of <see cref="Counts"/> after that sync.</summary>
+        public void Compact(int[] vertexMap = null, int[] triangleMap = null)
         {
             uint vertexCount, triangleCount;
-            Status.Check(Native.hedge_render_compact(id, vertexMap, Status.Capacity(vertexMap), out vertexCount, triangleMap,
-                                                     Status.Capacity(triangleMap), out triangleCount));
+            Status.Check(Native.hedge_render_compact_int(id, vertexMap, Status.Capacity(vertexMap), out vertexCount,
+                                                         triangleMap, Status.Capacity(triangleMap), out triangleCount));
         }
 
         // =========================================================================================
@@ -185,16 +185,8 @@ namespace Hedge
         /// <summary>Copies the <see cref="VertexStream.Vertices"/> stream.</summary>
         public int CopyVertices(float[] buffer) { return CopyStream(VertexStream.Vertices, buffer); }
 
-        /// <summary>Copies the index buffer (3 entries per triangle slot).</summary>
-        public int CopyIndices(uint[] buffer)
-        {
-            ulong count;
-            int status = Native.hedge_render_copy_index_data(id, buffer, buffer != null ? (ulong)buffer.Length : 0,
-                                                             out count);
-            return Status.Filled(status, buffer == null, count);
-        }
-
-        /// <summary>Copies the index buffer into an int array (Unity's Mesh.triangles type).</summary>
+        /// <summary>Copies the index buffer (3 entries per triangle slot) into an int array (Unity's
+        /// Mesh.triangles type).</summary>
         public int CopyIndices(int[] buffer)
         {
             ulong count;
@@ -405,12 +397,12 @@ namespace Hedge
             return Status.Filled(status, result == null, count);
         }
 
-        /// <summary>The render vertex of the corner the half-edge enters; 0xFFFFFFFF for a boundary half-edge.</summary>
-        public uint GetRenderVertex(HalfEdge corner)
+        /// <summary>The render vertex of the corner the half-edge enters; -1 for a boundary half-edge.</summary>
+        public int GetRenderVertex(HalfEdge corner)
         {
             uint rv;
-            Status.Check(Native.hedge_render_corner_vertex(id, corner.Index, out rv));
-            return rv;
+            Status.Check(Native.hedge_render_corner_vertex(id, corner.Raw, out rv));
+            return unchecked((int)rv);
         }
 
         /// <summary>The triangle slots of a face: triangles [First, First + Count) of the index buffer (indices
@@ -418,8 +410,8 @@ namespace Hedge
         public SlotRange GetFaceTriangles(Face f)
         {
             uint first, count;
-            Status.Check(Native.hedge_render_face_triangles(id, f.Index, out first, out count));
-            return new SlotRange(first, count);
+            Status.Check(Native.hedge_render_face_triangles(id, f.Raw, out first, out count));
+            return new SlotRange((int)first, (int)count);
         }
     }
 }

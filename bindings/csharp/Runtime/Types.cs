@@ -2,7 +2,9 @@
 // the field types and order of its C counterpart (int32 booleans stay int fields behind bool
 // properties), so it is blittable and passed by pointer without conversion; FractureOptions and the
 // shard record are the exceptions, their fixed-size arrays (ByValArray) copied by the marshaller once
-// per fracture. The byte sizes are checked against the header's layouts by the tests.
+// per fracture. The byte sizes are checked against the header's layouts by the tests. Counts and
+// slot indices, uint32_t in the C ABI, are int here, the type Unity's APIs take: the same bits for
+// every value up to int.MaxValue, and the binding's Counts properties refuse a mesh beyond that.
 using System;
 using System.Runtime.InteropServices;
 
@@ -44,11 +46,14 @@ namespace Hedge
     {
         /// <summary>No normal stream.</summary>
         None = 0,
-        /// <summary>The mesh's corner or vertex normals; none if it has none.</summary>
+        /// <summary>The mesh's corner or vertex normals as they are: imported normals are kept, a moved
+        /// vertex keeps its normal. None if the mesh has none.</summary>
         Attribute = 1,
         /// <summary>Area-weighted smooth vertex normals.</summary>
         Computed = 2,
-        /// <summary>Attribute if the mesh has normals, computed otherwise.</summary>
+        /// <summary>The default. The mesh's normals if it has some, following the geometry: each sync
+        /// recomputes the normals about what the edits touched (into the mesh's normals; creases stay).
+        /// Computed normals if the mesh has none.</summary>
         Automatic = 3,
     }
 
@@ -92,23 +97,23 @@ namespace Hedge
     public struct BuildReport
     {
         /// <summary>Input vertices merged into another by welding.</summary>
-        public uint WeldedVertices;
+        public int WeldedVertices;
         /// <summary>Faces dropped: fewer than 3 distinct corners.</summary>
-        public uint DegenerateFaces;
+        public int DegenerateFaces;
         /// <summary>Consecutive repeated corners removed from kept faces.</summary>
-        public uint RepeatedCorners;
+        public int RepeatedCorners;
         /// <summary>Faces whose winding was reversed.</summary>
-        public uint ReorientedFaces;
+        public int ReorientedFaces;
         /// <summary>Input edges cut apart.</summary>
-        public uint NonManifoldEdges;
+        public int NonManifoldEdges;
         /// <summary>Vertices whose faces formed several fans.</summary>
-        public uint NonManifoldVertices;
+        public int NonManifoldVertices;
         /// <summary>Vertices added to split them.</summary>
-        public uint DuplicatedVertices;
+        public int DuplicatedVertices;
         /// <summary>Vertices no face uses (kept; not a repair).</summary>
-        public uint IsolatedVertices;
+        public int IsolatedVertices;
         /// <summary>Total repairs (welding and isolated vertices excluded).</summary>
-        public uint Repairs;
+        public int Repairs;
     }
 
     /// <summary>Element counts (32 bytes). Live counts skip deleted elements; slot counts include
@@ -117,14 +122,14 @@ namespace Hedge
     [StructLayout(LayoutKind.Sequential)]
     public struct MeshCounts
     {
-        public uint Vertices;
-        public uint HalfEdges;
-        public uint Edges;
-        public uint Faces;
-        public uint VertexSlots;
-        public uint HalfEdgeSlots;
-        public uint EdgeSlots;
-        public uint FaceSlots;
+        public int Vertices;
+        public int HalfEdges;
+        public int Edges;
+        public int Faces;
+        public int VertexSlots;
+        public int HalfEdgeSlots;
+        public int EdgeSlots;
+        public int FaceSlots;
 
         public override string ToString()
         {
@@ -276,7 +281,7 @@ namespace Hedge
         /// <summary>In [0, 1]: how far points stray from even angles and from the ring's radius.</summary>
         public double Jitter;
         /// <summary>Break points on the ring.</summary>
-        public uint Points;
+        public int Points;
         uint reserved;
     }
 
@@ -291,7 +296,7 @@ namespace Hedge
         [MarshalAs(UnmanagedType.ByValArray, SizeConst = MaxRings)]
         public FractureRing[] Rings;
         /// <summary>Rings used, 0 to <see cref="MaxRings"/>.</summary>
-        public uint RingCount;
+        public int RingCount;
         int absolute;
         /// <summary>Grain direction, nonzero when <see cref="GrainStretch"/> is greater than 1.</summary>
         public Vec3 Grain;
@@ -476,7 +481,7 @@ namespace Hedge
     [StructLayout(LayoutKind.Sequential)]
     public struct VertexLayout
     {
-        public uint Stride;
+        public int Stride;
         public int Position;
         public int Normal;
         public int Texcoord;
@@ -493,10 +498,16 @@ namespace Hedge
     [StructLayout(LayoutKind.Sequential)]
     public struct SlotRange
     {
-        public uint First;
-        public uint Count;
+        public int First;
+        public int Count;
 
-        public SlotRange(uint first, uint count) { First = first; Count = count; }
+        public SlotRange(int first, int count)
+        {
+            if (first < 0) throw new ArgumentOutOfRangeException("first", first, "a slot index is 0 or more");
+            if (count < 0) throw new ArgumentOutOfRangeException("count", count, "a slot count is 0 or more");
+            First = first;
+            Count = count;
+        }
         public override string ToString() { return "[" + First + ", " + (First + Count) + ")"; }
     }
 
@@ -510,11 +521,11 @@ namespace Hedge
         /// <summary>Bytes in the index ranges.</summary>
         public ulong IndexBytes;
         /// <summary>Rewritten render-vertex ranges.</summary>
-        public uint VertexRangeCount;
+        public int VertexRangeCount;
         /// <summary>Rewritten index-buffer ranges (in indices, not triangles).</summary>
-        public uint IndexRangeCount;
-        public uint FacesSynced;
-        public uint VerticesSynced;
+        public int IndexRangeCount;
+        public int FacesSynced;
+        public int VerticesSynced;
         int resized;
         int full;
 
@@ -532,23 +543,23 @@ namespace Hedge
     public struct BufferCounts
     {
         /// <summary>Render vertex slots, free ones included: the vertex buffer's length in vertices.</summary>
-        public uint VertexSlots;
+        public int VertexSlots;
         /// <summary>The index buffer's length in indices (3 per triangle slot).</summary>
-        public uint IndexCount;
+        public int IndexCount;
         /// <summary>Render vertex slots in use.</summary>
-        public uint Vertices;
+        public int Vertices;
         /// <summary>Triangle slots in use.</summary>
-        public uint Triangles;
+        public int Triangles;
         /// <summary>Render vertices beyond one per used mesh vertex: what seams cost.</summary>
-        public uint SeamSplits;
+        public int SeamSplits;
         /// <summary>Degenerate triangle slots waiting for reuse or compaction.</summary>
-        public uint FreeTriangleSlots;
+        public int FreeTriangleSlots;
         /// <summary>Bytes of the whole vertex and index buffers (a full upload).</summary>
         public ulong BufferBytes;
         /// <summary>Render vertex slots to allocate (at least VertexSlots).</summary>
-        public uint VertexCapacity;
+        public int VertexCapacity;
         /// <summary>Index-buffer entries to allocate (at least IndexCount).</summary>
-        public uint IndexCapacity;
+        public int IndexCapacity;
     }
 
     /// <summary>Options for <c>HalfEdgeMesh.FromEngineMesh</c> (24 bytes).</summary>

@@ -14,7 +14,7 @@ namespace Hedge.Tests
 
         // A unit quad as two triangles with their own copies of the shared corners: 6 input vertices.
         static readonly float[] SplitQuad = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0 };
-        static readonly uint[] SplitQuadTriangles = { 0, 1, 2, 3, 4, 5 };
+        static readonly int[] SplitQuadTriangles = { 0, 1, 2, 3, 4, 5 };
 
         static void Welding()
         {
@@ -24,8 +24,8 @@ namespace Hedge.Tests
             {
                 Check.Equal(6, apart.VertexCount, "no welding: two separate triangles");
                 Check.Equal(6, apart.EdgeCount);
-                Check.Equal(0u, report.WeldedVertices);
-                Check.Equal(0u, report.Repairs);
+                Check.Equal(0, report.WeldedVertices);
+                Check.Equal(0, report.Repairs);
                 Check.Valid(apart);
             }
 
@@ -35,7 +35,7 @@ namespace Hedge.Tests
             using (HalfEdgeMesh welded = HalfEdgeMesh.Build(SplitQuad, SplitQuadTriangles, null, options, out report,
                                                             vertexMap, faceMap))
             {
-                Check.Equal(2u, report.WeldedVertices);
+                Check.Equal(2, report.WeldedVertices);
                 Check.Equal(4, welded.VertexCount);
                 Check.Equal(5, welded.EdgeCount, "the diagonal is shared");
                 Check.Equal(2, welded.FaceCount);
@@ -60,7 +60,7 @@ namespace Hedge.Tests
             using (HalfEdgeMesh welded = HalfEdgeMesh.FromTriangles(near, SplitQuadTriangles, options, out report))
             {
                 Check.Equal(4, welded.VertexCount);
-                Check.Equal(2u, report.WeldedVertices);
+                Check.Equal(2, report.WeldedVertices);
                 Check.Valid(welded);
             }
             options.Weld = Weld.Exact;
@@ -68,9 +68,9 @@ namespace Hedge.Tests
             {
                 // Exact welding keeps the near copy apart and merges only input 4 into input 2: the two
                 // triangles then touch at a single vertex, which repair splits again.
-                Check.Equal(1u, report.WeldedVertices);
-                Check.Equal(1u, report.NonManifoldVertices);
-                Check.Equal(1u, report.DuplicatedVertices);
+                Check.Equal(1, report.WeldedVertices);
+                Check.Equal(1, report.NonManifoldVertices);
+                Check.Equal(1, report.DuplicatedVertices);
                 Check.Equal(6, exact.VertexCount);
                 Check.Equal(6, exact.EdgeCount, "no shared edge");
                 Check.Valid(exact);
@@ -82,14 +82,14 @@ namespace Hedge.Tests
             // Three triangles on the edge 0-1 (non-manifold), one degenerate triangle (2, 2, 5) and a
             // neighbour of the first across the edge 1-2.
             float[] positions = { 0, 0, 0, 1, 0, 0, 0.5f, 1, 0, 0.5f, -1, 0, 0.5f, 0, 1, 1.5f, 1, 0 };
-            uint[] triangles = { 0, 1, 2, 1, 0, 3, 0, 1, 4, 2, 2, 5, 2, 1, 5 };
+            int[] triangles = { 0, 1, 2, 1, 0, 3, 0, 1, 4, 2, 2, 5, 2, 1, 5 };
             BuildOptions options = BuildOptions.Default;
             BuildReport report;
             var faceMap = new Face[5];
             using (HalfEdgeMesh mesh = HalfEdgeMesh.Build(positions, triangles, null, options, out report, null, faceMap))
             {
                 Check.True(report.NonManifoldEdges >= 1, "the edge 0-1 is cut apart: " + report.NonManifoldEdges);
-                Check.Equal(1u, report.DegenerateFaces);
+                Check.Equal(1, report.DegenerateFaces);
                 Check.Equal(Face.Invalid, faceMap[3], "the degenerate triangle was dropped");
                 Check.True(report.Repairs >= 2, "repairs: " + report.Repairs);
                 Check.Equal(4, mesh.FaceCount);
@@ -108,7 +108,7 @@ namespace Hedge.Tests
                                                                  Meshes.GridSizes, options, out report))
             {
                 Check.Equal(4, grid.FaceCount);
-                Check.Equal(0u, report.Repairs);
+                Check.Equal(0, report.Repairs);
                 Check.Valid(grid);
             }
         }
@@ -122,19 +122,19 @@ namespace Hedge.Tests
             nan[4] = float.NaN;
             Check.Throws(HedgeStatus.InvalidArgument, () => HalfEdgeMesh.FromTriangles(nan, Meshes.TetTriangles));
             Check.Throws(HedgeStatus.InvalidArgument,
-                         () => HalfEdgeMesh.FromTriangles(Meshes.TetPositions, new uint[] { 0, 1, 9 }), "index 9 of 4");
+                         () => HalfEdgeMesh.FromTriangles(Meshes.TetPositions, new int[] { 0, 1, 9 }), "index 9 of 4");
             Check.Throws(HedgeStatus.InvalidArgument,
-                         () => HalfEdgeMesh.FromTriangles(Meshes.TetPositions, new uint[] { 0, 1, 2, 3 }), "not triangles");
+                         () => HalfEdgeMesh.FromTriangles(Meshes.TetPositions, new int[] { 0, 1, 2, 3 }), "not triangles");
             Check.Throws(HedgeStatus.InvalidArgument,
-                         () => HalfEdgeMesh.FromPolygons(Meshes.GridPositions, Meshes.GridQuads, new uint[] { 4, 4, 4 },
+                         () => HalfEdgeMesh.FromPolygons(Meshes.GridPositions, Meshes.GridQuads, new int[] { 4, 4, 4 },
                                                          options, out report), "face sizes do not add up");
             options.Policy = (TopologyPolicy)7;
             Check.Throws(HedgeStatus.InvalidArgument,
                          () => HalfEdgeMesh.FromTriangles(Meshes.TetPositions, Meshes.TetTriangles, options, out report),
                          "an unknown policy");
             // Errors the binding catches before calling (they would read or write past an array).
-            Check.ThrowsType<ArgumentException>(() => HalfEdgeMesh.FromTriangles(new float[] { 0, 0 }, new uint[0]));
-            Check.ThrowsType<ArgumentNullException>(() => HalfEdgeMesh.FromTriangles(null, new uint[0]));
+            Check.ThrowsType<ArgumentException>(() => HalfEdgeMesh.FromTriangles(new float[] { 0, 0 }, new int[0]));
+            Check.ThrowsType<ArgumentNullException>(() => HalfEdgeMesh.FromTriangles(null, new int[0]));
             Check.ThrowsType<ArgumentException>(() => HalfEdgeMesh.Build(Meshes.TetPositions, Meshes.TetTriangles,
                                                                          null, BuildOptions.Default, out report,
                                                                          new Vertex[3], null), "vertex map too short");
@@ -144,7 +144,7 @@ namespace Hedge.Tests
                                                                                   EngineImportOptions.Default,
                                                                                   out report), "texcoords too short");
             // An empty mesh is fine.
-            using (HalfEdgeMesh empty = HalfEdgeMesh.FromTriangles(new float[0], new uint[0]))
+            using (HalfEdgeMesh empty = HalfEdgeMesh.FromTriangles(new float[0], new int[0]))
             {
                 Check.Equal(0, empty.VertexCount);
                 Check.Valid(empty);

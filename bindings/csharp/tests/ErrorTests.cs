@@ -11,6 +11,7 @@ namespace Hedge.Tests
             r.Add("ErrorTests.DisposedMesh", DisposedMesh);
             r.Add("ErrorTests.DisposedRenderBuffers", DisposedRenderBuffers);
             r.Add("ErrorTests.DeadAndOutOfRangeElements", DeadAndOutOfRangeElements);
+            r.Add("ErrorTests.IntIndicesAndNegativeInputs", IntIndicesAndNegativeInputs);
             r.Add("ErrorTests.MalformedAndMissingFiles", MalformedAndMissingFiles);
             r.Add("ErrorTests.FilesRoundTrip", FilesRoundTrip);
             r.Add("ErrorTests.FinalizersRelease", FinalizersRelease);
@@ -84,7 +85,7 @@ namespace Hedge.Tests
             RenderBuffers b = mesh.CreateRenderBuffers();
             a.Dispose();
             Check.Throws(HedgeStatus.BadHandle, () => a.Sync());
-            Check.Equal(5u, b.Counts.VertexSlots, "the other render object lives on");
+            Check.Equal(5, b.Counts.VertexSlots, "the other render object lives on");
             b.BeginTransaction();
             Check.True(mesh.SplitFace(new Face(0), 0.5f, 0.2f, 0.5f).IsValid);
             Check.Valid(mesh);
@@ -111,6 +112,52 @@ namespace Hedge.Tests
                 Check.True(mesh.IsDeleted(new Face(0)));
                 Check.Throws(HedgeStatus.BadHandle, () => mesh.GetFaceVertices(new Face(0), new Vertex[3]), "deleted");
                 Check.Throws(HedgeStatus.BadHandle, () => mesh.SplitFace(new Face(0), 0, 0, 0), "deleted");
+                Check.Valid(mesh);
+            }
+        }
+
+        // Indices and counts are int, as Unity's APIs take them: "none" is -1 (never 4294967295), and a
+        // negative input is an ArgumentException that says what and where.
+        static void IntIndicesAndNegativeInputs()
+        {
+            Check.Equal(-1, Vertex.Invalid.Index);
+            Check.Equal(-1, HalfEdge.Invalid.Index);
+            Check.Equal(-1, Edge.Invalid.Index);
+            Check.Equal(-1, Face.Invalid.Index);
+            Check.Equal(-1, Vertex.InvalidIndex);
+            var e = Check.ThrowsType<ArgumentOutOfRangeException>(() => new Vertex(-1), "Invalid names no vertex");
+            Check.Contains(e.Message, "0 or more");
+            Check.ThrowsType<ArgumentOutOfRangeException>(() => new HalfEdge(-2));
+            Check.ThrowsType<ArgumentOutOfRangeException>(() => new Edge(-3));
+            Check.ThrowsType<ArgumentOutOfRangeException>(() => new Face(int.MinValue));
+            Check.ThrowsType<ArgumentOutOfRangeException>(() => new SlotRange(-1, 3));
+            float[] p = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0 };
+            var bad = Check.ThrowsType<ArgumentOutOfRangeException>(
+                () => HalfEdgeMesh.FromTriangles(p, new[] { 0, 1, 2, 2, 1, -3 }));
+            Check.Contains(bad.Message, "triangles[5] is -3: a vertex index is 0 or more");
+            BuildReport report;
+            Check.ThrowsType<ArgumentOutOfRangeException>(
+                () => HalfEdgeMesh.FromPolygons(p, new[] { 0, 1, 3, 2 }, new[] { -4 }, BuildOptions.Default, out report));
+            Check.ThrowsType<ArgumentOutOfRangeException>(
+                () => HalfEdgeMesh.FromEngineMesh(p, new[] { 0, 1, -2 }, null, null, null, EngineImportOptions.Unity,
+                                                  out report));
+            using (HalfEdgeMesh mesh = HalfEdgeMesh.FromTriangles(p, new[] { 0, 1, 2, 2, 1, 3 }))
+            using (RenderBuffers buffers = mesh.CreateRenderBuffers())
+            {
+                MeshCounts c = mesh.Counts;
+                int vertices = c.Vertices, faces = c.Faces;  // int, no cast
+                Check.Equal(4, vertices);
+                Check.Equal(2, faces);
+                HalfEdge boundary = mesh.FindHalfEdge(new Vertex(1), new Vertex(0));
+                Check.True(mesh.IsBoundary(boundary));
+                Check.Equal(Face.Invalid, mesh.GetFace(boundary), "the face of a boundary half-edge");
+                Check.Equal(-1, mesh.GetFace(boundary).Index);
+                Check.Equal(-1, buffers.GetRenderVertex(boundary), "no render vertex: -1");
+                Check.ThrowsType<ArgumentOutOfRangeException>(() => mesh.GetHalfEdge(new Edge(0), -1));
+                Check.ThrowsType<ArgumentOutOfRangeException>(() => mesh.CacheMissRatio(-1));
+                int[] triangles = new int[buffers.CopyIndices(null)];
+                buffers.CopyIndices(triangles);  // Unity's Mesh.triangles type
+                Check.Equal(6, triangles.Length);
                 Check.Valid(mesh);
             }
         }
@@ -148,10 +195,10 @@ namespace Hedge.Tests
             using (HalfEdgeMesh spot = HalfEdgeMesh.Read(Context.Data("spot_control_mesh.obj"), out report))
             {
                 MeshCounts c = spot.Counts;
-                Check.Equal(188u, c.Vertices);
-                Check.Equal(366u, c.Edges);
-                Check.Equal(180u, c.Faces);
-                Check.Equal(0u, report.Repairs);
+                Check.Equal(188, c.Vertices);
+                Check.Equal(366, c.Edges);
+                Check.Equal(180, c.Faces);
+                Check.Equal(0, report.Repairs);
                 Check.Valid(spot);
 
                 // A non-ASCII file name goes through as UTF-8.
@@ -240,7 +287,7 @@ namespace Hedge.Tests
                 alive = 0;
                 foreach (IntPtr id in dropped) alive += Alive(id) ? 1 : 0;
                 Check.Equal(dropped.Length - queued, alive, "the queued ones are gone");
-                Check.Equal(6u, kept.Counts.Triangles);
+                Check.Equal(6, kept.Counts.Triangles);
                 Check.Valid(mesh);
             }
             // The library is still fine after finalizers destroyed meshes and render objects.

@@ -11,7 +11,7 @@ namespace Hedge.Tests
         {
             // ---- from README.md ----
             float[] positions = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5f, 0.5f, 1 };
-            uint[] triangles = { 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4 };
+            int[] triangles = { 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4 };
             using (var mesh = HalfEdgeMesh.FromTriangles(positions, triangles))
             using (var buffers = mesh.CreateRenderBuffers())         // or mesh.GenerateUnityMesh()
             {
@@ -25,7 +25,8 @@ namespace Hedge.Tests
                 buffers.UpdateVertexMirror(VertexStream.Vertices, ref vertices);
                 buffers.UpdateIndexMirror(ref indices);
 
-                // Edits. A refused edit returns an invalid handle or false, and changes nothing.
+                // Edits. A refused edit returns an invalid handle or false, and changes nothing;
+                // mesh.LastRefusal then says why.
                 buffers.BeginTransaction();
                 HalfEdge h = mesh.FindHalfEdge(new Vertex(0), new Vertex(1));
                 Vertex mid = mesh.SplitEdge(h.Edge, 0.5f, 0, 0);        // a new vertex on the edge 0-1

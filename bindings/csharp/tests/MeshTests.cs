@@ -11,17 +11,17 @@ namespace Hedge.Tests
     {
         // A tetrahedron, outward (counter-clockwise) faces.
         public static readonly float[] TetPositions = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-        public static readonly uint[] TetTriangles = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 };
+        public static readonly int[] TetTriangles = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 };
 
         // A square pyramid without its base: 5 vertices, 4 triangles, one boundary loop 0-1-2-3.
         public static readonly float[] PyramidPositions = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5f, 0.5f, 1 };
-        public static readonly uint[] PyramidTriangles = { 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4 };
+        public static readonly int[] PyramidTriangles = { 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4 };
 
         // A 2 x 2 grid of quads over 3 x 3 vertices.
         public static readonly float[] GridPositions =
             { 0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0, 0, 2, 0, 1, 2, 0, 2, 2, 0 };
-        public static readonly uint[] GridQuads = { 0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 7 };
-        public static readonly uint[] GridSizes = { 4, 4, 4, 4 };
+        public static readonly int[] GridQuads = { 0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 7 };
+        public static readonly int[] GridSizes = { 4, 4, 4, 4 };
 
         public static HalfEdgeMesh Tet() { return HalfEdgeMesh.FromTriangles(TetPositions, TetTriangles); }
         public static HalfEdgeMesh Pyramid() { return HalfEdgeMesh.FromTriangles(PyramidPositions, PyramidTriangles); }
@@ -33,33 +33,33 @@ namespace Hedge.Tests
         }
 
         /// <summary>Sorted indices of the first count vertices.</summary>
-        public static uint[] Sorted(Vertex[] vertices, int count)
+        public static int[] Sorted(Vertex[] vertices, int count)
         {
-            var r = new uint[count];
+            var r = new int[count];
             for (int i = 0; i < count; ++i) r[i] = vertices[i].Index;
             Array.Sort(r);
             return r;
         }
 
         /// <summary>The corners of face f, rotated to start at its smallest vertex index.</summary>
-        public static uint[] Corners(HalfEdgeMesh mesh, Face f)
+        public static int[] Corners(HalfEdgeMesh mesh, Face f)
         {
             var buffer = new Vertex[16];
             int n = mesh.GetFaceVertices(f, buffer);
             return Rotated(buffer, n);
         }
 
-        public static uint[] Rotated(Vertex[] corners, int n)
+        public static int[] Rotated(Vertex[] corners, int n)
         {
             int start = 0;
             for (int i = 1; i < n; ++i)
                 if (corners[i].Index < corners[start].Index) start = i;
-            var r = new uint[n];
+            var r = new int[n];
             for (int i = 0; i < n; ++i) r[i] = corners[(start + i) % n].Index;
             return r;
         }
 
-        public static string Show(uint[] a) { return "[" + string.Join(", ", a) + "]"; }
+        public static string Show(int[] a) { return "[" + string.Join(", ", a) + "]"; }
     }
 
     public static class MeshTests
@@ -70,6 +70,7 @@ namespace Hedge.Tests
             r.Add("MeshTests.HandleArithmetic", HandleArithmetic);
             r.Add("MeshTests.TetrahedronAdjacency", TetrahedronAdjacency);
             r.Add("MeshTests.TetrahedronCollapseRefused", TetrahedronCollapseRefused);
+            r.Add("MeshTests.RefusalsCarryTheirReason", RefusalsCarryTheirReason);
             r.Add("MeshTests.PyramidEdits", PyramidEdits);
             r.Add("MeshTests.GridPolygonsAndDiagonals", GridPolygonsAndDiagonals);
             r.Add("MeshTests.DetachAndGarbageCollection", DetachAndGarbageCollection);
@@ -95,7 +96,7 @@ namespace Hedge.Tests
             {
                 for (int i = 0; i < 4; ++i)
                 {
-                    Vec3 q = mesh.GetPosition(new Vertex((uint)i));
+                    Vec3 q = mesh.GetPosition(new Vertex((int)i));
                     Check.True(q.X == p[3 * i] && q.Y == p[3 * i + 1] && q.Z == p[3 * i + 2], "vertex " + i + " bit for bit");
                 }
                 mesh.SetPosition(new Vertex(2), 1, 0.5f, 0);
@@ -127,7 +128,7 @@ namespace Hedge.Tests
         static void GeometryAndNormals()
         {
             float[] positions = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1 };
-            uint[] triangles = { 0, 3, 2, 0, 2, 1, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
+            int[] triangles = { 0, 3, 2, 0, 2, 1, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
                                  1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7 };
             using (var cube = HalfEdgeMesh.FromTriangles(positions, triangles))
             {
@@ -152,7 +153,7 @@ namespace Hedge.Tests
                 cube.ComputeCornerNormals(30);
                 float[] cn = new float[cube.CopyCornerNormals(null)];
                 cube.CopyCornerNormals(cn);
-                for (uint h = 0; h < 36; ++h)
+                for (int h = 0; h < 36; ++h)
                 {
                     Vec3 fn = cube.FaceNormal(cube.GetFace(new HalfEdge(h)));
                     Check.True(Math.Abs(cn[3 * h] - fn.X) + Math.Abs(cn[3 * h + 1] - fn.Y) + Math.Abs(cn[3 * h + 2] - fn.Z) < 1e-6,
@@ -162,7 +163,7 @@ namespace Hedge.Tests
                 options.Normals = NormalSource.Attribute;
                 using (RenderBuffers buffers = cube.CreateRenderBuffers(options))
                 {
-                    Check.Equal(24u, buffers.Counts.Vertices, "hard edges split the cube's corners");
+                    Check.Equal(24, buffers.Counts.Vertices, "hard edges split the cube's corners");
                 }
                 Check.Valid(cube, "after the normals");
             }
@@ -177,7 +178,7 @@ namespace Hedge.Tests
             using (var grid = Meshes.Grid())
             using (var copy = HalfEdgeMesh.FromPolygons(raised, Meshes.GridQuads, Meshes.GridSizes, BuildOptions.Default,
                                                         out report))
-            using (var points = HalfEdgeMesh.FromTriangles(raised, new uint[0]))
+            using (var points = HalfEdgeMesh.FromTriangles(raised, new int[0]))
             {
                 double mean;
                 Check.Near(0.5, grid.HausdorffDistance(copy, out mean, 1000), 1e-7, "distance");
@@ -192,7 +193,7 @@ namespace Hedge.Tests
         static void SubdivisionRefinesAndRenderBuffersFollow()
         {
             float[] positions = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-            uint[] triangles = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 };
+            int[] triangles = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 };
             using (var tet = HalfEdgeMesh.FromTriangles(positions, triangles))
             using (RenderBuffers buffers = tet.CreateRenderBuffers())
             {
@@ -201,7 +202,7 @@ namespace Hedge.Tests
                 Check.Equal(64, tet.FaceCount);
                 Check.True(tet.Geometry.Closed && tet.Geometry.Volume < before, "smaller, still closed");
                 buffers.Sync();
-                Check.Equal(64u, buffers.Counts.Triangles, "the buffers follow");
+                Check.Equal(64, buffers.Counts.Triangles, "the buffers follow");
                 Check.Throws(HedgeStatus.InvalidArgument, () => tet.Subdivide(Subdivision.Midpoint, 20));
                 var map = new Vertex[tet.Counts.VertexSlots];
                 tet.Reorder(Ordering.Spatial, vertexMap: map);
@@ -210,12 +211,12 @@ namespace Hedge.Tests
                 tet.Reorder(Ordering.VertexCache);
                 Check.True(tet.CacheMissRatio() < spatial, "the vertex-cache order loads fewer vertices per triangle");
                 buffers.Sync();
-                Check.Equal(64u, buffers.Counts.Triangles, "the buffers follow the renumbering");
+                Check.Equal(64, buffers.Counts.Triangles, "the buffers follow the renumbering");
                 Check.Valid(tet, "after subdividing");
             }
             float[] grid = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };
             BuildReport report;
-            using (var quad = HalfEdgeMesh.FromPolygons(grid, new uint[] { 0, 1, 2, 3 }, new uint[] { 4 }, BuildOptions.Default, out report))
+            using (var quad = HalfEdgeMesh.FromPolygons(grid, new int[] { 0, 1, 2, 3 }, new int[] { 4 }, BuildOptions.Default, out report))
             {
                 Check.Throws(HedgeStatus.InvalidArgument, () => quad.Subdivide(Subdivision.Loop));
                 Check.Equal(1, quad.FaceCount);
@@ -236,7 +237,7 @@ namespace Hedge.Tests
         static void DecimationReachesItsTarget()
         {
             float[] positions = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-            uint[] triangles = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 };
+            int[] triangles = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 };
             using (var mesh = HalfEdgeMesh.FromTriangles(positions, triangles))
             using (RenderBuffers buffers = mesh.CreateRenderBuffers())
             {
@@ -251,7 +252,7 @@ namespace Hedge.Tests
                 Check.True(r.Collapses == 110 && r.MaxError > 0, "collapses " + r.Collapses + ", error " + r.MaxError);
                 Check.True(mesh.Geometry.Closed, "still closed");
                 buffers.Sync();
-                Check.Equal(36u, buffers.Counts.Triangles, "the buffers follow");
+                Check.Equal(36, buffers.Counts.Triangles, "the buffers follow");
                 o.MaxNormalChangeDegrees = 0;
                 Check.Throws(HedgeStatus.InvalidArgument, () => mesh.Decimate(o));
                 Check.Equal(36, mesh.FaceCount);
@@ -259,7 +260,7 @@ namespace Hedge.Tests
             }
             float[] grid = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };
             BuildReport report;
-            using (var quad = HalfEdgeMesh.FromPolygons(grid, new uint[] { 0, 1, 2, 3 }, new uint[] { 4 }, BuildOptions.Default, out report))
+            using (var quad = HalfEdgeMesh.FromPolygons(grid, new int[] { 0, 1, 2, 3 }, new int[] { 4 }, BuildOptions.Default, out report))
             {
                 DecimateOptions o = DecimateOptions.Default;
                 o.TargetFaces = 1;
@@ -271,7 +272,7 @@ namespace Hedge.Tests
         static HalfEdgeMesh Plate(int n)
         {
             var positions = new float[3 * (n + 1) * (n + 1)];
-            var triangles = new uint[6 * n * n];
+            var triangles = new int[6 * n * n];
             for (int j = 0; j <= n; ++j)
                 for (int i = 0; i <= n; ++i)
                 {
@@ -282,8 +283,8 @@ namespace Hedge.Tests
             for (int j = 0; j < n; ++j)
                 for (int i = 0; i < n; ++i)
                 {
-                    uint a = (uint)(j * (n + 1) + i), b = a + 1, c = a + (uint)n + 2, d = a + (uint)n + 1;
-                    foreach (uint v in new[] { a, b, c, a, c, d }) triangles[k++] = v;
+                    int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+                    foreach (int v in new[] { a, b, c, a, c, d }) triangles[k++] = v;
                 }
             return HalfEdgeMesh.FromTriangles(positions, triangles);
         }
@@ -313,7 +314,7 @@ namespace Hedge.Tests
                 Check.True(Math.Abs(area - before) < 1e-5 * before, "areas add up: " + area + " vs " + before);
                 Check.Valid(plate, "the rest");
                 buffers.Sync();
-                Check.Equal((uint)plate.FaceCount, buffers.Counts.Triangles, "the buffers follow");
+                Check.Equal(plate.FaceCount, buffers.Counts.Triangles, "the buffers follow");
                 Check.Throws(HedgeStatus.InvalidArgument, () => plate.SimulateBreaking(new Vec3(12, 12, 5), FracturePreset.Stone, 1));
             }
             double[] areas = new double[2];
@@ -343,8 +344,8 @@ namespace Hedge.Tests
         static void SmoothingPullsALiftedVertexDown()
         {
             float[] positions = { 0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 1, 2, 1, 0, 0, 2, 0, 1, 2, 0, 2, 2, 0 };
-            uint[] quads = { 0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 7 };
-            uint[] sizes = { 4, 4, 4, 4 };
+            int[] quads = { 0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 7 };
+            int[] sizes = { 4, 4, 4, 4 };
             BuildReport report;
             using (var mesh = HalfEdgeMesh.FromPolygons(positions, quads, sizes, BuildOptions.Default, out report))
             {
@@ -369,7 +370,7 @@ namespace Hedge.Tests
         static void OriginalNamesForward()
         {
             float[] positions = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5f, 0.5f, 1 };
-            uint[] triangles = { 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4 };
+            int[] triangles = { 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4 };
             using (var a = HalfEdgeMesh.FromTriangles(positions, triangles))
             using (var b = HalfEdgeMesh.FromTriangles(positions, triangles))
             {
@@ -459,7 +460,7 @@ namespace Hedge.Tests
             Check.False(HalfEdge.Invalid.IsValid);
             Check.Equal(HalfEdge.Invalid, HalfEdge.Invalid.Twin);
             Check.Equal(Edge.Invalid, HalfEdge.Invalid.Edge);
-            Check.Equal(0xFFFFFFFFu, Vertex.Invalid.Index);
+            Check.Equal(-1, Vertex.Invalid.Index);
             Check.True(new Vertex(3) == new Vertex(3) && new Face(1) != new Face(2));
             Check.Equal("h5", h.ToString());
             Check.ThrowsType<ArgumentOutOfRangeException>(() => new Edge(1).GetHalfEdge(2));
@@ -470,15 +471,15 @@ namespace Hedge.Tests
             using (HalfEdgeMesh mesh = Meshes.Tet())
             {
                 MeshCounts c = mesh.Counts;
-                Check.Equal(4u, c.Vertices);
-                Check.Equal(12u, c.HalfEdges);
-                Check.Equal(6u, c.Edges);
-                Check.Equal(4u, c.Faces);
-                Check.Equal(4u, c.VertexSlots);
+                Check.Equal(4, c.Vertices);
+                Check.Equal(12, c.HalfEdges);
+                Check.Equal(6, c.Edges);
+                Check.Equal(4, c.Faces);
+                Check.Equal(4, c.VertexSlots);
                 Check.Equal(4, mesh.FaceCount);
                 Check.Equal(new Vec3(0, 0, 1), mesh.GetPosition(new Vertex(3)));
 
-                for (uint i = 0; i < 12; ++i)
+                for (int i = 0; i < 12; ++i)
                 {
                     var h = new HalfEdge(i);
                     Check.Equal(h.Twin, mesh.Twin(h), "twin is h ^ 1");
@@ -490,7 +491,7 @@ namespace Hedge.Tests
                     Check.True(mesh.GetFace(h).IsValid && !mesh.IsBoundary(h));
                     Check.Equal(mesh.GetFace(h), mesh.GetFace(mesh.Next(h)));
                 }
-                for (uint e = 0; e < 6; ++e)
+                for (int e = 0; e < 6; ++e)
                 {
                     Check.Equal(new HalfEdge(2 * e + 1), mesh.GetHalfEdge(new Edge(e), 1));
                     Check.False(mesh.IsBoundary(new Edge(e)));
@@ -500,7 +501,7 @@ namespace Hedge.Tests
                 var ring = new Vertex[8];
                 var spokes = new HalfEdge[8];
                 var faces = new Face[8];
-                for (uint v = 0; v < 4; ++v)
+                for (int v = 0; v < 4; ++v)
                 {
                     var vertex = new Vertex(v);
                     Check.Equal(3, mesh.Valence(vertex));
@@ -514,7 +515,7 @@ namespace Hedge.Tests
                         Check.Equal(vertex, mesh.FromVertex(spokes[k]));
                         Check.Equal(ring[k], mesh.ToVertex(spokes[k]), "neighbours follow the outgoing half-edges");
                     }
-                    var expected = new List<uint> { 0, 1, 2, 3 };
+                    var expected = new List<int> { 0, 1, 2, 3 };
                     expected.Remove(v);
                     Check.Same(expected.ToArray(), Meshes.Sorted(ring, 3), 3, "one-ring of " + v);
                 }
@@ -542,6 +543,38 @@ namespace Hedge.Tests
             }
         }
 
+        // A refused edit returns false / an invalid handle, throws nothing, and LastRefusal says why; the next
+        // edit that is done clears it.
+        static void RefusalsCarryTheirReason()
+        {
+            using (HalfEdgeMesh mesh = Meshes.Tet())
+            {
+                Check.Equal(null, mesh.LastRefusal, "nothing refused yet");
+                Check.Equal(Vertex.Invalid, mesh.Collapse(new HalfEdge(0)));
+                string why = mesh.LastRefusal;
+                Check.True(why != null && why.StartsWith("collapse of halfedge 0 refused: ") &&
+                           why.EndsWith("; nothing was changed"), "the reason: " + why);
+                Check.False(mesh.Flip(new Edge(1)));
+                Check.True(mesh.LastRefusal.StartsWith("flip of edge 1 refused"), mesh.LastRefusal);
+                Check.True(mesh.SplitEdge(new Edge(0), 0.5f, 0, 0).IsValid);
+                Check.Equal(null, mesh.LastRefusal, "cleared by an edit that was done");
+                Check.Valid(mesh);
+            }
+            // A seam vertex pulled off its seam: the reason names the seam.
+            using (HalfEdgeMesh mesh = SeamTests.UvGrid(4, 2))
+            {
+                Vertex onSeam = new Vertex(12), off = new Vertex(13);  // (2, 2) and (3, 2)
+                Check.Equal(new Vec3(2, 2, 0), mesh.GetPosition(onSeam));
+                HalfEdge h = mesh.FindHalfEdge(onSeam, off);
+                Check.False(mesh.CanCollapse(h));
+                Check.Equal(Vertex.Invalid, mesh.Collapse(h));
+                Check.True(mesh.LastRefusal.Contains("it would pull a seam vertex off its seam"), mesh.LastRefusal);
+                Check.Equal(onSeam, mesh.Collapse(mesh.FindHalfEdge(off, onSeam)), "an off-seam vertex onto the seam");
+                Check.Equal(null, mesh.LastRefusal);
+                Check.Valid(mesh);
+            }
+        }
+
         static void TetrahedronCollapseRefused()
         {
             using (HalfEdgeMesh mesh = Meshes.Tet())
@@ -549,13 +582,13 @@ namespace Hedge.Tests
                 var before = new float[12];
                 mesh.CopyPositions(before);
                 MeshCounts counts = mesh.Counts;
-                for (uint i = 0; i < 12; ++i)
+                for (int i = 0; i < 12; ++i)
                 {
                     var h = new HalfEdge(i);
                     Check.False(mesh.CanCollapse(h), "every tetrahedron edge is refused: " + h);
                     Check.Equal(Vertex.Invalid, mesh.Collapse(h), "refused, not thrown: " + h);
                 }
-                for (uint e = 0; e < 6; ++e)
+                for (int e = 0; e < 6; ++e)
                 {
                     Check.False(mesh.CanFlip(new Edge(e)), "valence-3 ends");
                     Check.False(mesh.Flip(new Edge(e)));
@@ -584,7 +617,7 @@ namespace Hedge.Tests
                 var apex = new Vertex(4);
                 Check.False(mesh.IsBoundary(apex));
                 Check.Equal(4, mesh.Valence(apex));
-                for (uint v = 0; v < 4; ++v) Check.True(mesh.IsBoundary(new Vertex(v)), "base corner " + v);
+                for (int v = 0; v < 4; ++v) Check.True(mesh.IsBoundary(new Vertex(v)), "base corner " + v);
                 HalfEdge h01 = mesh.FindHalfEdge(new Vertex(0), new Vertex(1));
                 Check.False(mesh.IsBoundary(h01), "0->1 runs along face (0, 1, 4)");
                 Check.True(mesh.IsBoundary(h01.Twin));
@@ -598,7 +631,7 @@ namespace Hedge.Tests
                 // SplitHalfEdge on the boundary edge 0-1: the triangle on it becomes two.
                 Vertex m = mesh.SplitHalfEdge(h01, 0.5f, 0, 0);
                 Check.True(m.IsValid);
-                Check.Equal(5u, m.Index);
+                Check.Equal(5, m.Index);
                 Check.Equal(new Vec3(0.5f, 0, 0), mesh.GetPosition(m));
                 Check.Equal(6, mesh.VertexCount);
                 Check.Equal(10, mesh.EdgeCount);
@@ -685,7 +718,7 @@ namespace Hedge.Tests
                 Check.Equal(20, mesh.FaceCount);
                 MeshCounts k = mesh.Counts;
                 Check.Equal(2L, (long)k.Vertices - k.Edges + k.Faces, "a closed sphere: V - E + F = 2");
-                for (uint v = 0; v < 4; ++v) Check.False(mesh.IsBoundary(new Vertex(v)));
+                for (int v = 0; v < 4; ++v) Check.False(mesh.IsBoundary(new Vertex(v)));
                 Check.Valid(mesh, "after FillHole");
 
                 // RemoveVertex of the apex takes its faces.
@@ -752,14 +785,14 @@ namespace Hedge.Tests
                     Check.Equal(1, piece.FaceCount, "a repeated face counts once");
                     Check.Equal(4, piece.VertexCount);
                     Check.Equal(3, mesh.FaceCount);
-                    var fromOrigin = new uint[4];
+                    var fromOrigin = new int[4];
                     for (int i = 0; i < 4; ++i)
                     {
-                        uint o = origin[i].Index;
+                        int o = origin[i].Index;
                         fromOrigin[i] = o;
                         var expected = new Vec3(Meshes.GridPositions[3 * o], Meshes.GridPositions[3 * o + 1],
                                                 Meshes.GridPositions[3 * o + 2]);
-                        Check.Equal(expected, piece.GetPosition(new Vertex((uint)i)),
+                        Check.Equal(expected, piece.GetPosition(new Vertex((int)i)),
                                     "the piece keeps the positions of its origins");
                     }
                     Array.Sort(fromOrigin);
@@ -787,7 +820,7 @@ namespace Hedge.Tests
                 Check.Equal(after.Faces, after.FaceSlots);
                 Check.Equal(before.Vertices, after.Vertices);
                 Check.Equal(Vertex.Invalid, vmap[8], "vertex 8 went with the detached face");
-                for (uint v = 0; v < 8; ++v)
+                for (int v = 0; v < 8; ++v)
                 {
                     Check.True(vmap[v].IsValid && vmap[v].Index < after.VertexSlots);
                     Check.Equal(new Vec3(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]),

@@ -13,6 +13,7 @@ namespace Hedge.Tests
             r.Add("RenderTests.HolesCompactRebuild", HolesCompactRebuild);
             r.Add("RenderTests.UnityConventions", UnityConventions);
             r.Add("RenderTests.NoAllocationOnHotPaths", NoAllocationOnHotPaths);
+            r.Add("RenderTests.ImportedNormalsFollowOrStay", ImportedNormalsFollowOrStay);
         }
 
         /// <summary>Every live triangle of the index buffer is a face of the mesh (corners in order, up to
@@ -22,7 +23,7 @@ namespace Hedge.Tests
         {
             BufferCounts counts = buffers.Counts;
             VertexLayout layout = buffers.Layout;
-            var indices = new uint[counts.IndexCount];
+            var indices = new int[counts.IndexCount];
             Check.Equal((int)counts.IndexCount, buffers.CopyIndices(indices));
             var source = new Vertex[counts.VertexSlots];
             Check.Equal((int)counts.VertexSlots, buffers.CopyVertexSource(source));
@@ -43,19 +44,19 @@ namespace Hedge.Tests
             var loop = new HalfEdge[64];
             var triangle = new Vertex[3];
             int live = 0;
-            for (uint f = 0; f < mc.FaceSlots; ++f)
+            for (int f = 0; f < mc.FaceSlots; ++f)
             {
                 var face = new Face(f);
                 if (mesh.IsDeleted(face)) continue;
                 int n = mesh.GetFaceVertices(face, corners);
                 mesh.GetFaceHalfEdges(face, loop);
                 SlotRange slots = buffers.GetFaceTriangles(face);
-                Check.Equal((uint)(n - 2), slots.Count, "an n-gon owns n - 2 triangles");
+                Check.Equal((int)(n - 2), slots.Count, "an n-gon owns n - 2 triangles");
                 live += (int)slots.Count;
                 if (n != 3) continue;
                 for (int c = 0; c < 3; ++c)
                 {
-                    uint rv = indices[3 * slots.First + c];
+                    int rv = indices[3 * slots.First + c];
                     Check.True(rv < counts.VertexSlots);
                     triangle[c] = source[rv];
                 }
@@ -70,7 +71,7 @@ namespace Hedge.Tests
                 for (int c = 0; c < 3; ++c)
                     Check.Equal(corners[c], source[buffers.GetRenderVertex(loop[c])], "corner render vertex");
             }
-            Check.Equal(counts.Triangles, (uint)live);
+            Check.Equal(counts.Triangles, (int)live);
         }
 
         /// <summary>A mirror of the vertex stream and the index buffer that receives only the dirty ranges.</summary>
@@ -121,6 +122,57 @@ namespace Hedge.Tests
             }
         }
 
+        // The render normal of the corner entered by h (interleaved layout).
+        static Vec3 RenderNormal(RenderBuffers buffers, HalfEdge h)
+        {
+            var v = new float[buffers.CopyVertices(null)];
+            buffers.CopyVertices(v);
+            VertexLayout layout = buffers.Layout;
+            long at = (long)buffers.GetRenderVertex(h) * layout.Stride + layout.Normal;
+            return new Vec3(v[at], v[at + 1], v[at + 2]);
+        }
+
+        // Imported normals follow a moved vertex by default (Automatic): its render normal becomes the
+        // area-weighted normal of its faces, as ComputeVertexNormals gives it. With Attribute they stay.
+        static void ImportedNormalsFollowOrStay()
+        {
+            foreach (NormalSource source in new[] { NormalSource.Automatic, NormalSource.Attribute })
+                using (HalfEdgeMesh mesh = SeamTests.UvGrid(4))
+                {
+                    RenderOptions options = RenderOptions.Default;
+                    Check.Equal(NormalSource.Automatic, options.Normals, "the default");
+                    options.Normals = source;
+                    using (RenderBuffers buffers = mesh.CreateRenderBuffers(options))
+                    {
+                        Vertex v = new Vertex(6), neighbour = new Vertex(7);  // (1, 1) and (2, 1)
+                        HalfEdge corner = mesh.FindHalfEdge(neighbour, v), other = mesh.FindHalfEdge(v, neighbour);
+                        Check.Equal(new Vec3(0, 0, 1), RenderNormal(buffers, corner), "imported");
+                        mesh.SetPosition(v, 1, 1, 0.5f);
+                        buffers.Sync();
+                        CheckBuffersMatchMesh(mesh, buffers);
+                        Vec3 n = RenderNormal(buffers, corner), m = RenderNormal(buffers, other);
+                        if (source == NormalSource.Attribute)
+                        {
+                            Check.Equal(new Vec3(0, 0, 1), n, "kept at the moved vertex");
+                            Check.Equal(new Vec3(0, 0, 1), m, "kept at its neighbour");
+                        }
+                        else
+                        {
+                            mesh.ComputeVertexNormals(NormalWeighting.Area);
+                            var expected = new float[mesh.CopyVertexNormals(null)];
+                            mesh.CopyVertexNormals(expected);
+                            int i = (int)v.Index, j = (int)neighbour.Index;
+                            Check.True(Math.Abs(n.X - expected[3 * i]) < 1e-5f && Math.Abs(n.Y - expected[3 * i + 1]) < 1e-5f &&
+                                       Math.Abs(n.Z - expected[3 * i + 2]) < 1e-5f, "recomputed at the moved vertex: " + n);
+                            Check.True(Math.Abs(m.X) + Math.Abs(m.Y) > 0.05f, "the neighbour tilted: " + m);
+                            Check.True(Math.Abs(m.X - expected[3 * j]) < 1e-5f && Math.Abs(m.Y - expected[3 * j + 1]) < 1e-5f &&
+                                       Math.Abs(m.Z - expected[3 * j + 2]) < 1e-5f, "recomputed at its neighbour: " + m);
+                        }
+                        Check.Valid(mesh);
+                    }
+                }
+        }
+
         static void BuffersMatchMesh()
         {
             using (HalfEdgeMesh mesh = Meshes.Pyramid())
@@ -128,23 +180,23 @@ namespace Hedge.Tests
             {
                 VertexLayout layout = buffers.Layout;
                 Check.True(layout.Interleaved);
-                Check.Equal(6u, layout.Stride, "position and computed normal");
+                Check.Equal(6, layout.Stride, "position and computed normal");
                 Check.Equal(0, layout.Position);
                 Check.Equal(3, layout.Normal);
                 Check.Equal(-1, layout.Texcoord, "the pyramid has no texcoords");
                 Check.Equal(-1, layout.Color);
                 BufferCounts counts = buffers.Counts;
-                Check.Equal(5u, counts.VertexSlots);
-                Check.Equal(5u, counts.Vertices);
-                Check.Equal(0u, counts.SeamSplits);
-                Check.Equal(12u, counts.IndexCount);
-                Check.Equal(4u, counts.Triangles);
+                Check.Equal(5, counts.VertexSlots);
+                Check.Equal(5, counts.Vertices);
+                Check.Equal(0, counts.SeamSplits);
+                Check.Equal(12, counts.IndexCount);
+                Check.Equal(4, counts.Triangles);
                 Check.Equal(5ul * 6 * 4 + 12 * 4, counts.BufferBytes);
                 SyncResult first = buffers.LastResult;
                 Check.True(first.Full && first.Resized, "the first build is a full one");
                 Check.Equal(30, buffers.CopyVertices(null));
                 Check.Equal(0, buffers.CopyStream(VertexStream.Normals, null), "no separate streams when interleaved");
-                var uints = new uint[12];
+                var uints = new int[12];
                 var ints = new int[12];
                 buffers.CopyIndices(uints);
                 buffers.CopyIndices(ints);
@@ -189,7 +241,7 @@ namespace Hedge.Tests
                 SyncResult moved = buffers.Sync();
                 Check.False(moved.Full || moved.Resized);
                 Check.True(moved.VertexRangeCount >= 1);
-                Check.Equal(0u, moved.IndexRangeCount, "moving a vertex rewrites no index");
+                Check.Equal(0, moved.IndexRangeCount, "moving a vertex rewrites no index");
                 var ranges = new SlotRange[8];
                 int n = buffers.GetDirtyVertexRanges(ranges);
                 Check.Equal((int)moved.VertexRangeCount, n);
@@ -222,8 +274,8 @@ namespace Hedge.Tests
                 Check.True(committed.IndexRangeCount >= 1 && committed.VertexRangeCount >= 1);
                 Check.True(committed.FacesSynced >= 5, "faces synced: " + committed.FacesSynced);
                 BufferCounts counts = buffers.Counts;
-                Check.Equal(7u, counts.Triangles, "4 + 2 (split face) + 1 (split edge on a boundary)");
-                Check.Equal(7u, counts.Vertices);
+                Check.Equal(7, counts.Triangles, "4 + 2 (split face) + 1 (split edge on a boundary)");
+                Check.Equal(7, counts.Vertices);
                 mirror.Apply(committed);
                 mirror.CheckEqualsBuffers("after the transaction");
                 CheckBuffersMatchMesh(mesh, buffers);
@@ -236,7 +288,7 @@ namespace Hedge.Tests
                 Check.True(mesh.Flip(h04));
                 Check.True(mesh.FindHalfEdge(c, new Vertex(3)).IsValid, "0-4 turned into c-3");
                 SyncResult flipped = buffers.Sync();
-                Check.Equal(2u, flipped.FacesSynced);
+                Check.Equal(2, flipped.FacesSynced);
                 Check.True(flipped.IndexRangeCount >= 1 && flipped.IndexRangeCount <= 2);
                 Check.Equal(2ul * 3 * 4, flipped.IndexBytes, "two triangles' indices");
                 Check.True(mirror.Apply(flipped));
@@ -258,21 +310,21 @@ namespace Hedge.Tests
                 Check.True(mirror.Apply(removed));
                 mirror.CheckEqualsBuffers("after removing a face");
                 BufferCounts counts = buffers.Counts;
-                Check.Equal(3u, counts.Triangles);
-                Check.Equal(12u, counts.IndexCount, "the freed triangle stays as a hole");
+                Check.Equal(3, counts.Triangles);
+                Check.Equal(12, counts.IndexCount, "the freed triangle stays as a hole");
                 int t = 3 * (int)slots.First;
                 Check.True(mirror.Indices[t] == mirror.Indices[t + 1] && mirror.Indices[t + 1] == mirror.Indices[t + 2],
                            "a freed triangle is degenerate");
                 Check.Throws(HedgeStatus.BadHandle, () => buffers.GetFaceTriangles(new Face(1)), "a removed face");
                 CheckBuffersMatchMesh(mesh, buffers);
 
-                var vertexMap = new uint[counts.VertexSlots];
-                var triangleMap = new uint[counts.IndexCount / 3];
-                Check.Throws(HedgeStatus.BufferTooSmall, () => buffers.Compact(vertexMap, new uint[1]));
+                var vertexMap = new int[counts.VertexSlots];
+                var triangleMap = new int[counts.IndexCount / 3];
+                Check.Throws(HedgeStatus.BufferTooSmall, () => buffers.Compact(vertexMap, new int[1]));
                 buffers.Compact(vertexMap, triangleMap);
-                Check.Equal(0xFFFFFFFFu, triangleMap[slots.First], "the hole maps to nothing");
+                Check.Equal(-1, triangleMap[slots.First], "the hole maps to nothing");
                 BufferCounts packed = buffers.Counts;
-                Check.Equal(9u, packed.IndexCount);
+                Check.Equal(9, packed.IndexCount);
                 Check.Equal(packed.Vertices, packed.VertexSlots);
                 CheckBuffersMatchMesh(mesh, buffers);
 
@@ -300,7 +352,7 @@ namespace Hedge.Tests
                 Check.False(layout.Interleaved);
                 Check.Equal(0, layout.Position);
                 Check.Equal(0, layout.Normal, "its own stream");
-                Check.Equal(6u, layout.Stride, "floats of a whole vertex over all streams");
+                Check.Equal(6, layout.Stride, "floats of a whole vertex over all streams");
                 Check.Equal(3, buffers.Components(VertexStream.Vertices));
                 Check.Equal(15, buffers.CopyStream(VertexStream.Vertices, null));
                 Check.Equal(15, buffers.CopyStream(VertexStream.Normals, null));
@@ -355,11 +407,11 @@ namespace Hedge.Tests
                     long before = GC.GetAllocatedBytesForCurrentThread();
                     for (int i = 0; i < 200; ++i)
                     {
-                        var h = new HalfEdge((uint)(i % 24));
+                        var h = new HalfEdge((int)(i % 24));
                         sink += mesh.Twin(h).Index + mesh.Next(h).Index + mesh.Prev(h).Index;
                         sink += mesh.ToVertex(h).Index + mesh.GetFace(h).Index + (mesh.IsBoundary(h) ? 1 : 0);
-                        sink += mesh.GetFaceVertices(new Face((uint)(i % 12)), ring);
-                        sink += mesh.GetFaceHalfEdges(new Face((uint)(i % 12)), loop);
+                        sink += mesh.GetFaceVertices(new Face((int)(i % 12)), ring);
+                        sink += mesh.GetFaceHalfEdges(new Face((int)(i % 12)), loop);
                         sink += mesh.GetVertexNeighbours(new Vertex(4), ring);
                         sink += mesh.CanCollapse(h) ? 1 : 0;
                         sink += mesh.CanFlip(h.Edge) ? 1 : 0;

@@ -18,13 +18,14 @@ namespace Hedge.Tests
             r.Add("SeamTests.SpotRoundTripUnityConventions", SpotRoundTripUnity);
             r.Add("SeamTests.SpotRoundTripMirrored", SpotRoundTripMirrored);
             r.Add("SeamTests.SpotEditsKeepMirrorsInStep", SpotEdits);
+            r.Add("SeamTests.SplitThenCollapseLeavesOneRenderVertex", SplitThenCollapse);
         }
 
         /// <summary>Engine arrays: one entry per engine vertex.</summary>
         sealed class EngineMesh
         {
             public float[] Positions, Normals, Texcoords, Colors;
-            public uint[] Triangles;
+            public int[] Triangles;
             public int VertexCount { get { return Positions.Length / 3; } }
         }
 
@@ -35,10 +36,10 @@ namespace Hedge.Tests
         {
             var v = new List<float>();
             var vt = new List<float>();
-            var slot = new Dictionary<long, uint>();
+            var slot = new Dictionary<long, int>();
             var p = new List<float>();
             var uv = new List<float>();
-            var tris = new List<uint>();
+            var tris = new List<int>();
             foreach (string raw in File.ReadAllLines(path))
             {
                 string[] w = raw.Split(new[] { ' ', '\t' }, StringSplitOptions.RemoveEmptyEntries);
@@ -55,10 +56,10 @@ namespace Hedge.Tests
                         string[] parts = w[i].Split('/');
                         long a = long.Parse(parts[0], CultureInfo.InvariantCulture) - 1;
                         long b = long.Parse(parts[1], CultureInfo.InvariantCulture) - 1;
-                        uint index;
+                        int index;
                         if (!slot.TryGetValue((a << 32) | b, out index))
                         {
-                            index = (uint)(p.Count / 3);
+                            index = (int)(p.Count / 3);
                             slot.Add((a << 32) | b, index);
                             p.Add(v[(int)(3 * a)]);
                             p.Add(v[(int)(3 * a + 1)]);
@@ -98,7 +99,7 @@ namespace Hedge.Tests
             var u = new EngineMesh
             {
                 Positions = (float[])m.Positions.Clone(), Normals = (float[])m.Normals.Clone(),
-                Texcoords = m.Texcoords, Colors = m.Colors, Triangles = (uint[])m.Triangles.Clone()
+                Texcoords = m.Texcoords, Colors = m.Colors, Triangles = (int[])m.Triangles.Clone()
             };
             for (int i = 0; i < u.VertexCount; ++i)
             {
@@ -107,7 +108,7 @@ namespace Hedge.Tests
             }
             for (int t = 0; t < u.Triangles.Length; t += 3)
             {
-                uint k = u.Triangles[t + 1];
+                int k = u.Triangles[t + 1];
                 u.Triangles[t + 1] = u.Triangles[t + 2];
                 u.Triangles[t + 2] = k;
             }
@@ -115,7 +116,7 @@ namespace Hedge.Tests
         }
 
         // A corner's 12 floats as hex bits: position, normal, texcoord, colour.
-        static string CornerKey(float[] p, float[] n, float[] uv, float[] c, uint i)
+        static string CornerKey(float[] p, float[] n, float[] uv, float[] c, int i)
         {
             var s = new StringBuilder(12 * 9);
             for (int k = 0; k < 3; ++k) s.Append(Bits(p[3 * i + k]));
@@ -131,7 +132,7 @@ namespace Hedge.Tests
         }
 
         // Triangles as sorted keys, each rotated to start at its smallest corner (winding kept).
-        static List<string> TriangleKeys(float[] p, float[] n, float[] uv, float[] c, uint[] indices, int count)
+        static List<string> TriangleKeys(float[] p, float[] n, float[] uv, float[] c, int[] indices, int count)
         {
             var keys = new List<string>();
             var corner = new string[3];
@@ -151,7 +152,7 @@ namespace Hedge.Tests
         static int Distinct(EngineMesh m, bool positionsOnly)
         {
             var seen = new HashSet<string>();
-            for (uint i = 0; i < m.VertexCount; ++i)
+            for (int i = 0; i < m.VertexCount; ++i)
             {
                 string key = CornerKey(m.Positions, m.Normals, m.Texcoords, m.Colors, i);
                 seen.Add(positionsOnly ? key.Substring(0, 27) : key);
@@ -171,7 +172,7 @@ namespace Hedge.Tests
 
         /// <summary>Copies the four separate streams and the indices of a render object.</summary>
         static void Export(RenderBuffers buffers, out float[] p, out float[] n, out float[] uv, out float[] c,
-                           out uint[] indices)
+                           out int[] indices)
         {
             p = new float[buffers.CopyStream(VertexStream.Vertices, null)];
             n = new float[buffers.CopyStream(VertexStream.Normals, null)];
@@ -181,7 +182,7 @@ namespace Hedge.Tests
             buffers.CopyStream(VertexStream.Normals, n);
             buffers.CopyStream(VertexStream.Texcoords, uv);
             buffers.CopyStream(VertexStream.Colors, c);
-            indices = new uint[buffers.CopyIndices((uint[])null)];
+            indices = new int[buffers.CopyIndices((int[])null)];
             buffers.CopyIndices(indices);
         }
 
@@ -195,23 +196,23 @@ namespace Hedge.Tests
                 int meshVertices = Distinct(engine, true);
                 int renderVertices = Distinct(engine, false);
                 Check.Equal(meshVertices, mesh.VertexCount, "positions welded into topological vertices");
-                Check.Equal((uint)(engine.VertexCount - meshVertices), report.WeldedVertices);
-                Check.Equal(0u, report.Repairs);
+                Check.Equal((int)(engine.VertexCount - meshVertices), report.WeldedVertices);
+                Check.Equal(0, report.Repairs);
                 Check.Equal(engine.Triangles.Length / 3, mesh.FaceCount);
                 MeshCounts c = mesh.Counts;
                 Check.Equal(2L, (long)c.Vertices - c.Edges + c.Faces, "spot is a closed sphere once welded");
 
                 BufferCounts counts = buffers.Counts;
-                Check.Equal((uint)renderVertices, counts.Vertices, "one render vertex per distinct corner");
-                Check.Equal((uint)(renderVertices - meshVertices), counts.SeamSplits);
+                Check.Equal((int)renderVertices, counts.Vertices, "one render vertex per distinct corner");
+                Check.Equal((int)(renderVertices - meshVertices), counts.SeamSplits);
                 Check.True(counts.SeamSplits > 100, "spot has UV seams: " + counts.SeamSplits);
-                Check.Equal((uint)mesh.FaceCount, counts.Triangles);
+                Check.Equal((int)mesh.FaceCount, counts.Triangles);
                 VertexLayout layout = buffers.Layout;
                 Check.True(layout.HasNormals && layout.HasTexcoords && layout.HasColors);
-                Check.Equal(12u, layout.Stride);
+                Check.Equal(12, layout.Stride);
 
                 float[] p, n, uv, col;
-                uint[] indices;
+                int[] indices;
                 Export(buffers, out p, out n, out uv, out col, out indices);
                 List<string> expected = TriangleKeys(engine.Positions, engine.Normals, engine.Texcoords, engine.Colors,
                                                      engine.Triangles, engine.Triangles.Length);
@@ -250,6 +251,80 @@ namespace Hedge.Tests
             RoundTrip(spot, mirrored, Separate(Winding.Clockwise, true));
         }
 
+        /// <summary>A UV-mapped n x n grid of unit squares as engine arrays: uv = (x, y) / n, normal +z. Squares
+        /// right of column seamColumn (if 0 &lt; seamColumn &lt; n) map to uv + (10, 0), so the line x = seamColumn is
+        /// a UV seam: its vertices are duplicated, as an engine holds seams.</summary>
+        public static HalfEdgeMesh UvGrid(int n, int seamColumn = -1)
+        {
+            int side = n + 1;
+            bool seam = seamColumn > 0 && seamColumn < n;
+            int count = side * side + (seam ? side : 0);
+            var p = new float[3 * count];
+            var uv = new float[2 * count];
+            var normals = new float[3 * count];
+            for (int v = 0; v < count; ++v)
+            {
+                int i = v < side * side ? v % side : seamColumn, j = v < side * side ? v / side : v - side * side;
+                bool right = v >= side * side || (seam && i > seamColumn);
+                p[3 * v] = i;
+                p[3 * v + 1] = j;
+                uv[2 * v] = (float)i / n + (right ? 10 : 0);
+                uv[2 * v + 1] = (float)j / n;
+                normals[3 * v + 2] = 1;
+            }
+            var tris = new List<int>();
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i)
+                {
+                    int a = j * side + i, b = a + 1, c = a + side + 1, d = a + side;
+                    if (seam && i == seamColumn)  // the right side's copies of the seam vertices
+                    {
+                        a = side * side + j;
+                        d = side * side + j + 1;
+                    }
+                    tris.AddRange(new[] { a, b, c, a, c, d });
+                }
+            BuildReport report;
+            return HalfEdgeMesh.FromEngineMesh(p, tris.ToArray(), normals, uv, null, EngineImportOptions.Unity,
+                                               out report);
+        }
+
+        // The reported case: on a seamless grid, split the edge from uv (0.5, 0.5) to (0.75, 0.5) at a quarter and
+        // merge the new vertex back into the first end: the survivor must keep one render vertex.
+        static void SplitThenCollapse()
+        {
+            using (HalfEdgeMesh mesh = UvGrid(4))
+            using (RenderBuffers buffers = mesh.GenerateUnityMesh())
+            {
+                Check.Equal(0, buffers.Counts.SeamSplits, "seamless");
+                Vertex a = new Vertex(12), b = new Vertex(13);
+                Check.Equal(new Vec3(2, 2, 0), mesh.GetPosition(a));
+                Vertex v = mesh.SplitHalfEdge(mesh.FindHalfEdge(a, b), 2.25f, 2, 0);
+                Check.True(v.IsValid, "split");
+                buffers.Sync();
+                Check.Equal(0, buffers.Counts.SeamSplits, "after the split");
+                Check.Equal(a, mesh.Collapse(mesh.FindHalfEdge(v, a)), "the first end survives");
+                buffers.Sync();
+                Check.Equal(0, buffers.Counts.SeamSplits, "after the collapse");
+                BufferCounts counts = buffers.Counts;
+                var source = new Vertex[counts.VertexSlots];
+                buffers.CopyVertexSource(source);
+                var uv = new float[buffers.CopyStream(VertexStream.Texcoords, null)];
+                buffers.CopyStream(VertexStream.Texcoords, uv);
+                int survivors = 0;
+                for (int r = 0; r < source.Length; ++r)
+                {
+                    if (source[r] != a) continue;
+                    ++survivors;
+                    Check.Equal(0.5f, uv[2 * r], "u of the survivor");
+                    Check.Equal(0.5f, uv[2 * r + 1], "v of the survivor");
+                }
+                Check.Equal(1, survivors, "one render vertex for the survivor");
+                RenderTests.CheckBuffersMatchMesh(mesh, buffers);
+                Check.Valid(mesh);
+            }
+        }
+
         static void SpotEdits()
         {
             EngineMesh spot = ReadEngineObj(Context.Data("spot_triangulated.obj"));
@@ -278,19 +353,19 @@ namespace Hedge.Tests
                 Check.True(split.IsValid);
                 SyncResult first = buffers.CommitTransaction();
                 Check.False(first.Full);
-                Check.Equal(3u, first.FacesSynced);
+                Check.Equal(3, first.FacesSynced);
                 Check.True(UpdateMirrors(buffers, ref p, ref n, ref uv, ref c, ref indices), "only the dirty ranges");
                 CheckMirrors(buffers, p, n, uv, c, indices);
 
                 // Round 2: collapses and flips, within the mirrors' size: only the dirty ranges are copied.
                 int collapsed = 0;
-                for (uint h = 0; h < 400 && collapsed < 5; h += 7)
+                for (int h = 0; h < 400 && collapsed < 5; h += 7)
                     if (!mesh.IsDeleted(new HalfEdge(h)) && mesh.CanCollapse(new HalfEdge(h)) &&
                         mesh.Collapse(new HalfEdge(h)).IsValid)
                         ++collapsed;
                 Check.Equal(5, collapsed);
                 int flipped = 0;
-                for (uint e = 500; e < 900 && flipped < 5; e += 11)
+                for (int e = 500; e < 900 && flipped < 5; e += 11)
                     if (!mesh.IsDeleted(new Edge(e)) && mesh.Flip(new Edge(e))) ++flipped;
                 Check.Equal(5, flipped);
                 SyncResult second = buffers.Sync();
@@ -333,7 +408,7 @@ namespace Hedge.Tests
         static void CheckMirrors(RenderBuffers buffers, float[] p, float[] n, float[] uv, float[] c, int[] indices)
         {
             float[] p2, n2, uv2, c2;
-            uint[] indices2;
+            int[] indices2;
             Export(buffers, out p2, out n2, out uv2, out c2, out indices2);
             Check.Same(p2, p, p2.Length, "positions");
             Check.Same(n2, n, n2.Length, "normals");

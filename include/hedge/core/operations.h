@@ -7,7 +7,16 @@
 //    float-like types, taken from the nearest source otherwise; see BasePropertyArray::interpolate),
 //    or by a policy of the user's set per property with Property::set_interpolator();
 //  - corner (half-edge) properties such as "h:texcoord" are interpolated along a split edge and
-//    copied to the corners a face is split into;
+//    copied to the corners a face is split into, so a split inside a chart (see below) gives the
+//    new vertex one value and keeps the chart seamless;
+//  - a collapse keeps each chart seamless: around the two ends, faces joined across an edge that is
+//    no seam form one chart (a seam edge: its two faces hold different corner values, in any corner
+//    property, at either end; the corner of vertex x in face f is stored on the half-edge entering
+//    x in f). Every corner of the vertex merged away takes the values of the survivor's corners in
+//    its chart: the survivor keeps its own corner values, as it keeps its position. A collapse along
+//    a seam therefore keeps both sides consistent; one that would pull a seam vertex off its seam
+//    (a chart of the merged vertex without a survivor corner), join two sides of a seam at the
+//    survivor, or shorten a seam that ends at the merged vertex, is refused;
 //  - face properties are copied to the faces a face is split into; edge properties are copied to
 //    the two halves of a split edge.
 // Deleted elements stay in storage until garbage_collection().
@@ -30,12 +39,19 @@ Vertex split_edge(SurfaceMesh& mesh, Edge e, const Vec3& point);
 //! True if collapsing h keeps the mesh a valid, manifold surface: the link condition holds (the
 //! ends share no neighbour but the tips of the triangles on h), the faces on h are distinct, no
 //! interior vertex is left with valence below 3 (which also refuses the collapse of a
-//! tetrahedron), no edge is left with a boundary on both sides, and an interior edge does not join
-//! two boundary vertices. O(valence).
+//! tetrahedron), no edge is left with a boundary on both sides, an interior edge does not join
+//! two boundary vertices, and, when the mesh has corner properties, the collapse keeps every chart
+//! seamless (see the corner rule at the top of this file). O(valence), O(valence^2 + valence x
+//! corner properties) with corner properties.
 bool can_collapse(const SurfaceMesh& mesh, Halfedge h);
+//! Why can_collapse(mesh, h) is false, in a few words ("the surviving vertex would be left with too
+//! few edges", "it would pull a seam vertex off its seam", ...); null if the collapse is allowed.
+//! The string is static. Same cost as can_collapse().
+const char* collapse_refusal(const SurfaceMesh& mesh, Halfedge h);
 //! Merges from_vertex(h) into to_vertex(h); the caller chooses the survivor by choosing the
 //! direction of h, and keeps or sets its position. Triangles on h vanish and their two other edges
-//! merge. \return the surviving vertex, invalid if refused. O(valence).
+//! merge. The merged vertex's corners take the survivor's corner values in their chart (the corner
+//! rule above). \return the surviving vertex, invalid if refused. O(valence).
 Vertex collapse(SurfaceMesh& mesh, Halfedge h);
 
 //! True if e is interior, both its faces are triangles, its tips differ and are not joined by an

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <concepts>
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -47,6 +48,8 @@ class BasePropertyArray {
   virtual void copy_from(const BasePropertyArray& other, std::size_t si, std::size_t di) = 0;
   //! Bytes held by this array (its capacity), for memory accounting.
   virtual std::size_t bytes() const = 0;
+  //! True if elements i and j hold equal values (==); always true for a type without ==.
+  virtual bool equal(std::size_t i, std::size_t j) const = 0;
 
  private:
   std::string name_;
@@ -110,6 +113,10 @@ class PropertyArray final : public BasePropertyArray {
     data_[di] = static_cast<const PropertyArray<T>&>(other).data_[si];
   }
   std::size_t bytes() const override { return data_.capacity() * sizeof(T); }
+  bool equal(std::size_t i, std::size_t j) const override {
+    if constexpr (std::equality_comparable<T>) return data_[i] == data_[j];
+    else return true;
+  }
 
   std::vector<T>& vector() { return data_; }
   const std::vector<T>& vector() const { return data_; }
@@ -240,6 +247,12 @@ class PropertyContainer {
   }
   void copy(std::size_t from, std::size_t to) {
     for (auto& a : arrays_) a->copy(from, to);
+  }
+  //! True if elements i and j hold equal values in every array (see BasePropertyArray::equal).
+  bool equal(std::size_t i, std::size_t j) const {
+    for (const auto& a : arrays_)
+      if (!a->equal(i, j)) return false;
+    return true;
   }
   void compact(const std::vector<Index>& new_index, std::size_t n) {
     for (auto& a : arrays_) a->compact(new_index, n);

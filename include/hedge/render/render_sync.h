@@ -24,6 +24,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "hedge/core/build.h"
@@ -33,11 +34,22 @@
 
 namespace hedge {
 
+//! Where the normal stream comes from. With `automatic`, the default, normals follow the geometry;
+//! `attribute` keeps imported normals as they are, whatever moves.
 enum class NormalSource {
   none,      //!< no normal stream
-  attribute, //!< "h:normal" corners, else "v:normal" vertices; none if neither exists
+  //! "h:normal" corners, else "v:normal" vertices, as they are: never recomputed, so a moved vertex
+  //! keeps its imported normal. None if neither exists. (A RenderSync of the same mesh with
+  //! `automatic` normals rewrites that property, and this one then shows what it wrote.)
+  attribute,
   computed,  //!< area-weighted smooth vertex normals, recomputed around every edit
-  automatic, //!< attribute if the mesh has normals, computed otherwise
+  //! The mesh's normals ("h:normal", else "v:normal") if it has some, following the geometry: at
+  //! each sync, the normals of every vertex of a face an edit touched (a moved vertex, a new or
+  //! changed face) are recomputed, area-weighted, and written into that property. Corners of such a
+  //! vertex that held one normal share the new one; corners that held different normals (a hard
+  //! edge) are recomputed from their own faces, so creases stay. Untouched vertices keep their
+  //! imported normals. Computed normals if the mesh has none. Cost: proportional to the edit.
+  automatic,
 };
 
 struct RenderOptions {
@@ -214,8 +226,11 @@ class RenderSync {
   void free_triangles(std::uint32_t first, std::uint32_t count);
   void mark_indices_written(std::uint32_t first, std::uint32_t count);
   void finish_result();
-  void recompute_normals(const ChangeLog::Pending& p);
+  //! Fills normal_seeds_ with the vertices whose normals the pending changes affect.
+  void seed_normals(const ChangeLog::Pending& p);
   void update_normal(Vertex w);
+  //! Recomputes w's normals into the mesh's normal property (automatic normals with an attribute).
+  void follow_normal(Vertex w);
 
   SurfaceMesh* mesh_;
   RenderOptions options_;
@@ -233,11 +248,14 @@ class RenderSync {
   HalfedgeProperty<Color> h_color_;
   VertexProperty<Color> v_color_;
   bool computed_normals_ = false;
+  bool follow_normals_ = false;  // attribute normals, recomputed into the mesh around edits
   std::vector<Vec3> vertex_normal_;  // computed normals, per mesh vertex
   std::vector<std::uint32_t> normal_stamp_;
   std::uint32_t normal_generation_ = 0;
   std::vector<Vertex> normal_seeds_;
   std::vector<Face> normal_faces_;
+  std::vector<std::pair<Vec3, Vec3d>> normal_groups_;  // follow_normal: old value, new sum
+  std::vector<std::size_t> normal_corner_group_;        // follow_normal: group of each corner
 
   // Vertex buffer: streams_[0] interleaved (or positions), [1..3] normals, texcoords, colours.
   std::vector<float> streams_[4];

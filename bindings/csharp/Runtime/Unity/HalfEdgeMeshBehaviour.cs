@@ -13,9 +13,18 @@ namespace Hedge.Unity
     [RequireComponent(typeof(MeshFilter))]
     public sealed class HalfEdgeMeshBehaviour : MonoBehaviour
     {
-        /// <summary>Recalculate the mesh bounds after vertices moved (a pass over all vertices). Turn it off
-        /// and set Mesh.bounds yourself to keep uploads proportional to the edits.</summary>
+        /// <summary>Keep Mesh.bounds around the mesh. A full upload (building, growth, Compact()) computes them
+        /// over the render vertices; a partial upload only grows them by the vertices it rewrote, so the cost
+        /// follows the edit. After vertices move inward the bounds may stay larger than the mesh (never
+        /// smaller): call <see cref="TightenBounds"/> when culling needs them tight. Turn it off to set
+        /// Mesh.bounds yourself.</summary>
         public bool recalculateBounds = true;
+
+        /// <summary>Keep the source mesh's normals as they are, even where vertices move
+        /// (<see cref="NormalSource.Attribute"/>). By default (false) normals follow the geometry: each upload
+        /// recomputes the normals about what the edits touched (<see cref="NormalSource.Automatic"/>). Read when
+        /// the mesh is built (Awake or <see cref="Build"/>).</summary>
+        public bool keepImportedNormals = false;
 
         const MeshUpdateFlags PartialFlags = MeshUpdateFlags.DontValidateIndices |
                                              MeshUpdateFlags.DontRecalculateBounds;
@@ -26,6 +35,7 @@ namespace Hedge.Unity
         SlotRange[] ranges = new SlotRange[16];
         int normalStream = -1, texcoordStream = -1, colorStream = -1;
         int gpuVertices, indexCount;
+        Vector3 boundsMin, boundsMax;
 
         /// <summary>The editable mesh. Edit it, then let LateUpdate (or <see cref="Upload"/>) upload the change.</summary>
         public HalfEdgeMesh HalfEdgeMesh { get; private set; }
@@ -80,7 +90,9 @@ namespace Hedge.Unity
             HalfEdgeMesh = HalfEdgeMesh.FromEngineMesh(p, source.triangles, fn, fuv, fc, EngineImportOptions.Unity,
                                                        out report);
             Report = report;
-            Buffers = HalfEdgeMesh.GenerateUnityMesh();
+            RenderOptions renderOptions = RenderOptions.Unity;
+            if (keepImportedNormals) renderOptions.Normals = NormalSource.Attribute;
+            Buffers = HalfEdgeMesh.CreateRenderBuffers(renderOptions);
             mesh = new Mesh();
             mesh.name = source.name + " (hedge)";
             mesh.MarkDynamic();
@@ -133,7 +145,51 @@ namespace Hedge.Unity
                     mesh.SetSubMesh(0, new SubMeshDescriptor(0, indexCount, MeshTopology.Triangles), PartialFlags);
                 }
             }
-            if (recalculateBounds && result.VertexRangeCount > 0) mesh.RecalculateBounds();
+            if (recalculateBounds && result.VertexRangeCount > 0) GrowBounds(LoadRanges(true));
+        }
+
+        /// <summary>Sets Mesh.bounds to the exact box of the render vertices in use: a pass over all of them.</summary>
+        public void TightenBounds()
+        {
+            if (Buffers == null) return;
+            boundsMin = new Vector3(float.PositiveInfinity, float.PositiveInfinity, float.PositiveInfinity);
+            boundsMax = new Vector3(float.NegativeInfinity, float.NegativeInfinity, float.NegativeInfinity);
+            BufferCounts counts = Buffers.Counts;
+            int n = counts.VertexSlots;
+            if (counts.Vertices == counts.VertexSlots)
+                for (int v = 0; v < n; ++v) Encapsulate(v);
+            else  // free slots hold stale positions: only the render vertices of triangles count
+                for (int i = 0; i < indexCount; ++i) Encapsulate(indices[i]);
+            SetBounds();
+        }
+
+        // Grows the bounds by the positions of the first rangeCount dirty vertex ranges (in `ranges`).
+        void GrowBounds(int rangeCount)
+        {
+            Vector3 min = boundsMin, max = boundsMax;
+            for (int i = 0; i < rangeCount; ++i)
+                for (int v = ranges[i].First, end = v + ranges[i].Count; v < end; ++v) Encapsulate(v);
+            if (min.x != boundsMin.x || min.y != boundsMin.y || min.z != boundsMin.z || max.x != boundsMax.x ||
+                max.y != boundsMax.y || max.z != boundsMax.z)
+                SetBounds();
+        }
+
+        void Encapsulate(int v)
+        {
+            float x = positions[3 * v], y = positions[3 * v + 1], z = positions[3 * v + 2];
+            if (x < boundsMin.x) boundsMin.x = x;
+            if (y < boundsMin.y) boundsMin.y = y;
+            if (z < boundsMin.z) boundsMin.z = z;
+            if (x > boundsMax.x) boundsMax.x = x;
+            if (y > boundsMax.y) boundsMax.y = y;
+            if (z > boundsMax.z) boundsMax.z = z;
+        }
+
+        void SetBounds()
+        {
+            var b = new Bounds();
+            if (boundsMin.x <= boundsMax.x) b.SetMinMax(boundsMin, boundsMax);
+            mesh.bounds = b;
         }
 
         // Copies the dirty ranges of one stream into its array, then uploads each range.
@@ -180,8 +236,9 @@ namespace Hedge.Unity
             mesh.SetIndexBufferParams(gpuIndices, IndexFormat.UInt32);
             mesh.SetIndexBufferData(indices, 0, 0, gpuIndices, MeshUpdateFlags.DontRecalculateBounds);
             mesh.subMeshCount = 1;
-            mesh.SetSubMesh(0, new SubMeshDescriptor(0, indexCount, MeshTopology.Triangles));
-            mesh.RecalculateBounds();
+            mesh.SetSubMesh(0, new SubMeshDescriptor(0, indexCount, MeshTopology.Triangles),
+                            MeshUpdateFlags.DontRecalculateBounds);
+            if (recalculateBounds) TightenBounds();
         }
 
         void UploadWhole(VertexStream stream, float[] data, int unityStream)

@@ -18,6 +18,7 @@ namespace Hedge.Tests
             var runner = new Runner();
             runner.Add("GlueSmokeTest.BuildEditUpload", BuildEditUpload);
             NativeUploadTests.Register(runner);
+            runner.Add("GlueSmokeTest.NormalsFollowOrStay", NormalsFollowOrStay);
             return runner.Run(args.Length > 0 ? args[0] : null) > 0 ? 1 : 0;
         }
 
@@ -82,6 +83,46 @@ namespace Hedge.Tests
             Check.Equal(0, mesh.SubMesh.indexStart);
         }
 
+        static void CheckBounds(Bounds b, Vector3 min, Vector3 max, string what)
+        {
+            Check.True(Math.Abs(b.min.x - min.x) < 1e-6f && Math.Abs(b.min.y - min.y) < 1e-6f &&
+                       Math.Abs(b.min.z - min.z) < 1e-6f, "bounds min " + what);
+            Check.True(Math.Abs(b.max.x - max.x) < 1e-6f && Math.Abs(b.max.y - max.y) < 1e-6f &&
+                       Math.Abs(b.max.z - max.z) < 1e-6f, "bounds max " + what);
+        }
+
+        // The normal uploaded for the corner of vertex v entered by h.
+        static Vec3 UploadedNormal(HalfEdgeMeshBehaviour b, HalfEdge h)
+        {
+            var n = (float[])b.RenderedMesh.Streams[1];
+            int rv = b.Buffers.GetRenderVertex(h);
+            return new Vec3(n[3 * rv], n[3 * rv + 1], n[3 * rv + 2]);
+        }
+
+        // Lifting a base corner of the pyramid tilts its normal by default; with keepImportedNormals the
+        // imported (0, 0, -1) stays.
+        static void NormalsFollowOrStay()
+        {
+            foreach (bool keep in new[] { false, true })
+            {
+                var go = new GameObject();
+                go.AddComponent<MeshFilter>().sharedMesh = SourceMesh();
+                HalfEdgeMeshBehaviour b = go.AddComponent<HalfEdgeMeshBehaviour>();
+                b.keepImportedNormals = keep;
+                b.Build(SourceMesh());
+                HalfEdgeMesh m = b.HalfEdgeMesh;
+                HalfEdge corner = m.FindHalfEdge(new Vertex(1), new Vertex(0));  // enters vertex 0
+                Check.Equal(new Vec3(0, 0, -1), UploadedNormal(b, corner), "imported");
+                m.SetPosition(new Vertex(0), 0, 0, -1);
+                b.Upload();
+                CheckUploaded(b, "after a move, keep " + keep);
+                Vec3 n = UploadedNormal(b, corner);
+                if (keep) Check.Equal(new Vec3(0, 0, -1), n, "kept");
+                else Check.True(Math.Abs(n.X) + Math.Abs(n.Y) > 0.1f && n.Z > -0.999f, "recomputed: " + n);
+                Check.Valid(m);
+            }
+        }
+
         static void BuildEditUpload()
         {
             var go = new GameObject();
@@ -94,22 +135,40 @@ namespace Hedge.Tests
             Check.True(filter.sharedMesh == b.RenderedMesh && b.RenderedMesh != source, "renders its own mesh");
             Check.True(b.RenderedMesh.Dynamic, "marked dynamic");
             Check.Equal(5, b.HalfEdgeMesh.VertexCount, "the apex copies welded");
-            Check.Equal(1u, b.Report.WeldedVertices);
+            Check.Equal(1, b.Report.WeldedVertices);
             Check.Equal(4, b.HalfEdgeMesh.FaceCount);
             Check.Equal(new Vec3(-0.5f, 0.5f, 1), b.HalfEdgeMesh.GetPosition(new Vertex(4)), "Unity's own coordinates");
-            Check.Equal(6u, b.Buffers.Counts.Vertices, "the seam at the apex survives");
+            Check.Equal(6, b.Buffers.Counts.Vertices, "the seam at the apex survives");
             CheckUploaded(b, "after building");
+            CheckBounds(b.RenderedMesh.bounds, new Vector3(-1, 0, 0), new Vector3(0, 1, 1), "after building");
 
-            // One move: a partial upload.
+            // One move: a partial upload; the bounds grow by the moved vertex, no pass over all vertices.
             UnityEngine.Mesh rendered = b.RenderedMesh;
             rendered.VertexUploads = 0;
             rendered.IndexUploads = 0;
             b.HalfEdgeMesh.SetPosition(new Vertex(4), 0.5f, 0.5f, 2);
             b.Upload();
             Check.True(rendered.VertexUploads > 0, "vertex ranges uploaded");
-            Check.True(rendered.VertexUploads < 6 * 12, "only the dirty ranges: " + rendered.VertexUploads + " floats");
-            Check.Equal(0, rendered.IndexUploads, "no index changed");
+            Check.False(b.Buffers.LastResult.Resized, "within the capacity");
+            // Exactly the dirty ranges: 12 floats a vertex over the four streams. (The normals follow the
+            // move, so the corners whose normals changed are rewritten too.)
+            var dirty = new SlotRange[64];
+            int dirtyVertices = 0, dirtyIndices = 0;
+            for (int i = 0, n = b.Buffers.GetDirtyVertexRanges(dirty); i < n; ++i) dirtyVertices += (int)dirty[i].Count;
+            for (int i = 0, n = b.Buffers.GetDirtyIndexRanges(dirty); i < n; ++i) dirtyIndices += (int)dirty[i].Count;
+            Check.Equal(12 * dirtyVertices, rendered.VertexUploads, "only the dirty vertex ranges");
+            Check.Equal(dirtyIndices, rendered.IndexUploads, "only the dirty index ranges");
             CheckUploaded(b, "after a move");
+            CheckBounds(rendered.bounds, new Vector3(-1, 0, 0), new Vector3(0.5f, 1, 2), "grown by the move");
+            // Moving it back inward leaves them as large (never too small) until TightenBounds().
+            b.HalfEdgeMesh.SetPosition(new Vertex(4), -0.5f, 0.5f, 1);
+            b.Upload();
+            CheckBounds(rendered.bounds, new Vector3(-1, 0, 0), new Vector3(0.5f, 1, 2), "kept after an inward move");
+            b.TightenBounds();
+            CheckBounds(rendered.bounds, new Vector3(-1, 0, 0), new Vector3(0, 1, 1), "tightened");
+            b.HalfEdgeMesh.SetPosition(new Vertex(4), 0.5f, 0.5f, 2);
+            b.Upload();
+            Check.Equal(0, rendered.BoundsRecalculations, "no RecalculateBounds over all vertices");
 
             // A transaction: uploaded once, at EndEdit.
             b.BeginEdit();
@@ -131,19 +190,19 @@ namespace Hedge.Tests
             b.Upload();
             Check.True(rendered.VertexBufferCount > gpuVertices, "reallocated: " + rendered.VertexBufferCount);
             CheckUploaded(b, "after growth");
-            Check.True(rendered.BoundsRecalculations > 0);
+            CheckBounds(rendered.bounds, new Vector3(-1, 0, 0), new Vector3(1, 1, 2), "after growth (a split put a vertex at x = 1)");
             Check.Valid(b.HalfEdgeMesh);
 
             // Removing faces leaves free slots; Compact() on the buffers moves every slot, and the next
             // upload must send everything (it used to send nothing, leaving stale indices and submesh).
             int removed = 0;
-            for (uint f = 0; f < b.HalfEdgeMesh.Counts.FaceSlots && removed < 5; ++f)
+            for (int f = 0; f < b.HalfEdgeMesh.Counts.FaceSlots && removed < 5; ++f)
                 if (b.HalfEdgeMesh.CanRemoveFace(new Face(f)) && b.HalfEdgeMesh.RemoveFace(new Face(f))) ++removed;
             Check.Equal(5, removed);
             b.Upload();
             Check.True(b.Buffers.Counts.FreeTriangleSlots > 0, "holes before compaction");
             b.Buffers.Compact();
-            Check.Equal(0u, b.Buffers.Counts.FreeTriangleSlots);
+            Check.Equal(0, b.Buffers.Counts.FreeTriangleSlots);
             b.Upload();
             CheckUploaded(b, "after Compact()");
             Check.Valid(b.HalfEdgeMesh);

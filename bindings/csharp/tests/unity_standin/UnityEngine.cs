@@ -28,6 +28,25 @@ namespace UnityEngine
         public Color(float r, float g, float b, float a) { this.r = r; this.g = g; this.b = b; this.a = a; }
     }
 
+    public struct Bounds
+    {
+        public Vector3 center { get; set; }
+        public Vector3 extents { get; set; }
+        public Vector3 size { get { return new Vector3(2 * extents.x, 2 * extents.y, 2 * extents.z); } }
+        public Vector3 min { get { return new Vector3(center.x - extents.x, center.y - extents.y, center.z - extents.z); } }
+        public Vector3 max { get { return new Vector3(center.x + extents.x, center.y + extents.y, center.z + extents.z); } }
+        public Bounds(Vector3 center, Vector3 size)
+        {
+            this.center = center;
+            extents = new Vector3(size.x / 2, size.y / 2, size.z / 2);
+        }
+        public void SetMinMax(Vector3 min, Vector3 max)
+        {
+            extents = new Vector3((max.x - min.x) / 2, (max.y - min.y) / 2, (max.z - min.z) / 2);
+            center = new Vector3(min.x + extents.x, min.y + extents.y, min.z + extents.z);
+        }
+    }
+
     public enum MeshTopology { Triangles = 0, Quads = 2, Lines = 3, LineStrip = 4, Points = 5 }
 
     [AttributeUsage(AttributeTargets.Class, AllowMultiple = true)]
@@ -103,6 +122,9 @@ namespace UnityEngine
         public int IndexUploads { get; set; }    // elements written by SetIndexBufferData since reset
         public bool Dynamic { get; private set; }
         public int BoundsRecalculations { get; private set; }
+        Bounds meshBounds;
+        public Bounds bounds { get { return meshBounds; } set { meshBounds = value; ++BoundsSets; } }
+        public int BoundsSets { get; set; }      // assignments to bounds since reset
 
         public Mesh()
         {
