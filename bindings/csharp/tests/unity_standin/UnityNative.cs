@@ -104,19 +104,6 @@ namespace UnityEngine
         public override string ToString() { return "(" + x + ", " + y + ", " + z + ")"; }
     }
 
-    public struct Bounds
-    {
-        public Vector3 center { get; set; }
-        public Vector3 size { get; set; }
-        public Vector3 min { get { return center - 0.5f * size; } }
-        public Vector3 max { get { return center + 0.5f * size; } }
-        public void SetMinMax(Vector3 min, Vector3 max)
-        {
-            center = 0.5f * (min + max);
-            size = max - min;
-        }
-    }
-
     public static class Mathf
     {
         public static float Clamp(float value, float min, float max) { return value < min ? min : value > max ? max : value; }
@@ -226,7 +213,6 @@ namespace UnityEngine
 
     public sealed partial class Mesh
     {
-        public Bounds bounds { get; set; }
         public int NativeVertexUploads { get; set; } // elements written from NativeArrays since reset
         public int NativeIndexUploads { get; set; }
 
