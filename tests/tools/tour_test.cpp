@@ -14,7 +14,7 @@ TEST_F(HedgeCli, TourWritesTheContactSheetAndEveryEditedMesh) {
   const std::string sheet = read_text(out / "spot_control_mesh_tour.png");
   ASSERT_GT(sheet.size(), 24u);
   EXPECT_EQ(sheet.compare(0, 8, "\x89PNG\r\n\x1a\n"), 0);
-  for (const char* stage : {"_catmull_clark.obj", "_split.obj", "_loop.obj", "_smooth.obj", "_hole.obj", "_filled.obj", "_patch.obj"}) {
+  for (const char* stage : {"_catmull_clark.obj", "_split.obj", "_loop.obj", "_smooth.obj", "_decimated.obj", "_fractured.obj", "_hole.obj", "_filled.obj", "_patch.obj"}) {
     const fs::path mesh = out / (std::string("spot_control_mesh") + stage);
     EXPECT_TRUE(fs::exists(mesh)) << mesh;
     const Result v = run({"validate", mesh.string()});
@@ -22,7 +22,7 @@ TEST_F(HedgeCli, TourWritesTheContactSheetAndEveryEditedMesh) {
   }
   // The table: a header and one row per stage, every one valid.
   EXPECT_NE(r.out.find("stage"), std::string::npos);
-  for (const char* stage : {"loaded", "Catmull-Clark", "split all faces", "Loop subdivision", "smoothed", "faces removed", "hole filled", "detached one-ring"})
+  for (const char* stage : {"loaded", "Catmull-Clark", "split all faces", "Loop subdivision", "smoothed", "decimated to 732 faces", "glass fracture", "faces removed", "hole filled", "detached one-ring"})
     EXPECT_NE(r.out.find(stage), std::string::npos) << stage;
   EXPECT_EQ(r.out.find(" NO "), std::string::npos) << r.out;
   // The split stage: 180 faces of 4.4 corners on average become 732 triangles.
@@ -38,6 +38,10 @@ TEST_F(HedgeCli, TourSkipsTheSubdivisionsALargeMeshCannotAfford) {
   EXPECT_NE(r.out.find("Loop subdivision                   skipped"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("split all faces (1-to-3)"), std::string::npos);
   EXPECT_FALSE(fs::exists(tmp("out") / "spot_control_mesh_loop.obj"));
+  // Without Loop's mesh, decimation and fracture take the 732 triangles of the split: a quarter is 183 faces, and
+  // collapses remove two at a time.
+  EXPECT_NE(r.out.find("decimated to 182 faces"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(tmp("out") / "spot_control_mesh_fractured.obj"));
   EXPECT_TRUE(fs::exists(tmp("out") / "spot_control_mesh_tour.png"));
 }
 

@@ -8,16 +8,21 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
 #include "commands.h"
+#include "hedge/algorithms/decimate.h"
 #include "hedge/algorithms/detach_faces.h"
 #include "hedge/algorithms/fill_hole.h"
+#include "hedge/algorithms/fracture.h"
 #include "hedge/algorithms/smooth.h"
 #include "hedge/algorithms/split_all_faces.h"
 #include "hedge/algorithms/subdivide.h"
+#include "hedge/core/build.h"
+#include "hedge/core/export.h"
 #include "hedge/core/operations.h"
 #include "hedge/error.h"
 #include "load.h"
@@ -55,6 +60,35 @@ struct Row {
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 // The interior vertex nearest to the eye, so that an edit around it faces the camera.
+//! The remaining mesh and its shards as one mesh for a picture, each shard pushed away from the
+//! impact by `spread` times its centroid's distance, so the cracks show.
+SurfaceMesh exploded_view(const SurfaceMesh& rest, const std::vector<Shard>& shards, const Vec3& impact,
+                          double spread) {
+  ExportOptions plain;
+  plain.corner_attributes = false;
+  IndexedMesh all = to_indexed(rest, plain);
+  for (const Shard& s : shards) {
+    IndexedMesh piece = to_indexed(s.mesh, plain);
+    const Vec3 push{float(spread * (s.centroid.x - impact.x)), float(spread * (s.centroid.y - impact.y)),
+                    float(spread * (s.centroid.z - impact.z))};
+    const auto base = static_cast<std::uint32_t>(all.positions.size());
+    for (const Vec3& p : piece.positions) all.positions.push_back({p.x + push.x, p.y + push.y, p.z + push.z});
+    for (std::uint32_t i : piece.indices) all.indices.push_back(base + i);
+    if (!piece.face_sizes.empty() || !all.face_sizes.empty()) {
+      // Mixed polygon sizes: spell every face's size out.
+      if (all.face_sizes.empty() && !all.indices.empty())
+        all.face_sizes.assign((all.indices.size() - piece.indices.size()) / 3, 3);
+      if (piece.face_sizes.empty())
+        all.face_sizes.insert(all.face_sizes.end(), piece.indices.size() / 3, 3);
+      else
+        all.face_sizes.insert(all.face_sizes.end(), piece.face_sizes.begin(), piece.face_sizes.end());
+    }
+  }
+  BuildOptions exact;
+  exact.weld = Weld::none;
+  return build(all, exact);
+}
+
 Vertex front_vertex(const SurfaceMesh& m, const Camera& camera) {
   Vertex best;
   double best_d = 1e300;
@@ -106,7 +140,7 @@ int run_tour(const TourOptions& o) {
   const Camera camera = frame(mesh, View::iso, double(w) / h);
   std::vector<Panel> panels;
   std::vector<Row> rows;
-  std::vector<std::string> skipped;
+  std::vector<std::pair<std::string, std::string>> skipped;  // stage, why
   auto add = [&](const std::string& stage, const SurfaceMesh& m, double edit_ms, RenderOptions r,
                  const std::string& file) {
     r.width = w;
@@ -154,12 +188,13 @@ int run_tour(const TourOptions& o) {
     add("Catmull-Clark, " + std::to_string(cc_steps) + (cc_steps == 1 ? " step" : " steps"), cc, ms, r,
         base + "_catmull_clark.obj");
   } else {
-    skipped.push_back("Catmull-Clark");
+    skipped.push_back({"Catmull-Clark", "the result would pass " + std::to_string(o.max_faces) + " faces"});
   }
   // 4. Split all faces 1-to-3 at their centroids (a triangle per corner), 5. the result through one
   // step of Loop's subdivision, and 6. smoothed instead by Taubin's filter, which does not shrink
   // it. A mesh too large to split is smoothed as it is.
   SurfaceMesh split = mesh;
+  std::optional<SurfaceMesh> fine;  // the finest triangle mesh so far, for decimation and fracture
   const bool split_fits = corners <= o.max_faces;
   if (split_fits) {
     t = Clock::now();
@@ -170,7 +205,7 @@ int run_tour(const TourOptions& o) {
     r.shading = Shading::flat;
     add("split all faces (1-to-3)", split, ms, r, base + "_split.obj");
   } else {
-    skipped.push_back("split all faces");
+    skipped.push_back({"split all faces", "the result would pass " + std::to_string(o.max_faces) + " faces"});
   }
   if (split_fits && 4 * split.n_faces() <= o.max_faces) {
     SurfaceMesh loop = split;
@@ -180,8 +215,10 @@ int run_tour(const TourOptions& o) {
     RenderOptions lr;
     lr.wireframe = true;
     add("then Loop subdivision", loop, loop_ms, lr, base + "_loop.obj");
+    fine = std::move(loop);
   } else {
-    skipped.push_back("Loop subdivision");
+    skipped.push_back({"Loop subdivision", "the result would pass " + std::to_string(o.max_faces) + " faces"});
+    if (split_fits) fine = split;
   }
   {
     t = Clock::now();
@@ -194,7 +231,45 @@ int run_tour(const TourOptions& o) {
     add(split_fits ? "or smoothed (Taubin, 10 iterations)" : "smoothed (Taubin, 10 iterations)", split, smooth_ms, sr,
         base + "_smooth.obj");
   }
-  // 7. A hole cut around the vertex nearest the eye, then 8. filled again.
+  // 7. The finest triangle mesh decimated to a quarter of its faces by quadric error, and 8. broken
+  // like glass where it faces the eye, its shards pushed apart so the cracks show.
+  if (fine) {
+    SurfaceMesh coarse = *fine;
+    DecimateOptions d;
+    d.target_faces = std::max<std::size_t>(4, fine->n_faces() / 4);
+    t = Clock::now();
+    const DecimateResult dr = decimate(coarse, d);
+    const double decimate_ms = ms_since(t);
+    RenderOptions r;
+    r.wireframe = true;
+    add("decimated to " + std::to_string(dr.faces) + " faces", coarse, decimate_ms, r, base + "_decimated.obj");
+
+    const Vertex hit = front_vertex(*fine, camera);
+    if (hit.is_valid()) {
+      SurfaceMesh rest = *fine;
+      FractureOptions f;
+      f.seed = 1;
+      t = Clock::now();
+      try {
+        const FractureResult fr = fracture(rest, fine->position(hit), f);
+        const double fracture_ms = ms_since(t);
+        RenderOptions fo;
+        fo.color_by = ColorBy::shard;
+        fo.shading = Shading::flat;
+        const SurfaceMesh view = exploded_view(rest, fr.shards, fr.impact_point, 0.35);
+        add("glass fracture: " + std::to_string(fr.shards.size()) + " shards", view, fracture_ms, fo,
+            base + "_fractured.obj");
+      } catch (const InvalidInputError& e) {
+        // A mesh too small to break, say: the tour goes on, and says why.
+        skipped.push_back({"fracture", e.what()});
+      }
+    } else {
+      skipped.push_back({"fracture", "no vertex faces the camera"});
+    }
+  } else {
+    skipped.push_back({"decimation and fracture", "no triangle mesh: the split would pass " + std::to_string(o.max_faces) + " faces"});
+  }
+  // 9. A hole cut around the vertex nearest the eye, then 10. filled again.
   const Vertex centre = front_vertex(mesh, camera);
   if (centre.is_valid() && faces_near(mesh, centre, 1).size() < mesh.n_faces()) {
     // Rings around it until the hole is about a sixtieth of the mesh, keeping at least half.
@@ -237,7 +312,7 @@ int run_tour(const TourOptions& o) {
     f.shading = Shading::flat;
     add("hole filled: " + std::to_string(filled_faces) + " new faces", filled, fill_ms, f, base + "_filled.obj");
 
-    // 9. The half-edge diagram of the faces around that vertex, detached as a mesh of their own.
+    // 11. The half-edge diagram of the faces around that vertex, detached as a mesh of their own.
     SurfaceMesh rest = mesh;
     t = Clock::now();
     const SurfaceMesh patch = detach_faces(rest, faces_near(mesh, centre, 1));
@@ -267,8 +342,7 @@ int run_tour(const TourOptions& o) {
                 r.valid ? "yes" : "NO", r.edit_ms, r.draw_ms);
     all_valid = all_valid && r.valid;
   }
-  for (const std::string& stage : skipped)
-    std::printf("%-34s skipped: the result would pass %zu faces\n", stage.c_str(), o.max_faces);
+  for (const auto& [stage, why] : skipped) std::printf("%-34s skipped: %s\n", stage.c_str(), why.c_str());
   std::printf("\nwrote %s (every stage side by side)\n", sheet_path.c_str());
   for (const Row& r : rows)
     if (!r.file.empty()) std::printf("wrote %s\n", r.file.c_str());
@@ -282,8 +356,8 @@ Command add_tour_command(CLI::App& parent) {
   auto o = std::make_shared<TourOptions>();
   CLI::App* app = parent.add_subcommand(
       "tour", "Show what hedge does to a mesh: load and repair, validate, Catmull-Clark, split all faces, "
-              "Loop-subdivide and smooth, cut a hole "
-              "and fill it, the half-edge diagram of one vertex's faces; writes a contact sheet PNG of every stage, the "
+              "Loop-subdivide and smooth, decimate, break like glass, "
+              "cut a hole and fill it, the half-edge diagram of one vertex's faces; writes a contact sheet PNG of every stage, the "
               "edited meshes, and prints counts and timings");
   app->add_option("FILE", o->input, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
   app->add_option("--out", o->out_dir, "Folder for the pictures and meshes (created if missing)")
