@@ -427,7 +427,9 @@ FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOpt
   if (!(distance <= tolerance))
     throw InvalidInputError("fracture: the impact (" + number(impact.x) + ", " + number(impact.y) + ", " +
                             number(impact.z) + ") is " + number(distance) + " from the nearest face (" +
-                            std::to_string(hit->face.idx()) + "), beyond the tolerance " + number(tolerance));
+                            std::to_string(hit->face.idx()) + "), beyond the tolerance " + number(tolerance) +
+                            "; the nearest point of the surface is (" + number(hit->point.x) + ", " +
+                            number(hit->point.y) + ", " + number(hit->point.z) + ")");
   bool neighbour = false;
   for (Halfedge h : mesh.halfedges(hit->face))
     if (!mesh.is_boundary(SurfaceMesh::twin(h))) {
