@@ -46,7 +46,14 @@
 // children take their face's properties. A sqrt3 flip across a UV seam cannot keep the seam: the
 // new triangle takes each side's centroid value and the first face's value at the old vertex.
 // Deleted elements are
-// collected first. The change log records a reset: every index changed.
+// collected first (in a copy: the input's garbage stays until the result replaces it). The change
+// log records a reset: every index changed.
+//
+// Each step builds the refined mesh in storage of its own and reads the one before; the mesh given
+// takes the result only at the end, in a step that cannot fail. So if an allocation fails
+// (std::bad_alloc) at any point, in any step, the mesh is left exactly as it was: same counts,
+// links, deletion flags, positions and property values. Its property arrays stay the same objects,
+// so handles to them stay valid, and see the refined mesh afterwards.
 #pragma once
 
 #include "hedge/core/progress.h"
@@ -60,7 +67,9 @@ enum class Subdivision { loop, midpoint, catmull_clark, sqrt3, split_faces };
 //! faces (Loop, midpoint), as many quads as the input had face corners (Catmull-Clark) or as many
 //! triangles as it had face corners (sqrt3: 3F; split_faces). An empty mesh stays empty. `progress`
 //! is called with the fraction done after each step (see core/progress.h); if it throws, the steps
-//! already done stay done.
+//! already done stay done. Memory: the input, the result and, with garbage, a compacted copy of
+//! the input at once.
+//! \throw std::bad_alloc, with the mesh unchanged (strong guarantee), if memory runs out.
 //! \throw InvalidInputError, with the mesh unchanged, if a face is not a triangle for Loop's, the
 //!   midpoint or the sqrt3 scheme (the message names it), if steps is negative, or if the result
 //!   would exceed 2^31 half-edges.
