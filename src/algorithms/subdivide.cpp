@@ -1,5 +1,7 @@
 #include "hedge/algorithms/subdivide.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -90,17 +92,39 @@ void positions_1_to_4(const SurfaceMesh& m, const Old& o, bool loop, Vec3* out) 
 void check(const SurfaceMesh& m, Subdivision scheme, int steps) {
   if (steps < 0) throw InvalidInputError("subdivide: steps must be 0 or more, got " + std::to_string(steps));
   const bool any_polygon = scheme == Subdivision::catmull_clark || scheme == Subdivision::split_faces;
-  if (!any_polygon)
-    for (Face f : m.faces())
-      if (m.valence(f) != 3)
-        throw InvalidInputError(std::string("subdivide: the ") + (scheme == Subdivision::sqrt3 ? "sqrt3" : "1-to-4") +
-                                " scheme needs triangles, and face " + std::to_string(f.idx()) + " has " +
-                                std::to_string(m.valence(f)) + " corners (triangulate first)");
+  // The corners of all faces, and the first face that is not a triangle (one pass, on all cores).
+  const std::size_t nf = m.face_slots();
+  const std::vector<Halfedge>& next = m.halfedge_next_array();
+  const std::vector<Halfedge>& fhe = m.face_halfedge_array();
+  std::atomic<std::size_t> all_corners{0}, not_triangle{nf};
+  detail::parallel_ranges(nf, [&](std::size_t begin, std::size_t end) {
+    std::size_t sum = 0, first = nf;
+    for (std::size_t f = begin; f < end; ++f) {
+      if (m.is_deleted(Face(Index(f)))) continue;
+      const Index h0 = fhe[f].idx(), h2 = next[next[h0].idx()].idx();
+      if (next[h2].idx() == h0) {
+        sum += 3;
+        continue;
+      }
+      if (first == nf) first = f;
+      sum += m.valence(Face(Index(f)));
+    }
+    all_corners += sum;
+    std::size_t seen = not_triangle.load();
+    while (first < seen && !not_triangle.compare_exchange_weak(seen, first)) {
+    }
+  });
+  double corners = double(all_corners.load());
+  if (!any_polygon && not_triangle.load() < nf) {
+    const Face f(Index(not_triangle.load()));
+    throw InvalidInputError(std::string("subdivide: the ") + (scheme == Subdivision::sqrt3 ? "sqrt3" : "1-to-4") +
+                            " scheme needs triangles, and face " + std::to_string(f.idx()) + " has " +
+                            std::to_string(m.valence(f)) + " corners (triangulate first)");
+  }
   // Refuse what would not fit 32-bit indices. With H half-edges, F faces and C face corners, a step
   // makes: Loop, midpoint 2H + 6F half-edges, 4F faces; Catmull-Clark at most 4H; split-faces and
   // sqrt3 H + 2C half-edges and C faces of three corners.
-  double halfedges = double(m.n_halfedges()), faces = double(m.n_faces()), corners = 0;
-  for (Face f : m.faces()) corners += double(m.valence(f));
+  double halfedges = double(m.n_halfedges()), faces = double(m.n_faces());
   for (int s = 0; s < steps; ++s) {
     if (scheme == Subdivision::catmull_clark) {
       halfedges *= 4;
@@ -296,10 +320,11 @@ SurfaceMesh refine_1_to_4(const SurfaceMesh& src, Subdivision scheme) {
 
 
 // ---- Catmull-Clark ----
-// Besides V + e for edge e, face f's point is vertex V + E + f. Every half-edge h of a face gets a
-// compact number q(h) (the faces' half-edges in half-edge order): the quad at the corner where h
-// ends is face q(h), and the inner edge from the middle of h to its face's point is edge 2E + q(h),
-// whose half-edge 2(2E + q(h)) runs toward the face point and 2(2E + q(h)) + 1 back.
+// Besides V + e for edge e, face f's point is vertex V + E + f. The half-edges h_0..h_{n-1} of face
+// f (from halfedge(f)) get the compact numbers q = first(f) + k, first(f) being the running sum of
+// the degrees of the faces before f: the quad at the corner where h_k ends is face q, and the inner
+// edge from the middle of h_k to the face point is edge 2E + q, whose half-edge 2(2E + q) runs
+// toward the face point and 2(2E + q) + 1 back. A face's quads and inner edges are consecutive.
 
 void catmull_clark_positions(const SurfaceMesh& m, const Old& o, Vec3* out) {
   std::vector<Vec3d> face_point(o.nf);
@@ -350,11 +375,20 @@ void catmull_clark_positions(const SurfaceMesh& m, const Old& o, Vec3* out) {
 
 SurfaceMesh refine_catmull_clark(const SurfaceMesh& src) {
   const Old o = read_old(src);
-  // q(h) for the half-edges of faces.
-  std::vector<Index> q(2 * o.ne, kInvalidIndex);
-  Index quads = 0;
-  for (std::size_t h = 0; h < 2 * o.ne; ++h)
-    if (o.face[h].is_valid()) q[h] = quads++;
+  // first(f): the running sum of the face degrees.
+  std::vector<Index> first(o.nf + 1);
+  detail::parallel_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      const Index start = o.fhe[f].idx();
+      Index n = 0, h = start;
+      do h = o.next[h].idx(), ++n;
+      while (h != start);
+      first[f + 1] = n;
+    }
+  });
+  first[0] = 0;
+  for (std::size_t f = 0; f < o.nf; ++f) first[f + 1] += first[f];
+  const Index quads = first[o.nf];
   const std::size_t nv = o.nv + o.ne + o.nf, ne = 2 * o.ne + quads, nf = quads;
   SurfaceMesh m = refined_like(src, nv, ne, nf, o.nv);
   catmull_clark_positions(src, o, m.positions().vector().data());
@@ -364,17 +398,17 @@ SurfaceMesh refine_catmull_clark(const SurfaceMesh& src) {
   write_edge_halves(m, o);
   write_edge_half_properties(m, src, o, old_base);
   const Index inner = Index(2 * o.ne);
-  auto to_centre = [&](Index h) { return Halfedge(2 * (inner + q[h])); };
-  auto from_centre = [&](Index h) { return Halfedge(2 * (inner + q[h]) + 1); };
+  auto to_centre = [&](Index q) { return Halfedge(2 * (inner + q)); };
+  auto from_centre = [&](Index q) { return Halfedge(2 * (inner + q) + 1); };
   detail::parallel_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
       const Vertex centre(Index(o.nv + o.ne + f));
-      const Index start = o.fhe[f].idx();
+      const Index start = o.fhe[f].idx(), q0 = first[f], q_end = first[f + 1];
       Index hk = start;
-      do {
-        const Index hn = o.next[hk].idx();
-        const Halfedge s(second_half(hk)), fi(first_half(hn)), in = to_centre(hn), out = from_centre(hk);
-        const Face quad(q[hk]);
+      for (Index qk = q0; qk < q_end; ++qk) {
+        const Index hn = o.next[hk].idx(), qn = qk + 1 == q_end ? q0 : qk + 1;
+        const Halfedge s(second_half(hk)), fi(first_half(hn)), in = to_centre(qn), out = from_centre(qk);
+        const Face quad(qk);
         m.set_vertex(in, centre);
         m.set_vertex(out, Vertex(Index(o.nv + (hk >> 1))));
         m.set_next(s, fi);
@@ -387,8 +421,8 @@ SurfaceMesh refine_catmull_clark(const SurfaceMesh& src) {
         m.set_face(out, quad);
         m.set_halfedge(quad, s);
         hk = hn;
-      } while (hk != start);
-      m.set_halfedge(centre, from_centre(start));
+      }
+      m.set_halfedge(centre, from_centre(q0));
     }
   });
   // The face point's vertex properties, and the corners: at old vertices copied, at edge middles
@@ -418,23 +452,19 @@ SurfaceMesh refine_catmull_clark(const SurfaceMesh& src) {
       const Index mid_n[2] = {old_base + hk, old_base + hn};
       hprops.copy(old_base + hk, second_half(hk));
       hprops.interpolate(first_half(hn), mid_n, half, 2);
-      hprops.interpolate(from_centre(hk).idx(), mid_k, half, 2);
+      hprops.interpolate(from_centre(first[f] + Index(k)).idx(), mid_k, half, 2);
     }
     old_corners.resize(n);
     for (std::size_t k = 0; k < n; ++k) old_corners[k] = old_base + ring[k];
-    for (std::size_t k = 0; k < n; ++k) hprops.interpolate(to_centre(ring[k]).idx(), old_corners.data(), weights.data(), n);
+    for (std::size_t k = 0; k < n; ++k)
+      hprops.interpolate(to_centre(first[f] + Index(k)).idx(), old_corners.data(), weights.data(), n);
   }
   if (corner_data) hprops.resize(2 * ne);
-  // Face properties: quad q(h) takes face(h).
+  // Face properties: face f's quads take f's.
   PropertyContainer& fprops = m.face_properties();
   if (!fprops.empty())
-    for (std::size_t f = 0; f < o.nf; ++f) {
-      Index h = o.fhe[f].idx();
-      do {
-        fprops.copy_element_from(src.face_properties(), f, q[h]);
-        h = o.next[h].idx();
-      } while (h != o.fhe[f].idx());
-    }
+    for (std::size_t f = 0; f < o.nf; ++f)
+      for (Index q = first[f]; q < first[f + 1]; ++q) fprops.copy_element_from(src.face_properties(), f, q);
   return m;
 }
 

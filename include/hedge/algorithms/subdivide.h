@@ -30,7 +30,8 @@
 // halves of edge e are edges 2e and 2e + 1, the three inner edges of face f are 2E + 3f + {0, 1, 2},
 // and face f becomes faces 4f + {0, 1, 2} (its corners) and 4f + 3 (its middle). Children sit next
 // to their parents, so the order keeps the input's locality. Catmull-Clark adds face f's point as
-// vertex V + E + f and numbers its quads and inner edges after the faces' half-edges, in order.
+// vertex V + E + f and numbers its quads and inner edges face by face: the quad at the k-th corner of
+// face f (counted from halfedge(f)) is face D + k, D the sum of the degrees of the faces before f.
 //
 // sqrt3 and split_faces: old vertices, edges and half-edges keep their index (old edges flipped),
 // face f's centroid is vertex V + f, and with the faces' corners numbered face by face
