@@ -175,11 +175,12 @@ void smooth(SurfaceMesh& m, const SmoothOptions& o) {
       report_progress(o.progress, double(it + 1) / double(o.iterations));
     }
   }
-  for (Vertex v : m.vertices()) {
-    if (mode[v.idx()] == 0) continue;
-    m.position(v) = to_float(p[v.idx()]);
-    m.mark_changed(v, ChangeEvent::vertices_moved);
-  }
+  // The change log first: recording may allocate (when the mesh is watched), the writes cannot, so
+  // a std::bad_alloc leaves the positions as they were.
+  for (Vertex v : m.vertices())
+    if (mode[v.idx()] != 0) m.mark_changed(v, ChangeEvent::vertices_moved);
+  for (Vertex v : m.vertices())
+    if (mode[v.idx()] != 0) m.position(v) = to_float(p[v.idx()]);
   m.changes().notify();
 }
 

@@ -1,5 +1,7 @@
 #include "hedge/algorithms/subdivide.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -19,13 +21,15 @@ namespace {
 inline Index first_half(Index h) { return 4 * (h >> 1) + 3 * (h & 1); }
 inline Index second_half(Index h) { return 4 * (h >> 1) + 2 - (h & 1); }
 
+// The mesh being refined, read-only: the refined one is built in a mesh of its own, so that the
+// input stays as it was until the result is complete.
 struct Old {
   std::size_t nv = 0, ne = 0, nf = 0;
-  std::vector<Vertex> to;       // per half-edge
-  std::vector<Halfedge> next;   // per half-edge
-  std::vector<Face> face;       // per half-edge
-  std::vector<Halfedge> vout;   // per vertex
-  std::vector<Halfedge> fhe;    // per face
+  const Vertex* to = nullptr;       // per half-edge
+  const Halfedge* next = nullptr;   // per half-edge
+  const Face* face = nullptr;       // per half-edge
+  const Halfedge* vout = nullptr;   // per vertex
+  const Halfedge* fhe = nullptr;    // per face
   std::vector<std::uint8_t> sharp;  // per edge: boundary or "e:crease"
 };
 
@@ -37,8 +41,7 @@ double loop_beta(std::size_t n) {
 
 // Positions of the 1-to-4 schemes, from the old arrays: the old vertices (first nv entries; Loop
 // moves them) and the edge vertices (then ne; Loop's masks, or midpoints).
-std::vector<Vec3> positions_1_to_4(const SurfaceMesh& m, const Old& o, bool loop) {
-  std::vector<Vec3> out(o.nv + o.ne);
+void positions_1_to_4(const SurfaceMesh& m, const Old& o, bool loop, Vec3* out) {
   const Vec3* p = m.positions().vector().data();
   detail::parallel_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
     for (std::size_t e = begin; e < end; ++e) {
@@ -84,23 +87,44 @@ std::vector<Vec3> positions_1_to_4(const SurfaceMesh& m, const Old& o, bool loop
       out[v] = to_float(np);
     }
   });
-  return out;
 }
 
 void check(const SurfaceMesh& m, Subdivision scheme, int steps) {
   if (steps < 0) throw InvalidInputError("subdivide: steps must be 0 or more, got " + std::to_string(steps));
   const bool any_polygon = scheme == Subdivision::catmull_clark || scheme == Subdivision::split_faces;
-  if (!any_polygon)
-    for (Face f : m.faces())
-      if (m.valence(f) != 3)
-        throw InvalidInputError(std::string("subdivide: the ") + (scheme == Subdivision::sqrt3 ? "sqrt3" : "1-to-4") +
-                                " scheme needs triangles, and face " + std::to_string(f.idx()) + " has " +
-                                std::to_string(m.valence(f)) + " corners (triangulate first)");
+  // The corners of all faces, and the first face that is not a triangle (one pass, on all cores).
+  const std::size_t nf = m.face_slots();
+  const std::vector<Halfedge>& next = m.halfedge_next_array();
+  const std::vector<Halfedge>& fhe = m.face_halfedge_array();
+  std::atomic<std::size_t> all_corners{0}, not_triangle{nf};
+  detail::parallel_ranges(nf, [&](std::size_t begin, std::size_t end) {
+    std::size_t sum = 0, first = nf;
+    for (std::size_t f = begin; f < end; ++f) {
+      if (m.is_deleted(Face(Index(f)))) continue;
+      const Index h0 = fhe[f].idx(), h2 = next[next[h0].idx()].idx();
+      if (next[h2].idx() == h0) {
+        sum += 3;
+        continue;
+      }
+      if (first == nf) first = f;
+      sum += m.valence(Face(Index(f)));
+    }
+    all_corners += sum;
+    std::size_t seen = not_triangle.load();
+    while (first < seen && !not_triangle.compare_exchange_weak(seen, first)) {
+    }
+  });
+  double corners = double(all_corners.load());
+  if (!any_polygon && not_triangle.load() < nf) {
+    const Face f(Index(not_triangle.load()));
+    throw InvalidInputError(std::string("subdivide: the ") + (scheme == Subdivision::sqrt3 ? "sqrt3" : "1-to-4") +
+                            " scheme needs triangles, and face " + std::to_string(f.idx()) + " has " +
+                            std::to_string(m.valence(f)) + " corners (triangulate first)");
+  }
   // Refuse what would not fit 32-bit indices. With H half-edges, F faces and C face corners, a step
   // makes: Loop, midpoint 2H + 6F half-edges, 4F faces; Catmull-Clark at most 4H; split-faces and
   // sqrt3 H + 2C half-edges and C faces of three corners.
-  double halfedges = double(m.n_halfedges()), faces = double(m.n_faces()), corners = 0;
-  for (Face f : m.faces()) corners += double(m.valence(f));
+  double halfedges = double(m.n_halfedges()), faces = double(m.n_faces());
   for (int s = 0; s < steps; ++s) {
     if (scheme == Subdivision::catmull_clark) {
       halfedges *= 4;
@@ -117,65 +141,51 @@ void check(const SurfaceMesh& m, Subdivision scheme, int steps) {
   }
 }
 
-Old read_old(SurfaceMesh& m) {
-  if (m.has_garbage()) m.garbage_collection();
+Old read_old(const SurfaceMesh& m) {
   Old o;
   o.nv = m.vertex_slots();
   o.ne = m.edge_slots();
   o.nf = m.face_slots();
-  o.to = m.halfedge_vertex_array();
-  o.next = m.halfedge_next_array();
-  o.face = m.halfedge_face_array();
-  o.vout.resize(o.nv);
-  for (std::size_t v = 0; v < o.nv; ++v) o.vout[v] = m.halfedge(Vertex(Index(v)));
-  o.fhe.resize(o.nf);
-  for (std::size_t f = 0; f < o.nf; ++f) o.fhe[f] = m.halfedge(Face(Index(f)));
-  o.sharp.resize(o.ne);
-  const auto crease = m.get_edge_property<std::uint8_t>("e:crease");
-  for (std::size_t e = 0; e < o.ne; ++e)
-    o.sharp[e] = !o.face[2 * e].is_valid() || !o.face[2 * e + 1].is_valid() || (crease && crease[Edge(Index(e))] != 0);
-  return o;
-}
-
-// For the 1-to-4 schemes: collects garbage, then resizes the mesh for the refined one (V + E
-// vertices, 2E + 3F edges, 4F faces) taking the old connectivity out of it rather than copying it.
-// Corner data is kept as resize_keeping_corners() does; returns that copy's first index.
-Index release_old(SurfaceMesh& m, Old& o) {
-  if (m.has_garbage()) m.garbage_collection();
-  o.nv = m.vertex_slots();
-  o.ne = m.edge_slots();
-  o.nf = m.face_slots();
-  const std::size_t ne = 2 * o.ne + 3 * o.nf, nh = 2 * ne;
-  SurfaceMesh::Connectivity old = m.release_connectivity(o.nv + o.ne, ne, 4 * o.nf);
-  o.to = std::move(old.h_vertex);
-  o.next = std::move(old.h_next);
-  o.face = std::move(old.h_face);
-  o.vout = std::move(old.v_halfedge);
-  o.fhe = std::move(old.f_halfedge);
+  o.to = m.halfedge_vertex_array().data();
+  o.next = m.halfedge_next_array().data();
+  o.face = m.halfedge_face_array().data();
+  o.vout = m.vertex_halfedge_array().data();
+  o.fhe = m.face_halfedge_array().data();
   o.sharp.resize(o.ne);
   const auto crease = m.get_edge_property<std::uint8_t>("e:crease");
   detail::parallel_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
     for (std::size_t e = begin; e < end; ++e)
       o.sharp[e] = !o.face[2 * e].is_valid() || !o.face[2 * e + 1].is_valid() || (crease && crease[Edge(Index(e))] != 0);
   });
-  PropertyContainer& hprops = m.halfedge_properties();
-  if (!hprops.empty()) {
-    hprops.resize(nh + 2 * o.ne);
-    for (std::size_t h = 0; h < 2 * o.ne; ++h) hprops.copy(h, nh + h);
-  }
-  return Index(nh);
+  return o;
 }
 
-// Resizes the mesh for the refined one (nv, ne, nf) and, when there is corner data, keeps a copy
-// of the old half-edges' values past the end of the new ones, where no write reaches them.
-// Returns the index of that copy's first element.
-Index resize_keeping_corners(SurfaceMesh& m, const Old& o, std::size_t nv, std::size_t ne, std::size_t nf) {
-  PropertyContainer& hprops = m.halfedge_properties();
-  const std::size_t nh = 2 * ne;
-  m.resize(nv, ne, nf);
+// An empty mesh of nv vertices, ne edges and nf faces (links invalid) with the properties of
+// `src`, whose first `keep_vertices` vertices carry src's vertex properties (positions aside: the
+// caller writes them all).
+SurfaceMesh refined_like(const SurfaceMesh& src, std::size_t nv, std::size_t ne, std::size_t nf,
+                         std::size_t keep_vertices) {
+  SurfaceMesh out;
+  out.vertex_properties().add_missing_from(src.vertex_properties());
+  out.halfedge_properties().add_missing_from(src.halfedge_properties());
+  out.edge_properties().add_missing_from(src.edge_properties());
+  out.face_properties().add_missing_from(src.face_properties());
+  out.resize(nv, ne, nf);
+  const PropertyContainer& from = src.vertex_properties();
+  if (from.array_count() > 1)
+    for (std::size_t v = 0; v < keep_vertices; ++v) out.vertex_properties().copy_element_from(from, v, v);
+  return out;
+}
+
+// When there is corner data, makes room in out past its nh half-edges for a copy of the old
+// half-edges' values, where no write reaches them, and copies them there. Returns the index of
+// that copy's first element.
+Index keep_old_corners(SurfaceMesh& out, const SurfaceMesh& src, std::size_t nh) {
+  PropertyContainer& hprops = out.halfedge_properties();
   if (!hprops.empty()) {
-    hprops.resize(nh + 2 * o.ne);
-    for (std::size_t h = 0; h < 2 * o.ne; ++h) hprops.copy(h, nh + h);
+    const std::size_t old_nh = src.halfedge_slots();
+    hprops.resize(nh + old_nh);
+    for (std::size_t h = 0; h < old_nh; ++h) hprops.copy_element_from(src.halfedge_properties(), h, nh + h);
   }
   return Index(nh);
 }
@@ -215,7 +225,7 @@ void write_edge_halves(SurfaceMesh& m, const Old& o) {
 // The properties of the edge halves: boundary halves' corners (the old corner values sit at
 // old_base + h), edge properties of both halves, and the edge vertices' vertex properties (the
 // average of the ends; positions are the caller's).
-void write_edge_half_properties(SurfaceMesh& m, const Old& o, Index old_base) {
+void write_edge_half_properties(SurfaceMesh& m, const SurfaceMesh& src, const Old& o, Index old_base) {
   PropertyContainer& hprops = m.halfedge_properties();
   if (!hprops.empty())
     for (Index h = 0; h < 2 * o.ne; ++h)
@@ -223,12 +233,12 @@ void write_edge_half_properties(SurfaceMesh& m, const Old& o, Index old_base) {
         hprops.copy(old_base + h, first_half(h));
         hprops.copy(old_base + h, second_half(h));
       }
-  // Edge properties: both halves; going from the last edge down never overwrites one still to read.
+  // Edge properties: both halves.
   PropertyContainer& eprops = m.edge_properties();
   if (!eprops.empty())
-    for (std::size_t e = o.ne; e-- > 0;) {
-      eprops.copy(e, 2 * e + 1);
-      eprops.copy(e, 2 * e);
+    for (std::size_t e = 0; e < o.ne; ++e) {
+      eprops.copy_element_from(src.edge_properties(), e, 2 * e);
+      eprops.copy_element_from(src.edge_properties(), e, 2 * e + 1);
     }
   PropertyContainer& vprops = m.vertex_properties();
   if (vprops.array_count() > 1) {
@@ -240,14 +250,14 @@ void write_edge_half_properties(SurfaceMesh& m, const Old& o, Index old_base) {
   }
 }
 
-void refine_1_to_4(SurfaceMesh& m, Subdivision scheme) {
-  Old o;
-  const Index old_base = release_old(m, o);
-  // The old positions are the first V of the grown array.
-  std::vector<Vec3> positions = positions_1_to_4(m, o, scheme == Subdivision::loop);
-  const std::size_t nh = old_base;
+SurfaceMesh refine_1_to_4(const SurfaceMesh& src, Subdivision scheme) {
+  const Old o = read_old(src);
+  const std::size_t nh = 2 * (2 * o.ne + 3 * o.nf);
+  SurfaceMesh m = refined_like(src, o.nv + o.ne, nh / 2, 4 * o.nf, o.nv);
+  positions_1_to_4(src, o, scheme == Subdivision::loop, m.positions().vector().data());
+  const Index old_base = keep_old_corners(m, src, nh);
   write_edge_halves(m, o);
-  write_edge_half_properties(m, o, old_base);
+  write_edge_half_properties(m, src, o, old_base);
   // Faces: three corner triangles and the middle one.
   detail::parallel_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
@@ -303,20 +313,20 @@ void refine_1_to_4(SurfaceMesh& m, Subdivision scheme) {
   }
   PropertyContainer& fprops = m.face_properties();
   if (!fprops.empty())
-    for (std::size_t f = o.nf; f-- > 0;)
-      for (std::size_t k = 4; k-- > 0;) fprops.copy(f, 4 * f + k);
-  m.positions().vector().swap(positions);
+    for (std::size_t f = 0; f < o.nf; ++f)
+      for (std::size_t k = 0; k < 4; ++k) fprops.copy_element_from(src.face_properties(), f, 4 * f + k);
+  return m;
 }
 
 
 // ---- Catmull-Clark ----
-// Besides V + e for edge e, face f's point is vertex V + E + f. Every half-edge h of a face gets a
-// compact number q(h) (the faces' half-edges in half-edge order): the quad at the corner where h
-// ends is face q(h), and the inner edge from the middle of h to its face's point is edge 2E + q(h),
-// whose half-edge 2(2E + q(h)) runs toward the face point and 2(2E + q(h)) + 1 back.
+// Besides V + e for edge e, face f's point is vertex V + E + f. The half-edges h_0..h_{n-1} of face
+// f (from halfedge(f)) get the compact numbers q = first(f) + k, first(f) being the running sum of
+// the degrees of the faces before f: the quad at the corner where h_k ends is face q, and the inner
+// edge from the middle of h_k to the face point is edge 2E + q, whose half-edge 2(2E + q) runs
+// toward the face point and 2(2E + q) + 1 back. A face's quads and inner edges are consecutive.
 
-std::vector<Vec3> catmull_clark_positions(const SurfaceMesh& m, const Old& o) {
-  std::vector<Vec3> out(o.nv + o.ne + o.nf);
+void catmull_clark_positions(const SurfaceMesh& m, const Old& o, Vec3* out) {
   std::vector<Vec3d> face_point(o.nf);
   detail::parallel_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
@@ -361,35 +371,44 @@ std::vector<Vec3> catmull_clark_positions(const SurfaceMesh& m, const Old& o) {
       out[vi] = to_float(p);
     }
   });
-  return out;
 }
 
-void refine_catmull_clark(SurfaceMesh& m) {
-  Old o = read_old(m);
-  std::vector<Vec3> positions = catmull_clark_positions(m, o);
-  // q(h) for the half-edges of faces.
-  std::vector<Index> q(2 * o.ne, kInvalidIndex);
-  Index quads = 0;
-  for (std::size_t h = 0; h < 2 * o.ne; ++h)
-    if (o.face[h].is_valid()) q[h] = quads++;
+SurfaceMesh refine_catmull_clark(const SurfaceMesh& src) {
+  const Old o = read_old(src);
+  // first(f): the running sum of the face degrees.
+  std::vector<Index> first(o.nf + 1);
+  detail::parallel_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      const Index start = o.fhe[f].idx();
+      Index n = 0, h = start;
+      do h = o.next[h].idx(), ++n;
+      while (h != start);
+      first[f + 1] = n;
+    }
+  });
+  first[0] = 0;
+  for (std::size_t f = 0; f < o.nf; ++f) first[f + 1] += first[f];
+  const Index quads = first[o.nf];
   const std::size_t nv = o.nv + o.ne + o.nf, ne = 2 * o.ne + quads, nf = quads;
-  const Index old_base = resize_keeping_corners(m, o, nv, ne, nf);
+  SurfaceMesh m = refined_like(src, nv, ne, nf, o.nv);
+  catmull_clark_positions(src, o, m.positions().vector().data());
+  const Index old_base = keep_old_corners(m, src, 2 * ne);
   PropertyContainer& hprops = m.halfedge_properties();
   const bool corner_data = !hprops.empty();
   write_edge_halves(m, o);
-  write_edge_half_properties(m, o, old_base);
+  write_edge_half_properties(m, src, o, old_base);
   const Index inner = Index(2 * o.ne);
-  auto to_centre = [&](Index h) { return Halfedge(2 * (inner + q[h])); };
-  auto from_centre = [&](Index h) { return Halfedge(2 * (inner + q[h]) + 1); };
+  auto to_centre = [&](Index q) { return Halfedge(2 * (inner + q)); };
+  auto from_centre = [&](Index q) { return Halfedge(2 * (inner + q) + 1); };
   detail::parallel_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
       const Vertex centre(Index(o.nv + o.ne + f));
-      const Index start = o.fhe[f].idx();
+      const Index start = o.fhe[f].idx(), q0 = first[f], q_end = first[f + 1];
       Index hk = start;
-      do {
-        const Index hn = o.next[hk].idx();
-        const Halfedge s(second_half(hk)), fi(first_half(hn)), in = to_centre(hn), out = from_centre(hk);
-        const Face quad(q[hk]);
+      for (Index qk = q0; qk < q_end; ++qk) {
+        const Index hn = o.next[hk].idx(), qn = qk + 1 == q_end ? q0 : qk + 1;
+        const Halfedge s(second_half(hk)), fi(first_half(hn)), in = to_centre(qn), out = from_centre(qk);
+        const Face quad(qk);
         m.set_vertex(in, centre);
         m.set_vertex(out, Vertex(Index(o.nv + (hk >> 1))));
         m.set_next(s, fi);
@@ -402,8 +421,8 @@ void refine_catmull_clark(SurfaceMesh& m) {
         m.set_face(out, quad);
         m.set_halfedge(quad, s);
         hk = hn;
-      } while (hk != start);
-      m.set_halfedge(centre, from_centre(start));
+      }
+      m.set_halfedge(centre, from_centre(q0));
     }
   });
   // The face point's vertex properties, and the corners: at old vertices copied, at edge middles
@@ -433,28 +452,20 @@ void refine_catmull_clark(SurfaceMesh& m) {
       const Index mid_n[2] = {old_base + hk, old_base + hn};
       hprops.copy(old_base + hk, second_half(hk));
       hprops.interpolate(first_half(hn), mid_n, half, 2);
-      hprops.interpolate(from_centre(hk).idx(), mid_k, half, 2);
+      hprops.interpolate(from_centre(first[f] + Index(k)).idx(), mid_k, half, 2);
     }
     old_corners.resize(n);
     for (std::size_t k = 0; k < n; ++k) old_corners[k] = old_base + ring[k];
-    for (std::size_t k = 0; k < n; ++k) hprops.interpolate(to_centre(ring[k]).idx(), old_corners.data(), weights.data(), n);
+    for (std::size_t k = 0; k < n; ++k)
+      hprops.interpolate(to_centre(first[f] + Index(k)).idx(), old_corners.data(), weights.data(), n);
   }
   if (corner_data) hprops.resize(2 * ne);
-  // Face properties: quad q(h) takes face(h). Quads are numbered by half-edge, not by face, so a
-  // quad may land on a parent still to be read: copy from a snapshot of the parents.
+  // Face properties: face f's quads take f's.
   PropertyContainer& fprops = m.face_properties();
-  if (!fprops.empty()) {
-    PropertyContainer parents = fprops;
-    parents.resize(o.nf);
-    for (std::size_t f = 0; f < o.nf; ++f) {
-      Index h = o.fhe[f].idx();
-      do {
-        fprops.copy_element_from(parents, f, q[h]);
-        h = o.next[h].idx();
-      } while (h != o.fhe[f].idx());
-    }
-  }
-  m.positions().vector().swap(positions);
+  if (!fprops.empty())
+    for (std::size_t f = 0; f < o.nf; ++f)
+      for (Index q = first[f]; q < first[f + 1]; ++q) fprops.copy_element_from(src.face_properties(), f, q);
+  return m;
 }
 
 
@@ -534,9 +545,8 @@ std::vector<Vec3> sqrt3_positions(const SurfaceMesh& m, const std::vector<std::u
   return out;
 }
 
-void refine_at_centres(SurfaceMesh& m, bool sqrt3) {
-  if (m.has_garbage()) m.garbage_collection();
-  const Split s = face_rings(m);
+SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3) {
+  const Split s = face_rings(src);
   const std::size_t nc = s.ring.size();
   const Index E = Index(s.ne), V = Index(s.nv);
   // Which edges sqrt(3) leaves unflipped (boundary and crease edges), and each half-edge's q.
@@ -545,22 +555,22 @@ void refine_at_centres(SurfaceMesh& m, bool sqrt3) {
   std::vector<Vec3> smoothed;
   if (sqrt3) {
     keep.resize(s.ne);
-    const auto crease = m.get_edge_property<std::uint8_t>("e:crease");
+    const auto crease = src.get_edge_property<std::uint8_t>("e:crease");
     detail::parallel_ranges(s.ne, [&](std::size_t begin, std::size_t end) {
       for (std::size_t e = begin; e < end; ++e)
-        keep[e] = m.is_boundary(Edge(Index(e))) || (crease && crease[Edge(Index(e))] != 0);
+        keep[e] = src.is_boundary(Edge(Index(e))) || (crease && crease[Edge(Index(e))] != 0);
     });
     q.resize(2 * s.ne);  // boundary half-edges' entries are never read
     detail::parallel_ranges(nc, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) q[s.ring[i]] = Index(i);
     });
-    smoothed = sqrt3_positions(m, keep);
+    smoothed = sqrt3_positions(src, keep);
   }
   // Face centroids, summed in double as face_centroid() does.
   std::vector<Vec3> centres(s.nf);
   detail::parallel_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
-    const Vec3* p = m.positions().vector().data();
-    const std::vector<Vertex>& to = m.halfedge_vertex_array();
+    const Vec3* p = src.positions().vector().data();
+    const std::vector<Vertex>& to = src.halfedge_vertex_array();
     for (std::size_t f = begin; f < end; ++f) {
       Vec3d c{0, 0, 0};
       for (Index i = s.first[f]; i < s.first[f + 1]; ++i) c += to_double(p[to[s.ring[i]].idx()]);
@@ -568,7 +578,29 @@ void refine_at_centres(SurfaceMesh& m, bool sqrt3) {
     }
   });
 
-  m.resize(s.nv + s.nf, s.ne + nc, nc);
+  // Old vertices, edges and half-edges keep their index, links and properties; the links of the
+  // old half-edges of faces and the old vertices' outgoing half-edges are rewritten below.
+  SurfaceMesh m = refined_like(src, s.nv + s.nf, s.ne + nc, nc, s.nv);
+  detail::parallel_ranges(2 * s.ne, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t h = begin; h < end; ++h) {
+      m.set_vertex(Halfedge(Index(h)), src.to_vertex(Halfedge(Index(h))));
+      m.set_next(Halfedge(Index(h)), src.next(Halfedge(Index(h))));
+      m.set_face(Halfedge(Index(h)), src.face(Halfedge(Index(h))));
+    }
+  });
+  detail::parallel_ranges(s.nv, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) m.set_halfedge(Vertex(Index(v)), src.halfedge(Vertex(Index(v))));
+  });
+  {
+    const PropertyContainer& hfrom = src.halfedge_properties();
+    PropertyContainer& hto = m.halfedge_properties();
+    if (!hto.empty())
+      for (std::size_t h = 0; h < 2 * s.ne; ++h) hto.copy_element_from(hfrom, h, h);
+    const PropertyContainer& efrom = src.edge_properties();
+    PropertyContainer& eto = m.edge_properties();
+    if (!eto.empty())
+      for (std::size_t e = 0; e < s.ne; ++e) eto.copy_element_from(efrom, e, e);
+  }
   auto in = [&](Index c) { return Halfedge(2 * (E + c)); };
   auto out = [&](Index c) { return Halfedge(2 * (E + c) + 1); };
   detail::parallel_ranges(s.nf, [&](std::size_t f_begin, std::size_t f_end) {
@@ -641,11 +673,22 @@ void refine_at_centres(SurfaceMesh& m, bool sqrt3) {
       if (!keep[s.ring[c] >> 1]) hprops.copy(in(Index(c)).idx(), s.ring[c]);
   PropertyContainer& fprops = m.face_properties();
   if (!fprops.empty())
-    for (std::size_t f = s.nf; f-- > 0;)
-      for (Index c = s.first[f + 1]; c-- > s.first[f];) fprops.copy(f, c);
+    for (std::size_t f = 0; f < s.nf; ++f)
+      for (Index c = s.first[f]; c < s.first[f + 1]; ++c) fprops.copy_element_from(src.face_properties(), f, c);
   for (std::size_t f = 0; f < s.nf; ++f) m.position(Vertex(V + Index(f))) = centres[f];
-  if (sqrt3)
-    for (std::size_t v = 0; v < s.nv; ++v) m.position(Vertex(Index(v))) = smoothed[v];
+  for (std::size_t v = 0; v < s.nv; ++v)
+    m.position(Vertex(Index(v))) = sqrt3 ? smoothed[v] : src.position(Vertex(Index(v)));
+  return m;
+}
+
+// One step from src, into a mesh of its own.
+SurfaceMesh refine(const SurfaceMesh& src, Subdivision scheme) {
+  switch (scheme) {
+    case Subdivision::catmull_clark: return refine_catmull_clark(src);
+    case Subdivision::sqrt3: return refine_at_centres(src, true);
+    case Subdivision::split_faces: return refine_at_centres(src, false);
+    default: return refine_1_to_4(src, scheme);
+  }
 }
 
 }  // namespace
@@ -653,18 +696,34 @@ void refine_at_centres(SurfaceMesh& m, bool sqrt3) {
 void subdivide(SurfaceMesh& mesh, Subdivision scheme, int steps, const Progress& progress) {
   check(mesh, scheme, steps);
   report_progress(progress, 0);
+  if (steps == 0) return;
+  // Every step reads the mesh before it and writes a new one; `mesh` takes the last one only
+  // (swap_elements cannot fail), so that a failure on the way (std::bad_alloc) leaves it as it was.
+  SurfaceMesh compact, result;
+  const SurfaceMesh* from = &mesh;
+  if (mesh.has_garbage()) {
+    compact = mesh;
+    compact.garbage_collection();
+    from = &compact;
+  }
   for (int s = 0; s < steps; ++s) {
-    switch (scheme) {
-      case Subdivision::catmull_clark: refine_catmull_clark(mesh); break;
-      case Subdivision::sqrt3: refine_at_centres(mesh, true); break;
-      case Subdivision::split_faces: refine_at_centres(mesh, false); break;
-      default: refine_1_to_4(mesh, scheme);
-    }
+    SurfaceMesh next = refine(*from, scheme);
+    result = std::move(next);
+    from = &result;
+    if (s + 1 == steps) break;
     // Each step costs about as much as all the steps before it together times the growth (4 or 3).
     const double growth = scheme == Subdivision::sqrt3 || scheme == Subdivision::split_faces ? 3 : 4;
-    report_progress(progress, (std::pow(growth, s + 1) - 1) / (std::pow(growth, steps) - 1));
+    try {
+      report_progress(progress, (std::pow(growth, s + 1) - 1) / (std::pow(growth, steps) - 1));
+    } catch (...) {
+      mesh.swap_elements(result);  // the steps done stay done
+      mesh.changes().notify();
+      throw;
+    }
   }
-  if (steps > 0) mesh.changes().notify();
+  mesh.swap_elements(result);
+  mesh.changes().notify();
+  report_progress(progress, 1);
 }
 
 }  // namespace hedge

@@ -254,6 +254,25 @@ SurfaceMesh::Connectivity SurfaceMesh::release_connectivity(std::size_t n_v, std
   return old;
 }
 
+void SurfaceMesh::swap_elements(SurfaceMesh& other) noexcept {
+  h_vertex_.swap(other.h_vertex_);
+  h_next_.swap(other.h_next_);
+  h_face_.swap(other.h_face_);
+  v_halfedge_.swap(other.v_halfedge_);
+  f_halfedge_.swap(other.f_halfedge_);
+  v_deleted_.swap(other.v_deleted_);
+  e_deleted_.swap(other.e_deleted_);
+  f_deleted_.swap(other.f_deleted_);
+  std::swap(deleted_vertices_, other.deleted_vertices_);
+  std::swap(deleted_edges_, other.deleted_edges_);
+  std::swap(deleted_faces_, other.deleted_faces_);
+  vprops_.swap_values(other.vprops_);
+  hprops_.swap_values(other.hprops_);
+  eprops_.swap_values(other.eprops_);
+  fprops_.swap_values(other.fprops_);
+  changes_.mark_reset();
+}
+
 void SurfaceMesh::resize(std::size_t n_v, std::size_t n_e, std::size_t n_f) {
   resize_for_rebuild(h_vertex_, 2 * n_e);
   resize_for_rebuild(h_next_, 2 * n_e);

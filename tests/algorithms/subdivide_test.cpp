@@ -2,8 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <cstdlib>
+#include <new>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 #include "hedge/algorithms/geometry.h"
 #include "hedge/core/build.h"
@@ -12,6 +17,60 @@
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 #include "test_meshes.h"
+
+// Allocation failure injection for the strong-guarantee tests below: this test binary's global
+// operator new counts allocations and, while armed, throws std::bad_alloc at a chosen one (once,
+// then it disarms). Disarmed, it is malloc.
+namespace {
+std::atomic<bool> g_fail_armed{false};
+std::atomic<long> g_fail_countdown{0};
+std::atomic<long> g_allocations{0};
+
+void* test_allocate(std::size_t n, std::size_t align) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (g_fail_armed.load(std::memory_order_relaxed) && g_fail_countdown.fetch_sub(1) == 0) {
+    g_fail_armed = false;
+    throw std::bad_alloc();
+  }
+  void* p = nullptr;
+  if (align <= alignof(std::max_align_t)) {
+    p = std::malloc(n ? n : 1);
+  } else if (posix_memalign(&p, align, n ? n : 1) != 0) {
+    p = nullptr;
+  }
+  if (!p) throw std::bad_alloc();
+  return p;
+}
+}  // namespace
+
+void* operator new(std::size_t n) { return test_allocate(n, 0); }
+void* operator new[](std::size_t n) { return test_allocate(n, 0); }
+void* operator new(std::size_t n, std::align_val_t a) { return test_allocate(n, std::size_t(a)); }
+void* operator new[](std::size_t n, std::align_val_t a) { return test_allocate(n, std::size_t(a)); }
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+  try {
+    return test_allocate(n, 0);
+  } catch (...) {
+    return nullptr;
+  }
+}
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
+  try {
+    return test_allocate(n, 0);
+  } catch (...) {
+    return nullptr;
+  }
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
 
 namespace hedge {
 namespace {
@@ -230,6 +289,120 @@ TEST(Subdivide, PolygonsAndBadStepsAreRefusedUnchanged) {
   subdivide(empty, Subdivision::loop, 3);
   EXPECT_EQ(empty.n_faces(), 0u);
   EXPECT_TRUE(tet.validate().empty());
+}
+
+// ---- The strong guarantee: an allocation that fails anywhere in a step leaves the mesh as it was ----
+
+// A triangle mesh with garbage, a boundary, a crease, and a property of every kind (one of them a
+// std::string, whose copies allocate).
+SurfaceMesh mesh_with_everything(bool triangles) {
+  SurfaceMesh m = build(test::grid(3, triangles));
+  auto name = m.add_vertex_property<std::string>("v:name", "");
+  auto weight = m.add_vertex_property<float>("v:weight", 0.f);
+  for (Vertex v : m.vertices()) name[v] = "vertex number " + std::to_string(v.idx()), weight[v] = float(v.idx());
+  auto uv = m.add_halfedge_property<Vec2>("h:texcoord", Vec2{0, 0});
+  for (Halfedge h : m.halfedges()) uv[h] = Vec2{float(h.idx()), 1.f};
+  auto crease = m.add_edge_property<std::uint8_t>("e:crease", 0);
+  crease[Edge(5)] = 1;
+  auto tag = m.add_face_property<std::string>("f:tag", "none");
+  for (Face f : m.faces()) tag[f] = "the tag of face number " + std::to_string(f.idx());
+  EXPECT_TRUE(remove_face(m, Face(1)));
+  return m;
+}
+
+// Every count, link, deletion flag, position and property value of a equals b's.
+void expect_identical(const SurfaceMesh& a, const SurfaceMesh& b) {
+  ASSERT_EQ(a.vertex_slots(), b.vertex_slots());
+  ASSERT_EQ(a.edge_slots(), b.edge_slots());
+  ASSERT_EQ(a.face_slots(), b.face_slots());
+  EXPECT_EQ(a.n_vertices(), b.n_vertices());
+  EXPECT_EQ(a.n_edges(), b.n_edges());
+  EXPECT_EQ(a.n_faces(), b.n_faces());
+  EXPECT_TRUE(a.halfedge_vertex_array() == b.halfedge_vertex_array());
+  EXPECT_TRUE(a.halfedge_next_array() == b.halfedge_next_array());
+  EXPECT_TRUE(a.halfedge_face_array() == b.halfedge_face_array());
+  EXPECT_TRUE(a.vertex_halfedge_array() == b.vertex_halfedge_array());
+  EXPECT_TRUE(a.face_halfedge_array() == b.face_halfedge_array());
+  for (Vertex v : a.vertices()) EXPECT_EQ(a.is_deleted(v), b.is_deleted(v));
+  for (Edge e : a.edges()) EXPECT_EQ(a.is_deleted(e), b.is_deleted(e));
+  for (Face f : a.faces()) EXPECT_EQ(a.is_deleted(f), b.is_deleted(f));
+  EXPECT_EQ(a.vertex_properties().names(), b.vertex_properties().names());
+  EXPECT_EQ(a.halfedge_properties().names(), b.halfedge_properties().names());
+  EXPECT_EQ(a.edge_properties().names(), b.edge_properties().names());
+  EXPECT_EQ(a.face_properties().names(), b.face_properties().names());
+  EXPECT_TRUE(a.positions().vector() == b.positions().vector());
+  EXPECT_TRUE(a.get_vertex_property<std::string>("v:name").vector() ==
+              b.get_vertex_property<std::string>("v:name").vector());
+  EXPECT_TRUE(a.get_vertex_property<float>("v:weight").vector() == b.get_vertex_property<float>("v:weight").vector());
+  EXPECT_TRUE(a.get_halfedge_property<Vec2>("h:texcoord").vector() ==
+              b.get_halfedge_property<Vec2>("h:texcoord").vector());
+  EXPECT_TRUE(a.get_edge_property<std::uint8_t>("e:crease").vector() ==
+              b.get_edge_property<std::uint8_t>("e:crease").vector());
+  EXPECT_TRUE(a.get_face_property<std::string>("f:tag").vector() == b.get_face_property<std::string>("f:tag").vector());
+}
+
+// Fails the k-th allocation of subdivide(m, scheme, steps) for k = 0, 1, ... until a call gets
+// through: each failed call must leave m identical to the input and valid; the call that gets
+// through must give what a call without failures gives.
+void expect_strong_guarantee(Subdivision scheme, bool triangles, int steps) {
+  const SurfaceMesh input = mesh_with_everything(triangles);
+  SurfaceMesh reference = input;
+  subdivide(reference, scheme, steps);
+  int failures = 0;
+  for (long k = 0;; ++k) {
+    SurfaceMesh m = input;
+    const auto name = m.get_vertex_property<std::string>("v:name");  // a handle held across the call
+    bool threw = false;
+    g_fail_countdown = k;
+    g_fail_armed = true;
+    try {
+      subdivide(m, scheme, steps);
+    } catch (const std::bad_alloc&) {
+      threw = true;
+    }
+    g_fail_armed = false;
+    if (!threw) {
+      expect_identical(m, reference);
+      EXPECT_EQ(name.vector().size(), m.vertex_slots());  // the handle sees the refined mesh
+      EXPECT_TRUE(m.validate().empty());
+      break;
+    }
+    ++failures;
+    SCOPED_TRACE("allocation " + std::to_string(k) + " failed");
+    EXPECT_TRUE(m.validate().empty());
+    expect_identical(m, input);
+    ASSERT_LT(k, 100000) << "subdivide never got through";
+    if (::testing::Test::HasFailure()) break;
+  }
+  // Every step allocates its arrays, properties and threads: many points were tried.
+  EXPECT_GT(failures, 100 * steps);
+}
+
+TEST(Subdivide, AnAllocationFailureAnywhereLeavesTheMeshAsItWas) {
+  for (Subdivision scheme : {Subdivision::loop, Subdivision::midpoint, Subdivision::sqrt3, Subdivision::split_faces,
+                             Subdivision::catmull_clark})
+    for (int steps : {1, 2}) {
+      SCOPED_TRACE("scheme " + std::to_string(int(scheme)) + ", steps " + std::to_string(steps));
+      expect_strong_guarantee(scheme, true, steps);
+    }
+  SCOPED_TRACE("Catmull-Clark of quads");
+  expect_strong_guarantee(Subdivision::catmull_clark, false, 2);
+}
+
+TEST(Subdivide, PropertyHandlesStayValidAndAProgressThatThrowsKeepsTheStepsDone) {
+  SurfaceMesh m = build(test::grid(2, true));
+  auto weight = m.add_vertex_property<float>("v:weight", 0.f);
+  for (Vertex v : m.vertices()) weight[v] = 1.f;
+  const std::size_t faces = m.n_faces();
+  int calls = 0;
+  const Progress stop_after_first = [&](double f) {
+    if (f > 0 && ++calls == 1) throw std::runtime_error("cancelled");
+  };
+  EXPECT_THROW(subdivide(m, Subdivision::loop, 3, stop_after_first), std::runtime_error);
+  EXPECT_EQ(m.n_faces(), 4 * faces);  // the first step stays done
+  ASSERT_EQ(weight.vector().size(), m.vertex_slots());
+  for (Vertex v : m.vertices()) EXPECT_EQ(weight[v], 1.f);  // new vertices average their edge's ends
+  EXPECT_TRUE(m.validate().empty());
 }
 
 

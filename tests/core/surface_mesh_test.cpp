@@ -269,5 +269,26 @@ TEST(SurfaceMesh, ReleaseConnectivityHandsTheOldLinksOverAndResizes) {
   EXPECT_TRUE(t.validate().empty());
 }
 
+TEST(SurfaceMesh, SwapElementsExchangesContentsAndKeepsThePropertyArrays) {
+  SurfaceMesh a = build(tetrahedron());
+  auto id = a.add_face_property<int>("f:id", -1);
+  for (Face f : a.faces()) id[f] = int(f.idx());
+  SurfaceMesh b = build(test::grid(2, true));
+  b.face_properties().add_missing_from(a.face_properties());
+  b.get_face_property<int>("f:id")[Face(5)] = 55;
+  const Vec3 b_point = b.position(Vertex(8));
+  const std::size_t faces_b = b.n_faces();
+  a.swap_elements(b);
+  EXPECT_EQ(a.n_faces(), faces_b);
+  EXPECT_EQ(b.n_faces(), 4u);
+  EXPECT_TRUE(a.validate().empty());
+  EXPECT_TRUE(b.validate().empty());
+  EXPECT_EQ(a.position(Vertex(8)), b_point);    // through the mesh's own positions handle
+  EXPECT_EQ(id.vector().size(), faces_b);       // the handle taken before sees the new values
+  EXPECT_EQ(id[Face(5)], 55);
+  EXPECT_EQ(b.get_face_property<int>("f:id")[Face(3)], 3);
+  EXPECT_EQ(b.face_properties().size(), 4u);
+}
+
 }  // namespace
 }  // namespace hedge

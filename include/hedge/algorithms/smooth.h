@@ -57,6 +57,8 @@ struct SmoothOptions {
 //!   outside (0, 1] (positive and finite for the implicit method), a Taubin mu that is not below
 //!   -lambda, a mask of the wrong size, or cotangent weights (cotangent, implicit) on a mesh with a
 //!   face that is not a triangle (the message names it).
+//! \throw std::bad_alloc, with the positions unchanged, if memory runs out (a watched mesh's change
+//!   log may then hold marks for vertices that did not move).
 void smooth(SurfaceMesh& mesh, const SmoothOptions& options = {});
 
 }  // namespace hedge

@@ -30,7 +30,8 @@
 // halves of edge e are edges 2e and 2e + 1, the three inner edges of face f are 2E + 3f + {0, 1, 2},
 // and face f becomes faces 4f + {0, 1, 2} (its corners) and 4f + 3 (its middle). Children sit next
 // to their parents, so the order keeps the input's locality. Catmull-Clark adds face f's point as
-// vertex V + E + f and numbers its quads and inner edges after the faces' half-edges, in order.
+// vertex V + E + f and numbers its quads and inner edges face by face: the quad at the k-th corner of
+// face f (counted from halfedge(f)) is face D + k, D the sum of the degrees of the faces before f.
 //
 // sqrt3 and split_faces: old vertices, edges and half-edges keep their index (old edges flipped),
 // face f's centroid is vertex V + f, and with the faces' corners numbered face by face
@@ -46,7 +47,14 @@
 // children take their face's properties. A sqrt3 flip across a UV seam cannot keep the seam: the
 // new triangle takes each side's centroid value and the first face's value at the old vertex.
 // Deleted elements are
-// collected first. The change log records a reset: every index changed.
+// collected first (in a copy: the input's garbage stays until the result replaces it). The change
+// log records a reset: every index changed.
+//
+// Each step builds the refined mesh in storage of its own and reads the one before; the mesh given
+// takes the result only at the end, in a step that cannot fail. So if an allocation fails
+// (std::bad_alloc) at any point, in any step, the mesh is left exactly as it was: same counts,
+// links, deletion flags, positions and property values. Its property arrays stay the same objects,
+// so handles to them stay valid, and see the refined mesh afterwards.
 #pragma once
 
 #include "hedge/core/progress.h"
@@ -60,7 +68,9 @@ enum class Subdivision { loop, midpoint, catmull_clark, sqrt3, split_faces };
 //! faces (Loop, midpoint), as many quads as the input had face corners (Catmull-Clark) or as many
 //! triangles as it had face corners (sqrt3: 3F; split_faces). An empty mesh stays empty. `progress`
 //! is called with the fraction done after each step (see core/progress.h); if it throws, the steps
-//! already done stay done.
+//! already done stay done. Memory: the input, the result and, with garbage, a compacted copy of
+//! the input at once.
+//! \throw std::bad_alloc, with the mesh unchanged (strong guarantee), if memory runs out.
 //! \throw InvalidInputError, with the mesh unchanged, if a face is not a triangle for Loop's, the
 //!   midpoint or the sqrt3 scheme (the message names it), if steps is negative, or if the result
 //!   would exceed 2^31 half-edges.

@@ -46,6 +46,9 @@ class BasePropertyArray {
   virtual void interpolate(std::size_t dst, const Index* src, const float* weights, std::size_t n) = 0;
   //! Copies element si of `other` (an array of the same type) onto element di of this one.
   virtual void copy_from(const BasePropertyArray& other, std::size_t si, std::size_t di) = 0;
+  //! Exchanges the values (not the name, default or interpolator) with `other`, an array of the
+  //! same type. O(1), never throws.
+  virtual void swap_values(BasePropertyArray& other) noexcept = 0;
   //! Bytes held by this array (its capacity), for memory accounting.
   virtual std::size_t bytes() const = 0;
   //! True if elements i and j hold equal values (==); always true for a type without ==.
@@ -111,6 +114,9 @@ class PropertyArray final : public BasePropertyArray {
   }
   void copy_from(const BasePropertyArray& other, std::size_t si, std::size_t di) override {
     data_[di] = static_cast<const PropertyArray<T>&>(other).data_[si];
+  }
+  void swap_values(BasePropertyArray& other) noexcept override {
+    data_.swap(static_cast<PropertyArray<T>&>(other).data_);
   }
   std::size_t bytes() const override { return data_.capacity() * sizeof(T); }
   bool equal(std::size_t i, std::size_t j) const override {
@@ -282,6 +288,17 @@ class PropertyContainer {
       BasePropertyArray* src = other.find_base(a->name());
       if (src && src->type() == a->type()) a->copy_from(*src, si, di);
     }
+  }
+  //! Exchanges the values of every array with those of the array of the same name and type in
+  //! `other`, and the sizes; the arrays themselves (and handles to them) stay where they are. An
+  //! array that `other` lacks keeps its values, so `other` should hold every array of this one (as
+  //! add_missing_from() makes it). O(arrays^2) name comparisons, never throws.
+  void swap_values(PropertyContainer& other) noexcept {
+    for (auto& a : arrays_) {
+      BasePropertyArray* theirs = other.find_base(a->name());
+      if (theirs && theirs->type() == a->type()) a->swap_values(*theirs);
+    }
+    std::swap(size_, other.size_);
   }
   void shrink_to_fit() {
     for (auto& a : arrays_) a->shrink_to_fit();

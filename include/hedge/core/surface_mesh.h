@@ -310,6 +310,13 @@ class SurfaceMesh {
   //! connectivity arrays are moved out and returned, not copied, and every link of the resized mesh
   //! is invalid, the old elements' too. Properties and deletion flags resize as in resize(). O(size).
   Connectivity release_connectivity(std::size_t n_v, std::size_t n_e, std::size_t n_f);
+  //! Takes every element of `other` (connectivity, deletion flags, property values) and gives it
+  //! this mesh's: for an algorithm that builds its result in a mesh of its own and then commits it
+  //! without a step that could fail. The property arrays of this mesh stay the same objects (its
+  //! handles stay valid) and take the values of the arrays of the same name and type in `other`,
+  //! which should hold all of them (see PropertyContainer::add_missing_from). This mesh keeps its
+  //! change log, which records a reset. O(arrays^2), never throws.
+  void swap_elements(SurfaceMesh& other) noexcept;
   //! Removes deleted elements and compacts every array and property. Returns old-to-new maps so
   //! that handles held elsewhere (engine buffers) can be remapped. O(#elements).
   GarbageMaps garbage_collection();
@@ -333,6 +340,8 @@ class SurfaceMesh {
   const std::vector<Vertex>& halfedge_vertex_array() const { return h_vertex_; }
   const std::vector<Halfedge>& halfedge_next_array() const { return h_next_; }
   const std::vector<Face>& halfedge_face_array() const { return h_face_; }
+  const std::vector<Halfedge>& vertex_halfedge_array() const { return v_halfedge_; }
+  const std::vector<Halfedge>& face_halfedge_array() const { return f_halfedge_; }
 
  private:
   friend class MeshBuilder;
