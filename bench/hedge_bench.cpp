@@ -15,6 +15,12 @@
 // BM_convex_hull/<n>: the convex hull of n random points in a ball (200: a shard's size).
 // BM_decimate/<mesh>: quadric decimation to 10% of the vertices (algorithms/decimate.h), the copy of
 // the mesh excluded from the time; the counters give the vertices reached and the largest error.
+// BM_fracture/<mesh>: one impact, glass preset (algorithms/fracture.h), on a flat plate of 100k and
+// of 1M triangles (plate_100k, plate_1m) and on igea.ply from ../shared/meshes when it is there.
+// Impacts hit the centroid of a random live face of the same mesh, its FaceBvh kept up to date by
+// fracture(), as in a game; when a fifth of the faces has broken off, the mesh and its tree are
+// restored with the timer paused. Counters: shards and faces per impact, and the mean
+// microseconds of each stage (locate, scatter, cut, detach, hulls).
 #include <benchmark/benchmark.h>
 
 #include <iostream>
@@ -25,10 +31,14 @@
 #include "bench_common.h"
 #include "hedge/algorithms/convex_hull.h"
 #include "hedge/algorithms/decimate.h"
+#include "hedge/algorithms/fracture.h"
+#include "hedge/algorithms/locate.h"
+#include "hedge/core/operations.h"
 #include "hedge/algorithms/reorder.h"
 #include "hedge/core/build.h"
 
 #include <algorithm>
+#include <chrono>
 #include <numeric>
 #include <random>
 
@@ -119,6 +129,100 @@ void decimate_tenth(benchmark::State& state, const hedge::SurfaceMesh* input) {
   state.counters["max_error"] = r.max_error;
 }
 
+hedge::SurfaceMesh plate(int n) {
+  hedge::IndexedMesh m;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) m.positions.push_back({float(i), float(j), 0.f});
+  auto id = [&](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      m.indices.insert(m.indices.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+  return hedge::build(m);
+}
+
+//! The meshes BM_fracture breaks, made or read on first use (the 1M plate takes a second).
+const hedge::SurfaceMesh* fracture_input(const std::string& name, const std::string& root) {
+  static std::vector<std::pair<std::string, std::unique_ptr<hedge::SurfaceMesh>>> cache;
+  for (const auto& [n, m] : cache)
+    if (n == name) return m.get();
+  std::unique_ptr<hedge::SurfaceMesh> m;
+  if (name == "plate_100k") {
+    m = std::make_unique<hedge::SurfaceMesh>(plate(224));  // 100,352 triangles
+  } else if (name == "plate_1m") {
+    m = std::make_unique<hedge::SurfaceMesh>(plate(708));  // 1,002,528 triangles
+  } else {
+    const bench::Input in = bench::load_input(root + "/../shared/meshes/" + name + ".ply");
+    m = std::make_unique<hedge::SurfaceMesh>(hedge::build_triangles(
+        {reinterpret_cast<const hedge::Vec3*>(in.xyz.data()), in.n_vertices()}, in.tri));
+  }
+  cache.emplace_back(name, std::move(m));
+  return cache.back().second.get();
+}
+
+void fracture_impacts(benchmark::State& state, std::string name, std::string root) {
+  const hedge::SurfaceMesh* input = nullptr;
+  try {
+    input = fracture_input(name, root);
+  } catch (const std::exception& e) {
+    state.SkipWithError(("skipped: " + std::string(e.what())).c_str());
+    return;
+  }
+  auto mesh = std::make_unique<hedge::SurfaceMesh>(*input);
+  auto bvh = std::make_unique<hedge::FaceBvh>(*mesh);
+  std::mt19937_64 rng(1);
+  hedge::FractureOptions options;
+  options.material = hedge::fracture_material("glass");
+  double shards = 0, faces = 0;
+  std::vector<double> seconds;
+  hedge::FractureResult::Timings total;
+  for (auto _ : state) {
+    state.PauseTiming();
+    if (mesh->n_faces() < input->n_faces() * 4 / 5) {
+      bvh.reset();
+      mesh = std::make_unique<hedge::SurfaceMesh>(*input);
+      bvh = std::make_unique<hedge::FaceBvh>(*mesh);
+    }
+    hedge::Face f;
+    do f = hedge::Face(static_cast<hedge::Index>(rng() % mesh->face_slots()));
+    while (mesh->is_deleted(f));
+    const hedge::Vec3 impact = hedge::face_centroid(*mesh, f);
+    options.seed = rng();
+    state.ResumeTiming();
+    const auto start = std::chrono::steady_clock::now();
+    hedge::FractureResult r = hedge::fracture(*mesh, impact, options, bvh.get());
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    state.PauseTiming();
+    shards += double(r.shards.size());
+    for (const hedge::Shard& s : r.shards) faces += double(s.mesh.n_faces());
+    total.locate += r.seconds.locate;
+    total.scatter += r.seconds.scatter;
+    total.cut += r.seconds.cut;
+    total.detach += r.seconds.detach;
+    total.hulls += r.seconds.hulls;
+    r = {};
+    state.ResumeTiming();
+  }
+  if (seconds.empty()) return;
+  const double n = double(seconds.size());
+  std::sort(seconds.begin(), seconds.end());
+  state.counters["triangles"] = double(input->n_faces());
+  state.counters["shards"] = shards / n;
+  state.counters["faces"] = faces / n;
+  state.counters["median_us"] = 1e6 * seconds[seconds.size() / 2];
+  state.counters["p99_us"] = 1e6 * seconds[std::min(seconds.size() - 1, seconds.size() * 99 / 100)];
+  state.counters["locate_us"] = 1e6 * total.locate / n;
+  state.counters["scatter_us"] = 1e6 * total.scatter / n;
+  state.counters["cut_us"] = 1e6 * total.cut / n;
+  state.counters["detach_us"] = 1e6 * total.detach / n;
+  state.counters["hulls_us"] = 1e6 * total.hulls / n;
+}
+
+void register_fracture(const std::string& root) {
+  for (const char* name : {"plate_100k", "plate_1m", "igea"})
+    benchmark::RegisterBenchmark((std::string("BM_fracture/") + name).c_str(), fracture_impacts, std::string(name), root)
+        ->Unit(benchmark::kMillisecond);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -130,11 +234,16 @@ int main(int argc, char** argv) {
     if (a == "--root" && i + 1 < argc) root = argv[++i];
     else specs.push_back(a);
   }
+  register_fracture(bench::find_root(root));
   if (specs.empty()) {
     std::string note;
     specs = bench::default_mesh_specs(bench::find_root(root), note);
     std::cerr << note << "\n";
-    if (specs.empty()) return 0;
+    if (specs.empty()) {
+      benchmark::RunSpecifiedBenchmarks();
+      benchmark::Shutdown();
+      return 0;
+    }
   }
 
   static const bench::Backend backend = bench::hedge_backend();

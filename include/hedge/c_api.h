@@ -535,6 +535,83 @@ HEDGE_API hedge_status hedge_mesh_decimate(hedge_mesh* mesh, const hedge_decimat
                                            hedge_decimate_result* out_result);
 
 /* ============================================================================================ */
+/* Fracture (hedge/algorithms/fracture.h; docs/fracture.md)                                     */
+/* ============================================================================================ */
+
+typedef enum hedge_fracture_preset {
+  HEDGE_FRACTURE_GLASS = 0, /**< many small shards (40 break points) */
+  HEDGE_FRACTURE_STONE = 1, /**< few large chunks (7) */
+  HEDGE_FRACTURE_WOOD = 2,  /**< splinters along the grain, x by default (18) */
+  HEDGE_FRACTURE_ICE = 3    /**< 26 break points */
+} hedge_fracture_preset;
+
+/** Most rings a hedge_fracture_options holds. */
+#define HEDGE_FRACTURE_MAX_RINGS 16
+
+/** One ring of break points. Layout (24 bytes): spacing @0, jitter @8 (double), points @16,
+ *  reserved @20 (uint32_t). */
+typedef struct hedge_fracture_ring {
+  double spacing;    /**< distance from the previous ring (the first: from the impact), > 0 */
+  double jitter;     /**< in [0, 1]: how far points stray from even angles and the ring's radius */
+  uint32_t points;   /**< break points on the ring */
+  uint32_t reserved; /**< 0 */
+} hedge_fracture_ring;
+
+/** Layout (464 bytes): rings @0 (16 x 24), ring_count @384 (uint32_t), absolute @388 (int32_t),
+ *  grain @392 (3 floats), reserved @404 (uint32_t), grain_stretch @408, refine_edge @416 (double),
+ *  seed @424 (uint64_t), thickness @432, density @440, tolerance @448 (double), hulls @456
+ *  (int32_t), reserved2 @460 (uint32_t). */
+typedef struct hedge_fracture_options {
+  hedge_fracture_ring rings[HEDGE_FRACTURE_MAX_RINGS]; /**< the material's rings, innermost first */
+  uint32_t ring_count;   /**< rings used, 0..HEDGE_FRACTURE_MAX_RINGS */
+  int32_t absolute;      /**< 1: spacings in model units; 0: in edge lengths of the impact face */
+  float grain[3];        /**< grain direction, nonzero when grain_stretch > 1 */
+  uint32_t reserved;     /**< 0 */
+  double grain_stretch;  /**< >= 1: cells this many times longer along the grain */
+  double refine_edge;    /**< longest edge left in the broken area (units of the spacing), > 0 */
+  uint64_t seed;         /**< seed of the break points */
+  double thickness;      /**< > 0: each shard extruded into a closed solid this thick */
+  double density;        /**< mass per unit volume, > 0 */
+  double tolerance;      /**< largest distance from the impact to the surface; 0: 1e-3 of the nearest face's longest edge */
+  int32_t hulls;         /**< 1: compute each shard's convex hull */
+  uint32_t reserved2;    /**< 0 */
+} hedge_fracture_options;
+
+/** One shard. Layout (168 bytes): mesh @0, hull @8 (handles), centroid @16 (3 doubles), area @40,
+ *  volume @48, mass @56 (double), centre_of_mass @64 (3 doubles), inertia @88 (9 doubles,
+ *  row-major, about the centre of mass), closed @160, hull_dimension @164 (int32_t). */
+typedef struct hedge_fracture_shard {
+  hedge_mesh* mesh;          /**< the shard, a new mesh; destroy it with hedge_mesh_destroy() */
+  hedge_mesh* hull;          /**< its convex hull, a new mesh, or NULL (hulls off, or no volume) */
+  double centroid[3];        /**< area-weighted centroid of the broken faces */
+  double area;               /**< area of the broken faces */
+  double volume;             /**< volume when closed, else 0 */
+  double mass;               /**< at the density when closed, else 0 */
+  double centre_of_mass[3];  /**< when closed, else 0 */
+  double inertia[9];         /**< inertia tensor about the centre of mass when closed, else 0 */
+  int32_t closed;            /**< 1: the shard's mesh has no boundary */
+  int32_t hull_dimension;    /**< 0 empty, 1 point, 2 segment, 3 flat (a thin prism), 4 solid */
+} hedge_fracture_shard;
+
+/** Fills *out_options with a preset (hedge_fracture_preset), seed 0, no thickness, density 1,
+ *  tolerance 0 (automatic) and hulls on. An unknown preset: HEDGE_ERROR_INVALID_ARGUMENT. */
+HEDGE_API hedge_status hedge_fracture_options_default(int32_t preset, hedge_fracture_options* out_options);
+/** Breaks the mesh at the impact (x, y, z) into shards (see hedge/algorithms/fracture.h): the
+ *  broken faces leave the mesh, each shard is a new mesh with its properties, its area, centroid,
+ *  mass properties when closed and its convex hull. The mesh's render objects update at their next
+ *  sync. The same mesh, impact, options and seed give the same shards, bit for bit.
+ *  \param options NULL for the glass preset.
+ *  \param out_shards receives the shards, in the order of their break points.
+ *  \param capacity at least the options' total break points (the most shards there can be), else
+ *         HEDGE_ERROR_BUFFER_TOO_SMALL with *out_count = that number, and nothing is changed.
+ *  \param out_count the number of shards.
+ *  No face within the tolerance, a non-finite impact, a single face with no neighbour at the impact,
+ *  or options out of range: HEDGE_ERROR_INVALID_ARGUMENT naming what, and the mesh is unchanged. */
+HEDGE_API hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z,
+                                           const hedge_fracture_options* options, hedge_fracture_shard* out_shards,
+                                           uint32_t capacity, uint32_t* out_count);
+
+/* ============================================================================================ */
 /* Subdivision (hedge/algorithms/subdivide.h)                                                   */
 /* ============================================================================================ */
 

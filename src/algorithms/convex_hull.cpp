@@ -171,6 +171,10 @@ class Quickhull {
     Vec3d normal;
     double offset = 0;
     std::vector<std::uint32_t> outside;
+    // Points within eps of the plane, neither outside nor clearly inside. They are sorted again
+    // when the face is replaced or a face is built next to it: a nearly coplanar new face, tilted
+    // against this one, may have them outside.
+    std::vector<std::uint32_t> near;
     std::uint32_t farthest = kNone;
     double farthest_distance = 0;
     bool alive = true;
@@ -191,16 +195,21 @@ class Quickhull {
     return static_cast<std::uint32_t>(faces_.size() - 1);
   }
 
-  // Gives point i to the face among `candidates` it lies farthest beyond, if any is beyond eps.
+  // Gives point i to the face among `candidates` it lies farthest beyond: as an outside point if
+  // that is beyond eps, as a near point if within eps; a point inside by more is dropped.
   void assign(std::uint32_t i, std::span<const std::uint32_t> candidates) {
     std::uint32_t best = kNone;
-    double best_d = eps_;
+    double best_d = -std::numeric_limits<double>::infinity();
     for (std::uint32_t f : candidates) {
       const double d = distance(faces_[f], i);
       if (d > best_d) best_d = d, best = f;
     }
-    if (best == kNone) return;  // inside, or on the hull within the tolerance
+    if (best == kNone || best_d < -eps_) return;  // inside
     Face_& f = faces_[best];
+    if (best_d <= eps_) {  // on the hull within the tolerance, for now
+      f.near.push_back(i);
+      return;
+    }
     f.outside.push_back(i);
     if (best_d > f.farthest_distance) f.farthest_distance = best_d, f.farthest = i;
   }
@@ -301,7 +310,28 @@ class Quickhull {
       dead.alive = false;
       for (std::uint32_t i : dead.outside)
         if (i != apex) assign(i, new_faces_);
+      for (std::uint32_t i : dead.near) assign(i, new_faces_);
       std::vector<std::uint32_t>().swap(dead.outside);
+      std::vector<std::uint32_t>().swap(dead.near);
+    }
+    // The near points of the faces beyond the horizon, against their face and the new ones.
+    for (const HorizonEdge& e : horizon_) {
+      Face_& outer = faces_[e.outer];
+      if (outer.near.empty()) continue;
+      std::vector<std::uint32_t> near;
+      near.swap(outer.near);
+      std::array<std::uint32_t, 1> self{e.outer};
+      for (std::uint32_t i : near) {
+        std::uint32_t best = kNone;
+        double best_d = -std::numeric_limits<double>::infinity();
+        for (std::uint32_t f : new_faces_)
+          if (const double d = distance(faces_[f], i); d > best_d) best_d = d, best = f;
+        if (best_d > eps_) {
+          assign(i, {&best, 1});
+        } else {
+          assign(i, self);
+        }
+      }
     }
     push_if_outside(new_faces_);
   }
@@ -358,6 +388,49 @@ ConvexHull solid_hull(std::span<const Vec3> points, const Centred& c, const Simp
   return hull;
 }
 
+// The corners of a flat set's convex polygon, by input index (ascending): Andrew's monotone chain
+// in 2D coordinates of the plane, points within eps of the line of their neighbours left out. The
+// prism is then built over these alone, so that no run of nearly collinear points along an edge
+// reaches the quickhull of the thin prism (its side faces are slivers there, and such runs could
+// leave a point outside). Fewer than 3 corners when the polygon collapses at eps.
+std::vector<std::uint32_t> flat_corners(const Centred& c, const Simplex& s, double eps) {
+  const Vec3d nn = triangle_normal(c.p[s.v[0]], c.p[s.v[1]], c.p[s.v[2]]);
+  const Vec3d u = normalize(c.p[s.v[1]] - c.p[s.v[0]]);
+  const Vec3d w = cross(nn, u);
+  struct P2 {
+    double x, y;
+    std::uint32_t i;
+  };
+  std::vector<P2> q;
+  q.reserve(c.p.size());
+  for (std::uint32_t i = 0; i < c.p.size(); ++i) q.push_back({dot(c.p[i], u), dot(c.p[i], w), i});
+  std::sort(q.begin(), q.end(), [](const P2& a, const P2& b) {
+    return a.x != b.x ? a.x < b.x : (a.y != b.y ? a.y < b.y : a.i < b.i);
+  });
+  // a -> b -> c turns left (counter-clockwise) when b lies more than eps to the right of the line
+  // a -> c; otherwise b is not a corner.
+  auto turns_left = [&](const P2& a, const P2& b, const P2& cc) {
+    const double dx = cc.x - a.x, dy = cc.y - a.y;
+    const double len = std::sqrt(dx * dx + dy * dy);
+    return dy * (b.x - a.x) - dx * (b.y - a.y) > eps * len;
+  };
+  std::vector<P2> chain;
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::size_t base = chain.size();
+    for (std::size_t k = 0; k < q.size(); ++k) {
+      const P2& pt = pass == 0 ? q[k] : q[q.size() - 1 - k];
+      while (chain.size() >= base + 2 && !turns_left(chain[chain.size() - 2], chain.back(), pt)) chain.pop_back();
+      chain.push_back(pt);
+    }
+    chain.pop_back();  // the last point of each half starts the other
+  }
+  std::vector<std::uint32_t> corners;
+  for (const P2& pt : chain) corners.push_back(pt.i);
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  return corners;
+}
+
 float float_step(float x) { return std::nextafter(x, std::numeric_limits<float>::infinity()) - x; }
 
 // Float input is already rounded by half a float step of its coordinates: points of a tilted
@@ -387,11 +460,16 @@ ConvexHull convex_hull(std::span<const Vec3> points, const ConvexHullOptions& op
   const double step = float_step(c.max_abs);
   const double thickness = std::max({options.flat_thickness * c.extent, 16.0 * step, 4.0 * eps});
   const Vec3d n = triangle_normal(c.p[s.v[0]], c.p[s.v[1]], c.p[s.v[2]]) * (0.5 * thickness);
+  std::vector<std::uint32_t> corners = flat_corners(c, s, eps);
+  if (corners.size() < 3) {  // not expected for a set found flat; then every point
+    corners.resize(points.size());
+    for (std::uint32_t i = 0; i < points.size(); ++i) corners[i] = i;
+  }
   std::vector<Vec3> prism;
-  prism.reserve(2 * points.size());
-  for (const Vec3& q : points) {
-    prism.push_back(to_float(to_double(q) + n));
-    prism.push_back(to_float(to_double(q) - n));
+  prism.reserve(2 * corners.size());
+  for (std::uint32_t i : corners) {
+    prism.push_back(to_float(to_double(points[i]) + n));
+    prism.push_back(to_float(to_double(points[i]) - n));
   }
   const Centred pc = centre(prism);
   const double prism_eps = tolerance(options, pc);
@@ -399,10 +477,11 @@ ConvexHull convex_hull(std::span<const Vec3> points, const ConvexHullOptions& op
   if (ps.dimension != HullDimension::solid)
     throw std::logic_error("convex_hull: the prism of a flat set does not span a volume");
   ConvexHull hull = solid_hull(prism, pc, ps, prism_eps, options.max_vertices);
-  for (std::uint32_t& i : hull.input_index) i /= 2;
+  for (std::uint32_t& i : hull.input_index) i = corners[i / 2];
   hull.dimension = HullDimension::flat;
   hull.thickness = thickness;
-  // The input points lie within eps of the mid-plane; the prism's corners moved by float rounding.
+  // The input points lie within eps of the mid-plane and of the polygon of the corners; the prism's
+  // corners moved by float rounding.
   hull.tolerance = std::max(prism_eps, eps + step);
   return hull;
 }

@@ -1,5 +1,6 @@
-// The C ABI: the algorithms on a whole mesh: geometry, distance, normals, smoothing, decimation and
-// subdivision (hedge/algorithms/geometry.h, distance.h, normals.h, smooth.h, decimate.h, subdivide.h).
+// The C ABI: the algorithms on a whole mesh: geometry, distance, normals, smoothing, decimation,
+// fracture and subdivision (hedge/algorithms/geometry.h, distance.h, normals.h, smooth.h, decimate.h,
+// fracture.h, subdivide.h).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -8,6 +9,7 @@
 #include "capi_internal.h"
 #include "hedge/algorithms/decimate.h"
 #include "hedge/algorithms/distance.h"
+#include "hedge/algorithms/fracture.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/normals.h"
 #include "hedge/algorithms/reorder.h"
@@ -234,6 +236,99 @@ hedge_status hedge_mesh_decimate(hedge_mesh* mesh, const hedge_decimate_options*
     // Its InvalidInputError becomes HEDGE_ERROR_INVALID_ARGUMENT, the mesh unchanged.
     const DecimateResult r = decimate(object->mesh, d);
     if (out_result != nullptr) *out_result = {r.vertices, r.faces, r.collapses, r.max_error};
+  });
+}
+
+hedge_status hedge_fracture_options_default(int32_t preset, hedge_fracture_options* out_options) {
+  return guard([&] {
+    hedge_fracture_options& o = need(out_options, "out_options");
+    static const char* const names[] = {"glass", "stone", "wood", "ice"};
+    if (preset < HEDGE_FRACTURE_GLASS || preset > HEDGE_FRACTURE_ICE)
+      fail(HEDGE_ERROR_INVALID_ARGUMENT, "preset must be HEDGE_FRACTURE_GLASS, _STONE, _WOOD or _ICE, got " +
+                                             std::to_string(preset));
+    const FractureMaterial m = fracture_material(names[preset]);
+    const FractureOptions d;
+    o = hedge_fracture_options{};
+    o.ring_count = static_cast<std::uint32_t>(m.rings.size());
+    for (std::size_t i = 0; i < m.rings.size(); ++i) o.rings[i] = {m.rings[i].spacing, m.rings[i].jitter, m.rings[i].points, 0};
+    o.absolute = m.absolute ? 1 : 0;
+    o.grain[0] = m.grain.x, o.grain[1] = m.grain.y, o.grain[2] = m.grain.z;
+    o.grain_stretch = m.grain_stretch;
+    o.refine_edge = m.refine_edge;
+    o.seed = d.seed;
+    o.thickness = d.thickness;
+    o.density = d.density;
+    o.tolerance = d.tolerance;
+    o.hulls = d.hulls ? 1 : 0;
+  });
+}
+
+hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z, const hedge_fracture_options* options,
+                                 hedge_fracture_shard* out_shards, uint32_t capacity, uint32_t* out_count) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    std::uint32_t& count = need(out_count, "out_count");
+    hedge_fracture_options o;
+    if (options != nullptr) {
+      o = *options;
+    } else {
+      hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o);
+    }
+    if (o.ring_count > HEDGE_FRACTURE_MAX_RINGS)
+      fail(HEDGE_ERROR_INVALID_ARGUMENT, "ring_count must be at most HEDGE_FRACTURE_MAX_RINGS (" +
+                                             std::to_string(HEDGE_FRACTURE_MAX_RINGS) + "), got " +
+                                             std::to_string(o.ring_count));
+    FractureOptions f;
+    f.material.name = "custom";
+    f.material.rings.clear();
+    std::uint64_t points = 0;
+    for (std::uint32_t i = 0; i < o.ring_count; ++i) {
+      f.material.rings.push_back({o.rings[i].points, o.rings[i].spacing, o.rings[i].jitter});
+      points += o.rings[i].points;
+    }
+    f.material.absolute = need_bool(o.absolute, "absolute");
+    f.material.grain = {o.grain[0], o.grain[1], o.grain[2]};
+    f.material.grain_stretch = o.grain_stretch;
+    f.material.refine_edge = o.refine_edge;
+    f.seed = o.seed;
+    f.thickness = o.thickness;
+    f.density = o.density;
+    f.tolerance = o.tolerance;
+    f.hulls = need_bool(o.hulls, "hulls");
+    const Vec3 impact = need_point(x, y, z);
+    count = to_u32(points, "break points");
+    check_capacity(points, out_shards, capacity, "out_shards");
+    // Its InvalidInputError becomes HEDGE_ERROR_INVALID_ARGUMENT, the mesh unchanged.
+    FractureResult r = fracture(object->mesh, impact, f);
+    // Handles are registered only once every shard is ready, so a failure leaves none behind.
+    std::vector<std::shared_ptr<MeshObject>> meshes, hulls;
+    for (Shard& s : r.shards) {
+      meshes.push_back(std::make_shared<MeshObject>());
+      meshes.back()->mesh = std::move(s.mesh);
+      hulls.push_back(nullptr);
+      if (s.hull.mesh.n_faces() > 0) {
+        hulls.back() = std::make_shared<MeshObject>();
+        hulls.back()->mesh = std::move(s.hull.mesh);
+      }
+    }
+    for (std::size_t i = 0; i < r.shards.size(); ++i) {
+      const Shard& s = r.shards[i];
+      hedge_fracture_shard& out = out_shards[i];
+      out = hedge_fracture_shard{};
+      out.centroid[0] = s.centroid.x, out.centroid[1] = s.centroid.y, out.centroid[2] = s.centroid.z;
+      out.area = s.area;
+      out.volume = s.volume;
+      out.mass = s.mass.mass;
+      out.centre_of_mass[0] = s.mass.centre_of_mass.x;
+      out.centre_of_mass[1] = s.mass.centre_of_mass.y;
+      out.centre_of_mass[2] = s.mass.centre_of_mass.z;
+      std::copy(s.mass.inertia.begin(), s.mass.inertia.end(), out.inertia);
+      out.closed = s.closed ? 1 : 0;
+      out.hull_dimension = static_cast<std::int32_t>(s.hull.dimension);
+      out.mesh = register_mesh(std::move(meshes[i]));
+      out.hull = hulls[i] ? register_mesh(std::move(hulls[i])) : nullptr;
+    }
+    count = static_cast<std::uint32_t>(r.shards.size());
   });
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -249,6 +250,40 @@ TEST(ConvexHull, CoplanarPointsGiveAThinPrism) {
   EXPECT_EQ(t.mesh.n_faces(), 8u);
   EXPECT_NEAR(volume(t.mesh), 0.5 * t.thickness, 1e-7);
   expect_hull_of(t, tri, 1e-7);
+}
+
+TEST(ConvexHull, AFlatSetWithRunsOfCollinearPointsKeepsThemInside) {
+  // A shard of a plane cut from a triangulated CAD model: edge midpoints make runs of (nearly)
+  // collinear points along its outline, whose prism sides would be slivers.
+  const std::vector<Vec3> pts{{3.20485997, 16.2800999, 0}, {3.40387011, 16.7730999, 0}, {2.62102008, 15.9261999, 0}, {3.51379991, 16.4207001, 0}, {3.83365989, 16.5291004, 0}, {2.92791009, 16.9009991, 0}, {3.00586009, 15.8112001, 0}, {3.37041998, 15.6170998, 0}, {3.66072989, 15.7016001, 0}, {3.29994988, 15.948, 0}, {3.59925008, 16.0596008, 0}, {3.90320992, 16.1371994, 0}, {2.90821004, 16.1124992, 0}, {2.78157997, 16.4013996, 0}, {3.08107996, 16.6009998, 0}, {3.74403, 16.9099007, 0}, {3.63676, 17.2675991, 0}, {3.26939988, 17.1040001, 0}, {4.02573013, 17.3866997, 0}, {3.77624512, 15.9075003, 0}, {3.19042492, 15.7285004, 0}, {3.10536003, 16.0456505, 0}, {2.99321985, 16.3407497, 0}, {3.30436516, 16.5265999, 0}, {3.40205503, 16.1698494, 0}, {3.16589022, 16.8370495, 0}, {3.61876488, 16.6511002, 0}, {2.70130014, 16.1637993, 0}, {3.70850492, 16.2789497, 0}, {2.85474491, 16.6511993, 0}, {3.48483515, 15.8383503, 0}, {3.52031517, 17.0203495, 0}, {3.86943007, 17.1374493, 0},};
+  const ConvexHull h = convex_hull(pts);
+  EXPECT_EQ(h.dimension, HullDimension::flat);
+  expect_hull_of(h, pts, 1e-6);
+  // And a square with many points along each side, exactly collinear: only the corners remain.
+  std::vector<Vec3> square;
+  for (int i = 0; i < 40; ++i) {
+    const float t = float(i) / 40;
+    square.insert(square.end(), {{t, 0, 0}, {1, t, 0}, {1 - t, 1, 0}, {0, 1 - t, 0}});
+  }
+  const ConvexHull sq = convex_hull(square);
+  EXPECT_EQ(sq.dimension, HullDimension::flat);
+  EXPECT_EQ(sq.mesh.n_vertices(), 8u);
+  expect_hull_of(sq, square, 1e-7);
+}
+
+TEST(ConvexHull, APointNearAFaceThatIsReplacedLaterIsNotLost) {
+  // A nearly flat shard of a curved surface: point 7 lies within the tolerance of a face of the
+  // first tetrahedron, and a nearly coplanar face built later next to it has it 1.8e-5 outside
+  // (ten times the tolerance). It is a corner of the hull and must be one.
+  const std::vector<Vec3> pts{{1.85828996f, 12.8351002f, -2.26317f},    {2.1122601f, 12.8323002f, -2.26268005f},
+                              {2.10625005f, 12.6082001f, -2.22318006f}, {2.10558009f, 13.2533998f, -2.33693004f},
+                              {1.84082997f, 13.2761002f, -2.34094f},    {1.85353005f, 13.0513f, -2.30130005f},
+                              {1.59774995f, 13.0655003f, -2.30379009f}, {2.1177001f, 13.0323f, -2.29795003f}};
+  const ConvexHull h = convex_hull(pts);
+  EXPECT_EQ(h.dimension, HullDimension::solid);
+  expect_hull_of(h, pts, 1e-7);
+  EXPECT_EQ(h.max_outside_distance, 0);
+  EXPECT_NE(std::find(h.input_index.begin(), h.input_index.end(), 7u), h.input_index.end());
 }
 
 TEST(ConvexHull, AFlatSetFarFromTheOriginIsThickerThanFloatSteps) {

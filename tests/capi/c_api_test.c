@@ -1330,6 +1330,7 @@ static void test_every_function_error_path(void) {
     hedge_render* r = renders[k];
 #define BAD(call) CHECK_STATUS(call, HEDGE_ERROR_BAD_HANDLE)
     BAD(hedge_mesh_counts(m, &counts));
+    BAD(hedge_mesh_fracture(m, 0, 0, 0, NULL, NULL, 0, &u));
     BAD(hedge_mesh_get_position(m, 0, f));
     BAD(hedge_mesh_set_position(m, 0, 0, 0, 0));
     BAD(hedge_mesh_copy_positions(m, f, 16, &u64));
@@ -1641,6 +1642,120 @@ static void test_decimate(void) {
   CHECK_STATUS(hedge_decimate_options_default(NULL), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_OK(hedge_mesh_destroy(grid));
   CHECK_OK(hedge_mesh_destroy(field));
+}
+
+/* A plate of n x n quads, each two triangles, in z = 0: (n + 1)^2 vertices. */
+static hedge_mesh* make_plate(uint32_t n) {
+  float* positions = malloc(sizeof(float) * 3 * (n + 1) * (n + 1));
+  uint32_t* triangles = malloc(sizeof(uint32_t) * 6 * n * n);
+  uint32_t k = 0;
+  for (uint32_t j = 0; j <= n; ++j)
+    for (uint32_t i = 0; i <= n; ++i) {
+      float* p = positions + 3 * ((n + 1) * j + i);
+      p[0] = (float)i, p[1] = (float)j, p[2] = 0;
+    }
+  for (uint32_t j = 0; j < n; ++j)
+    for (uint32_t i = 0; i < n; ++i) {
+      const uint32_t a = (n + 1) * j + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+      const uint32_t quad[6] = {a, b, c, a, c, d};
+      memcpy(triangles + k, quad, sizeof quad);
+      k += 6;
+    }
+  hedge_mesh* plate = make_mesh(positions, (n + 1) * (n + 1), triangles, k, NULL, 0);
+  free(positions);
+  free(triangles);
+  return plate;
+}
+
+static void test_fracture(void) {
+  CHECK(sizeof(hedge_fracture_ring) == 24 && sizeof(hedge_fracture_options) == 464 &&
+        sizeof(hedge_fracture_shard) == 168);
+  hedge_fracture_options o;
+  CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o));
+  CHECK(o.ring_count == 4 && o.rings[0].points == 4 && o.rings[3].points == 16 && o.density == 1 && o.hulls == 1 &&
+        o.thickness == 0 && o.absolute == 0);
+  CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_WOOD, &o));
+  CHECK(o.grain[0] == 1 && o.grain_stretch == 3);
+  CHECK_STATUS(hedge_fracture_options_default(7, &o), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("preset");
+  CHECK_STATUS(hedge_fracture_options_default(HEDGE_FRACTURE_ICE, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+
+  hedge_mesh* plate = make_plate(30);
+  hedge_geometry before;
+  CHECK_OK(hedge_mesh_geometry(plate, &before));
+  const uint32_t faces_before = (uint32_t)counts_of(plate).faces;
+  hedge_fracture_shard shards[40];
+  uint32_t count = 0;
+  /* Too small a buffer: the bound is given and nothing changes. */
+  CHECK_STATUS(hedge_mesh_fracture(plate, 15.2f, 14.9f, 0, NULL, shards, 10, &count), HEDGE_ERROR_BUFFER_TOO_SMALL);
+  CHECK(count == 40 && counts_of(plate).faces == faces_before);
+  /* Off the plate, NaN, bad booleans and ring counts: refused, nothing changes. */
+  CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 3, NULL, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("tolerance");
+  CHECK_STATUS(hedge_mesh_fracture(plate, NAN, 15, 0, NULL, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o));
+  o.hulls = 2;
+  CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, &o, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
+  o.hulls = 1;
+  o.ring_count = HEDGE_FRACTURE_MAX_RINGS + 1;
+  CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, &o, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
+  o.ring_count = 4;
+  o.rings[1].spacing = -1;
+  CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, &o, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("rings[1].spacing");
+  CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, NULL, shards, 40, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK(counts_of(plate).faces == faces_before);
+
+  /* Glass with thickness: closed shards with mass, hulls, areas adding up. */
+  CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o));
+  o.thickness = 0.25;
+  o.density = 2;
+  o.seed = 9;
+  CHECK_OK(hedge_mesh_fracture(plate, 15.2f, 14.9f, 0, &o, shards, 40, &count));
+  CHECK(count >= 20 && count <= 40);
+  hedge_geometry after;
+  CHECK_OK(hedge_mesh_geometry(plate, &after));
+  double area = after.area;
+  uint32_t problems = 1;
+  for (uint32_t i = 0; i < count; ++i) {
+    const hedge_fracture_shard* s = &shards[i];
+    area += s->area;
+    CHECK(s->closed == 1 && s->volume > 0 && fabs(s->volume - 0.25 * s->area) < 1e-4 * s->area);
+    CHECK(fabs(s->mass - 2 * s->volume) < 1e-9 * s->mass && s->inertia[0] > 0 && s->inertia[4] > 0);
+    CHECK(fabs(s->centroid[2]) < 1e-9 && fabs(s->centre_of_mass[2] + 0.125) < 1e-4);
+    CHECK(s->mesh != NULL && s->hull != NULL && s->hull_dimension == 4);
+    CHECK_OK(hedge_mesh_validate(s->mesh, &problems));
+    CHECK(problems == 0);
+    hedge_geometry g;
+    CHECK_OK(hedge_mesh_geometry(s->hull, &g));
+    CHECK(g.closed == 1 && g.volume >= s->volume * (1 - 1e-6));
+  }
+  CHECK(fabs(area - before.area) < 1e-5 * before.area);
+  CHECK_OK(hedge_mesh_validate(plate, &problems));
+  CHECK(problems == 0);
+
+  /* The same seed on a fresh plate: the same shards. */
+  hedge_mesh* again = make_plate(30);
+  hedge_fracture_shard twin[40];
+  uint32_t twin_count = 0;
+  CHECK_OK(hedge_mesh_fracture(again, 15.2f, 14.9f, 0, &o, twin, 40, &twin_count));
+  CHECK(twin_count == count);
+  for (uint32_t i = 0; i < count && i < twin_count; ++i) {
+    CHECK(twin[i].area == shards[i].area && twin[i].centroid[0] == shards[i].centroid[0] &&
+          counts_of(twin[i].mesh).faces == counts_of(shards[i].mesh).faces);
+    CHECK_OK(hedge_mesh_destroy(twin[i].mesh));
+    CHECK_OK(hedge_mesh_destroy(twin[i].hull));
+  }
+  for (uint32_t i = 0; i < count; ++i) {
+    CHECK_OK(hedge_mesh_destroy(shards[i].mesh));
+    CHECK_OK(hedge_mesh_destroy(shards[i].hull));
+  }
+  /* No break points: no shard, nothing changes. */
+  o.ring_count = 0;
+  CHECK_OK(hedge_mesh_fracture(again, 5.5f, 5.5f, 0, &o, NULL, 0, &count));
+  CHECK(count == 0);
+  CHECK_OK(hedge_mesh_destroy(again));
+  CHECK_OK(hedge_mesh_destroy(plate));
 }
 
 static void test_subdivide(void) {
@@ -2040,6 +2155,7 @@ int main(void) {
   test_hausdorff();
   test_smooth();
   test_decimate();
+  test_fracture();
   test_subdivide();
   test_picking();
   test_triangle_faces();

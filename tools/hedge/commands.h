@@ -30,5 +30,6 @@ Command add_smooth_command(CLI::App& parent);
 Command add_subdivide_command(CLI::App& parent);
 Command add_decimate_command(CLI::App& parent);
 Command add_distance_command(CLI::App& parent);
+Command add_fracture_command(CLI::App& parent);
 
 }  // namespace hedge::cli

@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
       add_subdivide_command(app),
       add_decimate_command(app),
       add_distance_command(app),
+      add_fracture_command(app),
   };
 
   try {

@@ -68,6 +68,13 @@ namespace Hedge
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_mesh_decimate(IntPtr mesh, ref DecimateOptions options, out DecimateResult result);
 
+        // ---- Fracture ----
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_fracture_options_default(int preset, out FractureOptions options);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_fracture(IntPtr mesh, float x, float y, float z, ref FractureOptions options,
+                                                       [Out] NativeFractureShard[] shards, uint capacity, out uint count);
+
         // ---- Smoothing ----
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_smooth_options_default(out SmoothOptions options);

@@ -79,6 +79,7 @@ namespace Hedge.Tests
             r.Add("MeshTests.SubdivisionRefinesAndRenderBuffersFollow", SubdivisionRefinesAndRenderBuffersFollow);
             r.Add("MeshTests.HausdorffDistanceOfARaisedCopy", HausdorffDistanceOfARaisedCopy);
             r.Add("MeshTests.DecimationReachesItsTarget", DecimationReachesItsTarget);
+            r.Add("MeshTests.SimulateBreakingGivesShardsForRigidBodies", SimulateBreakingGivesShardsForRigidBodies);
             r.Add("MeshTests.UnityQuadKeepsTheUsersCoordinates", UnityQuadKeepsTheUsersCoordinates);
         }
 
@@ -265,6 +266,76 @@ namespace Hedge.Tests
                 Check.Throws(HedgeStatus.InvalidArgument, () => quad.Decimate(o));
                 Check.Equal(1, quad.FaceCount);
             }
+        }
+
+        static HalfEdgeMesh Plate(int n)
+        {
+            var positions = new float[3 * (n + 1) * (n + 1)];
+            var triangles = new uint[6 * n * n];
+            for (int j = 0; j <= n; ++j)
+                for (int i = 0; i <= n; ++i)
+                {
+                    positions[3 * (j * (n + 1) + i)] = i;
+                    positions[3 * (j * (n + 1) + i) + 1] = j;
+                }
+            int k = 0;
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i)
+                {
+                    uint a = (uint)(j * (n + 1) + i), b = a + 1, c = a + (uint)n + 2, d = a + (uint)n + 1;
+                    foreach (uint v in new[] { a, b, c, a, c, d }) triangles[k++] = v;
+                }
+            return HalfEdgeMesh.FromTriangles(positions, triangles);
+        }
+
+        // The original's demo on a 24 x 24 plate: glass breaks into many shards whose areas add up, each a valid mesh
+        // with a hull; with a thickness each is a closed solid with mass; the same seed repeats; a miss is refused.
+        static void SimulateBreakingGivesShardsForRigidBodies()
+        {
+            Check.Equal(464, Marshal.SizeOf(typeof(FractureOptions)), "hedge_fracture_options");
+            Check.Equal(24, Marshal.SizeOf(typeof(FractureRing)), "hedge_fracture_ring");
+            Check.Equal(168, Marshal.SizeOf(typeof(NativeFractureShard)), "hedge_fracture_shard");
+            using (var plate = Plate(24))
+            using (RenderBuffers buffers = plate.CreateRenderBuffers())
+            {
+                double before = plate.Geometry.Area;
+                FractureShard[] shards = plate.SimulateBreaking(new Vec3(12.2f, 11.9f, 0), FracturePreset.Glass, 5);
+                Check.True(shards.Length >= 20 && shards.Length <= 40, "shards: " + shards.Length);
+                double area = plate.Geometry.Area;
+                foreach (FractureShard s in shards)
+                {
+                    Check.Valid(s.Mesh, "a shard");
+                    area += s.Area;
+                    Check.True(s.Hull != null && s.HullDimension == 3, "a flat shard's hull is a thin prism");
+                    Check.True(!s.Closed && s.Mass == 0, "open without a thickness");
+                    s.Dispose();
+                }
+                Check.True(Math.Abs(area - before) < 1e-5 * before, "areas add up: " + area + " vs " + before);
+                Check.Valid(plate, "the rest");
+                buffers.Sync();
+                Check.Equal((uint)plate.FaceCount, buffers.Counts.Triangles, "the buffers follow");
+                Check.Throws(HedgeStatus.InvalidArgument, () => plate.SimulateBreaking(new Vec3(12, 12, 5), FracturePreset.Stone, 1));
+            }
+            double[] areas = new double[2];
+            for (int run = 0; run < 2; ++run)
+                using (var plate = Plate(24))
+                {
+                    FractureOptions o = FractureOptions.Preset(FracturePreset.Wood);
+                    Check.True(o.GrainStretch == 3 && o.Hulls && o.RingCount == 3, "the wood preset");
+                    o.Thickness = 0.2;
+                    o.Density = 3;
+                    o.Seed = 77;
+                    FractureShard[] shards = o.TotalPoints == 18 ? plate.Fracture(new Vec3(12.5f, 12.4f, 0), o) : null;
+                    Check.True(shards != null && shards.Length >= 8, "wood shards");
+                    foreach (FractureShard s in shards)
+                    {
+                        Check.True(s.Closed && s.Volume > 0 && Math.Abs(s.Mass - 3 * s.Volume) < 1e-9 * s.Mass, "a solid");
+                        Check.True(s.Inertia.Length == 9 && s.Inertia[0] > 0 && s.HullDimension == 4, "inertia and a solid hull");
+                        areas[run] += s.Area;
+                        s.Dispose();
+                    }
+                }
+            Check.True(areas[0] == areas[1], "the same seed breaks the same way");
         }
 
         // A 2 x 2 grid of quads with its middle vertex lifted: every method but cotangent (quads) pulls it down,

@@ -1,0 +1,166 @@
+// Fracture: an impact breaks a surface into shards, groups of faces a physics engine can move.
+//
+// The steps, all local to the broken area:
+//  1. locate: the face nearest to the impact, which must lie within `tolerance` of it (FaceBvh).
+//  2. cut: the impact point becomes a vertex. Near a corner of its face (barycentric weight within
+//     1e-3 of 1) that corner is taken as it is; near an edge of a triangle (a weight below 1e-3) the
+//     edge is split there; otherwise the face is split there. No sliver face is made.
+//  3. scatter: the broken area is gathered by growing over face adjacency from the impact, a face
+//     keyed by the largest distance from the impact of the face centroids on its path, up to the
+//     outer ring's radius (plus half a spacing). Break points are placed in rings around the
+//     impact, as the material says (points, spacing and jitter per ring), in the tangent plane of
+//     the impact face, then carried onto the surface: each goes to the face of the area whose polar
+//     coordinates around the impact (its key, in the direction its centroid lies in the tangent
+//     plane) are nearest. So the rings follow a curved surface and never jump across a gap to
+//     another part of the mesh; a point beyond the surface's edge goes to a face on the edge.
+//  4. cut: faces of the broken area with an edge longer than the material's refine_edge are split
+//     (longest edge at its midpoint, then again), so that cells are groups of faces even on a coarse
+//     mesh; polygons in the area are split into triangles at their centroid.
+//  5. cells: the break points' faces grow together over face adjacency, each face going to the
+//     break point that reaches it first by the same key (distance to the break point's face): on a
+//     plate the Voronoi cells of the break points, on any surface cells that are connected across
+//     edges. Wood measures distances along its grain shortened by grain_stretch, so its cells are
+//     that much longer along the grain.
+//  6. detach: each cell leaves the mesh by detach_faces() (properties included) as a shard.
+//  7. per shard: centroid, area, the solid (thickness > 0), mass properties and convex hull.
+//
+// Units: a material's ring spacings are multiples of the mean edge length of the impact face when
+// `absolute` is false (the presets): the same preset breaks a coarse and a fine mesh into the same
+// number of shards of the same number of faces, and the cost does not depend on the mesh's size or
+// resolution. With `absolute` true they are model units; a coarse mesh is then refined (step 4).
+//
+// Determinism: a seeded generator of its own (splitmix64) and an integer-to-double conversion of
+// its own (no std:: distribution, whose output differs between standard libraries), no global
+// state, ties broken by index and no hashed container iterated: the same mesh, impact, options and
+// seed give the same shards, bit for bit, on every run.
+//
+// Properties: face properties (a material id) follow each face into its shard; vertex and corner
+// properties (UVs, normals) are interpolated by the splits (core/operations.h) and copied by the
+// detach. The remaining mesh keeps a valid, manifold boundary where the shards left.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hedge/algorithms/convex_hull.h"
+#include "hedge/algorithms/locate.h"
+#include "hedge/algorithms/mass_properties.h"
+#include "hedge/core/surface_mesh.h"
+#include "hedge/core/vec.h"
+
+namespace hedge {
+
+//! One ring of break points around the impact.
+struct FractureRing {
+  //! Break points on the ring (at most 100000).
+  unsigned points = 0;
+  //! Distance of this ring from the previous one (from the impact for the first ring); positive.
+  //! In units of the impact face's mean edge length, or model units when the material is absolute.
+  double spacing = 1;
+  //! In [0, 1]: how far points stray from even angles and from the ring's radius, as a fraction of
+  //! the angle between two points and of the spacing. 0: exactly regular.
+  double jitter = 0;
+};
+
+//! How a material breaks. Presets: fracture_material().
+struct FractureMaterial {
+  std::string name;
+  std::vector<FractureRing> rings;
+  //! The grain direction (wood), used when grain_stretch > 1: it must then be nonzero. Its part in
+  //! the impact face's plane is the grain there; where the grain runs (nearly) along the face's
+  //! normal, closer than 6 degrees, the surface is cut across the grain and the cells are round.
+  Vec3 grain{};
+  //! >= 1: cells are this many times longer along the grain than across it. 1: no grain.
+  double grain_stretch = 1;
+  //! Faces of the broken area with an edge longer than this (units as the spacing) are split until
+  //! none is, so cells are made of several faces. Positive; at most 20000 splits per impact.
+  double refine_edge = 1.5;
+  //! Spacings in model units rather than in edge lengths of the impact face.
+  bool absolute = false;
+};
+
+//! The names fracture_material() knows: "glass", "stone", "wood", "ice".
+std::vector<std::string> fracture_material_names();
+
+//! A preset:
+//!  - glass: 4 rings, 40 break points, out to about 8 edge lengths: many small shards, smaller near
+//!    the impact;
+//!  - stone: 2 rings, 7 break points, out to about 9 edge lengths: few large chunks;
+//!  - wood: 3 rings, 18 break points, grain along x stretched 3 times: long splinters;
+//!  - ice: 3 rings, 26 break points, out to about 7 edge lengths.
+//! \throw InvalidInputError for another name, listing the valid ones.
+FractureMaterial fracture_material(std::string_view preset);
+
+struct FractureOptions {
+  FractureMaterial material = fracture_material("glass");
+  //! Seed of the break points' generator.
+  std::uint64_t seed = 0;
+  //! > 0: every open shard is extruded into a closed solid this thick (model units), see Shard::mesh.
+  double thickness = 0;
+  //! Mass per unit volume, for the shards' mass properties. Positive.
+  double density = 1;
+  //! Largest distance (model units) from the impact to the surface. 0: 1e-3 times the longest edge
+  //! of the nearest face.
+  double tolerance = 0;
+  //! Compute each shard's convex hull.
+  bool hulls = true;
+  //! Options of the hulls.
+  ConvexHullOptions hull_options{};
+};
+
+struct Shard {
+  //! The shard's faces with their properties. With thickness, the closed solid: the broken faces
+  //! (front), a copy moved by `thickness` against the vertex normals with reversed faces (back),
+  //! and two triangles per boundary edge joining them (side walls). Back vertices and corners copy
+  //! the properties of the front ones they were moved from; a wall's vertices and corners copy the
+  //! front vertex's properties and its faces the face property of the front face on that edge.
+  SurfaceMesh mesh;
+  //! Area-weighted centroid of the broken faces (the front).
+  Vec3d centroid;
+  //! Area of the broken faces (the front only, also with thickness).
+  double area = 0;
+  //! Volume of `mesh` when it is closed, 0 when it is open.
+  double volume = 0;
+  //! `mesh` has no boundary.
+  bool closed = false;
+  //! Of `mesh` at the options' density when it is closed; all zero when it is open.
+  MassProperties mass;
+  //! Of `mesh`'s vertices, when options.hulls (else empty). Every vertex is checked to lie inside
+  //! within hull.tolerance; should one stick out farther, hull.max_outside_distance says by how
+  //! much (never seen in the test sweep since convex_hull keeps its near points).
+  ConvexHull hull;
+};
+
+struct FractureResult {
+  //! In the order of their break points (ring by ring, then by angle).
+  std::vector<Shard> shards;
+  //! The face the impact was located on, before the cut (it has broken off since).
+  Face impact_face;
+  //! The impact point moved onto the surface.
+  Vec3 impact_point;
+  //! Wall-clock seconds per stage (steady clock): locating; scattering the break points (with
+  //! gathering the broken area); cutting (impact, refinement, cells); detaching; per-shard work
+  //! (solid, mass properties, hulls).
+  struct Timings {
+    double locate = 0, scatter = 0, cut = 0, detach = 0, hulls = 0;
+  } seconds;
+};
+
+//! Breaks `mesh` at `impact` (see the file comment). With `bvh` (built over `mesh`) the impact is
+//! located through it and it is kept up to date through update(): the cost is then that of the
+//! broken area, O(k log k) for its k faces plus the shards' hulls, whatever the size of the mesh.
+//! Without one, a temporary FaceBvh is built first, O(n log n).
+//! Faces must be convex (polygons are split at their centroid); every face of the mesh must have
+//! a nonzero area near the impact.
+//! \return the shards; none for a material without break points (the mesh is then unchanged).
+//!   When the broken area reaches all of a small connected part, that whole part breaks off.
+//! \throw InvalidInputError, with the mesh unchanged, for: a non-finite impact; no face within the
+//!   tolerance (giving the distance to the nearest); a mesh with no face, or whose part at the
+//!   impact is a single face (too small to break); an illegal material or option, naming the field
+//!   (ring index included); a bvh of another mesh.
+FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOptions& options = {},
+                        FaceBvh* bvh = nullptr);
+
+}  // namespace hedge

@@ -1,0 +1,577 @@
+// Fracture. See include/hedge/algorithms/fracture.h for the contract.
+#include "hedge/algorithms/fracture.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <optional>
+#include <limits>
+#include <queue>
+#include <string>
+#include <tuple>
+#include <unordered_map>
+#include <utility>
+
+#include "hedge/algorithms/detach_faces.h"
+#include "hedge/algorithms/geometry.h"
+#include "hedge/core/build.h"
+#include "hedge/core/operations.h"
+#include "hedge/error.h"
+
+namespace hedge {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+//! A barycentric weight this close to 1 (or to 0) puts the impact on a corner (or an edge).
+constexpr double kSnap = 1e-3;
+constexpr std::size_t kMaxRefineSplits = 20000;  // per round
+constexpr unsigned kMaxRingPoints = 100000;
+
+//! splitmix64 (Steele, Lea and Flood 2014): one 64-bit state, a Weyl step and a mixing function.
+class Generator {
+ public:
+  explicit Generator(std::uint64_t seed) : state_(seed) {}
+  std::uint64_t next() {
+    state_ += 0x9E3779B97F4A7C15ull;
+    std::uint64_t z = state_;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  //! Uniform in [0, 1): the top 53 bits, scaled exactly.
+  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+
+ private:
+  std::uint64_t state_;
+};
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point& t) {
+  const Clock::time_point now = Clock::now();
+  const double s = std::chrono::duration<double>(now - t).count();
+  t = now;
+  return s;
+}
+
+std::string number(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+Vec3d sub(const Vec3d& a, const Vec3d& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+
+//! Distances with the grain shortened: the component along `axis` counts `shrink` times.
+struct Metric {
+  Vec3d axis{};  // unit, or zero: isotropic
+  double shrink = 1;
+  double length(const Vec3d& d) const {
+    const double a = dot(d, axis);
+    const double perp2 = std::max(0.0, dot(d, d) - a * a);
+    return std::sqrt(perp2 + a * a * shrink * shrink);
+  }
+};
+
+Vec3d centroid_of(const SurfaceMesh& m, Face f) {
+  Vec3d c{};
+  double n = 0;
+  for (Vertex v : m.vertices(f)) {
+    c += to_double(m.position(v));
+    n += 1;
+  }
+  return c * (1.0 / n);
+}
+
+double longest_edge(const SurfaceMesh& m, Face f) {
+  double best = 0;
+  for (Halfedge h : m.halfedges(f))
+    best = std::max(best, norm(sub(to_double(m.position(m.to_vertex(h))), to_double(m.position(m.from_vertex(h))))));
+  return best;
+}
+
+double mean_edge(const SurfaceMesh& m, Face f) {
+  double sum = 0;
+  double n = 0;
+  for (Halfedge h : m.halfedges(f)) {
+    sum += norm(sub(to_double(m.position(m.to_vertex(h))), to_double(m.position(m.from_vertex(h)))));
+    n += 1;
+  }
+  return sum / n;
+}
+
+void check_options(const FractureOptions& o) {
+  auto fail = [](const std::string& what) { throw InvalidInputError("fracture: " + what); };
+  const FractureMaterial& m = o.material;
+  for (std::size_t i = 0; i < m.rings.size(); ++i) {
+    const FractureRing& r = m.rings[i];
+    const std::string where = "material '" + m.name + "' rings[" + std::to_string(i) + "].";
+    if (r.points > kMaxRingPoints)
+      fail(where + "points is " + std::to_string(r.points) + ", more than " + std::to_string(kMaxRingPoints));
+    if (!std::isfinite(r.spacing) || r.spacing <= 0) fail(where + "spacing must be finite and positive, is " + number(r.spacing));
+    if (!std::isfinite(r.jitter) || r.jitter < 0 || r.jitter > 1) fail(where + "jitter must be in [0, 1], is " + number(r.jitter));
+  }
+  const std::string mat = "material '" + m.name + "' ";
+  if (!std::isfinite(m.grain_stretch) || m.grain_stretch < 1)
+    fail(mat + "grain_stretch must be finite and at least 1, is " + number(m.grain_stretch));
+  if (!is_finite(m.grain)) fail(mat + "grain is not finite");
+  if (m.grain_stretch > 1 && dot(to_double(m.grain), to_double(m.grain)) == 0)
+    fail(mat + "grain is zero while grain_stretch is " + number(m.grain_stretch));
+  if (!std::isfinite(m.refine_edge) || m.refine_edge <= 0)
+    fail(mat + "refine_edge must be finite and positive, is " + number(m.refine_edge));
+  if (!std::isfinite(o.thickness) || o.thickness < 0) fail("thickness must be finite and >= 0, is " + number(o.thickness));
+  if (!std::isfinite(o.density) || o.density <= 0) fail("density must be finite and positive, is " + number(o.density));
+  if (!std::isfinite(o.tolerance) || o.tolerance < 0) fail("tolerance must be finite and >= 0, is " + number(o.tolerance));
+}
+
+//! A face of the broken area.
+struct AreaFace {
+  Face face;
+  double distance = 0;  // from the impact in the metric (see Area)
+  Vec3d centroid;
+};
+
+//! The faces of the broken area: grown from the faces around `centre` over face adjacency, each
+//! face keyed by the largest metric distance from p of the face centroids on its path (a path
+//! that leaves the radius ends there). On a plate the key is the distance itself; on a curved or
+//! folded surface the growth follows the surface and never jumps a gap. Faces in the order they
+//! were settled (by key, then index).
+class Area {
+ public:
+  std::vector<AreaFace> faces;
+  //! face index -> position in `faces` (looked up only, never iterated).
+  std::unordered_map<Index, std::uint32_t> slot;
+
+  void gather(const SurfaceMesh& m, Vertex centre, const Vec3d& p, double radius, const Metric& metric) {
+    faces.clear();
+    slot.clear();
+    using Item = std::pair<double, Index>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+    std::unordered_map<Index, double> best;
+    auto offer = [&](Face g, double key) {
+      auto [it, inserted] = best.emplace(g.idx(), key);
+      if (!inserted) {
+        if (key >= it->second) return;
+        it->second = key;
+      }
+      heap.emplace(key, g.idx());
+    };
+    for (Face f : m.faces(centre)) offer(f, metric.length(sub(centroid_of(m, f), p)));
+    while (!heap.empty()) {
+      const auto [d, fi] = heap.top();
+      heap.pop();
+      if (slot.count(fi) || d > best[fi]) continue;
+      const Face f(fi);
+      slot.emplace(fi, static_cast<std::uint32_t>(faces.size()));
+      faces.push_back({f, d, centroid_of(m, f)});
+      for (Face g : m.faces(f)) {
+        if (slot.count(g.idx())) continue;
+        const double dg = std::max(d, metric.length(sub(centroid_of(m, g), p)));
+        if (dg <= radius) offer(g, dg);
+      }
+    }
+  }
+};
+
+//! Splits polygons of the area at their centroid and edges longer than max_edge at their midpoint
+//! (longest first), for faces whose centroid lies within `radius` of p in the metric.
+//! \return true if anything was split.
+bool refine(SurfaceMesh& m, const Area& area, const Vec3d& p, double radius, double max_edge, const Metric& metric) {
+  std::vector<Face> work;
+  work.reserve(area.faces.size());
+  for (const AreaFace& a : area.faces) work.push_back(a.face);
+  std::size_t splits = 0;
+  bool changed = false;
+  for (std::size_t i = 0; i < work.size() && splits < kMaxRefineSplits; ++i) {
+    const Face f = work[i];
+    if (!m.is_live(f)) continue;
+    if (i >= area.faces.size() && metric.length(sub(centroid_of(m, f), p)) > radius) continue;
+    Vertex v;
+    if (m.valence(f) > 3) {
+      v = split_face(m, f, to_float(centroid_of(m, f)));
+    } else {
+      Halfedge longest;
+      double best = max_edge;
+      for (Halfedge h : m.halfedges(f)) {
+        const double l = norm(sub(to_double(m.position(m.to_vertex(h))), to_double(m.position(m.from_vertex(h)))));
+        if (l > best) {
+          best = l;
+          longest = h;
+        }
+      }
+      if (!longest.is_valid()) continue;
+      const Vec3d mid = (to_double(m.position(m.to_vertex(longest))) + to_double(m.position(m.from_vertex(longest)))) * 0.5;
+      v = split_edge(m, SurfaceMesh::edge(longest), to_float(mid));
+    }
+    if (!v.is_valid()) continue;
+    ++splits;
+    changed = true;
+    for (Face g : m.faces(v)) work.push_back(g);
+  }
+  return changed;
+}
+
+//! Puts the impact into the mesh as a vertex, without making a sliver face.
+Vertex cut_impact(SurfaceMesh& m, const LocateResult& hit, Vec3& point) {
+  const auto& w = hit.barycentric;
+  const std::size_t hi = static_cast<std::size_t>(std::max_element(w.begin(), w.end()) - w.begin());
+  if (w[hi] >= 1 - kSnap) {
+    point = m.position(hit.corners[hi]);
+    return hit.corners[hi];
+  }
+  const std::size_t lo = static_cast<std::size_t>(std::min_element(w.begin(), w.end()) - w.begin());
+  if (m.valence(hit.face) == 3 && w[lo] < kSnap) {
+    const Vertex a = hit.corners[(lo + 1) % 3], b = hit.corners[(lo + 2) % 3];
+    const double wa = w[(lo + 1) % 3], wb = w[(lo + 2) % 3];
+    const Vec3d q = (to_double(m.position(a)) * wa + to_double(m.position(b)) * wb) * (1.0 / (wa + wb));
+    point = to_float(q);
+    const Vertex v = split_edge(m, m.find_edge(a, b), point);
+    if (v.is_valid()) return v;
+  }
+  point = hit.point;
+  return split_face(m, hit.face, point);
+}
+
+Vec3d any_perpendicular(const Vec3d& n) {
+  const Vec3d axis = std::abs(n.x) <= std::abs(n.y) && std::abs(n.x) <= std::abs(n.z) ? Vec3d{1, 0, 0}
+                     : std::abs(n.y) <= std::abs(n.z)                                  ? Vec3d{0, 1, 0}
+                                                                                       : Vec3d{0, 0, 1};
+  return normalize(cross(n, axis));
+}
+
+//! The solid of an open shard: front, back copy `thickness` behind along the vertex normals
+//! (reversed), and two triangles per boundary edge. See Shard::mesh.
+SurfaceMesh extrude(const SurfaceMesh& s, double thickness) {
+  const std::size_t n = s.vertex_slots();
+  std::vector<Vec3d> normal(n);
+  Vec3d total{};
+  for (Face f : s.faces()) {
+    const Vec3d a = area_vector(s, f);
+    total += a;
+    for (Vertex v : s.vertices(f)) normal[v.idx()] += a;
+  }
+  total = normalize(total);
+  IndexedMesh im;
+  im.positions.resize(2 * n);
+  for (Vertex v : s.vertices()) {
+    Vec3d nv = normalize(normal[v.idx()]);
+    if (dot(nv, nv) == 0) nv = total;
+    im.positions[v.idx()] = s.position(v);
+    im.positions[n + v.idx()] = to_float(to_double(s.position(v)) - nv * thickness);
+  }
+  // Where each corner's properties come from: a half-edge of s (pointing to the front vertex).
+  std::vector<Halfedge> corner_src;
+  std::vector<Face> face_src;
+  for (Face f : s.faces()) {
+    std::size_t k = 0;
+    for (Halfedge h : s.halfedges(f)) {
+      im.indices.push_back(s.to_vertex(h).idx());
+      corner_src.push_back(h);
+      ++k;
+    }
+    im.face_sizes.push_back(static_cast<std::uint32_t>(k));
+    face_src.push_back(f);
+  }
+  for (Face f : s.faces()) {
+    std::vector<Halfedge> hs;
+    for (Halfedge h : s.halfedges(f)) hs.push_back(h);
+    for (auto it = hs.rbegin(); it != hs.rend(); ++it) {
+      im.indices.push_back(static_cast<std::uint32_t>(n + s.to_vertex(*it).idx()));
+      corner_src.push_back(*it);
+    }
+    im.face_sizes.push_back(static_cast<std::uint32_t>(hs.size()));
+    face_src.push_back(f);
+  }
+  for (Halfedge h : s.halfedges()) {
+    if (!s.is_boundary(h)) continue;
+    const Index a = s.from_vertex(h).idx(), b = s.to_vertex(h).idx();
+    const Halfedge at_a = SurfaceMesh::twin(h);  // in the front face, pointing to a
+    const Halfedge at_b = s.prev(at_a);           // in the same face, pointing to b
+    const Face f = s.face(at_a);
+    im.indices.insert(im.indices.end(), {a, b, static_cast<std::uint32_t>(n + b)});
+    corner_src.insert(corner_src.end(), {at_a, at_b, at_b});
+    im.indices.insert(im.indices.end(), {a, static_cast<std::uint32_t>(n + b), static_cast<std::uint32_t>(n + a)});
+    corner_src.insert(corner_src.end(), {at_a, at_b, at_a});
+    im.face_sizes.insert(im.face_sizes.end(), {3, 3});
+    face_src.insert(face_src.end(), {f, f});
+  }
+  BuildOptions bo;
+  bo.corner_attributes = false;
+  BuildReport rep;
+  SurfaceMesh out = build(im, bo, &rep);
+  out.vertex_properties().add_missing_from(s.vertex_properties());
+  out.halfedge_properties().add_missing_from(s.halfedge_properties());
+  out.face_properties().add_missing_from(s.face_properties());
+  for (Vertex v : out.vertices()) {
+    const Index src = rep.vertex_origin[v.idx()];
+    out.vertex_properties().copy_element_from(s.vertex_properties(), src % n, v.idx());
+    out.position(v) = im.positions[src];
+  }
+  std::size_t c = 0;
+  for (std::size_t i = 0; i < face_src.size(); ++i) {
+    const Face nf(rep.face_map[i]);
+    out.face_properties().copy_element_from(s.face_properties(), face_src[i].idx(), nf.idx());
+    for (Halfedge h : out.halfedges(nf))
+      out.halfedge_properties().copy_element_from(s.halfedge_properties(), corner_src[c++].idx(), h.idx());
+  }
+  return out;
+}
+
+//! How far the farthest point lies beyond a face plane of the hull (0 for an empty hull).
+double farthest_outside(const ConvexHull& hull, const std::vector<Vec3>& points) {
+  double worst = 0;
+  const SurfaceMesh& h = hull.mesh;
+  for (Face f : h.faces()) {
+    const Vec3d n = normalize(area_vector(h, f));
+    const Vec3d a = to_double(h.position(h.to_vertex(h.halfedge(f))));
+    for (const Vec3& q : points) worst = std::max(worst, dot(sub(to_double(q), a), n));
+  }
+  return worst;
+}
+
+void measure_shard(Shard& shard, const FractureOptions& o) {
+  const SurfaceMesh& s = shard.mesh;
+  double area = 0;
+  Vec3d weighted{};
+  for (Face f : s.faces()) {
+    const double a = face_area(s, f);
+    area += a;
+    weighted += centroid_of(s, f) * a;
+  }
+  shard.area = area;
+  shard.centroid = area > 0 ? weighted * (1.0 / area) : Vec3d{};
+  bool boundary = false;
+  for (Halfedge h : s.halfedges())
+    if (s.is_boundary(h)) {
+      boundary = true;
+      break;
+    }
+  if (boundary && o.thickness > 0) {
+    shard.mesh = extrude(s, o.thickness);
+    boundary = false;
+  }
+  shard.closed = !boundary;
+  if (shard.closed) {
+    shard.volume = volume(shard.mesh);
+    try {
+      shard.mass = mass_properties(shard.mesh, o.density);
+    } catch (const InvalidInputError&) {
+      shard.mass = MassProperties{};  // not a positive volume (folded by a thickness too large)
+    }
+  }
+  if (o.hulls) {
+    std::vector<Vec3> points;
+    points.reserve(shard.mesh.n_vertices());
+    for (Vertex v : shard.mesh.vertices()) points.push_back(shard.mesh.position(v));
+    shard.hull = convex_hull(points, o.hull_options);
+    // A safeguard on quickhull's rounding: every vertex is checked against the hull (O(points x
+    // hull faces), small for a shard), and any that sticks out beyond the tolerance is reported.
+    const double beyond = farthest_outside(shard.hull, points) - shard.hull.tolerance;
+    shard.hull.max_outside_distance = std::max(shard.hull.max_outside_distance, beyond);
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> fracture_material_names() { return {"glass", "stone", "wood", "ice"}; }
+
+FractureMaterial fracture_material(std::string_view preset) {
+  FractureMaterial m;
+  m.name = std::string(preset);
+  if (preset == "glass") {
+    m.rings = {{4, 1.0, 0.4}, {8, 1.6, 0.4}, {12, 2.0, 0.35}, {16, 2.4, 0.3}};
+  } else if (preset == "stone") {
+    m.rings = {{3, 3.0, 0.3}, {4, 4.5, 0.3}};
+    m.refine_edge = 2.0;
+  } else if (preset == "wood") {
+    m.rings = {{4, 1.5, 0.3}, {6, 2.0, 0.3}, {8, 2.5, 0.3}};
+    m.grain = {1, 0, 0};
+    m.grain_stretch = 3;
+  } else if (preset == "ice") {
+    m.rings = {{6, 1.5, 0.5}, {9, 2.0, 0.5}, {11, 2.5, 0.5}};
+  } else {
+    std::string names;
+    for (const std::string& n : fracture_material_names()) names += (names.empty() ? "" : ", ") + n;
+    throw InvalidInputError("fracture: unknown material '" + std::string(preset) + "'; valid presets: " + names);
+  }
+  return m;
+}
+
+FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOptions& o, FaceBvh* bvh) {
+  check_options(o);
+  if (!is_finite(impact))
+    throw InvalidInputError("fracture: the impact (" + number(impact.x) + ", " + number(impact.y) + ", " +
+                            number(impact.z) + ") is not finite");
+  if (mesh.n_faces() == 0) throw InvalidInputError("fracture: the mesh has no face");
+  if (bvh && bvh->mesh() != &mesh) throw InvalidInputError("fracture: the FaceBvh was built over another mesh");
+
+  FractureResult result;
+  Clock::time_point t = Clock::now();
+
+  // ---- locate ----
+  std::optional<FaceBvh> own;
+  FaceBvh* tree = bvh;
+  if (tree) {
+    tree->update();
+  } else {
+    own.emplace(mesh);
+    tree = &*own;
+  }
+  const std::optional<LocateResult> hit = tree->closest_point(impact);
+  if (!hit) throw InvalidInputError("fracture: no face found near the impact");
+  const double tolerance = o.tolerance > 0 ? o.tolerance : 1e-3 * longest_edge(mesh, hit->face);
+  const double distance = std::sqrt(hit->squared_distance);
+  if (!(distance <= tolerance))
+    throw InvalidInputError("fracture: the impact (" + number(impact.x) + ", " + number(impact.y) + ", " +
+                            number(impact.z) + ") is " + number(distance) + " from the nearest face (" +
+                            std::to_string(hit->face.idx()) + "), beyond the tolerance " + number(tolerance));
+  bool neighbour = false;
+  for (Halfedge h : mesh.halfedges(hit->face))
+    if (!mesh.is_boundary(SurfaceMesh::twin(h))) {
+      neighbour = true;
+      break;
+    }
+  if (!neighbour)
+    throw InvalidInputError("fracture: face " + std::to_string(hit->face.idx()) +
+                            " at the impact has no neighbour: too small to break");
+  result.impact_face = hit->face;
+  result.impact_point = hit->point;
+  result.seconds.locate = seconds_since(t);
+
+  std::size_t total_points = 0;
+  for (const FractureRing& r : o.material.rings) total_points += r.points;
+  if (total_points == 0) return result;
+
+  // ---- frame and metric ----
+  const FractureMaterial& mat = o.material;
+  const double unit = mat.absolute ? 1.0 : mean_edge(mesh, hit->face);
+  Vec3d normal = normalize(area_vector(mesh, hit->face));
+  if (dot(normal, normal) == 0) normal = {0, 0, 1};
+  Metric metric;
+  Vec3d t1 = any_perpendicular(normal);
+  if (mat.grain_stretch > 1) {
+    const Vec3d g = normalize(to_double(mat.grain));
+    const Vec3d in_plane = sub(g, normal * dot(g, normal));
+    if (norm(in_plane) > std::sin(6 * kPi / 180)) {
+      t1 = normalize(in_plane);
+      metric.axis = t1;
+      metric.shrink = 1 / mat.grain_stretch;
+    }
+  }
+  const Vec3d t2 = cross(normal, t1);
+  double outer = 0;
+  for (const FractureRing& r : mat.rings) outer += r.spacing;
+  const double radius = (outer + 0.5 * mat.rings.back().spacing) * unit;
+
+  // ---- cut the impact in ----
+  Vec3 impact_on_surface;
+  const Vertex centre = cut_impact(mesh, *hit, impact_on_surface);
+  result.impact_point = impact_on_surface;
+  const Vec3d p = to_double(impact_on_surface);
+  result.seconds.cut += seconds_since(t);
+
+  // ---- gather the broken area, refine it where its faces are large ----
+  Area area;
+  area.gather(mesh, centre, p, radius, metric);
+  result.seconds.scatter += seconds_since(t);
+  // Splits change the centroids and so the area's rim: again until nothing is split (a polygon or a
+  // long edge newly reached at the rim), a few rounds at most.
+  for (int round = 0; round < 8 && refine(mesh, area, p, radius, mat.refine_edge * unit, metric); ++round) {
+    result.seconds.cut += seconds_since(t);
+    area.gather(mesh, centre, p, radius, metric);
+    result.seconds.scatter += seconds_since(t);
+  }
+
+  // ---- scatter the break points and carry them onto the surface ----
+  const std::size_t k = area.faces.size();
+  std::vector<std::array<double, 2>> polar(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    const Vec3d d = sub(area.faces[i].centroid, p);
+    const double x = dot(d, t1) * metric.shrink, y = dot(d, t2);
+    const double len = std::hypot(x, y);
+    const double r = area.faces[i].distance;
+    polar[i] = len > 0 ? std::array<double, 2>{r * x / len, r * y / len} : std::array<double, 2>{0, 0};
+  }
+  Generator rng(o.seed);
+  std::vector<std::uint32_t> seeds;
+  std::vector<std::int32_t> seed_of(k, -1);
+  double ring_radius = 0;
+  for (const FractureRing& ring : mat.rings) {
+    ring_radius += ring.spacing;
+    const double phase = 2 * kPi * rng.uniform();
+    for (unsigned i = 0; i < ring.points; ++i) {
+      const double angle = phase + 2 * kPi * (i + ring.jitter * (rng.uniform() - 0.5)) / ring.points;
+      const double r = (ring_radius + ring.jitter * ring.spacing * (rng.uniform() - 0.5)) * unit;
+      const double x = r * std::cos(angle), y = r * std::sin(angle);
+      std::size_t best = 0;
+      double best_d = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < k; ++j) {
+        const double dx = polar[j][0] - x, dy = polar[j][1] - y;
+        const double d = dx * dx + dy * dy;
+        if (d < best_d) {
+          best_d = d;
+          best = j;
+        }
+      }
+      if (seed_of[best] < 0) {
+        seed_of[best] = static_cast<std::int32_t>(seeds.size());
+        seeds.push_back(static_cast<std::uint32_t>(best));
+      }
+    }
+  }
+  result.seconds.scatter += seconds_since(t);
+
+  // ---- cells: each face of the area goes to its nearest break point along the surface ----
+  std::vector<std::int32_t> cell(k, -1);
+  {
+    using Item = std::tuple<double, std::int32_t, std::uint32_t>;  // distance, cell, area slot
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+    std::vector<double> best(k, std::numeric_limits<double>::infinity());
+    for (std::size_t s = 0; s < seeds.size(); ++s) {
+      best[seeds[s]] = 0;
+      heap.emplace(0.0, static_cast<std::int32_t>(s), seeds[s]);
+    }
+    while (!heap.empty()) {
+      const auto [d, c, i] = heap.top();
+      heap.pop();
+      if (cell[i] >= 0) continue;
+      cell[i] = c;
+      for (Face g : mesh.faces(area.faces[i].face)) {
+        const auto it = area.slot.find(g.idx());
+        if (it == area.slot.end() || cell[it->second] >= 0) continue;
+        const double dg =
+            std::max(d, metric.length(sub(area.faces[it->second].centroid, area.faces[seeds[c]].centroid)));
+        if (dg < best[it->second]) {
+          best[it->second] = dg;
+          heap.emplace(dg, c, it->second);
+        }
+      }
+    }
+  }
+  std::vector<std::vector<Face>> cells(seeds.size());
+  for (std::size_t i = 0; i < k; ++i)
+    if (cell[i] >= 0) cells[static_cast<std::size_t>(cell[i])].push_back(area.faces[i].face);
+  result.seconds.cut += seconds_since(t);
+
+  // ---- detach ----
+  result.shards.reserve(cells.size());
+  for (std::vector<Face>& faces : cells) {
+    if (faces.empty()) continue;
+    std::sort(faces.begin(), faces.end());
+    Shard shard;
+    shard.mesh = detach_faces(mesh, faces);
+    result.shards.push_back(std::move(shard));
+  }
+  if (bvh) bvh->update();
+  result.seconds.detach += seconds_since(t);
+
+  // ---- per shard ----
+  for (Shard& shard : result.shards) measure_shard(shard, o);
+  result.seconds.hulls += seconds_since(t);
+  return result;
+}
+
+}  // namespace hedge

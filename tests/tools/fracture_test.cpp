@@ -1,0 +1,114 @@
+// hedge fracture, run as a user would.
+#include <string>
+#include <vector>
+
+#include "cli_fixture.h"
+
+namespace {
+
+using namespace cli_test;
+
+// Every file of a folder with its bytes, in name order.
+std::vector<std::pair<std::string, std::string>> folder(const fs::path& dir) {
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const auto& e : fs::directory_iterator(dir)) files.emplace_back(e.path().filename().string(), read_text(e.path()));
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+TEST_F(HedgeCli, FractureWritesShardsAndASummaryThatDescribesThem) {
+  const fs::path out = tmp("broken");
+  const json j = run_json({"fracture", data("spot_triangulated.obj"), "--impact", "0.0,0.0,0.0", "--tolerance", "10",
+                           "--material", "glass", "--seed", "4", "-o", out.string(), "--thickness", "0.01", "--json"});
+  ASSERT_TRUE(j.contains("shards")) << j.dump();
+  ASSERT_TRUE(j.contains("seconds"));
+  const json summary = json::parse(read_text(out / "summary.json"));
+  EXPECT_FALSE(summary.contains("seconds"));  // no timings in the files
+  const std::size_t n = summary["shards"].size();
+  EXPECT_GE(n, 20u);
+  EXPECT_LE(n, 60u);
+  const json remaining = run_json({"info", (out / "remaining.obj").string(), "--json"});
+  EXPECT_TRUE(remaining["valid"].get<bool>());
+  EXPECT_EQ(remaining["faces"], summary["remaining"]["faces"]);
+  for (const json& s : summary["shards"]) {
+    const json info = run_json({"info", (out / s["file"].get<std::string>()).string(), "--json"});
+    EXPECT_TRUE(info["valid"].get<bool>()) << s["file"];
+    EXPECT_EQ(info["faces"], s["faces"]);
+    EXPECT_TRUE(s["closed"].get<bool>());
+    EXPECT_GT(s["volume"].get<double>(), 0);
+    EXPECT_GT(s["mass"]["mass"].get<double>(), 0);
+    EXPECT_EQ(s["mass"]["inertia"].size(), 9u);
+    EXPECT_GE(s["hull"]["faces"].get<int>(), 4);
+  }
+  EXPECT_EQ(folder(out).size(), n + 2);
+}
+
+TEST_F(HedgeCli, FractureTwoRunsGiveByteIdenticalFolders) {
+  const std::vector<std::string> base = {"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--tolerance",
+                                         "100", "--material", "wood", "--seed", "77"};
+  auto args = [&](const fs::path& out) {
+    std::vector<std::string> a = base;
+    a.insert(a.end(), {"-o", out.string()});
+    return a;
+  };
+  ASSERT_EQ(run(args(tmp("a"))).code, 0);
+  ASSERT_EQ(run(args(tmp("b"))).code, 0);
+  const auto a = folder(tmp("a")), b = folder(tmp("b"));
+  ASSERT_GE(a.size(), 4u);
+  EXPECT_TRUE(a == b);
+  // Another seed breaks differently; a second run into the same folder leaves no stale shard file.
+  std::vector<std::string> other = args(tmp("a"));
+  other[9] = "78";
+  ASSERT_EQ(run(other).code, 0);
+  const auto c = folder(tmp("a"));
+  EXPECT_FALSE(c == a);
+  const json summary = json::parse(read_text(tmp("a") / "summary.json"));
+  EXPECT_EQ(c.size(), summary["shards"].size() + 2);
+}
+
+TEST_F(HedgeCli, FractureReadsAMaterialFile) {
+  write_text(tmp("two.json"),
+             R"({"name": "two rings", "rings": [{"points": 3, "spacing": 2}, {"points": 5, "spacing": 2.5, "jitter": 0.2}]})");
+  const json j = run_json({"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--tolerance", "100",
+                           "--material", tmp("two.json").string(), "-o", tmp("out").string(), "--json"});
+  EXPECT_EQ(j["material"], "two rings");
+  EXPECT_GE(j["shards"].size(), 2u);
+  EXPECT_LE(j["shards"].size(), 8u);
+}
+
+TEST_F(HedgeCli, FractureBadMaterialFileNamesTheField) {
+  write_text(tmp("bad.json"), R"({"rings": [{"points": 3, "spacing": 2}, {"points": 5, "spacing": "far"}]})");
+  const Result r = run({"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--tolerance", "100",
+                        "--material", tmp("bad.json").string(), "-o", tmp("out").string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("rings[1].spacing"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("bad.json"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(tmp("out")));  // nothing written
+  write_text(tmp("typo.json"), R"({"rings": [], "grian": [1, 0, 0]})");
+  const Result t = run({"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--material",
+                        tmp("typo.json").string(), "-o", tmp("out").string()});
+  EXPECT_EQ(t.code, 1);
+  EXPECT_NE(t.err.find("'grian'"), std::string::npos) << t.err;
+  write_text(tmp("broken.json"), R"({"rings": [)");
+  expect_data_error({"fracture", data("three_peaks.off"), "--impact", "0,0,0", "--material", tmp("broken.json").string(),
+                     "-o", tmp("out").string()},
+                    "broken.json");
+}
+
+TEST_F(HedgeCli, FractureRefusesAMissAndBadArguments) {
+  // Far from the surface: a data error, and the output folder is not created.
+  const Result r = run({"fracture", data("three_peaks.off"), "--impact", "1000,1000,1000", "-o", tmp("out").string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("tolerance"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(tmp("out")));
+  expect_usage_error({"fracture", data("three_peaks.off"), "--impact", "1,2", "-o", tmp("out").string()});
+  expect_usage_error({"fracture", data("three_peaks.off"), "--impact", "1,nan,2", "-o", tmp("out").string()});
+  expect_usage_error({"fracture", data("three_peaks.off"), "--impact", "1,2,3", "--thickness", "-1", "-o",
+                      tmp("out").string()});
+  const Result m = run({"fracture", data("three_peaks.off"), "--impact", "1,2,3", "--material", "metal", "-o",
+                        tmp("out").string()});
+  EXPECT_EQ(m.code, 1);
+  EXPECT_NE(m.err.find("glass, stone, wood, ice"), std::string::npos) << m.err;
+}
+
+}  // namespace

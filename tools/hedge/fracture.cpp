@@ -1,0 +1,271 @@
+// hedge fracture IN --impact x,y,z --material NAME|FILE.json --seed S -o DIR: break a mesh at an
+// impact and write the remaining mesh, one OBJ per shard and summary.json into DIR.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include <unistd.h>
+
+#include "commands.h"
+#include "hedge/algorithms/fracture.h"
+#include "hedge/error.h"
+#include "load.h"
+
+namespace hedge::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct FractureCommandOptions {
+  std::string input, output, material = "glass", impact;
+  std::uint64_t seed = 0;
+  double thickness = 0, density = 1, tolerance = 0;
+  bool json = false;
+  LoadOptions load;
+};
+
+Vec3 parse_impact(const std::string& text) {
+  Vec3 p;
+  std::size_t start = 0;
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t comma = text.find(',', start);
+    if ((i < 2) != (comma != std::string::npos))
+      throw CLI::ValidationError("--impact", "expected three numbers x,y,z, got '" + text + "'");
+    const std::string part = text.substr(start, i < 2 ? comma - start : std::string::npos);
+    char* end = nullptr;
+    const double v = std::strtod(part.c_str(), &end);
+    if (part.empty() || *end != 0 || !std::isfinite(v))
+      throw CLI::ValidationError("--impact", "'" + part + "' is not a finite number (in '" + text + "')");
+    p[static_cast<std::size_t>(i)] = static_cast<float>(v);
+    start = comma + 1;
+  }
+  return p;
+}
+
+// ---- material files (schema: docs/fracture.md) ----
+
+[[noreturn]] void bad_field(const std::string& path, const std::string& field, const std::string& what) {
+  throw InvalidInputError(path + ": material field '" + field + "' " + what);
+}
+
+double number_field(const json& j, const std::string& path, const std::string& field) {
+  if (!j.is_number()) bad_field(path, field, "must be a number");
+  return j.get<double>();
+}
+
+FractureMaterial read_material(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path, 0, -1, "cannot open the material file");
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw IoError(path, 0, static_cast<std::int64_t>(e.byte), std::string("not valid JSON: ") + e.what());
+  }
+  if (!j.is_object()) throw InvalidInputError(path + ": a material is a JSON object");
+  static const char* const known[] = {"name", "rings", "grain", "grain_stretch", "refine_edge", "absolute"};
+  for (const auto& item : j.items()) {
+    bool ok = false;
+    for (const char* k : known) ok |= item.key() == k;
+    if (!ok) bad_field(path, item.key(), "is unknown (fields: name, rings, grain, grain_stretch, refine_edge, absolute)");
+  }
+  FractureMaterial m;
+  m.name = fs::path(path).stem().string();
+  if (j.contains("name")) {
+    if (!j["name"].is_string()) bad_field(path, "name", "must be a string");
+    m.name = j["name"].get<std::string>();
+  }
+  if (!j.contains("rings")) bad_field(path, "rings", "is missing");
+  if (!j["rings"].is_array()) bad_field(path, "rings", "must be an array of rings");
+  for (std::size_t i = 0; i < j["rings"].size(); ++i) {
+    const json& r = j["rings"][i];
+    const std::string at = "rings[" + std::to_string(i) + "]";
+    if (!r.is_object()) bad_field(path, at, "must be an object {points, spacing, jitter}");
+    for (const auto& item : r.items())
+      if (item.key() != "points" && item.key() != "spacing" && item.key() != "jitter")
+        bad_field(path, at + "." + item.key(), "is unknown (fields: points, spacing, jitter)");
+    FractureRing ring;
+    if (!r.contains("points") || !r["points"].is_number_unsigned())
+      bad_field(path, at + ".points", "must be a whole number >= 0");
+    if (r["points"].get<std::uint64_t>() > 100000) bad_field(path, at + ".points", "must be at most 100000");
+    ring.points = r["points"].get<unsigned>();
+    if (!r.contains("spacing")) bad_field(path, at + ".spacing", "is missing");
+    ring.spacing = number_field(r["spacing"], path, at + ".spacing");
+    if (!(ring.spacing > 0)) bad_field(path, at + ".spacing", "must be positive");
+    if (r.contains("jitter")) ring.jitter = number_field(r["jitter"], path, at + ".jitter");
+    if (!(ring.jitter >= 0 && ring.jitter <= 1)) bad_field(path, at + ".jitter", "must be in [0, 1]");
+    m.rings.push_back(ring);
+  }
+  if (j.contains("grain")) {
+    const json& g = j["grain"];
+    if (!g.is_array() || g.size() != 3) bad_field(path, "grain", "must be an array of three numbers");
+    for (std::size_t i = 0; i < 3; ++i) m.grain[i] = static_cast<float>(number_field(g[i], path, "grain"));
+  }
+  if (j.contains("grain_stretch")) {
+    m.grain_stretch = number_field(j["grain_stretch"], path, "grain_stretch");
+    if (!(m.grain_stretch >= 1)) bad_field(path, "grain_stretch", "must be at least 1");
+  }
+  if (j.contains("refine_edge")) {
+    m.refine_edge = number_field(j["refine_edge"], path, "refine_edge");
+    if (!(m.refine_edge > 0)) bad_field(path, "refine_edge", "must be positive");
+  }
+  if (j.contains("absolute")) {
+    if (!j["absolute"].is_boolean()) bad_field(path, "absolute", "must be true or false");
+    m.absolute = j["absolute"].get<bool>();
+  }
+  return m;
+}
+
+FractureMaterial material_from(const std::string& text) {
+  for (const std::string& n : fracture_material_names())
+    if (n == text) return fracture_material(text);
+  if (text.size() > 5 && text.substr(text.size() - 5) == ".json") return read_material(text);
+  return fracture_material(text);  // throws, listing the presets
+}
+
+json vec(const Vec3d& v) { return json::array({v.x, v.y, v.z}); }
+
+//! Writes `text` to `path` through a temporary file in the same folder and a rename.
+void write_atomically(const fs::path& path, const std::string& text) {
+  const fs::path tmp = path.string() + ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    out.flush();
+    if (!out) {
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      throw IoError(path.string(), 0, -1, "cannot write");
+    }
+  }
+  fs::rename(tmp, path);
+}
+
+std::string shard_name(std::size_t i) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "shard_%03zu.obj", i);
+  return buf;
+}
+
+int run_fracture(const FractureCommandOptions& o) {
+  const Vec3 impact = parse_impact(o.impact);
+  FractureOptions f;
+  f.material = material_from(o.material);
+  f.seed = o.seed;
+  f.thickness = o.thickness;
+  f.density = o.density;
+  f.tolerance = o.tolerance;
+  LoadedMesh loaded = load_mesh(o.input, o.load);
+  SurfaceMesh& mesh = loaded.mesh;
+  const auto start = std::chrono::steady_clock::now();
+  const FractureResult r = fracture(mesh, impact, f);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  // Everything is computed; only now is DIR touched. Each file is replaced atomically and
+  // summary.json comes last, so a summary always describes complete files.
+  const fs::path dir(o.output);
+  fs::create_directories(dir);
+  json summary;
+  summary["input"] = fs::path(o.input).filename().string();
+  summary["impact"] = vec(to_double(impact));
+  summary["impact_on_surface"] = vec(to_double(r.impact_point));
+  summary["material"] = f.material.name;
+  summary["seed"] = o.seed;
+  summary["thickness"] = o.thickness;
+  summary["density"] = o.density;
+  summary["remaining"] = {{"file", "remaining.obj"}, {"faces", mesh.n_faces()}, {"vertices", mesh.n_vertices()}};
+  mesh.garbage_collection();
+  save_mesh(mesh, (dir / "remaining.obj").string(), false);
+  json shards = json::array();
+  for (std::size_t i = 0; i < r.shards.size(); ++i) {
+    const Shard& s = r.shards[i];
+    const std::string name = shard_name(i);
+    save_mesh(s.mesh, (dir / name).string(), false);
+    json m = {{"mass", s.mass.mass},
+              {"centre_of_mass", vec(s.mass.centre_of_mass)},
+              {"inertia", s.mass.inertia},
+              {"principal_moments", vec(s.mass.principal_moments)}};
+    shards.push_back({{"file", name},
+                      {"faces", s.mesh.n_faces()},
+                      {"vertices", s.mesh.n_vertices()},
+                      {"centroid", vec(s.centroid)},
+                      {"area", s.area},
+                      {"volume", s.volume},
+                      {"closed", s.closed},
+                      {"mass", m},
+                      {"hull", {{"vertices", s.hull.mesh.n_vertices()}, {"faces", s.hull.mesh.n_faces()}}}});
+  }
+  summary["shards"] = shards;
+  // Shard files of an earlier run with more shards would not belong to this summary.
+  for (std::size_t i = r.shards.size();; ++i) {
+    std::error_code ec;
+    if (!fs::remove(dir / shard_name(i), ec)) break;
+  }
+  write_atomically(dir / "summary.json", summary.dump(2) + "\n");
+
+  if (o.json) {
+    json out = summary;
+    out["milliseconds"] = ms;
+    out["seconds"] = {{"locate", r.seconds.locate},
+                      {"scatter", r.seconds.scatter},
+                      {"cut", r.seconds.cut},
+                      {"detach", r.seconds.detach},
+                      {"hulls", r.seconds.hulls}};
+    std::printf("%s\n", out.dump(2).c_str());
+  } else {
+    std::printf("fractured %s at (%g, %g, %g) with %s: %zu shards into %s, %.2f ms\n", o.input.c_str(), impact.x,
+                impact.y, impact.z, f.material.name.c_str(), r.shards.size(), o.output.c_str(), ms);
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_fracture_command(CLI::App& parent) {
+  auto o = std::make_shared<FractureCommandOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "fracture", "Break a mesh at an impact point into shards; write the rest, one OBJ per shard and summary.json");
+  app->add_option("IN", o->input, "Input mesh file")->required();
+  app->add_option("--impact", o->impact, "The impact point x,y,z, on (or within the tolerance of) the surface")
+      ->required()
+      ->check(CLI::Validator(
+          [](std::string& s) -> std::string {
+            try {
+              parse_impact(s);
+              return "";
+            } catch (const CLI::ValidationError& e) {
+              return e.what();
+            }
+          },
+          "x,y,z"));
+  app->add_option("--material", o->material, "glass, stone, wood, ice, or a material file FILE.json (docs/fracture.md)")
+      ->capture_default_str();
+  app->add_option("--seed", o->seed, "Seed of the break points")->capture_default_str();
+  app->add_option("-o,--output", o->output, "Output folder (created if missing)")->required();
+  app->add_option("--thickness", o->thickness, "Extrude each shard into a solid this thick (model units); 0: none")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  app->add_option("--density", o->density, "Mass per unit volume for the mass properties")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  app->add_option("--tolerance", o->tolerance,
+                  "Largest distance from the impact to the surface (model units); 0: 1e-3 of the nearest face's "
+                  "longest edge")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  app->add_flag("--json", o->json, "Print the summary as JSON, with timings");
+  add_load_options(*app, o->load);
+  return {app, [o] { return run_fracture(*o); }};
+}
+
+}  // namespace hedge::cli
