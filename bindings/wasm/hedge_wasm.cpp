@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "hedge/algorithms/decimate.h"
+#include "hedge/algorithms/fracture.h"
 #include "hedge/algorithms/locate.h"
 #include "hedge/algorithms/smooth.h"
 #include "hedge/algorithms/subdivide.h"
@@ -162,6 +163,48 @@ std::uint32_t js_length(const val& array, const char* what) {
   const val length = array["length"];
   if (!length.isNumber()) throw InvalidInputError(std::string(what) + ": expected a typed array");
   return length.as<std::uint32_t>();
+}
+
+val js_vec3d(const Vec3d& p) {
+  val out = val::array();
+  out.set(0, p.x);
+  out.set(1, p.y);
+  out.set(2, p.z);
+  return out;
+}
+
+//! Copies of native arrays as JS typed arrays.
+val js_doubles(const double* data, std::size_t n) {
+  return val::global("Float64Array").new_(val(emscripten::typed_memory_view(n, data)));
+}
+val js_floats(const float* data, std::size_t n) {
+  return val::global("Float32Array").new_(val(emscripten::typed_memory_view(n, data)));
+}
+val js_uints(const std::uint32_t* data, std::size_t n) {
+  return val::global("Uint32Array").new_(val(emscripten::typed_memory_view(n, data)));
+}
+
+//! A fracture material from the object the JS layer made of a custom material (see
+//! WasmMesh::fracture); fracture() checks the values.
+FractureMaterial material_from_js(const val& m) {
+  FractureMaterial out;
+  out.name = m["name"].as<std::string>();
+  std::vector<double> rings;
+  copy_from_js(m["rings"], rings, js_length(m["rings"], "material.rings"));
+  if (rings.size() % 3 != 0) throw InvalidInputError("material.rings: expected 3 numbers per ring");
+  for (std::size_t i = 0; i < rings.size(); i += 3) {
+    const double points = rings[i];
+    if (!(points >= 0 && points <= 100000 && std::floor(points) == points))
+      throw InvalidInputError("material '" + out.name + "' rings[" + std::to_string(i / 3) +
+                              "].points must be a whole number in [0, 100000]");
+    out.rings.push_back(FractureRing{unsigned(points), rings[i + 1], rings[i + 2]});
+  }
+  const val grain = m["grain"];
+  out.grain = Vec3{float(grain[0].as<double>()), float(grain[1].as<double>()), float(grain[2].as<double>())};
+  out.grain_stretch = m["grainStretch"].as<double>();
+  out.refine_edge = m["refineEdge"].as<double>();
+  out.absolute = m["absolute"].as<bool>();
+  return out;
 }
 
 // ---- The shared state of a mesh ---------------------------------------------------------------
@@ -752,6 +795,72 @@ class WasmMesh {
     });
   }
 
+  //! Breaks the mesh at `impact` (fracture.h), through the picking tree (built if missing, kept up
+  //! to date), so the cost is that of the broken area. `preset`: a preset's name, or "" for the
+  //! material in `custom`: {name, rings (Float64Array, 3 per ring: points, spacing, jitter), grain
+  //! ([x, y, z]), grainStretch, refineEdge, absolute}, whose types the JS layer has checked.
+  //! Returns {shards: [{mesh (a NativeMesh), centroid, area, volume, closed, mass, centreOfMass,
+  //! inertia, principalMoments, principalAxes, hull: {positions, indices, dimension}, faces}],
+  //! impactFace, impactPoint, seconds: {locate, scatter, cut, detach, hulls}}.
+  //! fracture() checks everything before it edits, so a refusal leaves the mesh as it was.
+  val fracture(val impact, const std::string& preset, val custom, double seed, double thickness, double density,
+               double tolerance, bool hulls) {
+    return guarded([&] {
+      const Vec3 at = point_from_js(impact, "fracture: the impact");
+      if (!(seed >= 0 && seed <= 9007199254740992.0 && std::floor(seed) == seed))
+        throw InvalidInputError("fracture: the seed must be a whole number in [0, 2^53]");
+      FractureOptions options;
+      options.material = preset.empty() ? material_from_js(custom) : fracture_material(preset);
+      options.seed = std::uint64_t(seed);
+      options.thickness = thickness;
+      options.density = density;
+      options.tolerance = tolerance;
+      options.hulls = hulls;
+      FractureResult r = hedge::fracture(s_->mesh, at, options, &ready_bvh());
+
+      val shards = val::array();
+      for (std::size_t i = 0; i < r.shards.size(); ++i) {
+        Shard& shard = r.shards[i];
+        val out = val::object();
+        out.set("faces", double(shard.mesh.n_faces()));
+        out.set("centroid", js_vec3d(shard.centroid));
+        out.set("area", shard.area);
+        out.set("volume", shard.volume);
+        out.set("closed", shard.closed);
+        out.set("mass", shard.mass.mass);
+        out.set("centreOfMass", js_vec3d(shard.mass.centre_of_mass));
+        out.set("inertia", js_doubles(shard.mass.inertia.data(), 9));
+        out.set("principalMoments", js_vec3d(shard.mass.principal_moments));
+        val axes = val::array();
+        for (int k = 0; k < 3; ++k) axes.set(k, js_vec3d(shard.mass.principal_axes[k]));
+        out.set("principalAxes", axes);
+        val hull = val::object();
+        const IndexedMesh h = to_indexed(shard.hull.mesh);
+        hull.set("positions", js_floats(h.positions.empty() ? nullptr : &h.positions[0].x, h.positions.size() * 3));
+        hull.set("indices", js_uints(h.indices.data(), h.indices.size()));
+        hull.set("dimension", double(int(shard.hull.dimension)));
+        hull.set("tolerance", shard.hull.tolerance);
+        out.set("hull", hull);
+        auto state = std::make_shared<MeshState>();
+        state->mesh = std::move(shard.mesh);
+        out.set("mesh", WasmMesh(std::move(state)));
+        shards.set(i, out);
+      }
+      val seconds = val::object();
+      seconds.set("locate", r.seconds.locate);
+      seconds.set("scatter", r.seconds.scatter);
+      seconds.set("cut", r.seconds.cut);
+      seconds.set("detach", r.seconds.detach);
+      seconds.set("hulls", r.seconds.hulls);
+      val result = val::object();
+      result.set("shards", shards);
+      result.set("impactFace", js_index(r.impact_face.idx()));
+      result.set("impactPoint", js_vec3(r.impact_point));
+      result.set("seconds", seconds);
+      return result;
+    });
+  }
+
   //! The live mesh as index buffers (copies): {positions, indices, faceSizes (null for triangles)}.
   val to_arrays(bool triangulate) const {
     return guarded([&] {
@@ -1017,6 +1126,7 @@ EMSCRIPTEN_BINDINGS(hedge) {
       .function("subdivide", &WasmMesh::subdivide)
       .function("smooth", &WasmMesh::smooth)
       .function("decimate", &WasmMesh::decimate)
+      .function("fracture", &WasmMesh::fracture)
       .function("toArrays", &WasmMesh::to_arrays)
       .function("toFile", &WasmMesh::to_file)
       .function("memoryBytes", &WasmMesh::memory_bytes);
