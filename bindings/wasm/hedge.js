@@ -394,7 +394,34 @@ export class Mesh extends NativeOwner {
     for (const [name, value] of Object.entries({ seed, thickness, density, tolerance }))
       if (!isNumber(value)) throw new HedgeError('invalid-argument', `fracture: ${name} must be a number`);
     const result = this._call('fracture', at, preset, custom, seed, thickness, density, tolerance, Boolean(hulls));
-    result.shards = result.shards.map((s) => new Shard(this.hedge, s));
+    // Unpacks the shards (see WasmMesh::fracture): 34 numbers each, hulls concatenated.
+    const p = result.shards;
+    const shards = [];
+    const v3 = (k) => [p.scalars[k], p.scalars[k + 1], p.scalars[k + 2]];
+    for (let i = 0; i < p.count; ++i) {
+      const k = i * 34;
+      const hv = [p.hullVertexOffsets[i], p.hullVertexOffsets[i + 1]];
+      const hi = [p.hullIndexOffsets[i], p.hullIndexOffsets[i + 1]];
+      shards.push(new Shard(new Mesh(this.hedge, p.meshes[i]), {
+        faces: p.scalars[k],
+        area: p.scalars[k + 1],
+        volume: p.scalars[k + 2],
+        closed: p.scalars[k + 3] === 1,
+        mass: p.scalars[k + 4],
+        centroid: v3(k + 7),
+        centreOfMass: v3(k + 10),
+        principalMoments: v3(k + 13),
+        principalAxes: [v3(k + 16), v3(k + 19), v3(k + 22)],
+        inertia: p.scalars.slice(k + 25, k + 34),
+        hull: {
+          positions: p.hullPositions.subarray(hv[0] * 3, hv[1] * 3),
+          indices: p.hullIndices.subarray(hi[0], hi[1]),
+          dimension: p.scalars[k + 5],
+          tolerance: p.scalars[k + 6],
+        },
+      }));
+    }
+    result.shards = shards;
     return result;
   }
 
@@ -430,8 +457,8 @@ export class Mesh extends NativeOwner {
  *  frame); its convex hull for a collider as hull.positions (Float32Array, 3 per vertex) and
  *  hull.indices (Uint32Array, 3 per outward triangle). */
 export class Shard {
-  constructor(hedge, s) {
-    this.mesh = new Mesh(hedge, s.mesh);
+  constructor(mesh, s) {
+    this.mesh = mesh;
     this.faces = s.faces;
     this.centroid = s.centroid;
     this.area = s.area;

@@ -207,6 +207,9 @@ FractureMaterial material_from_js(const val& m) {
   return out;
 }
 
+//! Numbers per shard in the packed result of WasmMesh::fracture.
+constexpr std::size_t kShardScalars = 7 + 6 * 3 + 9;
+
 // ---- The shared state of a mesh ---------------------------------------------------------------
 
 struct MeshState {
@@ -799,8 +802,10 @@ class WasmMesh {
   //! to date), so the cost is that of the broken area. `preset`: a preset's name, or "" for the
   //! material in `custom`: {name, rings (Float64Array, 3 per ring: points, spacing, jitter), grain
   //! ([x, y, z]), grainStretch, refineEdge, absolute}, whose types the JS layer has checked.
-  //! Returns {shards: [{mesh (a NativeMesh), centroid, area, volume, closed, mass, centreOfMass,
-  //! inertia, principalMoments, principalAxes, hull: {positions, indices, dimension}, faces}],
+  //! Returns {shards: {count, scalars (kShardScalars per shard: faces, area, volume, closed, mass,
+  //! hull dimension, hull tolerance, centroid, centre of mass, principal moments, the three
+  //! principal axes, inertia (9)), meshes (NativeMesh each), hullPositions, hullIndices (each hull's
+  //! indices count from its first vertex), hullVertexOffsets, hullIndexOffsets (count + 1 each)},
   //! impactFace, impactPoint, seconds: {locate, scatter, cut, detach, hulls}}.
   //! fracture() checks everything before it edits, so a refusal leaves the mesh as it was.
   val fracture(val impact, const std::string& preset, val custom, double seed, double thickness, double density,
@@ -818,34 +823,41 @@ class WasmMesh {
       options.hulls = hulls;
       FractureResult r = hedge::fracture(s_->mesh, at, options, &ready_bvh());
 
-      val shards = val::array();
-      for (std::size_t i = 0; i < r.shards.size(); ++i) {
+      // Packed into a few typed arrays (the JS layer makes the shard objects): a val call per field
+      // would cost more than the fracture itself.
+      const std::size_t n = r.shards.size();
+      std::vector<double> scalars;
+      scalars.reserve(n * kShardScalars);
+      std::vector<float> hull_positions;
+      std::vector<std::uint32_t> hull_indices, hull_vertex_offsets{0}, hull_index_offsets{0};
+      val meshes = val::array();
+      for (std::size_t i = 0; i < n; ++i) {
         Shard& shard = r.shards[i];
-        val out = val::object();
-        out.set("faces", double(shard.mesh.n_faces()));
-        out.set("centroid", js_vec3d(shard.centroid));
-        out.set("area", shard.area);
-        out.set("volume", shard.volume);
-        out.set("closed", shard.closed);
-        out.set("mass", shard.mass.mass);
-        out.set("centreOfMass", js_vec3d(shard.mass.centre_of_mass));
-        out.set("inertia", js_doubles(shard.mass.inertia.data(), 9));
-        out.set("principalMoments", js_vec3d(shard.mass.principal_moments));
-        val axes = val::array();
-        for (int k = 0; k < 3; ++k) axes.set(k, js_vec3d(shard.mass.principal_axes[k]));
-        out.set("principalAxes", axes);
-        val hull = val::object();
+        const MassProperties& mp = shard.mass;
+        const double head[] = {double(shard.mesh.n_faces()), shard.area, shard.volume, shard.closed ? 1.0 : 0.0,
+                               mp.mass, double(int(shard.hull.dimension)), shard.hull.tolerance};
+        scalars.insert(scalars.end(), std::begin(head), std::end(head));
+        for (const Vec3d& v : {shard.centroid, mp.centre_of_mass, mp.principal_moments, mp.principal_axes[0],
+                               mp.principal_axes[1], mp.principal_axes[2]})
+          scalars.insert(scalars.end(), {v.x, v.y, v.z});
+        scalars.insert(scalars.end(), mp.inertia.begin(), mp.inertia.end());
         const IndexedMesh h = to_indexed(shard.hull.mesh);
-        hull.set("positions", js_floats(h.positions.empty() ? nullptr : &h.positions[0].x, h.positions.size() * 3));
-        hull.set("indices", js_uints(h.indices.data(), h.indices.size()));
-        hull.set("dimension", double(int(shard.hull.dimension)));
-        hull.set("tolerance", shard.hull.tolerance);
-        out.set("hull", hull);
+        for (const Vec3& p : h.positions) hull_positions.insert(hull_positions.end(), {p.x, p.y, p.z});
+        hull_indices.insert(hull_indices.end(), h.indices.begin(), h.indices.end());
+        hull_vertex_offsets.push_back(std::uint32_t(hull_positions.size() / 3));
+        hull_index_offsets.push_back(std::uint32_t(hull_indices.size()));
         auto state = std::make_shared<MeshState>();
         state->mesh = std::move(shard.mesh);
-        out.set("mesh", WasmMesh(std::move(state)));
-        shards.set(i, out);
+        meshes.set(i, WasmMesh(std::move(state)));
       }
+      val shards = val::object();
+      shards.set("count", double(n));
+      shards.set("scalars", js_doubles(scalars.data(), scalars.size()));
+      shards.set("meshes", meshes);
+      shards.set("hullPositions", js_floats(hull_positions.data(), hull_positions.size()));
+      shards.set("hullIndices", js_uints(hull_indices.data(), hull_indices.size()));
+      shards.set("hullVertexOffsets", js_uints(hull_vertex_offsets.data(), hull_vertex_offsets.size()));
+      shards.set("hullIndexOffsets", js_uints(hull_index_offsets.data(), hull_index_offsets.size()));
       val seconds = val::object();
       seconds.set("locate", r.seconds.locate);
       seconds.set("scatter", r.seconds.scatter);
