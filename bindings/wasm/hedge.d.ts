@@ -186,8 +186,9 @@ export interface FractureResult {
   impactFace: number;
   /** The impact moved onto the surface. */
   impactPoint: [number, number, number];
-  /** Seconds per stage, measured in wasm. */
-  seconds: { locate: number; scatter: number; cut: number; detach: number; hulls: number };
+  /** Seconds, measured in wasm: per stage; `fracture`, the whole library call; `pack`, making
+   *  the result for JS afterwards. */
+  seconds: { locate: number; scatter: number; cut: number; detach: number; hulls: number; fracture: number; pack: number };
 }
 
 export class Hedge {

@@ -378,7 +378,8 @@ export class Mesh extends NativeOwner {
    *  (the same seed, mesh and impact give the same shards). thickness > 0 makes each shard a
    *  closed solid, with mass properties at `density`. Uses the picking tree (built if missing), so
    *  an impact costs what the broken area does. Returns {shards: [Shard], impactFace, impactPoint,
-   *  seconds: {locate, scatter, cut, detach, hulls}}. A bad impact (NaN, off the surface) or option
+   *  seconds: {locate, scatter, cut, detach, hulls, fracture (the whole library call), pack (making
+   *  the result for JS)}}. A bad impact (NaN, off the surface) or option
    *  throws a HedgeError, the mesh unchanged. */
   fracture(impact, { material = 'glass', seed = 0, thickness = 0, density = 1, tolerance = 0, hulls = true } = {}) {
     const at = point3(impact, 'fracture: the impact');

@@ -14,6 +14,7 @@
 #include <malloc.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -806,7 +807,8 @@ class WasmMesh {
   //! hull dimension, hull tolerance, centroid, centre of mass, principal moments, the three
   //! principal axes, inertia (9)), meshes (NativeMesh each), hullPositions, hullIndices (each hull's
   //! indices count from its first vertex), hullVertexOffsets, hullIndexOffsets (count + 1 each)},
-  //! impactFace, impactPoint, seconds: {locate, scatter, cut, detach, hulls}}.
+  //! impactFace, impactPoint, seconds: {locate, scatter, cut, detach, hulls, fracture (the whole
+  //! call), pack (making this result)}}.
   //! fracture() checks everything before it edits, so a refusal leaves the mesh as it was.
   val fracture(val impact, const std::string& preset, val custom, double seed, double thickness, double density,
                double tolerance, bool hulls) {
@@ -821,7 +823,10 @@ class WasmMesh {
       options.density = density;
       options.tolerance = tolerance;
       options.hulls = hulls;
-      FractureResult r = hedge::fracture(s_->mesh, at, options, &ready_bvh());
+      FaceBvh& bvh = ready_bvh();
+      const auto start = std::chrono::steady_clock::now();
+      FractureResult r = hedge::fracture(s_->mesh, at, options, &bvh);
+      const auto fractured = std::chrono::steady_clock::now();
 
       // Packed into a few typed arrays (the JS layer makes the shard objects): a val call per field
       // would cost more than the fracture itself.
@@ -864,6 +869,8 @@ class WasmMesh {
       seconds.set("cut", r.seconds.cut);
       seconds.set("detach", r.seconds.detach);
       seconds.set("hulls", r.seconds.hulls);
+      seconds.set("fracture", std::chrono::duration<double>(fractured - start).count());
+      seconds.set("pack", std::chrono::duration<double>(std::chrono::steady_clock::now() - fractured).count());
       val result = val::object();
       result.set("shards", shards);
       result.set("impactFace", js_index(r.impact_face.idx()));

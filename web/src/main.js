@@ -472,7 +472,7 @@ function strike(point, direction) {
     return `strike (${options.material}, seed ${options.seed})`;
   });
   const s = result.seconds;
-  state.strikes.push({ ms: strikeMs, wasmMs: 1000 * (s.locate + s.scatter + s.cut + s.detach + s.hulls), shards: result.shards.length });
+  state.strikes.push({ ms: strikeMs, wasmMs: 1000 * s.fracture, shards: result.shards.length });
   showFracture();
   const d = Math.hypot(...direction) || 1;
   try {
@@ -540,7 +540,7 @@ async function timeStrikes(count = 25) {
         continue;
       }
       times.push(t);
-      inWasm.push(1000 * (sec.locate + sec.scatter + sec.cut + sec.detach + sec.hulls));
+      inWasm.push(1000 * sec.fracture);
       shards.push(result.shards.length);
       if (times.length % 5 === 0) await new Promise((resolve) => setTimeout(resolve, 0));
     }

@@ -42,7 +42,10 @@ test('a glass strike on a plate gives valid shards whose areas and the rest add 
   assert.ok(result.shards.length >= 20 && result.shards.length <= 40, `${result.shards.length} shards`);
   assert.ok(result.impactFace >= 0);
   assert.deepEqual(result.impactPoint.map((x) => Math.round(x * 10) / 10), [15.3, 14.6, 0]);
-  for (const stage of ['locate', 'scatter', 'cut', 'detach', 'hulls']) assert.ok(result.seconds[stage] >= 0);
+  const sec = result.seconds;
+  const stages = sec.locate + sec.scatter + sec.cut + sec.detach + sec.hulls;
+  for (const stage of ['locate', 'scatter', 'cut', 'detach', 'hulls', 'pack']) assert.ok(sec[stage] >= 0, stage);
+  assert.ok(stages > 0 && stages <= sec.fracture * 1.001, `stages ${stages} s within the call's ${sec.fracture} s`);
   let shardArea = 0;
   for (const shard of result.shards) {
     assert.deepEqual(shard.mesh.validate(), []);
