@@ -809,7 +809,9 @@ class WasmMesh {
   //! indices count from its first vertex), hullVertexOffsets, hullIndexOffsets (count + 1 each)},
   //! impactFace, impactPoint, seconds: {locate, scatter, cut, detach, hulls, fracture (the whole
   //! call), pack (making this result)}}.
-  //! fracture() checks everything before it edits, so a refusal leaves the mesh as it was.
+  //! fracture() checks everything before it edits, so a refusal leaves the mesh as it was. Running out
+  //! of wasm memory halfway is not rolled back (with_rollback's copy of the mesh would cost more
+  //! than the strike, whose own allocations are those of the small broken area).
   val fracture(val impact, const std::string& preset, val custom, double seed, double thickness, double density,
                double tolerance, bool hulls) {
     return guarded([&] {
