@@ -13,6 +13,8 @@ export type Vec3 = [number, number, number] | Float32Array | Float64Array;
 
 export const subdivisionSchemes: readonly SubdivisionScheme[];
 export const smoothingMethods: readonly SmoothMethod[];
+export type FracturePreset = 'glass' | 'stone' | 'wood' | 'ice';
+export const fractureMaterials: readonly FracturePreset[];
 
 export interface LoadOptions {
   /** The bytes of hedge.wasm, when they are at hand (node, tests). */
@@ -122,6 +124,73 @@ export interface Arrays {
   faceSizes: Uint32Array | null;
 }
 
+/** A material of one's own (docs/fracture.md): rings of break points around the impact. */
+export interface FractureMaterial {
+  name?: string;
+  /** Innermost first. points: a whole number in [0, 100000]; spacing > 0 from the previous ring
+   *  (in edge lengths of the impact face, or model units when absolute); jitter in [0, 1]. */
+  rings: { points: number; spacing: number; jitter?: number }[];
+  /** Grain direction (nonzero when grainStretch > 1). */
+  grain?: Vec3;
+  /** >= 1: cells this many times longer along the grain. Default 1. */
+  grainStretch?: number;
+  /** Longest edge left in the broken area (units as the spacing). Default 1.5. */
+  refineEdge?: number;
+  absolute?: boolean;
+}
+
+export interface FractureOptions {
+  /** Default 'glass'. */
+  material?: FracturePreset | FractureMaterial;
+  /** A whole number in [0, 2^53]. Default 0. */
+  seed?: number;
+  /** > 0: each shard a closed solid this thick, with mass properties. Default 0 (open shards). */
+  thickness?: number;
+  /** Mass per unit volume. Default 1. */
+  density?: number;
+  /** Largest distance from the impact to the surface; 0: 1e-3 of the nearest face's longest edge. */
+  tolerance?: number;
+  /** Compute each shard's convex hull. Default true. */
+  hulls?: boolean;
+}
+
+/** A piece broken off by Mesh.fracture(). */
+export class Shard {
+  /** Its faces, with their properties; a closed solid with a thickness. */
+  readonly mesh: Mesh;
+  readonly faces: number;
+  /** Area-weighted centroid and area of the broken faces (the front). */
+  readonly centroid: [number, number, number];
+  readonly area: number;
+  /** Of the closed solid; 0 for an open shard (no thickness), as are mass and inertia. */
+  readonly volume: number;
+  readonly closed: boolean;
+  readonly mass: number;
+  readonly centreOfMass: [number, number, number];
+  /** About the centre of mass, row-major 3x3. */
+  readonly inertia: Float64Array;
+  /** Eigenvalues of inertia, ascending, and their unit axes (a right-handed frame). */
+  readonly principalMoments: [number, number, number];
+  readonly principalAxes: [[number, number, number], [number, number, number], [number, number, number]];
+  /** Convex hull of the shard's vertices, for a collider: outward triangles. dimension: 0 empty,
+   *  1 point, 2 segment, 3 flat (thickened), 4 solid (HullDimension). */
+  readonly hull: { positions: Float32Array; indices: Uint32Array; dimension: number; tolerance: number };
+  /** Frees the shard's mesh now. Idempotent. */
+  dispose(): void;
+}
+
+export interface FractureResult {
+  /** In the order of their break points (ring by ring, then by angle). */
+  shards: Shard[];
+  /** The face the impact was located on (it has broken off since). */
+  impactFace: number;
+  /** The impact moved onto the surface. */
+  impactPoint: [number, number, number];
+  /** Seconds, measured in wasm: per stage; `fracture`, the whole library call; `pack`, making
+   *  the result for JS afterwards. */
+  seconds: { locate: number; scatter: number; cut: number; detach: number; hulls: number; fracture: number; pack: number };
+}
+
 export class Hedge {
   readonly module: unknown;
   fromBuffers(input: {
@@ -170,6 +239,8 @@ export class Mesh {
   subdivide(scheme?: SubdivisionScheme, steps?: number): void;
   smooth(options?: { method?: SmoothMethod; iterations?: number; lambda?: number; mu?: number; fixBoundary?: boolean }): void;
   decimate(options: { ratio?: number; targetFaces?: number; targetVertices?: number; maxError?: number }): DecimateResult;
+  /** Breaks the mesh at impact; the broken faces leave it as shards (see FractureOptions). */
+  fracture(impact: Vec3, options?: FractureOptions): FractureResult;
   toArrays(options?: { triangulate?: boolean }): Arrays;
   toFile(name: string): Uint8Array;
   memoryBytes(): number;

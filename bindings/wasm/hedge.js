@@ -43,6 +43,32 @@ const METHODS = ['uniform', 'taubin', 'cotangent', 'implicit'];
 export const subdivisionSchemes = Object.freeze([...SCHEMES]);
 export const smoothingMethods = Object.freeze([...METHODS]);
 
+const MATERIALS = ['glass', 'stone', 'wood', 'ice'];
+/** The fracture presets, for menus. */
+export const fractureMaterials = Object.freeze([...MATERIALS]);
+
+const isNumber = (x) => typeof x === 'number';
+
+// A custom fracture material as the module takes it: every field typed, the rings flattened.
+// The values themselves (ranges, a zero grain with a stretch) are checked by fracture().
+function customMaterial(m) {
+  const bad = (what) => new HedgeError('invalid-argument', `fracture: material.${what}`);
+  if (m === null || typeof m !== 'object') throw bad(' must be a preset name or an object');
+  const { name = 'custom', rings, grain = [0, 0, 0], grainStretch = 1, refineEdge = 1.5, absolute = false } = m;
+  if (!Array.isArray(rings)) throw bad('rings must be an array of {points, spacing, jitter}');
+  const flat = new Float64Array(rings.length * 3);
+  rings.forEach((ring, i) => {
+    const { points, spacing, jitter = 0 } = ring ?? {};
+    if (!isNumber(points) || !isNumber(spacing) || !isNumber(jitter))
+      throw bad(`rings[${i}] must have numbers points, spacing and jitter`);
+    flat.set([points, spacing, jitter], i * 3);
+  });
+  if (!isArrayLike(grain) || grain.length !== 3 || !Array.from(grain).every(isNumber)) throw bad('grain must be [x, y, z]');
+  if (!isNumber(grainStretch)) throw bad('grainStretch must be a number');
+  if (!isNumber(refineEdge)) throw bad('refineEdge must be a number');
+  return { name: String(name), rings: flat, grain: Array.from(grain), grainStretch, refineEdge, absolute: Boolean(absolute) };
+}
+
 /** Loads the module. options go to the emscripten factory: wasmBinary (the bytes of hedge.wasm)
  *  or locateFile(name) (where to fetch it from), as a bundler or a page needs. */
 export async function loadHedge(options = {}) {
@@ -343,6 +369,63 @@ export class Mesh extends NativeOwner {
     return this._call('decimate', targetFaces, targetVertices, maxError);
   }
 
+  // ---- Fracture ----
+
+  /** Breaks the mesh at `impact` ([x, y, z], within the tolerance of the surface) into shards; the
+   *  mesh is edited in place (the broken faces leave it) and its Render syncs the change as a few
+   *  ranges. material: 'glass', 'stone', 'wood', 'ice' or {name, rings: [{points, spacing,
+   *  jitter}], grain, grainStretch, refineEdge, absolute} (docs/fracture.md). seed: a whole number
+   *  (the same seed, mesh and impact give the same shards). thickness > 0 makes each shard a
+   *  closed solid, with mass properties at `density`. Uses the picking tree (built if missing), so
+   *  an impact costs what the broken area does. Returns {shards: [Shard], impactFace, impactPoint,
+   *  seconds: {locate, scatter, cut, detach, hulls, fracture (the whole library call), pack (making
+   *  the result for JS)}}. A bad impact (NaN, off the surface) or option
+   *  throws a HedgeError, the mesh unchanged. */
+  fracture(impact, { material = 'glass', seed = 0, thickness = 0, density = 1, tolerance = 0, hulls = true } = {}) {
+    const at = point3(impact, 'fracture: the impact');
+    let preset = '';
+    let custom = null;
+    if (typeof material === 'string') {
+      if (!MATERIALS.includes(material))
+        throw new HedgeError('invalid-argument', `fracture: unknown material '${material}' (${MATERIALS.join(', ')}, or an object)`);
+      preset = material;
+    } else {
+      custom = customMaterial(material);
+    }
+    for (const [name, value] of Object.entries({ seed, thickness, density, tolerance }))
+      if (!isNumber(value)) throw new HedgeError('invalid-argument', `fracture: ${name} must be a number`);
+    const result = this._call('fracture', at, preset, custom, seed, thickness, density, tolerance, Boolean(hulls));
+    // Unpacks the shards (see WasmMesh::fracture): 34 numbers each, hulls concatenated.
+    const p = result.shards;
+    const shards = [];
+    const v3 = (k) => [p.scalars[k], p.scalars[k + 1], p.scalars[k + 2]];
+    for (let i = 0; i < p.count; ++i) {
+      const k = i * 34;
+      const hv = [p.hullVertexOffsets[i], p.hullVertexOffsets[i + 1]];
+      const hi = [p.hullIndexOffsets[i], p.hullIndexOffsets[i + 1]];
+      shards.push(new Shard(new Mesh(this.hedge, p.meshes[i]), {
+        faces: p.scalars[k],
+        area: p.scalars[k + 1],
+        volume: p.scalars[k + 2],
+        closed: p.scalars[k + 3] === 1,
+        mass: p.scalars[k + 4],
+        centroid: v3(k + 7),
+        centreOfMass: v3(k + 10),
+        principalMoments: v3(k + 13),
+        principalAxes: [v3(k + 16), v3(k + 19), v3(k + 22)],
+        inertia: p.scalars.slice(k + 25, k + 34),
+        hull: {
+          positions: p.hullPositions.subarray(hv[0] * 3, hv[1] * 3),
+          indices: p.hullIndices.subarray(hi[0], hi[1]),
+          dimension: p.scalars[k + 5],
+          tolerance: p.scalars[k + 6],
+        },
+      }));
+    }
+    result.shards = shards;
+    return result;
+  }
+
   /** The mesh as index buffers (copies): {positions, indices, faceSizes (null for triangles)};
    *  triangulate: true fans polygons into triangles (ear clipping). */
   toArrays({ triangulate = false } = {}) {
@@ -365,6 +448,34 @@ export class Mesh extends NativeOwner {
   createRender({ normals = 'auto', interleaved = true, texcoords = true, colors = true } = {}) {
     const native = this.hedge._check(this.hedge.module.NativeRender.create(this._n(), normals, interleaved, texcoords, colors));
     return new Render(this.hedge, native);
+  }
+}
+
+/** A piece broken off by Mesh.fracture(). `mesh` is its own Mesh (dispose() frees it); the rest
+ *  are plain values: centroid and area of its broken faces, and when it is a closed solid
+ *  (thickness > 0) its volume, mass, centreOfMass, inertia (about the centre of mass, row-major
+ *  3x3 Float64Array), principalMoments (ascending) and principalAxes (unit vectors, a right-handed
+ *  frame); its convex hull for a collider as hull.positions (Float32Array, 3 per vertex) and
+ *  hull.indices (Uint32Array, 3 per outward triangle). */
+export class Shard {
+  constructor(mesh, s) {
+    this.mesh = mesh;
+    this.faces = s.faces;
+    this.centroid = s.centroid;
+    this.area = s.area;
+    this.volume = s.volume;
+    this.closed = s.closed;
+    this.mass = s.mass;
+    this.centreOfMass = s.centreOfMass;
+    this.inertia = s.inertia;
+    this.principalMoments = s.principalMoments;
+    this.principalAxes = s.principalAxes;
+    this.hull = s.hull;
+  }
+
+  /** Frees the shard's mesh now. Idempotent. */
+  dispose() {
+    this.mesh.dispose();
   }
 }
 

@@ -14,6 +14,7 @@
 #include <malloc.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -28,6 +29,7 @@
 #include <vector>
 
 #include "hedge/algorithms/decimate.h"
+#include "hedge/algorithms/fracture.h"
 #include "hedge/algorithms/locate.h"
 #include "hedge/algorithms/smooth.h"
 #include "hedge/algorithms/subdivide.h"
@@ -163,6 +165,51 @@ std::uint32_t js_length(const val& array, const char* what) {
   if (!length.isNumber()) throw InvalidInputError(std::string(what) + ": expected a typed array");
   return length.as<std::uint32_t>();
 }
+
+val js_vec3d(const Vec3d& p) {
+  val out = val::array();
+  out.set(0, p.x);
+  out.set(1, p.y);
+  out.set(2, p.z);
+  return out;
+}
+
+//! Copies of native arrays as JS typed arrays.
+val js_doubles(const double* data, std::size_t n) {
+  return val::global("Float64Array").new_(val(emscripten::typed_memory_view(n, data)));
+}
+val js_floats(const float* data, std::size_t n) {
+  return val::global("Float32Array").new_(val(emscripten::typed_memory_view(n, data)));
+}
+val js_uints(const std::uint32_t* data, std::size_t n) {
+  return val::global("Uint32Array").new_(val(emscripten::typed_memory_view(n, data)));
+}
+
+//! A fracture material from the object the JS layer made of a custom material (see
+//! WasmMesh::fracture); fracture() checks the values.
+FractureMaterial material_from_js(const val& m) {
+  FractureMaterial out;
+  out.name = m["name"].as<std::string>();
+  std::vector<double> rings;
+  copy_from_js(m["rings"], rings, js_length(m["rings"], "material.rings"));
+  if (rings.size() % 3 != 0) throw InvalidInputError("material.rings: expected 3 numbers per ring");
+  for (std::size_t i = 0; i < rings.size(); i += 3) {
+    const double points = rings[i];
+    if (!(points >= 0 && points <= 100000 && std::floor(points) == points))
+      throw InvalidInputError("material '" + out.name + "' rings[" + std::to_string(i / 3) +
+                              "].points must be a whole number in [0, 100000]");
+    out.rings.push_back(FractureRing{unsigned(points), rings[i + 1], rings[i + 2]});
+  }
+  const val grain = m["grain"];
+  out.grain = Vec3{float(grain[0].as<double>()), float(grain[1].as<double>()), float(grain[2].as<double>())};
+  out.grain_stretch = m["grainStretch"].as<double>();
+  out.refine_edge = m["refineEdge"].as<double>();
+  out.absolute = m["absolute"].as<bool>();
+  return out;
+}
+
+//! Numbers per shard in the packed result of WasmMesh::fracture.
+constexpr std::size_t kShardScalars = 7 + 6 * 3 + 9;
 
 // ---- The shared state of a mesh ---------------------------------------------------------------
 
@@ -752,6 +799,89 @@ class WasmMesh {
     });
   }
 
+  //! Breaks the mesh at `impact` (fracture.h), through the picking tree (built if missing, kept up
+  //! to date), so the cost is that of the broken area. `preset`: a preset's name, or "" for the
+  //! material in `custom`: {name, rings (Float64Array, 3 per ring: points, spacing, jitter), grain
+  //! ([x, y, z]), grainStretch, refineEdge, absolute}, whose types the JS layer has checked.
+  //! Returns {shards: {count, scalars (kShardScalars per shard: faces, area, volume, closed, mass,
+  //! hull dimension, hull tolerance, centroid, centre of mass, principal moments, the three
+  //! principal axes, inertia (9)), meshes (NativeMesh each), hullPositions, hullIndices (each hull's
+  //! indices count from its first vertex), hullVertexOffsets, hullIndexOffsets (count + 1 each)},
+  //! impactFace, impactPoint, seconds: {locate, scatter, cut, detach, hulls, fracture (the whole
+  //! call), pack (making this result)}}.
+  //! fracture() checks everything before it edits, so a refusal leaves the mesh as it was. Running out
+  //! of wasm memory halfway is not rolled back (with_rollback's copy of the mesh would cost more
+  //! than the strike, whose own allocations are those of the small broken area).
+  val fracture(val impact, const std::string& preset, val custom, double seed, double thickness, double density,
+               double tolerance, bool hulls) {
+    return guarded([&] {
+      const Vec3 at = point_from_js(impact, "fracture: the impact");
+      if (!(seed >= 0 && seed <= 9007199254740992.0 && std::floor(seed) == seed))
+        throw InvalidInputError("fracture: the seed must be a whole number in [0, 2^53]");
+      FractureOptions options;
+      options.material = preset.empty() ? material_from_js(custom) : fracture_material(preset);
+      options.seed = std::uint64_t(seed);
+      options.thickness = thickness;
+      options.density = density;
+      options.tolerance = tolerance;
+      options.hulls = hulls;
+      FaceBvh& bvh = ready_bvh();
+      const auto start = std::chrono::steady_clock::now();
+      FractureResult r = hedge::fracture(s_->mesh, at, options, &bvh);
+      const auto fractured = std::chrono::steady_clock::now();
+
+      // Packed into a few typed arrays (the JS layer makes the shard objects): a val call per field
+      // would cost more than the fracture itself.
+      const std::size_t n = r.shards.size();
+      std::vector<double> scalars;
+      scalars.reserve(n * kShardScalars);
+      std::vector<float> hull_positions;
+      std::vector<std::uint32_t> hull_indices, hull_vertex_offsets{0}, hull_index_offsets{0};
+      val meshes = val::array();
+      for (std::size_t i = 0; i < n; ++i) {
+        Shard& shard = r.shards[i];
+        const MassProperties& mp = shard.mass;
+        const double head[] = {double(shard.mesh.n_faces()), shard.area, shard.volume, shard.closed ? 1.0 : 0.0,
+                               mp.mass, double(int(shard.hull.dimension)), shard.hull.tolerance};
+        scalars.insert(scalars.end(), std::begin(head), std::end(head));
+        for (const Vec3d& v : {shard.centroid, mp.centre_of_mass, mp.principal_moments, mp.principal_axes[0],
+                               mp.principal_axes[1], mp.principal_axes[2]})
+          scalars.insert(scalars.end(), {v.x, v.y, v.z});
+        scalars.insert(scalars.end(), mp.inertia.begin(), mp.inertia.end());
+        const IndexedMesh h = to_indexed(shard.hull.mesh);
+        for (const Vec3& p : h.positions) hull_positions.insert(hull_positions.end(), {p.x, p.y, p.z});
+        hull_indices.insert(hull_indices.end(), h.indices.begin(), h.indices.end());
+        hull_vertex_offsets.push_back(std::uint32_t(hull_positions.size() / 3));
+        hull_index_offsets.push_back(std::uint32_t(hull_indices.size()));
+        auto state = std::make_shared<MeshState>();
+        state->mesh = std::move(shard.mesh);
+        meshes.set(i, WasmMesh(std::move(state)));
+      }
+      val shards = val::object();
+      shards.set("count", double(n));
+      shards.set("scalars", js_doubles(scalars.data(), scalars.size()));
+      shards.set("meshes", meshes);
+      shards.set("hullPositions", js_floats(hull_positions.data(), hull_positions.size()));
+      shards.set("hullIndices", js_uints(hull_indices.data(), hull_indices.size()));
+      shards.set("hullVertexOffsets", js_uints(hull_vertex_offsets.data(), hull_vertex_offsets.size()));
+      shards.set("hullIndexOffsets", js_uints(hull_index_offsets.data(), hull_index_offsets.size()));
+      val seconds = val::object();
+      seconds.set("locate", r.seconds.locate);
+      seconds.set("scatter", r.seconds.scatter);
+      seconds.set("cut", r.seconds.cut);
+      seconds.set("detach", r.seconds.detach);
+      seconds.set("hulls", r.seconds.hulls);
+      seconds.set("fracture", std::chrono::duration<double>(fractured - start).count());
+      seconds.set("pack", std::chrono::duration<double>(std::chrono::steady_clock::now() - fractured).count());
+      val result = val::object();
+      result.set("shards", shards);
+      result.set("impactFace", js_index(r.impact_face.idx()));
+      result.set("impactPoint", js_vec3(r.impact_point));
+      result.set("seconds", seconds);
+      return result;
+    });
+  }
+
   //! The live mesh as index buffers (copies): {positions, indices, faceSizes (null for triangles)}.
   val to_arrays(bool triangulate) const {
     return guarded([&] {
@@ -1017,6 +1147,7 @@ EMSCRIPTEN_BINDINGS(hedge) {
       .function("subdivide", &WasmMesh::subdivide)
       .function("smooth", &WasmMesh::smooth)
       .function("decimate", &WasmMesh::decimate)
+      .function("fracture", &WasmMesh::fracture)
       .function("toArrays", &WasmMesh::to_arrays)
       .function("toFile", &WasmMesh::to_file)
       .function("memoryBytes", &WasmMesh::memory_bytes);

@@ -40,6 +40,17 @@ export class PageMesh {
     }
   }
 
+  //! A mesh from typed arrays ({positions, indices}, triangles), as hedge.fromBuffers takes them.
+  static fromBuffers(hedge, arrays, options = {}) {
+    const mesh = hedge.fromBuffers(arrays);
+    try {
+      return new PageMesh(hedge, mesh, options);
+    } catch (error) {
+      mesh.dispose();
+      throw error;
+    }
+  }
+
   dispose() {
     if (this.render) this.render.dispose();
     if (this.mesh) this.mesh.dispose();
@@ -213,6 +224,12 @@ export class PageMesh {
 
   smooth() {
     return this.mesh.smooth({ method: 'taubin', iterations: 10 });
+  }
+
+  //! Breaks the mesh at `point` (Mesh.fracture); the shards come back with their own meshes, which
+  //! the caller disposes.
+  fracture(point, options) {
+    return this.mesh.fracture(point, options);
   }
 
   decimate(targetFaces) {

@@ -78,13 +78,24 @@ export class Viewer {
     this.renderer.render(this.scene, this.camera);
   }
 
+  //! Draws the surface see-through (a glass plate, with what is under it in view), or not.
+  setSeeThrough(on) {
+    const m = this.mesh.surface.material;
+    m.transparent = on;
+    m.opacity = on ? 0.45 : 1;
+    m.depthWrite = !on;
+    m.needsUpdate = true;
+    this.requestRender();
+  }
+
   setWireframe(on) {
     this.mesh.wireframe.visible = on;
     this.requestRender();
   }
 
-  //! Frames the camera on a bounding box {min: [x,y,z], max: [x,y,z]}.
-  frame(box) {
+  //! Frames the camera on a bounding box {min: [x,y,z], max: [x,y,z]}, looking from `from` (a
+  //! direction from the box's centre).
+  frame(box, from = [-0.7, 0.35, -1]) {
     const min = new THREE.Vector3(...box.min);
     const max = new THREE.Vector3(...box.max);
     const center = min.clone().add(max).multiplyScalar(0.5);
@@ -92,7 +103,7 @@ export class Viewer {
     this.controls.target.copy(center);
     const fov = THREE.MathUtils.degToRad(this.camera.fov);
     const distance = radius / Math.sin(fov / 2) * 1.05;
-    this.camera.position.copy(center).add(new THREE.Vector3(-0.7, 0.35, -1).normalize().multiplyScalar(distance));
+    this.camera.position.copy(center).add(new THREE.Vector3(...from).normalize().multiplyScalar(distance));
     this.camera.near = distance / 100;
     this.camera.far = distance * 100;
     this.camera.updateProjectionMatrix();
