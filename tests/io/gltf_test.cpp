@@ -14,6 +14,7 @@
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 #include "hedge/render/render_sync.h"
+#include "io/io_errors.h"
 
 namespace hedge {
 namespace {
@@ -23,16 +24,7 @@ using json = nlohmann::json;
 
 std::string data_path(const std::string& name) { return std::string(HEDGE_DATA_DIR) + "/" + name; }
 
-template <typename F>
-IoError catch_io_error(F&& f) {
-  try {
-    f();
-  } catch (const IoError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no IoError";
-  return IoError("", 0, -1, "");
-}
+using test::catch_io_error;
 
 std::string base64(const std::vector<unsigned char>& bytes) {
   static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";

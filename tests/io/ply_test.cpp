@@ -11,6 +11,7 @@
 
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "io/io_errors.h"
 
 namespace hedge {
 namespace {
@@ -100,16 +101,7 @@ std::string ply(const std::string& format, const std::string& elements, const st
   return head + encode(body, format == "binary_big_endian");
 }
 
-template <typename F>
-IoError catch_io_error(F&& f) {
-  try {
-    f();
-  } catch (const IoError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no IoError";
-  return IoError("", 0, -1, "");
-}
+using test::catch_io_error;
 
 void expect_ply_error(const std::string& text, const std::string& message) {
   const IoError e = catch_io_error([&] { read_ply(text, "m.ply"); });

@@ -9,22 +9,14 @@
 
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "io/io_errors.h"
 
 namespace hedge {
 namespace {
 
 std::string data_path(const std::string& name) { return std::string(HEDGE_DATA_DIR) + "/" + name; }
 
-template <typename F>
-IoError catch_io_error(F&& f) {
-  try {
-    f();
-  } catch (const IoError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no IoError";
-  return IoError("", 0, -1, "");
-}
+using test::catch_io_error;
 
 void expect_stl_error(const std::string& data, const std::string& message) {
   const IoError e = catch_io_error([&] { read_stl(data, "m.stl"); });
