@@ -58,6 +58,12 @@ void MeshBuilder::attach_attributes(SurfaceMesh& m) const {
       nrm[Halfedge(corner_he_[c])] = in_.normals[in_.normal_indices[origin(cn)]];
     });
   }
+  if (!in_.color_indices.empty()) {
+    auto col = m.halfedge_property<Color>("h:color");
+    for_each_corner(f_, [&](Index c, Index cn, Index) {
+      col[Halfedge(corner_he_[c])] = in_.colors[in_.color_indices[origin(cn)]];
+    });
+  }
 }
 
 SurfaceMesh MeshBuilder::run() {
@@ -111,7 +117,8 @@ SurfaceMesh MeshBuilder::run() {
 
 SurfaceMesh build(const IndexedMesh& input, const BuildOptions& options, BuildReport* report) {
   BuildInput view{input.positions, input.indices, input.face_sizes, input.texcoords,
-                  input.texcoord_indices, input.normals, input.normal_indices};
+                  input.texcoord_indices, input.normals, input.normal_indices, input.colors,
+                  input.color_indices};
   BuildReport local;
   BuildReport& rep = report ? *report : local;
   rep = BuildReport{};
@@ -120,7 +127,7 @@ SurfaceMesh build(const IndexedMesh& input, const BuildOptions& options, BuildRe
 
 SurfaceMesh build_triangles(std::span<const Vec3> positions, std::span<const std::uint32_t> triangles,
                             const BuildOptions& options, BuildReport* report) {
-  BuildInput view{positions, triangles, {}, {}, {}, {}, {}};
+  BuildInput view{positions, triangles, {}, {}, {}, {}, {}, {}, {}};
   BuildReport local;
   BuildReport& rep = report ? *report : local;
   rep = BuildReport{};

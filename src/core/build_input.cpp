@@ -71,6 +71,12 @@ void MeshBuilder::check_input() const {
   };
   check_pool(in_.texcoord_indices, in_.texcoords.size(), "texcoord");
   check_pool(in_.normal_indices, in_.normals.size(), "normal");
+  check_pool(in_.color_indices, in_.colors.size(), "color");
+  for (std::size_t i = 0; i < in_.colors.size(); ++i) {
+    const Color& k = in_.colors[i];
+    if (!std::isfinite(k.r) || !std::isfinite(k.g) || !std::isfinite(k.b) || !std::isfinite(k.a))
+      throw InvalidInputError("color " + std::to_string(i) + " has a non-finite component");
+  }
 }
 
 void MeshBuilder::weld() {

@@ -157,6 +157,8 @@ struct BuildInput {
   std::span<const Index> texcoord_indices;
   std::span<const Vec3> normals;
   std::span<const Index> normal_indices;
+  std::span<const Color> colors;
+  std::span<const Index> color_indices;
   std::size_t face_count() const { return face_sizes.empty() ? indices.size() / 3 : face_sizes.size(); }
 };
 

@@ -41,7 +41,9 @@ IndexedMesh to_indexed(const SurfaceMesh& mesh, const ExportOptions& opt, std::v
   const auto uv = opt.corner_attributes ? mesh.get_halfedge_property<Vec2>("h:texcoord") : HalfedgeProperty<Vec2>();
   const auto nrm = opt.corner_attributes ? mesh.get_halfedge_property<Vec3>("h:normal") : HalfedgeProperty<Vec3>();
   Pool<Vec2> uv_pool(out.texcoords);
+  const auto col = opt.corner_attributes ? mesh.get_halfedge_property<Color>("h:color") : HalfedgeProperty<Color>();
   Pool<Vec3> nrm_pool(out.normals);
+  Pool<Color> col_pool(out.colors);
 
   const bool polygons = opt.triangulation == Triangulation::none && !mesh.is_triangle_mesh();
   out.indices.reserve(3 * mesh.n_faces());
@@ -53,6 +55,7 @@ IndexedMesh to_indexed(const SurfaceMesh& mesh, const ExportOptions& opt, std::v
     out.indices.push_back(vmap[mesh.to_vertex(h).idx()]);
     if (uv) out.texcoord_indices.push_back(uv_pool.add(uv[h]));
     if (nrm) out.normal_indices.push_back(nrm_pool.add(nrm[h]));
+    if (col) out.color_indices.push_back(col_pool.add(col[h]));
   };
 
   for (Face f : mesh.faces()) {

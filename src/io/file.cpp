@@ -253,6 +253,7 @@ void check_writable(const IndexedMesh& mesh) {
   check(mesh.indices, mesh.positions.size(), "vertex", false);
   check(mesh.texcoord_indices, mesh.texcoords.size(), "texture coordinate", true);
   check(mesh.normal_indices, mesh.normals.size(), "normal", true);
+  check(mesh.color_indices, mesh.colors.size(), "color", true);
 }
 
 }  // namespace detail

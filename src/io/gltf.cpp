@@ -110,6 +110,7 @@ struct Primitive {
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;    // empty when absent
   std::vector<Vec2> texcoords;  // empty when absent
+  std::vector<Color> colors;    // empty when absent
   std::vector<std::uint32_t> triangles;
 };
 
@@ -352,15 +353,20 @@ class Reader {
   }
 
   // An attribute's accessor, checked against what glTF allows for it.
+  // `alt_components`, when not 0, is a second component count allowed (COLOR_0: VEC3 or VEC4);
+  // `found`, when given, receives the accessor's count.
   std::vector<double> attribute(const tg::Primitive& prim, const char* semantic, int components,
-                                bool integers, const std::string& where) const {
+                                bool integers, const std::string& where, int alt_components = 0,
+                                int* found = nullptr) const {
     const int index = prim.attributes.at(semantic);
     int n = 0;
     std::vector<double> values = decode(index, where + " " + semantic, &n);
     const tg::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
     const std::string at = where + " " + semantic + ": accessor " + std::to_string(index) + ": ";
-    if (n != components)
-      fail(at + "has " + std::to_string(n) + " components, expected " + std::to_string(components));
+    if (n != components && (alt_components == 0 || n != alt_components))
+      fail(at + "has " + std::to_string(n) + " components, expected " + std::to_string(components) +
+           (alt_components ? " or " + std::to_string(alt_components) : std::string()));
+    if (found) *found = n;
     const bool is_float = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
     const bool is_unorm = a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
                                            a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
@@ -418,6 +424,17 @@ class Reader {
       // glTF's texture origin is the top left corner, hedge's (OBJ's) the bottom left one.
       for (std::size_t i = 0; i < vertices; ++i)
         out.texcoords[i] = {static_cast<float>(uv[2 * i]), 1.0f - static_cast<float>(uv[2 * i + 1])};
+    }
+    if (prim.attributes.count("COLOR_0")) {
+      int n = 0;
+      const std::vector<double> col = attribute(prim, "COLOR_0", 4, true, where, 3, &n);
+      const auto k = static_cast<std::size_t>(n);
+      same_count("COLOR_0", col.size() / k);
+      out.colors.resize(vertices);
+      // RGB colours are opaque.
+      for (std::size_t i = 0; i < vertices; ++i)
+        out.colors[i] = {static_cast<float>(col[k * i]), static_cast<float>(col[k * i + 1]),
+                         static_cast<float>(col[k * i + 2]), k == 4 ? static_cast<float>(col[k * i + 3]) : 1.0f};
     }
 
     // The primitive's vertex sequence, then its triangles.
@@ -505,11 +522,12 @@ class Reader {
 
   IndexedMesh assemble() {
     IndexedMesh mesh;
-    bool normals = !primitives_.empty(), texcoords = !primitives_.empty();
+    bool normals = !primitives_.empty(), texcoords = !primitives_.empty(), colors = !primitives_.empty();
     std::size_t vertices = 0, corners = 0;
     for (const Primitive& p : primitives_) {
       normals = normals && !p.normals.empty();
       texcoords = texcoords && !p.texcoords.empty();
+      colors = colors && !p.colors.empty();
       vertices += p.positions.size();
       corners += p.triangles.size();
     }
@@ -521,11 +539,13 @@ class Reader {
       mesh.positions.insert(mesh.positions.end(), p.positions.begin(), p.positions.end());
       if (normals) mesh.normals.insert(mesh.normals.end(), p.normals.begin(), p.normals.end());
       if (texcoords) mesh.texcoords.insert(mesh.texcoords.end(), p.texcoords.begin(), p.texcoords.end());
+      if (colors) mesh.colors.insert(mesh.colors.end(), p.colors.begin(), p.colors.end());
       for (const std::uint32_t i : p.triangles) mesh.indices.push_back(base + i);
     }
     // glTF attributes are per vertex: the corner index is the vertex index.
     if (normals) mesh.normal_indices = mesh.indices;
     if (texcoords) mesh.texcoord_indices = mesh.indices;
+    if (colors) mesh.color_indices = mesh.indices;
     mesh.warnings = std::move(warnings_);
     return mesh;
   }
@@ -541,7 +561,7 @@ class Reader {
 // --- writing -------------------------------------------------------------------------------------
 
 struct CornerKey {
-  std::uint32_t v, t, n;
+  std::uint32_t v, t, n, c;
   friend bool operator==(const CornerKey&, const CornerKey&) = default;
 };
 
@@ -550,6 +570,7 @@ struct CornerKeyHash {
     std::uint64_t h = k.v * 0x9E3779B97F4A7C15ull;
     h ^= (k.t + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2));
     h ^= (k.n * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2));
+    h ^= (k.c * 0x165667B19E3779F9ull + (h << 6) + (h >> 2));
     return static_cast<std::size_t>(h ^ (h >> 29));
   }
 };
@@ -564,6 +585,7 @@ std::string write_model(const IndexedMesh& mesh, bool binary) {
   detail::check_writable(mesh);
   const bool has_t = !mesh.texcoord_indices.empty();
   const bool has_n = !mesh.normal_indices.empty();
+  const bool has_c = !mesh.color_indices.empty();
 
   // Triangles, polygons fanned from their first corner, as corner numbers into mesh.indices.
   std::vector<std::size_t> corners;
@@ -572,21 +594,21 @@ std::string write_model(const IndexedMesh& mesh, bool binary) {
     for (std::size_t k = 1; k + 1 < n; ++k) corners.insert(corners.end(), {first, first + k, first + k + 1});
   });
 
-  // glTF vertices: one per distinct (position, texcoord, normal) of a corner. Vertex v of the mesh
+  // glTF vertices: one per distinct (position, texcoord, normal, colour) of a corner. Vertex v of the mesh
   // keeps number v with the attributes of its first corner, so positions come back in their order;
   // corners that differ from it (seams, hard edges) get vertices after the mesh's own.
   const std::size_t nv = mesh.positions.size();
   // A vertex no corner uses keeps its position with out-of-range attribute indices: zeros.
   constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
   std::vector<CornerKey> keys(nv);
-  for (std::size_t v = 0; v < nv; ++v) keys[v] = {static_cast<std::uint32_t>(v), kNone, kNone};
+  for (std::size_t v = 0; v < nv; ++v) keys[v] = {static_cast<std::uint32_t>(v), kNone, kNone, kNone};
   std::vector<char> keyed(nv, 0);
   std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> extra;
   std::vector<std::uint32_t> out_indices;
   out_indices.reserve(corners.size());
   for (const std::size_t c : corners) {
     const CornerKey key{mesh.indices[c], has_t ? mesh.texcoord_indices[c] : 0,
-                        has_n ? mesh.normal_indices[c] : 0};
+                        has_n ? mesh.normal_indices[c] : 0, has_c ? mesh.color_indices[c] : 0};
     if (!keyed[key.v]) {
       keyed[key.v] = 1;
       keys[key.v] = key;
@@ -677,6 +699,18 @@ std::string write_model(const IndexedMesh& mesh, bool binary) {
     }
     prim.attributes["TEXCOORD_0"] = add_accessor(add_view(begin, TINYGLTF_TARGET_ARRAY_BUFFER),
                                                  TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, count);
+  }
+  if (has_c) {
+    begin = bytes.size();
+    for (const CornerKey& k : keys) {
+      const Color c = k.c < mesh.colors.size() ? mesh.colors[k.c] : Color{0, 0, 0, 0};
+      append_pod(bytes, c.r);
+      append_pod(bytes, c.g);
+      append_pod(bytes, c.b);
+      append_pod(bytes, c.a);
+    }
+    prim.attributes["COLOR_0"] = add_accessor(add_view(begin, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                              TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, count);
   }
 
   // 16-bit indices when they fit; the largest value of a type is reserved (primitive restart).

@@ -60,6 +60,31 @@ TEST(Build, CornerAttributeIndicesAreInputErrors) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+TEST(Build, ColourIndicesAndNonFiniteColoursAreInputErrors) {
+  IndexedMesh in = tetrahedron();
+  in.colors = {{1, 0, 0, 1}, {0, 1, 0, 1}};
+  in.color_indices.assign(in.indices.size(), 0);
+  in.color_indices[7] = 2;  // past the end of the pool
+  try {
+    build(in);
+    FAIL() << "expected InvalidInputError";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("corner 7 refers to color 2"), std::string::npos) << e.what();
+  }
+  in.color_indices[7] = 1;
+  in.colors[1].a = std::numeric_limits<float>::infinity();
+  try {
+    build(in, repair());
+    FAIL() << "expected InvalidInputError";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("color 1 has a non-finite component"), std::string::npos) << e.what();
+  }
+  in.colors[1].a = 1;
+  SurfaceMesh m = build(in);
+  EXPECT_TRUE(m.get_halfedge_property<Color>("h:color"));
+  EXPECT_TRUE(m.validate().empty());
+}
+
 TEST(Build, RepairDropsOnlyDegenerateFaces) {
   IndexedMesh in = test::grid(2, false);
   in.indices.insert(in.indices.end(), {0, 1, 0});           // repeated vertex: dropped

@@ -106,5 +106,30 @@ TEST(Export, CornerAttributesAreDeduplicated) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+TEST(Export, ColoursGoThroughBuildAndExportPerCorner) {
+  // Each side of the cube its own colour: every vertex has three, one per side around it.
+  IndexedMesh in = test::cube();
+  ASSERT_EQ(in.face_sizes.size(), 6u);
+  for (std::size_t f = 0; f < 6; ++f)
+    in.colors.push_back({0.125f * float(f), 1.0f - 0.1f * float(f), 0.5f, f % 2 ? 0.25f : 1.0f});
+  for (std::size_t f = 0; f < 6; ++f)
+    for (std::uint32_t k = 0; k < in.face_sizes[f]; ++k) in.color_indices.push_back(static_cast<Index>(f));
+  SurfaceMesh m = build(in);
+  const auto col = m.get_halfedge_property<Color>("h:color");
+  ASSERT_TRUE(col);
+  for (Face f : m.faces())
+    for (Halfedge h : m.halfedges(f)) EXPECT_EQ(col[h], in.colors[f.idx()]);
+  const IndexedMesh out = to_indexed(m);
+  EXPECT_EQ(out.colors.size(), 6u);  // deduplicated
+  ASSERT_EQ(out.color_indices.size(), in.indices.size());
+  EXPECT_EQ(out.indices, in.indices);
+  for (std::size_t c = 0; c < in.indices.size(); ++c)
+    EXPECT_EQ(out.colors[out.color_indices[c]], in.colors[in.color_indices[c]]) << c;
+  ExportOptions o;
+  o.corner_attributes = false;
+  EXPECT_TRUE(to_indexed(m, o).color_indices.empty());
+  EXPECT_TRUE(m.validate().empty());
+}
+
 }  // namespace
 }  // namespace hedge

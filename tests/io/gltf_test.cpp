@@ -140,6 +140,33 @@ TEST(GltfRead, TheCommittedGlbHoldsTheSameQuads) {
   EXPECT_EQ(binary.normals.size(), text.normals.size());
 }
 
+TEST(GltfRead, NormalizedByteRgbColoursBecomeOpaqueFloats) {
+  Triangle t;
+  // COLOR_0 at byte 44: one u8 RGB colour per vertex, each padded to 4 bytes as glTF asks of
+  // vertex attributes.
+  const unsigned char rgb[3][3] = {{0, 128, 255}, {255, 0, 51}, {10, 20, 30}};
+  for (const auto& c : rgb) t.buffer.insert(t.buffer.end(), {c[0], c[1], c[2], 0});
+  t.doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 44}, {"byteLength", 12}, {"byteStride", 4}});
+  t.doc["accessors"].push_back(
+      {{"bufferView", 2}, {"componentType", 5121}, {"normalized", true}, {"count", 3}, {"type", "VEC3"}});
+  t.doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 2;
+  const IndexedMesh m = read_gltf(t.text(), "m.gltf");
+  ASSERT_EQ(m.colors.size(), 3u);
+  EXPECT_EQ(m.color_indices, m.indices);
+  for (std::size_t v = 0; v < 3; ++v) {
+    EXPECT_FLOAT_EQ(m.colors[v].r, rgb[v][0] / 255.0f) << v;
+    EXPECT_FLOAT_EQ(m.colors[v].g, rgb[v][1] / 255.0f) << v;
+    EXPECT_FLOAT_EQ(m.colors[v].b, rgb[v][2] / 255.0f) << v;
+    EXPECT_EQ(m.colors[v].a, 1.0f) << v;
+  }
+  EXPECT_EQ(m.colors[0].r, 0.0f);
+  EXPECT_EQ(m.colors[1].r, 1.0f);
+  // Not normalized, a byte colour is refused.
+  t.doc["accessors"][2]["normalized"] = false;
+  expect_error(t.text(),
+               "COLOR_0: accessor 2: componentType 5121 is not FLOAT or a normalized unsigned byte or short");
+}
+
 TEST(GltfRead, NodeTransformsAreAppliedAndAMirrorKeepsTheOrientation) {
   Triangle t;
   t.doc["nodes"] = json::parse(R"([{"children": [1], "translation": [10, 0, 0]},
@@ -293,6 +320,12 @@ TEST(GltfRead, MalformedFilesSayWhatAndWhere) {
         "TEXCOORD_0: accessor 2: componentType 5121 is not FLOAT or a normalized unsigned byte or short");
   }
   {
+    Triangle t;  // colours are RGB or RGBA
+    t.doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 2;
+    t.doc["accessors"].push_back({{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}});
+    expect_error(t.text(), "COLOR_0: accessor 2: has 2 components, expected 4 or 3");
+  }
+  {
     Triangle t;
     t.doc["meshes"][0]["primitives"][0]["mode"] = 9;
     expect_error(t.text(), "mode 9 is not a glTF mode");
@@ -389,6 +422,43 @@ TEST(GltfWrite, HardEdgesSplitVerticesAndComeBackAsCornerNormals) {
   expect_same_corners(cube, to_indexed(mesh));
 }
 
+TEST(GltfWrite, ColoursSurviveAGlbRoundTripPerCorner) {
+  // A cube with a colour per side and translucent corners: three colours at every vertex.
+  IndexedMesh cube;
+  for (int i = 0; i < 8; ++i) cube.positions.push_back({float(i & 1), float(i >> 1 & 1), float(i >> 2 & 1)});
+  cube.indices = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
+                  2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
+  for (std::uint32_t s = 0; s < 6; ++s)
+    cube.colors.push_back({0.1f * float(s), 0.3f, 1.0f / 3.0f, s % 2 ? 0.7f : 1.0f});
+  for (std::uint32_t t = 0; t < 12; ++t) cube.color_indices.insert(cube.color_indices.end(), {t / 2, t / 2, t / 2});
+  const SurfaceMesh mesh = build(cube);
+  ASSERT_TRUE(mesh.get_halfedge_property<Color>("h:color"));
+
+  const fs::path dir = fs::temp_directory_path() / ("hedge_gltf_colours_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string path = (dir / "cube.glb").string();
+  write_mesh(mesh, path);
+  const IndexedMesh file = read_indexed_file(path);
+  EXPECT_EQ(file.positions.size(), 24u);  // split where the colours differ: 8 vertices x 3 sides
+  const SurfaceMesh back = read_mesh(path);
+  fs::remove_all(dir);
+  EXPECT_EQ(back.n_vertices(), 8u);
+  EXPECT_EQ(back.n_faces(), 12u);
+  EXPECT_TRUE(back.validate().empty());
+  const IndexedMesh a = to_indexed(mesh), b = to_indexed(back);
+  ASSERT_EQ(a.indices.size(), b.indices.size());
+  ASSERT_EQ(b.color_indices.size(), b.indices.size());
+  for (std::size_t c = 0; c < a.indices.size(); ++c) {
+    EXPECT_TRUE(same_bits(a.positions[a.indices[c]], b.positions[b.indices[c]])) << c;
+    EXPECT_EQ(b.colors[b.color_indices[c]], a.colors[a.color_indices[c]]) << c;  // float: exact
+  }
+  // Written as float RGBA.
+  const json doc = json::parse(write_gltf(cube));
+  const json& col = doc["accessors"][doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"].get<int>()];
+  EXPECT_EQ(col["componentType"], 5126);
+  EXPECT_EQ(col["type"], "VEC4");
+}
+
 TEST(GltfWrite, TheDocumentHasWhatTheSpecificationRequires) {
   IndexedMesh quad;
   quad.positions = {{-1, 0, 2}, {1, 0, 2}, {1, 3, 2}, {-1, 3, 5}};
@@ -406,6 +476,7 @@ TEST(GltfWrite, TheDocumentHasWhatTheSpecificationRequires) {
   EXPECT_EQ(pos["count"], 4);
   EXPECT_TRUE(prim["attributes"].contains("NORMAL"));
   EXPECT_FALSE(prim["attributes"].contains("TEXCOORD_0"));
+  EXPECT_FALSE(prim["attributes"].contains("COLOR_0"));
   const json& idx = doc["accessors"][prim["indices"].get<int>()];
   EXPECT_EQ(idx["componentType"], 5123);  // u16
   EXPECT_EQ(idx["count"], 6);             // the quad fanned into two triangles

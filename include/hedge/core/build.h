@@ -32,7 +32,8 @@ struct BuildOptions {
   Weld weld = Weld::none;
   //! Relative to the bounding-box diagonal; used with Weld::epsilon.
   double weld_epsilon = 1e-6;
-  //! Carry the input's texcoords and normals as corner properties "h:texcoord" and "h:normal".
+  //! Carry the input's texcoords, normals and colours as corner properties "h:texcoord" (Vec2),
+  //! "h:normal" (Vec3) and "h:color" (Color).
   bool corner_attributes = true;
 };
 
@@ -67,7 +68,8 @@ struct BuildReport {
 };
 
 //! Builds a half-edge mesh from an indexed mesh in O(n) (bucketed twin matching, no hashing).
-//! \throw InvalidInputError on an index out of range, a non-finite position, or a size mismatch.
+//! \throw InvalidInputError on an index out of range, a non-finite position or colour, or a size
+//!        mismatch.
 //! \throw TopologyError under TopologyPolicy::strict when the input is not an oriented 2-manifold
 //!        (with boundary) or has degenerate faces.
 SurfaceMesh build(const IndexedMesh& input, const BuildOptions& options = {}, BuildReport* report = nullptr);

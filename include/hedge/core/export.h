@@ -22,15 +22,16 @@ struct ExportOptions {
   Triangulation triangulation = Triangulation::none;
   //! cw reverses every face: Unity and Direct3D conventions.
   Winding winding = Winding::ccw;
-  //! Write "h:texcoord" / "h:normal" corner properties into the attribute pools when present.
+  //! Write "h:texcoord" / "h:normal" / "h:color" corner properties into the attribute pools when
+  //! present.
   bool corner_attributes = true;
 };
 
 //! Exports live faces to an indexed mesh. Vertex order follows the mesh, deleted vertices skipped.
 //! Faces follow the mesh's face order and each starts at its first corner (the one halfedge(f)
 //! enters), so clean input built without welding comes back with the same indices. face_sizes stays
-//! empty when every output face is a triangle. "h:texcoord" (Vec2) and "h:normal" (Vec3) corner properties
-//! become pools of their distinct values with one index per corner; a property of that name with
+//! empty when every output face is a triangle. "h:texcoord" (Vec2), "h:normal" (Vec3) and "h:color"
+//! (Color) corner properties become pools of their distinct values with one index per corner; a property of that name with
 //! another type is treated as absent. With Winding::cw each face keeps its first corner and lists
 //! the others in reverse.
 //! \param vertex_map if given, receives mesh vertex -> output vertex (kInvalidIndex for deleted).

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "hedge/core/color.h"
 #include "hedge/core/vec.h"
 #include "hedge/error.h"
 
@@ -28,8 +29,9 @@ struct ReadWarning {
 //!  - positions: #V positions.
 //!  - indices: the corners of all faces, face after face, each a vertex index into positions.
 //!  - face_sizes: #F corner counts; empty means every face is a triangle (indices.size() % 3 == 0).
-//!  - texcoords / normals: optional attribute pools; texcoord_indices / normal_indices give one pool
-//!    index per corner (same length as indices), as OBJ's v/vt/vn does. Empty when absent.
+//!  - texcoords / normals / colors: optional attribute pools; texcoord_indices / normal_indices /
+//!    color_indices give one pool index per corner (same length as indices), as OBJ's v/vt/vn does.
+//!    Empty when absent. Only glTF reads and writes colours; the other formats ignore them.
 //!    A per-vertex attribute (PLY normals) is expressed with the corner index equal to the vertex index.
 struct IndexedMesh {
   std::vector<Vec3> positions;
@@ -40,6 +42,8 @@ struct IndexedMesh {
   std::vector<std::uint32_t> texcoord_indices;
   std::vector<Vec3> normals;
   std::vector<std::uint32_t> normal_indices;
+  std::vector<Color> colors;
+  std::vector<std::uint32_t> color_indices;
 
   //! What the reader that made this mesh found suspect but kept (empty for meshes not read from a
   //! file). read_mesh() refuses them under the strict policy and reports them otherwise.

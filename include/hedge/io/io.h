@@ -69,11 +69,12 @@ IndexedMesh read_stl(std::string_view data, const std::string& name = {});
 //!    gives every mesh once, untransformed. All primitives of all placed meshes are merged into one
 //!    mesh, in that order, vertices kept apart (default_build_options() welds equal positions, so
 //!    seams become corner attributes); which primitive a face came from is not kept.
-//!  - Attributes: POSITION (float VEC3, required), NORMAL (float VEC3) and TEXCOORD_0 (float or
-//!    normalized unsigned byte/short VEC2) as per-vertex attributes, kept only when every merged
+//!  - Attributes: POSITION (float VEC3, required), NORMAL (float VEC3), TEXCOORD_0 (float or
+//!    normalized unsigned byte/short VEC2) and COLOR_0 (float or normalized unsigned byte/short,
+//!    VEC3 read with alpha 1, or VEC4) as per-vertex attributes, kept only when every merged
 //!    primitive has them; v is flipped (v' = 1 - v) from glTF's top-left texture origin to hedge's
-//!    bottom-left one (OBJ's). COLOR_n, TEXCOORD_1.., tangents, skins, morph targets, materials and
-//!    images are not read (IndexedMesh has no colours; images are never decoded).
+//!    bottom-left one (OBJ's). COLOR_1.., TEXCOORD_1.., tangents, skins, morph targets, materials
+//!    and images are not read (images are never decoded).
 //!  - Modes TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN (strip and fan triangles with a repeated
 //!    index dropped). A POINTS or LINES primitive is skipped with a ReadWarning naming it.
 //!  - Indices u8, u16 or u32, or none (vertices in order). Sparse accessors and byteStride are
@@ -106,10 +107,10 @@ std::string write_ply(const IndexedMesh& mesh, const WriteOptions& options = {})
 std::string write_stl(const IndexedMesh& mesh, const WriteOptions& options = {});
 //! glTF 2.0 JSON with the one buffer embedded as a base64 data URI (one self-contained file), or
 //! the binary .glb container. One mesh of one TRIANGLES primitive on one node of one scene:
-//! POSITION (float, with the min/max the specification requires), NORMAL and TEXCOORD_0 when the
-//! mesh has them (v flipped as read_gltf() says), u16 indices when the vertex count allows, else
-//! u32. Polygons are fanned from their first corner. A mesh vertex splits into one glTF vertex per
-//! distinct (texcoord, normal) of its corners (seams, hard edges); vertex v keeps number v with
+//! POSITION (float, with the min/max the specification requires), NORMAL, TEXCOORD_0 and COLOR_0
+//! (float VEC4) when the mesh has them (v flipped as read_gltf() says), u16 indices when the vertex
+//! count allows, else u32. Polygons are fanned from their first corner. A mesh vertex splits into
+//! one glTF vertex per distinct (texcoord, normal, colour) of its corners (seams, hard edges); vertex v keeps number v with
 //! its first corner's attributes and the split copies follow, so positions read back in order. A
 //! vertex no face uses is written with zero attributes. A mesh without faces gives a file without scenes or meshes.
 std::string write_gltf(const IndexedMesh& mesh, const WriteOptions& options = {});
