@@ -66,23 +66,21 @@ SurfaceMesh exploded_view(const SurfaceMesh& rest, const std::vector<Shard>& sha
                           double spread) {
   ExportOptions plain;
   plain.corner_attributes = false;
+  // Every face's size spelled out, so triangles and polygons of the pieces can be mixed.
+  auto sizes = [](const IndexedMesh& m) {
+    return m.face_sizes.empty() ? std::vector<std::uint32_t>(m.indices.size() / 3, 3) : m.face_sizes;
+  };
   IndexedMesh all = to_indexed(rest, plain);
+  all.face_sizes = sizes(all);
   for (const Shard& s : shards) {
-    IndexedMesh piece = to_indexed(s.mesh, plain);
+    const IndexedMesh piece = to_indexed(s.mesh, plain);
     const Vec3 push{float(spread * (s.centroid.x - impact.x)), float(spread * (s.centroid.y - impact.y)),
                     float(spread * (s.centroid.z - impact.z))};
     const auto base = static_cast<std::uint32_t>(all.positions.size());
     for (const Vec3& p : piece.positions) all.positions.push_back({p.x + push.x, p.y + push.y, p.z + push.z});
     for (std::uint32_t i : piece.indices) all.indices.push_back(base + i);
-    if (!piece.face_sizes.empty() || !all.face_sizes.empty()) {
-      // Mixed polygon sizes: spell every face's size out.
-      if (all.face_sizes.empty() && !all.indices.empty())
-        all.face_sizes.assign((all.indices.size() - piece.indices.size()) / 3, 3);
-      if (piece.face_sizes.empty())
-        all.face_sizes.insert(all.face_sizes.end(), piece.indices.size() / 3, 3);
-      else
-        all.face_sizes.insert(all.face_sizes.end(), piece.face_sizes.begin(), piece.face_sizes.end());
-    }
+    const std::vector<std::uint32_t> piece_sizes = sizes(piece);
+    all.face_sizes.insert(all.face_sizes.end(), piece_sizes.begin(), piece_sizes.end());
   }
   BuildOptions exact;
   exact.weld = Weld::none;
