@@ -660,6 +660,23 @@ HEDGE_API hedge_status hedge_mesh_cache_miss_ratio(const hedge_mesh* mesh, uint3
 /* Files (hedge/io/io.h): OBJ, OFF, PLY, STL, glTF (.gltf, .glb), chosen by the extension       */
 /* ============================================================================================ */
 
+/** What a reader may do for a file from a stranger (hedge::ReadOptions). Layout (16 bytes):
+ *  external_buffers at 0, reserved at 4, max_memory at 8. */
+typedef struct hedge_read_options {
+  /** glTF buffers in separate files: 1 reads them, only from the .gltf's folder and below (after
+   *  `..` and symbolic links are resolved) and only regular files of the declared byteLength; 0
+   *  refuses any such buffer (HEDGE_ERROR_IO). */
+  int32_t external_buffers;
+  int32_t reserved; /**< 0 */
+  /** The most bytes a glTF reader may allocate for what the file describes, checked before it
+   *  allocates; 0 for the default: 64 times the input's size plus 64 MiB. */
+  uint64_t max_memory;
+} hedge_read_options;
+
+/** Fills *out_options with the defaults for reading a file by its path: external_buffers 1,
+ *  max_memory 0 (the default budget). Bytes read from memory default to external_buffers 0. */
+HEDGE_API hedge_status hedge_read_options_default(hedge_read_options* out_options);
+
 /** Reads and builds a mesh.
  *  \param options NULL for the format's defaults (repair policy; exact welding for STL and glTF).
  *  \param out_report optional (NULL).
@@ -667,6 +684,22 @@ HEDGE_API hedge_status hedge_mesh_cache_miss_ratio(const hedge_mesh* mesh, uint3
  *          is "path:line: what was expected" (text) or "path (byte N): ..." (binary). */
 HEDGE_API hedge_status hedge_mesh_read(const char* path, const hedge_build_options* options,
                                        hedge_build_report* out_report, hedge_mesh** out_mesh);
+/** hedge_mesh_read() with read options: read_options NULL for hedge_read_options_default(). A file
+ *  over the memory budget or with a refused external buffer: HEDGE_ERROR_IO, the message naming
+ *  the limit (and how to raise it) or the buffer. */
+HEDGE_API hedge_status hedge_mesh_read_with(const char* path, const hedge_build_options* options,
+                                            const hedge_read_options* read_options, hedge_build_report* out_report,
+                                            hedge_mesh** out_mesh);
+/** Reads and builds a mesh from a file's bytes in memory (an upload, an asset bundle).
+ *  \param name the file's name: its extension chooses the format (.obj, .off, .ply, .stl, .gltf,
+ *         .glb), and messages start with it; with external buffers on, they are looked up in its
+ *         folder.
+ *  \param read_options NULL for external_buffers 0 and the default memory budget.
+ *  Otherwise as hedge_mesh_read_with(). */
+HEDGE_API hedge_status hedge_mesh_read_memory(const void* bytes, uint64_t size, const char* name,
+                                              const hedge_build_options* options,
+                                              const hedge_read_options* read_options,
+                                              hedge_build_report* out_report, hedge_mesh** out_mesh);
 /** Writes the live faces to a file atomically (a failed write leaves the target as it was).
  *  \param binary PLY and STL: 1 binary (little endian), 0 ASCII; ignored for OBJ, OFF and glTF
  *         (.glb is binary, .gltf JSON).
@@ -738,27 +771,31 @@ HEDGE_API hedge_status hedge_mesh_bvh_release(hedge_mesh* mesh);
  *  \param origin    3 floats, finite.
  *  \param direction 3 floats, finite and not zero; need not be unit length (t is in its units).
  *  \param t_max     >= 0; INFINITY for an unbounded ray.
- *  eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite origin or direction, a zero direction, a
+ *  
+eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite origin or direction, a zero direction, a
  *          NaN or negative t_max. */
 HEDGE_API hedge_status hedge_mesh_raycast(hedge_mesh* mesh, const float* origin, const float* direction,
                                           float t_max, hedge_surface_hit* out_hit, int32_t* out_found);
 /** The nearest point of the surface to a point, within max_distance of it.
  *  \param point        3 floats, finite.
  *  \param max_distance >= 0; INFINITY for no limit (a limit also makes the search cheaper).
- *  eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite point or a NaN or negative max_distance. */
+ *  
+eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite point or a NaN or negative max_distance. */
 HEDGE_API hedge_status hedge_mesh_closest_point(hedge_mesh* mesh, const float* point, float max_distance,
                                                 hedge_surface_hit* out_hit, int32_t* out_found);
 /** The face a point on the surface lies on: the nearest face, if the point is within tolerance of it
  *  (an impact point reported by a physics engine, a point on a plate in any orientation).
  *  \param tolerance >= 0 and finite, in the mesh's units.
- *  eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite point or a bad tolerance. */
+ *  
+eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite point or a bad tolerance. */
 HEDGE_API hedge_status hedge_mesh_face_containing_point(hedge_mesh* mesh, const float* point, float tolerance,
                                                         hedge_surface_hit* out_hit, int32_t* out_found);
 /** 2D plates and height fields: the face whose projection onto a coordinate plane contains (u, v),
  *  boundary included; `point` is the point of that face that projects onto (u, v) (the dropped
  *  coordinate interpolated), `distance` 0. Faces seen edge-on contain nothing.
  *  \param plane HEDGE_PLANE_*: (u, v) are (x, y), (x, z) or (y, z).
- *  eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite u or v or an unknown plane. */
+ *  
+eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite u or v or an unknown plane. */
 HEDGE_API hedge_status hedge_mesh_face_containing_point_2d(hedge_mesh* mesh, float u, float v, int32_t plane,
                                                            hedge_surface_hit* out_hit, int32_t* out_found);
 

@@ -506,20 +506,70 @@ hedge_status hedge_mesh_copy_positions(const hedge_mesh* mesh, float* buffer, ui
 // Files
 // ---------------------------------------------------------------------------------------------
 
+namespace {
+
+ReadOptions to_read_options(const hedge_read_options* options, bool external_default) {
+  ReadOptions out;
+  out.external_buffers = external_default;
+  if (options == nullptr) return out;
+  out.external_buffers = need_bool(options->external_buffers, "read_options.external_buffers");
+  if (options->reserved != 0)
+    fail(HEDGE_ERROR_INVALID_ARGUMENT, "read_options.reserved is " + std::to_string(options->reserved) + ", not 0");
+  out.max_memory = options->max_memory;
+  return out;
+}
+
+// Builds what a reader gave, with the file's default build options unless the caller's.
+void build_read(const IndexedMesh& in, FileFormat format, const hedge_build_options* options,
+                hedge_build_report* out_report, hedge_mesh** out_mesh) {
+  const BuildOptions build_options = options != nullptr ? to_build_options(*options) : default_build_options(format);
+  if (!in.warnings.empty() && build_options.policy == TopologyPolicy::strict) throw in.warnings.front().error();
+  BuildReport report;
+  auto object = std::make_shared<MeshObject>();
+  object->mesh = build(in, build_options, &report);
+  if (out_report != nullptr) fill_report(report, out_report);
+  *out_mesh = register_mesh(std::move(object));
+}
+
+}  // namespace
+
+hedge_status hedge_read_options_default(hedge_read_options* out_options) {
+  return guard([&] {
+    need(out_options, "out_options");
+    *out_options = hedge_read_options{1, 0, 0};
+  });
+}
+
 hedge_status hedge_mesh_read(const char* path, const hedge_build_options* options,
                              hedge_build_report* out_report, hedge_mesh** out_mesh) {
+  return hedge_mesh_read_with(path, options, nullptr, out_report, out_mesh);
+}
+
+hedge_status hedge_mesh_read_with(const char* path, const hedge_build_options* options,
+                                  const hedge_read_options* read_options, hedge_build_report* out_report,
+                                  hedge_mesh** out_mesh) {
   return guard([&] {
     need(path, "path");
     need(out_mesh, "out_mesh");
-    BuildReport report;
-    BuildReport* want = out_report != nullptr ? &report : nullptr;
-    auto object = std::make_shared<MeshObject>();
-    if (options != nullptr)
-      object->mesh = read_mesh(path, to_build_options(*options), want);
-    else
-      object->mesh = read_mesh(path, want);
-    if (out_report != nullptr) fill_report(report, out_report);
-    *out_mesh = register_mesh(std::move(object));
+    const ReadOptions read = to_read_options(read_options, true);
+    const FileFormat format = format_from_path(path);
+    build_read(read_indexed_file(path, read), format, options, out_report, out_mesh);
+  });
+}
+
+hedge_status hedge_mesh_read_memory(const void* bytes, uint64_t size, const char* name,
+                                    const hedge_build_options* options, const hedge_read_options* read_options,
+                                    hedge_build_report* out_report, hedge_mesh** out_mesh) {
+  return guard([&] {
+    if (size > 0) need(static_cast<const char*>(bytes), "bytes");
+    need(name, "name");
+    need(out_mesh, "out_mesh");
+    if (size > std::numeric_limits<std::size_t>::max())
+      fail(HEDGE_ERROR_INVALID_ARGUMENT, "size " + std::to_string(size) + " does not fit in memory");
+    const ReadOptions read = to_read_options(read_options, false);
+    const FileFormat format = format_from_path(name);
+    const std::string_view data(static_cast<const char*>(bytes), static_cast<std::size_t>(size));
+    build_read(read_indexed(data, format, name, read), format, options, out_report, out_mesh);
   });
 }
 

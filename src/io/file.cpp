@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -65,7 +66,8 @@ FileFormat format_from_path(const std::string& path) {
   throw IoError(path, 0, -1, "unknown file extension (expected .obj, .off, .ply, .stl, .gltf or .glb)");
 }
 
-IndexedMesh read_indexed(std::string_view data, FileFormat format, const std::string& name) {
+IndexedMesh read_indexed(std::string_view data, FileFormat format, const std::string& name,
+                         const ReadOptions& options) {
   switch (format) {
     case FileFormat::obj:
       return read_obj(data, name);
@@ -77,7 +79,7 @@ IndexedMesh read_indexed(std::string_view data, FileFormat format, const std::st
       return read_stl(data, name);
     case FileFormat::gltf:
     case FileFormat::glb:
-      return read_gltf(data, name);
+      return read_gltf(data, name, options);
   }
   throw IoError(name, 0, -1, "unknown format");
 }
@@ -178,9 +180,23 @@ void write_file_atomic(const std::string& path, std::string_view bytes) {
   if (::rename(temp.c_str(), path.c_str()) != 0) fail("cannot replace the target", errno);
 }
 
+std::uint64_t read_budget(const ReadOptions& options, std::uint64_t input_bytes) {
+  if (options.max_memory != 0) return options.max_memory;
+  constexpr std::uint64_t kFactor = 64;
+  const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max();
+  return input_bytes > (limit - kDefaultReadMemoryFloor) / kFactor ? limit
+                                                                     : kFactor * input_bytes + kDefaultReadMemoryFloor;
+}
+
 IndexedMesh read_indexed_file(const std::string& path) {
+  ReadOptions options;
+  options.external_buffers = true;
+  return read_indexed_file(path, options);
+}
+
+IndexedMesh read_indexed_file(const std::string& path, const ReadOptions& options) {
   const FileFormat format = format_from_path(path);
-  return read_indexed(read_file(path), format, path);
+  return read_indexed(read_file(path), format, path, options);
 }
 
 void write_indexed_file(const IndexedMesh& mesh, const std::string& path, const WriteOptions& options) {
@@ -201,7 +217,14 @@ SurfaceMesh read_mesh(const std::string& path, BuildReport* report) {
 }
 
 SurfaceMesh read_mesh(const std::string& path, const BuildOptions& options, BuildReport* report) {
-  const IndexedMesh in = read_indexed_file(path);
+  ReadOptions read_options;
+  read_options.external_buffers = true;
+  return read_mesh(path, options, read_options, report);
+}
+
+SurfaceMesh read_mesh(const std::string& path, const BuildOptions& options, const ReadOptions& read_options,
+                      BuildReport* report) {
+  const IndexedMesh in = read_indexed_file(path, read_options);
   if (!in.warnings.empty() && options.policy == TopologyPolicy::strict) throw in.warnings.front().error();
   SurfaceMesh mesh = build(in, options, report);
   if (report)

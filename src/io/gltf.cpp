@@ -4,8 +4,7 @@
 // it leaves to its user is checked here: every index into the file's arrays, every accessor's byte
 // range against its buffer, component types per attribute, index ranges and non-finite values.
 
-#include <sys/stat.h>
-
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -22,8 +21,8 @@
 // tinygltf's implementation is compiled here, from Debian's header, under a namespace of hedge's
 // own, so that a program linking hedge's archive and another copy of tinygltf gets neither duplicate
 // nor interposed symbols. Images are not decoded (a mesh reader has no use for them, and a decoder
-// is attack surface for untrusted files), and file access goes through hedge's read_file(), only
-// for external buffers.
+// is attack surface for untrusted files), and the only files it may open are the external buffers
+// gltf_guard.h approved.
 #define tinygltf hedge_tinygltf
 #define TINYGLTF_IMPLEMENTATION
 #define TINYGLTF_NO_STB_IMAGE
@@ -33,6 +32,7 @@
 #include <tiny_gltf.h>
 #undef tinygltf
 
+#include "gltf_guard.h"
 #include "hedge/io/io.h"
 #include "parse_util.h"
 
@@ -57,25 +57,7 @@ Mat4 multiply(const Mat4& a, const Mat4& b) {
   return r;
 }
 
-// --- file access for external buffers ------------------------------------------------------------
-
-bool file_exists(const std::string& path, void*) {
-  struct stat st {};
-  return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
-}
-
-std::string expand_path(const std::string& path, void*) { return path; }
-
-bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
-  try {
-    const std::string bytes = read_file(path);
-    out->assign(bytes.begin(), bytes.end());
-    return true;
-  } catch (const IoError& e) {
-    if (err) *err += std::string(e.what()) + "\n";
-    return false;
-  }
-}
+// --- tinygltf's callbacks ---------------------------------------------------------------------
 
 bool refuse_write(std::string* err, const std::string& path, const std::vector<unsigned char>&, void*) {
   if (err) *err += "hedge does not write files through tinygltf: " + path + "\n";
@@ -88,16 +70,13 @@ bool skip_image(tg::Image*, const int, std::string*, std::string*, int, int, con
   return true;
 }
 
-std::string folder_of(const std::string& path) {
-  const std::size_t slash = path.find_last_of('/');
-  return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
-}
-
-// tinygltf's messages end in a newline and may hold several lines: one line for an IoError.
+// tinygltf's messages end in a newline and may hold several lines (and quote a whole uri): one
+// line of at most 300 characters for an IoError.
 std::string one_line(std::string s) {
   while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
   for (char& c : s)
     if (c == '\n' || c == '\r') c = ';';
+  if (s.size() > 300) s = s.substr(0, 300) + "...";
   return s;
 }
 
@@ -116,8 +95,10 @@ struct Primitive {
 
 class Reader {
  public:
-  Reader(const tg::Model& model, const std::string& name, std::size_t file_size)
-      : model_(model), name_(name), file_size_(file_size) {}
+  //! `spent`: the part of the read budget that parsing the JSON took already.
+  Reader(const tg::Model& model, const std::string& name, std::size_t file_size, std::uint64_t budget,
+         std::uint64_t spent)
+      : model_(model), name_(name), file_size_(file_size), budget_(budget), spent_(spent) {}
 
   IndexedMesh read() {
     // Data under a required extension (Draco, quantization...) cannot be read without it.
@@ -132,9 +113,10 @@ class Reader {
       for (const int node : model_.scenes[static_cast<std::size_t>(scene)].nodes)
         visit(node, seen, "scene " + std::to_string(scene));
     } else {
-      for (std::size_t m = 0; m < model_.meshes.size(); ++m)
-        add_mesh(static_cast<int>(m), kIdentity, "the file");
+      for (std::size_t m = 0; m < model_.meshes.size(); ++m) place(static_cast<int>(m), kIdentity, "the file");
     }
+    check_budget();
+    for (const Placement& p : placements_) add_mesh(p.mesh, p.world);
     return assemble();
   }
 
@@ -161,7 +143,7 @@ class Reader {
       seen[ni] = 1;
       const tg::Node& n = model_.nodes[ni];
       const Mat4 world = multiply(parent, local_matrix(n, node));
-      if (n.mesh != -1) add_mesh(n.mesh, world, "node " + std::to_string(node));
+      if (n.mesh != -1) place(n.mesh, world, "node " + std::to_string(node));
       stack.push_back({node, world, 0});
     };
     enter(root, kIdentity, from);
@@ -210,10 +192,68 @@ class Reader {
     return m;
   }
 
-  void add_mesh(int mesh, const Mat4& world, const std::string& from) {
+  // A mesh placed by a node (or by a file without scenes), read once the whole file's cost is known.
+  struct Placement {
+    int mesh;
+    Mat4 world;
+    std::string from;
+  };
+
+  void place(int mesh, const Mat4& world, const std::string& from) {
     if (mesh < 0 || mesh >= static_cast<int>(model_.meshes.size()))
       fail(from + ": mesh " + std::to_string(mesh) + " does not exist (the file has " +
            str(model_.meshes.size()) + ")");
+    placements_.push_back({mesh, world, from});
+  }
+
+  // What decoding and merging a primitive allocates at most, from its accessors' counts alone:
+  // decoding holds 8 bytes per component, the primitive and the merged mesh 4 each; a corner costs
+  // its index (decoded, in sequence, as a triangle corner) and one index per attribute.
+  double primitive_cost(const tg::Primitive& prim) const {
+    const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+    if (mode < TINYGLTF_MODE_TRIANGLES) return 0;
+    auto accessor_count = [&](int index, int* components) -> double {
+      if (index < 0 || index >= static_cast<int>(model_.accessors.size())) return 0;
+      const tg::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
+      const int n = tg::GetNumComponentsInType(static_cast<std::uint32_t>(a.type));
+      *components = n >= 1 && n <= 4 ? n : 4;
+      return static_cast<double>(a.count);
+    };
+    double cost = 0, vertices = 0;
+    int attributes = 0;
+    for (const auto& [semantic, index] : prim.attributes) {
+      if (semantic != "POSITION" && semantic != "NORMAL" && semantic != "TEXCOORD_0" && semantic != "COLOR_0")
+        continue;
+      int n = 0;
+      const double count = accessor_count(index, &n);
+      if (semantic == "POSITION") vertices = count;
+      cost += count * n * (8 + 2 * 4);
+      ++attributes;
+    }
+    double sequence = vertices;
+    if (prim.indices >= 0) {
+      int n = 0;
+      sequence = accessor_count(prim.indices, &n);
+      cost += sequence * (8 + 4);
+    }
+    const double corners = mode == TINYGLTF_MODE_TRIANGLES ? sequence : 3 * sequence;
+    return cost + corners * (4 + 4 + 4 * attributes);
+  }
+
+  // The one budget for everything the file makes, checked before any primitive is decoded.
+  void check_budget() const {
+    double cost = static_cast<double>(spent_);
+    for (const Placement& p : placements_) {
+      cost += sizeof(Placement);
+      for (const tg::Primitive& prim : model_.meshes[static_cast<std::size_t>(p.mesh)].primitives)
+        cost += sizeof(Primitive) + primitive_cost(prim);
+    }
+    if (cost > static_cast<double>(budget_))
+      throw IoError(name_, 0, -1,
+                    detail::over_budget("its JSON and the meshes its nodes place", cost, budget_));
+  }
+
+  void add_mesh(int mesh, const Mat4& world) {
     const tg::Mesh& m = model_.meshes[static_cast<std::size_t>(mesh)];
     for (std::size_t p = 0; p < m.primitives.size(); ++p)
       add_primitive(m.primitives[p], world, "mesh " + std::to_string(mesh) + " primitive " + str(p));
@@ -393,13 +433,6 @@ class Reader {
     Primitive out;
     const std::vector<double> pos = attribute(prim, "POSITION", 3, false, where);
     const std::size_t vertices = pos.size() / 3;
-    // Instancing places a mesh once per node: the total is bounded by what the file's size can
-    // justify, so that a small file cannot ask for unbounded memory.
-    placed_vertices_ += vertices;
-    const std::size_t budget = 64 * file_size_ + (std::size_t{1} << 20);
-    if (placed_vertices_ > budget)
-      fail(where + ": the nodes place more than " + str(budget) + " vertices in all, more than a file of " +
-           str(file_size_) + " bytes justifies");
     out.positions.resize(vertices);
     for (std::size_t i = 0; i < vertices; ++i)
       out.positions[i] = {static_cast<float>(pos[3 * i]), static_cast<float>(pos[3 * i + 1]),
@@ -553,9 +586,10 @@ class Reader {
   const tg::Model& model_;
   const std::string& name_;
   std::size_t file_size_;
+  std::uint64_t budget_, spent_;
+  std::vector<Placement> placements_;
   std::vector<Primitive> primitives_;
   std::vector<ReadWarning> warnings_;
-  std::size_t placed_vertices_ = 0;
 };
 
 // --- writing -------------------------------------------------------------------------------------
@@ -747,24 +781,30 @@ std::string write_model(const IndexedMesh& mesh, bool binary) {
 
 }  // namespace
 
-IndexedMesh read_gltf(std::string_view data, const std::string& name) {
-  tg::TinyGLTF loader;
-  loader.SetImageLoader(&skip_image, nullptr);
-  loader.SetFsCallbacks({&file_exists, &expand_path, &read_whole_file, &refuse_write, nullptr});
+IndexedMesh read_gltf(std::string_view data, const std::string& name, const ReadOptions& options) {
   if (data.size() > std::numeric_limits<std::uint32_t>::max())
     throw IoError(name, 0, -1, "file too large for glTF (4 GiB or more)");
+  // Nothing reaches tinygltf before the guard has scanned the JSON and approved the buffer files.
+  const detail::GltfScan scan = detail::scan_gltf(data, name);
+  detail::GltfBufferFiles files(scan, name, options);
+  const std::uint64_t budget = read_budget(options, data.size() + files.bytes());
+  if (static_cast<double>(scan.parse_cost) > static_cast<double>(budget))
+    throw IoError(name, 0, -1, detail::over_budget("its JSON", static_cast<double>(scan.parse_cost), budget));
+
+  tg::TinyGLTF loader;
+  loader.SetImageLoader(&skip_image, nullptr);
+  loader.SetFsCallbacks({&detail::GltfBufferFiles::exists, &detail::GltfBufferFiles::expand,
+                         &detail::GltfBufferFiles::read, &refuse_write, &files});
   tg::Model model;
   std::string err, warn;
   bool ok = false;
-  const bool glb = data.size() >= 4 && data.substr(0, 4) == "glTF";
   try {
-    if (glb)
-      ok = loader.LoadBinaryFromMemory(&model, &err, &warn,
-                                       reinterpret_cast<const unsigned char*>(data.data()),
-                                       static_cast<unsigned int>(data.size()), folder_of(name));
+    if (scan.binary)
+      ok = loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(data.data()),
+                                       static_cast<unsigned int>(data.size()), files.base_dir());
     else
-      ok = loader.LoadASCIIFromString(&model, &err, &warn, data.data(),
-                                      static_cast<unsigned int>(data.size()), folder_of(name));
+      ok = loader.LoadASCIIFromString(&model, &err, &warn, data.data(), static_cast<unsigned int>(data.size()),
+                                      files.base_dir());
   } catch (const std::bad_alloc&) {
     throw;
   } catch (const std::exception& e) {
@@ -773,10 +813,10 @@ IndexedMesh read_gltf(std::string_view data, const std::string& name) {
   if (!ok) {
     const std::string why = one_line(err.empty() ? warn : err);
     throw IoError(name, 0, -1,
-                  std::string(glb ? "malformed glTF binary: " : "malformed glTF: ") +
+                  std::string(scan.binary ? "malformed glTF binary: " : "malformed glTF: ") +
                       (why.empty() ? "rejected by the parser" : why));
   }
-  return Reader(model, name, data.size()).read();
+  return Reader(model, name, data.size(), budget, scan.parse_cost).read();
 }
 
 std::string write_gltf(const IndexedMesh& mesh, const WriteOptions&) { return write_model(mesh, false); }

@@ -16,61 +16,8 @@
 #include "hedge/core/operations.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "heap_hooks.h"
 #include "test_meshes.h"
-
-// Allocation failure injection for the strong-guarantee tests below: this test binary's global
-// operator new counts allocations and, while armed, throws std::bad_alloc at a chosen one (once,
-// then it disarms). Disarmed, it is malloc.
-namespace {
-std::atomic<bool> g_fail_armed{false};
-std::atomic<long> g_fail_countdown{0};
-std::atomic<long> g_allocations{0};
-
-void* test_allocate(std::size_t n, std::size_t align) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (g_fail_armed.load(std::memory_order_relaxed) && g_fail_countdown.fetch_sub(1) == 0) {
-    g_fail_armed = false;
-    throw std::bad_alloc();
-  }
-  void* p = nullptr;
-  if (align <= alignof(std::max_align_t)) {
-    p = std::malloc(n ? n : 1);
-  } else if (posix_memalign(&p, align, n ? n : 1) != 0) {
-    p = nullptr;
-  }
-  if (!p) throw std::bad_alloc();
-  return p;
-}
-}  // namespace
-
-void* operator new(std::size_t n) { return test_allocate(n, 0); }
-void* operator new[](std::size_t n) { return test_allocate(n, 0); }
-void* operator new(std::size_t n, std::align_val_t a) { return test_allocate(n, std::size_t(a)); }
-void* operator new[](std::size_t n, std::align_val_t a) { return test_allocate(n, std::size_t(a)); }
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-  try {
-    return test_allocate(n, 0);
-  } catch (...) {
-    return nullptr;
-  }
-}
-void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
-  try {
-    return test_allocate(n, 0);
-  } catch (...) {
-    return nullptr;
-  }
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
 
 namespace hedge {
 namespace {
@@ -353,14 +300,13 @@ void expect_strong_guarantee(Subdivision scheme, bool triangles, int steps) {
     SurfaceMesh m = input;
     const auto name = m.get_vertex_property<std::string>("v:name");  // a handle held across the call
     bool threw = false;
-    g_fail_countdown = k;
-    g_fail_armed = true;
+    test::fail_allocation_after(k);  // tests/heap_hooks.h
     try {
       subdivide(m, scheme, steps);
     } catch (const std::bad_alloc&) {
       threw = true;
     }
-    g_fail_armed = false;
+    test::disarm_allocation_failure();
     if (!threw) {
       expect_identical(m, reference);
       EXPECT_EQ(name.vector().size(), m.vertex_slots());  // the handle sees the refined mesh

@@ -6,6 +6,7 @@
 // the target's folder and rename it over the target, so a failed write leaves nothing behind.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -30,6 +31,33 @@ struct WriteOptions {
   //! the same float (so every float survives a round trip); fewer rounds to that many digits.
   int precision = 9;
 };
+
+//! What a reader may do for a file that comes from a stranger. The default is the safe choice for
+//! bytes of unknown origin: no file but the one given is opened, and memory stays within the default
+//! budget. read_indexed_file() and read_mesh() without options read glTF buffers beside the file.
+struct ReadOptions {
+  //! glTF buffers stored in separate files (a `uri` that is not a data URI). When true they are read
+  //! only from the folder of the .gltf named by `name` and its subfolders: the uri must be a
+  //! relative path without a scheme, and after `%` escapes, `..` and symbolic links are resolved it
+  //! must name a regular file inside that folder whose size is the buffer's byteLength (checked
+  //! before reading). When false, any such buffer is an error.
+  bool external_buffers = false;
+  //! The most memory, in bytes, a glTF reader may allocate for what the file describes (its JSON,
+  //! nodes, primitives, vertices, corners), estimated and checked before anything is allocated.
+  //! 0 is the default budget: 64 times the input's size (the file and its external buffers) plus
+  //! kDefaultReadMemoryFloor, enough for any file whose meshes are stored rather than instanced.
+  //! Raise it for a trusted file that places one mesh many times.
+  std::uint64_t max_memory = 0;
+};
+
+//! The fixed part of the default read budget (see ReadOptions::max_memory): 64 MiB.
+inline constexpr std::uint64_t kDefaultReadMemoryFloor = std::uint64_t{64} << 20;
+//! The deepest nesting of arrays and objects a glTF's JSON may have. Deeper nesting is refused
+//! before the JSON is parsed (glTF's own structure needs about 8 levels).
+inline constexpr int kMaxJsonDepth = 64;
+
+//! The read budget for an input of `input_bytes` bytes under `options` (see ReadOptions::max_memory).
+std::uint64_t read_budget(const ReadOptions& options, std::uint64_t input_bytes);
 
 // Per-format readers. `name` is used in error messages. Parsing works on the whole file in memory.
 //
@@ -62,7 +90,8 @@ IndexedMesh read_ply(std::string_view data, const std::string& name = {});
 //! even when its header starts with "solid".
 IndexedMesh read_stl(std::string_view data, const std::string& name = {});
 //! glTF 2.0, JSON (.gltf) or binary (.glb, recognised by its "glTF" magic), with its buffers in
-//! the GLB chunk, in data URIs or in files beside it (relative to the folder of `name`).
+//! the GLB chunk, in base64 data URIs (application/octet-stream or application/gltf-buffer) or,
+//! when options.external_buffers allows, in files beside it (in the folder of `name` or below).
 //!  - What is read: the default scene (else scene 0) walked from its root nodes, each node's mesh
 //!    placed by the node's world transform (matrix or translation/rotation/scale; a mirroring one
 //!    reverses the winding; an identity one leaves positions bit for bit). A file without scenes
@@ -83,10 +112,18 @@ IndexedMesh read_stl(std::string_view data, const std::string& name = {});
 //!        to a scene, node, mesh, accessor, bufferView or buffer that does not exist, an accessor
 //!        whose bytes are outside its bufferView or buffer, a component type glTF does not allow
 //!        for the attribute, an index out of range, a non-finite value, a node reached twice (glTF
-//!        nodes form trees), more placed vertices than 64 per byte of the file (instancing); e.g.
+//!        nodes form trees), a negative index, offset, count or mode, JSON nested deeper than
+//!        kMaxJsonDepth, more memory than the read budget (ReadOptions::max_memory; the message says
+//!        how much the file asks for), and an external buffer that is turned off, outside the
+//!        file's folder, not a regular file or of the wrong size (the message never quotes such a
+//!        file's content or size); e.g.
 //!        "m.gltf: mesh 0 primitive 0 indices: accessor 3: index 9 (element 4) is out of range".
-IndexedMesh read_gltf(std::string_view data, const std::string& name = {});
-IndexedMesh read_indexed(std::string_view data, FileFormat format, const std::string& name = {});
+//!        Cost: O(file size) time; memory within the budget.
+IndexedMesh read_gltf(std::string_view data, const std::string& name = {}, const ReadOptions& options = {});
+//! Any format's reader; `options` matter for glTF only (the other formats open no other file and
+//! allocate at most a small constant times the data's size).
+IndexedMesh read_indexed(std::string_view data, FileFormat format, const std::string& name = {},
+                         const ReadOptions& options = {});
 
 // Per-format writers into a string (the atomic file writers wrap these). O(mesh size).
 // Coordinates are written so that they read back bit for bit (see WriteOptions::precision).
@@ -125,8 +162,10 @@ std::string read_file(const std::string& path);
 //! \throw IoError naming the path and the system's reason.
 void write_file_atomic(const std::string& path, std::string_view bytes);
 
-//! Reads a file of any supported format into the indexed form (format from the extension).
+//! Reads a file of any supported format into the indexed form (format from the extension). Without
+//! options, glTF buffers beside the file are read (ReadOptions::external_buffers = true).
 IndexedMesh read_indexed_file(const std::string& path);
+IndexedMesh read_indexed_file(const std::string& path, const ReadOptions& options);
 //! Writes the indexed form to a file (format from the extension), atomically.
 void write_indexed_file(const IndexedMesh& mesh, const std::string& path, const WriteOptions& options = {});
 
@@ -139,6 +178,8 @@ BuildOptions default_build_options(FileFormat format);
 //! under TopologyPolicy::strict, and goes to BuildReport::warnings otherwise.
 SurfaceMesh read_mesh(const std::string& path, BuildReport* report = nullptr);
 SurfaceMesh read_mesh(const std::string& path, const BuildOptions& options, BuildReport* report = nullptr);
+SurfaceMesh read_mesh(const std::string& path, const BuildOptions& options, const ReadOptions& read_options,
+                      BuildReport* report = nullptr);
 //! Exports (triangulating for STL, and by ear clipping for glTF) and writes atomically.
 void write_mesh(const SurfaceMesh& mesh, const std::string& path, const WriteOptions& options = {});
 

@@ -1,0 +1,75 @@
+// What a glTF must pass before tinygltf sees it. tinygltf trusts its input: it recurses once per
+// level of JSON nesting, allocates a model whatever its size, and opens any path a buffer names.
+// So the JSON is scanned first, in one pass that allocates nothing per value (a SAX parse): its
+// depth, its negative indices and offsets, an estimate of what parsing it will allocate, and its
+// buffers; and the only files tinygltf may then open are the external buffers this guard approved.
+#pragma once
+
+#include <sys/types.h>
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "hedge/io/io.h"
+
+namespace hedge::detail {
+
+//! A buffer of the glTF, as its JSON declares it.
+struct GltfBufferDecl {
+  std::string uri;  //!< empty when absent; data URIs are checked by the scan and not kept
+  bool data_uri = false;
+  std::uint64_t byte_length = 0;
+};
+
+//! What scan_gltf() learned.
+struct GltfScan {
+  std::string_view json;  //!< the JSON text: the whole data, or a GLB's JSON chunk
+  bool binary = false;
+  //! Bytes that parsing the JSON into tinygltf's model is estimated to allocate, at most.
+  std::uint64_t parse_cost = 0;
+  std::vector<GltfBufferDecl> buffers;
+};
+
+//! Frames a GLB and scans the JSON. \throw IoError for malformed JSON or GLB framing, nesting
+//! deeper than kMaxJsonDepth, a negative index, offset, count or mode, or a data URI that is not
+//! base64 application/octet-stream or application/gltf-buffer or whose size is not its byteLength.
+//! O(data size) time; allocates O(depth) plus the buffers' declarations.
+GltfScan scan_gltf(std::string_view data, const std::string& name);
+
+//! The message of a file refused for its memory: `what` asks for about `cost` bytes, over `budget`.
+std::string over_budget(const std::string& what, double cost, std::uint64_t budget);
+
+//! The external buffer files tinygltf may read: each one approved by the ReadOptions policy,
+//! resolved to a regular file inside the folder of the .gltf and of the declared size. tinygltf's
+//! file callbacks answer from this table only, so no other path can be opened.
+class GltfBufferFiles {
+ public:
+  //! Checks every external buffer of `scan`. \throw IoError naming the buffer when one is refused.
+  GltfBufferFiles(const GltfScan& scan, const std::string& name, const ReadOptions& options);
+
+  //! The folder tinygltf joins buffer uris to (the folder of `name`).
+  const std::string& base_dir() const { return base_dir_; }
+  //! The approved files' bytes, in all.
+  std::uint64_t bytes() const { return bytes_; }
+
+  //! tinygltf's callbacks (user data: this object).
+  static bool exists(const std::string& path, void* self);
+  static std::string expand(const std::string& path, void* self);
+  static bool read(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* self);
+
+ private:
+  struct File {
+    std::string real_path;
+    dev_t device = 0;
+    ino_t inode = 0;
+    std::uint64_t size = 0;
+  };
+  std::string base_dir_;
+  std::unordered_map<std::string, File> files_;  // by the path tinygltf will ask for
+  std::uint64_t bytes_ = 0;
+};
+
+}  // namespace hedge::detail
