@@ -957,6 +957,120 @@ static void test_files(void) {
   remove(obj);
 }
 
+/* Hostile files: a glTF reads no file outside its folder, deep JSON and huge asks are refused. */
+static const char* kTriangleGltfHead =
+    "{\"asset\":{\"version\":\"2.0\"},\"scenes\":[{\"nodes\":[0]}],\"nodes\":[{\"mesh\":0}],"
+    "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],"
+    "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"}],"
+    "\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],";
+/* The triangle's 36 bytes of positions (0,0,0 1,0,0 0,1,0), base64. */
+#define TRIANGLE_BASE64 "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"
+
+static void write_gltf_with_buffer(const char* path, const char* buffer_json) {
+  char text[2048];
+  snprintf(text, sizeof text, "%s\"buffers\":[%s]}", kTriangleGltfHead, buffer_json);
+  write_text(path, text);
+}
+
+static void test_hostile_files(void) {
+  CHECK(sizeof(hedge_read_options) == 16);
+  hedge_read_options read;
+  CHECK_OK(hedge_read_options_default(&read));
+  CHECK(read.external_buffers == 1 && read.reserved == 0 && read.max_memory == 0);
+  CHECK_STATUS(hedge_read_options_default(NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+
+  const char* path = HEDGE_TEST_OUTPUT_DIR "/c_api_hostile.gltf";
+  hedge_mesh* mesh = NULL;
+  /* Embedded: read, by path and from memory. */
+  write_gltf_with_buffer(path, "{\"byteLength\":36,\"uri\":\"data:application/octet-stream;base64," TRIANGLE_BASE64 "\"}");
+  CHECK_OK(hedge_mesh_read_with(path, NULL, &read, NULL, &mesh));
+  CHECK(counts_of(mesh).faces == 1);
+  CHECK_VALID(mesh);
+  CHECK_OK(hedge_mesh_destroy(mesh));
+  char text[4096];
+  FILE* f = fopen(path, "rb");
+  CHECK(f != NULL);
+  const size_t size = fread(text, 1, sizeof text, f);
+  fclose(f);
+  mesh = NULL;
+  CHECK_OK(hedge_mesh_read_memory(text, size, "upload.gltf", NULL, NULL, NULL, &mesh));
+  CHECK(counts_of(mesh).faces == 1);
+  CHECK_OK(hedge_mesh_destroy(mesh));
+  /* A budget smaller than the file needs; the message says how to raise it. */
+  read.max_memory = 100;
+  mesh = NULL;
+  CHECK_STATUS(hedge_mesh_read_memory(text, size, "upload.gltf", NULL, &read, NULL, &mesh), HEDGE_ERROR_IO);
+  CHECK(mesh == NULL);
+  CHECK_ERROR_HAS("upload.gltf: its JSON");
+  CHECK_ERROR_HAS("more than the read budget of 100 bytes");
+  CHECK_ERROR_HAS("max_memory");
+  read.max_memory = 0;
+  read.reserved = 7;
+  CHECK_STATUS(hedge_mesh_read_memory(text, size, "upload.gltf", NULL, &read, NULL, &mesh), HEDGE_ERROR_INVALID_ARGUMENT);
+  read.reserved = 0;
+  read.external_buffers = 2;
+  CHECK_STATUS(hedge_mesh_read_with(path, NULL, &read, NULL, &mesh), HEDGE_ERROR_INVALID_ARGUMENT);
+  read.external_buffers = 1;
+  CHECK_STATUS(hedge_mesh_read_memory(NULL, 10, "upload.gltf", NULL, NULL, NULL, &mesh), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_read_memory(text, size, NULL, NULL, NULL, NULL, &mesh), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_read_memory(text, size, "upload.txt", NULL, NULL, NULL, &mesh), HEDGE_ERROR_IO);
+  CHECK_OK(hedge_mesh_read_memory("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 32, "t.obj", NULL, NULL, NULL, &mesh));
+  CHECK(counts_of(mesh).faces == 1);
+  CHECK_OK(hedge_mesh_destroy(mesh));
+
+  /* A buffer outside the file's folder, by path or by a climb: refused, nothing of it quoted. */
+  mesh = NULL;
+  write_gltf_with_buffer(path, "{\"byteLength\":1221,\"uri\":\"../../../../../../../../../../etc/passwd\"}");
+  CHECK_STATUS(hedge_mesh_read(path, NULL, NULL, &mesh), HEDGE_ERROR_IO);
+  CHECK(mesh == NULL);
+  CHECK_ERROR_HAS("buffer 0: uri '../../../../../../../../../../etc/passwd' does not name a regular file inside");
+  CHECK(strstr(hedge_last_error(), "root") == NULL);
+  write_gltf_with_buffer(path, "{\"byteLength\":1221,\"uri\":\"/etc/passwd\"}");
+  CHECK_STATUS(hedge_mesh_read_with(path, NULL, NULL, NULL, &mesh), HEDGE_ERROR_IO);
+  CHECK_ERROR_HAS("uri is an absolute path");
+  write_gltf_with_buffer(path, "{\"byteLength\":5,\"uri\":\"data:text/plain,hello\"}");
+  CHECK_STATUS(hedge_mesh_read(path, NULL, NULL, &mesh), HEDGE_ERROR_IO);
+  CHECK_ERROR_HAS("a data URI must be base64 application/octet-stream or application/gltf-buffer");
+  /* A buffer beside the file: read by path; from memory only when the caller turns it on. */
+  const char* bin = HEDGE_TEST_OUTPUT_DIR "/c_api_hostile.bin";
+  static const float kPositions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  f = fopen(bin, "wb");
+  CHECK(f != NULL && fwrite(kPositions, sizeof kPositions, 1, f) == 1);
+  fclose(f);
+  write_gltf_with_buffer(path, "{\"byteLength\":36,\"uri\":\"c_api_hostile.bin\"}");
+  CHECK_OK(hedge_mesh_read(path, NULL, NULL, &mesh));
+  CHECK(counts_of(mesh).faces == 1);
+  CHECK_OK(hedge_mesh_destroy(mesh));
+  f = fopen(path, "rb");
+  const size_t external_size = fread(text, 1, sizeof text, f);
+  fclose(f);
+  mesh = NULL;
+  CHECK_STATUS(hedge_mesh_read_memory(text, external_size, path, NULL, NULL, NULL, &mesh), HEDGE_ERROR_IO);
+  CHECK_ERROR_HAS("reading external buffers is turned off");
+  CHECK_OK(hedge_mesh_read_memory(text, external_size, path, NULL, &read, NULL, &mesh));
+  CHECK(counts_of(mesh).faces == 1);
+  CHECK_OK(hedge_mesh_destroy(mesh));
+  read.external_buffers = 0;
+  CHECK_STATUS(hedge_mesh_read_with(path, NULL, &read, NULL, &mesh), HEDGE_ERROR_IO);
+  CHECK_ERROR_HAS("turned off");
+
+  /* 17,000 nested arrays in extras crashed the parser's recursion: now an I/O error. */
+  enum { kDepth = 17000 };
+  char* deep = malloc(2 * kDepth + 64);
+  CHECK(deep != NULL);
+  strcpy(deep, "{\"extras\":");
+  size_t n = strlen(deep);
+  for (int i = 0; i < kDepth; ++i) deep[n++] = '[';
+  for (int i = 0; i < kDepth; ++i) deep[n++] = ']';
+  strcpy(deep + n, "}");
+  mesh = NULL;
+  CHECK_STATUS(hedge_mesh_read_memory(deep, strlen(deep), "deep.gltf", NULL, NULL, NULL, &mesh), HEDGE_ERROR_IO);
+  CHECK_ERROR_HAS("deep.gltf: malformed glTF: JSON nested deeper than 64 levels");
+  free(deep);
+  remove(path);
+  remove(bin);
+}
+
 /* ---------------------------------------------------------------------------------------------- */
 /* Validation text                                                                                */
 /* ---------------------------------------------------------------------------------------------- */
@@ -2186,6 +2300,7 @@ int main(void) {
   test_pyramid_operations();
   test_grid_operations();
   test_files();
+  test_hostile_files();
   test_validation_text();
   test_render();
   test_render_lifetime();

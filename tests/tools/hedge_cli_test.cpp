@@ -327,6 +327,46 @@ TEST_F(HedgeCli, MalformedFilesAreDataErrors) {
   expect_data_error({"info", stl.string()}, "short.stl");
 }
 
+// A glTF from a stranger: no file outside its folder is read, deep JSON and amplifying files are
+// refused with a message, and nothing is written.
+TEST_F(HedgeCli, HostileGltfFilesAreDataErrors) {
+  const std::string head =
+      R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+      R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},)"
+      R"({"bufferView":1,"componentType":5123,"count":30000,"type":"SCALAR"}],)"
+      R"("bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":60000}],)";
+  auto file = [&](const std::string& name, const std::string& meshes, const std::string& buffers) {
+    write_text(tmp(name), head + R"("meshes":)" + meshes + R"(,"buffers":)" + buffers + "}");
+    return tmp(name).string();
+  };
+  const std::string one = R"([{"primitives":[{"attributes":{"POSITION":0}}]}])";
+  const std::string passwd = file("passwd.gltf", one, R"([{"byteLength":60036,"uri":"../../../../../../../../etc/passwd"}])");
+  expect_data_error({"info", passwd}, "passwd.gltf: buffer 0: uri '../../../../../../../../etc/passwd' does not name a regular file inside the .gltf's folder");
+  expect_data_error({"convert", passwd, tmp("out.obj").string()}, "does not name a regular file");
+  EXPECT_FALSE(fs::exists(tmp("out.obj")));
+  const std::string absolute = file("absolute.gltf", one, R"([{"byteLength":60036,"uri":"/etc/passwd"}])");
+  expect_data_error({"info", absolute}, "absolute.gltf: buffer 0: uri is an absolute path");
+  const std::string text = file("text.gltf", one, R"([{"byteLength":5,"uri":"data:text/plain,hello"}])");
+  expect_data_error({"validate", text}, "text.gltf: buffer 0: a data URI must be base64 application/octet-stream");
+
+  // 1,000 primitives on one accessor of 30,000 indices: 30M corners from a 120 KB file.
+  std::string prims;
+  for (int p = 0; p < 1000; ++p) prims += std::string(p ? "," : "") + R"({"attributes":{"POSITION":0},"indices":1})";
+  const std::string buffer = std::string(R"([{"byteLength":60036,"uri":"data:application/octet-stream;base64,)") +
+                             std::string(80048, 'A') + R"("}])";
+  const std::string shared = file("shared.gltf", R"([{"primitives":[)" + prims + "]}]", buffer);
+  expect_data_error({"info", shared}, "shared.gltf: its JSON and the meshes its nodes place would take about");
+  expect_data_error({"info", shared}, "raise the budget");
+
+  std::string deep = head + R"("meshes":)" + one + R"(,"extras":)" + std::string(17000, '[') + std::string(17000, ']') + "}";
+  write_text(tmp("deep.gltf"), deep);
+  expect_data_error({"info", tmp("deep.gltf").string()}, "deep.gltf: malformed glTF: JSON nested deeper than 64 levels");
+
+  const std::string negative =
+      file("negative.gltf", R"([{"primitives":[{"attributes":{"POSITION":0},"indices":-5}]}])", buffer);
+  expect_data_error({"info", negative}, "negative.gltf: mesh 0 primitive 0: indices is -5; it must be 0 or more");
+}
+
 TEST_F(HedgeCli, MissingFileAndUnknownExtensionAreDataErrors) {
   expect_data_error({"info", tmp("missing.obj").string()}, "missing.obj");
   const fs::path xyz = tmp("mesh.xyz");
