@@ -125,6 +125,46 @@ test('toArrays gives back what fromBuffers took', () => {
   again.dispose();
 });
 
+test('a hostile glTF reads no other file, and deep or amplifying JSON is refused', () => {
+  const head =
+    '{"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],' +
+    '"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],' +
+    '"bufferViews":[{"buffer":0,"byteLength":36}],';
+  const file = (meshes, buffers, extra = '') =>
+    new TextEncoder().encode(head + '"meshes":' + meshes + ',"buffers":' + buffers + extra + '}');
+  const one = '[{"primitives":[{"attributes":{"POSITION":0}}]}]';
+  const embedded = '[{"byteLength":36,"uri":"data:application/octet-stream;base64,' + 'A'.repeat(48) + '"}]';
+  const triangle = hedge.fromFile(file(one, embedded), 'tri.gltf');
+  assert.equal(triangle.counts().faces, 1);
+  triangle.dispose();
+  // Bytes from a page have no folder: external buffers are off.
+  assert.throws(
+    () => hedge.fromFile(file(one, '[{"byteLength":36,"uri":"tri.bin"}]'), 'tri.gltf'),
+    (e) => e.kind === 'io' && /tri\.gltf: buffer 0: .*reading external buffers is turned off/.test(e.message),
+  );
+  assert.throws(
+    () => hedge.fromFile(file(one, '[{"byteLength":36,"uri":"../../etc/passwd"}]'), 'tri.gltf'),
+    (e) => e.kind === 'io' && /turned off/.test(e.message),
+  );
+  assert.throws(
+    () => hedge.fromFile(file(one, embedded, ',"extras":' + '['.repeat(17000) + ']'.repeat(17000)), 'deep.gltf'),
+    (e) => e.kind === 'io' && /deep\.gltf: malformed glTF: JSON nested deeper than 64 levels/.test(e.message),
+  );
+  // 1,000 primitives sharing one accessor of 30,000 indices: 30M corners from 120 KB, refused.
+  const shared = new TextEncoder().encode(
+    '{"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],' +
+      '"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},' +
+      '{"bufferView":1,"componentType":5123,"count":30000,"type":"SCALAR"}],' +
+      '"bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":60000}],' +
+      '"meshes":[{"primitives":[' + Array(1000).fill('{"attributes":{"POSITION":0},"indices":1}').join(',') + ']}],' +
+      '"buffers":[{"byteLength":60036,"uri":"data:application/octet-stream;base64,' + 'A'.repeat(80048) + '"}]}',
+  );
+  assert.throws(
+    () => hedge.fromFile(shared, 'shared.gltf'),
+    (e) => e.kind === 'io' && /shared\.gltf: .*more than the read budget/.test(e.message),
+  );
+});
+
 test('a malformed file throws a HedgeError naming the file and line, and the module keeps working', () => {
   const bad = new TextEncoder().encode('v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 oops\n');
   assert.throws(
