@@ -106,7 +106,7 @@ class Scanner {
     return value();
   }
   bool number_unsigned(std::uint64_t v) {
-    if (in_buffer() && key_is("byteLength")) scan_.buffers[buffer_index()].byte_length = v;
+    if (in_buffer() && key_is("byteLength")) buffer_.byte_length = v;
     return value();
   }
   bool number_float(double v, const std::string& text) {
@@ -122,10 +122,16 @@ class Scanner {
   bool start_object(std::size_t) {
     open(false);
     cost_ += kCostPerObject;
-    if (frames_.size() == 3 && path_is_buffer()) scan_.buffers.resize(buffer_index() + 1);
+    if (frames_.size() == 3 && path_is_buffer()) {
+      buffer_ = GltfBufferDecl{buffer_index(), {}, false, 0};
+      data_size_ = 0;
+    }
     return true;
   }
-  bool end_object() { return close(); }
+  bool end_object() {
+    if (in_buffer()) end_buffer();
+    return close();
+  }
   bool start_array(std::size_t) {
     open(true);
     if (frames_.size() == 2 && path_is_buffer()) scan_.buffers.clear();  // a repeated key: the last one counts
@@ -191,19 +197,20 @@ class Scanner {
   std::size_t buffer_index() const { return frames_[1].next - 1; }
 
   void buffer_uri(const std::string& uri) {
-    GltfBufferDecl& b = scan_.buffers[buffer_index()];
+    GltfBufferDecl& b = buffer_;
     b.data_uri = false;
     if (!starts_with_ignoring_case(uri, "data:")) {
       b.uri = uri;
       return;
     }
-    const std::string at = "buffer " + str(buffer_index()) + ": ";
+    const std::string at = "buffer " + str(b.index) + ": ";
     for (std::string_view prefix : kDataPrefixes)
       if (uri.compare(0, prefix.size(), prefix) == 0) {
         const std::int64_t size = base64_size(std::string_view(uri).substr(prefix.size()));
         if (size < 0) throw IoError(name_, 0, -1, at + "the data URI's payload is not base64");
         b.data_uri = true;
-        b.uri = std::to_string(size);  // checked against byteLength once the object is read
+        b.uri.clear();
+        data_size_ = static_cast<std::uint64_t>(size);  // checked against byteLength at the object's end
         return;
       }
     throw IoError(name_, 0, -1,
@@ -255,9 +262,22 @@ class Scanner {
     return members.empty() ? elements : elements + ": " + members;
   }
 
+  // Only buffers with a uri are kept (a GLB's own buffer has none), so that what the scan keeps
+  // is no larger than the uris the file spells out.
+  void end_buffer() {
+    const GltfBufferDecl& b = buffer_;
+    if (b.data_uri && data_size_ != b.byte_length)
+      throw IoError(name_, 0, -1,
+                    "buffer " + str(b.index) + ": its data URI holds " + str(data_size_) +
+                        " bytes, but its byteLength is " + str(b.byte_length));
+    if (b.data_uri || !b.uri.empty()) scan_.buffers.push_back(b);
+  }
+
   const std::string& name_;
   GltfScan& scan_;
   std::vector<Frame> frames_;
+  GltfBufferDecl buffer_;  // the buffer being scanned
+  std::uint64_t data_size_ = 0;
   std::uint64_t cost_ = 0;
 };
 
@@ -376,24 +396,15 @@ GltfScan scan_gltf(std::string_view data, const std::string& name) {
   if (!nlohmann::json::sax_parse(first, first + scan.json.size(), &scanner))
     throw IoError(name, 0, -1, "malformed glTF JSON");
   scan.parse_cost = scanner.cost();
-  for (std::size_t i = 0; i < scan.buffers.size(); ++i) {
-    GltfBufferDecl& b = scan.buffers[i];
-    if (b.data_uri && b.uri != str(b.byte_length))
-      throw IoError(name, 0, -1,
-                    "buffer " + str(i) + ": its data URI holds " + b.uri + " bytes, but its byteLength is " +
-                        str(b.byte_length));
-    if (b.data_uri) b.uri.clear();
-  }
   return scan;
 }
 
 GltfBufferFiles::GltfBufferFiles(const GltfScan& scan, const std::string& name, const ReadOptions& options)
     : base_dir_(folder_of(name)) {
   std::string root;
-  for (std::size_t i = 0; i < scan.buffers.size(); ++i) {
-    const GltfBufferDecl& b = scan.buffers[i];
+  for (const GltfBufferDecl& b : scan.buffers) {
     if (b.data_uri || b.uri.empty()) continue;
-    const std::string at = "buffer " + str(i) + ": ";
+    const std::string at = "buffer " + str(b.index) + ": ";
     if (!options.external_buffers)
       throw IoError(name, 0, -1,
                     at + "its data is in a separate file ('uri'), and reading external buffers is turned off "

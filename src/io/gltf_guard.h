@@ -19,7 +19,8 @@ namespace hedge::detail {
 
 //! A buffer of the glTF, as its JSON declares it.
 struct GltfBufferDecl {
-  std::string uri;  //!< empty when absent; data URIs are checked by the scan and not kept
+  std::size_t index = 0;  //!< in the file's buffers
+  std::string uri;        //!< an external file's uri; data URIs are checked by the scan and not kept
   bool data_uri = false;
   std::uint64_t byte_length = 0;
 };
@@ -30,7 +31,7 @@ struct GltfScan {
   bool binary = false;
   //! Bytes that parsing the JSON into tinygltf's model is estimated to allocate, at most.
   std::uint64_t parse_cost = 0;
-  std::vector<GltfBufferDecl> buffers;
+  std::vector<GltfBufferDecl> buffers;  //!< those with a uri
 };
 
 //! Frames a GLB and scans the JSON. \throw IoError for malformed JSON or GLB framing, nesting

@@ -365,6 +365,16 @@ TEST_F(HedgeCli, HostileGltfFilesAreDataErrors) {
   const std::string negative =
       file("negative.gltf", R"([{"primitives":[{"attributes":{"POSITION":0},"indices":-5}]}])", buffer);
   expect_data_error({"info", negative}, "negative.gltf: mesh 0 primitive 0: indices is -5; it must be 0 or more");
+
+  // A buffer beside the file is read, unless the user turns external buffers off.
+  const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  write_text(tmp("beside.bin"), std::string(reinterpret_cast<const char*>(positions), 36) + std::string(60000, '\0'));
+  const std::string beside = file("beside.gltf", one, R"([{"byteLength":60036,"uri":"beside.bin"}])");
+  const Result r = run({"info", beside, "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out)["faces"], 1);
+  expect_data_error({"info", beside, "--no-external-buffers"},
+                    "beside.gltf: buffer 0: its data is in a separate file ('uri'), and reading external buffers is turned off");
 }
 
 TEST_F(HedgeCli, MissingFileAndUnknownExtensionAreDataErrors) {

@@ -27,6 +27,15 @@ void add_load_options(CLI::App& command, LoadOptions& options) {
       .add_option("--weld-eps", options.weld_eps,
                   "Welding tolerance relative to the bounding-box diagonal (implies --weld epsilon)")
       ->check(CLI::NonNegativeNumber);
+  command.add_flag("--no-external-buffers", options.no_external_buffers,
+                   "glTF: refuse buffers kept in separate files (by default they are read from the .gltf's "
+                   "folder and below, never from elsewhere)");
+}
+
+ReadOptions read_options(const LoadOptions& options) {
+  ReadOptions read;
+  read.external_buffers = !options.no_external_buffers;
+  return read;
 }
 
 BuildOptions build_options(FileFormat format, const LoadOptions& options) {
@@ -45,7 +54,7 @@ LoadedMesh load_mesh(const std::string& path, const LoadOptions& options) {
   LoadedMesh loaded;
   loaded.format = format_from_path(path);
   try {
-    loaded.mesh = read_mesh(path, build_options(loaded.format, options), &loaded.report);
+    loaded.mesh = read_mesh(path, build_options(loaded.format, options), read_options(options), &loaded.report);
   } catch (const IoError&) {
     throw;  // already names the file
   } catch (const TopologyError& e) {

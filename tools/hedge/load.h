@@ -14,9 +14,10 @@ struct LoadOptions {
   bool strict = false;     //!< TopologyPolicy::strict instead of repairing
   std::string weld;        //!< "none", "exact", "epsilon"; empty keeps the format's default
   double weld_eps = -1.0;  //!< relative welding tolerance; negative when not given
+  bool no_external_buffers = false;  //!< glTF: refuse buffers stored in separate files
 };
 
-//! Adds --strict, --weld and --weld-eps to a subcommand.
+//! Adds --strict, --weld, --weld-eps and --no-external-buffers to a subcommand.
 void add_load_options(CLI::App& command, LoadOptions& options);
 
 //! The build options for `format` after applying the command line's choices. --weld-eps without
@@ -28,6 +29,10 @@ struct LoadedMesh {
   BuildReport report;
   FileFormat format = FileFormat::obj;
 };
+
+//! The read options of the command line: external glTF buffers beside the file unless
+//! --no-external-buffers, the default memory budget.
+ReadOptions read_options(const LoadOptions& options);
 
 //! Reads and builds `path`. Errors that do not name the file already (topology, invalid input) are
 //! rethrown with "path: " in front, keeping their type. The reader's warnings (a face of fewer
