@@ -141,9 +141,10 @@ std::atomic<bool> force_named_temporaries{false};
 // once pick different names.
 std::atomic<unsigned> temporary_counter{0};
 
-// What write_file_atomic() replaces, split into its folder and name.
+// What write_file_atomic() replaces: the file that `path` names once every symbolic link is
+// followed, split into its folder and name.
 struct Target {
-  std::string path;
+  std::string path;  // the resolved file
   std::string dir;   // its folder, "./" when the path has no slash, else ending in '/'
   std::string base;  // its file name
   bool exists = false;
@@ -155,10 +156,57 @@ std::string folder_of(const std::string& path) {
   return slash == std::string::npos ? std::string("./") : path.substr(0, slash + 1);
 }
 
-Target find_target(const std::string& path) {
-  Target target{path, folder_of(path), path.substr(path.find_last_of('/') + 1), false, {}};
-  target.exists = ::stat(path.c_str(), &target.st) == 0;
-  return target;
+std::string kind_of(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+// Follows the whole chain of symbolic links from `path`: a relative link is read from its own
+// folder. The last step may name nothing yet (a dangling link, or a new file).
+Target resolve_target(const std::string& path) {
+  constexpr int max_links = 40;  // as the kernel's own limit
+  std::string current = path;
+  for (int links = 0;; ++links) {
+    struct stat st {};
+    if (::lstat(current.c_str(), &st) != 0) {
+      if (errno != ENOENT)
+        throw IoError(path, 0, -1, "cannot inspect '" + current + "': " + errno_text(errno));
+      return Target{current, folder_of(current), current.substr(current.find_last_of('/') + 1), false, {}};
+    }
+    if (!S_ISLNK(st.st_mode)) {
+      return Target{current, folder_of(current), current.substr(current.find_last_of('/') + 1), true, st};
+    }
+    if (links == max_links) throw IoError(path, 0, -1, "cannot write: too many levels of symbolic links");
+    std::string link(static_cast<std::size_t>(st.st_size > 0 ? st.st_size : 256), '\0');
+    for (;;) {
+      const ssize_t n = ::readlink(current.c_str(), link.data(), link.size());
+      if (n < 0) throw IoError(path, 0, -1, "cannot read the link '" + current + "': " + errno_text(errno));
+      if (n == 0) throw IoError(path, 0, -1, "cannot follow the empty link '" + current + "'");
+      if (static_cast<std::size_t>(n) < link.size()) {
+        link.resize(static_cast<std::size_t>(n));
+        break;
+      }
+      link.resize(2 * link.size());  // the link changed meanwhile: read it again, whole
+    }
+    current =
+        link.front() == '/' || current.find('/') == std::string::npos ? link : folder_of(current) + link;
+  }
+}
+
+// Refuses, before anything is written, a target that is not a regular file or that is read-only.
+// Root could replace a read-only file; it is refused anyway, since read-only says "keep this".
+void check_replaceable(const std::string& path, const Target& target) {
+  if (target.base.empty() || target.base == "." || target.base == "..")
+    throw IoError(path, 0, -1, "cannot write: not a file name");
+  if (!target.exists) return;
+  if (!S_ISREG(target.st.st_mode))
+    throw IoError(path, 0, -1, "cannot write: '" + target.path + "' is " + kind_of(target.st.st_mode));
+  if ((target.st.st_mode & 0222) == 0)
+    throw IoError(path, 0, -1, "cannot replace '" + target.path + "': it is read-only (no write permission)");
 }
 
 const std::string_view temporary_tag = ".hedge-tmp.";
@@ -253,9 +301,17 @@ Temporary create_temporary(const std::string& path, const Target& target) {
   return create_named_temporary(path, target);
 }
 
-// Replacing a file keeps its permissions.
-void copy_mode(const Temporary& temp, const Target& target) {
-  if (target.exists && S_ISREG(target.st.st_mode)) ::fchmod(temp.fd(), target.st.st_mode & 07777);
+// The replaced file's owner and group (where this process may set them) and permission bits. The
+// owner goes first: changing it clears the set-user-id and set-group-id bits.
+void copy_owner_and_mode(const Temporary& temp, const Target& target) {
+  if (!target.exists) return;
+  if (::fchown(temp.fd(), target.st.st_uid, target.st.st_gid) != 0) {
+    // Only a privileged process may give a file away; others keep at least the group, when they
+    // belong to it. Failing that too, the new file has this process's owner and group.
+    const int group_kept = ::fchown(temp.fd(), static_cast<uid_t>(-1), target.st.st_gid);
+    static_cast<void>(group_kept);
+  }
+  ::fchmod(temp.fd(), target.st.st_mode & 07777);
 }
 
 // Returns 0 or the errno of write().
@@ -329,10 +385,11 @@ bool force_named_temporary_files(bool on) { return force_named_temporaries.excha
 
 void write_file_atomic(const std::string& path, std::string_view bytes) {
   if (path.empty() || path.back() == '/') throw IoError(path, 0, -1, "cannot write: not a file name");
-  const Target target = find_target(path);
+  const Target target = resolve_target(path);
+  check_replaceable(path, target);
   remove_stale_temporaries(target);
   Temporary temp = create_temporary(path, target);
-  copy_mode(temp, target);
+  copy_owner_and_mode(temp, target);
   if (const int err = write_all(temp.fd(), bytes))
     throw IoError(path, 0, -1, "write error: " + errno_text(err));
   // The data must be on disk before the file takes the target's name, or a crash could leave an

@@ -226,6 +226,41 @@ TEST_F(FileTest, AtomicWriteKeepsThePermissionsOfTheFileItReplaces) {
   }
 }
 
+TEST_F(FileTest, AtomicWriteKeepsTheOwnerAndGroupOfTheFileItReplaces) {
+  if (::geteuid() != 0) GTEST_SKIP() << "only root may give a file to another owner";
+  put(path("owned.txt"), "old");
+  ASSERT_EQ(::chown(path("owned.txt").c_str(), 4321, 4322), 0);
+  write_file_atomic(path("owned.txt"), "new");
+  struct stat st {};
+  ASSERT_EQ(::stat(path("owned.txt").c_str(), &st), 0);
+  EXPECT_EQ(st.st_uid, 4321u);
+  EXPECT_EQ(st.st_gid, 4322u);
+  EXPECT_EQ(read_file(path("owned.txt")), "new");
+}
+
+TEST_F(FileTest, AtomicWriteRefusesAReadOnlyFileEvenAsRoot) {
+  put(path("ro.obj"), "keep");
+  fs::permissions(path("ro.obj"), fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  try {
+    write_file_atomic(path("ro.obj"), "new");
+    ADD_FAILURE() << "a read-only file was replaced";
+  } catch (const IoError& e) {
+    EXPECT_EQ(e.path(), path("ro.obj"));
+    EXPECT_NE(std::string(e.what()).find("read-only"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(read_file(path("ro.obj")), "keep");
+  EXPECT_EQ(fs::status(path("ro.obj")).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  EXPECT_EQ(listing(), (std::vector<std::string>{"ro.obj"}));
+  // One write permission bit is enough, and it is kept.
+  put(path("group.obj"), "old");
+  fs::permissions(path("group.obj"), fs::perms::owner_read | fs::perms::group_write);
+  write_file_atomic(path("group.obj"), "new");
+  EXPECT_EQ(read_file(path("group.obj")), "new");
+  EXPECT_EQ(fs::status(path("group.obj")).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::group_write);
+}
+
 TEST_F(FileTest, AtomicWriteIntoAMissingFolderCreatesNothing) {
   const std::string target = path("no/such/dir/mesh.obj");
   try {
@@ -242,10 +277,86 @@ TEST_F(FileTest, AtomicWriteIntoAMissingFolderCreatesNothing) {
 TEST_F(FileTest, AtomicWriteOverADirectoryFailsAndLeavesIt) {
   fs::create_directories(path("target.obj"));
   put(path("target.obj/inside.txt"), "keep");
-  EXPECT_THROW(write_file_atomic(path("target.obj"), "data"), IoError);
+  try {
+    write_file_atomic(path("target.obj"), "data");
+    ADD_FAILURE();
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
+  }
   EXPECT_TRUE(fs::is_directory(path("target.obj")));
   EXPECT_EQ(read_file(path("target.obj/inside.txt")), "keep");
   EXPECT_EQ(listing(), (std::vector<std::string>{"target.obj"}));  // the temporary was removed
+}
+
+TEST_F(FileTest, AtomicWriteRefusesAFifoAndADevice) {
+  // Opening the FIFO to write would wait for a reader: a hang here means it was not refused.
+  ASSERT_EQ(::mkfifo(path("pipe.obj").c_str(), 0666), 0);
+  try {
+    write_file_atomic(path("pipe.obj"), "data");
+    ADD_FAILURE();
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a FIFO"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::is_fifo(fs::symlink_status(path("pipe.obj"))));
+  // A device, reached through a link (writing to /dev/null itself would "succeed" unseen).
+  fs::create_symlink("/dev/null", path("null.obj"));
+  try {
+    write_file_atomic(path("null.obj"), "data");
+    ADD_FAILURE();
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a character device"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  EXPECT_TRUE(fs::is_symlink(path("null.obj")));
+  EXPECT_EQ(listing(), (std::vector<std::string>{"null.obj", "pipe.obj"}));
+}
+
+TEST_F(FileTest, AtomicWriteThroughALinkReplacesTheFileItLeadsTo) {
+  put(path("real.obj"), "old");
+  fs::permissions(path("real.obj"), fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  fs::create_symlink("real.obj", path("link.obj"));
+  write_file_atomic(path("link.obj"), "new");
+  EXPECT_TRUE(fs::is_symlink(path("link.obj")));
+  EXPECT_EQ(fs::read_symlink(path("link.obj")), "real.obj");
+  EXPECT_EQ(read_file(path("real.obj")), "new");
+  EXPECT_EQ(fs::status(path("real.obj")).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  // An absolute link.
+  fs::create_symlink(path("real.obj"), path("absolute.obj"));
+  write_file_atomic(path("absolute.obj"), "newer");
+  EXPECT_TRUE(fs::is_symlink(path("absolute.obj")));
+  EXPECT_EQ(read_file(path("real.obj")), "newer");
+  // A chain whose second link is relative to its own folder: chain.obj -> sub/mid.obj -> end.obj,
+  // which is sub/end.obj.
+  fs::create_directories(path("sub"));
+  put(path("sub/end.obj"), "old");
+  fs::create_symlink("sub/mid.obj", path("chain.obj"));
+  fs::create_symlink("end.obj", path("sub/mid.obj"));
+  write_file_atomic(path("chain.obj"), "through two links");
+  EXPECT_TRUE(fs::is_symlink(path("chain.obj")));
+  EXPECT_TRUE(fs::is_symlink(path("sub/mid.obj")));
+  EXPECT_EQ(read_file(path("sub/end.obj")), "through two links");
+  EXPECT_EQ(listing(),
+            (std::vector<std::string>{"absolute.obj", "chain.obj", "link.obj", "real.obj", "sub"}));
+}
+
+TEST_F(FileTest, AtomicWriteThroughADanglingLinkCreatesItsTarget) {
+  fs::create_symlink("made.obj", path("dangling.obj"));
+  write_file_atomic(path("dangling.obj"), "new");
+  EXPECT_TRUE(fs::is_symlink(path("dangling.obj")));
+  EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(path("made.obj"))));
+  EXPECT_EQ(read_file(path("made.obj")), "new");
+  // Links in a loop are refused.
+  fs::create_symlink("loop_b.obj", path("loop_a.obj"));
+  fs::create_symlink("loop_a.obj", path("loop_b.obj"));
+  try {
+    write_file_atomic(path("loop_a.obj"), "data");
+    ADD_FAILURE();
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("too many levels of symbolic links"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::is_symlink(path("loop_a.obj")));
+  EXPECT_EQ(listing(), (std::vector<std::string>{"dangling.obj", "loop_a.obj", "loop_b.obj", "made.obj"}));
 }
 
 TEST_F(FileTest, AtomicWriteThatFailsHalfwayLeavesTheOldFileIntact) {

@@ -128,9 +128,16 @@ std::string read_file(const std::string& path);
 //!   a temporary name and at once renamed over the target. Where the file system has no unnamed
 //!   files it is `.<name>.hedge-tmp.<pid>.<n>` from the start, which a killed write leaves behind:
 //!   every write of `<name>` first removes those whose process no longer exists.
-//! - A replaced file keeps its permission bits.
-//! \throw IoError naming `path` and the system's reason, when the folder is missing or not
-//!        writable, a write fails or the target cannot be replaced (a directory).
+//! - A symbolic link is followed, through the whole chain (a relative link from its own folder),
+//!   and the file it leads to is replaced in that file's folder, as editors do: the link stays a
+//!   link. A dangling link gets the file it points to created.
+//! - A replaced file keeps its permission bits, and its owner and group where this process may
+//!   set them (as root, or a group the process belongs to).
+//! \throw IoError naming `path` and the reason, with nothing written and the target untouched, when
+//!        the target (after links) is a directory, a FIFO, a device or a socket; when it has no
+//!        write permission bit at all (mode & 0222 == 0), even for root: a read-only file is not
+//!        replaced; when links loop; and, with the system's reason, when the folder is missing or
+//!        not writable or a write fails.
 void write_file_atomic(const std::string& path, std::string_view bytes);
 
 //! Reads a file of any supported format into the indexed form (format from the extension).
