@@ -3,7 +3,8 @@
 //
 // Readers throw IoError (path, line or byte offset, what was expected) on malformed input and
 // never trust a header's counts for allocation. Writers are atomic: they write a temporary file in
-// the target's folder and rename it over the target, so a failed write leaves nothing behind.
+// the target's folder and rename it over the target, so a failed or killed write leaves nothing
+// behind (see write_file_atomic()).
 #pragma once
 
 #include <cstdint>
@@ -156,10 +157,24 @@ std::string write_indexed(const IndexedMesh& mesh, FileFormat format, const Writ
 
 //! Reads a whole file. \throw IoError if it cannot be opened or read.
 std::string read_file(const std::string& path);
-//! Writes `bytes` to `path` atomically: a uniquely named temporary file in the same folder is
-//! written, flushed to disk and renamed over the target, which keeps its permissions. On any
-//! failure the temporary file is removed and the target is left as it was.
-//! \throw IoError naming the path and the system's reason.
+//! Writes `bytes` to `path` atomically: the file holds its old bytes or the new ones, never a mix,
+//! and a write that fails or is killed leaves the old file as it was.
+//! - The bytes go to a temporary file in the target's folder, flushed to disk before the file takes
+//!   the target's name. On Linux it is an unnamed file (O_TMPFILE), which vanishes with a killed
+//!   process: with no target it is linked straight to the target's name; otherwise it is linked to
+//!   a temporary name and at once renamed over the target. Where the file system has no unnamed
+//!   files it is `.<name>.hedge-tmp.<pid>.<n>` from the start, which a killed write leaves behind:
+//!   every write of `<name>` first removes those whose process no longer exists.
+//! - A symbolic link is followed, through the whole chain (a relative link from its own folder),
+//!   and the file it leads to is replaced in that file's folder, as editors do: the link stays a
+//!   link. A dangling link gets the file it points to created.
+//! - A replaced file keeps its permission bits, and its owner and group where this process may
+//!   set them (as root, or a group the process belongs to).
+//! \throw IoError naming `path` and the reason, with nothing written and the target untouched, when
+//!        the target (after links) is a directory, a FIFO, a device or a socket; when it has no
+//!        write permission bit at all (mode & 0222 == 0), even for root: a read-only file is not
+//!        replaced; when links loop; and, with the system's reason, when the folder is missing or
+//!        not writable or a write fails.
 void write_file_atomic(const std::string& path, std::string_view bytes);
 
 //! Reads a file of any supported format into the indexed form (format from the extension). Without
@@ -182,5 +197,11 @@ SurfaceMesh read_mesh(const std::string& path, const BuildOptions& options, cons
                       BuildReport* report = nullptr);
 //! Exports (triangulating for STL, and by ear clipping for glTF) and writes atomically.
 void write_mesh(const SurfaceMesh& mesh, const std::string& path, const WriteOptions& options = {});
+
+namespace detail {
+//! For tests: when on, write_file_atomic() uses named temporary files, as on a file system without
+//! unnamed ones. Returns the previous setting.
+bool force_named_temporary_files(bool on);
+}  // namespace detail
 
 }  // namespace hedge
