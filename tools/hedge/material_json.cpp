@@ -1,7 +1,9 @@
 #include "material_json.h"
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "hedge/error.h"
@@ -29,6 +31,8 @@ FractureMaterial parse_material_json(std::string_view text, const std::string& p
     j = json::parse(text);
   } catch (const json::parse_error& e) {
     throw IoError(path, 0, static_cast<std::int64_t>(e.byte), std::string("not valid JSON: ") + e.what());
+  } catch (const json::exception& e) {  // a number beyond a double's range ("1e400"): out_of_range
+    throw IoError(path, 0, -1, std::string("not valid JSON: ") + e.what());
   }
   if (!j.is_object()) throw InvalidInputError(path + ": a material is a JSON object");
   static const char* const known[] = {"name", "rings", "grain", "grain_stretch", "refine_edge", "absolute"};
@@ -67,12 +71,22 @@ FractureMaterial parse_material_json(std::string_view text, const std::string& p
   if (j.contains("grain")) {
     const json& g = j["grain"];
     if (!g.is_array() || g.size() != 3) bad_field(path, "grain", "must be an array of three numbers");
-    for (std::size_t i = 0; i < 3; ++i) m.grain[i] = static_cast<float>(number_field(g[i], path, "grain"));
+    for (std::size_t i = 0; i < 3; ++i) {
+      const double v = number_field(g[i], path, "grain");
+      // Converting a double beyond float's range to float is undefined behaviour.
+      if (!(std::fabs(v) <= std::numeric_limits<float>::max()))
+        bad_field(path, "grain", "must hold numbers within single precision (at most 3.4e38 in magnitude)");
+      m.grain[i] = static_cast<float>(v);
+    }
   }
   if (j.contains("grain_stretch")) {
     m.grain_stretch = number_field(j["grain_stretch"], path, "grain_stretch");
     if (!(m.grain_stretch >= 1)) bad_field(path, "grain_stretch", "must be at least 1");
   }
+  // As fracture() requires: a grain to stretch along (its float components, which may have
+  // underflowed to zero).
+  if (m.grain_stretch > 1 && m.grain == Vec3{})
+    bad_field(path, "grain", "must not be zero when grain_stretch is above 1");
   if (j.contains("refine_edge")) {
     m.refine_edge = number_field(j["refine_edge"], path, "refine_edge");
     if (!(m.refine_edge > 0)) bad_field(path, "refine_edge", "must be positive");
