@@ -18,8 +18,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace hedge;
   FractureOptions options;
   try {
-    options.material = cli::parse_material_json(std::string_view(reinterpret_cast<const char*>(data), size),
-                                                "fuzz.json");
+    options.material =
+        cli::parse_material_json(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.json");
   } catch (const IoError&) {
     return 0;
   } catch (const InvalidInputError&) {
