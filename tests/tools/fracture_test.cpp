@@ -1,5 +1,6 @@
 // hedge fracture, run as a user would.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli_fixture.h"
@@ -93,6 +94,26 @@ TEST_F(HedgeCli, FractureBadMaterialFileNamesTheField) {
   expect_data_error({"fracture", data("three_peaks.off"), "--impact", "0,0,0", "--material", tmp("broken.json").string(),
                      "-o", tmp("out").string()},
                     "broken.json");
+}
+
+TEST_F(HedgeCli, FractureMaterialFileOutOfRangeNumbersNameTheFile) {
+  // Found by fuzz/fuzz_material.cpp: a number beyond a double's range escaped the parser as a JSON
+  // library exception, a grain beyond float's range was converted to float (undefined behaviour),
+  // and a zero grain with a stretch passed the parser. Each is now a data error naming the file.
+  const std::pair<const char*, const char*> cases[] = {
+      {R"({"rings": [{"points": 3, "spacing": 1e400}]})", "not valid JSON"},
+      {R"({"rings": [{"points": 3, "spacing": 2}], "grain": [1e39, 0, 0], "grain_stretch": 2})", "'grain'"},
+      {R"({"rings": [{"points": 3, "spacing": 2}], "grain": [0, 0, 1e-50], "grain_stretch": 2})", "'grain'"},
+  };
+  for (const auto& [text, what] : cases) {
+    write_text(tmp("range.json"), text);
+    const Result r = run({"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--tolerance", "100",
+                          "--material", tmp("range.json").string(), "-o", tmp("out").string()});
+    EXPECT_EQ(r.code, 1) << text;
+    EXPECT_NE(r.err.find("range.json"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(tmp("out")));
+  }
 }
 
 TEST_F(HedgeCli, FractureRefusesAMissAndBadArguments) {
