@@ -196,14 +196,13 @@ class Reader {
   struct Placement {
     int mesh;
     Mat4 world;
-    std::string from;
   };
 
   void place(int mesh, const Mat4& world, const std::string& from) {
     if (mesh < 0 || mesh >= static_cast<int>(model_.meshes.size()))
       fail(from + ": mesh " + std::to_string(mesh) + " does not exist (the file has " +
            str(model_.meshes.size()) + ")");
-    placements_.push_back({mesh, world, from});
+    placements_.push_back({mesh, world});
   }
 
   // What decoding and merging a primitive allocates at most, from its accessors' counts alone:
