@@ -553,7 +553,7 @@ typedef enum hedge_fracture_preset {
 typedef struct hedge_fracture_ring {
   double spacing;    /**< distance from the previous ring (the first: from the impact), > 0 */
   double jitter;     /**< in [0, 1]: how far points stray from even angles and the ring's radius */
-  uint32_t points;   /**< break points on the ring */
+  uint32_t points;   /**< break points on the ring, at most 100000 (10000 in all rings) */
   uint32_t reserved; /**< 0 */
 } hedge_fracture_ring;
 
@@ -606,7 +606,10 @@ HEDGE_API hedge_status hedge_fracture_options_default(int32_t preset, hedge_frac
  *         HEDGE_ERROR_BUFFER_TOO_SMALL with *out_count = that number, and nothing is changed.
  *  \param out_count the number of shards.
  *  No face within the tolerance, a non-finite impact, a single face with no neighbour at the impact,
- *  or options out of range: HEDGE_ERROR_INVALID_ARGUMENT naming what, and the mesh is unchanged. */
+ *  or options out of range: HEDGE_ERROR_INVALID_ARGUMENT naming what, and the mesh is unchanged.
+ *  Options out of range include more than 100000 points on a ring, more than 10000 break points
+ *  in all rings, and a thickness beyond 10 times the diagonal of the mesh's bounding box (the
+ *  limits of fracture.h); they are checked before the capacity. */
 HEDGE_API hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z,
                                            const hedge_fracture_options* options, hedge_fracture_shard* out_shards,
                                            uint32_t capacity, uint32_t* out_count);
@@ -738,27 +741,31 @@ HEDGE_API hedge_status hedge_mesh_bvh_release(hedge_mesh* mesh);
  *  \param origin    3 floats, finite.
  *  \param direction 3 floats, finite and not zero; need not be unit length (t is in its units).
  *  \param t_max     >= 0; INFINITY for an unbounded ray.
- *  eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite origin or direction, a zero direction, a
+ *  
+eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite origin or direction, a zero direction, a
  *          NaN or negative t_max. */
 HEDGE_API hedge_status hedge_mesh_raycast(hedge_mesh* mesh, const float* origin, const float* direction,
                                           float t_max, hedge_surface_hit* out_hit, int32_t* out_found);
 /** The nearest point of the surface to a point, within max_distance of it.
  *  \param point        3 floats, finite.
  *  \param max_distance >= 0; INFINITY for no limit (a limit also makes the search cheaper).
- *  eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite point or a NaN or negative max_distance. */
+ *  
+eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite point or a NaN or negative max_distance. */
 HEDGE_API hedge_status hedge_mesh_closest_point(hedge_mesh* mesh, const float* point, float max_distance,
                                                 hedge_surface_hit* out_hit, int32_t* out_found);
 /** The face a point on the surface lies on: the nearest face, if the point is within tolerance of it
  *  (an impact point reported by a physics engine, a point on a plate in any orientation).
  *  \param tolerance >= 0 and finite, in the mesh's units.
- *  eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite point or a bad tolerance. */
+ *  
+eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite point or a bad tolerance. */
 HEDGE_API hedge_status hedge_mesh_face_containing_point(hedge_mesh* mesh, const float* point, float tolerance,
                                                         hedge_surface_hit* out_hit, int32_t* out_found);
 /** 2D plates and height fields: the face whose projection onto a coordinate plane contains (u, v),
  *  boundary included; `point` is the point of that face that projects onto (u, v) (the dropped
  *  coordinate interpolated), `distance` 0. Faces seen edge-on contain nothing.
  *  \param plane HEDGE_PLANE_*: (u, v) are (x, y), (x, z) or (y, z).
- *  eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite u or v or an unknown plane. */
+ *  
+eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite u or v or an unknown plane. */
 HEDGE_API hedge_status hedge_mesh_face_containing_point_2d(hedge_mesh* mesh, float u, float v, int32_t plane,
                                                            hedge_surface_hit* out_hit, int32_t* out_found);
 
