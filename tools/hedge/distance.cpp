@@ -11,6 +11,7 @@
 #include "hedge/algorithms/geometry.h"
 #include "hedge/error.h"
 #include "load.h"
+#include "numbers.h"
 
 namespace hedge::cli {
 
@@ -77,9 +78,12 @@ Command add_distance_command(CLI::App& parent) {
       "distance", "Sampled symmetric Hausdorff distance and mean distance between the surfaces of two meshes");
   app->add_option("A", options->a, "First mesh file")->required();
   app->add_option("B", options->b, "Second mesh file")->required();
-  app->add_option("--samples", options->samples, "Points drawn on the faces of each surface, besides its vertices")
-      ->check(CLI::NonNegativeNumber);
-  app->add_option("--seed", options->seed, "Seed of the draws");
+  app->add_option("--samples", options->samples, "Points drawn on the faces of each surface, besides its vertices (at most 100000000; 8 bytes each)")
+      ->capture_default_str()
+      ->transform(whole_number<std::size_t>(0, kMaxDistanceSamples));
+  app->add_option("--seed", options->seed, "Seed of the draws")
+      ->capture_default_str()
+      ->transform(whole_number<std::uint64_t>(0));
   app->add_flag("--json", options->json, "Print one JSON object instead of text");
   add_load_options(*app, options->load);
   return {app, [options] { return run_distance(*options); }};

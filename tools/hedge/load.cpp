@@ -5,6 +5,7 @@
 #include <map>
 
 #include "hedge/error.h"
+#include "numbers.h"
 
 namespace hedge::cli {
 
@@ -26,7 +27,7 @@ void add_load_options(CLI::App& command, LoadOptions& options) {
   command
       .add_option("--weld-eps", options.weld_eps,
                   "Welding tolerance relative to the bounding-box diagonal (implies --weld epsilon)")
-      ->check(CLI::NonNegativeNumber);
+      ->transform(real_number(0));
 }
 
 BuildOptions build_options(FileFormat format, const LoadOptions& options) {

@@ -9,6 +9,7 @@
 #include "support/random_edits.h"
 #include "hedge/render/render_sync.h"
 #include "load.h"
+#include "numbers.h"
 #include "mesh_stats.h"
 
 namespace hedge::cli {
@@ -108,8 +109,10 @@ Command add_render_buffers_command(CLI::App& parent) {
   app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
   app->add_option("--edits", options->edits, "Random local edits in the sample")
       ->capture_default_str()
-      ->check(CLI::Range(0, 10000000));
-  app->add_option("--seed", options->seed, "Random seed")->capture_default_str();
+      ->transform(whole_number<std::size_t>(0, 10000000));
+  app->add_option("--seed", options->seed, "Random seed")
+      ->capture_default_str()
+      ->transform(whole_number<std::uint64_t>(0));
   app->add_option("--winding", options->winding, "Index winding: ccw, or cw (Unity, Direct3D)")
       ->capture_default_str()
       ->check(CLI::IsMember({"ccw", "cw"}));

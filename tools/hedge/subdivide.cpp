@@ -8,6 +8,7 @@
 #include "hedge/algorithms/subdivide.h"
 #include "hedge/error.h"
 #include "load.h"
+#include "numbers.h"
 #include "progress_bar.h"
 
 namespace hedge::cli {
@@ -57,7 +58,7 @@ Command add_subdivide_command(CLI::App& parent) {
                   "(1-to-3 at centroids, any polygons, shape kept)")
       ->capture_default_str()
       ->check(CLI::IsMember({"loop", "catmull-clark", "sqrt3", "midpoint", "split-faces"}));
-  app->add_option("--steps", o->steps, "Steps")->capture_default_str()->check(CLI::Range(0, 12));
+  app->add_option("--steps", o->steps, "Steps")->capture_default_str()->transform(whole_number<int>(0, 12));
   app->add_flag("--ascii", o->ascii, "Write PLY and STL as text instead of binary");
   add_load_options(*app, o->load);
   return {app, [o] { return run_subdivide(*o); }};

@@ -26,6 +26,7 @@
 #include "hedge/core/operations.h"
 #include "hedge/error.h"
 #include "load.h"
+#include "numbers.h"
 #include "mesh_stats.h"
 #include "picture/diagram.h"
 #include "picture/raster.h"
@@ -362,10 +363,10 @@ Command add_tour_command(CLI::App& parent) {
       ->capture_default_str();
   app->add_option("--panel", o->panel, "Width of each picture of the contact sheet, in pixels")
       ->capture_default_str()
-      ->check(CLI::Range(64, 2048));
+      ->transform(whole_number<int>(64, 2048));
   app->add_option("--max-faces", o->max_faces, "Skip the subdivision stages whose result would pass this many faces")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(whole_number<std::size_t>(1));
   add_load_options(*app, o->load);
   return {app, [o] { return run_tour(*o); }};
 }
