@@ -1,4 +1,5 @@
 // hedge distance A B: how far apart two surfaces are, as the sampled Hausdorff distance.
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -11,6 +12,7 @@
 #include "hedge/algorithms/geometry.h"
 #include "hedge/error.h"
 #include "load.h"
+#include "memory_budget.h"
 #include "numbers.h"
 
 namespace hedge::cli {
@@ -23,6 +25,7 @@ struct DistanceCommandOptions {
   std::uint64_t seed = 1;
   bool json = false;
   LoadOptions load;
+  MemoryBudget memory;
 };
 
 nlohmann::json side_json(const OneSidedDistance& d) {
@@ -38,6 +41,9 @@ void print_side(const char* label, const OneSidedDistance& d) {
 int run_distance(const DistanceCommandOptions& o) {
   const LoadedMesh a = load_mesh(o.a, o.load);
   const LoadedMesh b = load_mesh(o.b, o.load);
+  // One distance (8 bytes) per point of a surface, one surface at a time.
+  const double points = double(std::max(a.mesh.n_vertices(), b.mesh.n_vertices())) + double(o.samples);
+  check_memory(8 * points, o.memory, std::to_string(o.samples) + " samples", "use fewer --samples");
   HausdorffDistance d;
   try {
     d = hausdorff_distance(a.mesh, b.mesh, {.samples = o.samples, .seed = o.seed});
@@ -86,6 +92,7 @@ Command add_distance_command(CLI::App& parent) {
       ->transform(whole_number<std::uint64_t>(0));
   app->add_flag("--json", options->json, "Print one JSON object instead of text");
   add_load_options(*app, options->load);
+  add_max_memory_option(*app, options->memory);
   return {app, [options] { return run_distance(*options); }};
 }
 

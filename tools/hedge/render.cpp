@@ -15,6 +15,7 @@
 #include "commands.h"
 #include "hedge/error.h"
 #include "load.h"
+#include "memory_budget.h"
 #include "numbers.h"
 #include "picture/diagram.h"
 #include "picture/raster.h"
@@ -44,7 +45,14 @@ struct RenderCommandOptions {
   bool halfedges = false;
   std::size_t max_faces = 400;
   LoadOptions load;
+  MemoryBudget memory;
 };
+
+//! What render() holds for one picture: a depth key (float) and a colour (3 bytes) per sample, and
+//! the picture (3 bytes a pixel). The per-face arrays, in proportion to the mesh, come on top.
+double picture_bytes(int w, int h, int supersample) {
+  return double(w) * h * supersample * supersample * (sizeof(float) + 3) + 3.0 * w * h;
+}
 
 // "WxH" -> (W, H), each side a whole number that fits an int; nothing if malformed.
 std::optional<std::pair<int, int>> parse_size(const std::string& text) {
@@ -162,6 +170,12 @@ int run_render(const RenderCommandOptions& o) {
     }
     what = "the half-edge diagram of " + o.input + " (" + std::to_string(loaded.mesh.n_halfedges()) + " half-edges)";
   } else if (!o.grid.empty()) {
+    // The sheet's size and memory before any panel is drawn: every panel is kept for the sheet.
+    int sheet_w = 0, sheet_h = 0;
+    check_contact_sheet(o.grid.size(), w, h, o.columns, &sheet_w, &sheet_h);
+    check_memory(picture_bytes(w, h, o.supersample) + 3.0 * w * h * double(o.grid.size()) + 3.0 * sheet_w * sheet_h,
+                 o.memory, "a sheet of " + std::to_string(o.grid.size()) + " pictures of " + o.size,
+                 "use a smaller --size, a lower --supersample or fewer meshes");
     std::vector<Panel> panels;
     for (const std::string& path : o.grid) {
       LoadedMesh loaded;
@@ -174,6 +188,8 @@ int run_render(const RenderCommandOptions& o) {
     what = std::to_string(panels.size()) + " meshes side by side (" + std::to_string(sheet.width()) + "x" +
            std::to_string(sheet.height()) + ")";
   } else {
+    check_memory(picture_bytes(w, h, o.supersample), o.memory, "a picture of " + o.size,
+                 "use a smaller --size or a lower --supersample");
     LoadedMesh loaded;
     const Image image = picture_of(o.input, o, w, h, loaded);
     if (!parent.empty()) std::filesystem::create_directories(parent);
@@ -226,6 +242,7 @@ Command add_render_command(CLI::App& parent) {
   app->add_option("--max-faces", o->max_faces, "Largest mesh --halfedges draws")->capture_default_str()
       ->transform(whole_number<std::size_t>(1));
   add_load_options(*app, o->load);
+  add_max_memory_option(*app, o->memory);
   // Command-line mistakes are usage errors (exit 2), found while parsing.
   app->parse_complete_callback([o] {
     if (o->input.empty() == o->grid.empty())

@@ -9,6 +9,7 @@
 #include "support/random_edits.h"
 #include "hedge/render/render_sync.h"
 #include "load.h"
+#include "memory_budget.h"
 #include "numbers.h"
 #include "mesh_stats.h"
 
@@ -25,6 +26,7 @@ struct RenderBuffersOptions {
   bool separate = false;
   bool json = false;
   LoadOptions load;
+  MemoryBudget memory;
 };
 
 double median(std::vector<double> v) {
@@ -35,6 +37,9 @@ double median(std::vector<double> v) {
 }
 
 int run_render_buffers(const RenderBuffersOptions& options) {
+  // The bytes of every sync are kept for the median: 8 bytes an edit.
+  check_memory(8.0 * double(options.edits), options.memory, std::to_string(options.edits) + " edits",
+               "use fewer --edits");
   LoadedMesh loaded = load_mesh(options.file, options.load);
   SurfaceMesh& mesh = loaded.mesh;
   const std::size_t mesh_vertices = mesh.n_vertices(), mesh_faces = mesh.n_faces();
@@ -120,6 +125,7 @@ Command add_render_buffers_command(CLI::App& parent) {
   app->add_flag("--separate", options->separate, "One buffer per attribute instead of interleaved vertices");
   app->add_flag("--json", options->json, "Print one JSON object");
   add_load_options(*app, options->load);
+  add_max_memory_option(*app, options->memory);
   return {app, [options] { return run_render_buffers(*options); }};
 }
 

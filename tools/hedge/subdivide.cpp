@@ -8,6 +8,7 @@
 #include "hedge/algorithms/subdivide.h"
 #include "hedge/error.h"
 #include "load.h"
+#include "memory_budget.h"
 #include "numbers.h"
 #include "progress_bar.h"
 
@@ -21,6 +22,7 @@ struct SubdivideCommandOptions {
   int steps = 1;
   bool ascii = false;
   LoadOptions load;
+  MemoryBudget memory;
 };
 
 int run_subdivide(const SubdivideCommandOptions& o) {
@@ -28,15 +30,25 @@ int run_subdivide(const SubdivideCommandOptions& o) {
   LoadedMesh loaded = load_mesh(o.input, o.load);
   SurfaceMesh& m = loaded.mesh;
   const std::size_t faces_before = m.n_faces();
+  const Subdivision scheme = o.scheme == "midpoint"        ? Subdivision::midpoint
+                             : o.scheme == "catmull-clark" ? Subdivision::catmull_clark
+                             : o.scheme == "sqrt3"         ? Subdivision::sqrt3
+                             : o.scheme == "split-faces"   ? Subdivision::split_faces
+                                                           : Subdivision::loop;
+  // The estimate against the budget before anything is allocated, with the most steps that fit.
+  const std::uint64_t budget = effective_budget(o.memory);
+  const std::size_t need = subdivide_memory(m, scheme, o.steps);
+  if (need > budget) {
+    int fit = 0;
+    while (fit + 1 < o.steps && subdivide_memory(m, scheme, fit + 1) <= budget) ++fit;
+    check_memory(double(need), o.memory,
+                 o.input + ": " + std::to_string(o.steps) + " steps of " + o.scheme + " on " +
+                     std::to_string(faces_before) + " faces",
+                 fit == 0 ? "not even one step fits" : "use --steps " + std::to_string(fit) + " or fewer");
+  }
   const auto start = std::chrono::steady_clock::now();
   ProgressBar bar("subdivide");
-  subdivide(m,
-            o.scheme == "midpoint"        ? Subdivision::midpoint
-            : o.scheme == "catmull-clark" ? Subdivision::catmull_clark
-            : o.scheme == "sqrt3"         ? Subdivision::sqrt3
-            : o.scheme == "split-faces"   ? Subdivision::split_faces
-                                          : Subdivision::loop,
-            o.steps, bar.callback());
+  subdivide(m, scheme, o.steps, bar.callback(), budget);
   bar.finish();
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   save_mesh(m, o.output, o.ascii);
@@ -58,9 +70,10 @@ Command add_subdivide_command(CLI::App& parent) {
                   "(1-to-3 at centroids, any polygons, shape kept)")
       ->capture_default_str()
       ->check(CLI::IsMember({"loop", "catmull-clark", "sqrt3", "midpoint", "split-faces"}));
-  app->add_option("--steps", o->steps, "Steps")->capture_default_str()->transform(whole_number<int>(0, 12));
+  app->add_option("--steps", o->steps, "Steps (each makes about 4 times the faces; refused past --max-memory)")->capture_default_str()->transform(whole_number<int>(0, 12));
   app->add_flag("--ascii", o->ascii, "Write PLY and STL as text instead of binary");
   add_load_options(*app, o->load);
+  add_max_memory_option(*app, o->memory);
   return {app, [o] { return run_subdivide(*o); }};
 }
 
