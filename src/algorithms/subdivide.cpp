@@ -161,18 +161,29 @@ Counts counts_after(const Counts& n, Subdivision scheme) {
 
 // Bytes per element of a mesh like `m` (connectivity, deletion bits, every property).
 struct ElementBytes {
-  double v, h, e, f;
+  double v, h, e, f, corner;
   explicit ElementBytes(const SurfaceMesh& m)
       : v(sizeof(Halfedge) + 0.125 + double(m.vertex_properties().element_bytes())),
         h(sizeof(Vertex) + sizeof(Halfedge) + sizeof(Face) + double(m.halfedge_properties().element_bytes())),
         e(0.125 + double(m.edge_properties().element_bytes())),
-        f(sizeof(Halfedge) + 0.125 + double(m.face_properties().element_bytes())) {}
+        f(sizeof(Halfedge) + 0.125 + double(m.face_properties().element_bytes())),
+        corner(double(m.halfedge_properties().element_bytes())) {}
   double of(const Counts& n) const { return n.v * v + 2 * n.e * h + n.e * e + n.f * f; }
 };
 
 // The working arrays of one step reading a mesh of counts n (sharp flags, face points, corner
-// offsets, smoothed positions): at most this many bytes per element of the mesh read.
-constexpr double kWorkBytesPerElement = 32;
+// offsets, smoothed positions), in bytes per element of the mesh read, and the slack of the arrays
+// the steps grow (capacity beyond size): calibrated against the peak resident memory of steps of
+// each scheme on meshes with and without corner texture coordinates.
+double work_bytes_per_element(Subdivision scheme) {
+  switch (scheme) {
+    case Subdivision::catmull_clark: return 48;
+    case Subdivision::sqrt3:
+    case Subdivision::split_faces: return 24;
+    default: return 8;
+  }
+}
+constexpr double kSlack = 1.25;
 
 double estimate(const SurfaceMesh& m, Subdivision scheme, int steps) {
   const ElementBytes bytes(m);
@@ -182,8 +193,9 @@ double estimate(const SurfaceMesh& m, Subdivision scheme, int steps) {
   double peak = 0, previous = 0;
   for (int s = 0; s < steps; ++s) {
     const Counts next = counts_after(n, scheme);
-    const double work = kWorkBytesPerElement * (n.v + n.e + n.f);
-    const double made = bytes.of(next);
+    // Corner properties (texture coordinates) are gathered per new half-edge before they are set.
+    const double work = work_bytes_per_element(scheme) * (n.v + n.e + n.f) + 2 * next.e * bytes.corner;
+    const double made = kSlack * bytes.of(next);
     // Step s reads the mesh before it (the input, or the result of step s - 1, still held) and
     // builds the next one.
     peak = std::max(peak, compact + (s > 0 ? previous : 0) + made + work);
