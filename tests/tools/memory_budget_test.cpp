@@ -19,15 +19,18 @@ void expect_budget_refusal(const Result& r, const std::vector<std::string>& part
 
 TEST_F(HedgeCli, SubdivideIsRefusedPastTheBudgetBeforeItAllocates) {
   const fs::path out = tmp("sub.obj");
-  // 6 steps of Loop on a tetrahedron: 16384 faces, about 2 MiB; 1M cannot hold them, and the
-  // message says how many steps can.
+  // 6 steps of Loop on a tetrahedron: 16384 faces, about 6 MiB with the copy that writing OBJ text
+  // makes; 1M cannot hold them, and the message says how many steps can.
   const Result r = run({"subdivide", data("tet.obj"), out.string(), "--steps", "6", "--max-memory", "1M"});
   expect_budget_refusal(r, {"tet.obj", "6 steps of loop on 4 faces", "more than the budget of 1.0 MiB",
-                            "--max-memory 1M", "use --steps 5 or fewer"});
+                            "--max-memory 1M", "use --steps 4 or fewer (or write a binary format"});
   EXPECT_FALSE(fs::exists(out));
-  // The advice holds: 5 steps fit in 1M.
-  ASSERT_EQ(run({"subdivide", data("tet.obj"), out.string(), "--steps", "5", "--max-memory", "1M"}).code, 0);
-  EXPECT_EQ(run_json({"info", out.string(), "--json"})["faces"], 4096);
+  // The advice holds: 4 steps fit in 1M, and 5 steps do when written as binary PLY.
+  ASSERT_EQ(run({"subdivide", data("tet.obj"), out.string(), "--steps", "4", "--max-memory", "1M"}).code, 0);
+  EXPECT_EQ(run_json({"info", out.string(), "--json"})["faces"], 1024);
+  EXPECT_EQ(run({"subdivide", data("tet.obj"), out.string(), "--steps", "5", "--max-memory", "1M"}).code, 1);
+  ASSERT_EQ(run({"subdivide", data("tet.obj"), tmp("sub.ply").string(), "--steps", "5", "--max-memory", "1M"}).code, 0);
+  EXPECT_EQ(run_json({"info", tmp("sub.ply").string(), "--json"})["faces"], 4096);
   // Sizes in bytes and with units.
   EXPECT_EQ(run({"subdivide", data("tet.obj"), out.string(), "--steps", "6", "--max-memory", "4294967296"}).code, 0);
   EXPECT_EQ(run({"subdivide", data("tet.obj"), out.string(), "--steps", "6", "--max-memory", "1GiB"}).code, 0);
