@@ -70,7 +70,7 @@ std::string size_check(const std::string& text) {
   const std::string expected = "expected WIDTHxHEIGHT, two whole numbers such as 800x600, got '" + text + "'";
   const std::size_t x = text.find_first_of("xX");
   if (x == std::string::npos) return expected;
-  for (const std::string side : {text.substr(0, x), text.substr(x + 1)}) {
+  for (const std::string& side : {text.substr(0, x), text.substr(x + 1)}) {
     const std::optional<long> v = parse_integer<long>(side);
     const bool digits = !side.empty() && side.find_first_not_of("0123456789") == std::string::npos;
     if (!v && !digits) return expected;
