@@ -10,10 +10,12 @@ namespace {
 
 std::atomic<bool> g_fail_armed{false};
 std::atomic<long> g_fail_countdown{0};
+std::atomic<long> g_allocations{0};
 std::atomic<std::size_t> g_held{0};
 std::atomic<std::size_t> g_peak{0};
 
 void* allocate(std::size_t n, std::size_t align) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
   if (g_fail_armed.load(std::memory_order_relaxed) && g_fail_countdown.fetch_sub(1) == 0) {
     g_fail_armed = false;
     throw std::bad_alloc();
@@ -52,6 +54,8 @@ void release(void* p) noexcept {
 namespace hedge::test {
 
 std::size_t heap_held() { return g_held.load(); }
+
+long heap_allocations() { return g_allocations.load(); }
 
 std::size_t heap_peak_during(void (*f)(void*), void* context) {
   const std::size_t start = g_held.load();

@@ -10,6 +10,9 @@ namespace hedge::test {
 //! Bytes held through operator new now (malloc's usable size of each block).
 std::size_t heap_held();
 
+//! Calls of operator new so far.
+long heap_allocations();
+
 //! The most bytes held at once while f() ran, above what was held when it started.
 std::size_t heap_peak_during(void (*f)(void*), void* context);
 template <typename F>

@@ -127,8 +127,9 @@ export interface Arrays {
 /** A material of one's own (docs/fracture.md): rings of break points around the impact. */
 export interface FractureMaterial {
   name?: string;
-  /** Innermost first. points: a whole number in [0, 100000]; spacing > 0 from the previous ring
-   *  (in edge lengths of the impact face, or model units when absolute); jitter in [0, 1]. */
+  /** Innermost first, at most 1000 rings. points: a whole number in [0, 100000], at most 10000 in
+   *  all rings; spacing > 0 from the previous ring (in edge lengths of the impact face, or model
+   *  units when absolute); jitter in [0, 1]. */
   rings: { points: number; spacing: number; jitter?: number }[];
   /** Grain direction (nonzero when grainStretch > 1). */
   grain?: Vec3;

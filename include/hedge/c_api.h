@@ -553,7 +553,7 @@ typedef enum hedge_fracture_preset {
 typedef struct hedge_fracture_ring {
   double spacing;    /**< distance from the previous ring (the first: from the impact), > 0 */
   double jitter;     /**< in [0, 1]: how far points stray from even angles and the ring's radius */
-  uint32_t points;   /**< break points on the ring */
+  uint32_t points;   /**< break points on the ring, at most 100000 (10000 in all rings) */
   uint32_t reserved; /**< 0 */
 } hedge_fracture_ring;
 
@@ -606,7 +606,10 @@ HEDGE_API hedge_status hedge_fracture_options_default(int32_t preset, hedge_frac
  *         HEDGE_ERROR_BUFFER_TOO_SMALL with *out_count = that number, and nothing is changed.
  *  \param out_count the number of shards.
  *  No face within the tolerance, a non-finite impact, a single face with no neighbour at the impact,
- *  or options out of range: HEDGE_ERROR_INVALID_ARGUMENT naming what, and the mesh is unchanged. */
+ *  or options out of range: HEDGE_ERROR_INVALID_ARGUMENT naming what, and the mesh is unchanged.
+ *  Options out of range include more than 100000 points on a ring, more than 10000 break points
+ *  in all rings, and a thickness beyond 10 times the diagonal of the mesh's bounding box (the
+ *  limits of fracture.h); they are checked before the capacity. */
 HEDGE_API hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z,
                                            const hedge_fracture_options* options, hedge_fracture_shard* out_shards,
                                            uint32_t capacity, uint32_t* out_count);

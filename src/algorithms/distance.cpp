@@ -135,6 +135,10 @@ OneSidedDistance measure(const SurfaceMesh& from, const SurfaceMesh& to, const D
 
 void check_options(const DistanceOptions& options, const char* function) {
   if (options.threads == 0) throw InvalidInputError(std::string(function) + ": options.threads is 0; it must be 1 or more");
+  if (options.samples > kMaxDistanceSamples)
+    throw InvalidInputError(std::string(function) + ": options.samples is " + std::to_string(options.samples) +
+                            ", more than the limit of " + std::to_string(kMaxDistanceSamples) +
+                            " (kMaxDistanceSamples); draw fewer samples");
 }
 
 }  // namespace

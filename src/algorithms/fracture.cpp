@@ -103,9 +103,13 @@ double mean_edge(const SurfaceMesh& m, Face f) {
   return sum / n;
 }
 
-void check_options(const FractureOptions& o) {
+std::size_t check_options(const FractureOptions& o) {
   auto fail = [](const std::string& what) { throw InvalidInputError("fracture: " + what); };
   const FractureMaterial& m = o.material;
+  if (m.rings.size() > kFractureMaxRings)
+    fail("material '" + m.name + "' has " + std::to_string(m.rings.size()) + " rings, more than the limit of " +
+         std::to_string(kFractureMaxRings) + " (kFractureMaxRings); use fewer, wider rings");
+  std::size_t total = 0;
   for (std::size_t i = 0; i < m.rings.size(); ++i) {
     const FractureRing& r = m.rings[i];
     const std::string where = "material '" + m.name + "' rings[" + std::to_string(i) + "].";
@@ -113,6 +117,11 @@ void check_options(const FractureOptions& o) {
       fail(where + "points is " + std::to_string(r.points) + ", more than " + std::to_string(kMaxRingPoints));
     if (!std::isfinite(r.spacing) || r.spacing <= 0) fail(where + "spacing must be finite and positive, is " + number(r.spacing));
     if (!std::isfinite(r.jitter) || r.jitter < 0 || r.jitter > 1) fail(where + "jitter must be in [0, 1], is " + number(r.jitter));
+    total += r.points;
+    if (total > kFractureMaxPoints)
+      fail(where + "points brings the break points of rings[0.." + std::to_string(i) + "] to " + std::to_string(total) +
+           ", more than the limit of " + std::to_string(kFractureMaxPoints) +
+           " in all rings (kFractureMaxPoints); use fewer points");
   }
   const std::string mat = "material '" + m.name + "' ";
   if (!std::isfinite(m.grain_stretch) || m.grain_stretch < 1)
@@ -125,6 +134,20 @@ void check_options(const FractureOptions& o) {
   if (!std::isfinite(o.thickness) || o.thickness < 0) fail("thickness must be finite and >= 0, is " + number(o.thickness));
   if (!std::isfinite(o.density) || o.density <= 0) fail("density must be finite and positive, is " + number(o.density));
   if (!std::isfinite(o.tolerance) || o.tolerance < 0) fail("tolerance must be finite and >= 0, is " + number(o.tolerance));
+  return total;
+}
+
+//! Refuses a thickness beyond kFractureMaxThicknessRatio times the mesh's diagonal. O(V), only
+//! when there is a thickness.
+void check_thickness(const SurfaceMesh& mesh, double thickness) {
+  if (thickness <= 0) return;
+  const Vec3 size = bounding_box(mesh).size();
+  const double diagonal = std::sqrt(double(size.x) * size.x + double(size.y) * size.y + double(size.z) * size.z);
+  if (thickness > kFractureMaxThicknessRatio * diagonal)
+    throw InvalidInputError("fracture: thickness is " + number(thickness) + ", more than " +
+                            number(kFractureMaxThicknessRatio) + " times the diagonal of the mesh's bounding box (" +
+                            number(diagonal) + "), the limit (kFractureMaxThicknessRatio); use a thickness of at most " +
+                            number(kFractureMaxThicknessRatio * diagonal));
 }
 
 //! A face of the broken area.
@@ -400,13 +423,16 @@ FractureMaterial fracture_material(std::string_view preset) {
   return m;
 }
 
+std::size_t fracture_break_points(const FractureOptions& options) { return check_options(options); }
+
 FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOptions& o, FaceBvh* bvh) {
-  check_options(o);
+  const std::size_t total_points = check_options(o);
   if (!is_finite(impact))
     throw InvalidInputError("fracture: the impact (" + number(impact.x) + ", " + number(impact.y) + ", " +
                             number(impact.z) + ") is not finite");
   if (mesh.n_faces() == 0) throw InvalidInputError("fracture: the mesh has no face");
   if (bvh && bvh->mesh() != &mesh) throw InvalidInputError("fracture: the FaceBvh was built over another mesh");
+  check_thickness(mesh, o.thickness);
 
   FractureResult result;
   Clock::time_point t = Clock::now();
@@ -443,8 +469,6 @@ FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOpt
   result.impact_point = hit->point;
   result.seconds.locate = seconds_since(t);
 
-  std::size_t total_points = 0;
-  for (const FractureRing& r : o.material.rings) total_points += r.points;
   if (total_points == 0) return result;
 
   // ---- frame and metric ----

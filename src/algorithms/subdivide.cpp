@@ -4,6 +4,8 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -139,6 +141,97 @@ void check(const SurfaceMesh& m, Subdivision scheme, int steps) {
     if (halfedges > double(1u << 31))
       throw InvalidInputError("subdivide: " + std::to_string(steps) + " steps would exceed 2^31 half-edges");
   }
+}
+
+// ---- the memory estimate ----
+
+// Live element counts of a mesh (c: face corners), as doubles so that no step overflows.
+struct Counts {
+  double v = 0, e = 0, f = 0, c = 0;
+};
+
+Counts counts_after(const Counts& n, Subdivision scheme) {
+  switch (scheme) {
+    case Subdivision::catmull_clark: return {n.v + n.e + n.f, 2 * n.e + n.c, n.c, 4 * n.c};
+    case Subdivision::sqrt3:
+    case Subdivision::split_faces: return {n.v + n.f, n.e + n.c, n.c, 3 * n.c};
+    default: return {n.v + n.e, 2 * n.e + 3 * n.f, 4 * n.f, 12 * n.f};
+  }
+}
+
+// Bytes per element of a mesh like `m` (connectivity, deletion bits, every property).
+struct ElementBytes {
+  double v, h, e, f, corner;
+  explicit ElementBytes(const SurfaceMesh& m)
+      : v(sizeof(Halfedge) + 0.125 + double(m.vertex_properties().element_bytes())),
+        h(sizeof(Vertex) + sizeof(Halfedge) + sizeof(Face) + double(m.halfedge_properties().element_bytes())),
+        e(0.125 + double(m.edge_properties().element_bytes())),
+        f(sizeof(Halfedge) + 0.125 + double(m.face_properties().element_bytes())),
+        corner(double(m.halfedge_properties().element_bytes())) {}
+  double of(const Counts& n) const { return n.v * v + 2 * n.e * h + n.e * e + n.f * f; }
+};
+
+// The working arrays of one step reading a mesh of counts n (sharp flags, face points, corner
+// offsets, smoothed positions), in bytes per element of the mesh read, and the slack of the arrays
+// the steps grow (capacity beyond size): calibrated against the peak resident memory of steps of
+// each scheme on meshes with and without corner texture coordinates.
+double work_bytes_per_element(Subdivision scheme) {
+  switch (scheme) {
+    case Subdivision::catmull_clark: return 48;
+    case Subdivision::sqrt3:
+    case Subdivision::split_faces: return 24;
+    default: return 8;
+  }
+}
+constexpr double kSlack = 1.25;
+
+double estimate(const SurfaceMesh& m, Subdivision scheme, int steps) {
+  const ElementBytes bytes(m);
+  Counts n{double(m.n_vertices()), double(m.n_edges()), double(m.n_faces()), 0};
+  for (Face f : m.faces()) n.c += double(m.valence(f));
+  const double compact = m.has_garbage() ? bytes.of(n) : 0;
+  double peak = 0, previous = 0;
+  for (int s = 0; s < steps; ++s) {
+    const Counts next = counts_after(n, scheme);
+    // Corner properties (texture coordinates) are gathered per new half-edge before they are set.
+    const double work = work_bytes_per_element(scheme) * (n.v + n.e + n.f) + 2 * next.e * bytes.corner;
+    const double made = kSlack * bytes.of(next);
+    // Step s reads the mesh before it (the input, or the result of step s - 1, still held) and
+    // builds the next one.
+    peak = std::max(peak, compact + (s > 0 ? previous : 0) + made + work);
+    previous = made;
+    n = next;
+  }
+  return peak;
+}
+
+std::size_t saturate(double bytes) {
+  bytes = std::ceil(bytes);
+  return bytes >= double(std::numeric_limits<std::size_t>::max()) ? std::numeric_limits<std::size_t>::max()
+                                                                  : std::size_t(bytes);
+}
+
+std::string bytes_text(double bytes) {
+  const char* units[] = {"bytes", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
+  int u = 0;
+  while (bytes >= 1024 && u < 6) bytes /= 1024, ++u;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, u == 0 ? "%.0f %s" : "%.1f %s", bytes, units[u]);
+  return buf;
+}
+
+void check_memory(const SurfaceMesh& m, Subdivision scheme, int steps, std::size_t max_memory) {
+  if (max_memory == 0 || steps == 0) return;
+  const double need = estimate(m, scheme, steps);
+  if (saturate(need) <= max_memory) return;
+  int fit = 0;
+  while (fit + 1 < steps && saturate(estimate(m, scheme, fit + 1)) <= max_memory) ++fit;
+  throw InvalidInputError("subdivide: " + std::to_string(steps) + (steps == 1 ? " step" : " steps") +
+                          " would need about " + bytes_text(need) + " (estimated) for " +
+                          std::to_string(m.n_faces()) + " faces, more than the memory budget of " +
+                          bytes_text(double(max_memory)) + "; " +
+                          (fit == 0 ? std::string("not even one step fits") : "at most " + std::to_string(fit) + (fit == 1 ? " step fits" : " steps fit")) +
+                          " (subdivide_memory() gives the estimate)");
 }
 
 Old read_old(const SurfaceMesh& m) {
@@ -693,8 +786,14 @@ SurfaceMesh refine(const SurfaceMesh& src, Subdivision scheme) {
 
 }  // namespace
 
-void subdivide(SurfaceMesh& mesh, Subdivision scheme, int steps, const Progress& progress) {
+std::size_t subdivide_memory(const SurfaceMesh& mesh, Subdivision scheme, int steps) {
+  if (steps < 0) throw InvalidInputError("subdivide_memory: steps must be 0 or more, got " + std::to_string(steps));
+  return saturate(estimate(mesh, scheme, steps));
+}
+
+void subdivide(SurfaceMesh& mesh, Subdivision scheme, int steps, const Progress& progress, std::size_t max_memory) {
   check(mesh, scheme, steps);
+  check_memory(mesh, scheme, steps, max_memory);
   report_progress(progress, 0);
   if (steps == 0) return;
   // Every step reads the mesh before it and writes a new one; `mesh` takes the last one only

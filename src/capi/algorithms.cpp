@@ -281,11 +281,8 @@ hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z, co
     FractureOptions f;
     f.material.name = "custom";
     f.material.rings.clear();
-    std::uint64_t points = 0;
-    for (std::uint32_t i = 0; i < o.ring_count; ++i) {
+    for (std::uint32_t i = 0; i < o.ring_count; ++i)
       f.material.rings.push_back({o.rings[i].points, o.rings[i].spacing, o.rings[i].jitter});
-      points += o.rings[i].points;
-    }
     f.material.absolute = need_bool(o.absolute, "absolute");
     f.material.grain = {o.grain[0], o.grain[1], o.grain[2]};
     f.material.grain_stretch = o.grain_stretch;
@@ -296,7 +293,11 @@ hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z, co
     f.tolerance = o.tolerance;
     f.hulls = need_bool(o.hulls, "hulls");
     const Vec3 impact = need_point(x, y, z);
-    count = to_u32(points, "break points");
+    // The library's limits first (rings, break points in all, each field): an illegal material is
+    // HEDGE_ERROR_INVALID_ARGUMENT naming the field, before any buffer size is looked at. Within
+    // the limits the count fits 32 bits.
+    const std::size_t points = fracture_break_points(f);
+    count = static_cast<std::uint32_t>(points);
     check_capacity(points, out_shards, capacity, "out_shards");
     // Its InvalidInputError becomes HEDGE_ERROR_INVALID_ARGUMENT, the mesh unchanged.
     FractureResult r = fracture(object->mesh, impact, f);

@@ -125,8 +125,9 @@ hedge_status guard(Body&& body) noexcept {
     set_error(e.what());
     return HEDGE_ERROR_INVALID_ARGUMENT;
   } catch (const Error& e) {
+    // Every hedge::Error comes from bad input or an illegal request (hedge/error.h), never a bug.
     set_error(e.what());
-    return HEDGE_ERROR_INTERNAL;
+    return HEDGE_ERROR_INVALID_ARGUMENT;
   } catch (const std::bad_alloc&) {
     set_error("out of memory");
     return HEDGE_ERROR_OUT_OF_MEMORY;

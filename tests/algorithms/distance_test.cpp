@@ -136,5 +136,21 @@ TEST(Distance, EmptyMeshNaNPositionAndZeroThreadsAreRefused) {
   EXPECT_THROW((void)hausdorff_distance(cube, cube, {.threads = 0}), InvalidInputError);
 }
 
+TEST(Distance, TooManySamplesAreRefusedInsteadOfWrappingAround) {
+  const SurfaceMesh cube = build(test::cube());
+  // V + samples used to wrap around to V - 1 points, measured as if that were the sample.
+  for (const std::size_t samples : {std::numeric_limits<std::size_t>::max(), kMaxDistanceSamples + 1}) {
+    try {
+      (void)hausdorff_distance(cube, cube, {.samples = samples});
+      FAIL() << "no error for " << samples << " samples";
+    } catch (const InvalidInputError& e) {
+      EXPECT_NE(std::string(e.what()).find("options.samples is " + std::to_string(samples)), std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("100000000"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW((void)one_sided_distance(cube, cube, {.samples = kMaxDistanceSamples + 1}), InvalidInputError);
+}
+
 }  // namespace
 }  // namespace hedge

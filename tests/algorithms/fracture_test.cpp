@@ -266,6 +266,61 @@ TEST(Fracture, RefusalsLeaveTheMeshUnchanged) {
   EXPECT_TRUE(mesh.validate().empty());
 }
 
+//! The message of the InvalidInputError `f` throws, or "" if it throws none.
+template <typename F>
+std::string refusal(F&& f) {
+  try {
+    f();
+  } catch (const InvalidInputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Fracture, WorkIsBoundedRingsPointsAndThicknessAreLimitedBeforeTheMeshIsTouched) {
+  SurfaceMesh mesh = plate(10);
+  const test::Snapshot before = test::snapshot(mesh);
+  FaceBvh bvh(mesh);
+  // The hostile material: 1000 rings of 100000 points each ran for minutes. Now refused at once.
+  FractureOptions o;
+  o.material.name = "hostile";
+  o.material.rings.assign(1000, FractureRing{100000, 1, 0});
+  std::string what = refusal([&] { fracture(mesh, {5, 5, 0}, o, &bvh); });
+  EXPECT_NE(what.find("rings[0].points brings the break points of rings[0..0] to 100000"), std::string::npos) << what;
+  EXPECT_NE(what.find("limit of 10000"), std::string::npos) << what;
+  // The limit over all rings, each ring within its own limit.
+  o.material.rings.assign(3, FractureRing{4000, 1, 0});
+  what = refusal([&] { fracture(mesh, {5, 5, 0}, o, &bvh); });
+  EXPECT_NE(what.find("rings[2].points"), std::string::npos) << what;
+  EXPECT_NE(what.find("12000"), std::string::npos) << what;
+  o.material.rings.assign(kFractureMaxRings + 1, FractureRing{0, 1, 0});
+  what = refusal([&] { fracture(mesh, {5, 5, 0}, o, &bvh); });
+  EXPECT_NE(what.find("1001 rings, more than the limit of 1000"), std::string::npos) << what;
+  // At the limits: accepted.
+  o.material.rings.assign(kFractureMaxRings, FractureRing{0, 1e-3, 0});
+  o.material.rings.back().points = static_cast<unsigned>(kFractureMaxPoints);
+  EXPECT_EQ(fracture_break_points(o), kFractureMaxPoints);
+  EXPECT_EQ(fracture_break_points({}), 40u);
+  EXPECT_THROW((void)fracture_break_points(FractureOptions{.material = {.rings = {{100001, 1, 0}}}}),
+               InvalidInputError);
+
+  // A thickness beyond 10 diagonals of the mesh (the plate's is sqrt(200)): refused, naming the bound.
+  o = {};
+  o.thickness = 1e30;
+  what = refusal([&] { fracture(mesh, {5, 5, 0}, o, &bvh); });
+  EXPECT_NE(what.find("thickness is 1e+30"), std::string::npos) << what;
+  EXPECT_NE(what.find("at most 141.42"), std::string::npos) << what;
+  o.thickness = 10 * std::sqrt(200.0) * 1.001;
+  EXPECT_THROW(fracture(mesh, {5, 5, 0}, o, &bvh), InvalidInputError);
+  EXPECT_TRUE(test::snapshot(mesh) == before);
+
+  // Within the limit: closed shards of finite volume.
+  o.thickness = 10 * std::sqrt(200.0) * 0.999;
+  const FractureResult r = fracture(mesh, {5.2f, 5.1f, 0}, o, &bvh);
+  ASSERT_FALSE(r.shards.empty());
+  for (const Shard& s : r.shards) EXPECT_TRUE(std::isfinite(s.volume) && s.volume < 1e6) << s.volume;
+}
+
 TEST(Fracture, NoBreakPointsNoShardsMeshUnchanged) {
   SurfaceMesh mesh = plate(10);
   const test::Snapshot before = test::snapshot(mesh);

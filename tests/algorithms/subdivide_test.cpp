@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <new>
 #include <random>
 #include <stdexcept>
@@ -236,6 +237,47 @@ TEST(Subdivide, PolygonsAndBadStepsAreRefusedUnchanged) {
   subdivide(empty, Subdivision::loop, 3);
   EXPECT_EQ(empty.n_faces(), 0u);
   EXPECT_TRUE(tet.validate().empty());
+}
+
+TEST(Subdivide, TheMemoryEstimateBoundsTheResultAndABudgetRefusesBeforeAllocating) {
+  SurfaceMesh tet = build(test::tetrahedron());
+  const std::size_t plain = subdivide_memory(tet, Subdivision::loop, 3);
+  tet.add_vertex_property<double>("v:weight", 0);  // properties count in the estimate
+  EXPECT_GT(subdivide_memory(tet, Subdivision::loop, 3), plain);
+  EXPECT_EQ(subdivide_memory(tet, Subdivision::loop, 0), 0u);
+  EXPECT_THROW((void)subdivide_memory(tet, Subdivision::loop, -1), InvalidInputError);
+  // Each step of the 1-to-4 schemes makes about four times the memory.
+  const std::size_t five = subdivide_memory(tet, Subdivision::loop, 5), six = subdivide_memory(tet, Subdivision::loop, 6);
+  EXPECT_GT(six, 3 * five);
+  EXPECT_LT(six, 5 * five);
+  // Astronomically many steps saturate instead of overflowing.
+  EXPECT_EQ(subdivide_memory(tet, Subdivision::loop, 100), std::numeric_limits<std::size_t>::max());
+  for (Subdivision scheme : {Subdivision::loop, Subdivision::catmull_clark, Subdivision::sqrt3, Subdivision::split_faces}) {
+    SurfaceMesh m = tet;
+    const std::size_t estimate = subdivide_memory(m, scheme, 4);
+    subdivide(m, scheme, 4, {}, estimate);  // the estimate is a budget that suffices
+    // It covers the result (the last mesh made) and is not far above the two last meshes.
+    EXPECT_GE(estimate, m.memory_bytes()) << int(scheme);
+    EXPECT_LT(estimate, 4 * m.memory_bytes()) << int(scheme);
+  }
+
+  // A budget one byte short: refused, the mesh untouched, and almost nothing allocated.
+  const std::size_t need = subdivide_memory(tet, Subdivision::loop, 6);
+  const long before = test::heap_allocations();
+  try {
+    subdivide(tet, Subdivision::loop, 6, {}, need - 1);
+    FAIL() << "no error past the budget";
+  } catch (const InvalidInputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("6 steps would need about"), std::string::npos) << what;
+    EXPECT_NE(what.find("at most 5 steps fit"), std::string::npos) << what;
+  }
+  EXPECT_LT(test::heap_allocations() - before, 200);  // the message and the checks' threads, no mesh
+  EXPECT_EQ(tet.n_faces(), 4u);
+  EXPECT_TRUE(tet.validate().empty());
+  // 0: no budget.
+  subdivide(tet, Subdivision::loop, 2, {}, 0);
+  EXPECT_EQ(tet.n_faces(), 64u);
 }
 
 // ---- The strong guarantee: an allocation that fails anywhere in a step leaves the mesh as it was ----

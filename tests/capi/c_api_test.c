@@ -1855,6 +1855,26 @@ static void test_fracture(void) {
   o.rings[1].spacing = -1;
   CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, &o, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_ERROR_HAS("rings[1].spacing");
+  /* Points past the library's limits: an illegal option (not an internal error), checked before the
+   * capacity, and nothing changes. */
+  CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o));
+  o.ring_count = 2;
+  o.rings[0].points = 0xFFFFFFFFu;
+  o.rings[1].points = 0xFFFFFFFFu;
+  CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, &o, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("rings[0].points");
+  o.ring_count = 1;
+  CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, &o, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("rings[0].points");
+  o.ring_count = 2;
+  o.rings[0].points = 6000;
+  o.rings[1].points = 6000;
+  CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, &o, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("10000");
+  CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o));
+  o.thickness = 1e30;
+  CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, &o, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("diagonal");
   CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, NULL, shards, 40, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK(counts_of(plate).faces == faces_before);
 

@@ -236,6 +236,16 @@ TEST(SurfaceMesh, MemoryPerVertexOfClosedTriangleMesh) {
   EXPECT_LE(m.memory_bytes(), arrays + 3 * 8);
 }
 
+TEST(SurfaceMesh, PropertiesTellTheBytesOfOneElement) {
+  SurfaceMesh m = build(tetrahedron());
+  EXPECT_EQ(m.vertex_properties().element_bytes(), sizeof(Vec3));  // the positions
+  EXPECT_EQ(m.face_properties().element_bytes(), 0u);
+  m.add_vertex_property<double>("v:weight", 0);
+  m.add_face_property<std::uint8_t>("f:tag", 0);
+  EXPECT_EQ(m.vertex_properties().element_bytes(), sizeof(Vec3) + sizeof(double));
+  EXPECT_EQ(m.face_properties().element_bytes(), 1u);
+}
+
 TEST(SurfaceMesh, ReleaseConnectivityHandsTheOldLinksOverAndResizes) {
   SurfaceMesh m = build(tetrahedron());
   auto id = m.add_face_property<int>("f:id", -1);

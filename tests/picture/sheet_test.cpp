@@ -37,5 +37,24 @@ TEST(ContactSheet, RefusesNothingAndTooMuch) {
   EXPECT_THROW(contact_sheet(wide), InvalidInputError);
 }
 
+TEST(ContactSheet, TheSizeIsCheckedBeforeAnyPanelIsDrawnWithTheRealSize) {
+  // 200 panels of 2000x2000 in one row: 400000 pixels wide (the message once said "16385x1").
+  try {
+    check_contact_sheet(200, 2000, 2000, 0);
+    FAIL() << "no error";
+  } catch (const InvalidInputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("would be 400000x2036 pixels"), std::string::npos) << what;
+    EXPECT_EQ(what.find("16385x1"), std::string::npos) << what;
+  }
+  // Within the sides but past the pixels: 8 x 8 cells of 2000x2000 (16000x16288).
+  EXPECT_THROW(check_contact_sheet(64, 2000, 2000, 8), InvalidInputError);
+  int w = 0, h = 0;
+  check_contact_sheet(4, 100, 80, 2, &w, &h);
+  EXPECT_EQ(w, 200);
+  EXPECT_EQ(h, 2 * (80 + 22));
+  EXPECT_THROW(check_contact_sheet(0, 100, 80, 2), InvalidInputError);
+}
+
 }  // namespace
 }  // namespace hedge::picture

@@ -132,4 +132,23 @@ TEST_F(HedgeCli, FractureRefusesAMissAndBadArguments) {
   EXPECT_NE(m.err.find("glass, stone, wood, ice"), std::string::npos) << m.err;
 }
 
+TEST_F(HedgeCli, FractureWorkIsBoundedWhateverTheMaterialFile) {
+  // 1000 rings of 100000 points in a 37 KB file ran past 300 s; now refused at once, unchanged.
+  std::string rings;
+  for (int i = 0; i < 1000; ++i) rings += std::string(i ? "," : "") + R"({"points": 100000, "spacing": 1})";
+  write_text(tmp("hostile.json"), R"({"rings": [)" + rings + "]}");
+  const Result r = run({"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--tolerance", "100",
+                        "--material", tmp("hostile.json").string(), "-o", tmp("out").string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("more than the limit of 10000 in all rings"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(tmp("out")));
+  // A thickness of 1e30 gave shards of volume 1e86; now bounded by the mesh's diagonal.
+  const Result t = run({"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--tolerance", "100",
+                        "--thickness", "1e30", "-o", tmp("out").string()});
+  EXPECT_EQ(t.code, 1);
+  EXPECT_NE(t.err.find("times the diagonal of the mesh's bounding box"), std::string::npos) << t.err;
+  EXPECT_NE(t.err.find("use a thickness of at most"), std::string::npos) << t.err;
+  EXPECT_FALSE(fs::exists(tmp("out")));
+}
+
 }  // namespace

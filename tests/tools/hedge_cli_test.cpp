@@ -373,6 +373,13 @@ TEST_F(HedgeCli, HostileGltfFilesAreDataErrors) {
   const Result r = run({"info", beside, "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(json::parse(r.out)["faces"], 1);
+  // --max-memory is the read budget too: a small one refuses what the default reads.
+  ASSERT_EQ(run({"info", data("two_quads.glb")}).code, 0);
+  expect_data_error({"info", data("two_quads.glb"), "--max-memory", "1K"},
+                    "two_quads.glb: its JSON would take about");
+  expect_data_error({"convert", data("two_quads.glb"), tmp("q.obj").string(), "--max-memory", "1K"},
+                    "more than the read budget of 1024 bytes");
+  EXPECT_FALSE(fs::exists(tmp("q.obj")));
   expect_data_error({"info", beside, "--no-external-buffers"},
                     "beside.gltf: buffer 0: its data is in a separate file ('uri'), and reading external buffers is turned off");
 }

@@ -90,4 +90,16 @@ TEST_F(HedgeCli, RenderRefusesBadSizesAndOutputsWithoutWriting) {
   EXPECT_FALSE(fs::exists(tmp("x.jpg")));
 }
 
+TEST_F(HedgeCli, RenderGridChecksTheSheetBeforeDrawingAnyPanel) {
+  // 200 panels of 2000x2000 in one row: drawn for 74 s and 2.3 GB, then refused as "16385x1".
+  std::vector<std::string> args = {"render", "-o", tmp("grid.png").string(), "--size", "2000x2000", "--grid"};
+  for (int i = 0; i < 200; ++i) args.push_back(data("missing.obj"));  // never read: refused before
+  const Result r = run(args);
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("would be 400000x2036 pixels"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("16385x1"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("missing.obj"), std::string::npos) << r.err;  // no panel was loaded
+  EXPECT_FALSE(fs::exists(tmp("grid.png")));
+}
+
 }  // namespace

@@ -12,6 +12,7 @@
 #include "hedge/algorithms/decimate.h"
 #include "hedge/error.h"
 #include "load.h"
+#include "numbers.h"
 #include "progress_bar.h"
 
 namespace hedge::cli {
@@ -73,39 +74,35 @@ Command add_decimate_command(CLI::App& parent) {
   app->add_option("IN", o->input, "Input mesh file (triangles)")->required();
   app->add_option("OUT", o->output, "Output mesh file; missing folders are created")->required();
   auto* ratio = app->add_option("--ratio", o->ratio, "Keep this fraction of the vertices, in (0, 1]")
-                    ->check(CLI::Validator(
-                        [](std::string& s) -> std::string {
-                          char* end = nullptr;
-                          const double v = std::strtod(s.c_str(), &end);
-                          return end != s.c_str() && *end == 0 && v > 0 && v <= 1 ? "" : "must be in (0, 1]";
-                        },
-                        "(0, 1]"));
-  auto* faces = app->add_option("--faces", o->faces, "Stop at this many faces")->check(CLI::PositiveNumber);
+                    ->transform(real_number(0, 1, true));
+  auto* faces = app->add_option("--faces", o->faces, "Stop at this many faces")
+                    ->transform(whole_number<std::size_t>(1));
   auto* vertices =
-      app->add_option("--vertices", o->vertices, "Stop at this many vertices")->check(CLI::PositiveNumber);
+      app->add_option("--vertices", o->vertices, "Stop at this many vertices")
+          ->transform(whole_number<std::size_t>(1));
   ratio->excludes(vertices);
   app->add_option("--max-error", o->max_error,
                   "Stop before a collapse that would move the surface by more than this distance (model units)")
-      ->check(CLI::NonNegativeNumber);
+      ->transform(real_number(0));
   app->add_option("--boundary-weight", o->boundary_weight, "Weight of the planes that keep open boundaries (0: none)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->transform(real_number(0));
   app->add_flag("--keep-boundary", o->keep_boundary, "Boundary vertices never move and are never removed");
   app->add_option("--feature-angle", o->feature_angle,
                   "Edges whose faces meet at more than this dihedral angle (degrees) are kept like boundaries")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->transform(real_number(0));
   app->add_option("--feature-weight", o->feature_weight, "Weight of the planes that keep feature edges (0: none)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->transform(real_number(0));
   app->add_flag("--break-seams", o->break_seams, "Lift the seam rule of decimation (collapses off a UV seam stay refused)");
   app->add_option("--attribute-weight", o->attribute_weight, "Weight of texture distortion in the error (0: none)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->transform(real_number(0));
   app->add_option("--max-normal-change", o->max_normal_change,
                   "Refuse collapses that turn a face by more than this many degrees")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 180.0));
+      ->transform(real_number(0, 180));
   app->add_flag("--ascii", o->ascii, "Write PLY and STL as text instead of binary");
   add_load_options(*app, o->load);
   app->callback([app, ratio, faces, vertices] {

@@ -1,4 +1,5 @@
 // hedge distance A B: how far apart two surfaces are, as the sampled Hausdorff distance.
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -11,6 +12,8 @@
 #include "hedge/algorithms/geometry.h"
 #include "hedge/error.h"
 #include "load.h"
+#include "memory_budget.h"
+#include "numbers.h"
 
 namespace hedge::cli {
 
@@ -37,6 +40,9 @@ void print_side(const char* label, const OneSidedDistance& d) {
 int run_distance(const DistanceCommandOptions& o) {
   const LoadedMesh a = load_mesh(o.a, o.load);
   const LoadedMesh b = load_mesh(o.b, o.load);
+  // One distance (8 bytes) per point of a surface, one surface at a time.
+  const double points = double(std::max(a.mesh.n_vertices(), b.mesh.n_vertices())) + double(o.samples);
+  check_memory(8 * points, o.load.memory, std::to_string(o.samples) + " samples", "use fewer --samples");
   HausdorffDistance d;
   try {
     d = hausdorff_distance(a.mesh, b.mesh, {.samples = o.samples, .seed = o.seed});
@@ -77,9 +83,12 @@ Command add_distance_command(CLI::App& parent) {
       "distance", "Sampled symmetric Hausdorff distance and mean distance between the surfaces of two meshes");
   app->add_option("A", options->a, "First mesh file")->required();
   app->add_option("B", options->b, "Second mesh file")->required();
-  app->add_option("--samples", options->samples, "Points drawn on the faces of each surface, besides its vertices")
-      ->check(CLI::NonNegativeNumber);
-  app->add_option("--seed", options->seed, "Seed of the draws");
+  app->add_option("--samples", options->samples, "Points drawn on the faces of each surface, besides its vertices (at most 100000000; 8 bytes each)")
+      ->capture_default_str()
+      ->transform(whole_number<std::size_t>(0, kMaxDistanceSamples));
+  app->add_option("--seed", options->seed, "Seed of the draws")
+      ->capture_default_str()
+      ->transform(whole_number<std::uint64_t>(0));
   app->add_flag("--json", options->json, "Print one JSON object instead of text");
   add_load_options(*app, options->load);
   return {app, [options] { return run_distance(*options); }};

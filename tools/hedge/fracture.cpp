@@ -19,6 +19,7 @@
 #include "hedge/error.h"
 #include "load.h"
 #include "material_json.h"
+#include "numbers.h"
 
 namespace hedge::cli {
 
@@ -43,10 +44,9 @@ Vec3 parse_impact(const std::string& text) {
     if ((i < 2) != (comma != std::string::npos))
       throw CLI::ValidationError("--impact", "expected three numbers x,y,z, got '" + text + "'");
     const std::string part = text.substr(start, i < 2 ? comma - start : std::string::npos);
-    char* end = nullptr;
-    const double v = std::strtod(part.c_str(), &end);
-    if (part.empty() || *end != 0 || !std::isfinite(v))
-      throw CLI::ValidationError("--impact", "'" + part + "' is not a finite number (in '" + text + "')");
+    double v = 0;
+    const std::string why = finite_real(part, &v);
+    if (!why.empty()) throw CLI::ValidationError("--impact", why + " (in '" + text + "')");
     p[static_cast<std::size_t>(i)] = static_cast<float>(v);
     start = comma + 1;
   }
@@ -187,19 +187,21 @@ Command add_fracture_command(CLI::App& parent) {
           "x,y,z"));
   app->add_option("--material", o->material, "glass, stone, wood, ice, or a material file FILE.json (docs/fracture.md)")
       ->capture_default_str();
-  app->add_option("--seed", o->seed, "Seed of the break points")->capture_default_str();
+  app->add_option("--seed", o->seed, "Seed of the break points")
+      ->capture_default_str()
+      ->transform(whole_number<std::uint64_t>(0));
   app->add_option("-o,--output", o->output, "Output folder (created if missing)")->required();
   app->add_option("--thickness", o->thickness, "Extrude each shard into a solid this thick (model units); 0: none")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->transform(real_number(0));
   app->add_option("--density", o->density, "Mass per unit volume for the mass properties")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(real_number(0, kInf, true));
   app->add_option("--tolerance", o->tolerance,
                   "Largest distance from the impact to the surface (model units); 0: 1e-3 of the nearest face's "
                   "longest edge")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->transform(real_number(0));
   app->add_flag("--json", o->json, "Print the summary as JSON, with timings");
   add_load_options(*app, o->load);
   return {app, [o] { return run_fracture(*o); }};

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "hedge/error.h"
+#include "numbers.h"
 
 namespace hedge::cli {
 
@@ -26,15 +27,17 @@ void add_load_options(CLI::App& command, LoadOptions& options) {
   command
       .add_option("--weld-eps", options.weld_eps,
                   "Welding tolerance relative to the bounding-box diagonal (implies --weld epsilon)")
-      ->check(CLI::NonNegativeNumber);
+      ->transform(real_number(0));
   command.add_flag("--no-external-buffers", options.no_external_buffers,
                    "glTF: refuse buffers kept in separate files (by default they are read from the .gltf's "
                    "folder and below, never from elsewhere)");
+  add_max_memory_option(command, options.memory);
 }
 
 ReadOptions read_options(const LoadOptions& options) {
   ReadOptions read;
   read.external_buffers = !options.no_external_buffers;
+  if (!options.memory.text.empty()) read.max_memory = effective_budget(options.memory);
   return read;
 }
 

@@ -7,6 +7,7 @@
 #include "hedge/core/build.h"
 #include "hedge/core/surface_mesh.h"
 #include "hedge/io/io.h"
+#include "memory_budget.h"
 
 namespace hedge::cli {
 
@@ -15,9 +16,12 @@ struct LoadOptions {
   std::string weld;        //!< "none", "exact", "epsilon"; empty keeps the format's default
   double weld_eps = -1.0;  //!< relative welding tolerance; negative when not given
   bool no_external_buffers = false;  //!< glTF: refuse buffers stored in separate files
+  //! --max-memory: the budget of reading a glTF (else the reader's own default, relative to the
+  //! file's size) and of the work a command's numbers size (else the memory available).
+  MemoryBudget memory;
 };
 
-//! Adds --strict, --weld, --weld-eps and --no-external-buffers to a subcommand.
+//! Adds --strict, --weld, --weld-eps, --no-external-buffers and --max-memory to a subcommand.
 void add_load_options(CLI::App& command, LoadOptions& options);
 
 //! The build options for `format` after applying the command line's choices. --weld-eps without
@@ -31,7 +35,7 @@ struct LoadedMesh {
 };
 
 //! The read options of the command line: external glTF buffers beside the file unless
-//! --no-external-buffers, the default memory budget.
+//! --no-external-buffers, and --max-memory as the read budget when given.
 ReadOptions read_options(const LoadOptions& options);
 
 //! Reads and builds `path`. Errors that do not name the file already (topology, invalid input) are

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,6 +15,8 @@
 #include "commands.h"
 #include "hedge/error.h"
 #include "load.h"
+#include "memory_budget.h"
+#include "numbers.h"
 #include "picture/diagram.h"
 #include "picture/raster.h"
 #include "picture/sheet.h"
@@ -44,17 +47,36 @@ struct RenderCommandOptions {
   LoadOptions load;
 };
 
-// "WxH" -> (W, H); nothing if malformed.
+//! What render() holds for one picture: a depth key (float) and a colour (3 bytes) per sample, and
+//! the picture (3 bytes a pixel). The per-face arrays, in proportion to the mesh, come on top.
+double picture_bytes(int w, int h, int supersample) {
+  return double(w) * h * supersample * supersample * (sizeof(float) + 3) + 3.0 * w * h;
+}
+
+// "WxH" -> (W, H), each side a whole number that fits an int; nothing if malformed.
 std::optional<std::pair<int, int>> parse_size(const std::string& text) {
-  int w = 0, h = 0;
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X')) return std::nullopt;
-  return std::pair{w, h};
+  const std::size_t x = text.find_first_of("xX");
+  if (x == std::string::npos) return std::nullopt;
+  const std::optional<long> w = parse_integer<long>(std::string_view(text).substr(0, x));
+  const std::optional<long> h = parse_integer<long>(std::string_view(text).substr(x + 1));
+  if (!w || !h) return std::nullopt;
+  // A side beyond an int is refused by check_size all the same: clamp it rather than wrap it.
+  auto clamp = [](long v) { return int(std::clamp<long>(v, std::numeric_limits<int>::min(), std::numeric_limits<int>::max())); };
+  return std::pair{clamp(*w), clamp(*h)};
 }
 
 std::string size_check(const std::string& text) {
+  const std::string expected = "expected WIDTHxHEIGHT, two whole numbers such as 800x600, got '" + text + "'";
+  const std::size_t x = text.find_first_of("xX");
+  if (x == std::string::npos) return expected;
+  for (const std::string& side : {text.substr(0, x), text.substr(x + 1)}) {
+    const std::optional<long> v = parse_integer<long>(side);
+    const bool digits = !side.empty() && side.find_first_not_of("0123456789") == std::string::npos;
+    if (!v && !digits) return expected;
+    if (!v || *v < 1 || *v > kMaxSide)
+      return "each side must be from 1 to " + std::to_string(kMaxSide) + " pixels, got " + side + " in '" + text + "'";
+  }
   const auto size = parse_size(text);
-  if (!size) return "expected WIDTHxHEIGHT, such as 800x600, got '" + text + "'";
   try {
     check_size(size->first, size->second, "a picture");
   } catch (const InvalidInputError& e) {
@@ -147,6 +169,12 @@ int run_render(const RenderCommandOptions& o) {
     }
     what = "the half-edge diagram of " + o.input + " (" + std::to_string(loaded.mesh.n_halfedges()) + " half-edges)";
   } else if (!o.grid.empty()) {
+    // The sheet's size and memory before any panel is drawn: every panel is kept for the sheet.
+    int sheet_w = 0, sheet_h = 0;
+    check_contact_sheet(o.grid.size(), w, h, o.columns, &sheet_w, &sheet_h);
+    check_memory(picture_bytes(w, h, o.supersample) + 3.0 * w * h * double(o.grid.size()) + 3.0 * sheet_w * sheet_h,
+                 o.load.memory, "a sheet of " + std::to_string(o.grid.size()) + " pictures of " + o.size,
+                 "use a smaller --size, a lower --supersample or fewer meshes");
     std::vector<Panel> panels;
     for (const std::string& path : o.grid) {
       LoadedMesh loaded;
@@ -159,6 +187,8 @@ int run_render(const RenderCommandOptions& o) {
     what = std::to_string(panels.size()) + " meshes side by side (" + std::to_string(sheet.width()) + "x" +
            std::to_string(sheet.height()) + ")";
   } else {
+    check_memory(picture_bytes(w, h, o.supersample), o.load.memory, "a picture of " + o.size,
+                 "use a smaller --size or a lower --supersample");
     LoadedMesh loaded;
     const Image image = picture_of(o.input, o, w, h, loaded);
     if (!parent.empty()) std::filesystem::create_directories(parent);
@@ -182,28 +212,34 @@ Command add_render_command(CLI::App& parent) {
   app->add_option("FILE", o->input, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)");
   app->add_option("-o,--output", o->output, "Picture to write: .png, or .svg with --halfedges")->required();
   app->add_option("--grid", o->grid, "Several mesh files, drawn side by side with captions")->expected(1, -1);
-  app->add_option("--columns", o->columns, "Pictures per row with --grid (0: all in one row)")->check(CLI::NonNegativeNumber);
+  app->add_option("--columns", o->columns, "Pictures per row with --grid (0: all in one row)")
+      ->transform(whole_number<int>(0));
   app->add_option("--size", o->size, "Picture size WIDTHxHEIGHT (per mesh with --grid)")->capture_default_str()
       ->check(CLI::Validator(size_check, "WxH", "size"));
   app->add_option("--view", o->view, std::string("Camera: ") + view_names())->capture_default_str()
       ->check(CLI::IsMember({"front", "back", "left", "right", "top", "bottom", "iso"}));
-  app->add_option("--eye", o->eye, "Explicit camera position x,y,z (with --target)")->delimiter(',')->expected(3);
-  app->add_option("--target", o->target, "Point the explicit camera looks at, x,y,z")->delimiter(',')->expected(3);
-  app->add_option("--up", o->up, "Up direction of the explicit camera, x,y,z (default 0,1,0)")->delimiter(',')->expected(3);
+  app->add_option("--eye", o->eye, "Explicit camera position x,y,z (with --target)")->delimiter(',')->expected(3)
+      ->transform(real_number(-kInf, kInf));
+  app->add_option("--target", o->target, "Point the explicit camera looks at, x,y,z")->delimiter(',')->expected(3)
+      ->transform(real_number(-kInf, kInf));
+  app->add_option("--up", o->up, "Up direction of the explicit camera, x,y,z (default 0,1,0)")->delimiter(',')->expected(3)
+      ->transform(real_number(-kInf, kInf));
   app->add_option("--fov", o->fov, "Vertical field of view in degrees of the explicit camera (0: orthographic)")->capture_default_str()
-      ->check(CLI::Range(0.0, 179.0));
+      ->transform(real_number(0, 179));
   app->add_option("--shading", o->shading, "flat or smooth")->capture_default_str()->check(CLI::IsMember({"flat", "smooth"}));
   app->add_option("--color-by", o->color_by, "none, face, shard (connected piece), curvature or valence")->capture_default_str()
       ->check(CLI::IsMember({"none", "face", "shard", "curvature", "valence"}));
   app->add_flag("--wireframe", o->wireframe, "Draw every edge");
   app->add_option("--feature-angle", o->feature_angle,
                   "Highlight edges whose faces meet at more than this angle, in degrees (0: none)")->capture_default_str()
-      ->check(CLI::Range(0.0, 180.0));
+      ->transform(real_number(0, 180));
   app->add_option("--supersample", o->supersample, "Samples per pixel along each axis, 1..4 (anti-aliasing)")->capture_default_str()
-      ->check(CLI::Range(1, 4));
-  app->add_option("--threads", o->threads, "Threads (0: every core)")->capture_default_str();
+      ->transform(whole_number<int>(1, 4));
+  app->add_option("--threads", o->threads, "Threads (0: every core, at most 16 are used)")->capture_default_str()
+      ->transform(whole_number<unsigned>(0));
   app->add_flag("--halfedges", o->halfedges, "Draw the half-edge diagram of a small mesh instead");
-  app->add_option("--max-faces", o->max_faces, "Largest mesh --halfedges draws")->capture_default_str()->check(CLI::PositiveNumber);
+  app->add_option("--max-faces", o->max_faces, "Largest mesh --halfedges draws")->capture_default_str()
+      ->transform(whole_number<std::size_t>(1));
   add_load_options(*app, o->load);
   // Command-line mistakes are usage errors (exit 2), found while parsing.
   app->parse_complete_callback([o] {

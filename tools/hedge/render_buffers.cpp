@@ -9,6 +9,8 @@
 #include "support/random_edits.h"
 #include "hedge/render/render_sync.h"
 #include "load.h"
+#include "memory_budget.h"
+#include "numbers.h"
 #include "mesh_stats.h"
 
 namespace hedge::cli {
@@ -34,6 +36,9 @@ double median(std::vector<double> v) {
 }
 
 int run_render_buffers(const RenderBuffersOptions& options) {
+  // The bytes of every sync are kept for the median: 8 bytes an edit.
+  check_memory(8.0 * double(options.edits), options.load.memory, std::to_string(options.edits) + " edits",
+               "use fewer --edits");
   LoadedMesh loaded = load_mesh(options.file, options.load);
   SurfaceMesh& mesh = loaded.mesh;
   const std::size_t mesh_vertices = mesh.n_vertices(), mesh_faces = mesh.n_faces();
@@ -108,8 +113,10 @@ Command add_render_buffers_command(CLI::App& parent) {
   app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
   app->add_option("--edits", options->edits, "Random local edits in the sample")
       ->capture_default_str()
-      ->check(CLI::Range(0, 10000000));
-  app->add_option("--seed", options->seed, "Random seed")->capture_default_str();
+      ->transform(whole_number<std::size_t>(0, 10000000));
+  app->add_option("--seed", options->seed, "Random seed")
+      ->capture_default_str()
+      ->transform(whole_number<std::uint64_t>(0));
   app->add_option("--winding", options->winding, "Index winding: ccw, or cw (Unity, Direct3D)")
       ->capture_default_str()
       ->check(CLI::IsMember({"ccw", "cw"}));

@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "hedge/algorithms/smooth.h"
 #include "load.h"
+#include "numbers.h"
 #include "progress_bar.h"
 
 namespace hedge::cli {
@@ -61,11 +62,14 @@ Command add_smooth_command(CLI::App& parent) {
                   "or implicit (backward Euler steps of the cotangent flow; lambda is the time step)")
       ->capture_default_str()
       ->check(CLI::IsMember({"uniform", "taubin", "cotan", "implicit"}));
-  app->add_option("--iterations", o->iterations, "Iterations")->capture_default_str()->check(CLI::Range(0, 100000));
+  app->add_option("--iterations", o->iterations, "Iterations")->capture_default_str()->transform(whole_number<int>(0, 100000));
   app->add_option("--lambda", o->lambda,
                   "Step toward the average, in (0, 1]; for implicit, the time step in squared mean edge lengths")
-      ->capture_default_str();
-  app->add_option("--mu", o->mu, "Taubin's inflating step, below -lambda")->capture_default_str();
+      ->capture_default_str()
+      ->transform(real_number(-kInf, kInf));
+  app->add_option("--mu", o->mu, "Taubin's inflating step, below -lambda")
+      ->capture_default_str()
+      ->transform(real_number(-kInf, kInf));
   app->add_flag("--free-boundary", o->free_boundary, "Let boundary vertices move along the boundary");
   app->add_flag("--ascii", o->ascii, "Write PLY and STL as text instead of binary");
   add_load_options(*app, o->load);

@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "support/random_edits.h"
 #include "load.h"
+#include "numbers.h"
 #include "mesh_stats.h"
 
 namespace hedge::cli {
@@ -83,11 +84,14 @@ Command add_stress_command(CLI::App& parent) {
   auto options = std::make_shared<StressOptions>();
   CLI::App* app = parent.add_subcommand("stress", "Apply a seeded random sequence of local operations and check validity");
   app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
-  app->add_option("--ops", options->ops, "Number of operations")->capture_default_str()->check(CLI::Range(0, 100000000));
-  app->add_option("--seed", options->seed, "Random seed")->capture_default_str();
+  app->add_option("--ops", options->ops, "Number of operations")->capture_default_str()->transform(whole_number<std::size_t>(0, 100000000));
+  app->add_option("--seed", options->seed, "Random seed")
+      ->capture_default_str()
+      ->transform(whole_number<std::uint64_t>(0));
   app->add_option("--validate-every", options->validate_every,
                   "Validate after every N-th operation (0: only at the end)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->transform(whole_number<std::size_t>(0));
   app->add_flag("--json", options->json, "Print one JSON object");
   add_load_options(*app, options->load);
   return {app, [options] { return run_stress(*options); }};

@@ -26,6 +26,8 @@
 #include "hedge/core/operations.h"
 #include "hedge/error.h"
 #include "load.h"
+#include "memory_budget.h"
+#include "numbers.h"
 #include "mesh_stats.h"
 #include "picture/diagram.h"
 #include "picture/raster.h"
@@ -47,6 +49,7 @@ struct TourOptions {
   //! tour of a large mesh stays quick and small.
   std::size_t max_faces = 4'000'000;
   LoadOptions load;
+  //! Stages whose subdivision is estimated to need more memory are skipped too.
 };
 
 struct Row {
@@ -175,7 +178,11 @@ int run_tour(const TourOptions& o) {
   // large mesh (a step makes as many quads as there are face corners).
   std::size_t corners = 0;
   for (Face f : mesh.faces()) corners += mesh.valence(f);
-  const int cc_steps = corners * 4 <= o.max_faces ? 2 : corners <= o.max_faces ? 1 : 0;
+  const std::uint64_t budget = effective_budget(o.load.memory);
+  const std::string too_large = "the result would pass " + std::to_string(o.max_faces) + " faces or " +
+                                memory_text(double(budget)) + " of memory (--max-faces, --max-memory)";
+  int cc_steps = corners * 4 <= o.max_faces ? 2 : corners <= o.max_faces ? 1 : 0;
+  while (cc_steps > 0 && subdivide_memory(mesh, Subdivision::catmull_clark, cc_steps) > budget) --cc_steps;
   if (cc_steps > 0) {
     SurfaceMesh cc = mesh;
     t = Clock::now();
@@ -186,14 +193,14 @@ int run_tour(const TourOptions& o) {
     add("Catmull-Clark, " + std::to_string(cc_steps) + (cc_steps == 1 ? " step" : " steps"), cc, ms, r,
         base + "_catmull_clark.obj");
   } else {
-    skipped.push_back({"Catmull-Clark", "the result would pass " + std::to_string(o.max_faces) + " faces"});
+    skipped.push_back({"Catmull-Clark", too_large});
   }
   // 4. Split all faces 1-to-3 at their centroids (a triangle per corner), 5. the result through one
   // step of Loop's subdivision, and 6. smoothed instead by Taubin's filter, which does not shrink
   // it. A mesh too large to split is smoothed as it is.
   SurfaceMesh split = mesh;
   std::optional<SurfaceMesh> fine;  // the finest triangle mesh so far, for decimation and fracture
-  const bool split_fits = corners <= o.max_faces;
+  const bool split_fits = corners <= o.max_faces && subdivide_memory(mesh, Subdivision::split_faces, 1) <= budget;
   if (split_fits) {
     t = Clock::now();
     split_all_faces(split);
@@ -203,9 +210,9 @@ int run_tour(const TourOptions& o) {
     r.shading = Shading::flat;
     add("split all faces (1-to-3)", split, ms, r, base + "_split.obj");
   } else {
-    skipped.push_back({"split all faces", "the result would pass " + std::to_string(o.max_faces) + " faces"});
+    skipped.push_back({"split all faces", too_large});
   }
-  if (split_fits && 4 * split.n_faces() <= o.max_faces) {
+  if (split_fits && 4 * split.n_faces() <= o.max_faces && subdivide_memory(split, Subdivision::loop, 1) <= budget) {
     SurfaceMesh loop = split;
     t = Clock::now();
     subdivide(loop, Subdivision::loop, 1);
@@ -215,7 +222,7 @@ int run_tour(const TourOptions& o) {
     add("then Loop subdivision", loop, loop_ms, lr, base + "_loop.obj");
     fine = std::move(loop);
   } else {
-    skipped.push_back({"Loop subdivision", "the result would pass " + std::to_string(o.max_faces) + " faces"});
+    skipped.push_back({"Loop subdivision", too_large});
     if (split_fits) fine = split;
   }
   {
@@ -265,7 +272,7 @@ int run_tour(const TourOptions& o) {
       skipped.push_back({"fracture", "no vertex faces the camera"});
     }
   } else {
-    skipped.push_back({"decimation and fracture", "no triangle mesh: the split would pass " + std::to_string(o.max_faces) + " faces"});
+    skipped.push_back({"decimation and fracture", "no triangle mesh: for the split, " + too_large});
   }
   // 9. A hole cut around the vertex nearest the eye, then 10. filled again.
   const Vertex centre = front_vertex(mesh, camera);
@@ -362,10 +369,10 @@ Command add_tour_command(CLI::App& parent) {
       ->capture_default_str();
   app->add_option("--panel", o->panel, "Width of each picture of the contact sheet, in pixels")
       ->capture_default_str()
-      ->check(CLI::Range(64, 2048));
+      ->transform(whole_number<int>(64, 2048));
   app->add_option("--max-faces", o->max_faces, "Skip the subdivision stages whose result would pass this many faces")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(whole_number<std::size_t>(1));
   add_load_options(*app, o->load);
   return {app, [o] { return run_tour(*o); }};
 }

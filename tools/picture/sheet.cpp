@@ -1,12 +1,39 @@
 #include "sheet.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <string>
 
 #include "canvas.h"
 #include "hedge/error.h"
 #include "text.h"
 
 namespace hedge::picture {
+
+namespace {
+
+int caption_height(int cell_w) { return int(std::clamp(cell_w / 28.0, 11.0, 18.0) * 2); }
+
+}  // namespace
+
+void check_contact_sheet(std::size_t panels, int cell_w, int cell_h, int columns, int* sheet_width,
+                         int* sheet_height) {
+  if (panels == 0) throw InvalidInputError("a contact sheet needs at least one picture");
+  const std::int64_t n = std::int64_t(std::min<std::size_t>(panels, std::size_t(1) << 40));
+  const std::int64_t cols = columns <= 0 ? n : std::min<std::int64_t>(columns, n);
+  const std::int64_t rows = (n + cols - 1) / cols;
+  const std::int64_t sheet_w = std::int64_t(cell_w) * cols, sheet_h = std::int64_t(cell_h + caption_height(cell_w)) * rows;
+  if (sheet_w > kMaxSide || sheet_h > kMaxSide || sheet_w * sheet_h > kMaxPixels) {
+    const std::string size = std::to_string(sheet_w) + "x" + std::to_string(sheet_h);
+    throw InvalidInputError("a contact sheet of " + std::to_string(n) + " pictures of " + std::to_string(cell_w) + "x" +
+                            std::to_string(cell_h) + " in " + std::to_string(rows) + (rows == 1 ? " row" : " rows") +
+                            " of " + std::to_string(cols) + " would be " + size +
+                            " pixels, beyond the limit of " + std::to_string(kMaxSide) + " pixels a side and " +
+                            std::to_string(kMaxPixels) + " in all; use smaller pictures, more or fewer columns, or fewer panels");
+  }
+  if (sheet_width) *sheet_width = int(sheet_w);
+  if (sheet_height) *sheet_height = int(sheet_h);
+}
 
 Image contact_sheet(const std::vector<Panel>& panels, int columns, Rgb background) {
   if (panels.empty()) throw InvalidInputError("a contact sheet needs at least one picture");
@@ -17,12 +44,11 @@ Image contact_sheet(const std::vector<Panel>& panels, int columns, Rgb backgroun
   }
   const int n = int(panels.size());
   const int cols = columns <= 0 ? n : std::min(columns, n);
-  const int rows = (n + cols - 1) / cols;
   const double px = std::clamp(cell_w / 28.0, 11.0, 18.0);
-  const int caption_h = int(px * 2);
-  const std::int64_t sheet_w = std::int64_t(cell_w) * cols, sheet_h = std::int64_t(cell_h + caption_h) * rows;
-  if (sheet_w > kMaxSide || sheet_h > kMaxSide) check_size(kMaxSide + 1, 1, "a contact sheet");
-  Image sheet(int(sheet_w), int(sheet_h), background);
+  const int caption_h = caption_height(cell_w);
+  int sheet_w = 0, sheet_h = 0;
+  check_contact_sheet(panels.size(), cell_w, cell_h, columns, &sheet_w, &sheet_h);
+  Image sheet(sheet_w, sheet_h, background);
   ImageCanvas canvas(sheet);
   const Font& font = Font::standard();
   for (int i = 0; i < n; ++i) {

@@ -280,7 +280,7 @@ namespace Hedge
         public double Spacing;
         /// <summary>In [0, 1]: how far points stray from even angles and from the ring's radius.</summary>
         public double Jitter;
-        /// <summary>Break points on the ring.</summary>
+        /// <summary>Break points on the ring: 0 to 100000, and at most 10000 in all rings.</summary>
         public int Points;
         uint reserved;
     }
@@ -307,7 +307,8 @@ namespace Hedge
         public double RefineEdge;
         /// <summary>Seed of the break points: the same seed gives the same shards, bit for bit.</summary>
         public ulong Seed;
-        /// <summary>Greater than 0: each shard is extruded into a closed solid this thick (model units).</summary>
+        /// <summary>Greater than 0: each shard is extruded into a closed solid this thick (model units), at most 10
+        /// times the diagonal of the mesh's bounding box.</summary>
         public double Thickness;
         /// <summary>Mass per unit volume.</summary>
         public double Density;

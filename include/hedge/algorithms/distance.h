@@ -18,8 +18,13 @@
 
 namespace hedge {
 
+//! Most face samples a call draws on each surface: 10^8, which takes 800 MB for the distances
+//! (8 bytes a point, one surface at a time) and a minute or two of queries.
+inline constexpr std::size_t kMaxDistanceSamples = 100'000'000;
+
 struct DistanceOptions {
-  //! Points drawn on the faces of each surface, besides its vertices. 0: vertices only.
+  //! Points drawn on the faces of each surface, besides its vertices. 0: vertices only; at most
+  //! kMaxDistanceSamples.
   std::size_t samples = 100000;
   //! Seed of the draws.
   std::uint64_t seed = 1;
@@ -51,9 +56,11 @@ struct HausdorffDistance {
 
 //! The distances of the sampled points of `from` (see the file comment) to the surface `to`.
 //! Cost: a FaceBvh over `to`, O(F log F), then one closest-point query per point, O(log F)
-//! expected each: O((V + samples) log F) in all, shared among options.threads threads.
+//! expected each: O((V + samples) log F) in all, shared among options.threads threads. Memory:
+//! 8 bytes per point (V + samples) besides the FaceBvh.
 //! \throw InvalidInputError, naming the mesh, if either mesh has no face, if a position of either
-//!   mesh is not finite (the vertex is named), or if options.threads is 0.
+//!   mesh is not finite (the vertex is named), if options.threads is 0, or if options.samples is
+//!   more than kMaxDistanceSamples (checked first, before any work).
 OneSidedDistance one_sided_distance(const SurfaceMesh& from, const SurfaceMesh& to,
                                     const DistanceOptions& options = {});
 

@@ -52,9 +52,20 @@
 
 namespace hedge {
 
+//! Limits of a material and of the options, so that the work of a call is bounded whatever its
+//! input (checked before the mesh is touched):
+//!  - at most kFractureMaxRings rings;
+//!  - at most kFractureMaxPoints break points in all rings together (each one is matched against
+//!    every face of the broken area, so the scattering costs points x faces of the area);
+//!  - a thickness of at most kFractureMaxThicknessRatio times the diagonal of the mesh's bounding
+//!    box (a thicker solid folds through itself and only inflates the volumes and masses).
+inline constexpr std::size_t kFractureMaxRings = 1000;
+inline constexpr std::size_t kFractureMaxPoints = 10000;
+inline constexpr double kFractureMaxThicknessRatio = 10;
+
 //! One ring of break points around the impact.
 struct FractureRing {
-  //! Break points on the ring (at most 100000).
+  //! Break points on the ring (at most 100000, and kFractureMaxPoints over all rings).
   unsigned points = 0;
   //! Distance of this ring from the previous one (from the impact for the first ring); positive.
   //! In units of the impact face's mean edge length, or model units when the material is absolute.
@@ -98,6 +109,7 @@ struct FractureOptions {
   //! Seed of the break points' generator.
   std::uint64_t seed = 0;
   //! > 0: every open shard is extruded into a closed solid this thick (model units), see Shard::mesh.
+  //! At most kFractureMaxThicknessRatio times the diagonal of the mesh's bounding box.
   double thickness = 0;
   //! Mass per unit volume, for the shards' mass properties. Positive.
   double density = 1;
@@ -156,11 +168,20 @@ struct FractureResult {
 //! a nonzero area near the impact.
 //! \return the shards; none for a material without break points (the mesh is then unchanged).
 //!   When the broken area reaches all of a small connected part, that whole part breaks off.
+//! The scattering matches each break point against the faces of the broken area: O(P k) for P break
+//! points (at most kFractureMaxPoints). With thickness > 0, one O(V) pass finds the mesh's bounding
+//! box for the thickness limit.
 //! \throw InvalidInputError, with the mesh unchanged, for: a non-finite impact; no face within the
 //!   tolerance (giving the distance to the nearest); a mesh with no face, or whose part at the
 //!   impact is a single face (too small to break); an illegal material or option, naming the field
-//!   (ring index included); a bvh of another mesh.
+//!   (ring index included), such as more rings or break points than the limits above or a thickness
+//!   beyond kFractureMaxThicknessRatio times the mesh's diagonal; a bvh of another mesh.
 FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOptions& options = {},
                         FaceBvh* bvh = nullptr);
+
+//! The break points of options.material in all: the most shards fracture() can return. Checks the
+//! options as fracture() does, except the thickness against the mesh's size. O(rings).
+//! \throw InvalidInputError for an illegal material or option, naming the field.
+std::size_t fracture_break_points(const FractureOptions& options);
 
 }  // namespace hedge

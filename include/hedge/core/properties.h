@@ -51,6 +51,8 @@ class BasePropertyArray {
   virtual void swap_values(BasePropertyArray& other) noexcept = 0;
   //! Bytes held by this array (its capacity), for memory accounting.
   virtual std::size_t bytes() const = 0;
+  //! Bytes of one element (sizeof the value type), for estimates of memory to come.
+  virtual std::size_t element_bytes() const = 0;
   //! True if elements i and j hold equal values (==); always true for a type without ==.
   virtual bool equal(std::size_t i, std::size_t j) const = 0;
 
@@ -119,6 +121,7 @@ class PropertyArray final : public BasePropertyArray {
     data_.swap(static_cast<PropertyArray<T>&>(other).data_);
   }
   std::size_t bytes() const override { return data_.capacity() * sizeof(T); }
+  std::size_t element_bytes() const override { return sizeof(T); }
   bool equal(std::size_t i, std::size_t j) const override {
     if constexpr (std::equality_comparable<T>) return data_[i] == data_[j];
     else return true;
@@ -306,6 +309,12 @@ class PropertyContainer {
   std::size_t bytes() const {
     std::size_t b = 0;
     for (const auto& a : arrays_) b += a->bytes();
+    return b;
+  }
+  //! Bytes of one element over all arrays.
+  std::size_t element_bytes() const {
+    std::size_t b = 0;
+    for (const auto& a : arrays_) b += a->element_bytes();
     return b;
   }
 
