@@ -51,4 +51,7 @@ class InvalidInputError : public Error {
   using Error::Error;
 };
 
+//! An amount of memory for a message: "512 bytes", "1.5 GiB".
+std::string bytes_text(double bytes);
+
 }  // namespace hedge

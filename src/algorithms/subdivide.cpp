@@ -211,15 +211,6 @@ std::size_t saturate(double bytes) {
                                                                   : std::size_t(bytes);
 }
 
-std::string bytes_text(double bytes) {
-  const char* units[] = {"bytes", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
-  int u = 0;
-  while (bytes >= 1024 && u < 6) bytes /= 1024, ++u;
-  char buf[64];
-  std::snprintf(buf, sizeof buf, u == 0 ? "%.0f %s" : "%.1f %s", bytes, units[u]);
-  return buf;
-}
-
 void check_memory(const SurfaceMesh& m, Subdivision scheme, int steps, std::size_t max_memory) {
   if (max_memory == 0 || steps == 0) return;
   const double need = estimate(m, scheme, steps);

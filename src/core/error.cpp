@@ -1,5 +1,6 @@
 #include "hedge/error.h"
 
+#include <cstdio>
 #include <utility>
 
 namespace hedge {
@@ -26,5 +27,14 @@ IoError::IoError(std::string path, std::uint64_t line, std::int64_t byte_offset,
 TopologyError::TopologyError(const std::string& message, std::vector<std::uint32_t> vertices,
                              std::vector<std::uint32_t> faces)
     : Error(message), vertices_(std::move(vertices)), faces_(std::move(faces)) {}
+
+std::string bytes_text(double bytes) {
+  static constexpr const char* kUnits[] = {"bytes", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
+  int unit = 0;
+  while (bytes >= 1024 && unit < 6) bytes /= 1024, ++unit;
+  char text[64];
+  std::snprintf(text, sizeof text, unit == 0 ? "%.0f %s" : "%.1f %s", bytes, kUnits[unit]);
+  return text;
+}
 
 }  // namespace hedge

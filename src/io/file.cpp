@@ -19,9 +19,12 @@
 
 #include "hedge/core/export.h"
 #include "hedge/io/io.h"
+#include "fd.h"
 #include "parse_util.h"
 
 namespace hedge {
+
+using detail::Fd;
 
 namespace {
 
@@ -33,26 +36,6 @@ std::string lower(std::string s) {
 
 std::string errno_text(int err) { return std::strerror(err); }
 
-// Closes a descriptor on every exit path.
-class Fd {
- public:
-  explicit Fd(int fd) : fd_(fd) {}
-  Fd(const Fd&) = delete;
-  Fd& operator=(const Fd&) = delete;
-  ~Fd() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  int get() const { return fd_; }
-  //! Closes now and reports close()'s error, which for a written file can be a deferred write error.
-  int close() {
-    const int r = ::close(fd_);
-    fd_ = -1;
-    return r;
-  }
-
- private:
-  int fd_;
-};
 
 }  // namespace
 

@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fd.h"
 #include "hedge/error.h"
 
 namespace hedge::detail {
@@ -348,29 +349,12 @@ std::string real_path(const std::string& path) {
   return resolved ? std::string(resolved.get()) : std::string();
 }
 
-class Fd {
- public:
-  explicit Fd(int fd) : fd_(fd) {}
-  Fd(const Fd&) = delete;
-  Fd& operator=(const Fd&) = delete;
-  ~Fd() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  int get() const { return fd_; }
-
- private:
-  int fd_;
-};
 
 }  // namespace
 
 std::string over_budget(const std::string& what, double cost, std::uint64_t budget) {
-  auto mib = [](double bytes) {
-    if (bytes < (1 << 20)) return std::to_string(static_cast<std::uint64_t>(bytes)) + " bytes";
-    return std::to_string(static_cast<std::uint64_t>(bytes / (1 << 20) + 0.5)) + " MiB";
-  };
-  return what + " would take about " + mib(cost) + " of memory, more than the read budget of " +
-         mib(static_cast<double>(budget)) +
+  return what + " would take about " + bytes_text(cost) + " of memory, more than the read budget of " +
+         bytes_text(static_cast<double>(budget)) +
          " (by default 64 times the input's size plus 64 MiB); if you trust the file, raise the budget: "
          "max_memory in the read options (hedge: --max-memory)";
 }

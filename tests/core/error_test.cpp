@@ -23,5 +23,12 @@ TEST(Error, TopologyErrorCarriesElements) {
   EXPECT_EQ(e.faces(), (std::vector<std::uint32_t>{7}));
 }
 
+TEST(Error, BytesTextPicksTheUnit) {
+  EXPECT_EQ(bytes_text(0), "0 bytes");
+  EXPECT_EQ(bytes_text(1000), "1000 bytes");
+  EXPECT_EQ(bytes_text(1024), "1.0 KiB");
+  EXPECT_EQ(bytes_text(1.5 * 1024 * 1024 * 1024), "1.5 GiB");
+}
+
 }  // namespace
 }  // namespace hedge

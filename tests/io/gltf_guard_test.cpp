@@ -14,6 +14,7 @@
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 #include "heap_hooks.h"
+#include "io/base64.h"
 #include "io/io_errors.h"
 
 namespace hedge {
@@ -36,21 +37,7 @@ TEST(HeapHooks, SeeAnAllocationAndItsRelease) {
   EXPECT_LT(test::heap_held(), held_after);
 }
 
-std::string base64(const std::string& bytes) {
-  static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const std::uint32_t a = static_cast<unsigned char>(bytes[i]);
-    const std::uint32_t b = i + 1 < bytes.size() ? static_cast<unsigned char>(bytes[i + 1]) : 0;
-    const std::uint32_t c = i + 2 < bytes.size() ? static_cast<unsigned char>(bytes[i + 2]) : 0;
-    const std::uint32_t n = a << 16 | b << 8 | c;
-    out += kDigits[n >> 18 & 63];
-    out += kDigits[n >> 12 & 63];
-    out += i + 1 < bytes.size() ? kDigits[n >> 6 & 63] : '=';
-    out += i + 2 < bytes.size() ? kDigits[n & 63] : '=';
-  }
-  return out;
-}
+using test::base64;
 
 // A triangle's buffer: three float positions, then `indices` u16 indices cycling 0, 1, 2.
 std::string triangle_buffer(std::size_t indices) {

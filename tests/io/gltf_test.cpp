@@ -14,6 +14,7 @@
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 #include "hedge/render/render_sync.h"
+#include "io/base64.h"
 #include "io/io_errors.h"
 
 namespace hedge {
@@ -26,20 +27,7 @@ std::string data_path(const std::string& name) { return std::string(HEDGE_DATA_D
 
 using test::catch_io_error;
 
-std::string base64(const std::vector<unsigned char>& bytes) {
-  static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const std::uint32_t a = bytes[i], b = i + 1 < bytes.size() ? bytes[i + 1] : 0,
-                        c = i + 2 < bytes.size() ? bytes[i + 2] : 0;
-    const std::uint32_t n = a << 16 | b << 8 | c;
-    out += kDigits[n >> 18 & 63];
-    out += kDigits[n >> 12 & 63];
-    out += i + 1 < bytes.size() ? kDigits[n >> 6 & 63] : '=';
-    out += i + 2 < bytes.size() ? kDigits[n & 63] : '=';
-  }
-  return out;
-}
+using test::base64;
 
 template <typename T>
 void put(std::vector<unsigned char>& out, T v) {

@@ -378,7 +378,7 @@ TEST_F(HedgeCli, HostileGltfFilesAreDataErrors) {
   expect_data_error({"info", data("two_quads.glb"), "--max-memory", "1K"},
                     "two_quads.glb: its JSON would take about");
   expect_data_error({"convert", data("two_quads.glb"), tmp("q.obj").string(), "--max-memory", "1K"},
-                    "more than the read budget of 1024 bytes");
+                    "more than the read budget of 1.0 KiB");
   EXPECT_FALSE(fs::exists(tmp("q.obj")));
   expect_data_error({"info", beside, "--no-external-buffers"},
                     "beside.gltf: buffer 0: its data is in a separate file ('uri'), and reading external buffers is turned off");

@@ -89,20 +89,12 @@ std::uint64_t effective_budget(const MemoryBudget& budget) {
   return available_memory();
 }
 
-std::string memory_text(double bytes) {
-  const char* units[] = {"bytes", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
-  int u = 0;
-  while (bytes >= 1024 && u < 6) bytes /= 1024, ++u;
-  char buf[64];
-  std::snprintf(buf, sizeof buf, u == 0 ? "%.0f %s" : "%.1f %s", bytes, units[u]);
-  return buf;
-}
 
 void check_memory(double needed, const MemoryBudget& budget, const std::string& what, const std::string& advice) {
   const std::uint64_t limit = effective_budget(budget);
   if (needed <= double(limit)) return;
-  throw InvalidInputError(what + " would need about " + memory_text(needed) + " (estimated), more than the budget of " +
-                          memory_text(double(limit)) + ", " + budget_source(budget) + "; " + advice);
+  throw InvalidInputError(what + " would need about " + bytes_text(needed) + " (estimated), more than the budget of " +
+                          bytes_text(double(limit)) + ", " + budget_source(budget) + "; " + advice);
 }
 
 }  // namespace hedge::cli

@@ -34,9 +34,6 @@ std::uint64_t effective_budget(const MemoryBudget& budget);
 //! What the machine has available now (see the file comment). Never 0.
 std::uint64_t available_memory();
 
-//! Bytes in words: "512 bytes", "1.5 GiB".
-std::string memory_text(double bytes);
-
 //! \throw InvalidInputError unless `needed` fits the budget; the message says what needs how much,
 //!   the budget and where it comes from, and `advice` (such as "use fewer --steps").
 void check_memory(double needed, const MemoryBudget& budget, const std::string& what, const std::string& advice);

@@ -180,7 +180,7 @@ int run_tour(const TourOptions& o) {
   for (Face f : mesh.faces()) corners += mesh.valence(f);
   const std::uint64_t budget = effective_budget(o.load.memory);
   const std::string too_large = "the result would pass " + std::to_string(o.max_faces) + " faces or " +
-                                memory_text(double(budget)) + " of memory (--max-faces, --max-memory)";
+                                bytes_text(double(budget)) + " of memory (--max-faces, --max-memory)";
   int cc_steps = corners * 4 <= o.max_faces ? 2 : corners <= o.max_faces ? 1 : 0;
   while (cc_steps > 0 && subdivide_memory(mesh, Subdivision::catmull_clark, cc_steps) > budget) --cc_steps;
   if (cc_steps > 0) {
