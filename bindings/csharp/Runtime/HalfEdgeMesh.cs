@@ -217,6 +217,37 @@ namespace Hedge
             return Created(status, mesh);
         }
 
+        /// <summary>Reads a mesh with the format's default build options and the given read options
+        /// (a glTF's external buffers, the memory budget).</summary>
+        public static HalfEdgeMesh Read(string path, ReadOptions readOptions, out BuildReport report)
+        {
+            IntPtr mesh;
+            int status = Native.hedge_mesh_read_with_defaults(Status.ToUtf8(path, "path"), IntPtr.Zero, ref readOptions,
+                                                              out report, out mesh);
+            return Created(status, mesh);
+        }
+
+        /// <summary>Reads a mesh from a file's bytes (a download, an upload, an asset bundle's
+        /// TextAsset.bytes). A glTF's external buffers are refused: the bytes have no folder.</summary>
+        /// <param name="name">The file's name: its extension (.obj, .off, .ply, .stl, .gltf, .glb)
+        /// chooses the format, and messages start with it.</param>
+        public static HalfEdgeMesh FromBytes(byte[] bytes, string name)
+        {
+            BuildReport report;
+            return FromBytes(bytes, name, ReadOptions.ForBytes, out report);
+        }
+
+        /// <summary>Reads a mesh from a file's bytes with the given read options; with external
+        /// buffers on, they are looked up in the folder of <paramref name="name"/>.</summary>
+        public static HalfEdgeMesh FromBytes(byte[] bytes, string name, ReadOptions readOptions, out BuildReport report)
+        {
+            if (bytes == null) throw new ArgumentNullException("bytes");
+            IntPtr mesh;
+            int status = Native.hedge_mesh_read_memory_defaults(bytes, (ulong)bytes.Length, Status.ToUtf8(name, "name"),
+                                                                IntPtr.Zero, ref readOptions, out report, out mesh);
+            return Created(status, mesh);
+        }
+
         /// <summary>Writes the live faces atomically (a failed write leaves the target as it was).</summary>
         /// <param name="path">The file; the extension chooses the format.</param>
         /// <param name="binary">PLY and STL: binary (little endian) or ASCII; ignored for OBJ and OFF.</param>

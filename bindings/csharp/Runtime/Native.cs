@@ -233,6 +233,17 @@ namespace Hedge
         internal static extern int hedge_mesh_read_defaults([In] byte[] path, IntPtr optionsNull,
             out BuildReport report, out IntPtr mesh);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_read_options_default(out ReadOptions options);
+        // hedge_mesh_read_with and hedge_mesh_read_memory with build options NULL (the format's defaults).
+        [DllImport(Library, EntryPoint = "hedge_mesh_read_with", CallingConvention = CallingConvention.Cdecl,
+            ExactSpelling = true)]
+        internal static extern int hedge_mesh_read_with_defaults([In] byte[] path, IntPtr optionsNull,
+            ref ReadOptions readOptions, out BuildReport report, out IntPtr mesh);
+        [DllImport(Library, EntryPoint = "hedge_mesh_read_memory", CallingConvention = CallingConvention.Cdecl,
+            ExactSpelling = true)]
+        internal static extern int hedge_mesh_read_memory_defaults([In] byte[] bytes, ulong size, [In] byte[] name,
+            IntPtr optionsNull, ref ReadOptions readOptions, out BuildReport report, out IntPtr mesh);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_mesh_write(IntPtr mesh, [In] byte[] path, int binary, int precision);
 
         // ---- Validation ----

@@ -92,6 +92,49 @@ namespace Hedge
         }
     }
 
+    /// <summary>What a reader may do for a file from a stranger (hedge_read_options, 16 bytes): read
+    /// a glTF's external buffers or not, and how much memory it may take. See docs/security.md.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct ReadOptions
+    {
+        int externalBuffers;
+        int reserved;
+        /// <summary>The most bytes a glTF reader may allocate for what the file describes, checked
+        /// before it allocates; 0 for the default, 64 times the input's size plus 64 MiB.</summary>
+        public ulong MaxMemory;
+
+        /// <summary>glTF buffers kept in separate files: read only from the .gltf's folder and below
+        /// (true), or refused (false).</summary>
+        public bool ExternalBuffers
+        {
+            get { return externalBuffers != 0; }
+            set { externalBuffers = value ? 1 : 0; }
+        }
+
+        /// <summary>The defaults for reading a file by its path: external buffers beside it, the
+        /// default memory budget.</summary>
+        public static ReadOptions ForFiles
+        {
+            get
+            {
+                ReadOptions options;
+                Status.Check(Native.hedge_read_options_default(out options));
+                return options;
+            }
+        }
+
+        /// <summary>The defaults for bytes in memory: no external buffers, the default budget.</summary>
+        public static ReadOptions ForBytes
+        {
+            get
+            {
+                ReadOptions options = ForFiles;
+                options.ExternalBuffers = false;
+                return options;
+            }
+        }
+    }
+
     /// <summary>What building did; all zero for clean input (36 bytes).</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct BuildReport

@@ -1,6 +1,8 @@
 // Error paths (disposed objects, dead elements, malformed files) and files, and finalization.
 using System;
 using System.IO;
+using System.Runtime.InteropServices;
+using System.Text;
 
 namespace Hedge.Tests
 {
@@ -14,6 +16,7 @@ namespace Hedge.Tests
             r.Add("ErrorTests.IntIndicesAndNegativeInputs", IntIndicesAndNegativeInputs);
             r.Add("ErrorTests.MalformedAndMissingFiles", MalformedAndMissingFiles);
             r.Add("ErrorTests.FilesRoundTrip", FilesRoundTrip);
+            r.Add("ErrorTests.HostileFilesAreRefused", HostileFilesAreRefused);
             r.Add("ErrorTests.FinalizersRelease", FinalizersRelease);
             r.Add("ErrorTests.SecondThreadIsRefusedNotHung", SecondThreadIsRefusedNotHung);
         }
@@ -229,6 +232,66 @@ namespace Hedge.Tests
                 File.Delete(ply);
                 File.Delete(obj);
             }
+        }
+
+        // A glTF from a stranger: its external buffers are read only beside it (never from bytes in
+        // memory), and the read budget refuses what would take too much memory.
+        static void HostileFilesAreRefused()
+        {
+            Check.Equal(16, Marshal.SizeOf(typeof(ReadOptions)));
+            Check.True(ReadOptions.ForFiles.ExternalBuffers, "files read their buffers beside them");
+            Check.True(!ReadOptions.ForBytes.ExternalBuffers, "bytes have no folder");
+            Check.Equal(0UL, ReadOptions.ForFiles.MaxMemory);
+
+            const string head =
+                "{\"asset\":{\"version\":\"2.0\"},\"scenes\":[{\"nodes\":[0]}],\"nodes\":[{\"mesh\":0}]," +
+                "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}]," +
+                "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"}]," +
+                "\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],";
+            string outside = Context.Scratch("outside.gltf");
+            File.WriteAllText(outside, head + "\"buffers\":[{\"byteLength\":36,\"uri\":\"../../../../../../../../etc/passwd\"}]}");
+            HedgeException e = Check.Throws(HedgeStatus.Io, () => HalfEdgeMesh.Read(outside));
+            Check.Contains(e.Message, "does not name a regular file inside the .gltf's folder");
+
+            // A buffer beside the file: read by path; from the same bytes in memory, refused.
+            File.WriteAllBytes(Context.Scratch("beside.bin"), Convert.FromBase64String(
+                "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"));
+            string beside = Context.Scratch("beside.gltf");
+            File.WriteAllText(beside, head + "\"buffers\":[{\"byteLength\":36,\"uri\":\"beside.bin\"}]}");
+            using (HalfEdgeMesh mesh = HalfEdgeMesh.Read(beside))
+            {
+                Check.Equal(1, mesh.Counts.Faces);
+                Check.Valid(mesh);
+            }
+            byte[] bytes = File.ReadAllBytes(beside);
+            e = Check.Throws(HedgeStatus.Io, () => HalfEdgeMesh.FromBytes(bytes, beside));
+            Check.Contains(e.Message, "reading external buffers is turned off");
+            BuildReport report;
+            ReadOptions off = ReadOptions.ForFiles;
+            off.ExternalBuffers = false;
+            e = Check.Throws(HedgeStatus.Io, () => HalfEdgeMesh.Read(beside, off, out report));
+            Check.Contains(e.Message, "turned off");
+
+            // Embedded: read from bytes, unless the budget is smaller than the file needs.
+            byte[] embedded = Encoding.UTF8.GetBytes(head + "\"buffers\":[{\"byteLength\":36,\"uri\":" +
+                "\"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA\"}]}");
+            using (HalfEdgeMesh mesh = HalfEdgeMesh.FromBytes(embedded, "upload.gltf"))
+            {
+                Check.Equal(1, mesh.Counts.Faces);
+            }
+            ReadOptions tight = ReadOptions.ForBytes;
+            tight.MaxMemory = 100;
+            e = Check.Throws(HedgeStatus.Io, () => HalfEdgeMesh.FromBytes(embedded, "upload.gltf", tight, out report));
+            Check.Contains(e.Message, "upload.gltf: its JSON would take about");
+            Check.Contains(e.Message, "more than the read budget of 100 bytes");
+            using (HalfEdgeMesh mesh = HalfEdgeMesh.FromBytes(Encoding.UTF8.GetBytes("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "t.obj"))
+            {
+                Check.Equal(1, mesh.Counts.Faces);
+            }
+            Check.ThrowsType<ArgumentNullException>(() => HalfEdgeMesh.FromBytes(null, "t.obj"));
+            File.Delete(outside);
+            File.Delete(beside);
+            File.Delete(Context.Scratch("beside.bin"));
         }
 
         static void MakeGarbage()
