@@ -523,10 +523,9 @@ ReadOptions to_read_options(const hedge_read_options* options, bool external_def
 void build_read(const IndexedMesh& in, FileFormat format, const hedge_build_options* options,
                 hedge_build_report* out_report, hedge_mesh** out_mesh) {
   const BuildOptions build_options = options != nullptr ? to_build_options(*options) : default_build_options(format);
-  if (!in.warnings.empty() && build_options.policy == TopologyPolicy::strict) throw in.warnings.front().error();
   BuildReport report;
   auto object = std::make_shared<MeshObject>();
-  object->mesh = build(in, build_options, &report);
+  object->mesh = build_read(in, build_options, &report);
   if (out_report != nullptr) fill_report(report, out_report);
   *out_mesh = register_mesh(std::move(object));
 }

@@ -383,14 +383,6 @@ void write_file_atomic(const std::string& path, std::string_view bytes) {
   publish(path, target, temp);
 }
 
-std::uint64_t read_budget(const ReadOptions& options, std::uint64_t input_bytes) {
-  if (options.max_memory != 0) return options.max_memory;
-  constexpr std::uint64_t kFactor = 64;
-  const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max();
-  return input_bytes > (limit - kDefaultReadMemoryFloor) / kFactor ? limit
-                                                                     : kFactor * input_bytes + kDefaultReadMemoryFloor;
-}
-
 IndexedMesh read_indexed_file(const std::string& path) {
   ReadOptions options;
   options.external_buffers = true;
@@ -427,7 +419,10 @@ SurfaceMesh read_mesh(const std::string& path, const BuildOptions& options, Buil
 
 SurfaceMesh read_mesh(const std::string& path, const BuildOptions& options, const ReadOptions& read_options,
                       BuildReport* report) {
-  const IndexedMesh in = read_indexed_file(path, read_options);
+  return build_read(read_indexed_file(path, read_options), options, report);
+}
+
+SurfaceMesh build_read(const IndexedMesh& in, const BuildOptions& options, BuildReport* report) {
   if (!in.warnings.empty() && options.policy == TopologyPolicy::strict) throw in.warnings.front().error();
   SurfaceMesh mesh = build(in, options, report);
   if (report)

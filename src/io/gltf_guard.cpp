@@ -7,7 +7,7 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <climits>
+#include <limits>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
@@ -123,7 +123,7 @@ class Scanner {
   bool start_object(std::size_t) {
     open(false);
     cost_ += kCostPerObject;
-    if (frames_.size() == 3 && path_is_buffer()) {
+    if (in_buffer()) {
       buffer_ = GltfBufferDecl{buffer_index(), {}, false, 0};
       data_size_ = 0;
     }
@@ -461,3 +461,15 @@ bool GltfBufferFiles::read(std::vector<unsigned char>* out, std::string* err, co
 }
 
 }  // namespace hedge::detail
+
+namespace hedge {
+
+std::uint64_t read_budget(const ReadOptions& options, std::uint64_t input_bytes) {
+  if (options.max_memory != 0) return options.max_memory;
+  constexpr std::uint64_t kFactor = 64;
+  const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max();
+  return input_bytes > (limit - kDefaultReadMemoryFloor) / kFactor ? limit
+                                                                     : kFactor * input_bytes + kDefaultReadMemoryFloor;
+}
+
+}  // namespace hedge

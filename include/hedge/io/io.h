@@ -188,6 +188,11 @@ void write_indexed_file(const IndexedMesh& mesh, const std::string& path, const 
 //! connectivity) and glTF (which splits vertices at seams). Other formats keep the file's vertices.
 BuildOptions default_build_options(FileFormat format);
 
+//! Builds what a reader returned: the reader's warnings (IndexedMesh::warnings) are an IoError
+//! naming the file and line under TopologyPolicy::strict, and go to BuildReport::warnings
+//! otherwise. read_mesh() is read_indexed_file() followed by this.
+SurfaceMesh build_read(const IndexedMesh& in, const BuildOptions& options, BuildReport* report = nullptr);
+
 //! Reads and builds a SurfaceMesh. Uses default_build_options(format) unless options are given.
 //! What the reader found suspect (IndexedMesh::warnings) is an IoError naming the file and line
 //! under TopologyPolicy::strict, and goes to BuildReport::warnings otherwise.
