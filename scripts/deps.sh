@@ -8,6 +8,7 @@
 #   bench  the benchmarks
 #   peers  other mesh libraries the benchmarks compare against (large)
 #   fuzz   the libFuzzer targets
+#   format clang-format 14, for scripts/format (prettier, its JavaScript half, comes from web/'s npm)
 #   csharp Mono's C# compiler and runtime, for the C# binding's tests (bindings/csharp/)
 #   wasm   emscripten (with its node and clang) for the WebAssembly module (bindings/wasm/)
 #   web    Debian's chromium (and its driver), for the playground's browser tests (web/); node 20
@@ -25,6 +26,7 @@ hedge_deps_packages() {
       bench) echo libbenchmark-dev ;;
       peers) echo libopenmesh-dev libcgal-dev libeigen3-dev libmeshoptimizer-dev ;;
       fuzz) echo clang libclang-rt-14-dev ;;
+      format) echo clang-format-14 ;;
       csharp) echo mono-mcs mono-runtime ;;
       wasm) echo emscripten nodejs ;;
       web) echo chromium chromium-driver ;;
