@@ -52,7 +52,7 @@ struct MeshBox {
 //! What an operation sees.
 struct Context {
   const Input& input;
-  MeshBox* mesh;                 //!< the reference mesh, or the prepared working copy
+  MeshBox* mesh;  //!< the reference mesh, or the prepared working copy
   Scratch& scratch;
   std::unique_ptr<MeshBox> out;  //!< whatever the timed part produced; destroyed after the timer stops
 };
@@ -144,9 +144,9 @@ struct RingSum {
 
 // ---- Random local edits (collapse, split, flip), shared so every backend draws the same numbers. ----
 
-constexpr std::size_t kEditCount = 100000;   //!< attempts per sequence
+constexpr std::size_t kEditCount = 100000;  //!< attempts per sequence
 constexpr std::uint64_t kEditSeed = 0x5eed0f1a2b3c4d5eull;
-constexpr int kEditMaxRedraws = 64;          //!< draws of a deleted element before the attempt is given up
+constexpr int kEditMaxRedraws = 64;  //!< draws of a deleted element before the attempt is given up
 
 //! splitmix64: a tiny seeded generator with the same output on every platform.
 struct EditRng {
@@ -177,29 +177,35 @@ struct EditRng {
 //! Element counts of a mesh, as its library reports them (live elements only).
 struct Counts {
   std::size_t v = 0, e = 0, f = 0;
-  long long euler() const { return static_cast<long long>(v) - static_cast<long long>(e) + static_cast<long long>(f); }
+  long long euler() const {
+    return static_cast<long long>(v) - static_cast<long long>(e) + static_cast<long long>(f);
+  }
 };
 enum class EditKind { collapse, split, flip };
 //! The element counts an edit sequence implies, whatever the library: every edit keeps the Euler
 //! characteristic; a collapse removes one vertex, a split adds one, a flip changes no count; a
 //! closed triangle mesh (3F = 2E) stays one. Returns an empty string if `after` agrees.
-inline std::string check_edit_counts(EditKind kind, const Counts& before, const Counts& after, double successes) {
+inline std::string check_edit_counts(EditKind kind, const Counts& before, const Counts& after,
+                                     double successes) {
   const long long k = std::llround(successes);
   const long long dv = kind == EditKind::collapse ? -k : kind == EditKind::split ? k : 0;
   std::string err;
   auto num = [](long long x) { return std::to_string(x); };
   if (static_cast<long long>(after.v) != static_cast<long long>(before.v) + dv)
-    err += "vertices " + num(static_cast<long long>(after.v)) + ", expected " + num(static_cast<long long>(before.v) + dv) + "; ";
+    err += "vertices " + num(static_cast<long long>(after.v)) + ", expected " +
+           num(static_cast<long long>(before.v) + dv) + "; ";
   if (after.euler() != before.euler())
     err += "V-E+F " + num(after.euler()) + ", expected " + num(before.euler()) + "; ";
   if (3 * before.f == 2 * before.e && 3 * after.f != 2 * after.e)
-    err += "3F != 2E (" + num(static_cast<long long>(after.f)) + " faces, " + num(static_cast<long long>(after.e)) + " edges); ";
+    err += "3F != 2E (" + num(static_cast<long long>(after.f)) + " faces, " +
+           num(static_cast<long long>(after.e)) + " edges); ";
   return err;
 }
 
 // ---- Time. ----
 inline std::int64_t now_ns() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(
+             std::chrono::steady_clock::now().time_since_epoch())
       .count();
 }
 

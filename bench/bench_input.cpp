@@ -16,7 +16,8 @@ namespace fs = std::filesystem;
 Input load_input(const std::string& path) {
   hedge::IndexedMesh m = hedge::read_indexed_file(path);
   if (!m.is_triangles()) {
-    bool all_tri = std::all_of(m.face_sizes.begin(), m.face_sizes.end(), [](std::uint32_t s) { return s == 3; });
+    bool all_tri =
+        std::all_of(m.face_sizes.begin(), m.face_sizes.end(), [](std::uint32_t s) { return s == 3; });
     if (!all_tri) throw std::runtime_error(path + ": not a triangle mesh");
   }
   Input in;
@@ -73,7 +74,8 @@ bool is_closed(const Input& in) {
   for (std::size_t f = 0; f < in.n_faces(); ++f)
     for (std::size_t k = 0; k < 3; ++k) {
       std::uint64_t a = in.tri[3 * f + k], b = in.tri[3 * f + (k + 1) % 3];
-      keys[3 * f + k] = a < b ? std::pair{a << 32 | b, std::uint8_t{0}} : std::pair{b << 32 | a, std::uint8_t{1}};
+      keys[3 * f + k] =
+          a < b ? std::pair{a << 32 | b, std::uint8_t{0}} : std::pair{b << 32 | a, std::uint8_t{1}};
     }
   if (keys.size() % 2) return false;
   std::sort(keys.begin(), keys.end());
@@ -122,7 +124,8 @@ std::vector<std::string> default_mesh_specs(const std::string& root, std::string
     std::vector<std::string> specs;
     const std::string arm = (shared / "armadillo.obj").lexically_normal().string();
     specs.push_back(arm);
-    if (fs::exists(shared / "igea.ply", ec)) specs.push_back((shared / "igea.ply").lexically_normal().string());
+    if (fs::exists(shared / "igea.ply", ec))
+      specs.push_back((shared / "igea.ply").lexically_normal().string());
     specs.push_back(arm + ":sub2");
     return specs;
   }

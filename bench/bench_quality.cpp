@@ -10,7 +10,8 @@ namespace bench {
 namespace {
 
 hedge::SurfaceMesh to_hedge(const Input& in) {
-  const std::span<const hedge::Vec3> positions(reinterpret_cast<const hedge::Vec3*>(in.xyz.data()), in.n_vertices());
+  const std::span<const hedge::Vec3> positions(reinterpret_cast<const hedge::Vec3*>(in.xyz.data()),
+                                               in.n_vertices());
   return hedge::build_triangles(positions, in.tri, {.policy = hedge::TopologyPolicy::repair});
 }
 

@@ -23,8 +23,12 @@
 // microseconds of each stage (locate, scatter, cut, detach, hulls).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
 #include <iostream>
 #include <memory>
+#include <numeric>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -33,14 +37,9 @@
 #include "hedge/algorithms/decimate.h"
 #include "hedge/algorithms/fracture.h"
 #include "hedge/algorithms/locate.h"
-#include "hedge/core/operations.h"
 #include "hedge/algorithms/reorder.h"
 #include "hedge/core/build.h"
-
-#include <algorithm>
-#include <chrono>
-#include <numeric>
-#include <random>
+#include "hedge/core/operations.h"
 
 namespace {
 
@@ -136,7 +135,8 @@ hedge::SurfaceMesh plate(int n) {
   auto id = [&](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
-      m.indices.insert(m.indices.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      m.indices.insert(m.indices.end(),
+                       {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1)});
   return hedge::build(m);
 }
 
@@ -219,7 +219,8 @@ void fracture_impacts(benchmark::State& state, std::string name, std::string roo
 
 void register_fracture(const std::string& root) {
   for (const char* name : {"plate_100k", "plate_1m", "igea"})
-    benchmark::RegisterBenchmark((std::string("BM_fracture/") + name).c_str(), fracture_impacts, std::string(name), root)
+    benchmark::RegisterBenchmark((std::string("BM_fracture/") + name).c_str(), fracture_impacts,
+                                 std::string(name), root)
         ->Unit(benchmark::kMillisecond);
 }
 
@@ -231,8 +232,10 @@ int main(int argc, char** argv) {
   std::vector<std::string> specs;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
-    if (a == "--root" && i + 1 < argc) root = argv[++i];
-    else specs.push_back(a);
+    if (a == "--root" && i + 1 < argc)
+      root = argv[++i];
+    else
+      specs.push_back(a);
   }
   register_fracture(bench::find_root(root));
   if (specs.empty()) {
@@ -277,7 +280,8 @@ int main(int argc, char** argv) {
                          : m == &shuffled ? "shuffled"
                          : m == &spatial  ? "spatial"
                                           : "vertex_cache";
-      benchmark::RegisterBenchmark(("BM_one_ring_order/" + l->input.name + "/" + what).c_str(), one_ring, m->get())
+      benchmark::RegisterBenchmark(("BM_one_ring_order/" + l->input.name + "/" + what).c_str(), one_ring,
+                                   m->get())
           ->Unit(benchmark::kMillisecond);
       orders.push_back(std::move(*m));
     }

@@ -18,7 +18,9 @@ inline hedge::IndexedMesh subdivide(const hedge::IndexedMesh& in) {
   out.texcoords = in.texcoords;
   const bool uv = !in.texcoord_indices.empty();
   // Each midpoint is shared by the two triangles of its edge: keyed by the sorted index pair.
-  auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b); };
+  auto key = [](std::uint32_t a, std::uint32_t b) {
+    return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+  };
   std::unordered_map<std::uint64_t, std::uint32_t> pmid, tmid;
   pmid.reserve(in.indices.size());
   if (uv) tmid.reserve(in.indices.size());
@@ -35,10 +37,12 @@ inline hedge::IndexedMesh subdivide(const hedge::IndexedMesh& in) {
                         ca = mid(out.positions, pmid, c, a);
     out.indices.insert(out.indices.end(), {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca});
     if (!uv) continue;
-    const std::uint32_t ta = in.texcoord_indices[t], tb = in.texcoord_indices[t + 1], tc = in.texcoord_indices[t + 2];
+    const std::uint32_t ta = in.texcoord_indices[t], tb = in.texcoord_indices[t + 1],
+                        tc = in.texcoord_indices[t + 2];
     const std::uint32_t tab = mid(out.texcoords, tmid, ta, tb), tbc = mid(out.texcoords, tmid, tb, tc),
                         tca = mid(out.texcoords, tmid, tc, ta);
-    out.texcoord_indices.insert(out.texcoord_indices.end(), {ta, tab, tca, tab, tb, tbc, tca, tbc, tc, tab, tbc, tca});
+    out.texcoord_indices.insert(out.texcoord_indices.end(),
+                                {ta, tab, tca, tab, tb, tbc, tca, tbc, tc, tab, tbc, tca});
   }
   return out;
 }

@@ -4,10 +4,10 @@
 // the same Euler::add_face and allocates a vector per face besides).
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
-#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/version.h>
 
@@ -51,7 +51,8 @@ std::unique_ptr<MeshBox> build(const Input& in) {
   const std::size_t nv = in.n_vertices(), nf = in.n_faces();
   m.reserve(static_cast<SMesh::size_type>(nv), static_cast<SMesh::size_type>((3 * nf + 1) / 2),
             static_cast<SMesh::size_type>(nf));
-  for (std::size_t i = 0; i < nv; ++i) m.add_vertex(Kernel::Point_3(in.xyz[3 * i], in.xyz[3 * i + 1], in.xyz[3 * i + 2]));
+  for (std::size_t i = 0; i < nv; ++i)
+    m.add_vertex(Kernel::Point_3(in.xyz[3 * i], in.xyz[3 * i + 1], in.xyz[3 * i + 2]));
   for (std::size_t f = 0; f < nf; ++f)
     m.add_face(VI(in.tri[3 * f]), VI(in.tri[3 * f + 1]), VI(in.tri[3 * f + 2]));
   return box;
@@ -189,7 +190,7 @@ double split_op(Context& c) {
     const HI hnew = CGAL::Euler::split_edge(h, m);  // a -> v, then h: v -> b
     m.point(m.target(hnew)) = mid;
     if (!m.is_border(h)) CGAL::Euler::split_face(hnew, m.next(h), m);  // v -> tip of (a, v, b, c)
-    const HI o = m.opposite(h);                                          // b -> v, v -> a, a -> d, d -> b
+    const HI o = m.opposite(h);                                        // b -> v, v -> a, a -> d, d -> b
     if (!m.is_border(o)) CGAL::Euler::split_face(o, m.next(m.next(o)), m);
   }
   return static_cast<double>(m.number_of_vertices() + m.number_of_faces());
@@ -258,7 +259,8 @@ std::unique_ptr<MeshBox> copy_to_double(const MeshBox& reference) {
   auto box = std::make_unique<DMBox>();
   DMesh& m = box->m;
   m.reserve(from.number_of_vertices(), from.number_of_edges(), from.number_of_faces());
-  for (VI v : from.vertices()) m.add_vertex(DKernel::Point_3(from.point(v).x(), from.point(v).y(), from.point(v).z()));
+  for (VI v : from.vertices())
+    m.add_vertex(DKernel::Point_3(from.point(v).x(), from.point(v).y(), from.point(v).z()));
   for (FI f : from.faces()) {
     const HI h = from.halfedge(f);
     m.add_face(DMesh::Vertex_index(from.target(h)), DMesh::Vertex_index(from.target(from.next(h))),
@@ -286,7 +288,8 @@ double decimate_op(Context& c) {
   const StopAtVertexCount stop{&m, decimate_target_vertices(c.input)};
 #if HEDGE_BENCH_CGAL_GARLAND_HECKBERT
   SMS::GarlandHeckbert_plane_policies<DMesh, DKernel> policies(m);
-  SMS::edge_collapse(m, stop, CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
+  SMS::edge_collapse(m, stop,
+                     CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
 #else
   SMS::edge_collapse(m, stop);
 #endif
@@ -301,10 +304,12 @@ Input decimate_result(const MeshBox& edited) {
   for (auto v : m.vertices()) {
     index[static_cast<std::size_t>(v)] = static_cast<std::uint32_t>(out.n_vertices());
     const DKernel::Point_3& p = m.point(v);
-    out.xyz.insert(out.xyz.end(), {static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())});
+    out.xyz.insert(out.xyz.end(),
+                   {static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())});
   }
   for (auto f : m.faces())
-    for (auto v : CGAL::vertices_around_face(m.halfedge(f), m)) out.tri.push_back(index[static_cast<std::size_t>(v)]);
+    for (auto v : CGAL::vertices_around_face(m.halfedge(f), m))
+      out.tri.push_back(index[static_cast<std::size_t>(v)]);
   return out;
 }
 
@@ -323,10 +328,12 @@ Backend cgal_backend() {
   b.label = "CGAL";
   b.key = "cgal";
   b.notes = "CGAL " + std::to_string(CGAL_VERSION_NR / 10000000 % 100) + "." +
-            std::to_string(CGAL_VERSION_NR / 100000 % 100) + "." + std::to_string(CGAL_VERSION_NR / 10000 % 10) +
+            std::to_string(CGAL_VERSION_NR / 100000 % 100) + "." +
+            std::to_string(CGAL_VERSION_NR / 10000 % 10) +
             ": Surface_mesh<Simple_cartesian<float>::Point_3>, reserve + add_vertex + add_face; decimation: "
             "edge_collapse on a Simple_cartesian<double> copy, " +
-            (HEDGE_BENCH_CGAL_GARLAND_HECKBERT ? "GarlandHeckbert_plane_policies" : "default Lindstrom-Turk policies") +
+            (HEDGE_BENCH_CGAL_GARLAND_HECKBERT ? "GarlandHeckbert_plane_policies"
+                                               : "default Lindstrom-Turk policies") +
             ", stopped at the target vertex count";
   b.build = build;
   b.ops["build"] = {nullptr, build_op};

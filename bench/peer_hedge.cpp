@@ -32,7 +32,8 @@ F3 f3(const hedge::Vec3& p) { return {p.x, p.y, p.z}; }
 
 std::unique_ptr<MeshBox> build(const Input& in) {
   // The float x3 array is viewed as Vec3 (same layout): no conversion.
-  std::span<const hedge::Vec3> positions(reinterpret_cast<const hedge::Vec3*>(in.xyz.data()), in.n_vertices());
+  std::span<const hedge::Vec3> positions(reinterpret_cast<const hedge::Vec3*>(in.xyz.data()),
+                                         in.n_vertices());
   return std::make_unique<HBox>(hedge::build_triangles(positions, in.tri));
 }
 
@@ -97,7 +98,8 @@ double smooth_op(Context& c) {
   o.iterations = 10;
   hedge::smooth(m, o);
   double sum = 0;
-  for (hedge::Vertex v : m.vertices()) sum += std::abs(m.position(v).x) + std::abs(m.position(v).y) + std::abs(m.position(v).z);
+  for (hedge::Vertex v : m.vertices())
+    sum += std::abs(m.position(v).x) + std::abs(m.position(v).y) + std::abs(m.position(v).z);
   return sum;
 }
 
@@ -137,8 +139,8 @@ double collapse_op(Context& c) {
   std::size_t done = 0;
   for (std::size_t k = 0; k < kEditCount; ++k) {
     const std::size_t n = m.halfedge_slots();
-    const std::size_t i =
-        rng.live_index(n, [&](std::size_t j) { return m.is_deleted(hedge::Halfedge(static_cast<hedge::Index>(j))); });
+    const std::size_t i = rng.live_index(
+        n, [&](std::size_t j) { return m.is_deleted(hedge::Halfedge(static_cast<hedge::Index>(j))); });
     if (i == n) continue;
     const hedge::Halfedge h(static_cast<hedge::Index>(i));
     if (hedge::can_collapse(m, h) && hedge::collapse(m, h).is_valid()) ++done;
@@ -153,8 +155,8 @@ double split_op(Context& c) {
   EditRng rng;
   for (std::size_t k = 0; k < kEditCount; ++k) {
     const std::size_t n = m.edge_slots();
-    const std::size_t i =
-        rng.live_index(n, [&](std::size_t j) { return m.is_deleted(hedge::Edge(static_cast<hedge::Index>(j))); });
+    const std::size_t i = rng.live_index(
+        n, [&](std::size_t j) { return m.is_deleted(hedge::Edge(static_cast<hedge::Index>(j))); });
     if (i == n) continue;
     const hedge::Edge e(static_cast<hedge::Index>(i));
     const hedge::Halfedge h = hedge::SurfaceMesh::halfedge(e, 0);
@@ -173,8 +175,8 @@ double flip_op(Context& c) {
   std::size_t done = 0;
   for (std::size_t k = 0; k < kEditCount; ++k) {
     const std::size_t n = m.edge_slots();
-    const std::size_t i =
-        rng.live_index(n, [&](std::size_t j) { return m.is_deleted(hedge::Edge(static_cast<hedge::Index>(j))); });
+    const std::size_t i = rng.live_index(
+        n, [&](std::size_t j) { return m.is_deleted(hedge::Edge(static_cast<hedge::Index>(j))); });
     if (i == n) continue;
     const hedge::Edge e(static_cast<hedge::Index>(i));
     if (hedge::can_flip(m, e) && hedge::flip(m, e).is_valid()) ++done;
@@ -208,8 +210,9 @@ Input decimate_result(const MeshBox& edited) {
 
 std::string check_decimate(const MeshBox&, const MeshBox& edited, double) {
   const std::vector<std::string> problems = static_cast<const HBox&>(edited).m.validate();
-  return problems.empty() ? ""
-                          : "validate(): " + std::to_string(problems.size()) + " problem(s), first: " + problems.front();
+  return problems.empty()
+             ? ""
+             : "validate(): " + std::to_string(problems.size()) + " problem(s), first: " + problems.front();
 }
 
 Counts counts(const hedge::SurfaceMesh& m) { return {m.n_vertices(), m.n_edges(), m.n_faces()}; }
@@ -233,8 +236,9 @@ Backend hedge_backend() {
   Backend b;
   b.label = "hedge";
   b.key = "hedge";
-  b.notes = "hedge: build_triangles, default options (strict, no weld), float positions; decimation: decimate() "
-            "with its default options and target_vertices";
+  b.notes =
+      "hedge: build_triangles, default options (strict, no weld), float positions; decimation: decimate() "
+      "with its default options and target_vertices";
   b.build = build;
   b.ops["build"] = {nullptr, build_op};
   b.ops["one_ring"] = {nullptr, one_ring};

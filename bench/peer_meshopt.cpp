@@ -44,9 +44,9 @@ std::unique_ptr<MeshBox> prepare(const MeshBox& reference) {
 double decimate_op(Context& c) {
   MOBox& m = *static_cast<MOBox*>(c.mesh);
   const std::size_t target = m.indices.size() / 30 * 3;
-  m.simplified_count = meshopt_simplify(m.simplified.data(), m.indices.data(), m.indices.size(), m.xyz.data(),
-                                        m.n_vertices(), 3 * sizeof(float), target,
-                                        std::numeric_limits<float>::max(), 0, nullptr);
+  m.simplified_count =
+      meshopt_simplify(m.simplified.data(), m.indices.data(), m.indices.size(), m.xyz.data(), m.n_vertices(),
+                       3 * sizeof(float), target, std::numeric_limits<float>::max(), 0, nullptr);
   std::size_t vertices = 0;
   for (std::size_t i = 0; i < m.simplified_count; ++i) {
     std::uint8_t& u = m.used[m.simplified[i]];

@@ -3,14 +3,13 @@
 // every triangle.
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
-#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 #include <OpenMesh/Tools/Smoother/JacobiLaplaceSmootherT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
 #include <OpenMesh/Tools/Utils/MeshCheckerT.hh>
-
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -79,7 +78,8 @@ std::unique_ptr<MeshBox> build(const Input& in) {
   OMesh& m = box->m;
   const std::size_t nv = in.n_vertices(), nf = in.n_faces();
   m.reserve(nv, (3 * nf + 1) / 2, nf);  // exact for a closed triangle mesh
-  for (std::size_t i = 0; i < nv; ++i) m.add_vertex(OMesh::Point(in.xyz[3 * i], in.xyz[3 * i + 1], in.xyz[3 * i + 2]));
+  for (std::size_t i = 0; i < nv; ++i)
+    m.add_vertex(OMesh::Point(in.xyz[3 * i], in.xyz[3 * i + 1], in.xyz[3 * i + 2]));
   for (std::size_t f = 0; f < nf; ++f)
     m.add_face(OMesh::VertexHandle(static_cast<int>(in.tri[3 * f])),
                OMesh::VertexHandle(static_cast<int>(in.tri[3 * f + 1])),
@@ -172,8 +172,8 @@ double split_op(Context& c) {
   EditRng rng;
   for (std::size_t k = 0; k < kEditCount; ++k) {
     const std::size_t n = m.n_edges();
-    const std::size_t i =
-        rng.live_index(n, [&](std::size_t j) { return m.status(OMesh::EdgeHandle(static_cast<int>(j))).deleted(); });
+    const std::size_t i = rng.live_index(
+        n, [&](std::size_t j) { return m.status(OMesh::EdgeHandle(static_cast<int>(j))).deleted(); });
     if (i == n) continue;
     const OMesh::EdgeHandle e(static_cast<int>(i));
     const OMesh::HalfedgeHandle h = m.halfedge_handle(e, 0);
@@ -196,7 +196,8 @@ double smooth_op(Context& c) {
   s.initialize(uniform ? Smoother::Tangential_and_Normal : Smoother::Normal, Smoother::C0);
   s.smooth(10);
   double sum = 0;
-  for (auto v : m.vertices()) sum += std::abs(m.point(v)[0]) + std::abs(m.point(v)[1]) + std::abs(m.point(v)[2]);
+  for (auto v : m.vertices())
+    sum += std::abs(m.point(v)[0]) + std::abs(m.point(v)[1]) + std::abs(m.point(v)[2]);
   return sum;
 }
 
@@ -227,8 +228,8 @@ double flip_op(Context& c) {
   std::size_t done = 0;
   for (std::size_t k = 0; k < kEditCount; ++k) {
     const std::size_t n = m.n_edges();
-    const std::size_t i =
-        rng.live_index(n, [&](std::size_t j) { return m.status(OMesh::EdgeHandle(static_cast<int>(j))).deleted(); });
+    const std::size_t i = rng.live_index(
+        n, [&](std::size_t j) { return m.status(OMesh::EdgeHandle(static_cast<int>(j))).deleted(); });
     if (i == n) continue;
     const OMesh::EdgeHandle e(static_cast<int>(i));
     if (m.is_flip_ok(e)) {
@@ -254,7 +255,8 @@ std::string check_edit(const MeshBox& reference, const MeshBox& edited, double c
   const OMesh& after = static_cast<const OMBox&>(edited).m;
   std::string err;
   std::ostringstream log;
-  if (!OpenMesh::Utils::MeshCheckerT<OMesh>(after).check(OpenMesh::Utils::MeshCheckerT<OMesh>::CHECK_ALL, log)) {
+  if (!OpenMesh::Utils::MeshCheckerT<OMesh>(after).check(OpenMesh::Utils::MeshCheckerT<OMesh>::CHECK_ALL,
+                                                         log)) {
     std::string first = log.str();
     first = first.substr(0, first.find('\n'));
     err = "MeshCheckerT::check failed: " + first + "; ";

@@ -10,8 +10,8 @@
 // Method: every backend gets the same in-memory arrays. For each mesh and operation the backends
 // run round-robin (the starting backend rotates every round) after one warm-up run each; runs
 // shorter than 1 ms are batched into one sample (same batch size for every backend); the
-// medians of the per-run times are compared: ratio = fastest peer's median / hedge's median (> 1: hedge is faster).
-// Checksums of every operation are compared across backends. The editing operations (collapse,
+// medians of the per-run times are compared: ratio = fastest peer's median / hedge's median (> 1: hedge is
+// faster). Checksums of every operation are compared across backends. The editing operations (collapse,
 // split, flip) run the same seeded sequence of 10^5 random attempts on a private copy of the mesh
 // made before the timer starts (see EditRng in bench_common.h); their result is checked untimed
 // after the warm-up run with each library's own validity checks and the element counts the
@@ -26,6 +26,8 @@
 // there, and a backend no selected operation uses is not built (its bytes per vertex read n/a).
 //
 // Adding an operation: one entry in kOps below plus one function per backend (bench_common.h).
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -36,8 +38,6 @@
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 #include "alloc_count.h"
 #include "bench_common.h"
@@ -62,9 +62,10 @@ struct OpSpec {
   const char* label;  //!< row title
   BarKind bar;
   double factor;
-  double checksum_rel_tol;      //!< allowed relative checksum difference to hedge (summation order)
-  bool compare_vertex_output;   //!< compare Scratch::vertex_normal element-wise with hedge's
-  const char* checksum_meaning = nullptr;  //!< if set, the checksums are printed under the row with this title
+  double checksum_rel_tol;     //!< allowed relative checksum difference to hedge (summation order)
+  bool compare_vertex_output;  //!< compare Scratch::vertex_normal element-wise with hedge's
+  const char* checksum_meaning =
+      nullptr;  //!< if set, the checksums are printed under the row with this title
   //! If > 0: the result's distance to the input is measured (OpImpl::result), and hedge's Hausdorff
   //! distance must be at most this times the best of the mesh-structure peers'.
   double quality_factor = 0;
@@ -78,7 +79,8 @@ const OpSpec kOps[] = {
     // 10^5 seeded random attempts each (bench_common.h: kEditCount, EditRng). Collapses and flips
     // count attempts; each library's predicate refuses slightly different sets, so the number done
     // may differ by a little (kEditWorkTol) and is printed under the row.
-    {"collapse", "random collapses (10^5 checked)", BarKind::faster, 2.0, kEditWorkTol, false, "collapses done"},
+    {"collapse", "random collapses (10^5 checked)", BarKind::faster, 2.0, kEditWorkTol, false,
+     "collapses done"},
     {"split", "random edge splits (10^5)", BarKind::faster, 2.0, 0.0, false, "#V + #F after"},
     {"flip", "random flips (10^5 checked)", BarKind::faster, 2.0, kEditWorkTol, false, "flips done"},
     // One step of Loop's scheme on a private copy (algorithms/subdivide.h).
@@ -87,18 +89,22 @@ const OpSpec kOps[] = {
     {"catmull_clark", "Catmull-Clark, one step", BarKind::faster, 2.0, 0.0, false, "#V + #F after"},
     // Catmull-Clark of a quad mesh: the input made all quads by one untimed step (OpenMesh's
     // CatmullClarkT on its polygon mesh type), then one timed step.
-    {"catmull_clark_quads", "Catmull-Clark of quads, one step", BarKind::faster, 2.0, 0.0, false, "#V + #F after"},
+    {"catmull_clark_quads", "Catmull-Clark of quads, one step", BarKind::faster, 2.0, 0.0, false,
+     "#V + #F after"},
     // One step of Kobbelt's sqrt(3) scheme. On a closed mesh every library makes V + F, 3F; on open
     // ones the boundary rules differ (hedge keeps boundary edges), hence the tolerance.
     {"sqrt3", "sqrt(3) subdivision, one step", BarKind::faster, 2.0, 0.01, false, "#V + #F after"},
     // Ten smoothing iterations (CGAL has no explicit Laplacian smoother: n/a). Uniform: the same
     // umbrella step with damping 0.5 in both, so the results agree. Cotangent: hedge moves along the
     // cotangent Laplacian, OpenMesh along its normal component only, so the sums differ a little.
-    {"smooth_uniform", "uniform smoothing, 10 iterations", BarKind::faster, 1.0, 1e-4, false, "sum |p| after"},
-    {"smooth_cotan", "cotangent smoothing, 10 iterations", BarKind::faster, 1.0, 1e-2, false, "sum |p| after"},
+    {"smooth_uniform", "uniform smoothing, 10 iterations", BarKind::faster, 1.0, 1e-4, false,
+     "sum |p| after"},
+    {"smooth_cotan", "cotangent smoothing, 10 iterations", BarKind::faster, 1.0, 1e-2, false,
+     "sum |p| after"},
     // QEM decimation of a private copy to a tenth of the vertices (meshoptimizer: of the indices);
     // the vertex counts reached may differ by a little.
-    {"decimate", "QEM decimation to 10% vertices", BarKind::slower_at_most, 3.0, 0.1, false, "vertices after", 1.1},
+    {"decimate", "QEM decimation to 10% vertices", BarKind::slower_at_most, 3.0, 0.1, false, "vertices after",
+     1.1},
 };
 
 constexpr double kBytesPerVertexBar = 100.0;
@@ -281,7 +287,8 @@ MeshResult run_mesh(const Input& in, std::vector<Backend>& backends, const Optio
         impl[b] = &it->second;
         r.cells[b].available = true;
       } else {
-        r.cells[b].error = refs[b] ? (build_errors[b].empty() ? "not implemented" : build_errors[b]) : build_errors[b];
+        r.cells[b].error =
+            refs[b] ? (build_errors[b].empty() ? "not implemented" : build_errors[b]) : build_errors[b];
       }
     }
     // One sample: `batch` back-to-back runs (prepared before and cleaned up after the timer), so that
@@ -301,15 +308,19 @@ MeshResult run_mesh(const Input& in, std::vector<Backend>& backends, const Optio
       }
       const std::int64_t t1 = bench::now_ns();
       const double ms = static_cast<double>(t1 - t0) * 1e-6 / static_cast<double>(batch);
-      if (timed) r.cells[b].ms.push_back(ms);
-      else warmup_ms[b] = ms;
-      if (!timed && impl[b]->check && work[0]) r.cells[b].check_error = impl[b]->check(*refs[b], *work[0], checksum);
+      if (timed)
+        r.cells[b].ms.push_back(ms);
+      else
+        warmup_ms[b] = ms;
+      if (!timed && impl[b]->check && work[0])
+        r.cells[b].check_error = impl[b]->check(*refs[b], *work[0], checksum);
       if (!timed && spec.quality_factor > 0 && impl[b]->result && work[0]) {
         try {
           r.cells[b].quality = bench::surface_distance(in, impl[b]->result(*work[0]));
         } catch (const std::exception& e) {
           r.cells[b].quality_error = e.what();
-          std::cerr << "  " << spec.key << ": " << backends[b].label << " result not measured: " << e.what() << "\n";
+          std::cerr << "  " << spec.key << ": " << backends[b].label << " result not measured: " << e.what()
+                    << "\n";
         }
       }
       return checksum;
@@ -381,7 +392,8 @@ MeshResult run_mesh(const Input& in, std::vector<Backend>& backends, const Optio
     if (spec.quality_factor > 0 && r.cells[0].quality) {
       for (std::size_t b = 1; b < nb; ++b)
         if (backends[b].mesh_structure && r.cells[b].quality &&
-            (r.quality_peer < 0 || r.cells[b].quality->hausdorff < r.cells[r.quality_peer].quality->hausdorff))
+            (r.quality_peer < 0 ||
+             r.cells[b].quality->hausdorff < r.cells[r.quality_peer].quality->hausdorff))
           r.quality_peer = static_cast<int>(b);
       if (r.quality_peer > 0) {
         r.quality_ratio = r.cells[0].quality->hausdorff / r.cells[r.quality_peer].quality->hausdorff;
@@ -424,18 +436,22 @@ void print_table(const MeshResult& m, const std::vector<Backend>& backends) {
     if (r.best_peer > 0) ratio += " (" + backends[r.best_peer].label.substr(0, 2) + ")";
     std::printf(" %16s  %-14s %s", ratio.c_str(), bar_text(*r.spec).c_str(), pass_text(r.pass).c_str());
     for (std::size_t b = 1; b < r.cells.size(); ++b)
-      if (r.cells[b].available && !r.cells[b].checksum_ok) std::printf("  [%s checksum mismatch]", backends[b].label.c_str());
+      if (r.cells[b].available && !r.cells[b].checksum_ok)
+        std::printf("  [%s checksum mismatch]", backends[b].label.c_str());
     for (std::size_t b = 0; b < r.cells.size(); ++b)
       if (r.cells[b].check_error && !r.cells[b].check_error->empty())
         std::printf("  [WARNING: %s mesh invalid after the sequence]", backends[b].label.c_str());
     std::printf("\n");
     if (r.spec->checksum_meaning) {
       std::printf("  %-32s", (std::string("  ") + r.spec->checksum_meaning).c_str());
-      for (const auto& c : r.cells) std::printf(" %10s", c.available ? fmt("%.0f", c.checksum).c_str() : "n/a");
+      for (const auto& c : r.cells)
+        std::printf(" %10s", c.available ? fmt("%.0f", c.checksum).c_str() : "n/a");
       bool checked = false, valid = true;
       for (const auto& c : r.cells)
         if (c.check_error) checked = true, valid = valid && c.check_error->empty();
-      if (checked) std::printf("   %s", valid ? "(all meshes valid after the sequence)" : "(INVALID mesh, see warnings)");
+      if (checked)
+        std::printf("   %s",
+                    valid ? "(all meshes valid after the sequence)" : "(INVALID mesh, see warnings)");
       std::printf("\n");
     }
     if (r.spec->quality_factor > 0) {
@@ -443,7 +459,8 @@ void print_table(const MeshResult& m, const std::vector<Backend>& backends) {
         std::printf("  %-32s", title);
         for (const auto& c : r.cells) std::printf(" %10s", c.quality ? text(*c.quality).c_str() : "n/a");
       };
-      quality_row("  Hausdorff distance to input", [](const bench::Quality& q) { return fmt("%.4g", q.hausdorff); });
+      quality_row("  Hausdorff distance to input",
+                  [](const bench::Quality& q) { return fmt("%.4g", q.hausdorff); });
       std::string ratio = fmt("%.2fx", r.quality_ratio);
       if (r.quality_peer > 0) ratio += " (" + backends[r.quality_peer].label.substr(0, 2) + ")";
       char bar[32];
@@ -456,19 +473,24 @@ void print_table(const MeshResult& m, const std::vector<Backend>& backends) {
     }
   }
   std::printf("  %-32s", "heap bytes / vertex");
-  for (const auto& c : m.mem) std::printf(" %10s", c.available ? fmt("%.1f", c.bytes_per_vertex).c_str() : "n/a");
-  std::printf(" %16s  %-14s %s\n", fmt("%.2fx", m.mem_ratio).c_str(), "<= 100 B/V", pass_text(m.mem_pass).c_str());
+  for (const auto& c : m.mem)
+    std::printf(" %10s", c.available ? fmt("%.1f", c.bytes_per_vertex).c_str() : "n/a");
+  std::printf(" %16s  %-14s %s\n", fmt("%.2fx", m.mem_ratio).c_str(), "<= 100 B/V",
+              pass_text(m.mem_pass).c_str());
   std::printf("  %-32s", "  peak during build / vertex");
-  for (const auto& c : m.mem) std::printf(" %10s", c.available ? fmt("%.1f", c.peak_per_vertex).c_str() : "n/a");
+  for (const auto& c : m.mem)
+    std::printf(" %10s", c.available ? fmt("%.1f", c.peak_per_vertex).c_str() : "n/a");
   std::printf("\n");
   if (m.mem[0].available)
     std::printf("  %-32s %10s   (cross-check of the heap count)\n", "  hedge memory_bytes() / vertex",
                 fmt("%.1f", m.mem[0].own_per_vertex).c_str());
 }
 
-json cell_map(const std::vector<Backend>& backends, const std::vector<double>& values, const std::vector<bool>& ok) {
+json cell_map(const std::vector<Backend>& backends, const std::vector<double>& values,
+              const std::vector<bool>& ok) {
   json j = json::object();
-  for (std::size_t b = 0; b < backends.size(); ++b) j[backends[b].key] = ok[b] ? json(values[b]) : json(nullptr);
+  for (std::size_t b = 0; b < backends.size(); ++b)
+    j[backends[b].key] = ok[b] ? json(values[b]) : json(nullptr);
   return j;
 }
 
@@ -543,8 +565,9 @@ json to_json(const MeshResult& m, const std::vector<Backend>& backends) {
       q["bar"] = "hedge's Hausdorff distance <= factor x the best mesh-structure peer's";
       q["bar_factor"] = r.spec->quality_factor;
       q["pass"] = r.quality_pass ? json(*r.quality_pass) : json(nullptr);
-      q["method"] = "sampled symmetric Hausdorff distance to the input: vertices plus max(10^5, #F of the input) "
-                    "area-proportional seeded samples on each surface, exact closest points (hedge distance.h)";
+      q["method"] =
+          "sampled symmetric Hausdorff distance to the input: vertices plus max(10^5, #F of the input) "
+          "area-proportional seeded samples on each surface, exact closest points (hedge distance.h)";
       o["quality"] = q;
     }
     ops[r.spec->key] = o;
@@ -581,17 +604,19 @@ std::pair<double, long> machine_load() {
 }
 
 void usage() {
-  std::cerr << "usage: peers [--json] [--quick] [--reps N] [--strict] [--only SEL] [--root DIR] [mesh[:subN] ...]\n"
-               "  --json    print the figures as one JSON object on stdout\n"
-               "  --quick   3 rounds per operation (a smoke run)\n"
-               "  --reps N  N rounds per operation\n"
-               "  --strict  exit with 1 when a bar fails\n"
-               "  --only    run only these: comma-separated OP or LIB:OP (e.g. split or hedge:split,cgal:split);\n"
-               "            LIB is hedge, openmesh, cgal or meshopt; OP is build, one_ring, vertex_normals,\n"
-               "            collapse, split, flip, loop, catmull_clark, catmull_clark_quads, smooth_uniform, smooth_cotan or\n"
-               "            decimate; may be repeated\n"
-               "  --root    repository root (default: found from the working directory)\n"
-               "  mesh      a triangle mesh file; ':subN' appends N rounds of 1-to-4 subdivision\n";
+  std::cerr
+      << "usage: peers [--json] [--quick] [--reps N] [--strict] [--only SEL] [--root DIR] [mesh[:subN] ...]\n"
+         "  --json    print the figures as one JSON object on stdout\n"
+         "  --quick   3 rounds per operation (a smoke run)\n"
+         "  --reps N  N rounds per operation\n"
+         "  --strict  exit with 1 when a bar fails\n"
+         "  --only    run only these: comma-separated OP or LIB:OP (e.g. split or hedge:split,cgal:split);\n"
+         "            LIB is hedge, openmesh, cgal or meshopt; OP is build, one_ring, vertex_normals,\n"
+         "            collapse, split, flip, loop, catmull_clark, catmull_clark_quads, smooth_uniform, "
+         "smooth_cotan or\n"
+         "            decimate; may be repeated\n"
+         "  --root    repository root (default: found from the working directory)\n"
+         "  mesh      a triangle mesh file; ':subN' appends N rounds of 1-to-4 subdivision\n";
 }
 
 }  // namespace
@@ -600,11 +625,16 @@ int main(int argc, char** argv) {
   Options opt;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
-    if (a == "--json") opt.json = true;
-    else if (a == "--quick") opt.quick = true;
-    else if (a == "--strict") opt.strict = true;
-    else if (a == "--reps" && i + 1 < argc) opt.reps = std::atoi(argv[++i]);
-    else if (a == "--root" && i + 1 < argc) opt.root = argv[++i];
+    if (a == "--json")
+      opt.json = true;
+    else if (a == "--quick")
+      opt.quick = true;
+    else if (a == "--strict")
+      opt.strict = true;
+    else if (a == "--reps" && i + 1 < argc)
+      opt.reps = std::atoi(argv[++i]);
+    else if (a == "--root" && i + 1 < argc)
+      opt.root = argv[++i];
     else if (a == "--only" && i + 1 < argc) {
       std::string list = argv[++i];
       for (std::size_t start = 0; start <= list.size();) {
@@ -615,8 +645,9 @@ int main(int argc, char** argv) {
         if (item.empty()) continue;
         const std::size_t colon = item.find(':');
         std::pair<std::string, std::string> sel =
-            colon == std::string::npos ? std::pair<std::string, std::string>{"", item}
-                                       : std::pair<std::string, std::string>{item.substr(0, colon), item.substr(colon + 1)};
+            colon == std::string::npos
+                ? std::pair<std::string, std::string>{"", item}
+                : std::pair<std::string, std::string>{item.substr(0, colon), item.substr(colon + 1)};
         bool known = false;
         for (const OpSpec& spec : kOps) known = known || sel.second == spec.key;
         if (!known) {
@@ -626,8 +657,7 @@ int main(int argc, char** argv) {
         }
         opt.only.push_back(std::move(sel));
       }
-    }
-    else if (a == "-h" || a == "--help") {
+    } else if (a == "-h" || a == "--help") {
       usage();
       return 0;
     } else if (a.rfind("--", 0) == 0) {
@@ -644,7 +674,8 @@ int main(int argc, char** argv) {
     std::cerr << note << "\n";
     if (opt.meshes.empty()) {
       std::cerr << "no meshes to run: skipped\n";
-      if (opt.json) std::cout << json{{"skipped", true}, {"note", note}, {"meshes", json::array()}}.dump(2) << "\n";
+      if (opt.json)
+        std::cout << json{{"skipped", true}, {"note", note}, {"meshes", json::array()}}.dump(2) << "\n";
       return 0;
     }
   }
@@ -666,8 +697,9 @@ int main(int argc, char** argv) {
 
   const auto [load, cpus] = machine_load();
   if (!opt.json)
-    std::printf("load average %.2f on %ld processors%s\n", load, cpus,
-                load > static_cast<double>(cpus) ? " (busy machine: expect noisy medians; ratios are same-run)" : "");
+    std::printf(
+        "load average %.2f on %ld processors%s\n", load, cpus,
+        load > static_cast<double>(cpus) ? " (busy machine: expect noisy medians; ratios are same-run)" : "");
 
   std::vector<MeshResult> results;
   for (const std::string& spec : opt.meshes) {
@@ -691,7 +723,8 @@ int main(int argc, char** argv) {
   bool all_pass = true, checks_ok = true;
   json bars = json::array();
   auto summarize = [&](const std::string& name, const std::string& bar, auto get_ratio, auto get_pass,
-                       bool lower_is_better, const char* worst_key = nullptr, const char* worst_format = nullptr) {
+                       bool lower_is_better, const char* worst_key = nullptr,
+                       const char* worst_format = nullptr) {
     int n = 0, passed = 0;
     double worst = std::numeric_limits<double>::quiet_NaN();
     for (const MeshResult& m : results) {
@@ -705,27 +738,35 @@ int main(int argc, char** argv) {
     if (n == 0) return;
     bool ok = passed == n;
     all_pass = all_pass && ok;
-    if (!worst_key) worst_key = lower_is_better ? "worst_hedge_bytes_per_vertex" : "worst_best_peer_over_hedge";
+    if (!worst_key)
+      worst_key = lower_is_better ? "worst_hedge_bytes_per_vertex" : "worst_best_peer_over_hedge";
     if (!worst_format) worst_format = lower_is_better ? "%.1f B/V" : "%.2fx";
-    bars.push_back({{"name", name}, {"bar", bar}, {"pass", ok}, {"meshes_passed", passed}, {"meshes", n},
+    bars.push_back({{"name", name},
+                    {"bar", bar},
+                    {"pass", ok},
+                    {"meshes_passed", passed},
+                    {"meshes", n},
                     {worst_key, worst}});
     if (!opt.json)
-      std::printf("  %-34s %-16s %s (%d of %d meshes pass; worst %s)\n", name.c_str(), bar.c_str(), ok ? "PASS" : "FAIL",
-                  passed, n, fmt(worst_format, worst).c_str());
+      std::printf("  %-34s %-16s %s (%d of %d meshes pass; worst %s)\n", name.c_str(), bar.c_str(),
+                  ok ? "PASS" : "FAIL", passed, n, fmt(worst_format, worst).c_str());
   };
   if (!opt.json) std::printf("\nBars (hedge against the faster peer, same run):\n");
   for (std::size_t k = 0; k < std::size(kOps); ++k) {
     if (kOps[k].bar == BarKind::none) continue;
-    summarize(kOps[k].label, bar_text(kOps[k]), [k](const MeshResult& m) { return m.ops[k].ratio; },
-              [k](const MeshResult& m) { return m.ops[k].pass; }, false);
+    summarize(
+        kOps[k].label, bar_text(kOps[k]), [k](const MeshResult& m) { return m.ops[k].ratio; },
+        [k](const MeshResult& m) { return m.ops[k].pass; }, false);
     if (kOps[k].quality_factor > 0)
-      summarize(std::string(kOps[k].key) + ": Hausdorff", fmt("<= %gx best", kOps[k].quality_factor),
-                [k](const MeshResult& m) { return m.ops[k].quality_ratio; },
-                [k](const MeshResult& m) { return m.ops[k].quality_pass; }, true, "worst_hedge_over_best_reference",
-                "%.2fx");
+      summarize(
+          std::string(kOps[k].key) + ": Hausdorff", fmt("<= %gx best", kOps[k].quality_factor),
+          [k](const MeshResult& m) { return m.ops[k].quality_ratio; },
+          [k](const MeshResult& m) { return m.ops[k].quality_pass; }, true, "worst_hedge_over_best_reference",
+          "%.2fx");
   }
-  summarize("heap bytes / vertex", "<= 100 B/V", [](const MeshResult& m) { return m.mem[0].bytes_per_vertex; },
-            [](const MeshResult& m) { return m.mem_pass; }, true);
+  summarize(
+      "heap bytes / vertex", "<= 100 B/V", [](const MeshResult& m) { return m.mem[0].bytes_per_vertex; },
+      [](const MeshResult& m) { return m.mem_pass; }, true);
   for (const MeshResult& m : results) checks_ok = checks_ok && m.checks_ok;
 
   if (opt.json) {
@@ -751,7 +792,8 @@ int main(int argc, char** argv) {
   } else {
     std::printf("\n");
     for (const Backend& b : backends) std::printf("  %s\n", b.notes.c_str());
-    if (!checks_ok) std::printf("\nCHECK FAILED: a backend disagreed with hedge or failed to build (see above)\n");
+    if (!checks_ok)
+      std::printf("\nCHECK FAILED: a backend disagreed with hedge or failed to build (see above)\n");
   }
   if (!checks_ok) return 2;
   if (opt.strict && !all_pass) return 1;

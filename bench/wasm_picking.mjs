@@ -51,7 +51,8 @@ const p = mesh.positions;
 const lo = [Infinity, Infinity, Infinity];
 const hi = [-Infinity, -Infinity, -Infinity];
 for (let i = 0; i < p.length; i += 3)
-  for (let a = 0; a < 3; ++a) (lo[a] = Math.min(lo[a], p[i + a])), (hi[a] = Math.max(hi[a], p[i + a]));
+  for (let a = 0; a < 3; ++a)
+    ((lo[a] = Math.min(lo[a], p[i + a])), (hi[a] = Math.max(hi[a], p[i + a])));
 const size = [0, 1, 2].map((a) => hi[a] - lo[a]);
 const diag = Math.hypot(...size);
 const centre = [0, 1, 2].map((a) => (lo[a] + hi[a]) / 2);
@@ -77,17 +78,23 @@ const manyFrame = [];
 let hits = 0;
 const out = new Int32Array(raysPerFrame);
 for (let f = -warmup; f < frames; ++f) {
-  const frame = rays.subarray(6 * raysPerFrame * Math.max(f, 0), 6 * raysPerFrame * (Math.max(f, 0) + 1));
+  const frame = rays.subarray(
+    6 * raysPerFrame * Math.max(f, 0),
+    6 * raysPerFrame * (Math.max(f, 0) + 1),
+  );
   t0 = performance.now();
   for (let r = 0; r < raysPerFrame; ++r) {
     const o = 6 * r;
-    if (mesh.pick([frame[o], frame[o + 1], frame[o + 2]], [frame[o + 3], frame[o + 4], frame[o + 5]])) ++hits;
+    if (
+      mesh.pick([frame[o], frame[o + 1], frame[o + 2]], [frame[o + 3], frame[o + 4], frame[o + 5]])
+    )
+      ++hits;
   }
   const pickMs = performance.now() - t0;
   t0 = performance.now();
   mesh.pickMany(frame, out);
   const manyMs = performance.now() - t0;
-  if (f >= 0) pickFrame.push(pickMs), manyFrame.push(manyMs);
+  if (f >= 0) (pickFrame.push(pickMs), manyFrame.push(manyMs));
   else hits = 0;
 }
 
@@ -100,13 +107,21 @@ const warmBuildMs = performance.now() - t0;
 copy.dispose();
 
 const name = path.split('/').pop() + (steps > 0 ? ` subdivided x${steps}` : '');
-console.log(`mesh: ${name}, ${faces} triangles; ${frames} frames of ${raysPerFrame} rays, ` +
-  `${((100 * hits) / (frames * raysPerFrame)).toFixed(0)}% hit`);
-console.log(`BVH build (first pick): ${buildMs.toFixed(1)} ms cold, ${warmBuildMs.toFixed(1)} ms warm`);
+console.log(
+  `mesh: ${name}, ${faces} triangles; ${frames} frames of ${raysPerFrame} rays, ` +
+    `${((100 * hits) / (frames * raysPerFrame)).toFixed(0)}% hit`,
+);
+console.log(
+  `BVH build (first pick): ${buildMs.toFixed(1)} ms cold, ${warmBuildMs.toFixed(1)} ms warm`,
+);
 const report = (label, xs) =>
-  console.log(`${label} median ${median(xs).toFixed(2)} ms per ${raysPerFrame} rays ` +
-    `(${((1000 * median(xs)) / raysPerFrame).toFixed(2)} us per ray; best frame ${Math.min(...xs).toFixed(2)} ms)`);
+  console.log(
+    `${label} median ${median(xs).toFixed(2)} ms per ${raysPerFrame} rays ` +
+      `(${((1000 * median(xs)) / raysPerFrame).toFixed(2)} us per ray; best frame ${Math.min(...xs).toFixed(2)} ms)`,
+  );
 report('pick():    ', pickFrame);
 report('pickMany():', manyFrame);
-console.log(`bar: 16.7 ms per frame (60 fps) -> ${median(pickFrame) < 16.7 ? 'met' : 'NOT met'} with pick()`);
+console.log(
+  `bar: 16.7 ms per frame (60 fps) -> ${median(pickFrame) < 16.7 ? 'met' : 'NOT met'} with pick()`,
+);
 mesh.dispose();

@@ -106,7 +106,9 @@ export function startServer({ port = 0, wasm } = {}) {
       stat = null;
     }
     if (!file || !stat || !stat.isFile()) {
-      res.writeHead(404, { 'Content-Type': 'text/plain; charset=utf-8' }).end(`not found: ${url.pathname}\n`);
+      res
+        .writeHead(404, { 'Content-Type': 'text/plain; charset=utf-8' })
+        .end(`not found: ${url.pathname}\n`);
       return;
     }
     res.writeHead(200, {

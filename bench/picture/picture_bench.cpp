@@ -35,7 +35,8 @@ const Scene& scene() {
     IndexedMesh in = read_indexed_file(path);
     const int rounds = bench::subdivide_until(in, 1'000'000);
     Scene out;
-    out.name = std::filesystem::path(path).filename().string() + " subdivided " + std::to_string(rounds) + "x";
+    out.name =
+        std::filesystem::path(path).filename().string() + " subdivided " + std::to_string(rounds) + "x";
     out.mesh = build(in);
     out.camera = frame(out.mesh, View::iso, 1024.0 / 768);
     std::printf("mesh: %s, %zu triangles\n", out.name.c_str(), out.mesh.n_faces());

@@ -1,9 +1,9 @@
 // Incremental render buffers against a full re-export, in one run, on meshes of a million triangles
 // and more: random local edits (split, collapse, flip, split face, vertex moves), each followed by
 // RenderSync::sync(), against building the buffers from scratch after every change
-// (RenderSync::rebuild(); docs/names.md says which call of the original project it stands for). Google Benchmark prints its table for the
-// full export and for edit + sync; then a summary gives, from per-edit samples, the median bytes
-// rewritten and the median time per edit, with their ratios to a full re-export.
+// (RenderSync::rebuild(); docs/names.md says which call of the original project it stands for). Google
+// Benchmark prints its table for the full export and for edit + sync; then a summary gives, from per-edit
+// samples, the median bytes rewritten and the median time per edit, with their ratios to a full re-export.
 //
 //   hedge_render_bench [--root DIR] [--mesh FILE]... [--min-faces N] [--edits N] [--json FILE]
 //                      [Google Benchmark flags]
@@ -193,17 +193,25 @@ int main(int argc, char** argv) {
   std::vector<char*> rest{argv[0]};
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--root" && i + 1 < argc) root = argv[++i];
-    else if (a == "--mesh" && i + 1 < argc) meshes.push_back(argv[++i]);
-    else if (a == "--min-faces" && i + 1 < argc) min_faces = std::stoul(argv[++i]);
-    else if (a == "--edits" && i + 1 < argc) edits = std::stoul(argv[++i]);
-    else if (a == "--json" && i + 1 < argc) json = argv[++i];
-    else rest.push_back(argv[i]);
+    if (a == "--root" && i + 1 < argc)
+      root = argv[++i];
+    else if (a == "--mesh" && i + 1 < argc)
+      meshes.push_back(argv[++i]);
+    else if (a == "--min-faces" && i + 1 < argc)
+      min_faces = std::stoul(argv[++i]);
+    else if (a == "--edits" && i + 1 < argc)
+      edits = std::stoul(argv[++i]);
+    else if (a == "--json" && i + 1 < argc)
+      json = argv[++i];
+    else
+      rest.push_back(argv[i]);
   }
   if (meshes.empty()) {
     const fs::path arm = root / ".." / "shared" / "meshes" / "armadillo.obj";
-    if (fs::exists(arm)) meshes.push_back(arm.string());
-    else std::fprintf(stderr, "render bench: %s not found, skipping it\n", arm.string().c_str());
+    if (fs::exists(arm))
+      meshes.push_back(arm.string());
+    else
+      std::fprintf(stderr, "render bench: %s not found, skipping it\n", arm.string().c_str());
     meshes.push_back((root / "data" / "spot_triangulated.obj").string());
   }
   for (const std::string& p : meshes) {
@@ -223,27 +231,28 @@ int main(int argc, char** argv) {
   benchmark::Shutdown();
 
   std::printf("\nSame-run comparison, %zu applied edits per mesh, sync() after each (medians):\n", edits);
-  std::printf("%-28s %10s %12s %12s %12s %10s %12s %10s %10s\n", "mesh", "triangles", "full bytes", "edit bytes",
-              "bytes ratio", "full ms", "edit+sync us", "sync us", "speedup");
+  std::printf("%-28s %10s %12s %12s %12s %10s %12s %10s %10s\n", "mesh", "triangles", "full bytes",
+              "edit bytes", "bytes ratio", "full ms", "edit+sync us", "sync us", "speedup");
   bool pass = true;
   std::string out = "[";
   for (auto& w : g_workloads) {
     const Summary s = measure(*w, edits);
     const bool ok = s.bytes_ratio() <= 1e-3 && s.time_ratio() >= 500;
     pass &= ok;
-    std::printf("%-28s %10zu %12.0f %12.0f %12.2e %10.1f %12.2f %10.2f %9.0fx %s\n", s.name.c_str(), s.triangles,
-                s.full_bytes, s.edit_bytes, s.bytes_ratio(), s.full_ms, s.edit_us, s.sync_us, s.time_ratio(),
-                ok ? "pass" : "FAIL");
+    std::printf("%-28s %10zu %12.0f %12.0f %12.2e %10.1f %12.2f %10.2f %9.0fx %s\n", s.name.c_str(),
+                s.triangles, s.full_bytes, s.edit_bytes, s.bytes_ratio(), s.full_ms, s.edit_us, s.sync_us,
+                s.time_ratio(), ok ? "pass" : "FAIL");
     std::printf("%-28s render vertices %zu (seam splits %zu), refused picks %zu, edit+sync p90 %.2f us\n", "",
                 s.render_vertices, s.seams, s.refused, s.edit_us_p90);
     char buf[1024];
-    std::snprintf(buf, sizeof buf,
-                  "%s{\"mesh\":\"%s\",\"triangles\":%zu,\"render_vertices\":%zu,\"seam_splits\":%zu,\"edits\":%zu,"
-                  "\"full_bytes\":%.0f,\"median_edit_bytes\":%.0f,\"full_ms\":%.3f,\"median_edit_us\":%.3f,"
-                  "\"median_sync_us\":%.3f,\"bytes_ratio\":%.3e,\"speedup\":%.1f,\"pass\":%s}",
-                  out.size() > 1 ? "," : "", s.name.c_str(), s.triangles, s.render_vertices, s.seams, s.edits,
-                  s.full_bytes, s.edit_bytes, s.full_ms, s.edit_us, s.sync_us, s.bytes_ratio(), s.time_ratio(),
-                  ok ? "true" : "false");
+    std::snprintf(
+        buf, sizeof buf,
+        "%s{\"mesh\":\"%s\",\"triangles\":%zu,\"render_vertices\":%zu,\"seam_splits\":%zu,\"edits\":%zu,"
+        "\"full_bytes\":%.0f,\"median_edit_bytes\":%.0f,\"full_ms\":%.3f,\"median_edit_us\":%.3f,"
+        "\"median_sync_us\":%.3f,\"bytes_ratio\":%.3e,\"speedup\":%.1f,\"pass\":%s}",
+        out.size() > 1 ? "," : "", s.name.c_str(), s.triangles, s.render_vertices, s.seams, s.edits,
+        s.full_bytes, s.edit_bytes, s.full_ms, s.edit_us, s.sync_us, s.bytes_ratio(), s.time_ratio(),
+        ok ? "true" : "false");
     out += buf;
   }
   out += "]\n";

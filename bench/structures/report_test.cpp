@@ -1,14 +1,14 @@
 // The report of the structures benchmark: growth classification and the generated section of
 // docs/structures.md. Built and run by bench/structures/run before it measures anything, and by
 // CTest in a build with HEDGE_BUILD_BENCH=ON.
+#include "report.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include "report.h"
 
 namespace hedge::structures {
 namespace {

@@ -1,6 +1,7 @@
 // Types of the hedge JS API (hedge.js). Element indices are numbers; -1 means "none".
 
-export type ErrorKind = 'invalid-argument' | 'io' | 'topology' | 'refused' | 'out-of-memory' | 'internal' | 'disposed';
+export type ErrorKind =
+  'invalid-argument' | 'io' | 'topology' | 'refused' | 'out-of-memory' | 'internal' | 'disposed';
 
 export class HedgeError extends Error {
   readonly kind: ErrorKind;
@@ -172,10 +173,19 @@ export class Shard {
   readonly inertia: Float64Array;
   /** Eigenvalues of inertia, ascending, and their unit axes (a right-handed frame). */
   readonly principalMoments: [number, number, number];
-  readonly principalAxes: [[number, number, number], [number, number, number], [number, number, number]];
+  readonly principalAxes: [
+    [number, number, number],
+    [number, number, number],
+    [number, number, number],
+  ];
   /** Convex hull of the shard's vertices, for a collider: outward triangles. dimension: 0 empty,
    *  1 point, 2 segment, 3 flat (thickened), 4 solid (HullDimension). */
-  readonly hull: { positions: Float32Array; indices: Uint32Array; dimension: number; tolerance: number };
+  readonly hull: {
+    positions: Float32Array;
+    indices: Uint32Array;
+    dimension: number;
+    tolerance: number;
+  };
   /** Frees the shard's mesh now. Idempotent. */
   dispose(): void;
 }
@@ -189,7 +199,15 @@ export interface FractureResult {
   impactPoint: [number, number, number];
   /** Seconds, measured in wasm: per stage; `fracture`, the whole library call; `pack`, making
    *  the result for JS afterwards. */
-  seconds: { locate: number; scatter: number; cut: number; detach: number; hulls: number; fracture: number; pack: number };
+  seconds: {
+    locate: number;
+    scatter: number;
+    cut: number;
+    detach: number;
+    hulls: number;
+    fracture: number;
+    pack: number;
+  };
 }
 
 export class Hedge {
@@ -238,8 +256,19 @@ export class Mesh {
   splitFace(f: number, point?: Vec3): number;
   garbageCollection(): void;
   subdivide(scheme?: SubdivisionScheme, steps?: number): void;
-  smooth(options?: { method?: SmoothMethod; iterations?: number; lambda?: number; mu?: number; fixBoundary?: boolean }): void;
-  decimate(options: { ratio?: number; targetFaces?: number; targetVertices?: number; maxError?: number }): DecimateResult;
+  smooth(options?: {
+    method?: SmoothMethod;
+    iterations?: number;
+    lambda?: number;
+    mu?: number;
+    fixBoundary?: boolean;
+  }): void;
+  decimate(options: {
+    ratio?: number;
+    targetFaces?: number;
+    targetVertices?: number;
+    maxError?: number;
+  }): DecimateResult;
   /** Breaks the mesh at impact; the broken faces leave it as shards (see FractureOptions). */
   fracture(impact: Vec3, options?: FractureOptions): FractureResult;
   toArrays(options?: { triangulate?: boolean }): Arrays;

@@ -21,11 +21,20 @@ import createHedge from './hedge.mjs';
 // module (converting a bad value) would unwind wasm frames without their destructors.
 const isArrayLike = (x) => ArrayBuffer.isView(x) || Array.isArray(x);
 const point3 = (p, what) => {
-  if (!isArrayLike(p) || p.length !== 3) throw new HedgeError('invalid-argument', `${what}: expected [x, y, z]`);
+  if (!isArrayLike(p) || p.length !== 3)
+    throw new HedgeError('invalid-argument', `${what}: expected [x, y, z]`);
   return Array.from(p, Number);
 };
 
-const KINDS = ['none', 'invalid-argument', 'io', 'topology', 'refused', 'out-of-memory', 'internal'];
+const KINDS = [
+  'none',
+  'invalid-argument',
+  'io',
+  'topology',
+  'refused',
+  'out-of-memory',
+  'internal',
+];
 
 /** An error raised by hedge. kind: 'invalid-argument', 'io', 'topology', 'refused',
  *  'out-of-memory', 'internal' or 'disposed'. */
@@ -54,7 +63,14 @@ const isNumber = (x) => typeof x === 'number';
 function customMaterial(m) {
   const bad = (what) => new HedgeError('invalid-argument', `fracture: material.${what}`);
   if (m === null || typeof m !== 'object') throw bad(' must be a preset name or an object');
-  const { name = 'custom', rings, grain = [0, 0, 0], grainStretch = 1, refineEdge = 1.5, absolute = false } = m;
+  const {
+    name = 'custom',
+    rings,
+    grain = [0, 0, 0],
+    grainStretch = 1,
+    refineEdge = 1.5,
+    absolute = false,
+  } = m;
   if (!Array.isArray(rings)) throw bad('rings must be an array of {points, spacing, jitter}');
   const flat = new Float64Array(rings.length * 3);
   rings.forEach((ring, i) => {
@@ -63,10 +79,18 @@ function customMaterial(m) {
       throw bad(`rings[${i}] must have numbers points, spacing and jitter`);
     flat.set([points, spacing, jitter], i * 3);
   });
-  if (!isArrayLike(grain) || grain.length !== 3 || !Array.from(grain).every(isNumber)) throw bad('grain must be [x, y, z]');
+  if (!isArrayLike(grain) || grain.length !== 3 || !Array.from(grain).every(isNumber))
+    throw bad('grain must be [x, y, z]');
   if (!isNumber(grainStretch)) throw bad('grainStretch must be a number');
   if (!isNumber(refineEdge)) throw bad('refineEdge must be a number');
-  return { name: String(name), rings: flat, grain: Array.from(grain), grainStretch, refineEdge, absolute: Boolean(absolute) };
+  return {
+    name: String(name),
+    rings: flat,
+    grain: Array.from(grain),
+    grainStretch,
+    refineEdge,
+    absolute: Boolean(absolute),
+  };
 }
 
 /** Loads the module. options go to the emscripten factory: wasmBinary (the bytes of hedge.wasm)
@@ -110,13 +134,19 @@ export class Hedge {
   fromBuffers({ positions, indices, faceSizes, policy = 'repair', weld = 'none' }) {
     const p = { strict: 0, repair: 1 }[policy];
     const w = { none: 0, exact: 1, epsilon: 2 }[weld];
-    if (p === undefined) throw new HedgeError('invalid-argument', `unknown policy '${policy}' (strict, repair)`);
-    if (w === undefined) throw new HedgeError('invalid-argument', `unknown weld '${weld}' (none, exact, epsilon)`);
-    if (!isArrayLike(positions)) throw new HedgeError('invalid-argument', 'positions: expected a Float32Array');
-    if (!isArrayLike(indices)) throw new HedgeError('invalid-argument', 'indices: expected a Uint32Array');
+    if (p === undefined)
+      throw new HedgeError('invalid-argument', `unknown policy '${policy}' (strict, repair)`);
+    if (w === undefined)
+      throw new HedgeError('invalid-argument', `unknown weld '${weld}' (none, exact, epsilon)`);
+    if (!isArrayLike(positions))
+      throw new HedgeError('invalid-argument', 'positions: expected a Float32Array');
+    if (!isArrayLike(indices))
+      throw new HedgeError('invalid-argument', 'indices: expected a Uint32Array');
     if (faceSizes != null && !isArrayLike(faceSizes))
       throw new HedgeError('invalid-argument', 'faceSizes: expected a Uint32Array or nothing');
-    const native = this._check(this.module.NativeMesh.fromBuffers(positions, indices, faceSizes, p, w));
+    const native = this._check(
+      this.module.NativeMesh.fromBuffers(positions, indices, faceSizes, p, w),
+    );
     return new Mesh(this, native);
   }
 
@@ -126,7 +156,8 @@ export class Hedge {
    *  HedgeError of kind 'io' naming the file and the line (or byte offset). */
   fromFile(bytes, name) {
     const data = bytes instanceof ArrayBuffer ? new Uint8Array(bytes) : bytes;
-    if (!(data instanceof Uint8Array)) throw new HedgeError('invalid-argument', 'fromFile: expected a Uint8Array or ArrayBuffer');
+    if (!(data instanceof Uint8Array))
+      throw new HedgeError('invalid-argument', 'fromFile: expected a Uint8Array or ArrayBuffer');
     const native = this._check(this.module.NativeMesh.fromFile(data, String(name)));
     return new Mesh(this, native);
   }
@@ -267,7 +298,14 @@ export class Mesh extends NativeOwner {
     // The hot path of hovering: no argument arrays are made (a missing or non-numeric coordinate
     // becomes NaN, and a ray with a NaN finds nothing).
     const native = this._n();
-    const face = native.pick(+origin[0], +origin[1], +origin[2], +direction[0], +direction[1], +direction[2]);
+    const face = native.pick(
+      +origin[0],
+      +origin[1],
+      +origin[2],
+      +direction[0],
+      +direction[1],
+      +direction[2],
+    );
     this.hedge._check(face);
     if (face < 0) return null;
     const f = this.hedge.module.HEAPF64;
@@ -289,8 +327,10 @@ export class Mesh extends NativeOwner {
   /** Casts many rays at once. rays: Float32Array of 6 per ray (origin, direction). Returns an
    *  Int32Array of the face hit by each ray, -1 for a miss (written into `out` if given). */
   pickMany(rays, out = new Int32Array(Math.floor(rays.length / 6))) {
-    if (!isArrayLike(rays)) throw new HedgeError('invalid-argument', 'pickMany: rays must be a Float32Array');
-    if (!(out instanceof Int32Array)) throw new HedgeError('invalid-argument', 'pickMany: out must be an Int32Array');
+    if (!isArrayLike(rays))
+      throw new HedgeError('invalid-argument', 'pickMany: rays must be a Float32Array');
+    if (!(out instanceof Int32Array))
+      throw new HedgeError('invalid-argument', 'pickMany: out must be an Int32Array');
     this._call('pickMany', rays, out);
     return out;
   }
@@ -354,7 +394,13 @@ export class Mesh extends NativeOwner {
   }
 
   /** method: 'uniform', 'taubin', 'cotangent' or 'implicit'. */
-  smooth({ method = 'uniform', iterations = 10, lambda = 0.5, mu = -0.53, fixBoundary = true } = {}) {
+  smooth({
+    method = 'uniform',
+    iterations = 10,
+    lambda = 0.5,
+    mu = -0.53,
+    fixBoundary = true,
+  } = {}) {
     this._call('smooth', String(method), iterations, lambda, mu, fixBoundary);
   }
 
@@ -363,7 +409,8 @@ export class Mesh extends NativeOwner {
    *  surface further than this. Renumbers elements. Returns {vertices, faces, collapses, maxError}. */
   decimate({ ratio, targetFaces = 0, targetVertices = 0, maxError = -1 } = {}) {
     if (ratio !== undefined) {
-      if (!(ratio > 0 && ratio <= 1)) throw new HedgeError('invalid-argument', `decimate: ratio ${ratio} is not in (0, 1]`);
+      if (!(ratio > 0 && ratio <= 1))
+        throw new HedgeError('invalid-argument', `decimate: ratio ${ratio} is not in (0, 1]`);
       targetFaces = Math.max(1, Math.round(ratio * this.counts().faces));
     }
     return this._call('decimate', targetFaces, targetVertices, maxError);
@@ -381,20 +428,37 @@ export class Mesh extends NativeOwner {
    *  seconds: {locate, scatter, cut, detach, hulls, fracture (the whole library call), pack (making
    *  the result for JS)}}. A bad impact (NaN, off the surface) or option
    *  throws a HedgeError, the mesh unchanged. */
-  fracture(impact, { material = 'glass', seed = 0, thickness = 0, density = 1, tolerance = 0, hulls = true } = {}) {
+  fracture(
+    impact,
+    { material = 'glass', seed = 0, thickness = 0, density = 1, tolerance = 0, hulls = true } = {},
+  ) {
     const at = point3(impact, 'fracture: the impact');
     let preset = '';
     let custom = null;
     if (typeof material === 'string') {
       if (!MATERIALS.includes(material))
-        throw new HedgeError('invalid-argument', `fracture: unknown material '${material}' (${MATERIALS.join(', ')}, or an object)`);
+        throw new HedgeError(
+          'invalid-argument',
+          `fracture: unknown material '${material}' (${MATERIALS.join(', ')}, or an object)`,
+        );
       preset = material;
     } else {
       custom = customMaterial(material);
     }
     for (const [name, value] of Object.entries({ seed, thickness, density, tolerance }))
-      if (!isNumber(value)) throw new HedgeError('invalid-argument', `fracture: ${name} must be a number`);
-    const result = this._call('fracture', at, preset, custom, seed, thickness, density, tolerance, Boolean(hulls));
+      if (!isNumber(value))
+        throw new HedgeError('invalid-argument', `fracture: ${name} must be a number`);
+    const result = this._call(
+      'fracture',
+      at,
+      preset,
+      custom,
+      seed,
+      thickness,
+      density,
+      tolerance,
+      Boolean(hulls),
+    );
     // Unpacks the shards (see WasmMesh::fracture): 34 numbers each, hulls concatenated.
     const p = result.shards;
     const shards = [];
@@ -403,24 +467,26 @@ export class Mesh extends NativeOwner {
       const k = i * 34;
       const hv = [p.hullVertexOffsets[i], p.hullVertexOffsets[i + 1]];
       const hi = [p.hullIndexOffsets[i], p.hullIndexOffsets[i + 1]];
-      shards.push(new Shard(new Mesh(this.hedge, p.meshes[i]), {
-        faces: p.scalars[k],
-        area: p.scalars[k + 1],
-        volume: p.scalars[k + 2],
-        closed: p.scalars[k + 3] === 1,
-        mass: p.scalars[k + 4],
-        centroid: v3(k + 7),
-        centreOfMass: v3(k + 10),
-        principalMoments: v3(k + 13),
-        principalAxes: [v3(k + 16), v3(k + 19), v3(k + 22)],
-        inertia: p.scalars.slice(k + 25, k + 34),
-        hull: {
-          positions: p.hullPositions.subarray(hv[0] * 3, hv[1] * 3),
-          indices: p.hullIndices.subarray(hi[0], hi[1]),
-          dimension: p.scalars[k + 5],
-          tolerance: p.scalars[k + 6],
-        },
-      }));
+      shards.push(
+        new Shard(new Mesh(this.hedge, p.meshes[i]), {
+          faces: p.scalars[k],
+          area: p.scalars[k + 1],
+          volume: p.scalars[k + 2],
+          closed: p.scalars[k + 3] === 1,
+          mass: p.scalars[k + 4],
+          centroid: v3(k + 7),
+          centreOfMass: v3(k + 10),
+          principalMoments: v3(k + 13),
+          principalAxes: [v3(k + 16), v3(k + 19), v3(k + 22)],
+          inertia: p.scalars.slice(k + 25, k + 34),
+          hull: {
+            positions: p.hullPositions.subarray(hv[0] * 3, hv[1] * 3),
+            indices: p.hullIndices.subarray(hi[0], hi[1]),
+            dimension: p.scalars[k + 5],
+            tolerance: p.scalars[k + 6],
+          },
+        }),
+      );
     }
     result.shards = shards;
     return result;
@@ -446,7 +512,9 @@ export class Mesh extends NativeOwner {
   /** Engine-ready buffers kept in step with this mesh (RenderSync). options: normals ('auto',
    *  'computed', 'attribute', 'none'), interleaved (true), texcoords (true), colors (true). */
   createRender({ normals = 'auto', interleaved = true, texcoords = true, colors = true } = {}) {
-    const native = this.hedge._check(this.hedge.module.NativeRender.create(this._n(), normals, interleaved, texcoords, colors));
+    const native = this.hedge._check(
+      this.hedge.module.NativeRender.create(this._n(), normals, interleaved, texcoords, colors),
+    );
     return new Render(this.hedge, native);
   }
 }

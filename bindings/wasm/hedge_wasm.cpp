@@ -812,8 +812,8 @@ class WasmMesh {
   //! fracture() checks everything before it edits, so a refusal leaves the mesh as it was. Running out
   //! of wasm memory halfway is not rolled back (with_rollback's copy of the mesh would cost more
   //! than the strike, whose own allocations are those of the small broken area).
-  val fracture(val impact, const std::string& preset, val custom, double seed, double thickness, double density,
-               double tolerance, bool hulls) {
+  val fracture(val impact, const std::string& preset, val custom, double seed, double thickness,
+               double density, double tolerance, bool hulls) {
     return guarded([&] {
       const Vec3 at = point_from_js(impact, "fracture: the impact");
       if (!(seed >= 0 && seed <= 9007199254740992.0 && std::floor(seed) == seed))
@@ -841,8 +841,9 @@ class WasmMesh {
       for (std::size_t i = 0; i < n; ++i) {
         Shard& shard = r.shards[i];
         const MassProperties& mp = shard.mass;
-        const double head[] = {double(shard.mesh.n_faces()), shard.area, shard.volume, shard.closed ? 1.0 : 0.0,
-                               mp.mass, double(int(shard.hull.dimension)), shard.hull.tolerance};
+        const double head[] = {double(shard.mesh.n_faces()), shard.area, shard.volume,
+                               shard.closed ? 1.0 : 0.0,     mp.mass,    double(int(shard.hull.dimension)),
+                               shard.hull.tolerance};
         scalars.insert(scalars.end(), std::begin(head), std::end(head));
         for (const Vec3d& v : {shard.centroid, mp.centre_of_mass, mp.principal_moments, mp.principal_axes[0],
                                mp.principal_axes[1], mp.principal_axes[2]})
@@ -872,7 +873,8 @@ class WasmMesh {
       seconds.set("detach", r.seconds.detach);
       seconds.set("hulls", r.seconds.hulls);
       seconds.set("fracture", std::chrono::duration<double>(fractured - start).count());
-      seconds.set("pack", std::chrono::duration<double>(std::chrono::steady_clock::now() - fractured).count());
+      seconds.set("pack",
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - fractured).count());
       val result = val::object();
       result.set("shards", shards);
       result.set("impactFace", js_index(r.impact_face.idx()));

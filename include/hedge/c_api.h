@@ -412,11 +412,11 @@ HEDGE_API hedge_status hedge_mesh_garbage_collection(hedge_mesh* mesh, uint32_t*
 /** Measures of the whole mesh. Layout (48 bytes): area @0, volume @8 (double), closed @16, empty @20
  *  (int32_t), box_min @24, box_max @36 (3 floats each). */
 typedef struct hedge_geometry {
-  double area;       /**< the sum of the live faces' areas */
-  double volume;     /**< signed enclosed volume (positive for outward faces); NaN when not closed */
-  int32_t closed;    /**< 1 if the mesh has no boundary half-edge */
-  int32_t empty;     /**< 1 if the mesh has no vertex (then the box is zero) */
-  float box_min[3];  /**< the axis-aligned bounding box of the live vertices */
+  double area;      /**< the sum of the live faces' areas */
+  double volume;    /**< signed enclosed volume (positive for outward faces); NaN when not closed */
+  int32_t closed;   /**< 1 if the mesh has no boundary half-edge */
+  int32_t empty;    /**< 1 if the mesh has no vertex (then the box is zero) */
+  float box_min[3]; /**< the axis-aligned bounding box of the live vertices */
   float box_max[3];
 } hedge_geometry;
 
@@ -427,9 +427,9 @@ HEDGE_API hedge_status hedge_face_area(const hedge_mesh* mesh, uint32_t face, do
 
 /** How the faces around a vertex are weighted in its normal. */
 typedef enum hedge_normal_weighting {
-  HEDGE_WEIGHTING_AREA = 0,    /**< by face area */
-  HEDGE_WEIGHTING_ANGLE = 1,   /**< by the face's angle at the vertex: independent of the tessellation */
-  HEDGE_WEIGHTING_UNIFORM = 2  /**< every face alike */
+  HEDGE_WEIGHTING_AREA = 0,   /**< by face area */
+  HEDGE_WEIGHTING_ANGLE = 1,  /**< by the face's angle at the vertex: independent of the tessellation */
+  HEDGE_WEIGHTING_UNIFORM = 2 /**< every face alike */
 } hedge_normal_weighting;
 
 /** Computes unit vertex normals into the mesh's vertex normals ("v:normal"), which render objects
@@ -440,23 +440,24 @@ HEDGE_API hedge_status hedge_mesh_compute_vertex_normals(hedge_mesh* mesh, int32
  *  edges sharper than crease_degrees (0..180) share one normal; 0 gives flat shading, 180 smooth.
  *  Render objects made afterwards with HEDGE_NORMALS_ATTRIBUTE split their vertices along the
  *  creases. A crease angle outside 0..180 or NaN: HEDGE_ERROR_INVALID_ARGUMENT. */
-HEDGE_API hedge_status hedge_mesh_compute_corner_normals(hedge_mesh* mesh, double crease_degrees, int32_t weighting);
+HEDGE_API hedge_status hedge_mesh_compute_corner_normals(hedge_mesh* mesh, double crease_degrees,
+                                                         int32_t weighting);
 /** Copies the vertex normals, 3 floats per vertex slot (*out_count floats, 3 x vertex_slots).
  *  Without computed or loaded vertex normals: HEDGE_ERROR_INVALID_ARGUMENT. */
-HEDGE_API hedge_status hedge_mesh_copy_vertex_normals(const hedge_mesh* mesh, float* buffer, uint64_t capacity,
-                                                      uint64_t* out_count);
+HEDGE_API hedge_status hedge_mesh_copy_vertex_normals(const hedge_mesh* mesh, float* buffer,
+                                                      uint64_t capacity, uint64_t* out_count);
 /** Copies the corner normals, 3 floats per half-edge slot, for the corner of the half-edge's face at
  *  its target vertex (zero on boundary half-edges); *out_count floats, 3 x halfedge_slots. Without
  *  corner normals: HEDGE_ERROR_INVALID_ARGUMENT. */
-HEDGE_API hedge_status hedge_mesh_copy_corner_normals(const hedge_mesh* mesh, float* buffer, uint64_t capacity,
-                                                      uint64_t* out_count);
+HEDGE_API hedge_status hedge_mesh_copy_corner_normals(const hedge_mesh* mesh, float* buffer,
+                                                      uint64_t capacity, uint64_t* out_count);
 /** The sampled symmetric Hausdorff distance between the surfaces of a and b
  *  (hedge/algorithms/distance.h): each surface's vertices plus `samples` seeded, area-proportional
  *  points on its faces, each measured exactly against the other surface; O((V + samples) log F).
  *  out_mean (optional, NULL) gets the mean distance over all points. A mesh without faces or with a
  *  non-finite position: HEDGE_ERROR_INVALID_ARGUMENT. */
-HEDGE_API hedge_status hedge_mesh_hausdorff(const hedge_mesh* a, const hedge_mesh* b, uint64_t samples, uint64_t seed,
-                                            double* out_distance, double* out_mean);
+HEDGE_API hedge_status hedge_mesh_hausdorff(const hedge_mesh* a, const hedge_mesh* b, uint64_t samples,
+                                            uint64_t seed, double* out_distance, double* out_mean);
 
 /* ============================================================================================ */
 /* Smoothing (hedge/algorithms/smooth.h)                                                        */
@@ -488,8 +489,8 @@ HEDGE_API hedge_status hedge_smooth_options_default(hedge_smooth_options* out_op
  *         nonzero byte move.
  *  Options out of range, a mask of another size, or cotangent weights on a mesh with a face that is
  *  not a triangle: HEDGE_ERROR_INVALID_ARGUMENT, and the mesh is unchanged. */
-HEDGE_API hedge_status hedge_mesh_smooth(hedge_mesh* mesh, const hedge_smooth_options* options, const uint8_t* mask,
-                                         uint32_t mask_count);
+HEDGE_API hedge_status hedge_mesh_smooth(hedge_mesh* mesh, const hedge_smooth_options* options,
+                                         const uint8_t* mask, uint32_t mask_count);
 
 /* ============================================================================================ */
 /* Decimation (hedge/algorithms/decimate.h)                                                     */
@@ -499,11 +500,13 @@ HEDGE_API hedge_status hedge_mesh_smooth(hedge_mesh* mesh, const hedge_smooth_op
  *  boundary_weight @24, feature_angle_degrees @32, feature_weight @40, attribute_weight @48,
  *  max_normal_change_degrees @56 (double), keep_boundary @64, keep_seams @68 (int32_t). */
 typedef struct hedge_decimate_options {
-  uint64_t target_vertices;         /**< stop at this many vertices (0: no vertex target) */
-  uint64_t target_faces;            /**< stop at this many faces (0: no face target) */
-  double max_error;                 /**< stop before a collapse that moves the surface farther (model units); INFINITY: none */
+  uint64_t target_vertices; /**< stop at this many vertices (0: no vertex target) */
+  uint64_t target_faces;    /**< stop at this many faces (0: no face target) */
+  double
+      max_error; /**< stop before a collapse that moves the surface farther (model units); INFINITY: none */
   double boundary_weight;           /**< weight of the planes that keep open boundaries in place (0: none) */
-  double feature_angle_degrees;     /**< edges with a larger dihedral angle (or "e:crease") are features; 180: crease edges only */
+  double feature_angle_degrees;     /**< edges with a larger dihedral angle (or "e:crease") are features; 180:
+                                       crease edges only */
   double feature_weight;            /**< weight of the planes that keep feature edges (0: none) */
   double attribute_weight;          /**< > 0: texture distortion ("h:texcoord") enters the error */
   double max_normal_change_degrees; /**< refuse collapses that turn a face more than this, in (0, 180] */
@@ -563,34 +566,35 @@ typedef struct hedge_fracture_ring {
  *  (int32_t), reserved2 @460 (uint32_t). */
 typedef struct hedge_fracture_options {
   hedge_fracture_ring rings[HEDGE_FRACTURE_MAX_RINGS]; /**< the material's rings, innermost first */
-  uint32_t ring_count;   /**< rings used, 0..HEDGE_FRACTURE_MAX_RINGS */
-  int32_t absolute;      /**< 1: spacings in model units; 0: in edge lengths of the impact face */
-  float grain[3];        /**< grain direction, nonzero when grain_stretch > 1 */
-  uint32_t reserved;     /**< 0 */
-  double grain_stretch;  /**< >= 1: cells this many times longer along the grain */
-  double refine_edge;    /**< longest edge left in the broken area (units of the spacing), > 0 */
-  uint64_t seed;         /**< seed of the break points */
-  double thickness;      /**< > 0: each shard extruded into a closed solid this thick */
-  double density;        /**< mass per unit volume, > 0 */
-  double tolerance;      /**< largest distance from the impact to the surface; 0: 1e-3 of the nearest face's longest edge */
-  int32_t hulls;         /**< 1: compute each shard's convex hull */
-  uint32_t reserved2;    /**< 0 */
+  uint32_t ring_count;                                 /**< rings used, 0..HEDGE_FRACTURE_MAX_RINGS */
+  int32_t absolute;     /**< 1: spacings in model units; 0: in edge lengths of the impact face */
+  float grain[3];       /**< grain direction, nonzero when grain_stretch > 1 */
+  uint32_t reserved;    /**< 0 */
+  double grain_stretch; /**< >= 1: cells this many times longer along the grain */
+  double refine_edge;   /**< longest edge left in the broken area (units of the spacing), > 0 */
+  uint64_t seed;        /**< seed of the break points */
+  double thickness;     /**< > 0: each shard extruded into a closed solid this thick */
+  double density;       /**< mass per unit volume, > 0 */
+  double tolerance;     /**< largest distance from the impact to the surface; 0: 1e-3 of the nearest face's
+                           longest edge */
+  int32_t hulls;        /**< 1: compute each shard's convex hull */
+  uint32_t reserved2;   /**< 0 */
 } hedge_fracture_options;
 
 /** One shard. Layout (168 bytes): mesh @0, hull @8 (handles), centroid @16 (3 doubles), area @40,
  *  volume @48, mass @56 (double), centre_of_mass @64 (3 doubles), inertia @88 (9 doubles,
  *  row-major, about the centre of mass), closed @160, hull_dimension @164 (int32_t). */
 typedef struct hedge_fracture_shard {
-  hedge_mesh* mesh;          /**< the shard, a new mesh; destroy it with hedge_mesh_destroy() */
-  hedge_mesh* hull;          /**< its convex hull, a new mesh, or NULL (hulls off, or no volume) */
-  double centroid[3];        /**< area-weighted centroid of the broken faces */
-  double area;               /**< area of the broken faces */
-  double volume;             /**< volume when closed, else 0 */
-  double mass;               /**< at the density when closed, else 0 */
-  double centre_of_mass[3];  /**< when closed, else 0 */
-  double inertia[9];         /**< inertia tensor about the centre of mass when closed, else 0 */
-  int32_t closed;            /**< 1: the shard's mesh has no boundary */
-  int32_t hull_dimension;    /**< 0 empty, 1 point, 2 segment, 3 flat (a thin prism), 4 solid */
+  hedge_mesh* mesh;         /**< the shard, a new mesh; destroy it with hedge_mesh_destroy() */
+  hedge_mesh* hull;         /**< its convex hull, a new mesh, or NULL (hulls off, or no volume) */
+  double centroid[3];       /**< area-weighted centroid of the broken faces */
+  double area;              /**< area of the broken faces */
+  double volume;            /**< volume when closed, else 0 */
+  double mass;              /**< at the density when closed, else 0 */
+  double centre_of_mass[3]; /**< when closed, else 0 */
+  double inertia[9];        /**< inertia tensor about the centre of mass when closed, else 0 */
+  int32_t closed;           /**< 1: the shard's mesh has no boundary */
+  int32_t hull_dimension;   /**< 0 empty, 1 point, 2 segment, 3 flat (a thin prism), 4 solid */
 } hedge_fracture_shard;
 
 /** Fills *out_options with a preset (hedge_fracture_preset), seed 0, no thickness, density 1,
@@ -611,15 +615,16 @@ HEDGE_API hedge_status hedge_fracture_options_default(int32_t preset, hedge_frac
  *  in all rings, and a thickness beyond 10 times the diagonal of the mesh's bounding box (the
  *  limits of fracture.h); they are checked before the capacity. */
 HEDGE_API hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z,
-                                           const hedge_fracture_options* options, hedge_fracture_shard* out_shards,
-                                           uint32_t capacity, uint32_t* out_count);
+                                           const hedge_fracture_options* options,
+                                           hedge_fracture_shard* out_shards, uint32_t capacity,
+                                           uint32_t* out_count);
 
 /* ============================================================================================ */
 /* Subdivision (hedge/algorithms/subdivide.h)                                                   */
 /* ============================================================================================ */
 
 typedef enum hedge_subdivision {
-  HEDGE_SUBDIVISION_LOOP = 0,     /**< Loop's scheme: smooth, triangle meshes */
+  HEDGE_SUBDIVISION_LOOP = 0,          /**< Loop's scheme: smooth, triangle meshes */
   HEDGE_SUBDIVISION_MIDPOINT = 1,      /**< 1-to-4 at the edge midpoints: the shape is kept */
   HEDGE_SUBDIVISION_CATMULL_CLARK = 2, /**< Catmull-Clark: any polygons, gives quads */
   HEDGE_SUBDIVISION_SQRT3 = 3,         /**< Kobbelt's sqrt(3): smooth 1-to-3 with flips, triangle meshes */
@@ -640,8 +645,8 @@ HEDGE_API hedge_status hedge_mesh_subdivide(hedge_mesh* mesh, int32_t scheme, in
 /* ============================================================================================ */
 
 typedef enum hedge_ordering {
-  HEDGE_ORDERING_SPATIAL = 0,      /**< Morton curve: traversals read memory in order */
-  HEDGE_ORDERING_VERTEX_CACHE = 1  /**< faces for a GPU vertex cache, vertices by first use */
+  HEDGE_ORDERING_SPATIAL = 0,     /**< Morton curve: traversals read memory in order */
+  HEDGE_ORDERING_VERTEX_CACHE = 1 /**< faces for a GPU vertex cache, vertices by first use */
 } hedge_ordering;
 
 /** Renumbers the elements in the given order (hedge_ordering), so that traversals or a GPU's
@@ -651,13 +656,15 @@ typedef enum hedge_ordering {
  *  the mesh rebuild at their next sync. An unknown ordering: HEDGE_ERROR_INVALID_ARGUMENT, and the
  *  mesh is unchanged. */
 HEDGE_API hedge_status hedge_mesh_reorder(hedge_mesh* mesh, int32_t ordering, uint32_t cache_size,
-                                          uint32_t* vertex_map, uint32_t vertex_capacity, uint32_t* halfedge_map,
-                                          uint32_t halfedge_capacity, uint32_t* edge_map, uint32_t edge_capacity,
-                                          uint32_t* face_map, uint32_t face_capacity);
+                                          uint32_t* vertex_map, uint32_t vertex_capacity,
+                                          uint32_t* halfedge_map, uint32_t halfedge_capacity,
+                                          uint32_t* edge_map, uint32_t edge_capacity, uint32_t* face_map,
+                                          uint32_t face_capacity);
 
 /** The average cache miss ratio of drawing the faces in index order through a FIFO vertex cache of
  *  cache_size entries (0 means 16): vertex loads per triangle, 0.5 (best) to 3 (worst). */
-HEDGE_API hedge_status hedge_mesh_cache_miss_ratio(const hedge_mesh* mesh, uint32_t cache_size, double* out_ratio);
+HEDGE_API hedge_status hedge_mesh_cache_miss_ratio(const hedge_mesh* mesh, uint32_t cache_size,
+                                                   double* out_ratio);
 
 /* ============================================================================================ */
 /* Files (hedge/io/io.h): OBJ, OFF, PLY, STL, glTF (.gltf, .glb), chosen by the extension       */
@@ -691,8 +698,8 @@ HEDGE_API hedge_status hedge_mesh_read(const char* path, const hedge_build_optio
  *  over the memory budget or with a refused external buffer: HEDGE_ERROR_IO, the message naming
  *  the limit (and how to raise it) or the buffer. */
 HEDGE_API hedge_status hedge_mesh_read_with(const char* path, const hedge_build_options* options,
-                                            const hedge_read_options* read_options, hedge_build_report* out_report,
-                                            hedge_mesh** out_mesh);
+                                            const hedge_read_options* read_options,
+                                            hedge_build_report* out_report, hedge_mesh** out_mesh);
 /** Reads and builds a mesh from a file's bytes in memory (an upload, an asset bundle).
  *  \param name the file's name: its extension chooses the format (.obj, .off, .ply, .stl, .gltf,
  *         .glb), and messages start with it; with external buffers on, they are looked up in its
@@ -774,7 +781,7 @@ HEDGE_API hedge_status hedge_mesh_bvh_release(hedge_mesh* mesh);
  *  \param origin    3 floats, finite.
  *  \param direction 3 floats, finite and not zero; need not be unit length (t is in its units).
  *  \param t_max     >= 0; INFINITY for an unbounded ray.
- *  
+ *
 eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite origin or direction, a zero direction, a
  *          NaN or negative t_max. */
 HEDGE_API hedge_status hedge_mesh_raycast(hedge_mesh* mesh, const float* origin, const float* direction,
@@ -782,14 +789,14 @@ HEDGE_API hedge_status hedge_mesh_raycast(hedge_mesh* mesh, const float* origin,
 /** The nearest point of the surface to a point, within max_distance of it.
  *  \param point        3 floats, finite.
  *  \param max_distance >= 0; INFINITY for no limit (a limit also makes the search cheaper).
- *  
+ *
 eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite point or a NaN or negative max_distance. */
 HEDGE_API hedge_status hedge_mesh_closest_point(hedge_mesh* mesh, const float* point, float max_distance,
                                                 hedge_surface_hit* out_hit, int32_t* out_found);
 /** The face a point on the surface lies on: the nearest face, if the point is within tolerance of it
  *  (an impact point reported by a physics engine, a point on a plate in any orientation).
  *  \param tolerance >= 0 and finite, in the mesh's units.
- *  
+ *
 eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite point or a bad tolerance. */
 HEDGE_API hedge_status hedge_mesh_face_containing_point(hedge_mesh* mesh, const float* point, float tolerance,
                                                         hedge_surface_hit* out_hit, int32_t* out_found);
@@ -797,7 +804,7 @@ HEDGE_API hedge_status hedge_mesh_face_containing_point(hedge_mesh* mesh, const 
  *  boundary included; `point` is the point of that face that projects onto (u, v) (the dropped
  *  coordinate interpolated), `distance` 0. Faces seen edge-on contain nothing.
  *  \param plane HEDGE_PLANE_*: (u, v) are (x, y), (x, z) or (y, z).
- *  
+ *
 eturn HEDGE_ERROR_INVALID_ARGUMENT for a non-finite u or v or an unknown plane. */
 HEDGE_API hedge_status hedge_mesh_face_containing_point_2d(hedge_mesh* mesh, float u, float v, int32_t plane,
                                                            hedge_surface_hit* out_hit, int32_t* out_found);
@@ -813,11 +820,11 @@ HEDGE_API hedge_status hedge_mesh_face_containing_point_2d(hedge_mesh* mesh, flo
 
 /** Normal source (hedge::NormalSource). */
 enum {
-  HEDGE_NORMALS_NONE = 0,      /**< no normal stream */
+  HEDGE_NORMALS_NONE = 0, /**< no normal stream */
   /** the mesh's corner or vertex normals as they are, never recomputed (imported normals kept);
    *  none if it has none */
   HEDGE_NORMALS_ATTRIBUTE = 1,
-  HEDGE_NORMALS_COMPUTED = 2,  /**< area-weighted smooth vertex normals */
+  HEDGE_NORMALS_COMPUTED = 2, /**< area-weighted smooth vertex normals */
   /** the default: the mesh's normals if it has some, following the geometry (each sync recomputes
    *  the normals about what the edits touched into the mesh's normals, creases kept); computed
    *  normals otherwise */
@@ -933,11 +940,11 @@ HEDGE_API hedge_status hedge_render_dirty_index_ranges(const hedge_render* rende
                                                        uint32_t capacity, uint32_t* out_count);
 /** Removes the free slots by packing the live render vertices and triangles in their current
  *  order (live slots keep their relative order); re-upload both buffers afterwards. Outside a
- *  transaction it first syncs pending edits, as hedge_render_sync() does. Each map is optional (NULL): old render-vertex slot -> new slot, and old triangle slot -> new
- *  triangle slot; freed slots map to HEDGE_INVALID_INDEX. The sizes needed are the vertex_slots and
- *  index_count / 3 of hedge_render_counts() after that sync, and are written to *out_vertex_count
- *  and *out_triangle_count (each optional, NULL); a map too small gives
- *  HEDGE_ERROR_BUFFER_TOO_SMALL and nothing is compacted (the sync may have happened). */
+ *  transaction it first syncs pending edits, as hedge_render_sync() does. Each map is optional (NULL): old
+ * render-vertex slot -> new slot, and old triangle slot -> new triangle slot; freed slots map to
+ * HEDGE_INVALID_INDEX. The sizes needed are the vertex_slots and index_count / 3 of hedge_render_counts()
+ * after that sync, and are written to *out_vertex_count and *out_triangle_count (each optional, NULL); a map
+ * too small gives HEDGE_ERROR_BUFFER_TOO_SMALL and nothing is compacted (the sync may have happened). */
 HEDGE_API hedge_status hedge_render_compact(hedge_render* render, uint32_t* vertex_map,
                                             uint32_t vertex_capacity, uint32_t* out_vertex_count,
                                             uint32_t* triangle_map, uint32_t triangle_capacity,

@@ -419,7 +419,8 @@ std::vector<std::uint32_t> flat_corners(const Centred& c, const Simplex& s, doub
     const std::size_t base = chain.size();
     for (std::size_t k = 0; k < q.size(); ++k) {
       const P2& pt = pass == 0 ? q[k] : q[q.size() - 1 - k];
-      while (chain.size() >= base + 2 && !turns_left(chain[chain.size() - 2], chain.back(), pt)) chain.pop_back();
+      while (chain.size() >= base + 2 && !turns_left(chain[chain.size() - 2], chain.back(), pt))
+        chain.pop_back();
       chain.push_back(pt);
     }
     chain.pop_back();  // the last point of each half starts the other

@@ -104,7 +104,8 @@ void check(const Mesh& m, const DecimateOptions& o) {
                               std::to_string(x));
   };
   if (!(o.max_error >= 0))
-    throw InvalidInputError("decimate: max_error must not be negative or NaN, got " + std::to_string(o.max_error));
+    throw InvalidInputError("decimate: max_error must not be negative or NaN, got " +
+                            std::to_string(o.max_error));
   non_negative(o.boundary_weight, "boundary_weight");
   non_negative(o.feature_weight, "feature_weight");
   non_negative(o.feature_angle_degrees, "feature_angle_degrees");
@@ -115,12 +116,14 @@ void check(const Mesh& m, const DecimateOptions& o) {
   for (Face f : m.faces())
     if (m.valence(f) != 3)
       throw InvalidInputError("decimate: face " + std::to_string(f.idx()) + " has " +
-                              std::to_string(m.valence(f)) + " corners; decimation needs triangles (triangulate first)");
+                              std::to_string(m.valence(f)) +
+                              " corners; decimation needs triangles (triangulate first)");
   for (Vertex v : m.vertices()) {
     if (!is_finite(m.position(v)))
       throw InvalidInputError("decimate: " + vertex_name(v) + " has a position that is not finite");
     if (!m.is_manifold(v))
-      throw InvalidInputError("decimate: " + vertex_name(v) + " is not manifold (its faces form more than one fan)");
+      throw InvalidInputError("decimate: " + vertex_name(v) +
+                              " is not manifold (its faces form more than one fan)");
   }
 }
 
@@ -148,7 +151,8 @@ class Decimator {
     std::size_t n = 0;
     const bool any = o_.target_vertices > 0 || o_.target_faces > 0;
     if (!any) return std::numeric_limits<std::size_t>::max() / 4;
-    if (o_.target_vertices > 0 && m_.n_vertices() > o_.target_vertices) n = m_.n_vertices() - o_.target_vertices;
+    if (o_.target_vertices > 0 && m_.n_vertices() > o_.target_vertices)
+      n = m_.n_vertices() - o_.target_vertices;
     if (o_.target_faces > 0 && m_.n_faces() > o_.target_faces)
       n = std::max(n, (m_.n_faces() - o_.target_faces + 1) / 2);
     return n;
@@ -185,7 +189,7 @@ class Decimator {
   std::vector<Quadric> q_;
   // Each face's unit normal in the input: small steps must not add up to a face turned over.
   std::vector<Vec3> input_normal_;
-  std::vector<std::uint32_t> stamp_;   // pass in which the vertex survived a collapse
+  std::vector<std::uint32_t> stamp_;      // pass in which the vertex survived a collapse
   std::vector<std::uint8_t> seam_count_;  // seam edges at the vertex, saturated at 3
   // Candidates: (cost bits << 32) | half-edge, per edge (kept between passes) and of this pass.
   static constexpr std::uint64_t kNoKey = ~std::uint64_t(0);
@@ -205,7 +209,8 @@ class Decimator {
 void Decimator::gather_quadrics() {
   q_.assign(m_.vertex_slots(), Quadric{});
   input_normal_.assign(m_.face_slots(), Vec3{0, 0, 0});
-  const double feature_cos = o_.feature_angle_degrees >= 180 ? -2.0 : std::cos(o_.feature_angle_degrees * kPi / 180);
+  const double feature_cos =
+      o_.feature_angle_degrees >= 180 ? -2.0 : std::cos(o_.feature_angle_degrees * kPi / 180);
   const double wa2 = o_.attribute_weight * o_.attribute_weight;
   const BoundingBox box = bounding_box(m_);
   const Vec3d extent = to_double(box.max) - to_double(box.min);
@@ -252,7 +257,8 @@ void Decimator::gather_quadrics() {
     const bool boundary = !f0.is_valid() || !f1.is_valid();
     if (boundary ? !(o_.boundary_weight > 0) : !features) continue;
     auto normal_of = [&](Face f) { return to_double(input_normal_[f.idx()]); };
-    if (!boundary && !(crease_ && crease_[e] != 0) && !(dot(normal_of(f0), normal_of(f1)) < feature_cos)) continue;
+    if (!boundary && !(crease_ && crease_[e] != 0) && !(dot(normal_of(f0), normal_of(f1)) < feature_cos))
+      continue;
     const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
     const Vec3d xa = pos(a), dir = pos(b) - xa;
     const double len2 = dot(dir, dir);
@@ -290,7 +296,8 @@ void Decimator::classify() {
   seam_count_.assign(m_.vertex_slots(), 0);
   for (Edge e : m_.edges()) {
     if (!seam(e)) continue;
-    for (const Vertex v : m_.vertices(e)) seam_count_[v.idx()] = std::uint8_t(std::min(3, seam_count_[v.idx()] + 1));
+    for (const Vertex v : m_.vertices(e))
+      seam_count_[v.idx()] = std::uint8_t(std::min(3, seam_count_[v.idx()] + 1));
   }
 }
 
@@ -328,7 +335,8 @@ bool Decimator::placement(Halfedge h, Vec3d& p, double& cost) const {
     if (const double ea = error_at(q, xa); ea < best - clearly) p = xa, best = ea;
     if (const double em = error_at(q, mid); em < best - clearly) p = mid, best = em;
     Vec3d opt;
-    if (q.minimiser(opt) && dot(opt - mid, opt - mid) <= dot(ab, ab) && error_at(q, opt) < best - clearly) p = opt;
+    if (q.minimiser(opt) && dot(opt - mid, opt - mid) <= dot(ab, ab) && error_at(q, opt) < best - clearly)
+      p = opt;
   }
   // The cost and the checks see the point as it will be stored.
   p = to_double(to_float(p));
@@ -358,8 +366,10 @@ bool Decimator::best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost) const
       return true;
     }
     placement(h1, p1, c1);
-    if (c1 < c0) h = h1, p = p1, cost = c1;
-    else h = h0, p = p0, cost = c0;
+    if (c1 < c0)
+      h = h1, p = p1, cost = c1;
+    else
+      h = h0, p = p0, cost = c0;
     return true;
   }
   h = go0 ? h0 : h1;
@@ -517,7 +527,8 @@ DecimateResult Decimator::run() {
       if (m_.is_deleted(e)) continue;
       std::uint64_t& key = edge_key_[i];
       const Halfedge h0 = Mesh::halfedge(e, 0);
-      if (pass == 1 || stamp_[m_.to_vertex(h0).idx()] == pass - 1 || stamp_[m_.from_vertex(h0).idx()] == pass - 1) {
+      if (pass == 1 || stamp_[m_.to_vertex(h0).idx()] == pass - 1 ||
+          stamp_[m_.from_vertex(h0).idx()] == pass - 1) {
         Halfedge h;
         Vec3d p;
         double cost;
@@ -531,7 +542,8 @@ DecimateResult Decimator::run() {
     // Collapse: cheapest first, half of what is still needed, each vertex once.
     // Half of what is still needed, but not less than 1/32 of the whole, so that the tail of
     // ever smaller passes (each a full re-sort) stops after a few.
-    const std::size_t budget = endless ? keys_.size() : std::max<std::size_t>({1, (needed() + 1) / 2, initial / 32});
+    const std::size_t budget =
+        endless ? keys_.size() : std::max<std::size_t>({1, (needed() + 1) / 2, initial / 32});
     std::size_t done_now = 0;
     const std::size_t n_keys = keys_.size();
     // Nor beyond 16x the cost of the budget-th cheapest candidate: when locked vertices skip cheap
@@ -539,7 +551,8 @@ DecimateResult Decimator::run() {
     // not need (a refined flat region, all of whose cheapest collapses cost 0, collapses back
     // exactly this way). Adding 4 to a float's exponent bits multiplies it by 16. Unless nothing was
     // done yet, so that illegal cheap candidates cannot stop the decimation.
-    const std::uint64_t cost_limit = n_keys == 0 ? 0 : (keys_[std::min(budget, n_keys) - 1] >> 32) + (4u << 23);
+    const std::uint64_t cost_limit =
+        n_keys == 0 ? 0 : (keys_[std::min(budget, n_keys) - 1] >> 32) + (4u << 23);
     const Vertex* to = m_.halfedge_vertex_array().data();
     for (std::size_t k = 0; k < n_keys; ++k) {
       // The keys come in cost order, so every candidate's data is cold: fetch the half-edges of the
@@ -578,7 +591,8 @@ DecimateResult Decimator::run() {
       ++done_now;
       if (done() || done_now >= budget) break;
     }
-    if (!endless) report_progress(o_.progress, double(initial - std::min(initial, needed())) / double(initial));
+    if (!endless)
+      report_progress(o_.progress, double(initial - std::min(initial, needed())) / double(initial));
     if (done() || done_now == 0) break;
   }
   if (result.collapses > 0) {

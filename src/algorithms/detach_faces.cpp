@@ -58,7 +58,8 @@ SurfaceMesh detach_faces(SurfaceMesh& m, std::span<const Face> faces_in, std::ve
     for (Halfedge h : out.halfedges(nf)) {
       const Halfedge src = corner_src[c++];
       out.halfedge_properties().copy_element_from(m.halfedge_properties(), src.idx(), h.idx());
-      out.edge_properties().copy_element_from(m.edge_properties(), SurfaceMesh::edge(src).idx(), SurfaceMesh::edge(h).idx());
+      out.edge_properties().copy_element_from(m.edge_properties(), SurfaceMesh::edge(src).idx(),
+                                              SurfaceMesh::edge(h).idx());
     }
   }
   remove_faces(m, faces);

@@ -64,7 +64,8 @@ Vec3d sample_point(const SurfaceMesh& m, const SampledSurface& s, std::size_t k,
   const std::uint64_t base = mix(seed * 0x9e3779b97f4a7c15ull + 3 * i + 1);
   const double u = (static_cast<double>(i) + unit(base)) / static_cast<double>(count) * s.area();
   const std::size_t t = std::min<std::size_t>(
-      static_cast<std::size_t>(std::upper_bound(s.area_prefix.begin(), s.area_prefix.end(), u) - s.area_prefix.begin()),
+      static_cast<std::size_t>(std::upper_bound(s.area_prefix.begin(), s.area_prefix.end(), u) -
+                               s.area_prefix.begin()),
       s.triangles.size() - 1);
   // Uniform on the triangle: sqrt of one number picks the distance from corner 0, the other the
   // position across.
@@ -76,11 +77,12 @@ Vec3d sample_point(const SurfaceMesh& m, const SampledSurface& s, std::size_t k,
 
 void check_mesh(const SurfaceMesh& m, const char* function, const char* name) {
   if (m.n_faces() == 0)
-    throw InvalidInputError(std::string(function) + ": mesh " + name + " has no faces, so it has no surface to measure");
+    throw InvalidInputError(std::string(function) + ": mesh " + name +
+                            " has no faces, so it has no surface to measure");
   for (Vertex v : m.vertices())
     if (!is_finite(m.position(v)))
-      throw InvalidInputError(std::string(function) + ": vertex " + std::to_string(v.idx()) + " of mesh " + name +
-                              " has a non-finite position");
+      throw InvalidInputError(std::string(function) + ": vertex " + std::to_string(v.idx()) + " of mesh " +
+                              name + " has a non-finite position");
 }
 
 OneSidedDistance measure(const SurfaceMesh& from, const SurfaceMesh& to, const DistanceOptions& options) {
@@ -134,23 +136,27 @@ OneSidedDistance measure(const SurfaceMesh& from, const SurfaceMesh& to, const D
 }
 
 void check_options(const DistanceOptions& options, const char* function) {
-  if (options.threads == 0) throw InvalidInputError(std::string(function) + ": options.threads is 0; it must be 1 or more");
+  if (options.threads == 0)
+    throw InvalidInputError(std::string(function) + ": options.threads is 0; it must be 1 or more");
   if (options.samples > kMaxDistanceSamples)
-    throw InvalidInputError(std::string(function) + ": options.samples is " + std::to_string(options.samples) +
-                            ", more than the limit of " + std::to_string(kMaxDistanceSamples) +
+    throw InvalidInputError(std::string(function) + ": options.samples is " +
+                            std::to_string(options.samples) + ", more than the limit of " +
+                            std::to_string(kMaxDistanceSamples) +
                             " (kMaxDistanceSamples); draw fewer samples");
 }
 
 }  // namespace
 
-OneSidedDistance one_sided_distance(const SurfaceMesh& from, const SurfaceMesh& to, const DistanceOptions& options) {
+OneSidedDistance one_sided_distance(const SurfaceMesh& from, const SurfaceMesh& to,
+                                    const DistanceOptions& options) {
   check_options(options, "one_sided_distance");
   check_mesh(from, "one_sided_distance", "'from'");
   check_mesh(to, "one_sided_distance", "'to'");
   return measure(from, to, options);
 }
 
-HausdorffDistance hausdorff_distance(const SurfaceMesh& a, const SurfaceMesh& b, const DistanceOptions& options) {
+HausdorffDistance hausdorff_distance(const SurfaceMesh& a, const SurfaceMesh& b,
+                                     const DistanceOptions& options) {
   check_options(options, "hausdorff_distance");
   check_mesh(a, "hausdorff_distance", "a");
   check_mesh(b, "hausdorff_distance", "b");
@@ -160,7 +166,8 @@ HausdorffDistance hausdorff_distance(const SurfaceMesh& a, const SurfaceMesh& b,
   r.distance = std::max(r.a_to_b.max, r.b_to_a.max);
   const std::size_t n = r.a_to_b.points + r.b_to_a.points;
   r.mean = n ? (r.a_to_b.mean * static_cast<double>(r.a_to_b.points) +
-                r.b_to_a.mean * static_cast<double>(r.b_to_a.points)) / static_cast<double>(n)
+                r.b_to_a.mean * static_cast<double>(r.b_to_a.points)) /
+                   static_cast<double>(n)
              : 0;
   return r;
 }

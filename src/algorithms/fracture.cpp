@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <optional>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <string>
 #include <tuple>
@@ -89,7 +89,8 @@ Vec3d centroid_of(const SurfaceMesh& m, Face f) {
 double longest_edge(const SurfaceMesh& m, Face f) {
   double best = 0;
   for (Halfedge h : m.halfedges(f))
-    best = std::max(best, norm(sub(to_double(m.position(m.to_vertex(h))), to_double(m.position(m.from_vertex(h))))));
+    best = std::max(
+        best, norm(sub(to_double(m.position(m.to_vertex(h))), to_double(m.position(m.from_vertex(h))))));
   return best;
 }
 
@@ -107,20 +108,23 @@ std::size_t check_options(const FractureOptions& o) {
   auto fail = [](const std::string& what) { throw InvalidInputError("fracture: " + what); };
   const FractureMaterial& m = o.material;
   if (m.rings.size() > kFractureMaxRings)
-    fail("material '" + m.name + "' has " + std::to_string(m.rings.size()) + " rings, more than the limit of " +
-         std::to_string(kFractureMaxRings) + " (kFractureMaxRings); use fewer, wider rings");
+    fail("material '" + m.name + "' has " + std::to_string(m.rings.size()) +
+         " rings, more than the limit of " + std::to_string(kFractureMaxRings) +
+         " (kFractureMaxRings); use fewer, wider rings");
   std::size_t total = 0;
   for (std::size_t i = 0; i < m.rings.size(); ++i) {
     const FractureRing& r = m.rings[i];
     const std::string where = "material '" + m.name + "' rings[" + std::to_string(i) + "].";
     if (r.points > kMaxRingPoints)
       fail(where + "points is " + std::to_string(r.points) + ", more than " + std::to_string(kMaxRingPoints));
-    if (!std::isfinite(r.spacing) || r.spacing <= 0) fail(where + "spacing must be finite and positive, is " + number(r.spacing));
-    if (!std::isfinite(r.jitter) || r.jitter < 0 || r.jitter > 1) fail(where + "jitter must be in [0, 1], is " + number(r.jitter));
+    if (!std::isfinite(r.spacing) || r.spacing <= 0)
+      fail(where + "spacing must be finite and positive, is " + number(r.spacing));
+    if (!std::isfinite(r.jitter) || r.jitter < 0 || r.jitter > 1)
+      fail(where + "jitter must be in [0, 1], is " + number(r.jitter));
     total += r.points;
     if (total > kFractureMaxPoints)
-      fail(where + "points brings the break points of rings[0.." + std::to_string(i) + "] to " + std::to_string(total) +
-           ", more than the limit of " + std::to_string(kFractureMaxPoints) +
+      fail(where + "points brings the break points of rings[0.." + std::to_string(i) + "] to " +
+           std::to_string(total) + ", more than the limit of " + std::to_string(kFractureMaxPoints) +
            " in all rings (kFractureMaxPoints); use fewer points");
   }
   const std::string mat = "material '" + m.name + "' ";
@@ -131,9 +135,12 @@ std::size_t check_options(const FractureOptions& o) {
     fail(mat + "grain is zero while grain_stretch is " + number(m.grain_stretch));
   if (!std::isfinite(m.refine_edge) || m.refine_edge <= 0)
     fail(mat + "refine_edge must be finite and positive, is " + number(m.refine_edge));
-  if (!std::isfinite(o.thickness) || o.thickness < 0) fail("thickness must be finite and >= 0, is " + number(o.thickness));
-  if (!std::isfinite(o.density) || o.density <= 0) fail("density must be finite and positive, is " + number(o.density));
-  if (!std::isfinite(o.tolerance) || o.tolerance < 0) fail("tolerance must be finite and >= 0, is " + number(o.tolerance));
+  if (!std::isfinite(o.thickness) || o.thickness < 0)
+    fail("thickness must be finite and >= 0, is " + number(o.thickness));
+  if (!std::isfinite(o.density) || o.density <= 0)
+    fail("density must be finite and positive, is " + number(o.density));
+  if (!std::isfinite(o.tolerance) || o.tolerance < 0)
+    fail("tolerance must be finite and >= 0, is " + number(o.tolerance));
   return total;
 }
 
@@ -142,11 +149,13 @@ std::size_t check_options(const FractureOptions& o) {
 void check_thickness(const SurfaceMesh& mesh, double thickness) {
   if (thickness <= 0) return;
   const Vec3 size = bounding_box(mesh).size();
-  const double diagonal = std::sqrt(double(size.x) * size.x + double(size.y) * size.y + double(size.z) * size.z);
+  const double diagonal =
+      std::sqrt(double(size.x) * size.x + double(size.y) * size.y + double(size.z) * size.z);
   if (thickness > kFractureMaxThicknessRatio * diagonal)
     throw InvalidInputError("fracture: thickness is " + number(thickness) + ", more than " +
-                            number(kFractureMaxThicknessRatio) + " times the diagonal of the mesh's bounding box (" +
-                            number(diagonal) + "), the limit (kFractureMaxThicknessRatio); use a thickness of at most " +
+                            number(kFractureMaxThicknessRatio) +
+                            " times the diagonal of the mesh's bounding box (" + number(diagonal) +
+                            "), the limit (kFractureMaxThicknessRatio); use a thickness of at most " +
                             number(kFractureMaxThicknessRatio * diagonal));
 }
 
@@ -202,7 +211,8 @@ class Area {
 //! Splits polygons of the area at their centroid and edges longer than max_edge at their midpoint
 //! (longest first), for faces whose centroid lies within `radius` of p in the metric.
 //! \return true if anything was split.
-bool refine(SurfaceMesh& m, const Area& area, const Vec3d& p, double radius, double max_edge, const Metric& metric) {
+bool refine(SurfaceMesh& m, const Area& area, const Vec3d& p, double radius, double max_edge,
+            const Metric& metric) {
   std::vector<Face> work;
   work.reserve(area.faces.size());
   for (const AreaFace& a : area.faces) work.push_back(a.face);
@@ -219,14 +229,16 @@ bool refine(SurfaceMesh& m, const Area& area, const Vec3d& p, double radius, dou
       Halfedge longest;
       double best = max_edge;
       for (Halfedge h : m.halfedges(f)) {
-        const double l = norm(sub(to_double(m.position(m.to_vertex(h))), to_double(m.position(m.from_vertex(h)))));
+        const double l =
+            norm(sub(to_double(m.position(m.to_vertex(h))), to_double(m.position(m.from_vertex(h)))));
         if (l > best) {
           best = l;
           longest = h;
         }
       }
       if (!longest.is_valid()) continue;
-      const Vec3d mid = (to_double(m.position(m.to_vertex(longest))) + to_double(m.position(m.from_vertex(longest)))) * 0.5;
+      const Vec3d mid =
+          (to_double(m.position(m.to_vertex(longest))) + to_double(m.position(m.from_vertex(longest)))) * 0.5;
       v = split_edge(m, SurfaceMesh::edge(longest), to_float(mid));
     }
     if (!v.is_valid()) continue;
@@ -260,8 +272,8 @@ Vertex cut_impact(SurfaceMesh& m, const LocateResult& hit, Vec3& point) {
 
 Vec3d any_perpendicular(const Vec3d& n) {
   const Vec3d axis = std::abs(n.x) <= std::abs(n.y) && std::abs(n.x) <= std::abs(n.z) ? Vec3d{1, 0, 0}
-                     : std::abs(n.y) <= std::abs(n.z)                                  ? Vec3d{0, 1, 0}
-                                                                                       : Vec3d{0, 0, 1};
+                     : std::abs(n.y) <= std::abs(n.z)                                 ? Vec3d{0, 1, 0}
+                                                                                      : Vec3d{0, 0, 1};
   return normalize(cross(n, axis));
 }
 
@@ -312,11 +324,12 @@ SurfaceMesh extrude(const SurfaceMesh& s, double thickness) {
     if (!s.is_boundary(h)) continue;
     const Index a = s.from_vertex(h).idx(), b = s.to_vertex(h).idx();
     const Halfedge at_a = SurfaceMesh::twin(h);  // in the front face, pointing to a
-    const Halfedge at_b = s.prev(at_a);           // in the same face, pointing to b
+    const Halfedge at_b = s.prev(at_a);          // in the same face, pointing to b
     const Face f = s.face(at_a);
     im.indices.insert(im.indices.end(), {a, b, static_cast<std::uint32_t>(n + b)});
     corner_src.insert(corner_src.end(), {at_a, at_b, at_b});
-    im.indices.insert(im.indices.end(), {a, static_cast<std::uint32_t>(n + b), static_cast<std::uint32_t>(n + a)});
+    im.indices.insert(im.indices.end(),
+                      {a, static_cast<std::uint32_t>(n + b), static_cast<std::uint32_t>(n + a)});
     corner_src.insert(corner_src.end(), {at_a, at_b, at_a});
     im.face_sizes.insert(im.face_sizes.end(), {3, 3});
     face_src.insert(face_src.end(), {f, f});
@@ -418,7 +431,8 @@ FractureMaterial fracture_material(std::string_view preset) {
   } else {
     std::string names;
     for (const std::string& n : fracture_material_names()) names += (names.empty() ? "" : ", ") + n;
-    throw InvalidInputError("fracture: unknown material '" + std::string(preset) + "'; valid presets: " + names);
+    throw InvalidInputError("fracture: unknown material '" + std::string(preset) +
+                            "'; valid presets: " + names);
   }
   return m;
 }
@@ -431,7 +445,8 @@ FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOpt
     throw InvalidInputError("fracture: the impact (" + number(impact.x) + ", " + number(impact.y) + ", " +
                             number(impact.z) + ") is not finite");
   if (mesh.n_faces() == 0) throw InvalidInputError("fracture: the mesh has no face");
-  if (bvh && bvh->mesh() != &mesh) throw InvalidInputError("fracture: the FaceBvh was built over another mesh");
+  if (bvh && bvh->mesh() != &mesh)
+    throw InvalidInputError("fracture: the FaceBvh was built over another mesh");
   check_thickness(mesh, o.thickness);
 
   FractureResult result;

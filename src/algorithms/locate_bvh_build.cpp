@@ -1,12 +1,11 @@
 // FaceBvh: building the whole tree, and the pieces update() builds (subtrees over a range of
 // entries). Nodes are split by a binned surface-area heuristic or at the median; see BvhSplit.
-#include "hedge/algorithms/locate.h"
-
 #include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
 
+#include "hedge/algorithms/locate.h"
 #include "hedge/error.h"
 #include "locate_internal.h"
 

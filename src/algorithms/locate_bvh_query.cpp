@@ -1,12 +1,11 @@
 // FaceBvh: refit, update after local edits, and the queries.
-#include "hedge/algorithms/locate.h"
-
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "hedge/algorithms/locate.h"
 #include "hedge/core/small_vector.h"
 #include "hedge/error.h"
 #include "locate_internal.h"

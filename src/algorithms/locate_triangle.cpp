@@ -1,10 +1,9 @@
 // Point location without a tree: the public triangle primitives and the linear scans over every
 // face. The triangle code itself is in locate_internal.h, shared with FaceBvh's queries.
-#include "hedge/algorithms/locate.h"
-
 #include <cmath>
 #include <optional>
 
+#include "hedge/algorithms/locate.h"
 #include "locate_internal.h"
 
 namespace hedge {

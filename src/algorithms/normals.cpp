@@ -42,14 +42,19 @@ FaceNormals all_face_normals(const SurfaceMesh& m) {
 
 // What face F adds to the normal at its corner where `out` (leaving v, in F) starts and `in`
 // (entering v, in F) ends.
-Vec3d weighted(const SurfaceMesh& m, const FaceNormals& n, Face f, Halfedge out, Halfedge in, NormalWeighting w) {
+Vec3d weighted(const SurfaceMesh& m, const FaceNormals& n, Face f, Halfedge out, Halfedge in,
+               NormalWeighting w) {
   switch (w) {
-    case NormalWeighting::area: return n.area[f.idx()];
-    case NormalWeighting::uniform: return n.unit[f.idx()];
-    case NormalWeighting::angle: break;
+    case NormalWeighting::area:
+      return n.area[f.idx()];
+    case NormalWeighting::uniform:
+      return n.unit[f.idx()];
+    case NormalWeighting::angle:
+      break;
   }
   const Vec3d v = to_double(m.position(m.from_vertex(out)));
-  const double a = corner_angle(v, to_double(m.position(m.to_vertex(out))), to_double(m.position(m.from_vertex(in))));
+  const double a =
+      corner_angle(v, to_double(m.position(m.to_vertex(out))), to_double(m.position(m.from_vertex(in))));
   return n.unit[f.idx()] * a;
 }
 
@@ -67,7 +72,8 @@ FaceProperty<Vec3> compute_face_normals(SurfaceMesh& mesh, std::string_view name
   return prop;
 }
 
-VertexProperty<Vec3> compute_vertex_normals(SurfaceMesh& mesh, NormalWeighting weighting, std::string_view name) {
+VertexProperty<Vec3> compute_vertex_normals(SurfaceMesh& mesh, NormalWeighting weighting,
+                                            std::string_view name) {
   const FaceNormals n = all_face_normals(mesh);
   VertexProperty<Vec3> prop = mesh.vertex_property<Vec3>(name);
   for (Vertex v : mesh.vertices()) {
@@ -82,7 +88,8 @@ VertexProperty<Vec3> compute_vertex_normals(SurfaceMesh& mesh, NormalWeighting w
           sum += weighted(mesh, n, mesh.face(o), o, SurfaceMesh::twin(prev_out), weighting);
         prev_out = o;
       }
-      if (mesh.face(first).is_valid()) sum += weighted(mesh, n, mesh.face(first), first, SurfaceMesh::twin(prev_out), weighting);
+      if (mesh.face(first).is_valid())
+        sum += weighted(mesh, n, mesh.face(first), first, SurfaceMesh::twin(prev_out), weighting);
     }
     prop[v] = to_float(unit(sum));
     mesh.mark_changed(v, ChangeEvent::vertex_data_changed);
@@ -91,8 +98,8 @@ VertexProperty<Vec3> compute_vertex_normals(SurfaceMesh& mesh, NormalWeighting w
   return prop;
 }
 
-HalfedgeProperty<Vec3> compute_corner_normals(SurfaceMesh& mesh, double crease_degrees, NormalWeighting weighting,
-                                              std::string_view name) {
+HalfedgeProperty<Vec3> compute_corner_normals(SurfaceMesh& mesh, double crease_degrees,
+                                              NormalWeighting weighting, std::string_view name) {
   if (!(crease_degrees >= 0 && crease_degrees <= 180))
     throw InvalidInputError("compute_corner_normals: the crease angle must be in [0, 180] degrees, got " +
                             std::to_string(crease_degrees));
@@ -134,7 +141,8 @@ HalfedgeProperty<Vec3> compute_corner_normals(SurfaceMesh& mesh, double crease_d
       const std::size_t i = (start + s) % k;
       if (s > 0 && cut[i]) close_wedge(s);
       const Face f = mesh.face(outs[i]);
-      if (f.is_valid()) sum += weighted(mesh, n, f, outs[i], SurfaceMesh::twin(outs[(i + k - 1) % k]), weighting);
+      if (f.is_valid())
+        sum += weighted(mesh, n, f, outs[i], SurfaceMesh::twin(outs[(i + k - 1) % k]), weighting);
     }
     close_wedge(k);
   }

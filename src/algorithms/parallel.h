@@ -41,7 +41,8 @@ void parallel_ranges(std::size_t n, Body&& body, std::size_t grain = 1u << 15) {
   threads.reserve(parts - 1);
   std::size_t p = 1;
   try {
-    for (; p < parts; ++p) threads.emplace_back([&body, n, p, parts] { body(n * p / parts, n * (p + 1) / parts); });
+    for (; p < parts; ++p)
+      threads.emplace_back([&body, n, p, parts] { body(n * p / parts, n * (p + 1) / parts); });
   } catch (...) {
     // No thread to be had (a platform without them, or out of resources): the rest runs here.
   }

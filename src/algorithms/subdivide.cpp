@@ -119,7 +119,8 @@ void check(const SurfaceMesh& m, Subdivision scheme, int steps) {
   double corners = double(all_corners.load());
   if (!any_polygon && not_triangle.load() < nf) {
     const Face f(Index(not_triangle.load()));
-    throw InvalidInputError(std::string("subdivide: the ") + (scheme == Subdivision::sqrt3 ? "sqrt3" : "1-to-4") +
+    throw InvalidInputError(std::string("subdivide: the ") +
+                            (scheme == Subdivision::sqrt3 ? "sqrt3" : "1-to-4") +
                             " scheme needs triangles, and face " + std::to_string(f.idx()) + " has " +
                             std::to_string(m.valence(f)) + " corners (triangulate first)");
   }
@@ -152,10 +153,13 @@ struct Counts {
 
 Counts counts_after(const Counts& n, Subdivision scheme) {
   switch (scheme) {
-    case Subdivision::catmull_clark: return {n.v + n.e + n.f, 2 * n.e + n.c, n.c, 4 * n.c};
+    case Subdivision::catmull_clark:
+      return {n.v + n.e + n.f, 2 * n.e + n.c, n.c, 4 * n.c};
     case Subdivision::sqrt3:
-    case Subdivision::split_faces: return {n.v + n.f, n.e + n.c, n.c, 3 * n.c};
-    default: return {n.v + n.e, 2 * n.e + 3 * n.f, 4 * n.f, 12 * n.f};
+    case Subdivision::split_faces:
+      return {n.v + n.f, n.e + n.c, n.c, 3 * n.c};
+    default:
+      return {n.v + n.e, 2 * n.e + 3 * n.f, 4 * n.f, 12 * n.f};
   }
 }
 
@@ -177,10 +181,13 @@ struct ElementBytes {
 // each scheme on meshes with and without corner texture coordinates.
 double work_bytes_per_element(Subdivision scheme) {
   switch (scheme) {
-    case Subdivision::catmull_clark: return 48;
+    case Subdivision::catmull_clark:
+      return 48;
     case Subdivision::sqrt3:
-    case Subdivision::split_faces: return 24;
-    default: return 8;
+    case Subdivision::split_faces:
+      return 24;
+    default:
+      return 8;
   }
 }
 constexpr double kSlack = 1.25;
@@ -217,12 +224,13 @@ void check_memory(const SurfaceMesh& m, Subdivision scheme, int steps, std::size
   if (saturate(need) <= max_memory) return;
   int fit = 0;
   while (fit + 1 < steps && saturate(estimate(m, scheme, fit + 1)) <= max_memory) ++fit;
-  throw InvalidInputError("subdivide: " + std::to_string(steps) + (steps == 1 ? " step" : " steps") +
-                          " would need about " + bytes_text(need) + " (estimated) for " +
-                          std::to_string(m.n_faces()) + " faces, more than the memory budget of " +
-                          bytes_text(double(max_memory)) + "; " +
-                          (fit == 0 ? std::string("not even one step fits") : "at most " + std::to_string(fit) + (fit == 1 ? " step fits" : " steps fit")) +
-                          " (subdivide_memory() gives the estimate)");
+  throw InvalidInputError(
+      "subdivide: " + std::to_string(steps) + (steps == 1 ? " step" : " steps") + " would need about " +
+      bytes_text(need) + " (estimated) for " + std::to_string(m.n_faces()) +
+      " faces, more than the memory budget of " + bytes_text(double(max_memory)) + "; " +
+      (fit == 0 ? std::string("not even one step fits")
+                : "at most " + std::to_string(fit) + (fit == 1 ? " step fits" : " steps fit")) +
+      " (subdivide_memory() gives the estimate)");
 }
 
 Old read_old(const SurfaceMesh& m) {
@@ -239,7 +247,8 @@ Old read_old(const SurfaceMesh& m) {
   const auto crease = m.get_edge_property<std::uint8_t>("e:crease");
   detail::parallel_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
     for (std::size_t e = begin; e < end; ++e)
-      o.sharp[e] = !o.face[2 * e].is_valid() || !o.face[2 * e + 1].is_valid() || (crease && crease[Edge(Index(e))] != 0);
+      o.sharp[e] = !o.face[2 * e].is_valid() || !o.face[2 * e + 1].is_valid() ||
+                   (crease && crease[Edge(Index(e))] != 0);
   });
   return o;
 }
@@ -281,10 +290,10 @@ void write_edge_halves(SurfaceMesh& m, const Old& o) {
     for (std::size_t e = begin; e < end; ++e) {
       const Index h0 = Index(2 * e), h1 = h0 + 1;
       const Vertex a = o.to[h1], b = o.to[h0], mid(Index(o.nv + e));
-      m.set_vertex(Halfedge(first_half(h0)), mid);   // a -> mid
-      m.set_vertex(Halfedge(second_half(h1)), a);    // mid -> a
-      m.set_vertex(Halfedge(second_half(h0)), b);    // mid -> b
-      m.set_vertex(Halfedge(first_half(h1)), mid);   // b -> mid
+      m.set_vertex(Halfedge(first_half(h0)), mid);  // a -> mid
+      m.set_vertex(Halfedge(second_half(h1)), a);   // mid -> a
+      m.set_vertex(Halfedge(second_half(h0)), b);   // mid -> b
+      m.set_vertex(Halfedge(first_half(h1)), mid);  // b -> mid
       for (const Index h : {h0, h1}) {
         if (o.face[h].is_valid()) continue;
         // A boundary half-edge: both halves are boundary, linked along the loop.
@@ -294,7 +303,7 @@ void write_edge_halves(SurfaceMesh& m, const Old& o) {
         m.set_next(Halfedge(second_half(h)), Halfedge(first_half(o.next[h].idx())));
       }
       // The edge vertex's outgoing half-edge: a boundary one if the edge is on the boundary.
-      m.set_halfedge(mid, Halfedge(!o.face[h0].is_valid() ? second_half(h0)
+      m.set_halfedge(mid, Halfedge(!o.face[h0].is_valid()   ? second_half(h0)
                                    : !o.face[h1].is_valid() ? second_half(h1)
                                                             : second_half(h0)));
     }
@@ -302,7 +311,8 @@ void write_edge_halves(SurfaceMesh& m, const Old& o) {
   // Old vertices: the first half of their old outgoing half-edge (boundary stays boundary).
   detail::parallel_ranges(o.nv, [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v)
-      m.set_halfedge(Vertex(Index(v)), o.vout[v].is_valid() ? Halfedge(first_half(o.vout[v].idx())) : Halfedge());
+      m.set_halfedge(Vertex(Index(v)),
+                     o.vout[v].is_valid() ? Halfedge(first_half(o.vout[v].idx())) : Halfedge());
   });
 }
 
@@ -402,7 +412,6 @@ SurfaceMesh refine_1_to_4(const SurfaceMesh& src, Subdivision scheme) {
   return m;
 }
 
-
 // ---- Catmull-Clark ----
 // Besides V + e for edge e, face f's point is vertex V + E + f. The half-edges h_0..h_{n-1} of face
 // f (from halfedge(f)) get the compact numbers q = first(f) + k, first(f) being the running sum of
@@ -426,7 +435,8 @@ void catmull_clark_positions(const SurfaceMesh& m, const Old& o, Vec3* out) {
       const Halfedge h(Index(2 * e)), t(Index(2 * e + 1));
       const Vec3d a = to_double(m.position(o.to[h.idx()])), b = to_double(m.position(o.to[t.idx()]));
       Vec3d p = (a + b) * 0.5;
-      if (!o.sharp[e]) p = (a + b + face_point[o.face[h.idx()].idx()] + face_point[o.face[t.idx()].idx()]) * 0.25;
+      if (!o.sharp[e])
+        p = (a + b + face_point[o.face[h.idx()].idx()] + face_point[o.face[t.idx()].idx()]) * 0.25;
       out[o.nv + e] = to_float(p);
     }
   });
@@ -527,7 +537,9 @@ SurfaceMesh refine_catmull_clark(const SurfaceMesh& src) {
     weights.assign(n, 1.f / float(n));
     corners.resize(n);
     for (std::size_t k = 0; k < n; ++k) corners[k] = o.to[ring[k]].idx();
-    if (vertex_data) m.vertex_properties().interpolate(centre.idx(), corners.data(), weights.data(), n, m.positions().array());
+    if (vertex_data)
+      m.vertex_properties().interpolate(centre.idx(), corners.data(), weights.data(), n,
+                                        m.positions().array());
     if (!corner_data) continue;
     const float half[2] = {0.5f, 0.5f};
     for (std::size_t k = 0; k < n; ++k) {
@@ -551,7 +563,6 @@ SurfaceMesh refine_catmull_clark(const SurfaceMesh& src) {
       for (Index q = first[f]; q < first[f + 1]; ++q) fprops.copy_element_from(src.face_properties(), f, q);
   return m;
 }
-
 
 // ---- Splitting at face centres, and Kobbelt's sqrt(3) ----
 // Old vertices, edges and half-edges keep their index; face f's centre is vertex V + f. Face f's
@@ -673,7 +684,8 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3) {
     }
   });
   detail::parallel_ranges(s.nv, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t v = begin; v < end; ++v) m.set_halfedge(Vertex(Index(v)), src.halfedge(Vertex(Index(v))));
+    for (std::size_t v = begin; v < end; ++v)
+      m.set_halfedge(Vertex(Index(v)), src.halfedge(Vertex(Index(v))));
   });
   {
     const PropertyContainer& hfrom = src.halfedge_properties();
@@ -758,7 +770,8 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3) {
   PropertyContainer& fprops = m.face_properties();
   if (!fprops.empty())
     for (std::size_t f = 0; f < s.nf; ++f)
-      for (Index c = s.first[f]; c < s.first[f + 1]; ++c) fprops.copy_element_from(src.face_properties(), f, c);
+      for (Index c = s.first[f]; c < s.first[f + 1]; ++c)
+        fprops.copy_element_from(src.face_properties(), f, c);
   for (std::size_t f = 0; f < s.nf; ++f) m.position(Vertex(V + Index(f))) = centres[f];
   for (std::size_t v = 0; v < s.nv; ++v)
     m.position(Vertex(Index(v))) = sqrt3 ? smoothed[v] : src.position(Vertex(Index(v)));
@@ -768,21 +781,27 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3) {
 // One step from src, into a mesh of its own.
 SurfaceMesh refine(const SurfaceMesh& src, Subdivision scheme) {
   switch (scheme) {
-    case Subdivision::catmull_clark: return refine_catmull_clark(src);
-    case Subdivision::sqrt3: return refine_at_centres(src, true);
-    case Subdivision::split_faces: return refine_at_centres(src, false);
-    default: return refine_1_to_4(src, scheme);
+    case Subdivision::catmull_clark:
+      return refine_catmull_clark(src);
+    case Subdivision::sqrt3:
+      return refine_at_centres(src, true);
+    case Subdivision::split_faces:
+      return refine_at_centres(src, false);
+    default:
+      return refine_1_to_4(src, scheme);
   }
 }
 
 }  // namespace
 
 std::size_t subdivide_memory(const SurfaceMesh& mesh, Subdivision scheme, int steps) {
-  if (steps < 0) throw InvalidInputError("subdivide_memory: steps must be 0 or more, got " + std::to_string(steps));
+  if (steps < 0)
+    throw InvalidInputError("subdivide_memory: steps must be 0 or more, got " + std::to_string(steps));
   return saturate(estimate(mesh, scheme, steps));
 }
 
-void subdivide(SurfaceMesh& mesh, Subdivision scheme, int steps, const Progress& progress, std::size_t max_memory) {
+void subdivide(SurfaceMesh& mesh, Subdivision scheme, int steps, const Progress& progress,
+               std::size_t max_memory) {
   check(mesh, scheme, steps);
   check_memory(mesh, scheme, steps, max_memory);
   report_progress(progress, 0);

@@ -23,9 +23,12 @@ namespace {
 
 NormalWeighting to_weighting(std::int32_t w) {
   switch (w) {
-    case HEDGE_WEIGHTING_AREA: return NormalWeighting::area;
-    case HEDGE_WEIGHTING_ANGLE: return NormalWeighting::angle;
-    case HEDGE_WEIGHTING_UNIFORM: return NormalWeighting::uniform;
+    case HEDGE_WEIGHTING_AREA:
+      return NormalWeighting::area;
+    case HEDGE_WEIGHTING_ANGLE:
+      return NormalWeighting::angle;
+    case HEDGE_WEIGHTING_UNIFORM:
+      return NormalWeighting::uniform;
     default:
       fail(HEDGE_ERROR_INVALID_ARGUMENT,
            "weighting must be HEDGE_WEIGHTING_AREA, _ANGLE or _UNIFORM, got " + std::to_string(w));
@@ -34,7 +37,8 @@ NormalWeighting to_weighting(std::int32_t w) {
 
 // Copies a Vec3 property, 3 floats per slot.
 template <typename Prop>
-void copy_vec3(const Prop& prop, std::size_t slots, float* buffer, std::uint64_t capacity, std::uint64_t* out_count) {
+void copy_vec3(const Prop& prop, std::size_t slots, float* buffer, std::uint64_t capacity,
+               std::uint64_t* out_count) {
   const std::uint64_t needed = 3 * std::uint64_t(slots);
   *out_count = needed;
   check_capacity(needed, buffer, capacity);
@@ -105,7 +109,8 @@ hedge_status hedge_mesh_compute_corner_normals(hedge_mesh* mesh, double crease_d
     auto object = find_mesh(mesh);
     const NormalWeighting w = to_weighting(weighting);
     if (!(crease_degrees >= 0 && crease_degrees <= 180))
-      fail(HEDGE_ERROR_INVALID_ARGUMENT, "crease_degrees must be in 0..180, got " + std::to_string(crease_degrees));
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "crease_degrees must be in 0..180, got " + std::to_string(crease_degrees));
     compute_corner_normals(object->mesh, crease_degrees, w);
   });
 }
@@ -118,8 +123,9 @@ hedge_status hedge_mesh_copy_vertex_normals(const hedge_mesh* mesh, float* buffe
     need(out_count, "out_count");
     const auto normals = m.get_vertex_property<Vec3>("v:normal");
     if (!normals)
-      fail(HEDGE_ERROR_INVALID_ARGUMENT, "the mesh has no vertex normals: compute them first "
-                                         "(hedge_mesh_compute_vertex_normals)");
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "the mesh has no vertex normals: compute them first "
+           "(hedge_mesh_compute_vertex_normals)");
     copy_vec3(normals, m.vertex_slots(), buffer, capacity, out_count);
   });
 }
@@ -132,8 +138,9 @@ hedge_status hedge_mesh_copy_corner_normals(const hedge_mesh* mesh, float* buffe
     need(out_count, "out_count");
     const auto normals = m.get_halfedge_property<Vec3>("h:normal");
     if (!normals)
-      fail(HEDGE_ERROR_INVALID_ARGUMENT, "the mesh has no corner normals: compute them first "
-                                         "(hedge_mesh_compute_corner_normals)");
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "the mesh has no corner normals: compute them first "
+           "(hedge_mesh_compute_corner_normals)");
     copy_vec3(normals, m.halfedge_slots(), buffer, capacity, out_count);
   });
 }
@@ -143,7 +150,8 @@ hedge_status hedge_mesh_hausdorff(const hedge_mesh* a, const hedge_mesh* b, uint
   return guard([&] {
     auto first = find_mesh(a), second = find_mesh(b);
     double& distance = need(out_distance, "out_distance");
-    const HausdorffDistance d = hausdorff_distance(first->mesh, second->mesh, {.samples = samples, .seed = seed});
+    const HausdorffDistance d =
+        hausdorff_distance(first->mesh, second->mesh, {.samples = samples, .seed = seed});
     distance = d.distance;
     if (out_mean != nullptr) *out_mean = d.mean;
   });
@@ -175,13 +183,22 @@ hedge_status hedge_mesh_smooth(hedge_mesh* mesh, const hedge_smooth_options* opt
     }
     SmoothOptions s;
     switch (o.method) {
-      case HEDGE_SMOOTH_UNIFORM: s.method = SmoothMethod::uniform; break;
-      case HEDGE_SMOOTH_TAUBIN: s.method = SmoothMethod::taubin; break;
-      case HEDGE_SMOOTH_COTANGENT: s.method = SmoothMethod::cotangent; break;
-      case HEDGE_SMOOTH_IMPLICIT: s.method = SmoothMethod::implicit; break;
+      case HEDGE_SMOOTH_UNIFORM:
+        s.method = SmoothMethod::uniform;
+        break;
+      case HEDGE_SMOOTH_TAUBIN:
+        s.method = SmoothMethod::taubin;
+        break;
+      case HEDGE_SMOOTH_COTANGENT:
+        s.method = SmoothMethod::cotangent;
+        break;
+      case HEDGE_SMOOTH_IMPLICIT:
+        s.method = SmoothMethod::implicit;
+        break;
       default:
-        fail(HEDGE_ERROR_INVALID_ARGUMENT, "method must be HEDGE_SMOOTH_UNIFORM, _TAUBIN, _COTANGENT or _IMPLICIT, got " +
-                                               std::to_string(o.method));
+        fail(HEDGE_ERROR_INVALID_ARGUMENT,
+             "method must be HEDGE_SMOOTH_UNIFORM, _TAUBIN, _COTANGENT or _IMPLICIT, got " +
+                 std::to_string(o.method));
     }
     s.iterations = o.iterations;
     s.lambda = o.lambda;
@@ -244,13 +261,14 @@ hedge_status hedge_fracture_options_default(int32_t preset, hedge_fracture_optio
     hedge_fracture_options& o = need(out_options, "out_options");
     static const char* const names[] = {"glass", "stone", "wood", "ice"};
     if (preset < HEDGE_FRACTURE_GLASS || preset > HEDGE_FRACTURE_ICE)
-      fail(HEDGE_ERROR_INVALID_ARGUMENT, "preset must be HEDGE_FRACTURE_GLASS, _STONE, _WOOD or _ICE, got " +
-                                             std::to_string(preset));
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "preset must be HEDGE_FRACTURE_GLASS, _STONE, _WOOD or _ICE, got " + std::to_string(preset));
     const FractureMaterial m = fracture_material(names[preset]);
     const FractureOptions d;
     o = hedge_fracture_options{};
     o.ring_count = static_cast<std::uint32_t>(m.rings.size());
-    for (std::size_t i = 0; i < m.rings.size(); ++i) o.rings[i] = {m.rings[i].spacing, m.rings[i].jitter, m.rings[i].points, 0};
+    for (std::size_t i = 0; i < m.rings.size(); ++i)
+      o.rings[i] = {m.rings[i].spacing, m.rings[i].jitter, m.rings[i].points, 0};
     o.absolute = m.absolute ? 1 : 0;
     o.grain[0] = m.grain.x, o.grain[1] = m.grain.y, o.grain[2] = m.grain.z;
     o.grain_stretch = m.grain_stretch;
@@ -263,8 +281,9 @@ hedge_status hedge_fracture_options_default(int32_t preset, hedge_fracture_optio
   });
 }
 
-hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z, const hedge_fracture_options* options,
-                                 hedge_fracture_shard* out_shards, uint32_t capacity, uint32_t* out_count) {
+hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z,
+                                 const hedge_fracture_options* options, hedge_fracture_shard* out_shards,
+                                 uint32_t capacity, uint32_t* out_count) {
   return guard([&] {
     auto object = find_mesh(mesh);
     std::uint32_t& count = need(out_count, "out_count");
@@ -340,7 +359,8 @@ hedge_status hedge_mesh_subdivide(hedge_mesh* mesh, int32_t scheme, int32_t step
       fail(HEDGE_ERROR_INVALID_ARGUMENT,
            "scheme must be HEDGE_SUBDIVISION_LOOP, _MIDPOINT, _CATMULL_CLARK, _SQRT3 or _SPLIT_FACES, got " +
                std::to_string(scheme));
-    if (steps < 0 || steps > 12) fail(HEDGE_ERROR_INVALID_ARGUMENT, "steps must be in 0..12, got " + std::to_string(steps));
+    if (steps < 0 || steps > 12)
+      fail(HEDGE_ERROR_INVALID_ARGUMENT, "steps must be in 0..12, got " + std::to_string(steps));
     const Subdivision s = scheme == HEDGE_SUBDIVISION_LOOP          ? Subdivision::loop
                           : scheme == HEDGE_SUBDIVISION_MIDPOINT    ? Subdivision::midpoint
                           : scheme == HEDGE_SUBDIVISION_SQRT3       ? Subdivision::sqrt3
@@ -352,7 +372,8 @@ hedge_status hedge_mesh_subdivide(hedge_mesh* mesh, int32_t scheme, int32_t step
 
 hedge_status hedge_mesh_reorder(hedge_mesh* mesh, int32_t ordering, uint32_t cache_size, uint32_t* vertex_map,
                                 uint32_t vertex_capacity, uint32_t* halfedge_map, uint32_t halfedge_capacity,
-                                uint32_t* edge_map, uint32_t edge_capacity, uint32_t* face_map, uint32_t face_capacity) {
+                                uint32_t* edge_map, uint32_t edge_capacity, uint32_t* face_map,
+                                uint32_t face_capacity) {
   return guard([&] {
     auto object = find_mesh(mesh);
     if (ordering != HEDGE_ORDERING_SPATIAL && ordering != HEDGE_ORDERING_VERTEX_CACHE)

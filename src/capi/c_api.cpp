@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <cstring>
 #include <mutex>
-#include <thread>
 #include <shared_mutex>
+#include <thread>
 #include <type_traits>
 #include <unordered_map>
 
@@ -82,7 +82,8 @@ MeshUse::MeshUse(std::shared_ptr<MeshObject> object) : object_(std::move(object)
   } else {
     object_.reset();
     fail(HEDGE_ERROR_BUSY,
-         "the mesh is in a call on another thread; a mesh and its render objects take calls from one thread at "
+         "the mesh is in a call on another thread; a mesh and its render objects take calls from one thread "
+         "at "
          "a time");
   }
 }
@@ -514,7 +515,8 @@ ReadOptions to_read_options(const hedge_read_options* options, bool external_def
   if (options == nullptr) return out;
   out.external_buffers = need_bool(options->external_buffers, "read_options.external_buffers");
   if (options->reserved != 0)
-    fail(HEDGE_ERROR_INVALID_ARGUMENT, "read_options.reserved is " + std::to_string(options->reserved) + ", not 0");
+    fail(HEDGE_ERROR_INVALID_ARGUMENT,
+         "read_options.reserved is " + std::to_string(options->reserved) + ", not 0");
   out.max_memory = options->max_memory;
   return out;
 }
@@ -522,7 +524,8 @@ ReadOptions to_read_options(const hedge_read_options* options, bool external_def
 // Builds what a reader gave, with the file's default build options unless the caller's.
 void build_read(const IndexedMesh& in, FileFormat format, const hedge_build_options* options,
                 hedge_build_report* out_report, hedge_mesh** out_mesh) {
-  const BuildOptions build_options = options != nullptr ? to_build_options(*options) : default_build_options(format);
+  const BuildOptions build_options =
+      options != nullptr ? to_build_options(*options) : default_build_options(format);
   BuildReport report;
   auto object = std::make_shared<MeshObject>();
   object->mesh = build_read(in, build_options, &report);
@@ -557,8 +560,9 @@ hedge_status hedge_mesh_read_with(const char* path, const hedge_build_options* o
 }
 
 hedge_status hedge_mesh_read_memory(const void* bytes, uint64_t size, const char* name,
-                                    const hedge_build_options* options, const hedge_read_options* read_options,
-                                    hedge_build_report* out_report, hedge_mesh** out_mesh) {
+                                    const hedge_build_options* options,
+                                    const hedge_read_options* read_options, hedge_build_report* out_report,
+                                    hedge_mesh** out_mesh) {
   return guard([&] {
     if (size > 0) need(static_cast<const char*>(bytes), "bytes");
     need(name, "name");

@@ -78,7 +78,8 @@ class MeshUse {
 //! A call's use of a render object, and so of its mesh.
 class RenderUse {
  public:
-  explicit RenderUse(std::shared_ptr<RenderObject> object) : mesh_(object->mesh), object_(std::move(object)) {}
+  explicit RenderUse(std::shared_ptr<RenderObject> object)
+      : mesh_(object->mesh), object_(std::move(object)) {}
   RenderObject* operator->() const { return object_.get(); }
   RenderObject& operator*() const { return *object_; }
 
@@ -189,15 +190,20 @@ Face live_face(const SurfaceMesh& m, std::uint32_t f);
 //! A live element of type H (see live_vertex and the others).
 template <typename H>
 H live_element(const SurfaceMesh& m, std::uint32_t index) {
-  if constexpr (std::is_same_v<H, Vertex>) return live_vertex(m, index);
-  else if constexpr (std::is_same_v<H, Halfedge>) return live_halfedge(m, index);
-  else if constexpr (std::is_same_v<H, Edge>) return live_edge(m, index);
-  else return live_face(m, index);
+  if constexpr (std::is_same_v<H, Vertex>)
+    return live_vertex(m, index);
+  else if constexpr (std::is_same_v<H, Halfedge>)
+    return live_halfedge(m, index);
+  else if constexpr (std::is_same_v<H, Edge>)
+    return live_edge(m, index);
+  else
+    return live_face(m, index);
 }
 
 //! One query about one live element: checks the handles, then writes fn(mesh, element) to *out.
 template <typename H, typename Out, typename Fn>
-hedge_status element_query(const hedge_mesh* mesh, std::uint32_t index, Out* out, const char* out_name, Fn&& fn) {
+hedge_status element_query(const hedge_mesh* mesh, std::uint32_t index, Out* out, const char* out_name,
+                           Fn&& fn) {
   return guard([&] {
     auto object = find_mesh(mesh);
     const H h = live_element<H>(object->mesh, index);

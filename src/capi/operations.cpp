@@ -1,21 +1,22 @@
 // The C ABI: local operations (hedge/core/operations.h), the edits of whole regions beside them
 // (hedge/algorithms/: fill_hole, split_all_faces, detach_faces) and garbage collection.
 // Every edit checks its handles, its out parameters and its predicate before it changes anything.
-#include "hedge/algorithms/detach_faces.h"
-#include "hedge/algorithms/fill_hole.h"
-#include "hedge/algorithms/split_all_faces.h"
 #include "hedge/core/operations.h"
 
 #include <unordered_set>
 
 #include "capi_internal.h"
+#include "hedge/algorithms/detach_faces.h"
+#include "hedge/algorithms/fill_hole.h"
+#include "hedge/algorithms/split_all_faces.h"
 
 using namespace hedge;
 using namespace hedge::capi;
 
 void hedge::capi::check_map_buffers(const SurfaceMesh& m, const MapBuffers& b) {
   if (b.vertex != nullptr) check_capacity(m.vertex_slots(), b.vertex, b.vertex_capacity, "vertex_map");
-  if (b.halfedge != nullptr) check_capacity(m.halfedge_slots(), b.halfedge, b.halfedge_capacity, "halfedge_map");
+  if (b.halfedge != nullptr)
+    check_capacity(m.halfedge_slots(), b.halfedge, b.halfedge_capacity, "halfedge_map");
   if (b.edge != nullptr) check_capacity(m.edge_slots(), b.edge, b.edge_capacity, "edge_map");
   if (b.face != nullptr) check_capacity(m.face_slots(), b.face, b.face_capacity, "face_map");
 }
@@ -122,14 +123,16 @@ hedge_status hedge_can_cut_face(const hedge_mesh* mesh, uint32_t halfedge0, uint
   });
 }
 
-hedge_status hedge_cut_face(hedge_mesh* mesh, uint32_t halfedge0, uint32_t halfedge1, uint32_t* out_halfedge) {
+hedge_status hedge_cut_face(hedge_mesh* mesh, uint32_t halfedge0, uint32_t halfedge1,
+                            uint32_t* out_halfedge) {
   return guard([&] {
     auto object = find_mesh(mesh);
     SurfaceMesh& m = object->mesh;
     const Halfedge h0 = live_halfedge(m, halfedge0);
     const Halfedge h1 = live_halfedge(m, halfedge1);
     need(out_halfedge, "out_halfedge");
-    const std::string what = "cut_face of " + name("halfedge", halfedge0) + " and " + std::to_string(halfedge1);
+    const std::string what =
+        "cut_face of " + name("halfedge", halfedge0) + " and " + std::to_string(halfedge1);
     const Halfedge h = cut_face(m, h0, h1);
     if (!h.is_valid()) refused(what);
     *out_halfedge = h.idx();
@@ -213,8 +216,9 @@ hedge_status hedge_remove_vertex(hedge_mesh* mesh, uint32_t vertex) {
 }
 
 hedge_status hedge_can_fill_hole(const hedge_mesh* mesh, uint32_t halfedge, int32_t* out_ok) {
-  return element_query<Halfedge>(mesh, halfedge, out_ok, "out_ok",
-                                 [](const SurfaceMesh& m, Halfedge x) { return can_fill_hole(m, x) ? 1 : 0; });
+  return element_query<Halfedge>(mesh, halfedge, out_ok, "out_ok", [](const SurfaceMesh& m, Halfedge x) {
+    return can_fill_hole(m, x) ? 1 : 0;
+  });
 }
 
 hedge_status hedge_fill_hole(hedge_mesh* mesh, uint32_t halfedge, uint32_t* buffer, uint32_t capacity,

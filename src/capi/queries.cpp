@@ -12,10 +12,14 @@ namespace {
 //! Slots of element type H, deleted ones included.
 template <typename H>
 std::size_t slot_count(const SurfaceMesh& m) {
-  if constexpr (std::is_same_v<H, Vertex>) return m.vertex_slots();
-  else if constexpr (std::is_same_v<H, Halfedge>) return m.halfedge_slots();
-  else if constexpr (std::is_same_v<H, Edge>) return m.edge_slots();
-  else return m.face_slots();
+  if constexpr (std::is_same_v<H, Vertex>)
+    return m.vertex_slots();
+  else if constexpr (std::is_same_v<H, Halfedge>)
+    return m.halfedge_slots();
+  else if constexpr (std::is_same_v<H, Edge>)
+    return m.edge_slots();
+  else
+    return m.face_slots();
 }
 
 //! Whether element `index` of type H is deleted; any index in range is accepted.
@@ -31,8 +35,8 @@ hedge_status deleted_query(const hedge_mesh* mesh, std::uint32_t index, std::int
 //! Copies what a circulator about a live element yields, as indices, into a caller buffer. Two passes
 //! (count, then copy) instead of a temporary list: nothing is allocated.
 template <typename H, typename Ring>
-hedge_status ring_query(const hedge_mesh* mesh, std::uint32_t index, std::uint32_t* buffer, std::uint32_t capacity,
-                        std::uint32_t* out_count, Ring&& ring) {
+hedge_status ring_query(const hedge_mesh* mesh, std::uint32_t index, std::uint32_t* buffer,
+                        std::uint32_t capacity, std::uint32_t* out_count, Ring&& ring) {
   return guard([&] {
     auto object = find_mesh(mesh);
     const SurfaceMesh& m = object->mesh;
@@ -132,8 +136,9 @@ hedge_status hedge_face_is_boundary(const hedge_mesh* mesh, uint32_t face, int32
 }
 
 hedge_status hedge_vertex_valence(const hedge_mesh* mesh, uint32_t vertex, uint32_t* out_valence) {
-  return element_query<Vertex>(mesh, vertex, out_valence, "out_valence",
-                               [](const SurfaceMesh& m, Vertex v) { return to_u32(m.valence(v), "valence"); });
+  return element_query<Vertex>(mesh, vertex, out_valence, "out_valence", [](const SurfaceMesh& m, Vertex v) {
+    return to_u32(m.valence(v), "valence");
+  });
 }
 
 hedge_status hedge_face_valence(const hedge_mesh* mesh, uint32_t face, uint32_t* out_valence) {

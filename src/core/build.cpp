@@ -109,16 +109,17 @@ SurfaceMesh MeshBuilder::run() {
   for (std::size_t i = 0; i < n_in; ++i) rep_.vertex_map[i] = weld_map_.empty() ? Index(i) : weld_map_[i];
   rep_.vertex_origin.resize(m.vertex_slots());
   for (Index v = 0; v < nv; ++v) rep_.vertex_origin[v] = input_vertex(v);
-  for (std::size_t i = 0; i < vertex_origin_.size(); ++i) rep_.vertex_origin[nv + i] = input_vertex(vertex_origin_[i]);
+  for (std::size_t i = 0; i < vertex_origin_.size(); ++i)
+    rep_.vertex_origin[nv + i] = input_vertex(vertex_origin_[i]);
   rep_.face_map.assign(in_.face_count(), kInvalidIndex);
   for (Index f = 0; f < f_.n_faces; ++f) rep_.face_map[f_.face_origin.empty() ? f : f_.face_origin[f]] = f;
   return m;
 }
 
 SurfaceMesh build(const IndexedMesh& input, const BuildOptions& options, BuildReport* report) {
-  BuildInput view{input.positions, input.indices, input.face_sizes, input.texcoords,
-                  input.texcoord_indices, input.normals, input.normal_indices, input.colors,
-                  input.color_indices};
+  BuildInput view{input.positions,      input.indices,          input.face_sizes,
+                  input.texcoords,      input.texcoord_indices, input.normals,
+                  input.normal_indices, input.colors,           input.color_indices};
   BuildReport local;
   BuildReport& rep = report ? *report : local;
   rep = BuildReport{};

@@ -66,8 +66,8 @@ void MeshBuilder::check_input() const {
       throw InvalidInputError(std::string(what) + " index count differs from the corner count");
     for (std::size_t c = 0; c < idx.size(); ++c)
       if (idx[c] >= pool)
-        throw InvalidInputError("corner " + std::to_string(c) + " refers to " + what + " " + std::to_string(idx[c]) +
-                                " but there are " + std::to_string(pool));
+        throw InvalidInputError("corner " + std::to_string(c) + " refers to " + what + " " +
+                                std::to_string(idx[c]) + " but there are " + std::to_string(pool));
   };
   check_pool(in_.texcoord_indices, in_.texcoords.size(), "texcoord");
   check_pool(in_.normal_indices, in_.normals.size(), "normal");

@@ -40,10 +40,10 @@ inline void advise_huge_pages(const void* p, std::size_t bytes) {
 #endif
 }
 
-constexpr std::size_t kMaxNamed = 8;        // offending elements named in one error message
-constexpr Index kReversed = 0x80000000u;    // corner flag: its edge runs from larger to smaller vertex
-constexpr Index kNoPartner = 0x7fffffffu;   // a corner whose edge has no twin corner: a boundary edge
-constexpr Index kNumbered = 0x80000000u;    // pairing slot already holds a half-edge index
+constexpr std::size_t kMaxNamed = 8;       // offending elements named in one error message
+constexpr Index kReversed = 0x80000000u;   // corner flag: its edge runs from larger to smaller vertex
+constexpr Index kNoPartner = 0x7fffffffu;  // a corner whose edge has no twin corner: a boundary edge
+constexpr Index kNumbered = 0x80000000u;   // pairing slot already holds a half-edge index
 
 //! The items joined with "; ", and how many of `total` were left out (an error message names
 //! at most kMaxNamed offending elements).
@@ -201,20 +201,20 @@ class MeshBuilder {
   BuildReport& rep_;
   const bool want_maps_;
 
-  std::vector<Vec3> positions_;        // after welding (empty: the input's are used)
-  std::vector<Index> weld_map_;        // input vertex -> welded vertex (empty: identity)
-  std::vector<Index> weld_first_;      // welded vertex -> first input vertex (empty: identity)
+  std::vector<Vec3> positions_;    // after welding (empty: the input's are used)
+  std::vector<Index> weld_map_;    // input vertex -> welded vertex (empty: identity)
+  std::vector<Index> weld_first_;  // welded vertex -> first input vertex (empty: identity)
   build_detail::Faces f_;
   // Per corner: first its partner corner (or kNoPartner), then, after number_edges(), its half-edge.
   build_detail::CornerArray corner_he_;
-  std::vector<Halfedge> vh_;           // vertex -> half-edge of its last corner (moved into the mesh)
-  std::vector<Index> boundary_hes_;    // boundary half-edges, found by fans_are_simple()
-  bool fans_checked_ = false;          // link() walked the fans already ...
-  bool fans_simple_ = false;           // ... and found one fan at every vertex
+  std::vector<Halfedge> vh_;         // vertex -> half-edge of its last corner (moved into the mesh)
+  std::vector<Index> boundary_hes_;  // boundary half-edges, found by fans_are_simple()
+  bool fans_checked_ = false;        // link() walked the fans already ...
+  bool fans_simple_ = false;         // ... and found one fan at every vertex
   Index n_edges_ = 0;
-  std::vector<Index> vertex_origin_;   // added vertex (from #V on) -> welded vertex it was split from
-  std::string problems_;               // strict-mode description of the defects found
-  std::vector<Index> bad_vertices_;    // strict-mode offending input vertices
+  std::vector<Index> vertex_origin_;  // added vertex (from #V on) -> welded vertex it was split from
+  std::string problems_;              // strict-mode description of the defects found
+  std::vector<Index> bad_vertices_;   // strict-mode offending input vertices
 };
 
 }  // namespace hedge

@@ -82,8 +82,10 @@ void MeshBuilder::link(SurfaceMesh& m) {
   // pair_fast(), or are set here on the general path (last corner wins, as there).
   const Index nv = n_vertices();
   auto& pos = m.positions_.vector();
-  if (positions_.empty()) pos.assign(in_.positions.begin(), in_.positions.end());
-  else pos.assign(positions_.begin(), positions_.end());
+  if (positions_.empty())
+    pos.assign(in_.positions.begin(), in_.positions.end());
+  else
+    pos.assign(positions_.begin(), positions_.end());
   const bool have_vh = !vh_.empty() || nv == 0;
   if (have_vh) m.v_halfedge_ = std::move(vh_);
   sized_vector(m.h_vertex_, 2 * std::size_t(n_edges_));
@@ -192,8 +194,10 @@ bool MeshBuilder::fans_are_simple(SurfaceMesh& m) {
   boundary_hes_.clear();
   std::size_t covered = 0;
   for (Index v = 0; v < nv; ++v) {
-    if (!vh[v].is_valid()) ++rep_.isolated_vertices;
-    else covered += walk_fan(nx, vh[v].idx(), vh[v], boundary_hes_);
+    if (!vh[v].is_valid())
+      ++rep_.isolated_vertices;
+    else
+      covered += walk_fan(nx, vh[v].idx(), vh[v], boundary_hes_);
   }
   return covered == f_.n_corners();
 }

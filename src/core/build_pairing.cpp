@@ -135,7 +135,7 @@ MeshBuilder::Paired MeshBuilder::pair_fast_impl(bool unchecked) {
       st = table.overflow(lo, hi, known);
       found = known ? ~Index(0) : 0;
     }
-    const Index s = *st;                    // 0 for a new edge
+    const Index s = *st;                   // 0 for a new edge
     bad |= found & ((s & 3u) ^ rev ^ 1u);  // must be unpaired, and of the other direction
     // A known edge becomes paired (s + 2, as it was unpaired), a new one gets its state; either
     // way the state shifted right is the corner's half-edge: 2e + 1, or 2 ne.

@@ -76,7 +76,8 @@ bool MeshBuilder::pair_corners(const EdgeGroups& groups, bool repair) {
       if (named.size() < kMaxNamed) {
         std::string what = k == 2 ? "two faces traverse the edge in the same direction"
                                   : std::to_string(k) + " faces share the edge";
-        named.push_back("edge " + std::to_string(input_vertex(b)) + "-" + std::to_string(input_vertex(a)) + ": " + what);
+        named.push_back("edge " + std::to_string(input_vertex(b)) + "-" + std::to_string(input_vertex(a)) +
+                        ": " + what);
         bad_vertices_.push_back(input_vertex(b));
         bad_vertices_.push_back(input_vertex(a));
       }

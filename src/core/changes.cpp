@@ -49,7 +49,8 @@ void ChangeLog::notify() {
   ids.reserve(subscribers_.size());
   for (const Subscriber& s : subscribers_) ids.push_back(s.id);
   for (SubscriptionId id : ids) {
-    auto it = std::find_if(subscribers_.begin(), subscribers_.end(), [&](const Subscriber& s) { return s.id == id; });
+    auto it = std::find_if(subscribers_.begin(), subscribers_.end(),
+                           [&](const Subscriber& s) { return s.id == id; });
     if (it == subscribers_.end() || !any(it->mask & events)) continue;
     Callback fn = it->fn;  // the subscriber may remove itself while running
     fn(events & it->mask);

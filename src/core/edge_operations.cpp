@@ -1,12 +1,11 @@
 // Local edits of edges: split_edge, collapse and flip. See include/hedge/core/operations.h for the
 // contract of each; the face edits are in face_operations.cpp.
-#include "hedge/core/operations.h"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
 
+#include "hedge/core/operations.h"
 #include "hedge/core/small_vector.h"
 #include "operations_internal.h"
 
@@ -46,8 +45,9 @@ struct EdgeSplit {
 
 // Properties of the elements split_edge created: v (the new vertex), g (v -> b), s1 and s2 (to
 // the tips; invalid if that side is no triangle), f1 and f2 (the new faces; likewise).
-[[gnu::noinline]] void carry_split_properties(Mesh& m, Edge e, const Vec3& point, const EdgeSplit& k, Vertex v,
-                                              Halfedge g, Halfedge s1, Halfedge s2, Face f1, Face f2) {
+[[gnu::noinline]] void carry_split_properties(Mesh& m, Edge e, const Vec3& point, const EdgeSplit& k,
+                                              Vertex v, Halfedge g, Halfedge s1, Halfedge s2, Face f1,
+                                              Face f2) {
   PropertyContainer& vprops = m.vertex_properties();
   PropertyContainer& hprops = m.halfedge_properties();
   // The weights serve properties other than the position (which is `point`): a mesh without any
@@ -87,8 +87,18 @@ struct EdgeSplit {
   const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
   const Halfedge g = m.halfedge(v), s1(g.idx() + 2), s2(g.idx() + 4);
   const Face f1 = m.face(g), f2(f1.idx() + 1);
-  const EdgeSplit k{h, t, m.next(g), m.next(t), m.next(s1), m.next(s2), m.to_vertex(t), m.to_vertex(g), m.face(h),
-                    m.face(Mesh::twin(g)), true, true};
+  const EdgeSplit k{h,
+                    t,
+                    m.next(g),
+                    m.next(t),
+                    m.next(s1),
+                    m.next(s2),
+                    m.to_vertex(t),
+                    m.to_vertex(g),
+                    m.face(h),
+                    m.face(Mesh::twin(g)),
+                    true,
+                    true};
   carry_split_properties(m, e, point, k, v, g, s1, s2, f1, f2);
 }
 
@@ -153,7 +163,8 @@ bool has_properties(const Mesh& m) {
   }
   m.set_halfedge(b, b_out == t ? gt : b_out);  // a store, not a branch on a likely cache miss
   m.set_halfedge(v, g);
-  if (has_properties(m)) [[unlikely]] carry_split_properties(m, e, p, v);
+  if (has_properties(m)) [[unlikely]]
+    carry_split_properties(m, e, p, v);
   mark_split(m, v);
   return v;
 }
@@ -168,8 +179,8 @@ bool has_properties(const Mesh& m) {
   const bool tri1 = fh.is_valid() && m.next(hnn) == h;
   const bool tri2 = ft.is_valid() && m.next(tnn) == t;
   // Read before any link changes: prev() walks them.
-  const EdgeSplit k{h, t, hn, tn, tri1 ? hnn : m.prev(h), tri2 ? tnn : m.prev(t), m.from_vertex(h), b, fh, ft,
-                    tri1, tri2};
+  const EdgeSplit k{h,  t,  hn,   tn,  tri1 ? hnn : m.prev(h), tri2 ? tnn : m.prev(t), m.from_vertex(h), b,
+                    fh, ft, tri1, tri2};
   const Vertex v = m.add_vertex(p);
   const Halfedge g = m.new_edge(v, b), gt = Mesh::twin(g);
   Halfedge s1, s2;
@@ -240,7 +251,9 @@ Vertex split_edge(SurfaceMesh& m, Edge e, const Vec3& point) {
 // ---------------------------------------------------------------------------------------------
 namespace {
 // True if corners a and b hold the same values in every corner property.
-bool same_corner(const Mesh& m, Halfedge a, Halfedge b) { return m.halfedge_properties().equal(a.idx(), b.idx()); }
+bool same_corner(const Mesh& m, Halfedge a, Halfedge b) {
+  return m.halfedge_properties().equal(a.idx(), b.idx());
+}
 
 // True if the edge of o (an interior edge) is a seam: its two faces hold different corner values at
 // either end. The corner of vertex x in face f is stored on the half-edge entering x in f.
@@ -303,7 +316,8 @@ const char* CollapseCorners::plan(const Mesh& m, Halfedge h) {
     const Halfedge c = Mesh::twin(x);  // enters to_vertex(h)
     if (m.face(c).is_valid()) {
       const std::size_t r = root(slot(m.face(c)));
-      if (!v1_corner_[r].is_valid()) v1_corner_[r] = c;
+      if (!v1_corner_[r].is_valid())
+        v1_corner_[r] = c;
       else if (!same_corner(m, v1_corner_[r], c))
         return "it would join the two sides of a seam at the surviving vertex";
     }
@@ -320,7 +334,8 @@ const char* CollapseCorners::plan(const Mesh& m, Halfedge h) {
     if (f.is_valid()) {
       const std::size_t r = root(slot(f));
       if (!v1_corner_[r].is_valid()) return "it would pull a seam vertex off its seam";
-      if (!v0_corner_[r].is_valid()) v0_corner_[r] = c;
+      if (!v0_corner_[r].is_valid())
+        v0_corner_[r] = c;
       else if (!same_corner(m, v0_corner_[r], c))
         return "it would shorten a seam that ends at the merged vertex";
       // A triangle on h vanishes; its corners are taken care of as it goes.
@@ -458,8 +473,10 @@ Vertex collapse(SurfaceMesh& m, Halfedge h) {
   if (on_boundary) m.adjust_outgoing_halfedge(v1);
   if (m.changes().active()) {
     // A triangle on h is deleted by now; a polygon on h lost a corner. Either way it is marked.
-    if (fl.is_valid()) m.mark_changed(fl, m.is_deleted(fl) ? ChangeEvent::faces_removed : ChangeEvent::faces_changed);
-    if (fr.is_valid()) m.mark_changed(fr, m.is_deleted(fr) ? ChangeEvent::faces_removed : ChangeEvent::faces_changed);
+    if (fl.is_valid())
+      m.mark_changed(fl, m.is_deleted(fl) ? ChangeEvent::faces_removed : ChangeEvent::faces_changed);
+    if (fr.is_valid())
+      m.mark_changed(fr, m.is_deleted(fr) ? ChangeEvent::faces_removed : ChangeEvent::faces_changed);
     m.mark_changed(v0, ChangeEvent::vertices_removed);
     mark_faces_around(m, v1, ChangeEvent::faces_changed);
     m.changes().notify();
@@ -538,6 +555,5 @@ Edge flip(SurfaceMesh& m, Edge e) {
   }
   return e;
 }
-
 
 }  // namespace hedge

@@ -17,8 +17,7 @@ std::string io_message(const std::string& path, std::uint64_t line, std::int64_t
 }
 }  // namespace
 
-IoError::IoError(std::string path, std::uint64_t line, std::int64_t byte_offset,
-                 const std::string& message)
+IoError::IoError(std::string path, std::uint64_t line, std::int64_t byte_offset, const std::string& message)
     : Error(io_message(path, line, byte_offset, message)),
       path_(std::move(path)),
       line_(line),

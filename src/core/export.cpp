@@ -1,9 +1,10 @@
 // to_indexed(): SurfaceMesh -> index buffers, with optional triangulation and winding flip.
+#include "hedge/core/export.h"
+
 #include <algorithm>
 #include <string>
 #include <unordered_map>
 
-#include "hedge/core/export.h"
 #include "hedge/core/triangulate.h"
 
 namespace hedge {
@@ -38,10 +39,13 @@ IndexedMesh to_indexed(const SurfaceMesh& mesh, const ExportOptions& opt, std::v
     out.positions.push_back(mesh.position(v));
   }
 
-  const auto uv = opt.corner_attributes ? mesh.get_halfedge_property<Vec2>("h:texcoord") : HalfedgeProperty<Vec2>();
-  const auto nrm = opt.corner_attributes ? mesh.get_halfedge_property<Vec3>("h:normal") : HalfedgeProperty<Vec3>();
+  const auto uv =
+      opt.corner_attributes ? mesh.get_halfedge_property<Vec2>("h:texcoord") : HalfedgeProperty<Vec2>();
+  const auto nrm =
+      opt.corner_attributes ? mesh.get_halfedge_property<Vec3>("h:normal") : HalfedgeProperty<Vec3>();
   Pool<Vec2> uv_pool(out.texcoords);
-  const auto col = opt.corner_attributes ? mesh.get_halfedge_property<Color>("h:color") : HalfedgeProperty<Color>();
+  const auto col =
+      opt.corner_attributes ? mesh.get_halfedge_property<Color>("h:color") : HalfedgeProperty<Color>();
   Pool<Vec3> nrm_pool(out.normals);
   Pool<Color> col_pool(out.colors);
 

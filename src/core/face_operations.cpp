@@ -1,13 +1,12 @@
 // Local edits of faces: split_face, cut_face, add_face, and the removals (remove_face,
 // remove_vertex, remove_faces). See include/hedge/core/operations.h for the contract of each; the
 // edge edits are in edge_operations.cpp.
-#include "hedge/core/operations.h"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
 
+#include "hedge/core/operations.h"
 #include "operations_internal.h"
 
 namespace hedge {
@@ -81,7 +80,8 @@ bool relink_vertex(Mesh& m, Vertex v, const std::vector<Halfedge>& out) {
     }
     if (owner != v) {
       m.set_vertex(Mesh::twin(o), owner);
-      if (m.face(o).is_valid()) m.mark_changed(m.face(o), ChangeEvent::faces_changed | ChangeEvent::vertices_added);
+      if (m.face(o).is_valid())
+        m.mark_changed(m.face(o), ChangeEvent::faces_changed | ChangeEvent::vertices_added);
     }
     const bool fan_ends = m.is_boundary(alive[(i + 1) % k]);
     if (fan_ends) m.set_next(Mesh::twin(o), alive[start]);

@@ -18,7 +18,8 @@ inline void mark_faces_around(Mesh& m, Vertex v, ChangeEvent events) {
 // The change-log marks of a split that made v: every face around v changed or is new.
 inline void mark_split(Mesh& m, Vertex v) {
   if (m.changes().active()) {  // nothing to mark or tell when nobody listens
-    mark_faces_around(m, v, ChangeEvent::faces_changed | ChangeEvent::faces_added | ChangeEvent::vertices_added);
+    mark_faces_around(m, v,
+                      ChangeEvent::faces_changed | ChangeEvent::faces_added | ChangeEvent::vertices_added);
     m.changes().notify();
   }
 }

@@ -1,11 +1,11 @@
 #include "hedge/core/surface_mesh.h"
 
-#include "hedge/error.h"
-
 #include <algorithm>
 #include <cstring>
 #include <type_traits>
 #include <utility>
+
+#include "hedge/error.h"
 
 namespace hedge {
 
@@ -226,7 +226,8 @@ void resize_for_rebuild(std::vector<T>& v, std::size_t n) {
 }
 }  // namespace
 
-SurfaceMesh::Connectivity SurfaceMesh::release_connectivity(std::size_t n_v, std::size_t n_e, std::size_t n_f) {
+SurfaceMesh::Connectivity SurfaceMesh::release_connectivity(std::size_t n_v, std::size_t n_e,
+                                                            std::size_t n_f) {
   Connectivity old;
   old.h_vertex.swap(h_vertex_);
   old.h_next.swap(h_next_);
@@ -347,8 +348,9 @@ GarbageMaps SurfaceMesh::renumber(std::vector<Index> new_vertex, std::vector<Ind
   auto check = [](const std::vector<Index>& map, const std::vector<bool>& deleted, std::size_t slots,
                   std::size_t live, const char* what) {
     if (map.size() != slots)
-      throw InvalidInputError(std::string("renumber: the ") + what + " map has " + std::to_string(map.size()) +
-                              " entries for " + std::to_string(slots) + " slots");
+      throw InvalidInputError(std::string("renumber: the ") + what + " map has " +
+                              std::to_string(map.size()) + " entries for " + std::to_string(slots) +
+                              " slots");
     std::vector<bool> taken(live, false);
     for (std::size_t i = 0; i < slots; ++i) {
       if (deleted[i]) {
@@ -358,8 +360,9 @@ GarbageMaps SurfaceMesh::renumber(std::vector<Index> new_vertex, std::vector<Ind
         continue;
       }
       if (map[i] >= live || taken[map[i]])
-        throw InvalidInputError(std::string("renumber: the ") + what + " map is not a one-to-one numbering of the " +
-                                std::to_string(live) + " live elements (at " + std::to_string(i) + ")");
+        throw InvalidInputError(std::string("renumber: the ") + what +
+                                " map is not a one-to-one numbering of the " + std::to_string(live) +
+                                " live elements (at " + std::to_string(i) + ")");
       taken[map[i]] = true;
     }
   };
@@ -402,8 +405,8 @@ std::size_t SurfaceMesh::memory_bytes() const {
   auto bits = [](const std::vector<bool>& b) { return (b.capacity() + 7) / 8; };
   return h_vertex_.capacity() * sizeof(Vertex) + h_next_.capacity() * sizeof(Halfedge) +
          h_face_.capacity() * sizeof(Face) + v_halfedge_.capacity() * sizeof(Halfedge) +
-         f_halfedge_.capacity() * sizeof(Halfedge) + bits(v_deleted_) + bits(e_deleted_) +
-         bits(f_deleted_) + vprops_.bytes() + hprops_.bytes() + eprops_.bytes() + fprops_.bytes();
+         f_halfedge_.capacity() * sizeof(Halfedge) + bits(v_deleted_) + bits(e_deleted_) + bits(f_deleted_) +
+         vprops_.bytes() + hprops_.bytes() + eprops_.bytes() + fprops_.bytes();
 }
 
 }  // namespace hedge

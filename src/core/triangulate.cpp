@@ -34,7 +34,10 @@ void triangulate_polygon(std::span<const Vec3d> p, std::vector<std::array<Index,
       bool inside = false;
       for (Index r : ring) {
         if (r == a || r == b || r == c) continue;
-        if (cross2(a, b, r) >= 0 && cross2(b, c, r) >= 0 && cross2(c, a, r) >= 0) { inside = true; break; }
+        if (cross2(a, b, r) >= 0 && cross2(b, c, r) >= 0 && cross2(c, a, r) >= 0) {
+          inside = true;
+          break;
+        }
       }
       if (inside) continue;
       tris.push_back({a, b, c});
@@ -45,6 +48,5 @@ void triangulate_polygon(std::span<const Vec3d> p, std::vector<std::array<Index,
   }
   for (std::size_t i = 1; i + 1 < ring.size(); ++i) tris.push_back({ring[0], ring[i], ring[i + 1]});
 }
-
 
 }  // namespace hedge

@@ -15,8 +15,10 @@ constexpr std::size_t kMaxProblems = 1000;
 class Report {
  public:
   void add(std::string s) {
-    if (lines_.size() < kMaxProblems) lines_.push_back(std::move(s));
-    else ++dropped_;
+    if (lines_.size() < kMaxProblems)
+      lines_.push_back(std::move(s));
+    else
+      ++dropped_;
   }
   std::vector<std::string> finish() {
     if (dropped_ > 0) lines_.push_back("... and " + std::to_string(dropped_) + " more problems");
@@ -57,7 +59,9 @@ std::vector<std::string> SurfaceMesh::validate() const {
   if (v_deleted_.size() < nv || f_deleted_.size() < nf)
     r.add("deletion flags and element arrays have inconsistent sizes");
   if (!r.empty()) return r.finish();
-  auto count_set = [](const std::vector<bool>& b) { return static_cast<std::size_t>(std::count(b.begin(), b.end(), true)); };
+  auto count_set = [](const std::vector<bool>& b) {
+    return static_cast<std::size_t>(std::count(b.begin(), b.end(), true));
+  };
   if (count_set(v_deleted_) != deleted_vertices_ || count_set(e_deleted_) != deleted_edges_ ||
       count_set(f_deleted_) != deleted_faces_)
     r.add("cached deleted-element counts disagree with the deletion flags");
@@ -69,18 +73,36 @@ std::vector<std::string> SurfaceMesh::validate() const {
   std::size_t bad_refs = 0;
   for (Halfedge h : halfedges()) {
     bool ok = true;
-    if (!is_live(to_vertex(h))) { r.add(str(h) + " points to dead or invalid " + str(to_vertex(h))); ok = false; }
-    if (!is_live(next(h))) { r.add(str(h) + " has dead or invalid next " + str(next(h))); ok = false; }
-    if (face(h).is_valid() && !is_live(face(h))) { r.add(str(h) + " lies in dead or invalid " + str(face(h))); ok = false; }
-    if (!ok) { ++bad_refs; continue; }
+    if (!is_live(to_vertex(h))) {
+      r.add(str(h) + " points to dead or invalid " + str(to_vertex(h)));
+      ok = false;
+    }
+    if (!is_live(next(h))) {
+      r.add(str(h) + " has dead or invalid next " + str(next(h)));
+      ok = false;
+    }
+    if (face(h).is_valid() && !is_live(face(h))) {
+      r.add(str(h) + " lies in dead or invalid " + str(face(h)));
+      ok = false;
+    }
+    if (!ok) {
+      ++bad_refs;
+      continue;
+    }
     ++predecessors[next(h).idx()];
   }
   for (Vertex v : vertices()) {
     Halfedge h = halfedge(v);
-    if (h.is_valid() && !is_live(h)) { r.add(str(v) + " has dead or invalid " + str(h)); ++bad_refs; }
+    if (h.is_valid() && !is_live(h)) {
+      r.add(str(v) + " has dead or invalid " + str(h));
+      ++bad_refs;
+    }
   }
   for (Face f : faces()) {
-    if (!is_live(halfedge(f))) { r.add(str(f) + " has dead or invalid " + str(halfedge(f))); ++bad_refs; }
+    if (!is_live(halfedge(f))) {
+      r.add(str(f) + " has dead or invalid " + str(halfedge(f)));
+      ++bad_refs;
+    }
   }
   if (bad_refs > 0) return r.finish();
 
@@ -88,19 +110,25 @@ std::vector<std::string> SurfaceMesh::validate() const {
   for (Halfedge h : halfedges()) {
     if (to_vertex(h) == from_vertex(h)) r.add(str(h) + " is a loop at " + str(to_vertex(h)));
     if (predecessors[h.idx()] != 1)
-      r.add(str(h) + " is the next of " + std::to_string(predecessors[h.idx()]) + " half-edges, expected 1 (next/prev not inverse)");
+      r.add(str(h) + " is the next of " + std::to_string(predecessors[h.idx()]) +
+            " half-edges, expected 1 (next/prev not inverse)");
     Halfedge n = next(h);
     if (from_vertex(n) != to_vertex(h))
-      r.add(str(h) + " ends at " + str(to_vertex(h)) + " but its next " + str(n) + " starts at " + str(from_vertex(n)));
+      r.add(str(h) + " ends at " + str(to_vertex(h)) + " but its next " + str(n) + " starts at " +
+            str(from_vertex(n)));
     if (face(n) != face(h)) r.add(str(h) + " and its next " + str(n) + " lie in different faces");
-    if (is_boundary(h) && is_boundary(twin(h))) r.add(str(h) + " and its twin are both boundary: a dangling edge");
+    if (is_boundary(h) && is_boundary(twin(h)))
+      r.add(str(h) + " and its twin are both boundary: a dangling edge");
   }
   if (!r.empty()) return r.finish();
 
   // Face cycles: closed (guaranteed now that next is a permutation), each holds its face, >= 3 sides.
   for (Face f : faces()) {
     Halfedge h0 = halfedge(f);
-    if (face(h0) != f) { r.add(str(f) + ": its " + str(h0) + " belongs to " + str(face(h0))); continue; }
+    if (face(h0) != f) {
+      r.add(str(f) + ": its " + str(h0) + " belongs to " + str(face(h0)));
+      continue;
+    }
     std::size_t n = 0;
     for (Halfedge h = h0; n <= nh; h = next(h)) {
       ++n;
@@ -131,10 +159,15 @@ std::vector<std::string> SurfaceMesh::validate() const {
   for (Vertex v : vertices()) {
     Halfedge h = halfedge(v);
     if (!h.is_valid()) {
-      if (outgoing[v.idx()] > 0) r.add(str(v) + " is marked isolated but has " + std::to_string(outgoing[v.idx()]) + " outgoing half-edges");
+      if (outgoing[v.idx()] > 0)
+        r.add(str(v) + " is marked isolated but has " + std::to_string(outgoing[v.idx()]) +
+              " outgoing half-edges");
       continue;
     }
-    if (from_vertex(h) != v) { r.add(str(v) + ": its " + str(h) + " does not start there"); continue; }
+    if (from_vertex(h) != v) {
+      r.add(str(v) + ": its " + str(h) + " does not start there");
+      continue;
+    }
     if (has_boundary_out[v.idx()] && !is_boundary(h))
       r.add(str(v) + " is on a boundary but its half-edge " + str(h) + " is not a boundary one");
     std::size_t fan = 0;
@@ -157,10 +190,18 @@ std::vector<std::string> SurfaceMesh::validate() const {
   if (r.empty()) {
     DisjointSets ds(nv);
     for (Edge e : edges()) ds.unite(vertex(e, 0).idx(), vertex(e, 1).idx());
-    struct Tally { long long chi = 0; long long loops = 0; bool used = false; };
+    struct Tally {
+      long long chi = 0;
+      long long loops = 0;
+      bool used = false;
+    };
     std::vector<Tally> comp(nv);
     for (Vertex v : vertices())
-      if (halfedge(v).is_valid()) { auto& t = comp[ds.find(v.idx())]; t.chi += 1; t.used = true; }
+      if (halfedge(v).is_valid()) {
+        auto& t = comp[ds.find(v.idx())];
+        t.chi += 1;
+        t.used = true;
+      }
     for (Edge e : edges()) comp[ds.find(vertex(e, 0).idx())].chi -= 1;
     for (Face f : faces()) comp[ds.find(to_vertex(halfedge(f)).idx())].chi += 1;
     for (Halfedge h : boundary_loops()) comp[ds.find(to_vertex(h).idx())].loops += 1;
@@ -169,8 +210,9 @@ std::vector<std::string> SurfaceMesh::validate() const {
       if (!t.used) continue;
       long long s = t.chi + t.loops;
       if (s > 2 || (s % 2) != 0)
-        r.add("component of " + str(Vertex(i)) + " has Euler characteristic " + std::to_string(t.chi) + " with " +
-              std::to_string(t.loops) + " boundary loops: not an orientable surface (chi + loops must be even and <= 2)");
+        r.add("component of " + str(Vertex(i)) + " has Euler characteristic " + std::to_string(t.chi) +
+              " with " + std::to_string(t.loops) +
+              " boundary loops: not an orientable surface (chi + loops must be even and <= 2)");
     }
   }
   return r.finish();

@@ -17,9 +17,9 @@
 #include <string_view>
 #include <utility>
 
+#include "fd.h"
 #include "hedge/core/export.h"
 #include "hedge/io/io.h"
-#include "fd.h"
 #include "parse_util.h"
 
 namespace hedge {
@@ -35,7 +35,6 @@ std::string lower(std::string s) {
 }
 
 std::string errno_text(int err) { return std::strerror(err); }
-
 
 }  // namespace
 
@@ -436,7 +435,8 @@ void write_mesh(const SurfaceMesh& mesh, const std::string& path, const WriteOpt
   // STL stores triangles only.
   if (format == FileFormat::stl) export_options.triangulation = Triangulation::fan;
   // glTF stores triangles only; ear clipping keeps concave polygons inside their outline.
-  if (format == FileFormat::gltf || format == FileFormat::glb) export_options.triangulation = Triangulation::ear;
+  if (format == FileFormat::gltf || format == FileFormat::glb)
+    export_options.triangulation = Triangulation::ear;
   write_file_atomic(path, write_indexed(to_indexed(mesh, export_options), format, options));
 }
 

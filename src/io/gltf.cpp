@@ -113,7 +113,8 @@ class Reader {
       for (const int node : model_.scenes[static_cast<std::size_t>(scene)].nodes)
         visit(node, seen, "scene " + std::to_string(scene));
     } else {
-      for (std::size_t m = 0; m < model_.meshes.size(); ++m) place(static_cast<int>(m), kIdentity, "the file");
+      for (std::size_t m = 0; m < model_.meshes.size(); ++m)
+        place(static_cast<int>(m), kIdentity, "the file");
     }
     check_budget();
     for (const Placement& p : placements_) add_mesh(p.mesh, p.world);
@@ -466,7 +467,8 @@ class Reader {
       // RGB colours are opaque.
       for (std::size_t i = 0; i < vertices; ++i)
         out.colors[i] = {static_cast<float>(col[k * i]), static_cast<float>(col[k * i + 1]),
-                         static_cast<float>(col[k * i + 2]), k == 4 ? static_cast<float>(col[k * i + 3]) : 1.0f};
+                         static_cast<float>(col[k * i + 2]),
+                         k == 4 ? static_cast<float>(col[k * i + 3]) : 1.0f};
     }
 
     // The primitive's vertex sequence, then its triangles.
@@ -799,11 +801,12 @@ IndexedMesh read_gltf(std::string_view data, const std::string& name, const Read
   bool ok = false;
   try {
     if (scan.binary)
-      ok = loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(data.data()),
+      ok = loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                       reinterpret_cast<const unsigned char*>(data.data()),
                                        static_cast<unsigned int>(data.size()), files.base_dir());
     else
-      ok = loader.LoadASCIIFromString(&model, &err, &warn, data.data(), static_cast<unsigned int>(data.size()),
-                                      files.base_dir());
+      ok = loader.LoadASCIIFromString(&model, &err, &warn, data.data(),
+                                      static_cast<unsigned int>(data.size()), files.base_dir());
   } catch (const std::bad_alloc&) {
     throw;
   } catch (const std::exception& e) {

@@ -7,15 +7,14 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <limits>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "fd.h"
 #include "hedge/error.h"
@@ -39,10 +38,9 @@ constexpr std::uint64_t kCostPerValue = 320;
 // glTF properties whose values are indices, offsets, counts or enums: none may be negative.
 bool is_unsigned_property(std::string_view key) {
   static constexpr std::string_view kKeys[] = {
-      "bufferView", "byteOffset", "byteLength", "byteStride", "componentType", "count",    "indices",
-      "mode",       "material",   "buffer",     "mesh",       "camera",        "skin",     "node",
-      "sampler",    "source",     "texCoord",   "index",      "scene",         "skeleton", "input",
-      "output",     "target"};
+      "bufferView", "byteOffset", "byteLength", "byteStride", "componentType", "count",  "indices", "mode",
+      "material",   "buffer",     "mesh",       "camera",     "skin",          "node",   "sampler", "source",
+      "texCoord",   "index",      "scene",      "skeleton",   "input",         "output", "target"};
   for (std::string_view k : kKeys)
     if (k == key) return true;
   return false;
@@ -55,9 +53,12 @@ bool is_index_array(std::string_view key) { return key == "children" || key == "
 // the reader names them ("mesh 0 primitive 1").
 std::string_view singular(std::string_view key, std::size_t depth) {
   static constexpr std::pair<std::string_view, std::string_view> kTop[] = {
-      {"accessors", "accessor"}, {"bufferViews", "bufferView"}, {"buffers", "buffer"},     {"meshes", "mesh"},
-      {"nodes", "node"},         {"scenes", "scene"},           {"materials", "material"}, {"textures", "texture"},
-      {"images", "image"},       {"samplers", "sampler"},       {"skins", "skin"},         {"cameras", "camera"},
+      {"accessors", "accessor"},  {"bufferViews", "bufferView"},
+      {"buffers", "buffer"},      {"meshes", "mesh"},
+      {"nodes", "node"},          {"scenes", "scene"},
+      {"materials", "material"},  {"textures", "texture"},
+      {"images", "image"},        {"samplers", "sampler"},
+      {"skins", "skin"},          {"cameras", "camera"},
       {"animations", "animation"}};
   if (depth == 0) {
     for (const auto& [plural, one] : kTop)
@@ -68,7 +69,7 @@ std::string_view singular(std::string_view key, std::size_t depth) {
 }
 
 constexpr std::string_view kDataPrefixes[] = {"data:application/octet-stream;base64,",
-                                               "data:application/gltf-buffer;base64,"};
+                                              "data:application/gltf-buffer;base64,"};
 
 bool starts_with_ignoring_case(std::string_view s, std::string_view prefix) {
   if (s.size() < prefix.size()) return false;
@@ -87,7 +88,8 @@ std::int64_t base64_size(std::string_view text) {
   while (n > 0 && text[n - 1] == '=' && padding < 2) --n, ++padding;
   for (std::size_t i = 0; i < n; ++i) {
     const char c = text[i];
-    const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '+' || c == '/';
+    const bool ok =
+        (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '+' || c == '/';
     if (!ok) return -1;
   }
   if ((n + padding) % 4 == 1 || (padding > 0 && (n + padding) % 4 != 0)) return -1;
@@ -135,7 +137,8 @@ class Scanner {
   }
   bool start_array(std::size_t) {
     open(true);
-    if (frames_.size() == 2 && path_is_buffer()) scan_.buffers.clear();  // a repeated key: the last one counts
+    if (frames_.size() == 2 && path_is_buffer())
+      scan_.buffers.clear();  // a repeated key: the last one counts
     cost_ += kCostPerArray;
     return true;
   }
@@ -149,7 +152,8 @@ class Scanner {
     // nlohmann's message names the line, the column and what it expected; its exception id is
     // left out.
     std::string what = e.what();
-    if (const std::size_t close = what.find("] "); what.rfind("[json.exception", 0) == 0 && close != std::string::npos)
+    if (const std::size_t close = what.find("] ");
+        what.rfind("[json.exception", 0) == 0 && close != std::string::npos)
       what = what.substr(close + 2);
     throw IoError(name_, 0, -1, "malformed glTF JSON: " + what);
   }
@@ -159,9 +163,9 @@ class Scanner {
  private:
   struct Frame {
     bool array = false;
-    bool opaque = false;  // inside extras or extensions: anything goes
-    std::size_t next = 0; // arrays: the number of elements seen
-    std::string key;      // objects: the current member
+    bool opaque = false;   // inside extras or extensions: anything goes
+    std::size_t next = 0;  // arrays: the number of elements seen
+    std::string key;       // objects: the current member
   };
 
   // Every value, and every nested container, takes the next slot of an enclosing array.
@@ -178,9 +182,10 @@ class Scanner {
       throw IoError(name_, 0, -1,
                     "malformed glTF: JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels (" +
                         where() + ")");
-    const bool opaque = !frames_.empty() && (frames_.back().opaque || (!frames_.back().array &&
-                                                                         (frames_.back().key == "extras" ||
-                                                                          frames_.back().key == "extensions")));
+    const bool opaque =
+        !frames_.empty() &&
+        (frames_.back().opaque ||
+         (!frames_.back().array && (frames_.back().key == "extras" || frames_.back().key == "extensions")));
     place();
     frames_.push_back({array, opaque, 0, {}});
   }
@@ -189,7 +194,9 @@ class Scanner {
     return true;
   }
 
-  bool key_is(std::string_view k) const { return !frames_.empty() && !frames_.back().array && frames_.back().key == k; }
+  bool key_is(std::string_view k) const {
+    return !frames_.empty() && !frames_.back().array && frames_.back().key == k;
+  }
   // The current value is a member of buffers[i] (frames: root, buffers array, buffer object).
   bool path_is_buffer() const {
     return frames_.size() >= 2 && !frames_[0].array && frames_[0].key == "buffers" && frames_[1].array;
@@ -221,7 +228,8 @@ class Scanner {
 
   static std::string quote_prefix(std::string_view uri) {
     const std::size_t comma = uri.find(',');
-    std::string head(uri.substr(0, std::min<std::size_t>(comma == std::string_view::npos ? uri.size() : comma, 48)));
+    std::string head(
+        uri.substr(0, std::min<std::size_t>(comma == std::string_view::npos ? uri.size() : comma, 48)));
     for (char& c : head)
       if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
     return "'" + head + ",...'";
@@ -230,9 +238,10 @@ class Scanner {
   void negative(const std::string& text) {
     if (frames_.empty() || frames_.back().opaque) return;
     const Frame& f = frames_.back();
-    const bool checked = f.array ? frames_.size() >= 2 && is_index_array(frames_[frames_.size() - 2].key)
-                                 : is_unsigned_property(f.key) ||
-                                       (frames_.size() >= 2 && frames_[frames_.size() - 2].key == "attributes");
+    const bool checked = f.array
+                             ? frames_.size() >= 2 && is_index_array(frames_[frames_.size() - 2].key)
+                             : is_unsigned_property(f.key) ||
+                                   (frames_.size() >= 2 && frames_[frames_.size() - 2].key == "attributes");
     if (checked) throw IoError(name_, 0, -1, where() + " is " + text + "; it must be 0 or more");
   }
 
@@ -349,7 +358,6 @@ std::string real_path(const std::string& path) {
   return resolved ? std::string(resolved.get()) : std::string();
 }
 
-
 }  // namespace
 
 std::string over_budget(const std::string& what, double cost, std::uint64_t budget) {
@@ -365,7 +373,8 @@ GltfScan scan_gltf(std::string_view data, const std::string& name) {
   if (data.size() >= 4 && data.substr(0, 4) == "glTF") {
     // The GLB header and the JSON chunk's header; tinygltf checks the rest of the framing.
     scan.binary = true;
-    if (data.size() < 20) throw IoError(name, 0, -1, "malformed glTF binary: shorter than its 20-byte header");
+    if (data.size() < 20)
+      throw IoError(name, 0, -1, "malformed glTF binary: shorter than its 20-byte header");
     const std::uint64_t json_length = le32(data.data() + 12);
     if (le32(data.data() + 16) != 0x4E4F534Au)
       throw IoError(name, 0, 16, "malformed glTF binary: the first chunk is not JSON");
@@ -412,15 +421,16 @@ GltfBufferFiles::GltfBufferFiles(const GltfScan& scan, const std::string& name, 
     const std::string resolved = real_path(root + "/" + relative);
     const std::string inside = root == "/" ? root : root + "/";
     struct stat st {};
-    if (resolved.empty() || resolved.compare(0, inside.size(), inside) != 0 || ::stat(resolved.c_str(), &st) != 0 ||
-        !S_ISREG(st.st_mode))
+    if (resolved.empty() || resolved.compare(0, inside.size(), inside) != 0 ||
+        ::stat(resolved.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
       throw IoError(name, 0, -1,
                     at + "uri '" + b.uri +
                         "' does not name a regular file inside the .gltf's folder (external buffers are read "
                         "only from there and below)");
     if (static_cast<std::uint64_t>(st.st_size) != b.byte_length)
-      throw IoError(name, 0, -1,
-                    at + "file '" + b.uri + "' is not the buffer's byteLength of " + str(b.byte_length) + " bytes");
+      throw IoError(
+          name, 0, -1,
+          at + "file '" + b.uri + "' is not the buffer's byteLength of " + str(b.byte_length) + " bytes");
     const std::string key = tinygltf_path(base_dir_, for_tinygltf);
     files_[key] = File{resolved, st.st_dev, st.st_ino, b.byte_length};
     bytes_ += b.byte_length;
@@ -433,7 +443,8 @@ bool GltfBufferFiles::exists(const std::string& path, void* self) {
 
 std::string GltfBufferFiles::expand(const std::string& path, void*) { return path; }
 
-bool GltfBufferFiles::read(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* self) {
+bool GltfBufferFiles::read(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                           void* self) {
   const auto& files = static_cast<GltfBufferFiles*>(self)->files_;
   const auto it = files.find(path);
   auto fail = [&](const std::string& why) {
@@ -468,8 +479,9 @@ std::uint64_t read_budget(const ReadOptions& options, std::uint64_t input_bytes)
   if (options.max_memory != 0) return options.max_memory;
   constexpr std::uint64_t kFactor = 64;
   const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max();
-  return input_bytes > (limit - kDefaultReadMemoryFloor) / kFactor ? limit
-                                                                     : kFactor * input_bytes + kDefaultReadMemoryFloor;
+  return input_bytes > (limit - kDefaultReadMemoryFloor) / kFactor
+             ? limit
+             : kFactor * input_bytes + kDefaultReadMemoryFloor;
 }
 
 }  // namespace hedge

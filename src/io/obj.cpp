@@ -229,7 +229,9 @@ class ObjReader {
     }
     if (corners == 0) fail("expected a vertex index after 'f', got " + describe_token(p_, end_));
     if (corners > std::numeric_limits<std::uint32_t>::max()) fail("face has too many corners");
-    if (corners < 3) mesh_.warnings.push_back({name_, line_, -1, detail::short_face_message(mesh_.face_sizes.size(), corners)});
+    if (corners < 3)
+      mesh_.warnings.push_back(
+          {name_, line_, -1, detail::short_face_message(mesh_.face_sizes.size(), corners)});
     mesh_.face_sizes.push_back(static_cast<std::uint32_t>(corners));
     skip_line();
   }

@@ -267,8 +267,8 @@ struct TextCursor {
 
 //! The warning for a face of fewer than 3 corners: a file cut in the middle of a face line leaves one.
 inline std::string short_face_message(std::uint64_t face, std::uint64_t corners) {
-  return "face " + std::to_string(face) + " has " + std::to_string(corners) + (corners == 1 ? " corner" : " corners") +
-         "; a face needs at least 3 (the file may be truncated)";
+  return "face " + std::to_string(face) + " has " + std::to_string(corners) +
+         (corners == 1 ? " corner" : " corners") + "; a face needs at least 3 (the file may be truncated)";
 }
 
 //! Replaces face_sizes by the empty "all triangles" form when every face is a triangle.

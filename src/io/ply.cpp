@@ -165,7 +165,9 @@ class BinarySource {
   [[noreturn]] void fail(const std::string& message, Location at) const {
     throw IoError(name_, 0, at.offset, message);
   }
-  ReadWarning warning(const std::string& message, Location at) const { return {name_, 0, at.offset, message}; }
+  ReadWarning warning(const std::string& message, Location at) const {
+    return {name_, 0, at.offset, message};
+  }
   std::uint64_t bytes_left() const { return static_cast<std::uint64_t>(end_ - p_); }
 
   double real(Type t) {
@@ -240,7 +242,9 @@ class AsciiSource {
   [[noreturn]] void fail(const std::string& message, Location at) const {
     throw IoError(in_.name, at.line, -1, message);
   }
-  ReadWarning warning(const std::string& message, Location at) const { return {in_.name, at.line, -1, message}; }
+  ReadWarning warning(const std::string& message, Location at) const {
+    return {in_.name, at.line, -1, message};
+  }
   std::uint64_t bytes_left() const { return in_.bytes_left(); }
 
   double real(Type t) {
@@ -475,7 +479,8 @@ class BodyReader {
             const Location at = src_.where();
             mesh_.indices.push_back(check_index(src_.integer(lp.type), face_number_, at));
           }
-          if (n < 3) mesh_.warnings.push_back(src_.warning(detail::short_face_message(face_number_, n), record_at));
+          if (n < 3)
+            mesh_.warnings.push_back(src_.warning(detail::short_face_message(face_number_, n), record_at));
           mesh_.face_sizes.push_back(static_cast<std::uint32_t>(n));
           ++face_number_;
         }

@@ -31,7 +31,8 @@ void check_finite(std::span<const T> s, const char* name, Finite&& ok) {
 }
 }  // namespace
 
-SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptions& options, BuildReport* report) {
+SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptions& options,
+                             BuildReport* report) {
   const std::size_t n = view.positions.size();
   check_stream(view.normals, n, "normals");
   check_stream(view.texcoords, n, "texcoords");
@@ -41,9 +42,9 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
                             " indices is not a whole number of triangles");
   for (std::size_t i = 0; i < view.indices.size(); ++i)
     if (view.indices[i] >= n)
-      throw InvalidInputError("engine mesh: index " + std::to_string(i) + " (triangle " + std::to_string(i / 3) +
-                              ") is " + std::to_string(view.indices[i]) + ", but there are " +
-                              std::to_string(n) + " vertices");
+      throw InvalidInputError("engine mesh: index " + std::to_string(i) + " (triangle " +
+                              std::to_string(i / 3) + ") is " + std::to_string(view.indices[i]) +
+                              ", but there are " + std::to_string(n) + " vertices");
   check_finite(view.normals, "normal", [](const Vec3& v) { return is_finite(v); });
   check_finite(view.texcoords, "texcoord", [](const Vec2& v) { return is_finite(v); });
   check_finite(view.colors, "color", [](const Color& c) { return finite(c); });
@@ -57,7 +58,8 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
     for (Vec3& p : in.positions) p.x = -p.x;
   in.indices.assign(view.indices.begin(), view.indices.end());
   if (options.winding == Winding::cw)
-    for (std::size_t t = 0; t + 2 < in.indices.size(); t += 3) std::swap(in.indices[t + 1], in.indices[t + 2]);
+    for (std::size_t t = 0; t + 2 < in.indices.size(); t += 3)
+      std::swap(in.indices[t + 1], in.indices[t + 2]);
   in.texcoords.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     in.texcoords[i] = {static_cast<float>(i & 0xffffu), static_cast<float>(i >> 16)};

@@ -85,7 +85,8 @@ void RenderSync::attach_sources() {
   v_color_ = {};
   computed_normals_ = false;
   follow_normals_ = false;
-  const bool has_normal_attr = m.get_halfedge_property<Vec3>("h:normal") || m.get_vertex_property<Vec3>("v:normal");
+  const bool has_normal_attr =
+      m.get_halfedge_property<Vec3>("h:normal") || m.get_vertex_property<Vec3>("v:normal");
   NormalSource ns = options_.normals;
   if (ns == NormalSource::automatic) {
     follow_normals_ = has_normal_attr;
@@ -177,17 +178,22 @@ void RenderSync::read_vertex(Index rv, float* out) const {
   std::uint32_t at = 0;
   for (int s = 0; s < 4; ++s) {
     if (!stream_present(s)) continue;
-    std::memcpy(out + at, streams_[s].data() + std::size_t(rv) * kStreamWidth[s], kStreamWidth[s] * sizeof(float));
+    std::memcpy(out + at, streams_[s].data() + std::size_t(rv) * kStreamWidth[s],
+                kStreamWidth[s] * sizeof(float));
     at += kStreamWidth[s];
   }
 }
 
 bool RenderSync::stream_present(int s) const {
   switch (s) {
-    case 0: return true;
-    case 1: return layout_.normal >= 0;
-    case 2: return layout_.texcoord >= 0;
-    default: return layout_.color >= 0;
+    case 0:
+      return true;
+    case 1:
+      return layout_.normal >= 0;
+    case 2:
+      return layout_.texcoord >= 0;
+    default:
+      return layout_.color >= 0;
   }
 }
 
@@ -214,7 +220,8 @@ void RenderSync::store_vertex(Index rv, const float* data) {
     std::uint32_t at = 0;
     for (int s = 0; s < 4; ++s) {
       if (!stream_present(s)) continue;
-      std::memcpy(streams_[s].data() + std::size_t(rv) * kStreamWidth[s], data + at, kStreamWidth[s] * sizeof(float));
+      std::memcpy(streams_[s].data() + std::size_t(rv) * kStreamWidth[s], data + at,
+                  kStreamWidth[s] * sizeof(float));
       at += kStreamWidth[s];
     }
   }
@@ -348,12 +355,15 @@ void RenderSync::sync_face(Face f) {
   new_indices_.clear();
   for (const auto& t : tris_) {
     const Index a = corner_rvs_[t[0]], b = corner_rvs_[t[1]], c = corner_rvs_[t[2]];
-    if (options_.winding == Winding::ccw) new_indices_.insert(new_indices_.end(), {a, b, c});
-    else new_indices_.insert(new_indices_.end(), {a, c, b});
+    if (options_.winding == Winding::ccw)
+      new_indices_.insert(new_indices_.end(), {a, b, c});
+    else
+      new_indices_.insert(new_indices_.end(), {a, c, b});
   }
   SlotRange& s = face_slots_[f.idx()];
   const bool same_slots = s.count == count;
-  if (same_slots && std::equal(new_indices_.begin(), new_indices_.end(), indices_.begin() + 3 * std::size_t(s.first)))
+  if (same_slots &&
+      std::equal(new_indices_.begin(), new_indices_.end(), indices_.begin() + 3 * std::size_t(s.first)))
     return;  // nothing changed (a render vertex made for a corner is then already in use)
   // New references first, so that a render vertex kept by the face is not freed on the way.
   for (Index rv : new_indices_) ++rv_refs_[rv];
@@ -418,7 +428,8 @@ void RenderSync::follow_normal(Vertex w) {
   std::size_t i = 0;
   for (Halfedge o : m.halfedges(w)) {
     const Halfedge c = SurfaceMesh::twin(o);
-    if (!m.is_boundary(c)) h_normal_[c] = to_float(normalize(normal_groups_[normal_corner_group_[i++]].second));
+    if (!m.is_boundary(c))
+      h_normal_[c] = to_float(normalize(normal_groups_[normal_corner_group_[i++]].second));
   }
 }
 
@@ -512,7 +523,8 @@ void RenderSync::report_full() {
   result_ = {};
   result_.full = true;
   result_.resized = true;
-  if (!rv_vertex_.empty()) result_.vertex_ranges.push_back({0, static_cast<std::uint32_t>(rv_vertex_.size())});
+  if (!rv_vertex_.empty())
+    result_.vertex_ranges.push_back({0, static_cast<std::uint32_t>(rv_vertex_.size())});
   if (!indices_.empty()) result_.index_ranges.push_back({0, static_cast<std::uint32_t>(indices_.size())});
   result_.vertices_synced = rv_vertex_.size();
   result_.vertex_bytes = rv_vertex_.size() * layout_.stride * sizeof(float);
@@ -591,12 +603,15 @@ void RenderSync::sync_changes() {
 
 void RenderSync::finish_result() {
   std::sort(written_vertices_.begin(), written_vertices_.end());
-  written_vertices_.erase(std::unique(written_vertices_.begin(), written_vertices_.end()), written_vertices_.end());
+  written_vertices_.erase(std::unique(written_vertices_.begin(), written_vertices_.end()),
+                          written_vertices_.end());
   result_.vertices_synced = written_vertices_.size();
   for (std::uint32_t rv : written_vertices_) {
     auto& r = result_.vertex_ranges;
-    if (!r.empty() && r.back().first + r.back().count == rv) ++r.back().count;
-    else r.push_back({rv, 1});
+    if (!r.empty() && r.back().first + r.back().count == rv)
+      ++r.back().count;
+    else
+      r.push_back({rv, 1});
   }
   result_.index_ranges = written_indices_;
   merge_ranges(result_.index_ranges);
@@ -674,6 +689,5 @@ RenderRemap RenderSync::compact() {
   full_pending_ = true;
   return map;
 }
-
 
 }  // namespace hedge

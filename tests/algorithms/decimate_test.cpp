@@ -336,7 +336,8 @@ TEST(Decimate, RefusesANonManifoldVertex) {
   link(fa, a01, a12, a20);
   link(fb, b03, b34, b40);
   using M = SurfaceMesh;
-  const Halfedge loop[6] = {M::twin(a20), M::twin(a12), M::twin(a01), M::twin(b40), M::twin(b34), M::twin(b03)};
+  const Halfedge loop[6] = {M::twin(a20), M::twin(a12), M::twin(a01),
+                            M::twin(b40), M::twin(b34), M::twin(b03)};
   for (int i = 0; i < 6; ++i) m.set_next(loop[i], loop[(i + 1) % 6]);
   m.set_halfedge(v[0], M::twin(b40));
   m.set_halfedge(v[1], M::twin(a01));

@@ -144,7 +144,8 @@ TEST(Distance, TooManySamplesAreRefusedInsteadOfWrappingAround) {
       (void)hausdorff_distance(cube, cube, {.samples = samples});
       FAIL() << "no error for " << samples << " samples";
     } catch (const InvalidInputError& e) {
-      EXPECT_NE(std::string(e.what()).find("options.samples is " + std::to_string(samples)), std::string::npos)
+      EXPECT_NE(std::string(e.what()).find("options.samples is " + std::to_string(samples)),
+                std::string::npos)
           << e.what();
       EXPECT_NE(std::string(e.what()).find("100000000"), std::string::npos) << e.what();
     }

@@ -47,7 +47,6 @@ TEST(FillHole, OuterLoopOfAGridMakesASphere) {
   EXPECT_TRUE(fill_hole(m, m.halfedge(Face(0))).empty());  // not a boundary half-edge
 }
 
-
 TEST(CanFillHole, RefusesInteriorDeletedAndInvalidHalfedges) {
   SurfaceMesh m = textured_grid(3, false);
   ASSERT_TRUE(remove_face(m, Face(0)));  // a corner: two of its edges go with it

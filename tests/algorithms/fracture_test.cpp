@@ -56,9 +56,9 @@ void expect_hull_contains(const Shard& s) {
     const Vec3d a = to_double(s.hull.mesh.position(s.hull.mesh.to_vertex(s.hull.mesh.halfedge(f))));
     for (Vertex v : s.mesh.vertices())
       ASSERT_LE(dot(to_double(s.mesh.position(v)) - a, n), slack)
-          << "hull of " << s.mesh.n_vertices() << " points, dimension " << int(s.hull.dimension) << ", thickness "
-          << s.hull.thickness << ", outside " << s.hull.max_outside_distance << ", tolerance " << s.hull.tolerance
-          << ", points " << [&] {
+          << "hull of " << s.mesh.n_vertices() << " points, dimension " << int(s.hull.dimension)
+          << ", thickness " << s.hull.thickness << ", outside " << s.hull.max_outside_distance
+          << ", tolerance " << s.hull.tolerance << ", points " << [&] {
                std::string list;
                char buf[96];
                for (Vertex w : s.mesh.vertices()) {
@@ -139,7 +139,8 @@ TEST(Fracture, UnknownPresetListsTheValidNames) {
     FAIL();
   } catch (const InvalidInputError& e) {
     const std::string what = e.what();
-    for (const char* n : {"metal", "glass", "stone", "wood", "ice"}) EXPECT_NE(what.find(n), std::string::npos) << what;
+    for (const char* n : {"metal", "glass", "stone", "wood", "ice"})
+      EXPECT_NE(what.find(n), std::string::npos) << what;
   }
 }
 
@@ -231,7 +232,7 @@ TEST(Fracture, RefusalsLeaveTheMeshUnchanged) {
   SurfaceMesh mesh = plate(10);
   const test::Snapshot before = test::snapshot(mesh);
   const float nan = std::nanf("");
-  EXPECT_THROW(fracture(mesh, {5, 5, 1}, {}), InvalidInputError);  // no face within tolerance
+  EXPECT_THROW(fracture(mesh, {5, 5, 1}, {}), InvalidInputError);   // no face within tolerance
   EXPECT_THROW(fracture(mesh, {20, 5, 0}, {}), InvalidInputError);  // outside the plate
   EXPECT_THROW(fracture(mesh, {nan, 5, 0}, {}), InvalidInputError);
   FractureOptions o;
@@ -286,7 +287,8 @@ TEST(Fracture, WorkIsBoundedRingsPointsAndThicknessAreLimitedBeforeTheMeshIsTouc
   o.material.name = "hostile";
   o.material.rings.assign(1000, FractureRing{100000, 1, 0});
   std::string what = refusal([&] { fracture(mesh, {5, 5, 0}, o, &bvh); });
-  EXPECT_NE(what.find("rings[0].points brings the break points of rings[0..0] to 100000"), std::string::npos) << what;
+  EXPECT_NE(what.find("rings[0].points brings the break points of rings[0..0] to 100000"), std::string::npos)
+      << what;
   EXPECT_NE(what.find("limit of 10000"), std::string::npos) << what;
   // The limit over all rings, each ring within its own limit.
   o.material.rings.assign(3, FractureRing{4000, 1, 0});
@@ -430,8 +432,9 @@ TEST(Fracture, RepeatedImpactsWithABvhAndAnImpactOnAShard) {
   EXPECT_NEAR(surface_area(mesh) + again_area, before, 1e-5 * before);
   EXPECT_TRUE(mesh.validate().empty());
   // A shard breaks further: the largest one.
-  auto largest = std::max_element(shards.begin(), shards.end(),
-                                   [](const Shard& a, const Shard& b) { return a.mesh.n_faces() < b.mesh.n_faces(); });
+  auto largest = std::max_element(shards.begin(), shards.end(), [](const Shard& a, const Shard& b) {
+    return a.mesh.n_faces() < b.mesh.n_faces();
+  });
   SurfaceMesh piece = largest->mesh;
   const double piece_area = surface_area(piece);
   FractureOptions fine;
@@ -474,7 +477,9 @@ TEST(Fracture, AbsoluteSpacingRefinesACoarseMesh) {
     EXPECT_GE(s.mesh.n_faces(), 2u);
     for (Face f : s.mesh.faces())
       for (Halfedge h : s.mesh.halfedges(f))
-        EXPECT_LE(norm(to_double(s.mesh.position(s.mesh.to_vertex(h)) - s.mesh.position(s.mesh.from_vertex(h)))), 0.1501);
+        EXPECT_LE(
+            norm(to_double(s.mesh.position(s.mesh.to_vertex(h)) - s.mesh.position(s.mesh.from_vertex(h)))),
+            0.1501);
   }
   EXPECT_TRUE(mesh.validate().empty());
 }
@@ -487,8 +492,8 @@ TEST(Fracture, RandomImpactsOverRealMeshes) {
   if (const char* env = std::getenv("HEDGE_FRACTURE_IMPACTS")) impacts = std::strtoull(env, nullptr, 10);
   std::vector<SurfaceMesh> meshes;
   meshes.push_back(plate(30));
-  for (const char* name : {"spot_triangulated.obj", "elephant-with-holes.off", "bob_small.ply", "hourglass_ico.obj",
-                           "three_peaks.off", "fandisk_quads.off"})
+  for (const char* name : {"spot_triangulated.obj", "elephant-with-holes.off", "bob_small.ply",
+                           "hourglass_ico.obj", "three_peaks.off", "fandisk_quads.off"})
     meshes.push_back(read_mesh(test::data_path(name)));
   // fandisk's quads are not planar, so their area depends on how they are split: triangulated here
   // (PolygonFacesAreSplitWhereTheyBreak covers planar polygons).

@@ -1,8 +1,7 @@
 // FaceBvh construction: the shape of the tree each split strategy builds.
-#include "hedge/algorithms/locate.h"
-
 #include <gtest/gtest.h>
 
+#include "hedge/algorithms/locate.h"
 #include "hedge/core/build.h"
 #include "locate_reference.h"
 #include "test_meshes.h"

@@ -1,7 +1,5 @@
 // FaceBvh queries against an independent brute force over every fan triangle of every live face
 // (exact equality, ties included), and refit and update after local edits.
-#include "hedge/algorithms/locate.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "hedge/algorithms/locate.h"
 #include "hedge/core/build.h"
 #include "hedge/core/operations.h"
 #include "hedge/error.h"
@@ -581,7 +580,8 @@ TEST(FaceBvh, UpdateFromTheChangeLogSeesMovedVertices) {
   SurfaceMesh m = load("anchor.off");
   FaceBvh bvh(m);
   // A few vertices: their faces are re-inserted.
-  for (Index i = 0; i < 5; ++i) m.set_position(Vertex(i * 7), m.position(Vertex(i * 7)) + Vec3{0.2f, 0.3f, -0.1f});
+  for (Index i = 0; i < 5; ++i)
+    m.set_position(Vertex(i * 7), m.position(Vertex(i * 7)) + Vec3{0.2f, 0.3f, -0.1f});
   const std::size_t builds = bvh.stats().builds;
   bvh.update();
   EXPECT_GT(bvh.stats().dead_slots, 0u);

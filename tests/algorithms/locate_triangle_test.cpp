@@ -1,13 +1,12 @@
 // Point location without a tree: the triangle primitives against analytic answers and dense
 // sampling, and the ray test's watertightness through the linear scan (and the tree, which must agree).
-#include "hedge/algorithms/locate.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <random>
 
+#include "hedge/algorithms/locate.h"
 #include "hedge/core/build.h"
 #include "locate_reference.h"
 #include "test_meshes.h"

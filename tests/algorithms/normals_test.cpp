@@ -99,8 +99,8 @@ TEST(Normals, ARidgeIsAWedgeBoundaryOnlyBelowItsAngle) {
   for (Halfedge h : m.halfedges()) {
     if (m.is_boundary(h) || m.to_vertex(h) != ridge) continue;
     const Vec3 fn = face_normal(m, m.face(h));
-    expect_near(sharp[h], fn);                                     // one side of the ridge or the other
-    expect_near(soft[h], Vec3{0, 1, 0});                           // the two sides blended: straight up
+    expect_near(sharp[h], fn);            // one side of the ridge or the other
+    expect_near(soft[h], Vec3{0, 1, 0});  // the two sides blended: straight up
   }
   for (Halfedge h : m.halfedges())
     if (m.is_boundary(h)) EXPECT_EQ(sharp[h], (Vec3{0, 0, 0}));

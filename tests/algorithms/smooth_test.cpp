@@ -56,7 +56,8 @@ SurfaceMesh jittered_lattice(int n, float jitter, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u(-1, 1);
   for (int j = 1; j < n; ++j)
-    for (int i = 1; i < n; ++i) in.positions[std::size_t(j * (n + 1) + i)] += Vec3{jitter * u(rng), jitter * u(rng), 0};
+    for (int i = 1; i < n; ++i)
+      in.positions[std::size_t(j * (n + 1) + i)] += Vec3{jitter * u(rng), jitter * u(rng), 0};
   return build(in);
 }
 
@@ -121,8 +122,10 @@ TEST(Smooth, TheMaskChoosesWhoMoves) {
   mask[24] = 1;  // (3, 3), an interior vertex
   smooth(m, {.iterations = 5, .mask = mask});
   for (Vertex v : m.vertices()) {
-    if (v.idx() == 24) EXPECT_NE(m.position(v), before.position(v));
-    else EXPECT_EQ(m.position(v), before.position(v));
+    if (v.idx() == 24)
+      EXPECT_NE(m.position(v), before.position(v));
+    else
+      EXPECT_EQ(m.position(v), before.position(v));
   }
   EXPECT_TRUE(m.validate().empty());
 }
@@ -169,7 +172,9 @@ TEST(Smooth, ProgressRisesToOneAndAThrowingCallbackChangesNothing) {
   for (SmoothMethod method : {SmoothMethod::uniform, SmoothMethod::implicit}) {
     SurfaceMesh m = bumpy_grid(6, 0, 0.3f, 4);
     std::vector<double> seen;
-    smooth(m, {.method = method, .iterations = 4, .lambda = 0.5, .progress = [&](double f) { seen.push_back(f); }});
+    smooth(m, {.method = method, .iterations = 4, .lambda = 0.5, .progress = [&](double f) {
+                 seen.push_back(f);
+               }});
     ASSERT_FALSE(seen.empty());
     for (std::size_t i = 1; i < seen.size(); ++i) EXPECT_GT(seen[i], seen[i - 1]);
     EXPECT_DOUBLE_EQ(seen.back(), 1.0);

@@ -11,13 +11,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "heap_hooks.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/core/build.h"
 #include "hedge/core/changes.h"
 #include "hedge/core/operations.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
-#include "heap_hooks.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -26,7 +26,9 @@ namespace {
 struct Counts {
   std::size_t v, e, f, loops;
 };
-Counts counts(const SurfaceMesh& m) { return {m.n_vertices(), m.n_edges(), m.n_faces(), m.boundary_loops().size()}; }
+Counts counts(const SurfaceMesh& m) {
+  return {m.n_vertices(), m.n_edges(), m.n_faces(), m.boundary_loops().size()};
+}
 
 // Seam edges: the two faces of an edge disagree on the texcoords at one of its ends.
 std::size_t seam_edges(const SurfaceMesh& s) {
@@ -93,7 +95,8 @@ TEST(Subdivide, MidpointKeepsTheShape) {
   subdivide(m, Subdivision::midpoint, 2);
   EXPECT_NEAR(volume(m), v0, 1e-6 * std::abs(v0));
   EXPECT_NEAR(surface_area(m), a0, 1e-6 * a0);
-  for (Vertex v : before.vertices()) EXPECT_EQ(m.position(v), before.position(v));  // old vertices keep index and place
+  for (Vertex v : before.vertices())
+    EXPECT_EQ(m.position(v), before.position(v));  // old vertices keep index and place
   EXPECT_TRUE(m.validate().empty());
 }
 
@@ -247,12 +250,14 @@ TEST(Subdivide, TheMemoryEstimateBoundsTheResultAndABudgetRefusesBeforeAllocatin
   EXPECT_EQ(subdivide_memory(tet, Subdivision::loop, 0), 0u);
   EXPECT_THROW((void)subdivide_memory(tet, Subdivision::loop, -1), InvalidInputError);
   // Each step of the 1-to-4 schemes makes about four times the memory.
-  const std::size_t five = subdivide_memory(tet, Subdivision::loop, 5), six = subdivide_memory(tet, Subdivision::loop, 6);
+  const std::size_t five = subdivide_memory(tet, Subdivision::loop, 5),
+                    six = subdivide_memory(tet, Subdivision::loop, 6);
   EXPECT_GT(six, 3 * five);
   EXPECT_LT(six, 5 * five);
   // Astronomically many steps saturate instead of overflowing.
   EXPECT_EQ(subdivide_memory(tet, Subdivision::loop, 100), std::numeric_limits<std::size_t>::max());
-  for (Subdivision scheme : {Subdivision::loop, Subdivision::catmull_clark, Subdivision::sqrt3, Subdivision::split_faces}) {
+  for (Subdivision scheme :
+       {Subdivision::loop, Subdivision::catmull_clark, Subdivision::sqrt3, Subdivision::split_faces}) {
     SurfaceMesh m = tet;
     const std::size_t estimate = subdivide_memory(m, scheme, 4);
     subdivide(m, scheme, 4, {}, estimate);  // the estimate is a budget that suffices
@@ -288,7 +293,8 @@ SurfaceMesh mesh_with_everything(bool triangles) {
   SurfaceMesh m = build(test::grid(3, triangles));
   auto name = m.add_vertex_property<std::string>("v:name", "");
   auto weight = m.add_vertex_property<float>("v:weight", 0.f);
-  for (Vertex v : m.vertices()) name[v] = "vertex number " + std::to_string(v.idx()), weight[v] = float(v.idx());
+  for (Vertex v : m.vertices())
+    name[v] = "vertex number " + std::to_string(v.idx()), weight[v] = float(v.idx());
   auto uv = m.add_halfedge_property<Vec2>("h:texcoord", Vec2{0, 0});
   for (Halfedge h : m.halfedges()) uv[h] = Vec2{float(h.idx()), 1.f};
   auto crease = m.add_edge_property<std::uint8_t>("e:crease", 0);
@@ -322,12 +328,14 @@ void expect_identical(const SurfaceMesh& a, const SurfaceMesh& b) {
   EXPECT_TRUE(a.positions().vector() == b.positions().vector());
   EXPECT_TRUE(a.get_vertex_property<std::string>("v:name").vector() ==
               b.get_vertex_property<std::string>("v:name").vector());
-  EXPECT_TRUE(a.get_vertex_property<float>("v:weight").vector() == b.get_vertex_property<float>("v:weight").vector());
+  EXPECT_TRUE(a.get_vertex_property<float>("v:weight").vector() ==
+              b.get_vertex_property<float>("v:weight").vector());
   EXPECT_TRUE(a.get_halfedge_property<Vec2>("h:texcoord").vector() ==
               b.get_halfedge_property<Vec2>("h:texcoord").vector());
   EXPECT_TRUE(a.get_edge_property<std::uint8_t>("e:crease").vector() ==
               b.get_edge_property<std::uint8_t>("e:crease").vector());
-  EXPECT_TRUE(a.get_face_property<std::string>("f:tag").vector() == b.get_face_property<std::string>("f:tag").vector());
+  EXPECT_TRUE(a.get_face_property<std::string>("f:tag").vector() ==
+              b.get_face_property<std::string>("f:tag").vector());
 }
 
 // Fails the k-th allocation of subdivide(m, scheme, steps) for k = 0, 1, ... until a call gets
@@ -367,8 +375,8 @@ void expect_strong_guarantee(Subdivision scheme, bool triangles, int steps) {
 }
 
 TEST(Subdivide, AnAllocationFailureAnywhereLeavesTheMeshAsItWas) {
-  for (Subdivision scheme : {Subdivision::loop, Subdivision::midpoint, Subdivision::sqrt3, Subdivision::split_faces,
-                             Subdivision::catmull_clark})
+  for (Subdivision scheme : {Subdivision::loop, Subdivision::midpoint, Subdivision::sqrt3,
+                             Subdivision::split_faces, Subdivision::catmull_clark})
     for (int steps : {1, 2}) {
       SCOPED_TRACE("scheme " + std::to_string(int(scheme)) + ", steps " + std::to_string(steps));
       expect_strong_guarantee(scheme, true, steps);
@@ -392,7 +400,6 @@ TEST(Subdivide, PropertyHandlesStayValidAndAProgressThatThrowsKeepsTheStepsDone)
   for (Vertex v : m.vertices()) EXPECT_EQ(weight[v], 1.f);  // new vertices average their edge's ends
   EXPECT_TRUE(m.validate().empty());
 }
-
 
 // ---- Catmull-Clark ----
 
@@ -425,7 +432,8 @@ TEST(CatmullClark, ACubeBecomesQuadsTendingToARoundBody) {
 }
 
 TEST(CatmullClark, AnyPolygonsBecomeOneQuadPerCorner) {
-  SurfaceMesh m = read_mesh(test::data_path("spot_control_mesh.obj"));  // 4 triangles, 160 quads, 16 pentagons
+  SurfaceMesh m =
+      read_mesh(test::data_path("spot_control_mesh.obj"));  // 4 triangles, 160 quads, 16 pentagons
   const Counts c = counts(m);
   subdivide(m, Subdivision::catmull_clark, 1);
   EXPECT_EQ(m.n_faces(), 4u * 3 + 160 * 4 + 16 * 5);
@@ -471,7 +479,6 @@ TEST(CatmullClark, TexcoordSeamsAndFacePropertiesFollow) {
   EXPECT_TRUE(m.validate().empty());
 }
 
-
 // ---- sqrt(3) and split-faces ----
 
 // Every corner's texcoord as a function of where it sits: the xy of `before`'s position for an old
@@ -499,9 +506,9 @@ SurfaceMesh with_planar_texcoords(IndexedMesh in) {
 TEST(Sqrt3, CountsAfterStepsOnClosedAndOpenMeshes) {
   SurfaceMesh tet = build(test::tetrahedron());  // 4 V, 6 E, 4 F
   subdivide(tet, Subdivision::sqrt3, 1);
-  EXPECT_EQ(tet.n_vertices(), 8u);   // V + F
-  EXPECT_EQ(tet.n_edges(), 18u);     // E + 3F
-  EXPECT_EQ(tet.n_faces(), 12u);     // 3F
+  EXPECT_EQ(tet.n_vertices(), 8u);  // V + F
+  EXPECT_EQ(tet.n_edges(), 18u);    // E + 3F
+  EXPECT_EQ(tet.n_faces(), 12u);    // 3F
   EXPECT_TRUE(tet.is_triangle_mesh());
   subdivide(tet, Subdivision::sqrt3, 2);
   EXPECT_EQ(tet.n_faces(), 108u);
@@ -570,8 +577,10 @@ IndexedMesh icosahedron() {
             std::abs(norm(to_double(c - a)) - 2) > 1e-3)
           continue;
         const Vec3d n = cross(to_double(b - a), to_double(c - a));
-        if (dot(n, to_double(a)) > 0) m.indices.insert(m.indices.end(), {i, j, k});
-        else m.indices.insert(m.indices.end(), {i, k, j});
+        if (dot(n, to_double(a)) > 0)
+          m.indices.insert(m.indices.end(), {i, j, k});
+        else
+          m.indices.insert(m.indices.end(), {i, k, j});
       }
   for (Vec3& p : m.positions) p = to_float(to_double(p) * (1.0 / norm(to_double(p))));
   return m;
@@ -582,7 +591,8 @@ TEST(Sqrt3, ASphereStaysRound) {
   ASSERT_EQ(m.n_faces(), 20u);
   ASSERT_TRUE(m.validate().empty());
   subdivide(m, Subdivision::midpoint, 2);
-  for (Vertex v : m.vertices()) m.position(v) = to_float(to_double(m.position(v)) * (1.0 / norm(to_double(m.position(v)))));
+  for (Vertex v : m.vertices())
+    m.position(v) = to_float(to_double(m.position(v)) * (1.0 / norm(to_double(m.position(v)))));
   subdivide(m, Subdivision::sqrt3, 3);
   double lo = 1e9, hi = 0;
   for (Vertex v : m.vertices()) {
@@ -614,7 +624,8 @@ TEST(Sqrt3, CreaseEdgesAreKeptAndTheirCornersStay) {
       EXPECT_EQ(m.vertices(e), before.vertices(e));
       EXPECT_TRUE(m.get_edge_property<std::uint8_t>("e:crease")[e]);
     }
-  for (Index corner = 0; corner < 8; ++corner) EXPECT_EQ(m.position(Vertex(corner)), before.position(Vertex(corner)));
+  for (Index corner = 0; corner < 8; ++corner)
+    EXPECT_EQ(m.position(Vertex(corner)), before.position(Vertex(corner)));
   EXPECT_TRUE(m.validate().empty());
 }
 
@@ -646,7 +657,8 @@ TEST(Sqrt3, PolygonsAreRefusedUnchanged) {
     subdivide(quads, Subdivision::sqrt3);
     FAIL() << "quads were subdivided";
   } catch (const InvalidInputError& e) {
-    EXPECT_NE(std::string(e.what()).find("sqrt3 scheme needs triangles, and face 0 has 4 corners"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("sqrt3 scheme needs triangles, and face 0 has 4 corners"),
+              std::string::npos)
         << e.what();
   }
   EXPECT_EQ(quads.n_faces(), 4u);
@@ -654,7 +666,8 @@ TEST(Sqrt3, PolygonsAreRefusedUnchanged) {
 }
 
 TEST(SplitFaces, PolygonsFanAboutTheirCentroidsAndNothingMoves) {
-  SurfaceMesh m = read_mesh(test::data_path("spot_control_mesh.obj"));  // 4 triangles, 160 quads, 16 pentagons
+  SurfaceMesh m =
+      read_mesh(test::data_path("spot_control_mesh.obj"));  // 4 triangles, 160 quads, 16 pentagons
   const SurfaceMesh before = m;
   const Counts c = counts(m);
   const std::size_t seams_before = seam_edges(m);

@@ -982,7 +982,8 @@ static void test_hostile_files(void) {
   const char* path = HEDGE_TEST_OUTPUT_DIR "/c_api_hostile.gltf";
   hedge_mesh* mesh = NULL;
   /* Embedded: read, by path and from memory. */
-  write_gltf_with_buffer(path, "{\"byteLength\":36,\"uri\":\"data:application/octet-stream;base64," TRIANGLE_BASE64 "\"}");
+  write_gltf_with_buffer(
+      path, "{\"byteLength\":36,\"uri\":\"data:application/octet-stream;base64," TRIANGLE_BASE64 "\"}");
   CHECK_OK(hedge_mesh_read_with(path, NULL, &read, NULL, &mesh));
   CHECK(counts_of(mesh).faces == 1);
   CHECK_VALID(mesh);
@@ -1006,15 +1007,19 @@ static void test_hostile_files(void) {
   CHECK_ERROR_HAS("max_memory");
   read.max_memory = 0;
   read.reserved = 7;
-  CHECK_STATUS(hedge_mesh_read_memory(text, size, "upload.gltf", NULL, &read, NULL, &mesh), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_read_memory(text, size, "upload.gltf", NULL, &read, NULL, &mesh),
+               HEDGE_ERROR_INVALID_ARGUMENT);
   read.reserved = 0;
   read.external_buffers = 2;
   CHECK_STATUS(hedge_mesh_read_with(path, NULL, &read, NULL, &mesh), HEDGE_ERROR_INVALID_ARGUMENT);
   read.external_buffers = 1;
-  CHECK_STATUS(hedge_mesh_read_memory(NULL, 10, "upload.gltf", NULL, NULL, NULL, &mesh), HEDGE_ERROR_INVALID_ARGUMENT);
-  CHECK_STATUS(hedge_mesh_read_memory(text, size, NULL, NULL, NULL, NULL, &mesh), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_read_memory(NULL, 10, "upload.gltf", NULL, NULL, NULL, &mesh),
+               HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_read_memory(text, size, NULL, NULL, NULL, NULL, &mesh),
+               HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_STATUS(hedge_mesh_read_memory(text, size, "upload.txt", NULL, NULL, NULL, &mesh), HEDGE_ERROR_IO);
-  CHECK_OK(hedge_mesh_read_memory("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 32, "t.obj", NULL, NULL, NULL, &mesh));
+  CHECK_OK(
+      hedge_mesh_read_memory("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 32, "t.obj", NULL, NULL, NULL, &mesh));
   CHECK(counts_of(mesh).faces == 1);
   CHECK_OK(hedge_mesh_destroy(mesh));
 
@@ -1023,7 +1028,8 @@ static void test_hostile_files(void) {
   write_gltf_with_buffer(path, "{\"byteLength\":1221,\"uri\":\"../../../../../../../../../../etc/passwd\"}");
   CHECK_STATUS(hedge_mesh_read(path, NULL, NULL, &mesh), HEDGE_ERROR_IO);
   CHECK(mesh == NULL);
-  CHECK_ERROR_HAS("buffer 0: uri '../../../../../../../../../../etc/passwd' does not name a regular file inside");
+  CHECK_ERROR_HAS(
+      "buffer 0: uri '../../../../../../../../../../etc/passwd' does not name a regular file inside");
   CHECK(strstr(hedge_last_error(), "root") == NULL);
   write_gltf_with_buffer(path, "{\"byteLength\":1221,\"uri\":\"/etc/passwd\"}");
   CHECK_STATUS(hedge_mesh_read_with(path, NULL, NULL, NULL, &mesh), HEDGE_ERROR_IO);
@@ -1064,7 +1070,8 @@ static void test_hostile_files(void) {
   for (int i = 0; i < kDepth; ++i) deep[n++] = ']';
   strcpy(deep + n, "}");
   mesh = NULL;
-  CHECK_STATUS(hedge_mesh_read_memory(deep, strlen(deep), "deep.gltf", NULL, NULL, NULL, &mesh), HEDGE_ERROR_IO);
+  CHECK_STATUS(hedge_mesh_read_memory(deep, strlen(deep), "deep.gltf", NULL, NULL, NULL, &mesh),
+               HEDGE_ERROR_IO);
   CHECK_ERROR_HAS("deep.gltf: malformed glTF: JSON nested deeper than 64 levels");
   free(deep);
   remove(path);
@@ -1332,8 +1339,7 @@ static void test_render(void) {
     CHECK(freed == 1);
     hedge_buffer_counts after;
     CHECK_OK(hedge_render_counts(render, &after));
-    CHECK(after.index_count == 9 && after.triangles == 3 &&
-          after.vertex_slots == after.vertices);
+    CHECK(after.index_count == 9 && after.triangles == 3 && after.vertex_slots == after.vertices);
     check_triangles_match(mesh, render);
     CHECK_OK(hedge_render_compact(render, NULL, 0, NULL, NULL, 0, NULL));
   }
@@ -1545,7 +1551,8 @@ static void test_every_function_error_path(void) {
 /* ---------------------------------------------------------------------------------------------- */
 
 /* The unit cube as 6 quads, outward counter-clockwise. */
-static const float kCubePositions[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+static const float kCubePositions[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0,
+                                       0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
 static const uint32_t kCubeQuads[] = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7};
 static const uint32_t kCubeSizes[] = {4, 4, 4, 4, 4, 4};
 
@@ -1585,7 +1592,8 @@ static void test_geometry(void) {
     }
 
   /* Corner normals with a 30-degree crease: every corner takes its face's normal. */
-  CHECK_STATUS(hedge_mesh_compute_corner_normals(cube, 200, HEDGE_WEIGHTING_ANGLE), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_compute_corner_normals(cube, 200, HEDGE_WEIGHTING_ANGLE),
+               HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_STATUS(hedge_mesh_copy_corner_normals(cube, normals, 72, &count), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_OK(hedge_mesh_compute_corner_normals(cube, 30, HEDGE_WEIGHTING_AREA));
   CHECK_OK(hedge_mesh_copy_corner_normals(cube, normals, 72, &count));
@@ -1640,7 +1648,7 @@ static void test_geometry(void) {
       for (int a = 0; a < 3; ++a) n[i][a] = data[(uint64_t)rv * layout.stride + (uint32_t)layout.normal + a];
     }
     CHECK(n[0][0] == 0 && n[0][1] == 0 && n[0][2] == 1); /* kept */
-    CHECK(n[1][2] < 0.99f && n[1][2] > 0.5f);           /* tilted by the raised corner */
+    CHECK(n[1][2] < 0.99f && n[1][2] > 0.5f);            /* tilted by the raised corner */
     CHECK(near(n[1][0] * n[1][0] + n[1][1] * n[1][1] + n[1][2] * n[1][2], 1, 1e-6));
     CHECK_OK(hedge_render_destroy(kept));
     CHECK_OK(hedge_render_destroy(followed));
@@ -1824,8 +1832,8 @@ static void test_fracture(void) {
         sizeof(hedge_fracture_shard) == 168);
   hedge_fracture_options o;
   CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o));
-  CHECK(o.ring_count == 4 && o.rings[0].points == 4 && o.rings[3].points == 16 && o.density == 1 && o.hulls == 1 &&
-        o.thickness == 0 && o.absolute == 0);
+  CHECK(o.ring_count == 4 && o.rings[0].points == 4 && o.rings[3].points == 16 && o.density == 1 &&
+        o.hulls == 1 && o.thickness == 0 && o.absolute == 0);
   CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_WOOD, &o));
   CHECK(o.grain[0] == 1 && o.grain_stretch == 3);
   CHECK_STATUS(hedge_fracture_options_default(7, &o), HEDGE_ERROR_INVALID_ARGUMENT);
@@ -1839,12 +1847,14 @@ static void test_fracture(void) {
   hedge_fracture_shard shards[40];
   uint32_t count = 0;
   /* Too small a buffer: the bound is given and nothing changes. */
-  CHECK_STATUS(hedge_mesh_fracture(plate, 15.2f, 14.9f, 0, NULL, shards, 10, &count), HEDGE_ERROR_BUFFER_TOO_SMALL);
+  CHECK_STATUS(hedge_mesh_fracture(plate, 15.2f, 14.9f, 0, NULL, shards, 10, &count),
+               HEDGE_ERROR_BUFFER_TOO_SMALL);
   CHECK(count == 40 && counts_of(plate).faces == faces_before);
   /* Off the plate, NaN, bad booleans and ring counts: refused, nothing changes. */
   CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 3, NULL, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_ERROR_HAS("tolerance");
-  CHECK_STATUS(hedge_mesh_fracture(plate, NAN, 15, 0, NULL, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_fracture(plate, NAN, 15, 0, NULL, shards, 40, &count),
+               HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o));
   o.hulls = 2;
   CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, &o, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
@@ -1950,7 +1960,8 @@ static void test_subdivide(void) {
   CHECK(counts_of(grid).faces == 4);
   CHECK_OK(hedge_mesh_subdivide(grid, HEDGE_SUBDIVISION_CATMULL_CLARK, 1));
   CHECK(counts_of(grid).faces == 16 && counts_of(grid).vertices == 25);
-  CHECK_STATUS(hedge_mesh_subdivide(grid, HEDGE_SUBDIVISION_SPLIT_FACES + 1, 1), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_subdivide(grid, HEDGE_SUBDIVISION_SPLIT_FACES + 1, 1),
+               HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_OK(hedge_mesh_subdivide(grid, HEDGE_SUBDIVISION_SPLIT_FACES, 1)); /* quads fan into 4 triangles */
   CHECK(counts_of(grid).faces == 64 && counts_of(grid).vertices == 41);
   CHECK_OK(hedge_mesh_subdivide(grid, HEDGE_SUBDIVISION_SQRT3, 2));
@@ -1972,7 +1983,8 @@ static void test_subdivide(void) {
   uint32_t vmap[512], fmap[1024];
   CHECK_STATUS(hedge_mesh_reorder(tet, HEDGE_ORDERING_SPATIAL, 0, vmap, 3, NULL, 0, NULL, 0, NULL, 0),
                HEDGE_ERROR_BUFFER_TOO_SMALL);
-  CHECK_STATUS(hedge_mesh_reorder(tet, 7, 0, NULL, 0, NULL, 0, NULL, 0, NULL, 0), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_reorder(tet, 7, 0, NULL, 0, NULL, 0, NULL, 0, NULL, 0),
+               HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK(same_counts(counts_of(tet), before));
   CHECK_OK(hedge_mesh_reorder(tet, HEDGE_ORDERING_SPATIAL, 0, vmap, 512, NULL, 0, NULL, 0, fmap, 1024));
   CHECK(same_counts(counts_of(tet), before));
@@ -2067,7 +2079,7 @@ static void test_threads(void) {
   int editor_failed = 1;
   CHECK(thrd_join(editor, &editor_failed) == thrd_success);
   CHECK(editor_failed == 0);
-  CHECK(s.busy_seen > 0);   /* the calls did collide */
+  CHECK(s.busy_seen > 0); /* the calls did collide */
   CHECK(s.other_seen == 0);
   CHECK_VALID(mesh);
   /* Free again: this thread's calls succeed. */

@@ -77,7 +77,8 @@ TEST(Build, ColourIndicesAndNonFiniteColoursAreInputErrors) {
     build(in, repair());
     FAIL() << "expected InvalidInputError";
   } catch (const InvalidInputError& e) {
-    EXPECT_NE(std::string(e.what()).find("color 1 has a non-finite component"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("color 1 has a non-finite component"), std::string::npos)
+        << e.what();
   }
   in.colors[1].a = 1;
   SurfaceMesh m = build(in);
@@ -87,9 +88,9 @@ TEST(Build, ColourIndicesAndNonFiniteColoursAreInputErrors) {
 
 TEST(Build, RepairDropsOnlyDegenerateFaces) {
   IndexedMesh in = test::grid(2, false);
-  in.indices.insert(in.indices.end(), {0, 1, 0});           // repeated vertex: dropped
+  in.indices.insert(in.indices.end(), {0, 1, 0});  // repeated vertex: dropped
   in.face_sizes.push_back(3);
-  in.indices.insert(in.indices.end(), {0, 1});              // two corners: dropped
+  in.indices.insert(in.indices.end(), {0, 1});  // two corners: dropped
   in.face_sizes.push_back(2);
   in.indices.insert(in.indices.end(), {9, 10, 10, 11, 9});  // consecutive repeats: kept as a triangle
   in.face_sizes.push_back(5);

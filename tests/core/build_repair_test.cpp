@@ -28,7 +28,8 @@ TEST(Build, StrictRejectsNonManifoldEdgeNamingVertices) {
   } catch (const TopologyError& e) {
     EXPECT_NE(std::string(e.what()).find("edge"), std::string::npos) << e.what();
     ASSERT_FALSE(e.vertices().empty());
-    EXPECT_TRUE((e.vertices()[0] == 0 && e.vertices()[1] == 1) || (e.vertices()[0] == 1 && e.vertices()[1] == 0));
+    EXPECT_TRUE((e.vertices()[0] == 0 && e.vertices()[1] == 1) ||
+                (e.vertices()[0] == 1 && e.vertices()[1] == 0));
   }
 }
 

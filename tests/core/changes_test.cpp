@@ -37,7 +37,8 @@ TEST(ChangeLog, EachElementOncePerRead) {
   EXPECT_EQ(p.vertices[0], Vertex(3));
   EXPECT_EQ(p.vertices[1], Vertex(5));
   ASSERT_EQ(p.faces.size(), 1u);
-  EXPECT_EQ(p.events, ChangeEvent::vertices_moved | ChangeEvent::vertex_data_changed | ChangeEvent::faces_changed);
+  EXPECT_EQ(p.events,
+            ChangeEvent::vertices_moved | ChangeEvent::vertex_data_changed | ChangeEvent::faces_changed);
   log.consume(id);
   EXPECT_TRUE(log.pending(id).empty());
   // After a read, the same element is logged again.
@@ -76,7 +77,8 @@ TEST(ChangeLog, ConsumersReadIndependently) {
 TEST(ChangeLog, SubscribersHearOncePerNotifyAndOncePerTransaction) {
   ChangeLog log;
   std::vector<ChangeEvent> heard;
-  const auto s = log.subscribe(ChangeEvent::vertices_moved | ChangeEvent::faces_removed, [&](ChangeEvent e) { heard.push_back(e); });
+  const auto s = log.subscribe(ChangeEvent::vertices_moved | ChangeEvent::faces_removed,
+                               [&](ChangeEvent e) { heard.push_back(e); });
   for (int i = 0; i < 100; ++i) log.mark(Vertex(i), ChangeEvent::vertices_moved);
   log.mark(Face(0), ChangeEvent::faces_added);  // not in the mask
   log.notify();
@@ -93,7 +95,7 @@ TEST(ChangeLog, SubscribersHearOncePerNotifyAndOncePerTransaction) {
   log.notify();
   EXPECT_FALSE(log.commit());  // inner
   EXPECT_EQ(heard.size(), 1u);
-  EXPECT_TRUE(log.commit());   // outermost
+  EXPECT_TRUE(log.commit());  // outermost
   ASSERT_EQ(heard.size(), 2u);
   EXPECT_EQ(heard[1], ChangeEvent::vertices_moved | ChangeEvent::faces_removed);
   log.unsubscribe(s);

@@ -1,6 +1,4 @@
 // split_edge, collapse and flip (src/core/edge_operations.cpp).
-#include "hedge/core/operations.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +8,7 @@
 
 #include "edit_checks.h"
 #include "hedge/core/build.h"
+#include "hedge/core/operations.h"
 #include "hedge/io/io.h"
 #include "test_meshes.h"
 
@@ -77,13 +76,14 @@ TEST(SplitEdge, UserInterpolationPolicy) {
   SurfaceMesh m = textured_grid(2, true);
   auto w = m.get_vertex_property<float>("v:weight");
   // Keep the largest weight instead of blending (e.g. a "distance to the impact" field).
-  w.set_interpolator([](const float* values, const float*, std::size_t n) { return *std::max_element(values, values + n); });
+  w.set_interpolator(
+      [](const float* values, const float*, std::size_t n) { return *std::max_element(values, values + n); });
   auto tag = m.add_vertex_property<int>("v:tag", 0);
   tag[Vertex(0)] = 3;
   tag[Vertex(4)] = 9;
   Vertex v = split_edge(m, m.find_edge(Vertex(0), Vertex(4)), {0.2f, 0.2f, 0});
-  EXPECT_EQ(w[v], 1.0f);     // max(x of vertex 0, x of vertex 4)
-  EXPECT_EQ(tag[v], 3);      // integers take the nearest source (vertex 0 at 20%)
+  EXPECT_EQ(w[v], 1.0f);  // max(x of vertex 0, x of vertex 4)
+  EXPECT_EQ(tag[v], 3);   // integers take the nearest source (vertex 0 at 20%)
   w.set_interpolator({});
   Vertex u = split_edge(m, m.find_edge(Vertex(1), Vertex(2)), {1.5f, 0, 0});
   EXPECT_NEAR(w[u], 1.5f, 1e-6f);
@@ -169,7 +169,8 @@ TEST(Collapse, RefusalsLeaveTheMeshUntouched) {
   Halfedge pinch2 = grid.find_halfedge(Vertex(3), Vertex(1));
   for (Halfedge h : {pinch, pinch2}) {
     if (!h.is_valid()) continue;
-    if (!grid.is_boundary(grid.edge(h)) && grid.is_boundary(grid.from_vertex(h)) && grid.is_boundary(grid.to_vertex(h))) {
+    if (!grid.is_boundary(grid.edge(h)) && grid.is_boundary(grid.from_vertex(h)) &&
+        grid.is_boundary(grid.to_vertex(h))) {
       EXPECT_FALSE(collapse(grid, h).is_valid());
     }
   }

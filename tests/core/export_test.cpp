@@ -1,9 +1,10 @@
+#include "hedge/core/export.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "hedge/core/build.h"
-#include "hedge/core/export.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -20,7 +21,8 @@ double area(const IndexedMesh& m) {
 }
 
 TEST(Export, RoundTripKeepsTrianglesAndPolygons) {
-  for (const IndexedMesh& in : {test::tetrahedron(), test::article_example(), test::cube(), test::grid(3, false)}) {
+  for (const IndexedMesh& in :
+       {test::tetrahedron(), test::article_example(), test::cube(), test::grid(3, false)}) {
     SurfaceMesh m = build(in);
     IndexedMesh out = to_indexed(m);
     EXPECT_EQ(out.positions, in.positions);
@@ -44,7 +46,8 @@ TEST(Export, ClockwiseReversesEveryFaceKeepingItsFirstCorner) {
   // Importing the clockwise buffers reversed again gives the same mesh.
   BuildOptions bo;
   IndexedMesh back = out;
-  for (std::size_t t = 0; t < back.indices.size(); t += 3) std::swap(back.indices[t + 1], back.indices[t + 2]);
+  for (std::size_t t = 0; t < back.indices.size(); t += 3)
+    std::swap(back.indices[t + 1], back.indices[t + 2]);
   EXPECT_EQ(to_indexed(build(back, bo)).indices, in.indices);
 }
 
@@ -69,7 +72,8 @@ TEST(Export, FanAndEarTriangulation) {
   EXPECT_NEAR(area(ear), 3.0, 1e-9);
   // Every ear keeps the polygon's orientation (+z).
   for (std::size_t t = 0; t < ear.indices.size(); t += 3) {
-    Vec3 p = ear.positions[ear.indices[t]], q = ear.positions[ear.indices[t + 1]], r = ear.positions[ear.indices[t + 2]];
+    Vec3 p = ear.positions[ear.indices[t]], q = ear.positions[ear.indices[t + 1]],
+         r = ear.positions[ear.indices[t + 2]];
     EXPECT_GT(cross(q - p, r - p).z, 0.0f);
   }
   o.triangulation = Triangulation::fan;
@@ -94,7 +98,8 @@ TEST(Export, DeletedVerticesAreSkippedAndMapped) {
 TEST(Export, CornerAttributesAreDeduplicated) {
   IndexedMesh in = test::cube();
   in.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  for (std::size_t c = 0; c < in.indices.size(); ++c) in.texcoord_indices.push_back(static_cast<Index>(c % 4));
+  for (std::size_t c = 0; c < in.indices.size(); ++c)
+    in.texcoord_indices.push_back(static_cast<Index>(c % 4));
   SurfaceMesh m = build(in);
   IndexedMesh out = to_indexed(m);
   EXPECT_EQ(out.texcoords.size(), 4u);

@@ -1,12 +1,11 @@
 // split_face, cut_face, add_face and the removals (src/core/face_operations.cpp).
-#include "hedge/core/operations.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 #include "edit_checks.h"
 #include "hedge/core/build.h"
+#include "hedge/core/operations.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -118,8 +117,10 @@ TEST(AddRemoveFace, BuildFaceByFaceMatchesBulkBuild) {
     std::vector<std::size_t> later;
     for (std::size_t t : pending) {
       Vertex tri[3] = {Vertex(in.indices[t]), Vertex(in.indices[t + 1]), Vertex(in.indices[t + 2])};
-      if (add_face(m, tri).is_valid()) ASSERT_TRUE(m.validate().empty()) << "after face " << t / 3;
-      else later.push_back(t);
+      if (add_face(m, tri).is_valid())
+        ASSERT_TRUE(m.validate().empty()) << "after face " << t / 3;
+      else
+        later.push_back(t);
     }
     ASSERT_LT(later.size(), pending.size());
     pending.swap(later);

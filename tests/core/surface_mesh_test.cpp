@@ -51,12 +51,14 @@ TEST(SurfaceMesh, ArticleRecordTable) {
   EXPECT_EQ(boundary, 6u);
 
   // The article's table, one row per half-edge: origin, twin, face (-1: none), next, prev.
-  struct Row { int origin, twin, face, next, prev; };
-  const Row rows[24] = {{1, 18, 0, 1, 2},   {3, 11, 0, 2, 0},   {4, 3, 0, 0, 1},    {1, 2, 1, 4, 5},
-                        {4, 6, 1, 5, 3},    {2, 19, 1, 3, 4},   {2, 4, 2, 7, 8},    {4, 17, 2, 8, 6},
-                        {5, 20, 2, 6, 7},   {3, 21, 3, 10, 11}, {6, 12, 3, 11, 9},  {4, 1, 3, 9, 10},
-                        {4, 10, 4, 13, 14}, {6, 22, 4, 14, 12}, {7, 15, 4, 12, 13}, {4, 14, 5, 16, 17},
-                        {7, 23, 5, 17, 15}, {5, 7, 5, 15, 16},  {3, 0, -1, 19, 21}, {1, 5, -1, 20, 18},
+  struct Row {
+    int origin, twin, face, next, prev;
+  };
+  const Row rows[24] = {{1, 18, 0, 1, 2},   {3, 11, 0, 2, 0},   {4, 3, 0, 0, 1},     {1, 2, 1, 4, 5},
+                        {4, 6, 1, 5, 3},    {2, 19, 1, 3, 4},   {2, 4, 2, 7, 8},     {4, 17, 2, 8, 6},
+                        {5, 20, 2, 6, 7},   {3, 21, 3, 10, 11}, {6, 12, 3, 11, 9},   {4, 1, 3, 9, 10},
+                        {4, 10, 4, 13, 14}, {6, 22, 4, 14, 12}, {7, 15, 4, 12, 13},  {4, 14, 5, 16, 17},
+                        {7, 23, 5, 17, 15}, {5, 7, 5, 15, 16},  {3, 0, -1, 19, 21},  {1, 5, -1, 20, 18},
                         {2, 8, -1, 23, 19}, {6, 9, -1, 18, 22}, {7, 13, -1, 21, 23}, {5, 16, -1, 22, 20}};
   auto vtx = [](int article_vertex) { return Vertex(static_cast<Index>(article_vertex - 1)); };
   // Article half-edge e runs from origin(e) to origin(twin(e)); find ours by its endpoints.
@@ -68,8 +70,10 @@ TEST(SurfaceMesh, ArticleRecordTable) {
     EXPECT_EQ(m.twin(h), ours(rows[e].twin));
     EXPECT_EQ(m.next(h), ours(rows[e].next));
     EXPECT_EQ(m.prev(h), ours(rows[e].prev));
-    if (rows[e].face < 0) EXPECT_TRUE(m.is_boundary(h));
-    else EXPECT_EQ(m.face(h), Face(static_cast<Index>(rows[e].face)));
+    if (rows[e].face < 0)
+      EXPECT_TRUE(m.is_boundary(h));
+    else
+      EXPECT_EQ(m.face(h), Face(static_cast<Index>(rows[e].face)));
   }
   // Face cycles keep the input's corner order.
   EXPECT_EQ(collect(m.vertices(Face(0))), vs({1, 3, 4}));
@@ -274,8 +278,10 @@ TEST(SurfaceMesh, ReleaseConnectivityHandsTheOldLinksOverAndResizes) {
     t.set_next(h, links.h_next[i]);
     t.set_face(h, links.h_face[i]);
   }
-  for (std::size_t v = 0; v < links.v_halfedge.size(); ++v) t.set_halfedge(Vertex(static_cast<Index>(v)), links.v_halfedge[v]);
-  for (std::size_t f = 0; f < links.f_halfedge.size(); ++f) t.set_halfedge(Face(static_cast<Index>(f)), links.f_halfedge[f]);
+  for (std::size_t v = 0; v < links.v_halfedge.size(); ++v)
+    t.set_halfedge(Vertex(static_cast<Index>(v)), links.v_halfedge[v]);
+  for (std::size_t f = 0; f < links.f_halfedge.size(); ++f)
+    t.set_halfedge(Face(static_cast<Index>(f)), links.f_halfedge[f]);
   EXPECT_TRUE(t.validate().empty());
 }
 
@@ -293,8 +299,8 @@ TEST(SurfaceMesh, SwapElementsExchangesContentsAndKeepsThePropertyArrays) {
   EXPECT_EQ(b.n_faces(), 4u);
   EXPECT_TRUE(a.validate().empty());
   EXPECT_TRUE(b.validate().empty());
-  EXPECT_EQ(a.position(Vertex(8)), b_point);    // through the mesh's own positions handle
-  EXPECT_EQ(id.vector().size(), faces_b);       // the handle taken before sees the new values
+  EXPECT_EQ(a.position(Vertex(8)), b_point);  // through the mesh's own positions handle
+  EXPECT_EQ(id.vector().size(), faces_b);     // the handle taken before sees the new values
   EXPECT_EQ(id[Face(5)], 55);
   EXPECT_EQ(b.get_face_property<int>("f:id")[Face(3)], 3);
   EXPECT_EQ(b.face_properties().size(), 4u);

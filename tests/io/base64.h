@@ -10,7 +10,9 @@ namespace hedge::test {
 template <typename Bytes>
 std::string base64(const Bytes& bytes) {
   static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  auto byte = [&](std::size_t i) -> std::uint32_t { return i < bytes.size() ? static_cast<unsigned char>(bytes[i]) : 0; };
+  auto byte = [&](std::size_t i) -> std::uint32_t {
+    return i < bytes.size() ? static_cast<unsigned char>(bytes[i]) : 0;
+  };
   std::string out;
   for (std::size_t i = 0; i < bytes.size(); i += 3) {
     const std::uint32_t n = byte(i) << 16 | byte(i + 1) << 8 | byte(i + 2);

@@ -73,8 +73,8 @@ TEST(FormatFromPath, ExtensionsAreCaseInsensitive) {
 }
 
 TEST(DefaultBuildOptions, RepairEverywhereAndWeldOnlyStlAndGltf) {
-  for (FileFormat f :
-       {FileFormat::obj, FileFormat::off, FileFormat::ply, FileFormat::stl, FileFormat::gltf, FileFormat::glb}) {
+  for (FileFormat f : {FileFormat::obj, FileFormat::off, FileFormat::ply, FileFormat::stl, FileFormat::gltf,
+                       FileFormat::glb}) {
     const BuildOptions o = default_build_options(f);
     EXPECT_EQ(o.policy, TopologyPolicy::repair);
     const bool welds = f == FileFormat::stl || f == FileFormat::gltf || f == FileFormat::glb;
@@ -89,8 +89,8 @@ TEST(ReadIndexed, DispatchesOnTheFormat) {
   EXPECT_THROW(read_indexed(off, FileFormat::ply), IoError);
   EXPECT_THROW(read_indexed(off, FileFormat::gltf), IoError);
   IndexedMesh m = read_indexed(off, FileFormat::off);
-  for (FileFormat f :
-       {FileFormat::obj, FileFormat::off, FileFormat::ply, FileFormat::stl, FileFormat::gltf, FileFormat::glb})
+  for (FileFormat f : {FileFormat::obj, FileFormat::off, FileFormat::ply, FileFormat::stl, FileFormat::gltf,
+                       FileFormat::glb})
     EXPECT_EQ(read_indexed(write_indexed(m, f), f).positions, m.positions);
 }
 
@@ -440,7 +440,8 @@ TEST_F(FileTest, IndexedFilesInEveryFormat) {
   IndexedMesh m = read_indexed_file(data_path("fandisk_quads.off"));
   // Colours, which only glTF carries, are left out by the other writers.
   m.colors = {{1, 0, 0, 1}, {0, 0, 1, 0.5f}};
-  for (std::size_t c = 0; c < m.indices.size(); ++c) m.color_indices.push_back(static_cast<std::uint32_t>(c % 2));
+  for (std::size_t c = 0; c < m.indices.size(); ++c)
+    m.color_indices.push_back(static_cast<std::uint32_t>(c % 2));
   for (const char* ext : {"obj", "off", "ply"}) {
     SCOPED_TRACE(ext);
     const std::string p = path(std::string("m.") + ext);
@@ -489,7 +490,8 @@ TEST_F(FileTest, ATruncatedFaceLineIsNamedWithItsLine) {
   EXPECT_EQ(m.n_faces(), 1u);
   EXPECT_EQ(report.degenerate_faces, 1u);
   ASSERT_EQ(report.warnings.size(), 1u);
-  EXPECT_EQ(report.warnings[0], cut + ":6: face 1 has 1 corner; a face needs at least 3 (the file may be truncated)");
+  EXPECT_EQ(report.warnings[0],
+            cut + ":6: face 1 has 1 corner; a face needs at least 3 (the file may be truncated)");
   EXPECT_TRUE(m.validate().empty());
 
   // The same in OFF (line of the record) and PLY (ascii: line; binary: byte offset of the face).
@@ -498,7 +500,8 @@ TEST_F(FileTest, ATruncatedFaceLineIsNamedWithItsLine) {
   report = {};
   read_mesh(off, &report);
   ASSERT_EQ(report.warnings.size(), 1u);
-  EXPECT_EQ(report.warnings[0], off + ":8: face 1 has 2 corners; a face needs at least 3 (the file may be truncated)");
+  EXPECT_EQ(report.warnings[0],
+            off + ":8: face 1 has 2 corners; a face needs at least 3 (the file may be truncated)");
   EXPECT_THROW(read_mesh(off, BuildOptions{.policy = TopologyPolicy::strict}), IoError);
 
   const std::string header =
@@ -509,7 +512,8 @@ TEST_F(FileTest, ATruncatedFaceLineIsNamedWithItsLine) {
   report = {};
   read_mesh(ascii, &report);
   ASSERT_EQ(report.warnings.size(), 1u);
-  EXPECT_EQ(report.warnings[0], ascii + ":14: face 1 has 1 corner; a face needs at least 3 (the file may be truncated)");
+  EXPECT_EQ(report.warnings[0],
+            ascii + ":14: face 1 has 1 corner; a face needs at least 3 (the file may be truncated)");
   const std::string binary = path("cut_binary.ply");
   std::string body;
   auto f32 = [&](float v) { body.append(reinterpret_cast<const char*>(&v), 4); };
@@ -525,8 +529,9 @@ TEST_F(FileTest, ATruncatedFaceLineIsNamedWithItsLine) {
   report = {};
   read_mesh(binary, &report);
   ASSERT_EQ(report.warnings.size(), 1u);
-  EXPECT_EQ(report.warnings[0], binary + " (byte " + std::to_string(head.size() + second_face) +
-                                    "): face 1 has 1 corner; a face needs at least 3 (the file may be truncated)");
+  EXPECT_EQ(report.warnings[0],
+            binary + " (byte " + std::to_string(head.size() + second_face) +
+                "): face 1 has 1 corner; a face needs at least 3 (the file may be truncated)");
 }
 
 TEST(ReadMesh, BuildsWithTheFormatDefaults) {

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "heap_hooks.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
-#include "heap_hooks.h"
 #include "io/base64.h"
 #include "io/io_errors.h"
 
@@ -54,7 +54,8 @@ std::string triangle_buffer(std::size_t indices) {
 
 // A document whose mesh has `primitives` primitives, all on the same two accessors (`indices`
 // indices), placed by `nodes` nodes; its buffer is embedded unless `uri` is given.
-json document(std::size_t indices = 3, std::size_t primitives = 1, std::size_t nodes = 1, const std::string& uri = {}) {
+json document(std::size_t indices = 3, std::size_t primitives = 1, std::size_t nodes = 1,
+              const std::string& uri = {}) {
   const std::string buffer = triangle_buffer(indices);
   json doc = {{"asset", {{"version", "2.0"}}}};
   json roots = json::array(), node_list = json::array(), prims = json::array();
@@ -62,16 +63,19 @@ json document(std::size_t indices = 3, std::size_t primitives = 1, std::size_t n
     roots.push_back(n);
     node_list.push_back({{"mesh", 0}});
   }
-  for (std::size_t p = 0; p < primitives; ++p) prims.push_back({{"attributes", {{"POSITION", 0}}}, {"indices", 1}});
+  for (std::size_t p = 0; p < primitives; ++p)
+    prims.push_back({{"attributes", {{"POSITION", 0}}}, {"indices", 1}});
   doc["scenes"] = json::array({{{"nodes", roots}}});
   doc["nodes"] = node_list;
   doc["meshes"] = json::array({{{"primitives", prims}}});
-  doc["accessors"] = json::array({{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
-                                  {{"bufferView", 1}, {"componentType", 5123}, {"count", indices}, {"type", "SCALAR"}}});
+  doc["accessors"] =
+      json::array({{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
+                   {{"bufferView", 1}, {"componentType", 5123}, {"count", indices}, {"type", "SCALAR"}}});
   doc["bufferViews"] = json::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 36}},
                                     {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 2 * indices}}});
-  doc["buffers"] = json::array({{{"byteLength", buffer.size()},
-                                 {"uri", uri.empty() ? "data:application/octet-stream;base64," + base64(buffer) : uri}}});
+  doc["buffers"] =
+      json::array({{{"byteLength", buffer.size()},
+                    {"uri", uri.empty() ? "data:application/octet-stream;base64," + base64(buffer) : uri}}});
   return doc;
 }
 
@@ -79,10 +83,10 @@ std::string message(const std::string& text, const ReadOptions& options = {}) {
   return catch_io_error([&] { read_gltf(text, "m.gltf", options); }).what();
 }
 
-#define EXPECT_HAS(text, part)                                           \
-  do {                                                                   \
-    const std::string what_ = (text);                                    \
-    EXPECT_NE(what_.find(part), std::string::npos) << what_;             \
+#define EXPECT_HAS(text, part)                               \
+  do {                                                       \
+    const std::string what_ = (text);                        \
+    EXPECT_NE(what_.find(part), std::string::npos) << what_; \
   } while (false)
 
 TEST(GltfGuard, TheTestDocumentReads) {
@@ -140,7 +144,8 @@ TEST(GltfGuard, NegativeOffsetsIndicesAndModesNameTheirElement) {
   doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = -1.5;
   EXPECT_HAS(message(doc.dump()), "mesh 0 primitive 0: attributes.POSITION is -1.5");
   doc = document();
-  doc["accessors"][1]["sparse"] = {{"count", 1}, {"indices", {{"bufferView", 1}, {"byteOffset", -2}, {"componentType", 5123}}}};
+  doc["accessors"][1]["sparse"] = {
+      {"count", 1}, {"indices", {{"bufferView", 1}, {"byteOffset", -2}, {"componentType", 5123}}}};
   EXPECT_HAS(message(doc.dump()), "accessor 1: sparse.indices.byteOffset is -2");
   // Negative numbers where glTF allows them, and anything inside extras, are read.
   doc = document();
@@ -206,8 +211,9 @@ TEST(GltfGuard, ExternalBuffersInsideTheFolderAreRead) {
 TEST(GltfGuard, NothingOutsideTheFolderIsRead) {
   Folder f;
   const std::string outside = "does not name a regular file inside the .gltf's folder";
-  for (const std::string uri : {"../secret.bin", "bin/../../secret.bin", "%2e%2e/secret.bin",
-                                "../../../../../../../../../../etc/passwd", "bin/../../../../../../../etc/passwd"}) {
+  for (const std::string uri :
+       {"../secret.bin", "bin/../../secret.bin", "%2e%2e/secret.bin",
+        "../../../../../../../../../../etc/passwd", "bin/../../../../../../../etc/passwd"}) {
     const std::string what = f.refusal(uri);
     EXPECT_HAS(what, "buffer 0: uri '" + uri + "' " + outside);
     // Nothing of the target comes out: neither its content nor its size.
@@ -257,7 +263,8 @@ TEST(GltfGuard, ExternalBuffersAreOffForBytesInMemory) {
   const std::string path = f.model("bin/tri.bin");
   const std::string text = read_file(path);
   const std::string what = catch_io_error([&] { read_gltf(text, path); }).what();
-  EXPECT_HAS(what, "buffer 0: its data is in a separate file ('uri'), and reading external buffers is turned off");
+  EXPECT_HAS(what,
+             "buffer 0: its data is in a separate file ('uri'), and reading external buffers is turned off");
   ReadOptions on;
   on.external_buffers = true;
   EXPECT_EQ(read_gltf(text, path, on).face_count(), 1u);

@@ -310,7 +310,8 @@ TEST(GltfRead, MalformedFilesSayWhatAndWhere) {
   {
     Triangle t;  // colours are RGB or RGBA
     t.doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 2;
-    t.doc["accessors"].push_back({{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}});
+    t.doc["accessors"].push_back(
+        {{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}});
     expect_error(t.text(), "COLOR_0: accessor 2: has 2 components, expected 4 or 3");
   }
   {
@@ -418,7 +419,8 @@ TEST(GltfWrite, ColoursSurviveAGlbRoundTripPerCorner) {
                   2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
   for (std::uint32_t s = 0; s < 6; ++s)
     cube.colors.push_back({0.1f * float(s), 0.3f, 1.0f / 3.0f, s % 2 ? 0.7f : 1.0f});
-  for (std::uint32_t t = 0; t < 12; ++t) cube.color_indices.insert(cube.color_indices.end(), {t / 2, t / 2, t / 2});
+  for (std::uint32_t t = 0; t < 12; ++t)
+    cube.color_indices.insert(cube.color_indices.end(), {t / 2, t / 2, t / 2});
   const SurfaceMesh mesh = build(cube);
   ASSERT_TRUE(mesh.get_halfedge_property<Color>("h:color"));
 

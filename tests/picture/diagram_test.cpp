@@ -15,8 +15,9 @@ using test::count;
 
 // Two quads and two triangles in the plane z = 0: 11 edges, 8 of them on the boundary.
 SurfaceMesh patch() {
-  return test::mesh_of({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1.2f, 0}, {0, 2, 0}, {1, 2, 0}},
-                       {0, 1, 4, 3, 1, 2, 5, 1, 5, 4, 3, 4, 7, 6}, {4, 3, 3, 4});
+  return test::mesh_of(
+      {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1.2f, 0}, {0, 2, 0}, {1, 2, 0}},
+      {0, 1, 4, 3, 1, 2, 5, 1, 5, 4, 3, 4, 7, 6}, {4, 3, 3, 4});
 }
 
 TEST(Diagram, EveryHalfEdgeIsOneArrowAndBoundaryOnesAreMarked) {
@@ -27,9 +28,11 @@ TEST(Diagram, EveryHalfEdgeIsOneArrowAndBoundaryOnesAreMarked) {
   std::size_t boundary = 0;
   for (Halfedge h : m.halfedges()) boundary += m.is_boundary(h);
   EXPECT_EQ(boundary, 8u);
-  EXPECT_EQ(count(out, "<g class=\"halfedge\">") + count(out, "<g class=\"halfedge boundary\">"), m.n_halfedges());
+  EXPECT_EQ(count(out, "<g class=\"halfedge\">") + count(out, "<g class=\"halfedge boundary\">"),
+            m.n_halfedges());
   EXPECT_EQ(count(out, "<g class=\"halfedge boundary\">"), boundary);
-  for (Halfedge h : m.halfedges()) EXPECT_NE(out.find(">h" + std::to_string(h.idx()) + "<"), std::string::npos);
+  for (Halfedge h : m.halfedges())
+    EXPECT_NE(out.find(">h" + std::to_string(h.idx()) + "<"), std::string::npos);
   for (Vertex v : m.vertices()) EXPECT_NE(out.find(">v" + std::to_string(v.idx()) + "<"), std::string::npos);
   for (Face f : m.faces()) EXPECT_NE(out.find(">f" + std::to_string(f.idx()) + "<"), std::string::npos);
 }

@@ -42,8 +42,8 @@ TEST(Image, PngRoundTripKeepsSizeAndPixels) {
   ASSERT_GT(png.size(), 8u);
   EXPECT_EQ(png.substr(1, 3), "PNG");
   int w = 0, h = 0, channels = 0;
-  unsigned char* data = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(png.data()), int(png.size()),
-                                              &w, &h, &channels, 3);
+  unsigned char* data = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(png.data()),
+                                              int(png.size()), &w, &h, &channels, 3);
   ASSERT_NE(data, nullptr);
   EXPECT_EQ(w, 320);
   EXPECT_EQ(h, 240);
@@ -61,7 +61,8 @@ TEST(Image, WritePngReplacesAtomicallyAndFailsCleanly) {
   EXPECT_THROW(write_png(Image(3, 2), (dir / "missing" / "b.png").string()), IoError);
   EXPECT_FALSE(std::filesystem::exists(dir / "missing"));
   // Only the finished file is there: no temporary left behind.
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1);
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()),
+            1);
   std::filesystem::remove_all(dir);
 }
 

@@ -108,7 +108,8 @@ TEST(Render, ANearFaceHidesAFarOneWhateverTheirOrder) {
       EXPECT_NE(near_colour, kWhite);
       for (int y = 30; y <= 55; ++y)
         for (int x = 45; x <= 70; ++x)
-          ASSERT_EQ(both.at(x, y), near_colour) << x << "," << y << ", near first " << near_first << ", fov " << fov;
+          ASSERT_EQ(both.at(x, y), near_colour)
+              << x << "," << y << ", near first " << near_first << ", fov " << fov;
       // Outside the near square, the far one shows.
       EXPECT_NE(both.at(85, 20), kWhite) << "fov " << fov;
       EXPECT_NE(both.at(85, 20), near_colour);
@@ -136,7 +137,8 @@ TEST(Render, WireframeColourOnEdgesNotInFaceInteriors) {
   // Interiors, farther than 3 pixels from every edge, keep the face colour.
   for (int y = 14; y < 86; ++y)
     for (int x = 14; x < 86; ++x)
-      if (std::abs(x + 0.5 + y + 0.5 - 100) / std::sqrt(2.0) > 3) EXPECT_EQ(img.at(x, y), (Rgb{200, 200, 200}));
+      if (std::abs(x + 0.5 + y + 0.5 - 100) / std::sqrt(2.0) > 3)
+        EXPECT_EQ(img.at(x, y), (Rgb{200, 200, 200}));
 
   // One quad face: its fan diagonal is not an edge and is not drawn.
   const SurfaceMesh quad =
@@ -148,8 +150,14 @@ TEST(Render, WireframeColourOnEdgesNotInFaceInteriors) {
 
 TEST(Render, HiddenEdgesDoNotShowThroughAFaceInFront) {
   // A wireframe square at z = -1 behind an opaque one at z = 1 of the same size.
-  const SurfaceMesh m = mesh_of({{-0.8f, -0.8f, -1}, {0.8f, -0.8f, -1}, {0.8f, 0.8f, -1}, {-0.8f, 0.8f, -1},
-                                 {-0.9f, -0.9f, 1}, {0.9f, -0.9f, 1}, {0.9f, 0.9f, 1}, {-0.9f, 0.9f, 1}},
+  const SurfaceMesh m = mesh_of({{-0.8f, -0.8f, -1},
+                                 {0.8f, -0.8f, -1},
+                                 {0.8f, 0.8f, -1},
+                                 {-0.8f, 0.8f, -1},
+                                 {-0.9f, -0.9f, 1},
+                                 {0.9f, -0.9f, 1},
+                                 {0.9f, 0.9f, 1},
+                                 {-0.9f, 0.9f, 1}},
                                 {0, 1, 2, 0, 2, 3, 4, 5, 6, 7}, {3, 3, 4});
   RenderOptions o = flat_colour({200, 200, 200});
   o.wireframe = true;
@@ -170,12 +178,17 @@ TEST(Render, BoundaryEdgesAreHighlightedWithoutTheWireframe) {
   int red_on_sides = 0;
   for (int t = 15; t < 85; ++t) red_on_sides += img.at(10, t) == kRed || img.at(t, 89) == kRed;
   EXPECT_GT(red_on_sides, 60);
-  for (int x = 20; x < 80; ++x) EXPECT_EQ(img.at(x, 100 - x), (Rgb{200, 200, 200})) << "the diagonal is interior";
+  for (int x = 20; x < 80; ++x)
+    EXPECT_EQ(img.at(x, 100 - x), (Rgb{200, 200, 200})) << "the diagonal is interior";
 }
 
 TEST(Render, ColourByShardGivesEachPieceItsOwnColour) {
-  const SurfaceMesh m = mesh_of({{-0.9f, -0.9f, 0}, {-0.1f, -0.9f, 0}, {-0.9f, -0.1f, 0}, {0.1f, 0.1f, 0},
-                                 {0.9f, 0.1f, 0}, {0.1f, 0.9f, 0}},
+  const SurfaceMesh m = mesh_of({{-0.9f, -0.9f, 0},
+                                 {-0.1f, -0.9f, 0},
+                                 {-0.9f, -0.1f, 0},
+                                 {0.1f, 0.1f, 0},
+                                 {0.9f, 0.1f, 0},
+                                 {0.1f, 0.9f, 0}},
                                 {0, 1, 2, 3, 4, 5});
   RenderOptions o = flat_colour(kRed);
   o.color_by = ColorBy::shard;

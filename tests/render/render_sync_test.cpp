@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <random>
 
-#include "support/random_edits.h"
 #include "hedge/core/operations.h"
 #include "hedge/io/io.h"
+#include "support/random_edits.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -33,7 +33,8 @@ struct Mirror {
     indices.resize(ix.size(), 0xdeadbeefu);
     for (const SlotRange& s : r.vertex_ranges)
       std::copy_n(v.begin() + s.first * stride, s.count * stride, vertices.begin() + s.first * stride);
-    for (const SlotRange& s : r.index_ranges) std::copy_n(ix.begin() + s.first, s.count, indices.begin() + s.first);
+    for (const SlotRange& s : r.index_ranges)
+      std::copy_n(ix.begin() + s.first, s.count, indices.begin() + s.first);
   }
   // Only vertices that some triangle uses must match: a freed slot may hold stale data.
   void expect_equal(const RenderSync& rs) const {
@@ -61,7 +62,8 @@ std::vector<std::vector<float>> triangle_set(const RenderSync& rs) {
   for (std::size_t t = 0; t + 2 < ix.size(); t += 3) {
     if (ix[t] == ix[t + 1] && ix[t] == ix[t + 2]) continue;  // a free slot
     std::vector<float> c[3];
-    for (int k = 0; k < 3; ++k) c[k].assign(v.begin() + ix[t + k] * stride, v.begin() + (ix[t + k] + 1) * stride);
+    for (int k = 0; k < 3; ++k)
+      c[k].assign(v.begin() + ix[t + k] * stride, v.begin() + (ix[t + k] + 1) * stride);
     int first = 0;
     for (int k = 1; k < 3; ++k)
       if (c[k] < c[first]) first = k;
@@ -227,7 +229,8 @@ TEST(RenderSync, FlipRewritesOnlyItsTwoTriangles) {
   std::size_t n = 0;
   for (const SlotRange& s : r.index_ranges) {
     n += s.count;
-    EXPECT_TRUE(s.first == 3 * a.first || s.first == 3 * b.first || s.first == 3 * std::min(a.first, b.first));
+    EXPECT_TRUE(s.first == 3 * a.first || s.first == 3 * b.first ||
+                s.first == 3 * std::min(a.first, b.first));
   }
   EXPECT_EQ(n, 6u);
   EXPECT_EQ(r.index_bytes, 24u);
@@ -410,9 +413,9 @@ TEST(RenderSync, KeptImportedNormalsDoNotFollow) {
   m.set_position(v, m.position(v) + Vec3{0, 0, 0.5f});
   const SyncResult& r = rs.sync();
   EXPECT_GT(r.vertices_synced, 0u);  // the position moved
-  for (Halfedge o : m.halfedges(v))
-    EXPECT_EQ(render_normal(rs, SurfaceMesh::twin(o)), (Vec3{0.6f, 0, 0.8f}));
-  EXPECT_EQ(m.get_halfedge_property<Vec3>("h:normal")[SurfaceMesh::twin(m.halfedge(v))], (Vec3{0.6f, 0, 0.8f}));
+  for (Halfedge o : m.halfedges(v)) EXPECT_EQ(render_normal(rs, SurfaceMesh::twin(o)), (Vec3{0.6f, 0, 0.8f}));
+  EXPECT_EQ(m.get_halfedge_property<Vec3>("h:normal")[SurfaceMesh::twin(m.halfedge(v))],
+            (Vec3{0.6f, 0, 0.8f}));
   expect_consistent(rs);
   EXPECT_TRUE(m.validate().empty());
 }
@@ -522,7 +525,7 @@ TEST(RenderSync, CompactRemovesHolesAndReportsTheMaps) {
   ASSERT_EQ(after.index_ranges.size(), 1u);
   EXPECT_EQ(after.index_ranges[0].count, rs.index_count());
   EXPECT_EQ(after.faces_synced, 2u);  // the flip's two faces were synced as well
-  EXPECT_FALSE(rs.sync().full);      // once
+  EXPECT_FALSE(rs.sync().full);       // once
   rs.compact();
   EXPECT_TRUE(rs.sync().full);  // also with nothing edited in between
   expect_consistent(rs);

@@ -9,14 +9,22 @@ namespace hedge {
 
 const char* edit_name(EditKind k) {
   switch (k) {
-    case EditKind::split_edge: return "split_edge";
-    case EditKind::collapse: return "collapse";
-    case EditKind::flip: return "flip";
-    case EditKind::split_face: return "split_face";
-    case EditKind::cut_face: return "cut_face";
-    case EditKind::remove_face: return "remove_face";
-    case EditKind::remove_vertex: return "remove_vertex";
-    case EditKind::count: break;
+    case EditKind::split_edge:
+      return "split_edge";
+    case EditKind::collapse:
+      return "collapse";
+    case EditKind::flip:
+      return "flip";
+    case EditKind::split_face:
+      return "split_face";
+    case EditKind::cut_face:
+      return "cut_face";
+    case EditKind::remove_face:
+      return "remove_face";
+    case EditKind::remove_vertex:
+      return "remove_vertex";
+    case EditKind::count:
+      break;
   }
   return "?";
 }
@@ -66,9 +74,12 @@ RandomEditor::Step RandomEditor::step() {
   // Steer the size: grow while small, shrink while large.
   const std::uint64_t r = below(rng, 100);
   EditKind kind;
-  if (m.n_faces() > 4 * start_faces_) kind = r < 70 ? EditKind::collapse : EditKind::flip;
-  else if (m.n_faces() < start_faces_ / 4) kind = r < 50 ? EditKind::split_edge : EditKind::split_face;
-  else kind = static_cast<EditKind>(below(rng, kEditKinds));
+  if (m.n_faces() > 4 * start_faces_)
+    kind = r < 70 ? EditKind::collapse : EditKind::flip;
+  else if (m.n_faces() < start_faces_ / 4)
+    kind = r < 50 ? EditKind::split_edge : EditKind::split_face;
+  else
+    kind = static_cast<EditKind>(below(rng, kEditKinds));
   out.kind = kind;
   const long long chi = euler(m);
   bool applied = false;
@@ -132,7 +143,8 @@ RandomEditor::Step RandomEditor::step() {
       if (!m.is_deleted(outer) && m.is_boundary(outer)) fill_hole(m, outer);
       break;
     }
-    case EditKind::count: break;
+    case EditKind::count:
+      break;
   }
   out.applied = applied;
   out.euler_kept = !(applied && check_euler && euler(m) != chi);
@@ -146,8 +158,10 @@ RandomEditReport random_edits(SurfaceMesh& m, const RandomEditOptions& opt) {
     if (m.n_faces() == 0) break;
     const RandomEditor::Step s = editor.step();
     const std::size_t k = static_cast<std::size_t>(s.kind);
-    if (s.applied) ++rep.applied[k];
-    else ++rep.refused[k];
+    if (s.applied)
+      ++rep.applied[k];
+    else
+      ++rep.refused[k];
     if (!s.euler_kept) ++rep.euler_mismatches;
     if (opt.collect_every && (op + 1) % opt.collect_every == 0) m.garbage_collection();
     if (opt.validate_every && (op + 1) % opt.validate_every == 0) {

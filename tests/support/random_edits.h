@@ -17,9 +17,9 @@ enum class EditKind : int {
   collapse,
   flip,
   split_face,
-  cut_face,         //!< cut_face(h0, h1) on a polygon
-  remove_face,      //!< remove_face, then add_face with the same corners when possible
-  remove_vertex,    //!< remove_vertex, then fill_hole on the hole it leaves
+  cut_face,       //!< cut_face(h0, h1) on a polygon
+  remove_face,    //!< remove_face, then add_face with the same corners when possible
+  remove_vertex,  //!< remove_vertex, then fill_hole on the hole it leaves
   count
 };
 inline constexpr std::size_t kEditKinds = static_cast<std::size_t>(EditKind::count);

@@ -48,7 +48,8 @@ TEST_P(RandomEdits, StayValidAndKeepEuler) {
 }
 
 INSTANTIATE_TEST_SUITE_P(DataMeshes, RandomEdits,
-                         ::testing::Values(Case{"anchor.off", "closed genus 4"}, Case{"bob_small.ply", "closed genus 1"},
+                         ::testing::Values(Case{"anchor.off", "closed genus 4"},
+                                           Case{"bob_small.ply", "closed genus 1"},
                                            Case{"elephant-with-holes.off", "open, 100+ holes"},
                                            Case{"spot_control_mesh.obj", "polygons"}),
                          [](const auto& info) {
@@ -102,8 +103,8 @@ TEST_P(CollapseUntilRefused, EndsValid) {
 }
 
 INSTANTIATE_TEST_SUITE_P(DataMeshes, CollapseUntilRefused,
-                         ::testing::Values("anchor.off", "bob_small.ply", "spot_control_mesh.obj", "fandisk_quads.off",
-                                           "three_peaks.off", "moebius.obj"),
+                         ::testing::Values("anchor.off", "bob_small.ply", "spot_control_mesh.obj",
+                                           "fandisk_quads.off", "three_peaks.off", "moebius.obj"),
                          [](const auto& info) {
                            std::string n = info.param;
                            for (char& c : n)

@@ -38,7 +38,8 @@ TEST_F(HedgeCli, DecimateReachesEachKindOfTarget) {
 
 TEST_F(HedgeCli, DecimateStopsAtTheErrorLimitAndPrintsIt) {
   const fs::path out = tmp("decimated.ply");
-  const Result r = run({"decimate", data("three_peaks.off"), out.string(), "--max-error", "0.001", "--keep-boundary"});
+  const Result r =
+      run({"decimate", data("three_peaks.off"), out.string(), "--max-error", "0.001", "--keep-boundary"});
   ASSERT_EQ(r.code, 0) << r.err;
   const std::size_t at = r.out.find("max error ");
   ASSERT_NE(at, std::string::npos) << r.out;

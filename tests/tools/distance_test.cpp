@@ -17,7 +17,8 @@ std::string square(float z) {
 TEST_F(HedgeCli, DistanceOfASquareToAShiftedCopyIsTheShift) {
   write_text(tmp("a.obj"), square(0));
   write_text(tmp("b.obj"), square(0.5f));
-  const json j = run_json({"distance", tmp("a.obj").string(), tmp("b.obj").string(), "--samples", "500", "--json"});
+  const json j =
+      run_json({"distance", tmp("a.obj").string(), tmp("b.obj").string(), "--samples", "500", "--json"});
   EXPECT_DOUBLE_EQ(j["hausdorff"].get<double>(), 0.5);
   EXPECT_NEAR(j["mean"].get<double>(), 0.5, 1e-12);
   EXPECT_EQ(j["a_to_b"]["points"].get<std::size_t>(), 504u);
@@ -29,7 +30,8 @@ TEST_F(HedgeCli, DistanceOfASquareToAShiftedCopyIsTheShift) {
 }
 
 TEST_F(HedgeCli, DistanceOfAMeshToItselfIsZero) {
-  const json j = run_json({"distance", data("spot_triangulated.obj"), data("spot_triangulated.obj"), "--json"});
+  const json j =
+      run_json({"distance", data("spot_triangulated.obj"), data("spot_triangulated.obj"), "--json"});
   EXPECT_LT(j["hausdorff"].get<double>(), 1e-5);
   EXPECT_GT(j["b_to_a"]["points"].get<std::size_t>(), 100000u);
 }

@@ -12,15 +12,17 @@ using namespace cli_test;
 // Every file of a folder with its bytes, in name order.
 std::vector<std::pair<std::string, std::string>> folder(const fs::path& dir) {
   std::vector<std::pair<std::string, std::string>> files;
-  for (const auto& e : fs::directory_iterator(dir)) files.emplace_back(e.path().filename().string(), read_text(e.path()));
+  for (const auto& e : fs::directory_iterator(dir))
+    files.emplace_back(e.path().filename().string(), read_text(e.path()));
   std::sort(files.begin(), files.end());
   return files;
 }
 
 TEST_F(HedgeCli, FractureWritesShardsAndASummaryThatDescribesThem) {
   const fs::path out = tmp("broken");
-  const json j = run_json({"fracture", data("spot_triangulated.obj"), "--impact", "0.0,0.0,0.0", "--tolerance", "10",
-                           "--material", "glass", "--seed", "4", "-o", out.string(), "--thickness", "0.01", "--json"});
+  const json j =
+      run_json({"fracture", data("spot_triangulated.obj"), "--impact", "0.0,0.0,0.0", "--tolerance", "10",
+                "--material", "glass", "--seed", "4", "-o", out.string(), "--thickness", "0.01", "--json"});
   ASSERT_TRUE(j.contains("shards")) << j.dump();
   ASSERT_TRUE(j.contains("seconds"));
   const json summary = json::parse(read_text(out / "summary.json"));
@@ -45,8 +47,11 @@ TEST_F(HedgeCli, FractureWritesShardsAndASummaryThatDescribesThem) {
 }
 
 TEST_F(HedgeCli, FractureTwoRunsGiveByteIdenticalFolders) {
-  const std::vector<std::string> base = {"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--tolerance",
-                                         "100", "--material", "wood", "--seed", "77"};
+  const std::vector<std::string> base = {"fracture",    data("three_peaks.off"),
+                                         "--impact",    "0.1,0.2,10",
+                                         "--tolerance", "100",
+                                         "--material",  "wood",
+                                         "--seed",      "77"};
   auto args = [&](const fs::path& out) {
     std::vector<std::string> a = base;
     a.insert(a.end(), {"-o", out.string()});
@@ -68,10 +73,12 @@ TEST_F(HedgeCli, FractureTwoRunsGiveByteIdenticalFolders) {
 }
 
 TEST_F(HedgeCli, FractureReadsAMaterialFile) {
-  write_text(tmp("two.json"),
-             R"({"name": "two rings", "rings": [{"points": 3, "spacing": 2}, {"points": 5, "spacing": 2.5, "jitter": 0.2}]})");
-  const json j = run_json({"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--tolerance", "100",
-                           "--material", tmp("two.json").string(), "-o", tmp("out").string(), "--json"});
+  write_text(
+      tmp("two.json"),
+      R"({"name": "two rings", "rings": [{"points": 3, "spacing": 2}, {"points": 5, "spacing": 2.5, "jitter": 0.2}]})");
+  const json j =
+      run_json({"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--tolerance", "100",
+                "--material", tmp("two.json").string(), "-o", tmp("out").string(), "--json"});
   EXPECT_EQ(j["material"], "two rings");
   EXPECT_GE(j["shards"].size(), 2u);
   EXPECT_LE(j["shards"].size(), 8u);
@@ -91,8 +98,8 @@ TEST_F(HedgeCli, FractureBadMaterialFileNamesTheField) {
   EXPECT_EQ(t.code, 1);
   EXPECT_NE(t.err.find("'grian'"), std::string::npos) << t.err;
   write_text(tmp("broken.json"), R"({"rings": [)");
-  expect_data_error({"fracture", data("three_peaks.off"), "--impact", "0,0,0", "--material", tmp("broken.json").string(),
-                     "-o", tmp("out").string()},
+  expect_data_error({"fracture", data("three_peaks.off"), "--impact", "0,0,0", "--material",
+                     tmp("broken.json").string(), "-o", tmp("out").string()},
                     "broken.json");
 }
 
@@ -118,7 +125,8 @@ TEST_F(HedgeCli, FractureMaterialFileOutOfRangeNumbersNameTheFile) {
 
 TEST_F(HedgeCli, FractureRefusesAMissAndBadArguments) {
   // Far from the surface: a data error, and the output folder is not created.
-  const Result r = run({"fracture", data("three_peaks.off"), "--impact", "1000,1000,1000", "-o", tmp("out").string()});
+  const Result r =
+      run({"fracture", data("three_peaks.off"), "--impact", "1000,1000,1000", "-o", tmp("out").string()});
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("tolerance"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(tmp("out")));

@@ -147,7 +147,8 @@ TEST_F(HedgeCli, EveryDataMeshIsValidAfterRepair) {
 }
 
 TEST_F(HedgeCli, StressReportsAppliedAndRefusedOperations) {
-  const json j = run_json({"stress", data("spot_control_mesh.obj"), "--ops", "1500", "--seed", "5", "--json"});
+  const json j =
+      run_json({"stress", data("spot_control_mesh.obj"), "--ops", "1500", "--seed", "5", "--json"});
   EXPECT_EQ(j["valid"], true);
   EXPECT_TRUE(j["problems"].empty());
   std::size_t applied = 0, refused = 0;
@@ -157,7 +158,8 @@ TEST_F(HedgeCli, StressReportsAppliedAndRefusedOperations) {
   EXPECT_GT(j["applied"]["collapse"].get<std::size_t>(), 0u);
   EXPECT_GT(j["applied"]["split_edge"].get<std::size_t>(), 0u);
   // The same seed gives the same report.
-  const json again = run_json({"stress", data("spot_control_mesh.obj"), "--ops", "1500", "--seed", "5", "--json"});
+  const json again =
+      run_json({"stress", data("spot_control_mesh.obj"), "--ops", "1500", "--seed", "5", "--json"});
   EXPECT_EQ(again["applied"], j["applied"]);
   EXPECT_EQ(again["faces"], j["faces"]);
   const Result text = run({"stress", data("anchor.off"), "--ops", "500"});
@@ -175,7 +177,8 @@ TEST_F(HedgeCli, RenderBuffersReportsSeamsAndSmallSyncs) {
   EXPECT_EQ(j["render_vertices"].get<std::size_t>(), 2930u + j["seam_splits"].get<std::size_t>());
   EXPECT_EQ(j["vertex_stride_bytes"], 32);  // position, normal, texcoord
   EXPECT_EQ(j["layout"]["texcoord"], 6);
-  EXPECT_EQ(j["full_upload_bytes"].get<std::size_t>(), 32u * 2930u + 32u * j["seam_splits"].get<std::size_t>() + 4u * 3u * 5856u);
+  EXPECT_EQ(j["full_upload_bytes"].get<std::size_t>(),
+            32u * 2930u + 32u * j["seam_splits"].get<std::size_t>() + 4u * 3u * 5856u);
   EXPECT_GT(j["edits"]["applied"].get<std::size_t>(), 100u);
   const double median = j["edits"]["median_bytes"].get<double>();
   EXPECT_GT(median, 0.0);
@@ -217,8 +220,10 @@ TEST_F(HedgeCli, ConvertWritesAReadableFileInEveryFormat) {
 TEST_F(HedgeCli, ConvertReordersForTheVertexCacheAndInfoMeasuresIt) {
   const json before = run_json({"info", data("spot_triangulated.obj"), "--json"});
   const fs::path out = tmp("spot_cache.obj"), spatial = tmp("spot_spatial.obj");
-  ASSERT_EQ(run({"convert", data("spot_triangulated.obj"), out.string(), "--reorder", "vertex-cache"}).code, 0);
-  ASSERT_EQ(run({"convert", data("spot_triangulated.obj"), spatial.string(), "--reorder", "spatial"}).code, 0);
+  ASSERT_EQ(run({"convert", data("spot_triangulated.obj"), out.string(), "--reorder", "vertex-cache"}).code,
+            0);
+  ASSERT_EQ(run({"convert", data("spot_triangulated.obj"), spatial.string(), "--reorder", "spatial"}).code,
+            0);
   const json after = run_json({"info", out.string(), "--json"});
   const json after_spatial = run_json({"info", spatial.string(), "--json"});
   for (const char* key : {"vertices", "faces", "genus", "valid"}) {
@@ -251,7 +256,9 @@ TEST_F(HedgeCli, ConvertToGlbAndInfoOnItKeepTheMeshAndItsSeams) {
   const std::size_t seams = buffers["seam_splits"].get<std::size_t>();
   EXPECT_GT(seams, 0u);
   EXPECT_EQ(after["repairs"]["welded_vertices"].get<std::size_t>(), seams);
-  EXPECT_EQ(run_json({"render-buffers", glb.string(), "--edits", "0", "--json"})["seam_splits"].get<std::size_t>(), seams);
+  EXPECT_EQ(
+      run_json({"render-buffers", glb.string(), "--edits", "0", "--json"})["seam_splits"].get<std::size_t>(),
+      seams);
 
   // .glb -> .gltf -> .obj: the same mesh all the way.
   const fs::path gltf = tmp("spot.gltf"), obj = tmp("spot.obj");
@@ -264,7 +271,8 @@ TEST_F(HedgeCli, ConvertToGlbAndInfoOnItKeepTheMeshAndItsSeams) {
 
   // A malformed file: one error line that names the file and the accessor.
   const fs::path bad = tmp("bad.gltf");
-  write_text(bad, R"({"asset": {"version": "2.0"}, "meshes": [{"primitives": [{"attributes": {"POSITION": 4}}]}]})");
+  write_text(
+      bad, R"({"asset": {"version": "2.0"}, "meshes": [{"primitives": [{"attributes": {"POSITION": 4}}]}]})");
   expect_data_error({"info", bad.string()}, "bad.gltf");
   const Result e = run({"info", bad.string()});
   EXPECT_NE(e.err.find("accessor 4 does not exist"), std::string::npos) << e.err;
@@ -340,35 +348,46 @@ TEST_F(HedgeCli, HostileGltfFilesAreDataErrors) {
     return tmp(name).string();
   };
   const std::string one = R"([{"primitives":[{"attributes":{"POSITION":0}}]}])";
-  const std::string passwd = file("passwd.gltf", one, R"([{"byteLength":60036,"uri":"../../../../../../../../etc/passwd"}])");
-  expect_data_error({"info", passwd}, "passwd.gltf: buffer 0: uri '../../../../../../../../etc/passwd' does not name a regular file inside the .gltf's folder");
+  const std::string passwd =
+      file("passwd.gltf", one, R"([{"byteLength":60036,"uri":"../../../../../../../../etc/passwd"}])");
+  expect_data_error({"info", passwd},
+                    "passwd.gltf: buffer 0: uri '../../../../../../../../etc/passwd' does not name a regular "
+                    "file inside the .gltf's folder");
   expect_data_error({"convert", passwd, tmp("out.obj").string()}, "does not name a regular file");
   EXPECT_FALSE(fs::exists(tmp("out.obj")));
   const std::string absolute = file("absolute.gltf", one, R"([{"byteLength":60036,"uri":"/etc/passwd"}])");
   expect_data_error({"info", absolute}, "absolute.gltf: buffer 0: uri is an absolute path");
   const std::string text = file("text.gltf", one, R"([{"byteLength":5,"uri":"data:text/plain,hello"}])");
-  expect_data_error({"validate", text}, "text.gltf: buffer 0: a data URI must be base64 application/octet-stream");
+  expect_data_error({"validate", text},
+                    "text.gltf: buffer 0: a data URI must be base64 application/octet-stream");
 
   // 1,000 primitives on one accessor of 30,000 indices: 30M corners from a 120 KB file.
   std::string prims;
-  for (int p = 0; p < 1000; ++p) prims += std::string(p ? "," : "") + R"({"attributes":{"POSITION":0},"indices":1})";
-  const std::string buffer = std::string(R"([{"byteLength":60036,"uri":"data:application/octet-stream;base64,)") +
-                             std::string(80048, 'A') + R"("}])";
+  for (int p = 0; p < 1000; ++p)
+    prims += std::string(p ? "," : "") + R"({"attributes":{"POSITION":0},"indices":1})";
+  const std::string buffer =
+      std::string(R"([{"byteLength":60036,"uri":"data:application/octet-stream;base64,)") +
+      std::string(80048, 'A') + R"("}])";
   const std::string shared = file("shared.gltf", R"([{"primitives":[)" + prims + "]}]", buffer);
-  expect_data_error({"info", shared}, "shared.gltf: its JSON and the meshes its nodes place would take about");
+  expect_data_error({"info", shared},
+                    "shared.gltf: its JSON and the meshes its nodes place would take about");
   expect_data_error({"info", shared}, "raise the budget");
 
-  std::string deep = head + R"("meshes":)" + one + R"(,"extras":)" + std::string(17000, '[') + std::string(17000, ']') + "}";
+  std::string deep =
+      head + R"("meshes":)" + one + R"(,"extras":)" + std::string(17000, '[') + std::string(17000, ']') + "}";
   write_text(tmp("deep.gltf"), deep);
-  expect_data_error({"info", tmp("deep.gltf").string()}, "deep.gltf: malformed glTF: JSON nested deeper than 64 levels");
+  expect_data_error({"info", tmp("deep.gltf").string()},
+                    "deep.gltf: malformed glTF: JSON nested deeper than 64 levels");
 
   const std::string negative =
       file("negative.gltf", R"([{"primitives":[{"attributes":{"POSITION":0},"indices":-5}]}])", buffer);
-  expect_data_error({"info", negative}, "negative.gltf: mesh 0 primitive 0: indices is -5; it must be 0 or more");
+  expect_data_error({"info", negative},
+                    "negative.gltf: mesh 0 primitive 0: indices is -5; it must be 0 or more");
 
   // A buffer beside the file is read, unless the user turns external buffers off.
   const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
-  write_text(tmp("beside.bin"), std::string(reinterpret_cast<const char*>(positions), 36) + std::string(60000, '\0'));
+  write_text(tmp("beside.bin"),
+             std::string(reinterpret_cast<const char*>(positions), 36) + std::string(60000, '\0'));
   const std::string beside = file("beside.gltf", one, R"([{"byteLength":60036,"uri":"beside.bin"}])");
   const Result r = run({"info", beside, "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
@@ -381,7 +400,8 @@ TEST_F(HedgeCli, HostileGltfFilesAreDataErrors) {
                     "more than the read budget of 1.0 KiB");
   EXPECT_FALSE(fs::exists(tmp("q.obj")));
   expect_data_error({"info", beside, "--no-external-buffers"},
-                    "beside.gltf: buffer 0: its data is in a separate file ('uri'), and reading external buffers is turned off");
+                    "beside.gltf: buffer 0: its data is in a separate file ('uri'), and reading external "
+                    "buffers is turned off");
 }
 
 TEST_F(HedgeCli, MissingFileAndUnknownExtensionAreDataErrors) {

@@ -14,7 +14,8 @@ void expect_budget_refusal(const Result& r, const std::vector<std::string>& part
   EXPECT_EQ(r.code, 1) << r.err;
   const auto err = lines(r.err);
   ASSERT_EQ(err.size(), 1u) << r.err;
-  for (const std::string& p : parts) EXPECT_NE(err[0].find(p), std::string::npos) << "no '" << p << "' in " << err[0];
+  for (const std::string& p : parts)
+    EXPECT_NE(err[0].find(p), std::string::npos) << "no '" << p << "' in " << err[0];
 }
 
 TEST_F(HedgeCli, SubdivideIsRefusedPastTheBudgetBeforeItAllocates) {
@@ -29,12 +30,18 @@ TEST_F(HedgeCli, SubdivideIsRefusedPastTheBudgetBeforeItAllocates) {
   ASSERT_EQ(run({"subdivide", data("tet.obj"), out.string(), "--steps", "4", "--max-memory", "1M"}).code, 0);
   EXPECT_EQ(run_json({"info", out.string(), "--json"})["faces"], 1024);
   EXPECT_EQ(run({"subdivide", data("tet.obj"), out.string(), "--steps", "5", "--max-memory", "1M"}).code, 1);
-  ASSERT_EQ(run({"subdivide", data("tet.obj"), tmp("sub.ply").string(), "--steps", "5", "--max-memory", "1M"}).code, 0);
+  ASSERT_EQ(
+      run({"subdivide", data("tet.obj"), tmp("sub.ply").string(), "--steps", "5", "--max-memory", "1M"}).code,
+      0);
   EXPECT_EQ(run_json({"info", tmp("sub.ply").string(), "--json"})["faces"], 4096);
   // Sizes in bytes and with units.
-  EXPECT_EQ(run({"subdivide", data("tet.obj"), out.string(), "--steps", "6", "--max-memory", "4294967296"}).code, 0);
-  EXPECT_EQ(run({"subdivide", data("tet.obj"), out.string(), "--steps", "6", "--max-memory", "1GiB"}).code, 0);
-  EXPECT_EQ(run({"subdivide", data("tet.obj"), out.string(), "--steps", "5", "--max-memory", "2048K"}).code, 0);
+  EXPECT_EQ(
+      run({"subdivide", data("tet.obj"), out.string(), "--steps", "6", "--max-memory", "4294967296"}).code,
+      0);
+  EXPECT_EQ(run({"subdivide", data("tet.obj"), out.string(), "--steps", "6", "--max-memory", "1GiB"}).code,
+            0);
+  EXPECT_EQ(run({"subdivide", data("tet.obj"), out.string(), "--steps", "5", "--max-memory", "2048K"}).code,
+            0);
 }
 
 TEST_F(HedgeCli, TheDefaultBudgetIsTheMemoryAvailable) {
@@ -58,8 +65,8 @@ TEST_F(HedgeCli, MalformedMemorySizesAreUsageErrors) {
 TEST_F(HedgeCli, RenderDistanceAndRenderBuffersCheckTheirBudget) {
   const std::string in = data("tet.obj");
   // 8192x8192 at 4x4 samples: 67 million samples would need about 2 GiB.
-  expect_budget_refusal(run({"render", in, "-o", tmp("p.png").string(), "--size", "8192x8192", "--supersample", "1",
-                             "--max-memory", "64M"}),
+  expect_budget_refusal(run({"render", in, "-o", tmp("p.png").string(), "--size", "8192x8192",
+                             "--supersample", "1", "--max-memory", "64M"}),
                         {"a picture of 8192x8192", "--max-memory 64M", "smaller --size"});
   EXPECT_FALSE(fs::exists(tmp("p.png")));
   expect_budget_refusal(run({"distance", in, in, "--samples", "100000000", "--max-memory", "64M"}),
@@ -74,7 +81,8 @@ TEST_F(HedgeCli, TourSkipsStagesPastTheBudget) {
                         "--max-memory", "200K"});
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("Catmull-Clark"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("skipped: the result would pass 4000000 faces or 200.0 KiB of memory"), std::string::npos)
+  EXPECT_NE(r.out.find("skipped: the result would pass 4000000 faces or 200.0 KiB of memory"),
+            std::string::npos)
       << r.out;
 }
 

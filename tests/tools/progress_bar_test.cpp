@@ -37,7 +37,8 @@ class ProgressSetting {
 
 TEST_F(HedgeCli, ProgressIsDrawnWhenAskedAndEndsAtOneHundredPercent) {
   const ProgressSetting always("always");
-  const Result r = run({"smooth", data("spot_triangulated.obj"), tmp("s.obj").string(), "--iterations", "20"});
+  const Result r =
+      run({"smooth", data("spot_triangulated.obj"), tmp("s.obj").string(), "--iterations", "20"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("\rsmooth ["), std::string::npos) << r.err;
   // The last update is the whole bar at 100%, and the line is ended.
@@ -59,7 +60,8 @@ TEST_F(HedgeCli, SubdivideReportsItsStepsOnTheBar) {
 TEST_F(HedgeCli, ProgressStaysOutOfFilesAndPipesByDefault) {
   for (const char* setting : {static_cast<const char*>(nullptr), "auto", "never"}) {
     const ProgressSetting s(setting);
-    const Result r = run({"smooth", data("spot_triangulated.obj"), tmp("s.obj").string(), "--iterations", "20"});
+    const Result r =
+        run({"smooth", data("spot_triangulated.obj"), tmp("s.obj").string(), "--iterations", "20"});
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(r.err, "") << (setting ? setting : "unset");
   }
@@ -69,7 +71,8 @@ TEST_F(HedgeCli, AnUnknownProgressSettingIsAUsageError) {
   const ProgressSetting bad("sometimes");
   const Result r = run({"smooth", data("tet.obj"), tmp("s.obj").string()});
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("HEDGE_PROGRESS must be auto, always or never, got 'sometimes'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("HEDGE_PROGRESS must be auto, always or never, got 'sometimes'"), std::string::npos)
+      << r.err;
   EXPECT_FALSE(fs::exists(tmp("s.obj")));
 }
 
@@ -77,7 +80,8 @@ TEST_F(HedgeCli, AnErrorAfterTheBarStartsOnALineOfItsOwn) {
   const ProgressSetting always("always");
   // The bar is drawn while smoothing; writing to a folder that is a file then fails.
   write_text(tmp("file"), "x");
-  const Result r = run({"smooth", data("spot_triangulated.obj"), (tmp("file") / "out.obj").string(), "--iterations", "5"});
+  const Result r =
+      run({"smooth", data("spot_triangulated.obj"), (tmp("file") / "out.obj").string(), "--iterations", "5"});
   EXPECT_EQ(r.code, 1);
   const auto err = lines(r.err);
   ASSERT_EQ(err.size(), 2u) << r.err;

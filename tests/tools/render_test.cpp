@@ -29,8 +29,8 @@ TEST_F(HedgeCli, RenderWritesAPngOfExactlyTheAskedSize) {
   EXPECT_EQ(png_size(read_text(out)), std::make_pair(320u, 240u));
   for (const char* color : {"face", "shard", "curvature", "valence"}) {
     const fs::path p = tmp(std::string(color) + ".png");
-    const Result c = run({"render", data("spot_triangulated.obj"), "-o", p.string(), "--size", "64x48", "--color-by",
-                          color, "--wireframe", "--shading", "flat", "--view", "front"});
+    const Result c = run({"render", data("spot_triangulated.obj"), "-o", p.string(), "--size", "64x48",
+                          "--color-by", color, "--wireframe", "--shading", "flat", "--view", "front"});
     ASSERT_EQ(c.code, 0) << color << ": " << c.err;
     EXPECT_EQ(png_size(read_text(p)), std::make_pair(64u, 48u)) << color;
   }
@@ -38,8 +38,8 @@ TEST_F(HedgeCli, RenderWritesAPngOfExactlyTheAskedSize) {
 
 TEST_F(HedgeCli, RenderGridPutsMeshesSideBySide) {
   const fs::path out = tmp("grid.png");
-  const Result r = run({"render", "--grid", data("tet.obj"), data("spot_control_mesh.obj"), data("anchor.off"), "-o",
-                        out.string(), "--size", "100x80", "--columns", "2"});
+  const Result r = run({"render", "--grid", data("tet.obj"), data("spot_control_mesh.obj"),
+                        data("anchor.off"), "-o", out.string(), "--size", "100x80", "--columns", "2"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto [w, h] = png_size(read_text(out));
   EXPECT_EQ(w, 200u);
@@ -56,11 +56,13 @@ TEST_F(HedgeCli, RenderHalfedgeDiagramAsPngAndSvg) {
   const std::string text = read_text(svg);
   EXPECT_EQ(text.rfind("<?xml", 0), 0u);
   std::size_t arrows = 0;
-  for (std::size_t at = text.find("class=\"halfedge"); at != std::string::npos; at = text.find("class=\"halfedge", at + 1))
+  for (std::size_t at = text.find("class=\"halfedge"); at != std::string::npos;
+       at = text.find("class=\"halfedge", at + 1))
     ++arrows;
   EXPECT_EQ(arrows, 12u);  // a tetrahedron has 12 half-edges
   // Too large for a diagram: refused, naming the limit.
-  const Result big = run({"render", "--halfedges", data("spot_triangulated.obj"), "-o", tmp("big.svg").string()});
+  const Result big =
+      run({"render", "--halfedges", data("spot_triangulated.obj"), "-o", tmp("big.svg").string()});
   EXPECT_EQ(big.code, 1);
   EXPECT_NE(big.err.find("the limit is 400"), std::string::npos) << big.err;
   EXPECT_FALSE(fs::exists(tmp("big.svg")));
@@ -85,7 +87,8 @@ TEST_F(HedgeCli, RenderRefusesBadSizesAndOutputsWithoutWriting) {
   write_text(tmp("points.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
   expect_data_error({"render", tmp("points.obj").string(), "-o", tmp("x.png").string()}, "no faces");
   // A camera at its own target.
-  expect_data_error({"render", in, "-o", tmp("x.png").string(), "--eye", "1,1,1", "--target", "1,1,1"}, "eye");
+  expect_data_error({"render", in, "-o", tmp("x.png").string(), "--eye", "1,1,1", "--target", "1,1,1"},
+                    "eye");
   EXPECT_FALSE(fs::exists(tmp("x.png")));
   EXPECT_FALSE(fs::exists(tmp("x.jpg")));
 }

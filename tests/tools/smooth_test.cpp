@@ -10,7 +10,8 @@ using namespace cli_test;
 TEST_F(HedgeCli, SmoothWritesASmootherMeshWithTheSameConnectivity) {
   const fs::path out = tmp("smooth.obj");
   for (const char* method : {"uniform", "taubin", "cotan", "implicit"}) {
-    const Result r = run({"smooth", data("spot_triangulated.obj"), out.string(), "--method", method, "--iterations", "5"});
+    const Result r =
+        run({"smooth", data("spot_triangulated.obj"), out.string(), "--method", method, "--iterations", "5"});
     ASSERT_EQ(r.code, 0) << method << ": " << r.err;
     EXPECT_NE(r.out.find(method), std::string::npos);
     const json before = run_json({"info", data("spot_triangulated.obj"), "--json"});
@@ -28,7 +29,8 @@ TEST_F(HedgeCli, SmoothRefusesBadInputWithoutWriting) {
   expect_usage_error({"smooth", data("tet.obj"), out.string(), "--method", "gaussian"});
   expect_usage_error({"smooth", data("tet.obj"), out.string(), "--iterations", "-3"});
   expect_data_error({"smooth", data("tet.obj"), out.string(), "--lambda", "2"}, "lambda");
-  expect_data_error({"smooth", data("spot_control_mesh.obj"), out.string(), "--method", "cotan"}, "triangles");
+  expect_data_error({"smooth", data("spot_control_mesh.obj"), out.string(), "--method", "cotan"},
+                    "triangles");
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -26,11 +26,15 @@ TEST_F(HedgeCli, SubdivideMultipliesTheFacesAndKeepsTheMeshValid) {
   EXPECT_NEAR(m["volume"].get<double>(), before["volume"].get<double>(), 1e-6);
 
   const fs::path split = tmp("split.obj");
-  ASSERT_EQ(run({"subdivide", data("spot_control_mesh.obj"), split.string(), "--scheme", "split-faces"}).code, 0);
+  ASSERT_EQ(run({"subdivide", data("spot_control_mesh.obj"), split.string(), "--scheme", "split-faces"}).code,
+            0);
   EXPECT_EQ(run_json({"info", split.string(), "--json"})["faces"], 732);
 
   const fs::path cc = tmp("cc.obj");
-  ASSERT_EQ(run({"subdivide", data("spot_control_mesh.obj"), cc.string(), "--scheme", "catmull-clark", "--steps", "2"}).code, 0);
+  ASSERT_EQ(run({"subdivide", data("spot_control_mesh.obj"), cc.string(), "--scheme", "catmull-clark",
+                 "--steps", "2"})
+                .code,
+            0);
   const json q = run_json({"info", cc.string(), "--json"});
   EXPECT_EQ(q["faces"], 4 * 732);
   EXPECT_TRUE(q["is_quad_mesh"].get<bool>());

@@ -14,7 +14,8 @@ TEST_F(HedgeCli, TourWritesTheContactSheetAndEveryEditedMesh) {
   const std::string sheet = read_text(out / "spot_control_mesh_tour.png");
   ASSERT_GT(sheet.size(), 24u);
   EXPECT_EQ(sheet.compare(0, 8, "\x89PNG\r\n\x1a\n"), 0);
-  for (const char* stage : {"_catmull_clark.obj", "_split.obj", "_loop.obj", "_smooth.obj", "_decimated.obj", "_fractured.obj", "_hole.obj", "_filled.obj", "_patch.obj"}) {
+  for (const char* stage : {"_catmull_clark.obj", "_split.obj", "_loop.obj", "_smooth.obj", "_decimated.obj",
+                            "_fractured.obj", "_hole.obj", "_filled.obj", "_patch.obj"}) {
     const fs::path mesh = out / (std::string("spot_control_mesh") + stage);
     EXPECT_TRUE(fs::exists(mesh)) << mesh;
     const Result v = run({"validate", mesh.string()});
@@ -22,7 +23,9 @@ TEST_F(HedgeCli, TourWritesTheContactSheetAndEveryEditedMesh) {
   }
   // The table: a header and one row per stage, every one valid.
   EXPECT_NE(r.out.find("stage"), std::string::npos);
-  for (const char* stage : {"loaded", "Catmull-Clark", "split all faces", "Loop subdivision", "smoothed", "decimated to 732 faces", "glass fracture", "faces removed", "hole filled", "detached one-ring"})
+  for (const char* stage :
+       {"loaded", "Catmull-Clark", "split all faces", "Loop subdivision", "smoothed",
+        "decimated to 732 faces", "glass fracture", "faces removed", "hole filled", "detached one-ring"})
     EXPECT_NE(r.out.find(stage), std::string::npos) << stage;
   EXPECT_EQ(r.out.find(" NO "), std::string::npos) << r.out;
   // The split stage: 180 faces of 4.4 corners on average become 732 triangles.
@@ -32,14 +35,15 @@ TEST_F(HedgeCli, TourWritesTheContactSheetAndEveryEditedMesh) {
 TEST_F(HedgeCli, TourSkipsTheSubdivisionsALargeMeshCannotAfford) {
   // spot's 180 faces have 732 corners: one Catmull-Clark step (732 quads) and the 1-to-3 split
   // (732 triangles) fit under 1000 faces; two steps (2928) and Loop after the split (2928) do not.
-  const Result r = run({"tour", data("spot_control_mesh.obj"), "--out", tmp("out").string(), "--max-faces", "1000"});
+  const Result r =
+      run({"tour", data("spot_control_mesh.obj"), "--out", tmp("out").string(), "--max-faces", "1000"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("Catmull-Clark, 1 step"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Loop subdivision                   skipped"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("split all faces (1-to-3)"), std::string::npos);
   EXPECT_FALSE(fs::exists(tmp("out") / "spot_control_mesh_loop.obj"));
-  // Without Loop's mesh, decimation and fracture take the 732 triangles of the split: a quarter is 183 faces, and
-  // collapses remove two at a time.
+  // Without Loop's mesh, decimation and fracture take the 732 triangles of the split: a quarter is 183 faces,
+  // and collapses remove two at a time.
   EXPECT_NE(r.out.find("decimated to 182 faces"), std::string::npos) << r.out;
   EXPECT_TRUE(fs::exists(tmp("out") / "spot_control_mesh_fractured.obj"));
   EXPECT_TRUE(fs::exists(tmp("out") / "spot_control_mesh_tour.png"));

@@ -39,8 +39,8 @@ int run_convert(const ConvertOptions& options) {
 
 Command add_convert_command(CLI::App& parent) {
   auto options = std::make_shared<ConvertOptions>();
-  CLI::App* app =
-      parent.add_subcommand("convert", "Convert between OBJ, OFF, PLY, STL and glTF (.gltf, .glb); formats from the extensions");
+  CLI::App* app = parent.add_subcommand(
+      "convert", "Convert between OBJ, OFF, PLY, STL and glTF (.gltf, .glb); formats from the extensions");
   app->add_option("IN", options->input, "Input mesh file")->required();
   app->add_option("OUT", options->output, "Output mesh file; missing folders are created")->required();
   app->add_flag("--ascii", options->ascii, "Write PLY and STL as text instead of binary");

@@ -1,4 +1,6 @@
 // hedge decimate IN OUT: read, decimate by quadric-ranked edge collapses, write; formats by extension.
+#include "hedge/algorithms/decimate.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -9,7 +11,6 @@
 #include <string>
 
 #include "commands.h"
-#include "hedge/algorithms/decimate.h"
 #include "hedge/error.h"
 #include "load.h"
 #include "numbers.h"
@@ -40,7 +41,9 @@ int run_decimate(const DecimateCommandOptions& o) {
   LoadedMesh loaded = load_mesh(o.input, o.load);
   SurfaceMesh& mesh = loaded.mesh;
   DecimateOptions d;
-  if (o.ratio > 0) d.target_vertices = std::max<std::size_t>(1, std::size_t(std::llround(o.ratio * double(mesh.n_vertices()))));
+  if (o.ratio > 0)
+    d.target_vertices =
+        std::max<std::size_t>(1, std::size_t(std::llround(o.ratio * double(mesh.n_vertices()))));
   if (o.vertices > 0) d.target_vertices = o.vertices;
   d.target_faces = o.faces;
   d.max_error = o.max_error;
@@ -57,10 +60,12 @@ int run_decimate(const DecimateCommandOptions& o) {
   d.progress = bar.callback();
   const DecimateResult r = decimate(mesh, d);
   bar.finish();
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   save_mesh(mesh, o.output, o.ascii);
-  std::printf("decimated %s -> %s: %zu -> %zu vertices, %zu -> %zu faces, %zu collapses, max error %.6g, %.1f ms\n",
-              o.input.c_str(), o.output.c_str(), v0, r.vertices, f0, r.faces, r.collapses, r.max_error, ms);
+  std::printf(
+      "decimated %s -> %s: %zu -> %zu vertices, %zu -> %zu faces, %zu collapses, max error %.6g, %.1f ms\n",
+      o.input.c_str(), o.output.c_str(), v0, r.vertices, f0, r.faces, r.collapses, r.max_error, ms);
   return kExitOk;
 }
 
@@ -68,35 +73,40 @@ int run_decimate(const DecimateCommandOptions& o) {
 
 Command add_decimate_command(CLI::App& parent) {
   auto o = std::make_shared<DecimateCommandOptions>();
-  CLI::App* app = parent.add_subcommand(
-      "decimate",
-      "Decimate a triangle mesh by quadric-error edge collapses to a vertex or face count or an error, and write it");
+  CLI::App* app = parent.add_subcommand("decimate",
+                                        "Decimate a triangle mesh by quadric-error edge collapses to a "
+                                        "vertex or face count or an error, and write it");
   app->add_option("IN", o->input, "Input mesh file (triangles)")->required();
   app->add_option("OUT", o->output, "Output mesh file; missing folders are created")->required();
   auto* ratio = app->add_option("--ratio", o->ratio, "Keep this fraction of the vertices, in (0, 1]")
                     ->transform(real_number(0, 1, true));
   auto* faces = app->add_option("--faces", o->faces, "Stop at this many faces")
                     ->transform(whole_number<std::size_t>(1));
-  auto* vertices =
-      app->add_option("--vertices", o->vertices, "Stop at this many vertices")
-          ->transform(whole_number<std::size_t>(1));
+  auto* vertices = app->add_option("--vertices", o->vertices, "Stop at this many vertices")
+                       ->transform(whole_number<std::size_t>(1));
   ratio->excludes(vertices);
-  app->add_option("--max-error", o->max_error,
-                  "Stop before a collapse that would move the surface by more than this distance (model units)")
+  app->add_option(
+         "--max-error", o->max_error,
+         "Stop before a collapse that would move the surface by more than this distance (model units)")
       ->transform(real_number(0));
-  app->add_option("--boundary-weight", o->boundary_weight, "Weight of the planes that keep open boundaries (0: none)")
+  app->add_option("--boundary-weight", o->boundary_weight,
+                  "Weight of the planes that keep open boundaries (0: none)")
       ->capture_default_str()
       ->transform(real_number(0));
   app->add_flag("--keep-boundary", o->keep_boundary, "Boundary vertices never move and are never removed");
-  app->add_option("--feature-angle", o->feature_angle,
-                  "Edges whose faces meet at more than this dihedral angle (degrees) are kept like boundaries")
+  app->add_option(
+         "--feature-angle", o->feature_angle,
+         "Edges whose faces meet at more than this dihedral angle (degrees) are kept like boundaries")
       ->capture_default_str()
       ->transform(real_number(0));
-  app->add_option("--feature-weight", o->feature_weight, "Weight of the planes that keep feature edges (0: none)")
+  app->add_option("--feature-weight", o->feature_weight,
+                  "Weight of the planes that keep feature edges (0: none)")
       ->capture_default_str()
       ->transform(real_number(0));
-  app->add_flag("--break-seams", o->break_seams, "Lift the seam rule of decimation (collapses off a UV seam stay refused)");
-  app->add_option("--attribute-weight", o->attribute_weight, "Weight of texture distortion in the error (0: none)")
+  app->add_flag("--break-seams", o->break_seams,
+                "Lift the seam rule of decimation (collapses off a UV seam stay refused)");
+  app->add_option("--attribute-weight", o->attribute_weight,
+                  "Weight of texture distortion in the error (0: none)")
       ->capture_default_str()
       ->transform(real_number(0));
   app->add_option("--max-normal-change", o->max_normal_change,

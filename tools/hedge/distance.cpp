@@ -1,4 +1,6 @@
 // hedge distance A B: how far apart two surfaces are, as the sampled Hausdorff distance.
+#include "hedge/algorithms/distance.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -8,7 +10,6 @@
 #include <string>
 
 #include "commands.h"
-#include "hedge/algorithms/distance.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/error.h"
 #include "load.h"
@@ -28,13 +29,16 @@ struct DistanceCommandOptions {
 };
 
 nlohmann::json side_json(const OneSidedDistance& d) {
-  return {{"max", d.max}, {"mean", d.mean}, {"points", d.points},
+  return {{"max", d.max},
+          {"mean", d.mean},
+          {"points", d.points},
           {"farthest", {d.farthest.x, d.farthest.y, d.farthest.z}}};
 }
 
 void print_side(const char* label, const OneSidedDistance& d) {
-  std::cout << "  " << std::left << std::setw(22) << label << "max " << d.max << ", mean " << d.mean << ", farthest at ("
-            << d.farthest.x << ", " << d.farthest.y << ", " << d.farthest.z << "), " << d.points << " points\n";
+  std::cout << "  " << std::left << std::setw(22) << label << "max " << d.max << ", mean " << d.mean
+            << ", farthest at (" << d.farthest.x << ", " << d.farthest.y << ", " << d.farthest.z << "), "
+            << d.points << " points\n";
 }
 
 int run_distance(const DistanceCommandOptions& o) {
@@ -51,7 +55,8 @@ int run_distance(const DistanceCommandOptions& o) {
   }
   // Relative to the size of A, which is what a tolerance is usually stated against.
   const Vec3 size = bounding_box(a.mesh).size();
-  const double diagonal = std::sqrt(double(size.x) * size.x + double(size.y) * size.y + double(size.z) * size.z);
+  const double diagonal =
+      std::sqrt(double(size.x) * size.x + double(size.y) * size.y + double(size.z) * size.z);
   const double relative = diagonal > 0 ? d.distance / diagonal : 0;
   if (o.json) {
     const nlohmann::json j = {{"a", o.a},
@@ -65,9 +70,10 @@ int run_distance(const DistanceCommandOptions& o) {
                               {"b_to_a", side_json(d.b_to_a)}};
     std::cout << j.dump(2) << '\n';
   } else {
-    std::cout << o.a << " <-> " << o.b << " (" << o.samples << " face samples on each, seed " << o.seed << ")\n";
-    std::cout << "  " << std::left << std::setw(22) << "Hausdorff distance" << d.distance << " (" << 100 * relative
-              << "% of the bounding-box diagonal of A)\n";
+    std::cout << o.a << " <-> " << o.b << " (" << o.samples << " face samples on each, seed " << o.seed
+              << ")\n";
+    std::cout << "  " << std::left << std::setw(22) << "Hausdorff distance" << d.distance << " ("
+              << 100 * relative << "% of the bounding-box diagonal of A)\n";
     std::cout << "  " << std::left << std::setw(22) << "mean distance" << d.mean << '\n';
     print_side("A to B", d.a_to_b);
     print_side("B to A", d.b_to_a);
@@ -80,10 +86,13 @@ int run_distance(const DistanceCommandOptions& o) {
 Command add_distance_command(CLI::App& parent) {
   auto options = std::make_shared<DistanceCommandOptions>();
   CLI::App* app = parent.add_subcommand(
-      "distance", "Sampled symmetric Hausdorff distance and mean distance between the surfaces of two meshes");
+      "distance",
+      "Sampled symmetric Hausdorff distance and mean distance between the surfaces of two meshes");
   app->add_option("A", options->a, "First mesh file")->required();
   app->add_option("B", options->b, "Second mesh file")->required();
-  app->add_option("--samples", options->samples, "Points drawn on the faces of each surface, besides its vertices (at most 100000000; 8 bytes each)")
+  app->add_option(
+         "--samples", options->samples,
+         "Points drawn on the faces of each surface, besides its vertices (at most 100000000; 8 bytes each)")
       ->capture_default_str()
       ->transform(whole_number<std::size_t>(0, kMaxDistanceSamples));
   app->add_option("--seed", options->seed, "Seed of the draws")

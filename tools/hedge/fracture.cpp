@@ -1,5 +1,9 @@
 // hedge fracture IN --impact x,y,z --material NAME|FILE.json --seed S -o DIR: break a mesh at an
 // impact and write the remaining mesh, one OBJ per shard and summary.json into DIR.
+#include "hedge/algorithms/fracture.h"
+
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -12,10 +16,7 @@
 #include <system_error>
 #include <vector>
 
-#include <unistd.h>
-
 #include "commands.h"
-#include "hedge/algorithms/fracture.h"
 #include "hedge/error.h"
 #include "load.h"
 #include "material_json.h"
@@ -106,7 +107,8 @@ int run_fracture(const FractureCommandOptions& o) {
   SurfaceMesh& mesh = loaded.mesh;
   const auto start = std::chrono::steady_clock::now();
   const FractureResult r = fracture(mesh, impact, f);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
   // Everything is computed; only now is DIR touched. Each file is replaced atomically and
   // summary.json comes last, so a summary always describes complete files.
@@ -120,7 +122,8 @@ int run_fracture(const FractureCommandOptions& o) {
   summary["seed"] = o.seed;
   summary["thickness"] = o.thickness;
   summary["density"] = o.density;
-  summary["remaining"] = {{"file", "remaining.obj"}, {"faces", mesh.n_faces()}, {"vertices", mesh.n_vertices()}};
+  summary["remaining"] = {
+      {"file", "remaining.obj"}, {"faces", mesh.n_faces()}, {"vertices", mesh.n_vertices()}};
   mesh.garbage_collection();
   save_mesh(mesh, (dir / "remaining.obj").string(), false);
   json shards = json::array();
@@ -160,8 +163,8 @@ int run_fracture(const FractureCommandOptions& o) {
                       {"hulls", r.seconds.hulls}};
     std::printf("%s\n", out.dump(2).c_str());
   } else {
-    std::printf("fractured %s at (%g, %g, %g) with %s: %zu shards into %s, %.2f ms\n", o.input.c_str(), impact.x,
-                impact.y, impact.z, f.material.name.c_str(), r.shards.size(), o.output.c_str(), ms);
+    std::printf("fractured %s at (%g, %g, %g) with %s: %zu shards into %s, %.2f ms\n", o.input.c_str(),
+                impact.x, impact.y, impact.z, f.material.name.c_str(), r.shards.size(), o.output.c_str(), ms);
   }
   return kExitOk;
 }
@@ -171,9 +174,11 @@ int run_fracture(const FractureCommandOptions& o) {
 Command add_fracture_command(CLI::App& parent) {
   auto o = std::make_shared<FractureCommandOptions>();
   CLI::App* app = parent.add_subcommand(
-      "fracture", "Break a mesh at an impact point into shards; write the rest, one OBJ per shard and summary.json");
+      "fracture",
+      "Break a mesh at an impact point into shards; write the rest, one OBJ per shard and summary.json");
   app->add_option("IN", o->input, "Input mesh file")->required();
-  app->add_option("--impact", o->impact, "The impact point x,y,z, on (or within the tolerance of) the surface")
+  app->add_option("--impact", o->impact,
+                  "The impact point x,y,z, on (or within the tolerance of) the surface")
       ->required()
       ->check(CLI::Validator(
           [](std::string& s) -> std::string {
@@ -185,21 +190,24 @@ Command add_fracture_command(CLI::App& parent) {
             }
           },
           "x,y,z"));
-  app->add_option("--material", o->material, "glass, stone, wood, ice, or a material file FILE.json (docs/fracture.md)")
+  app->add_option("--material", o->material,
+                  "glass, stone, wood, ice, or a material file FILE.json (docs/fracture.md)")
       ->capture_default_str();
   app->add_option("--seed", o->seed, "Seed of the break points")
       ->capture_default_str()
       ->transform(whole_number<std::uint64_t>(0));
   app->add_option("-o,--output", o->output, "Output folder (created if missing)")->required();
-  app->add_option("--thickness", o->thickness, "Extrude each shard into a solid this thick (model units); 0: none")
+  app->add_option("--thickness", o->thickness,
+                  "Extrude each shard into a solid this thick (model units); 0: none")
       ->capture_default_str()
       ->transform(real_number(0));
   app->add_option("--density", o->density, "Mass per unit volume for the mass properties")
       ->capture_default_str()
       ->transform(real_number(0, kInf, true));
-  app->add_option("--tolerance", o->tolerance,
-                  "Largest distance from the impact to the surface (model units); 0: 1e-3 of the nearest face's "
-                  "longest edge")
+  app->add_option(
+         "--tolerance", o->tolerance,
+         "Largest distance from the impact to the surface (model units); 0: 1e-3 of the nearest face's "
+         "longest edge")
       ->capture_default_str()
       ->transform(real_number(0));
   app->add_flag("--json", o->json, "Print the summary as JSON, with timings");

@@ -57,7 +57,8 @@ LoadedMesh load_mesh(const std::string& path, const LoadOptions& options) {
   LoadedMesh loaded;
   loaded.format = format_from_path(path);
   try {
-    loaded.mesh = read_mesh(path, build_options(loaded.format, options), read_options(options), &loaded.report);
+    loaded.mesh =
+        read_mesh(path, build_options(loaded.format, options), read_options(options), &loaded.report);
   } catch (const IoError&) {
     throw;  // already names the file
   } catch (const TopologyError& e) {

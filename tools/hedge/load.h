@@ -12,9 +12,9 @@
 namespace hedge::cli {
 
 struct LoadOptions {
-  bool strict = false;     //!< TopologyPolicy::strict instead of repairing
-  std::string weld;        //!< "none", "exact", "epsilon"; empty keeps the format's default
-  double weld_eps = -1.0;  //!< relative welding tolerance; negative when not given
+  bool strict = false;               //!< TopologyPolicy::strict instead of repairing
+  std::string weld;                  //!< "none", "exact", "epsilon"; empty keeps the format's default
+  double weld_eps = -1.0;            //!< relative welding tolerance; negative when not given
   bool no_external_buffers = false;  //!< glTF: refuse buffers stored in separate files
   //! --max-memory: the budget of reading a glTF (else the reader's own default, relative to the
   //! file's size) and of the work a command's numbers size (else the memory available).

@@ -39,18 +39,10 @@ int main(int argc, char** argv) {
 
   // The command table: one line per subcommand.
   const Command commands[] = {
-      add_info_command(app),
-      add_validate_command(app),
-      add_convert_command(app),
-      add_stress_command(app),
-      add_render_buffers_command(app),
-      add_render_command(app),
-      add_tour_command(app),
-      add_smooth_command(app),
-      add_subdivide_command(app),
-      add_decimate_command(app),
-      add_distance_command(app),
-      add_fracture_command(app),
+      add_info_command(app),     add_validate_command(app),       add_convert_command(app),
+      add_stress_command(app),   add_render_buffers_command(app), add_render_command(app),
+      add_tour_command(app),     add_smooth_command(app),         add_subdivide_command(app),
+      add_decimate_command(app), add_distance_command(app),       add_fracture_command(app),
   };
 
   try {

@@ -39,7 +39,9 @@ FractureMaterial parse_material_json(std::string_view text, const std::string& p
   for (const auto& item : j.items()) {
     bool ok = false;
     for (const char* k : known) ok |= item.key() == k;
-    if (!ok) bad_field(path, item.key(), "is unknown (fields: name, rings, grain, grain_stretch, refine_edge, absolute)");
+    if (!ok)
+      bad_field(path, item.key(),
+                "is unknown (fields: name, rings, grain, grain_stretch, refine_edge, absolute)");
   }
   FractureMaterial m;
   m.name = std::filesystem::path(path).stem().string();

@@ -33,12 +33,28 @@ std::optional<std::uint64_t> parse_memory_size(std::string_view text) {
   int shift = 0;
   if (!unit.empty()) {
     switch (unit.front()) {
-      case 'K': case 'k': shift = 10; break;
-      case 'M': case 'm': shift = 20; break;
-      case 'G': case 'g': shift = 30; break;
-      case 'T': case 't': shift = 40; break;
-      case 'B': case 'b': shift = -1; break;
-      default: return std::nullopt;
+      case 'K':
+      case 'k':
+        shift = 10;
+        break;
+      case 'M':
+      case 'm':
+        shift = 20;
+        break;
+      case 'G':
+      case 'g':
+        shift = 30;
+        break;
+      case 'T':
+      case 't':
+        shift = 40;
+        break;
+      case 'B':
+      case 'b':
+        shift = -1;
+        break;
+      default:
+        return std::nullopt;
     }
     unit.remove_prefix(1);
     if (shift == -1) {
@@ -60,10 +76,11 @@ void add_max_memory_option(CLI::App& command, MemoryBudget& budget) {
                   "for the work the command's numbers ask for, the memory the machine has available now")
       ->check(CLI::Validator(
           [](std::string& s) -> std::string {
-            return parse_memory_size(s) ? ""
-                                        : "'" + s +
-                                              "' is not a memory size: give a whole number of bytes above 0, "
-                                              "optionally with a unit K, M, G or T (such as 512M or 4G), at most 2^64 bytes";
+            return parse_memory_size(s)
+                       ? ""
+                       : "'" + s +
+                             "' is not a memory size: give a whole number of bytes above 0, "
+                             "optionally with a unit K, M, G or T (such as 512M or 4G), at most 2^64 bytes";
           },
           "SIZE"));
 }
@@ -89,12 +106,13 @@ std::uint64_t effective_budget(const MemoryBudget& budget) {
   return available_memory();
 }
 
-
-void check_memory(double needed, const MemoryBudget& budget, const std::string& what, const std::string& advice) {
+void check_memory(double needed, const MemoryBudget& budget, const std::string& what,
+                  const std::string& advice) {
   const std::uint64_t limit = effective_budget(budget);
   if (needed <= double(limit)) return;
-  throw InvalidInputError(what + " would need about " + bytes_text(needed) + " (estimated), more than the budget of " +
-                          bytes_text(double(limit)) + ", " + budget_source(budget) + "; " + advice);
+  throw InvalidInputError(what + " would need about " + bytes_text(needed) +
+                          " (estimated), more than the budget of " + bytes_text(double(limit)) + ", " +
+                          budget_source(budget) + "; " + advice);
 }
 
 }  // namespace hedge::cli

@@ -36,6 +36,7 @@ std::uint64_t available_memory();
 
 //! \throw InvalidInputError unless `needed` fits the budget; the message says what needs how much,
 //!   the budget and where it comes from, and `advice` (such as "use fewer --steps").
-void check_memory(double needed, const MemoryBudget& budget, const std::string& what, const std::string& advice);
+void check_memory(double needed, const MemoryBudget& budget, const std::string& what,
+                  const std::string& advice);
 
 }  // namespace hedge::cli

@@ -1,10 +1,10 @@
 #include "mesh_stats.h"
 
-#include "hedge/algorithms/geometry.h"
-#include "hedge/algorithms/reorder.h"
-
 #include <algorithm>
 #include <numeric>
+
+#include "hedge/algorithms/geometry.h"
+#include "hedge/algorithms/reorder.h"
 
 namespace hedge::cli {
 
@@ -113,7 +113,8 @@ nlohmann::json stats_json(const MeshStats& s) {
   j["area"] = s.area;
   j["volume"] = s.volume ? nlohmann::json(*s.volume) : nlohmann::json(nullptr);
   j["cache_miss_ratio"] = s.cache_miss_ratio;
-  j["bounding_box"] = {{"min", {s.box_min.x, s.box_min.y, s.box_min.z}}, {"max", {s.box_max.x, s.box_max.y, s.box_max.z}}};
+  j["bounding_box"] = {{"min", {s.box_min.x, s.box_min.y, s.box_min.z}},
+                       {"max", {s.box_max.x, s.box_max.y, s.box_max.z}}};
   j["valid"] = s.problems.empty();
   j["problems"] = s.problems;
   return j;

@@ -96,9 +96,9 @@ CLI::Validator real_number(double min, double max, bool min_open) {
     bound = "must be from " + number_text(min) + " to " + number_text(max);
   }
   const std::string description = std::isinf(max) && std::isinf(min) ? std::string("NUMBER")
-                                  : std::isinf(max)                    ? (min_open ? "NUMBER>" : "NUMBER>=") + number_text(min)
-                                                  : (min_open ? "NUMBER in (" : "NUMBER in [") + number_text(min) +
-                                                        ", " + number_text(max) + "]";
+                                  : std::isinf(max) ? (min_open ? "NUMBER>" : "NUMBER>=") + number_text(min)
+                                                    : (min_open ? "NUMBER in (" : "NUMBER in [") +
+                                                          number_text(min) + ", " + number_text(max) + "]";
   return CLI::Validator(
       [min, max, min_open, bound](std::string& text) -> std::string {
         double v = 0;

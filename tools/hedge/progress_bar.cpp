@@ -22,7 +22,8 @@ std::optional<std::string> ProgressBar::setting() {
   return std::nullopt;
 }
 
-ProgressBar::ProgressBar(std::string label) : label_(std::move(label)), start_(std::chrono::steady_clock::now()) {
+ProgressBar::ProgressBar(std::string label)
+    : label_(std::move(label)), start_(std::chrono::steady_clock::now()) {
   const std::string s = setting().value_or("auto");
   enabled_ = s == "always" || (s == "auto" && ::isatty(STDERR_FILENO) == 1);
   delayed_ = s != "always";

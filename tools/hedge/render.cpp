@@ -61,7 +61,9 @@ std::optional<std::pair<int, int>> parse_size(const std::string& text) {
   const std::optional<long> h = parse_integer<long>(std::string_view(text).substr(x + 1));
   if (!w || !h) return std::nullopt;
   // A side beyond an int is refused by check_size all the same: clamp it rather than wrap it.
-  auto clamp = [](long v) { return int(std::clamp<long>(v, std::numeric_limits<int>::min(), std::numeric_limits<int>::max())); };
+  auto clamp = [](long v) {
+    return int(std::clamp<long>(v, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
+  };
   return std::pair{clamp(*w), clamp(*h)};
 }
 
@@ -74,7 +76,8 @@ std::string size_check(const std::string& text) {
     const bool digits = !side.empty() && side.find_first_not_of("0123456789") == std::string::npos;
     if (!v && !digits) return expected;
     if (!v || *v < 1 || *v > kMaxSide)
-      return "each side must be from 1 to " + std::to_string(kMaxSide) + " pixels, got " + side + " in '" + text + "'";
+      return "each side must be from 1 to " + std::to_string(kMaxSide) + " pixels, got " + side + " in '" +
+             text + "'";
   }
   const auto size = parse_size(text);
   try {
@@ -88,7 +91,8 @@ std::string size_check(const std::string& text) {
 bool ends_with(const std::string& s, const std::string& suffix) {
   if (s.size() < suffix.size()) return false;
   std::string tail = s.substr(s.size() - suffix.size());
-  std::transform(tail.begin(), tail.end(), tail.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::transform(tail.begin(), tail.end(), tail.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
   return tail == suffix;
 }
 
@@ -123,10 +127,10 @@ Image picture_of(const std::string& path, const RenderCommandOptions& o, int w, 
   r.supersample = o.supersample;
   r.shading = o.shading == "flat" ? Shading::flat : Shading::smooth;
   static const std::unordered_map<std::string, ColorBy> kColorBy = {{"none", ColorBy::none},
-                                                                      {"face", ColorBy::face},
-                                                                      {"shard", ColorBy::shard},
-                                                                      {"curvature", ColorBy::curvature},
-                                                                      {"valence", ColorBy::valence}};
+                                                                    {"face", ColorBy::face},
+                                                                    {"shard", ColorBy::shard},
+                                                                    {"curvature", ColorBy::curvature},
+                                                                    {"valence", ColorBy::valence}};
   r.color_by = kColorBy.at(o.color_by);
   r.wireframe = o.wireframe;
   r.feature_angle = o.feature_angle;
@@ -155,7 +159,8 @@ int run_render(const RenderCommandOptions& o) {
     const LoadedMesh loaded = load_mesh(o.input, o.load);
     DiagramOptions d;
     d.max_faces = o.max_faces;
-    const Camera camera = o.eye.empty() ? diagram_camera(loaded.mesh, double(w) / h) : camera_for(loaded.mesh, o, 1);
+    const Camera camera =
+        o.eye.empty() ? diagram_camera(loaded.mesh, double(w) / h) : camera_for(loaded.mesh, o, 1);
     if (!parent.empty()) std::filesystem::create_directories(parent);
     if (svg) {
       SvgCanvas canvas(w, h);
@@ -167,14 +172,16 @@ int run_render(const RenderCommandOptions& o) {
       draw_halfedge_diagram(loaded.mesh, camera, canvas, d);
       write_png(image, o.output);
     }
-    what = "the half-edge diagram of " + o.input + " (" + std::to_string(loaded.mesh.n_halfedges()) + " half-edges)";
+    what = "the half-edge diagram of " + o.input + " (" + std::to_string(loaded.mesh.n_halfedges()) +
+           " half-edges)";
   } else if (!o.grid.empty()) {
     // The sheet's size and memory before any panel is drawn: every panel is kept for the sheet.
     int sheet_w = 0, sheet_h = 0;
     check_contact_sheet(o.grid.size(), w, h, o.columns, &sheet_w, &sheet_h);
-    check_memory(picture_bytes(w, h, o.supersample) + 3.0 * w * h * double(o.grid.size()) + 3.0 * sheet_w * sheet_h,
-                 o.load.memory, "a sheet of " + std::to_string(o.grid.size()) + " pictures of " + o.size,
-                 "use a smaller --size, a lower --supersample or fewer meshes");
+    check_memory(
+        picture_bytes(w, h, o.supersample) + 3.0 * w * h * double(o.grid.size()) + 3.0 * sheet_w * sheet_h,
+        o.load.memory, "a sheet of " + std::to_string(o.grid.size()) + " pictures of " + o.size,
+        "use a smaller --size, a lower --supersample or fewer meshes");
     std::vector<Panel> panels;
     for (const std::string& path : o.grid) {
       LoadedMesh loaded;
@@ -196,7 +203,8 @@ int run_render(const RenderCommandOptions& o) {
     what = o.input + " (" + std::to_string(loaded.mesh.n_faces()) + " faces, " + std::to_string(w) + "x" +
            std::to_string(h) + ")";
   }
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   std::printf("wrote %s: %s in %.0f ms\n", o.output.c_str(), what.c_str(), ms);
   return kExitOk;
 }
@@ -206,39 +214,57 @@ int run_render(const RenderCommandOptions& o) {
 Command add_render_command(CLI::App& parent) {
   auto o = std::make_shared<RenderCommandOptions>();
   CLI::App* app = parent.add_subcommand(
-      "render", "Draw a mesh to a PNG picture without a GPU: shaded, with highlighted boundary, feature and "
-                "repaired elements; several meshes side by side (--grid); or the half-edge diagram of a small "
-                "mesh (--halfedges, PNG or SVG)");
+      "render",
+      "Draw a mesh to a PNG picture without a GPU: shaded, with highlighted boundary, feature and "
+      "repaired elements; several meshes side by side (--grid); or the half-edge diagram of a small "
+      "mesh (--halfedges, PNG or SVG)");
   app->add_option("FILE", o->input, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)");
   app->add_option("-o,--output", o->output, "Picture to write: .png, or .svg with --halfedges")->required();
   app->add_option("--grid", o->grid, "Several mesh files, drawn side by side with captions")->expected(1, -1);
   app->add_option("--columns", o->columns, "Pictures per row with --grid (0: all in one row)")
       ->transform(whole_number<int>(0));
-  app->add_option("--size", o->size, "Picture size WIDTHxHEIGHT (per mesh with --grid)")->capture_default_str()
+  app->add_option("--size", o->size, "Picture size WIDTHxHEIGHT (per mesh with --grid)")
+      ->capture_default_str()
       ->check(CLI::Validator(size_check, "WxH", "size"));
-  app->add_option("--view", o->view, std::string("Camera: ") + view_names())->capture_default_str()
+  app->add_option("--view", o->view, std::string("Camera: ") + view_names())
+      ->capture_default_str()
       ->check(CLI::IsMember({"front", "back", "left", "right", "top", "bottom", "iso"}));
-  app->add_option("--eye", o->eye, "Explicit camera position x,y,z (with --target)")->delimiter(',')->expected(3)
+  app->add_option("--eye", o->eye, "Explicit camera position x,y,z (with --target)")
+      ->delimiter(',')
+      ->expected(3)
       ->transform(real_number(-kInf, kInf));
-  app->add_option("--target", o->target, "Point the explicit camera looks at, x,y,z")->delimiter(',')->expected(3)
+  app->add_option("--target", o->target, "Point the explicit camera looks at, x,y,z")
+      ->delimiter(',')
+      ->expected(3)
       ->transform(real_number(-kInf, kInf));
-  app->add_option("--up", o->up, "Up direction of the explicit camera, x,y,z (default 0,1,0)")->delimiter(',')->expected(3)
+  app->add_option("--up", o->up, "Up direction of the explicit camera, x,y,z (default 0,1,0)")
+      ->delimiter(',')
+      ->expected(3)
       ->transform(real_number(-kInf, kInf));
-  app->add_option("--fov", o->fov, "Vertical field of view in degrees of the explicit camera (0: orthographic)")->capture_default_str()
+  app->add_option("--fov", o->fov,
+                  "Vertical field of view in degrees of the explicit camera (0: orthographic)")
+      ->capture_default_str()
       ->transform(real_number(0, 179));
-  app->add_option("--shading", o->shading, "flat or smooth")->capture_default_str()->check(CLI::IsMember({"flat", "smooth"}));
-  app->add_option("--color-by", o->color_by, "none, face, shard (connected piece), curvature or valence")->capture_default_str()
+  app->add_option("--shading", o->shading, "flat or smooth")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"flat", "smooth"}));
+  app->add_option("--color-by", o->color_by, "none, face, shard (connected piece), curvature or valence")
+      ->capture_default_str()
       ->check(CLI::IsMember({"none", "face", "shard", "curvature", "valence"}));
   app->add_flag("--wireframe", o->wireframe, "Draw every edge");
   app->add_option("--feature-angle", o->feature_angle,
-                  "Highlight edges whose faces meet at more than this angle, in degrees (0: none)")->capture_default_str()
+                  "Highlight edges whose faces meet at more than this angle, in degrees (0: none)")
+      ->capture_default_str()
       ->transform(real_number(0, 180));
-  app->add_option("--supersample", o->supersample, "Samples per pixel along each axis, 1..4 (anti-aliasing)")->capture_default_str()
+  app->add_option("--supersample", o->supersample, "Samples per pixel along each axis, 1..4 (anti-aliasing)")
+      ->capture_default_str()
       ->transform(whole_number<int>(1, 4));
-  app->add_option("--threads", o->threads, "Threads (0: every core, at most 16 are used)")->capture_default_str()
+  app->add_option("--threads", o->threads, "Threads (0: every core, at most 16 are used)")
+      ->capture_default_str()
       ->transform(whole_number<unsigned>(0));
   app->add_flag("--halfedges", o->halfedges, "Draw the half-edge diagram of a small mesh instead");
-  app->add_option("--max-faces", o->max_faces, "Largest mesh --halfedges draws")->capture_default_str()
+  app->add_option("--max-faces", o->max_faces, "Largest mesh --halfedges draws")
+      ->capture_default_str()
       ->transform(whole_number<std::size_t>(1));
   add_load_options(*app, o->load);
   // Command-line mistakes are usage errors (exit 2), found while parsing.

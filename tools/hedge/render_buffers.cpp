@@ -6,12 +6,12 @@
 #include <memory>
 
 #include "commands.h"
-#include "support/random_edits.h"
 #include "hedge/render/render_sync.h"
 #include "load.h"
 #include "memory_budget.h"
-#include "numbers.h"
 #include "mesh_stats.h"
+#include "numbers.h"
+#include "support/random_edits.h"
 
 namespace hedge::cli {
 
@@ -76,12 +76,17 @@ int run_render_buffers(const RenderBuffersOptions& options) {
     j["triangles"] = start_triangles;
     j["seam_splits"] = seams;
     j["vertex_stride_bytes"] = layout.stride * sizeof(float);
-    j["layout"] = {{"interleaved", layout.interleaved}, {"position", layout.position}, {"normal", layout.normal},
-                   {"texcoord", layout.texcoord}, {"color", layout.color}};
+    j["layout"] = {{"interleaved", layout.interleaved},
+                   {"position", layout.position},
+                   {"normal", layout.normal},
+                   {"texcoord", layout.texcoord},
+                   {"color", layout.color}};
     j["full_upload_bytes"] = full_bytes;
-    j["edits"] = {{"requested", options.edits}, {"applied", applied}, {"seed", options.seed},
-                  {"median_bytes", med}, {"max_bytes", worst}, {"total_bytes", total},
-                  {"buffer_growths", resized}, {"median_fraction_of_full", full_bytes ? med / double(full_bytes) : 0}};
+    j["edits"] = {
+        {"requested", options.edits}, {"applied", applied},
+        {"seed", options.seed},       {"median_bytes", med},
+        {"max_bytes", worst},         {"total_bytes", total},
+        {"buffer_growths", resized},  {"median_fraction_of_full", full_bytes ? med / double(full_bytes) : 0}};
     j["valid"] = valid;
     std::cout << j.dump(2) << '\n';
   } else {
@@ -91,13 +96,15 @@ int run_render_buffers(const RenderBuffersOptions& options) {
     std::cout << "  triangles:       " << start_triangles << " (" << 3 * start_triangles << " indices)\n";
     std::cout << "  vertex layout:   " << layout.stride * sizeof(float) << " bytes: position"
               << (layout.normal >= 0 ? ", normal" : "") << (layout.texcoord >= 0 ? ", texcoord" : "")
-              << (layout.color >= 0 ? ", color" : "") << (layout.interleaved ? " (interleaved)" : " (separate streams)")
-              << '\n';
+              << (layout.color >= 0 ? ", color" : "")
+              << (layout.interleaved ? " (interleaved)" : " (separate streams)") << '\n';
     std::cout << "  full upload:     " << full_bytes << " bytes\n";
-    std::cout << "sample: " << options.edits << " random local edits (" << applied << " applied), sync after each\n";
+    std::cout << "sample: " << options.edits << " random local edits (" << applied
+              << " applied), sync after each\n";
     std::cout << "  bytes per sync:  median " << med << ", max " << worst << ", total " << total << '\n';
     if (full_bytes > 0)
-      std::cout << "  median sync is " << (med > 0 ? double(full_bytes) / med : 0) << "x smaller than a full upload\n";
+      std::cout << "  median sync is " << (med > 0 ? double(full_bytes) / med : 0)
+                << "x smaller than a full upload\n";
     std::cout << "  buffer growths:  " << resized << '\n';
     std::cout << (valid ? "mesh valid after the edits\n" : "mesh INVALID after the edits\n");
   }

@@ -1,11 +1,12 @@
 // hedge smooth IN OUT: read, smooth the positions, write; formats by extension.
+#include "hedge/algorithms/smooth.h"
+
 #include <chrono>
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include "commands.h"
-#include "hedge/algorithms/smooth.h"
 #include "load.h"
 #include "numbers.h"
 #include "progress_bar.h"
@@ -42,10 +43,11 @@ int run_smooth(const SmoothCommandOptions& o) {
   s.progress = bar.callback();
   smooth(loaded.mesh, s);
   bar.finish();
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   save_mesh(loaded.mesh, o.output, o.ascii);
-  std::printf("smoothed %s -> %s: %s, %d iterations, %zu vertices, %.1f ms\n", o.input.c_str(), o.output.c_str(),
-              o.method.c_str(), o.iterations, loaded.mesh.n_vertices(), ms);
+  std::printf("smoothed %s -> %s: %s, %d iterations, %zu vertices, %.1f ms\n", o.input.c_str(),
+              o.output.c_str(), o.method.c_str(), o.iterations, loaded.mesh.n_vertices(), ms);
   return kExitOk;
 }
 
@@ -54,17 +56,22 @@ int run_smooth(const SmoothCommandOptions& o) {
 Command add_smooth_command(CLI::App& parent) {
   auto o = std::make_shared<SmoothCommandOptions>();
   CLI::App* app = parent.add_subcommand(
-      "smooth", "Smooth a mesh's vertex positions (boundary fixed unless --free-boundary) and write the result");
+      "smooth",
+      "Smooth a mesh's vertex positions (boundary fixed unless --free-boundary) and write the result");
   app->add_option("IN", o->input, "Input mesh file")->required();
   app->add_option("OUT", o->output, "Output mesh file; missing folders are created")->required();
-  app->add_option("--method", o->method,
-                  "uniform (umbrella), taubin (lambda|mu, no shrinking), cotan (cotangent weights, triangles only) "
-                  "or implicit (backward Euler steps of the cotangent flow; lambda is the time step)")
+  app->add_option(
+         "--method", o->method,
+         "uniform (umbrella), taubin (lambda|mu, no shrinking), cotan (cotangent weights, triangles only) "
+         "or implicit (backward Euler steps of the cotangent flow; lambda is the time step)")
       ->capture_default_str()
       ->check(CLI::IsMember({"uniform", "taubin", "cotan", "implicit"}));
-  app->add_option("--iterations", o->iterations, "Iterations")->capture_default_str()->transform(whole_number<int>(0, 100000));
-  app->add_option("--lambda", o->lambda,
-                  "Step toward the average, in (0, 1]; for implicit, the time step in squared mean edge lengths")
+  app->add_option("--iterations", o->iterations, "Iterations")
+      ->capture_default_str()
+      ->transform(whole_number<int>(0, 100000));
+  app->add_option(
+         "--lambda", o->lambda,
+         "Step toward the average, in (0, 1]; for implicit, the time step in squared mean edge lengths")
       ->capture_default_str()
       ->transform(real_number(-kInf, kInf));
   app->add_option("--mu", o->mu, "Taubin's inflating step, below -lambda")

@@ -5,10 +5,10 @@
 #include <memory>
 
 #include "commands.h"
-#include "support/random_edits.h"
 #include "load.h"
-#include "numbers.h"
 #include "mesh_stats.h"
+#include "numbers.h"
+#include "support/random_edits.h"
 
 namespace hedge::cli {
 
@@ -60,12 +60,15 @@ int run_stress(const StressOptions& options) {
     for (std::size_t k = 0; k < kEditKinds; ++k)
       std::cout << "  " << edit_name(static_cast<EditKind>(k)) << ": " << r.applied[k] << " applied, "
                 << r.refused[k] << " refused\n";
-    std::cout << "final: " << mesh.n_vertices() << " vertices, " << mesh.n_edges() << " edges, " << mesh.n_faces()
-              << " faces\n";
+    std::cout << "final: " << mesh.n_vertices() << " vertices, " << mesh.n_edges() << " edges, "
+              << mesh.n_faces() << " faces\n";
     if (r.valid) {
-      if (options.validate_every == 1) std::cout << "valid after every operation";
-      else if (options.validate_every == 0) std::cout << "valid at the end";
-      else std::cout << "valid after every " << options.validate_every << "th operation and at the end";
+      if (options.validate_every == 1)
+        std::cout << "valid after every operation";
+      else if (options.validate_every == 0)
+        std::cout << "valid at the end";
+      else
+        std::cout << "valid after every " << options.validate_every << "th operation and at the end";
       std::cout << (r.euler_mismatches ? ", but the Euler characteristic changed unexpectedly " +
                                              std::to_string(r.euler_mismatches) + " times\n"
                                        : "\n");
@@ -82,9 +85,12 @@ int run_stress(const StressOptions& options) {
 
 Command add_stress_command(CLI::App& parent) {
   auto options = std::make_shared<StressOptions>();
-  CLI::App* app = parent.add_subcommand("stress", "Apply a seeded random sequence of local operations and check validity");
+  CLI::App* app = parent.add_subcommand(
+      "stress", "Apply a seeded random sequence of local operations and check validity");
   app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
-  app->add_option("--ops", options->ops, "Number of operations")->capture_default_str()->transform(whole_number<std::size_t>(0, 100000000));
+  app->add_option("--ops", options->ops, "Number of operations")
+      ->capture_default_str()
+      ->transform(whole_number<std::size_t>(0, 100000000));
   app->add_option("--seed", options->seed, "Random seed")
       ->capture_default_str()
       ->transform(whole_number<std::uint64_t>(0));

@@ -1,11 +1,12 @@
 // hedge subdivide IN OUT: read, subdivide, write; formats by extension.
+#include "hedge/algorithms/subdivide.h"
+
 #include <chrono>
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include "commands.h"
-#include "hedge/algorithms/subdivide.h"
 #include "hedge/error.h"
 #include "load.h"
 #include "memory_budget.h"
@@ -38,7 +39,8 @@ int run_subdivide(const SubdivideCommandOptions& o) {
   // Writing the result copies it once more: measured, the whole command peaked at up to 1.2 times
   // the library's estimate writing binary PLY, and up to 2 times writing OBJ text.
   const FileFormat out_format = format_from_path(o.output);
-  const bool text = out_format == FileFormat::obj || out_format == FileFormat::off || out_format == FileFormat::gltf ||
+  const bool text = out_format == FileFormat::obj || out_format == FileFormat::off ||
+                    out_format == FileFormat::gltf ||
                     (o.ascii && (out_format == FileFormat::ply || out_format == FileFormat::stl));
   const double writer = text ? 2.25 : 1.25;
   const std::uint64_t budget = effective_budget(o.load.memory);
@@ -50,14 +52,16 @@ int run_subdivide(const SubdivideCommandOptions& o) {
     check_memory(need, o.load.memory,
                  o.input + ": " + std::to_string(o.steps) + " steps of " + o.scheme + " on " +
                      std::to_string(faces_before) + " faces",
-                 (fit == 0 ? std::string("not even one step fits") : "use --steps " + std::to_string(fit) + " or fewer") +
+                 (fit == 0 ? std::string("not even one step fits")
+                           : "use --steps " + std::to_string(fit) + " or fewer") +
                      (text ? " (or write a binary format, which needs less)" : ""));
   }
   const auto start = std::chrono::steady_clock::now();
   ProgressBar bar("subdivide");
   subdivide(m, scheme, o.steps, bar.callback(), budget);
   bar.finish();
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   save_mesh(m, o.output, o.ascii);
   std::printf("subdivided %s -> %s: %s x%d, %zu -> %zu faces, %zu vertices, %.1f ms\n", o.input.c_str(),
               o.output.c_str(), o.scheme.c_str(), o.steps, faces_before, m.n_faces(), m.n_vertices(), ms);
@@ -71,13 +75,17 @@ Command add_subdivide_command(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand("subdivide", "Subdivide a mesh and write the result");
   app->add_option("IN", o->input, "Input mesh file")->required();
   app->add_option("OUT", o->output, "Output mesh file; missing folders are created")->required();
-  app->add_option("--scheme", o->scheme,
-                  "loop (smooth, triangles), catmull-clark (smooth, any polygons, gives quads), sqrt3 (Kobbelt's "
-                  "smooth 1-to-3 with flips, triangles), midpoint (1-to-4, shape kept, triangles) or split-faces "
-                  "(1-to-3 at centroids, any polygons, shape kept)")
+  app->add_option(
+         "--scheme", o->scheme,
+         "loop (smooth, triangles), catmull-clark (smooth, any polygons, gives quads), sqrt3 (Kobbelt's "
+         "smooth 1-to-3 with flips, triangles), midpoint (1-to-4, shape kept, triangles) or split-faces "
+         "(1-to-3 at centroids, any polygons, shape kept)")
       ->capture_default_str()
       ->check(CLI::IsMember({"loop", "catmull-clark", "sqrt3", "midpoint", "split-faces"}));
-  app->add_option("--steps", o->steps, "Steps (each makes about 4 times the faces; refused past --max-memory)")->capture_default_str()->transform(whole_number<int>(0, 12));
+  app->add_option("--steps", o->steps,
+                  "Steps (each makes about 4 times the faces; refused past --max-memory)")
+      ->capture_default_str()
+      ->transform(whole_number<int>(0, 12));
   app->add_flag("--ascii", o->ascii, "Write PLY and STL as text instead of binary");
   add_load_options(*app, o->load);
   return {app, [o] { return run_subdivide(*o); }};

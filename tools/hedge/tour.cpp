@@ -27,8 +27,8 @@
 #include "hedge/error.h"
 #include "load.h"
 #include "memory_budget.h"
-#include "numbers.h"
 #include "mesh_stats.h"
+#include "numbers.h"
 #include "picture/diagram.h"
 #include "picture/raster.h"
 #include "picture/sheet.h"
@@ -39,7 +39,6 @@ namespace {
 
 using namespace hedge::picture;
 using Clock = std::chrono::steady_clock;
-
 
 struct TourOptions {
   std::string input;
@@ -60,7 +59,9 @@ struct Row {
   std::string file;
 };
 
-double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+double ms_since(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
 
 // The interior vertex nearest to the eye, so that an edit around it faces the camera.
 //! The remaining mesh and its shards as one mesh for a picture, each shard pushed away from the
@@ -150,7 +151,8 @@ int run_tour(const TourOptions& o) {
     panels.push_back({render(m, camera, r), stage});
     const double draw_ms = ms_since(d);
     const MeshStats s = compute_stats(m);
-    rows.push_back({stage, s.vertices, s.faces, s.boundary_loops, s.problems.empty(), edit_ms, draw_ms, file});
+    rows.push_back(
+        {stage, s.vertices, s.faces, s.boundary_loops, s.problems.empty(), edit_ms, draw_ms, file});
     if (!file.empty()) write_mesh(m, file);
   };
 
@@ -200,7 +202,8 @@ int run_tour(const TourOptions& o) {
   // it. A mesh too large to split is smoothed as it is.
   SurfaceMesh split = mesh;
   std::optional<SurfaceMesh> fine;  // the finest triangle mesh so far, for decimation and fracture
-  const bool split_fits = corners <= o.max_faces && subdivide_memory(mesh, Subdivision::split_faces, 1) <= budget;
+  const bool split_fits =
+      corners <= o.max_faces && subdivide_memory(mesh, Subdivision::split_faces, 1) <= budget;
   if (split_fits) {
     t = Clock::now();
     split_all_faces(split);
@@ -212,7 +215,8 @@ int run_tour(const TourOptions& o) {
   } else {
     skipped.push_back({"split all faces", too_large});
   }
-  if (split_fits && 4 * split.n_faces() <= o.max_faces && subdivide_memory(split, Subdivision::loop, 1) <= budget) {
+  if (split_fits && 4 * split.n_faces() <= o.max_faces &&
+      subdivide_memory(split, Subdivision::loop, 1) <= budget) {
     SurfaceMesh loop = split;
     t = Clock::now();
     subdivide(loop, Subdivision::loop, 1);
@@ -233,8 +237,8 @@ int run_tour(const TourOptions& o) {
     const double smooth_ms = ms_since(t);
     RenderOptions sr;
     sr.wireframe = true;
-    add(split_fits ? "or smoothed (Taubin, 10 iterations)" : "smoothed (Taubin, 10 iterations)", split, smooth_ms, sr,
-        base + "_smooth.obj");
+    add(split_fits ? "or smoothed (Taubin, 10 iterations)" : "smoothed (Taubin, 10 iterations)", split,
+        smooth_ms, sr, base + "_smooth.obj");
   }
   // 7. The finest triangle mesh decimated to a quarter of its faces by quadric error, and 8. broken
   // like glass where it faces the eye, its shards pushed apart so the cracks show.
@@ -247,7 +251,8 @@ int run_tour(const TourOptions& o) {
     const double decimate_ms = ms_since(t);
     RenderOptions r;
     r.wireframe = true;
-    add("decimated to " + std::to_string(dr.faces) + " faces", coarse, decimate_ms, r, base + "_decimated.obj");
+    add("decimated to " + std::to_string(dr.faces) + " faces", coarse, decimate_ms, r,
+        base + "_decimated.obj");
 
     const Vertex hit = front_vertex(*fine, camera);
     if (hit.is_valid()) {
@@ -315,7 +320,8 @@ int run_tour(const TourOptions& o) {
     f.wireframe = true;
     f.color_by = ColorBy::face;
     f.shading = Shading::flat;
-    add("hole filled: " + std::to_string(filled_faces) + " new faces", filled, fill_ms, f, base + "_filled.obj");
+    add("hole filled: " + std::to_string(filled_faces) + " new faces", filled, fill_ms, f,
+        base + "_filled.obj");
 
     // 11. The half-edge diagram of the faces around that vertex, detached as a mesh of their own.
     SurfaceMesh rest = mesh;
@@ -331,8 +337,8 @@ int run_tour(const TourOptions& o) {
     const double draw_ms = ms_since(dt);
     panels.push_back({std::move(diagram), "half-edges of one vertex's faces"});
     const MeshStats s = compute_stats(patch);
-    rows.push_back({"detached one-ring (diagram)", s.vertices, s.faces, s.boundary_loops, s.problems.empty(), detach_ms,
-                    draw_ms, base + "_patch.obj"});
+    rows.push_back({"detached one-ring (diagram)", s.vertices, s.faces, s.boundary_loops, s.problems.empty(),
+                    detach_ms, draw_ms, base + "_patch.obj"});
     write_mesh(patch, base + "_patch.obj");
   }
 
@@ -343,8 +349,8 @@ int run_tour(const TourOptions& o) {
               "draw ms");
   bool all_valid = true;
   for (const Row& r : rows) {
-    std::printf("%-34s %9zu %9zu %6zu %6s %9.2f %9.1f\n", r.stage.c_str(), r.vertices, r.faces, r.boundary_loops,
-                r.valid ? "yes" : "NO", r.edit_ms, r.draw_ms);
+    std::printf("%-34s %9zu %9zu %6zu %6s %9.2f %9.1f\n", r.stage.c_str(), r.vertices, r.faces,
+                r.boundary_loops, r.valid ? "yes" : "NO", r.edit_ms, r.draw_ms);
     all_valid = all_valid && r.valid;
   }
   for (const auto& [stage, why] : skipped) std::printf("%-34s skipped: %s\n", stage.c_str(), why.c_str());
@@ -360,17 +366,20 @@ int run_tour(const TourOptions& o) {
 Command add_tour_command(CLI::App& parent) {
   auto o = std::make_shared<TourOptions>();
   CLI::App* app = parent.add_subcommand(
-      "tour", "Show what hedge does to a mesh: load and repair, validate, Catmull-Clark, split all faces, "
-              "Loop-subdivide and smooth, decimate, break like glass, "
-              "cut a hole and fill it, the half-edge diagram of one vertex's faces; writes a contact sheet PNG of every stage, the "
-              "edited meshes, and prints counts and timings");
+      "tour",
+      "Show what hedge does to a mesh: load and repair, validate, Catmull-Clark, split all faces, "
+      "Loop-subdivide and smooth, decimate, break like glass, "
+      "cut a hole and fill it, the half-edge diagram of one vertex's faces; writes a contact sheet PNG of "
+      "every stage, the "
+      "edited meshes, and prints counts and timings");
   app->add_option("FILE", o->input, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
   app->add_option("--out", o->out_dir, "Folder for the pictures and meshes (created if missing)")
       ->capture_default_str();
   app->add_option("--panel", o->panel, "Width of each picture of the contact sheet, in pixels")
       ->capture_default_str()
       ->transform(whole_number<int>(64, 2048));
-  app->add_option("--max-faces", o->max_faces, "Skip the subdivision stages whose result would pass this many faces")
+  app->add_option("--max-faces", o->max_faces,
+                  "Skip the subdivision stages whose result would pass this many faces")
       ->capture_default_str()
       ->transform(whole_number<std::size_t>(1));
   add_load_options(*app, o->load);

@@ -10,7 +10,7 @@ namespace hedge::picture {
 
 std::optional<View> parse_view(const std::string& name) {
   static const std::pair<const char*, View> kNames[] = {
-      {"front", View::front}, {"back", View::back}, {"left", View::left},  {"right", View::right},
+      {"front", View::front}, {"back", View::back},     {"left", View::left}, {"right", View::right},
       {"top", View::top},     {"bottom", View::bottom}, {"iso", View::iso}};
   for (const auto& [n, v] : kNames)
     if (name == n) return v;
@@ -42,13 +42,27 @@ Camera frame(const SurfaceMesh& mesh, View view, double aspect) {
   if (!(radius > 0)) radius = 1;
   Vec3d dir{0, 0, 1}, up{0, 1, 0};
   switch (view) {
-    case View::front: dir = {0, 0, 1}; break;
-    case View::back: dir = {0, 0, -1}; break;
-    case View::left: dir = {-1, 0, 0}; break;
-    case View::right: dir = {1, 0, 0}; break;
-    case View::top: dir = {0, 1, 0}, up = {0, 0, -1}; break;
-    case View::bottom: dir = {0, -1, 0}, up = {0, 0, 1}; break;
-    case View::iso: dir = normalize(Vec3d{1, 0.8, 1.2}); break;
+    case View::front:
+      dir = {0, 0, 1};
+      break;
+    case View::back:
+      dir = {0, 0, -1};
+      break;
+    case View::left:
+      dir = {-1, 0, 0};
+      break;
+    case View::right:
+      dir = {1, 0, 0};
+      break;
+    case View::top:
+      dir = {0, 1, 0}, up = {0, 0, -1};
+      break;
+    case View::bottom:
+      dir = {0, -1, 0}, up = {0, 0, 1};
+      break;
+    case View::iso:
+      dir = normalize(Vec3d{1, 0.8, 1.2});
+      break;
   }
   // Fit the picture to the mesh's extent across the view (a 6% margin), measured in the camera's
   // own axes, so that long or flat meshes fill it too.

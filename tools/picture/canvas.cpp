@@ -57,11 +57,20 @@ std::string escape(std::string_view text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += (c >= 32 && c < 127) ? c : '?';
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += (c >= 32 && c < 127) ? c : '?';
     }
   }
   return out;
@@ -171,14 +180,16 @@ void SvgCanvas::arrow(Point2 a, Point2 b, double width, double head, Rgb color, 
 
 void SvgCanvas::disc(Point2 c, double r, Rgb fill) {
   if (!finite(c)) return;
-  body_ += "<circle cx=\"" + num(c.x) + "\" cy=\"" + num(c.y) + "\" r=\"" + num(r) + "\" fill=\"" + hex(fill) + "\"/>\n";
+  body_ += "<circle cx=\"" + num(c.x) + "\" cy=\"" + num(c.y) + "\" r=\"" + num(r) + "\" fill=\"" +
+           hex(fill) + "\"/>\n";
 }
 
 void SvgCanvas::text(Point2 at, double px, std::string_view text, Rgb color, Anchor anchor) {
   if (!finite(at)) return;
   const char* a = anchor == Anchor::start ? "start" : anchor == Anchor::middle ? "middle" : "end";
-  body_ += "<text x=\"" + num(at.x) + "\" y=\"" + num(at.y) + "\" font-size=\"" + num(px) + "\" text-anchor=\"" + a +
-           "\" dominant-baseline=\"central\" fill=\"" + hex(color) + "\">" + escape(text) + "</text>\n";
+  body_ += "<text x=\"" + num(at.x) + "\" y=\"" + num(at.y) + "\" font-size=\"" + num(px) +
+           "\" text-anchor=\"" + a + "\" dominant-baseline=\"central\" fill=\"" + hex(color) + "\">" +
+           escape(text) + "</text>\n";
 }
 
 std::string SvgCanvas::svg() const {

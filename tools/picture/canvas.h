@@ -29,7 +29,8 @@ class Canvas {
   virtual void arrow(Point2 a, Point2 b, double width, double head, Rgb color, std::string_view kind) = 0;
   virtual void disc(Point2 centre, double radius, Rgb fill) = 0;
   //! Text of pixel height px, its line's vertical middle at `at.y`.
-  virtual void text(Point2 at, double px, std::string_view text, Rgb color, Anchor anchor = Anchor::middle) = 0;
+  virtual void text(Point2 at, double px, std::string_view text, Rgb color,
+                    Anchor anchor = Anchor::middle) = 0;
 };
 
 //! Draws onto an image (which it does not own); text through Font::standard().

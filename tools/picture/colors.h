@@ -8,7 +8,9 @@
 
 namespace hedge::picture {
 
-inline std::uint8_t to_byte(float v) { return static_cast<std::uint8_t>(std::fmin(255.f, std::fmax(0.f, v + 0.5f))); }
+inline std::uint8_t to_byte(float v) {
+  return static_cast<std::uint8_t>(std::fmin(255.f, std::fmax(0.f, v + 0.5f)));
+}
 
 //! a + (b - a) * t.
 inline Rgb mix(Rgb a, Rgb b, double t) {
@@ -34,12 +36,24 @@ inline Rgb categorical(std::uint32_t i) {
   const double p = val * (1 - sat), q = val * (1 - sat * f), t = val * (1 - sat * (1 - f));
   double r = 0, g = 0, b = 0;
   switch (sector) {
-    case 0: r = val, g = t, b = p; break;
-    case 1: r = q, g = val, b = p; break;
-    case 2: r = p, g = val, b = t; break;
-    case 3: r = p, g = q, b = val; break;
-    case 4: r = t, g = p, b = val; break;
-    default: r = val, g = p, b = q; break;
+    case 0:
+      r = val, g = t, b = p;
+      break;
+    case 1:
+      r = q, g = val, b = p;
+      break;
+    case 2:
+      r = p, g = val, b = t;
+      break;
+    case 3:
+      r = p, g = q, b = val;
+      break;
+    case 4:
+      r = t, g = p, b = val;
+      break;
+    default:
+      r = val, g = p, b = q;
+      break;
   }
   return {to_byte(float(r * 255)), to_byte(float(g * 255)), to_byte(float(b * 255))};
 }

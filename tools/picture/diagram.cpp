@@ -31,9 +31,12 @@ Camera diagram_camera(const SurfaceMesh& mesh, double aspect) {
   const double big = std::max({ext.x, ext.y, ext.z});
   View view = View::iso;
   if (big > 0) {
-    if (ext.z <= 1e-3 * big) view = View::front;
-    else if (ext.y <= 1e-3 * big) view = View::top;
-    else if (ext.x <= 1e-3 * big) view = View::right;
+    if (ext.z <= 1e-3 * big)
+      view = View::front;
+    else if (ext.y <= 1e-3 * big)
+      view = View::top;
+    else if (ext.x <= 1e-3 * big)
+      view = View::right;
   }
   Camera c = frame(mesh, view, aspect);
   if (view != View::iso) {  // flat: an orthographic picture, as drawn on paper
@@ -45,14 +48,18 @@ Camera diagram_camera(const SurfaceMesh& mesh, double aspect) {
   return c;
 }
 
-void draw_halfedge_diagram(const SurfaceMesh& m, const Camera& camera, Canvas& canvas, const DiagramOptions& o) {
+void draw_halfedge_diagram(const SurfaceMesh& m, const Camera& camera, Canvas& canvas,
+                           const DiagramOptions& o) {
   if (m.n_faces() == 0) throw InvalidInputError("nothing to draw: the mesh has no faces");
   if (m.n_faces() > o.max_faces)
-    throw InvalidInputError("the half-edge diagram is for small meshes: this one has " + std::to_string(m.n_faces()) +
-                            " faces, the limit is " + std::to_string(o.max_faces));
+    throw InvalidInputError("the half-edge diagram is for small meshes: this one has " +
+                            std::to_string(m.n_faces()) + " faces, the limit is " +
+                            std::to_string(o.max_faces));
   const int legend_height = o.legend ? 28 : 0;
   const int w = canvas.width(), h = canvas.height() - legend_height;
-  if (h < 16) throw InvalidInputError("the diagram needs a picture at least " + std::to_string(16 + legend_height) + " pixels high");
+  if (h < 16)
+    throw InvalidInputError("the diagram needs a picture at least " + std::to_string(16 + legend_height) +
+                            " pixels high");
   const Projection proj(camera, w, h);
 
   std::vector<Point2> at(m.vertex_slots());
@@ -87,9 +94,8 @@ void draw_halfedge_diagram(const SurfaceMesh& m, const Camera& camera, Canvas& c
     // A face wound counter-clockwise as seen from the camera has area2 < 0 on screen (y points down).
     faces.push_back({f, d / double(n), {cx / double(n), cy / double(n)}, area2 < 0});
   }
-  std::sort(faces.begin(), faces.end(), [](const Item& a, const Item& b) {
-    return a.depth != b.depth ? a.depth > b.depth : a.f < b.f;
-  });
+  std::sort(faces.begin(), faces.end(),
+            [](const Item& a, const Item& b) { return a.depth != b.depth ? a.depth > b.depth : a.f < b.f; });
 
   // Sizes from the typical edge length on screen.
   std::vector<double> lengths;
@@ -103,7 +109,8 @@ void draw_halfedge_diagram(const SurfaceMesh& m, const Camera& camera, Canvas& c
   const double stroke = std::clamp(typical * 0.012, 0.8, 2.0);
   const double head = std::clamp(typical * 0.07, 4.0, 12.0);
 
-  const Rgb edge_color{150, 150, 150}, arrow_color{30, 60, 120}, boundary_color{205, 35, 35}, vertex_color{20, 20, 20};
+  const Rgb edge_color{150, 150, 150}, arrow_color{30, 60, 120}, boundary_color{205, 35, 35},
+      vertex_color{20, 20, 20};
   const Rgb face_text{90, 90, 90};
   auto label_near = [&](Point2 a, Point2 b, Point2 toward, double k) {
     const Point2 mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
@@ -128,9 +135,12 @@ void draw_halfedge_diagram(const SurfaceMesh& m, const Camera& camera, Canvas& c
     for (Vertex v : m.vertices(it.f)) poly.push_back(at[v.idx()]);
     canvas.polygon(poly, mix(categorical(it.f.idx()), Rgb{255, 255, 255}, 0.5), it.facing ? 0.8 : 0.3);
     const Rgb arrows = it.facing ? arrow_color : mix(arrow_color, Rgb{255, 255, 255}, 0.55);
-    for (Halfedge g : m.halfedges(it.f)) canvas.line(at[m.from_vertex(g).idx()], at[m.to_vertex(g).idx()], stroke, edge_color);
+    for (Halfedge g : m.halfedges(it.f))
+      canvas.line(at[m.from_vertex(g).idx()], at[m.to_vertex(g).idx()], stroke, edge_color);
     for (Halfedge g : m.halfedges(it.f)) halfedge_arrow(g, it.centre, 0.2, arrows, "halfedge");
-    if (o.labels) canvas.text(it.centre, font, label('f', it.f.idx()), it.facing ? face_text : mix(face_text, Rgb{255, 255, 255}, 0.5));
+    if (o.labels)
+      canvas.text(it.centre, font, label('f', it.f.idx()),
+                  it.facing ? face_text : mix(face_text, Rgb{255, 255, 255}, 0.5));
   }
   // Boundary half-edges: outside, pushed away from the face on the other side.
   for (Halfedge g : m.halfedges()) {
@@ -145,14 +155,17 @@ void draw_halfedge_diagram(const SurfaceMesh& m, const Camera& camera, Canvas& c
   // Vertices, on top.
   for (Vertex v : m.vertices()) {
     canvas.disc(at[v.idx()], std::max(2.0, stroke * 2.2), vertex_color);
-    if (o.labels) canvas.text({at[v.idx()].x + font * 0.5, at[v.idx()].y - font * 0.75}, font, label('v', v.idx()), vertex_color, Anchor::start);
+    if (o.labels)
+      canvas.text({at[v.idx()].x + font * 0.5, at[v.idx()].y - font * 0.75}, font, label('v', v.idx()),
+                  vertex_color, Anchor::start);
   }
   if (o.legend) {
     const double y = canvas.height() - legend_height / 2.0;
-    canvas.text({10, y}, 12,
-                "arrows: half-edges, inside their face (twins run side by side, opposite ways); red: boundary "
-                "half-edges",
-                Rgb{60, 60, 60}, Anchor::start);
+    canvas.text(
+        {10, y}, 12,
+        "arrows: half-edges, inside their face (twins run side by side, opposite ways); red: boundary "
+        "half-edges",
+        Rgb{60, 60, 60}, Anchor::start);
   }
 }
 

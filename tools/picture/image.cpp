@@ -10,7 +10,9 @@
 namespace hedge::picture {
 
 void check_size(int width, int height, const char* what) {
-  const auto describe = [&] { return std::string(what) + " of " + std::to_string(width) + "x" + std::to_string(height); };
+  const auto describe = [&] {
+    return std::string(what) + " of " + std::to_string(width) + "x" + std::to_string(height);
+  };
   if (width < 1 || height < 1) throw InvalidInputError(describe() + ": width and height must be at least 1");
   if (width > kMaxSide || height > kMaxSide)
     throw InvalidInputError(describe() + ": width and height must be at most " + std::to_string(kMaxSide));
@@ -48,11 +50,11 @@ void Image::paste(const Image& src, int x0, int y0) {
 std::string encode_png(const Image& image) {
   std::string out;
   const auto append = [](void* context, void* data, int size) {
-    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                               static_cast<std::size_t>(size));
   };
-  if (image.empty() ||
-      stbi_write_png_to_func(append, &out, image.width(), image.height(), 3, image.pixels().data(),
-                             3 * image.width()) == 0)
+  if (image.empty() || stbi_write_png_to_func(append, &out, image.width(), image.height(), 3,
+                                              image.pixels().data(), 3 * image.width()) == 0)
     throw InvalidInputError("PNG encoding failed for a picture of " + std::to_string(image.width()) + "x" +
                             std::to_string(image.height()));
   return out;

@@ -72,7 +72,8 @@ std::vector<double> mean_curvature(const SurfaceMesh& m, const std::vector<Vec3>
     for (Halfedge h = m.next(h0); m.next(h) != h0; h = m.next(h)) {
       c[1] = m.to_vertex(h);
       c[2] = m.to_vertex(m.next(h));
-      const Vec3d p[3] = {to_double(m.position(c[0])), to_double(m.position(c[1])), to_double(m.position(c[2]))};
+      const Vec3d p[3] = {to_double(m.position(c[0])), to_double(m.position(c[1])),
+                          to_double(m.position(c[2]))};
       const double a2 = std::sqrt(dot(cross(p[1] - p[0], p[2] - p[0]), cross(p[1] - p[0], p[2] - p[0])));
       if (!(a2 > 0)) continue;
       for (int k = 0; k < 3; ++k) {
@@ -89,7 +90,8 @@ std::vector<double> mean_curvature(const SurfaceMesh& m, const std::vector<Vec3>
     if (m.is_boundary(v) || !(area[v.idx()] > 0)) continue;
     const Vec3d l = lap[v.idx()] * (1 / area[v.idx()]);
     const double mag = 0.5 * std::sqrt(dot(l, l));
-    h[v.idx()] = dot(l, to_double(vertex_normal[v.idx()])) < 0 ? mag : -mag;  // convex (outward normal): positive
+    h[v.idx()] =
+        dot(l, to_double(vertex_normal[v.idx()])) < 0 ? mag : -mag;  // convex (outward normal): positive
   }
   return h;
 }
@@ -106,10 +108,10 @@ Rgb diverging(double t) {
 struct Prepared {
   std::vector<Screen> screen;
   std::vector<Tri> tris;
-  std::vector<Vec3> face_normal;      // per face slot, twice the area long (Newell's)
-  std::vector<Vec3> vertex_normal;    // unit, per vertex slot (smooth shading)
-  std::vector<Rgb> face_color;        // per face slot
-  std::vector<Rgb> vertex_color;      // per vertex slot, when colours vary per vertex
+  std::vector<Vec3> face_normal;    // per face slot, twice the area long (Newell's)
+  std::vector<Vec3> vertex_normal;  // unit, per vertex slot (smooth shading)
+  std::vector<Rgb> face_color;      // per face slot
+  std::vector<Rgb> vertex_color;    // per vertex slot, when colours vary per vertex
 };
 
 // Runs fn(begin, end, chunk) over `threads` chunks of [0, n) in parallel (one chunk when n is small).
@@ -126,7 +128,8 @@ void parallel_for(std::size_t n, unsigned threads, Fn&& fn) {
   for (std::thread& t : pool) t.join();
 }
 
-Prepared prepare(const SurfaceMesh& m, const Projection& proj, const RenderOptions& o, int s, unsigned threads) {
+Prepared prepare(const SurfaceMesh& m, const Projection& proj, const RenderOptions& o, int s,
+                 unsigned threads) {
   Prepared p;
   const std::size_t nv = m.vertex_slots(), nf = m.face_slots();
   p.screen.assign(nv, Screen{0, 0, 0, false});
@@ -142,7 +145,8 @@ Prepared prepare(const SurfaceMesh& m, const Projection& proj, const RenderOptio
       const Projection::Point sp = proj(to_double(q));
       const bool usable = proj.orthographic() || sp.depth > 1e-9;
       const double key = proj.orthographic() ? -sp.depth : 1 / sp.depth;
-      p.screen[i] = {float(sp.x * s), float(sp.y * s), float(key), usable && std::isfinite(sp.x) && std::isfinite(sp.y)};
+      p.screen[i] = {float(sp.x * s), float(sp.y * s), float(key),
+                     usable && std::isfinite(sp.x) && std::isfinite(sp.y)};
     }
   });
   const Index bad = *std::min_element(first_bad.begin(), first_bad.end());
@@ -190,7 +194,8 @@ Prepared prepare(const SurfaceMesh& m, const Projection& proj, const RenderOptio
         ++n;
       }
       if (n == 0) continue;
-      const double regular = (m.is_boundary(v) ? std::numbers::pi : 2 * std::numbers::pi) / (angle / double(n));
+      const double regular =
+          (m.is_boundary(v) ? std::numbers::pi : 2 * std::numbers::pi) / (angle / double(n));
       p.vertex_color[v.idx()] = diverging((double(m.valence(v)) - regular) / 3);
     }
   } else if (o.color_by == ColorBy::curvature) {
@@ -265,8 +270,8 @@ struct Buffers {
   std::vector<Rgb> color;
 };
 
-void rasterise_band(const SurfaceMesh& m, const Projection& proj, const Prepared& p, const RenderOptions& o, int s,
-                    Buffers& b, int y0, int y1) {
+void rasterise_band(const SurfaceMesh& m, const Projection& proj, const Prepared& p, const RenderOptions& o,
+                    int s, Buffers& b, int y0, int y1) {
   const Rgb line_colors[4] = {{}, o.wire, o.feature_color, o.boundary_color};
   const float half_width[4] = {0, float(0.5 * o.line_width * s), float(0.75 * o.line_width * s),
                                float(1.0 * o.line_width * s)};
@@ -280,8 +285,10 @@ void rasterise_band(const SurfaceMesh& m, const Projection& proj, const Prepared
     const double area2 = double(B.x - A.x) * (C.y - A.y) - double(B.y - A.y) * (C.x - A.x);
     if (!(std::abs(area2) > 1e-12)) continue;
     const float xmin = std::min({A.x, B.x, C.x}), xmax = std::max({A.x, B.x, C.x});
-    const int ix0 = std::max(0, int(std::floor(xmin - 0.5f))), ix1 = std::min(b.w - 1, int(std::ceil(xmax - 0.5f)));
-    const int iy0 = std::max(y0, int(std::floor(ymin - 0.5f))), iy1 = std::min(y1 - 1, int(std::ceil(ymax - 0.5f)));
+    const int ix0 = std::max(0, int(std::floor(xmin - 0.5f))),
+              ix1 = std::min(b.w - 1, int(std::ceil(xmax - 0.5f)));
+    const int iy0 = std::max(y0, int(std::floor(ymin - 0.5f))),
+              iy1 = std::min(y1 - 1, int(std::ceil(ymax - 0.5f)));
     if (ix0 > ix1 || iy0 > iy1) continue;
     const double inv = 1 / area2;
     // The edge functions of the three sides, each evaluated from its lower endpoint (by y, then x)
@@ -306,7 +313,9 @@ void rasterise_band(const SurfaceMesh& m, const Projection& proj, const Prepared
     const bool any_line = t.side[0] | t.side[1] | t.side[2];
     const Vec3 fn = to_float(unit_or_zero(to_double(p.face_normal[t.face])));
     // A head light: from the first corner toward the eye.
-    const Vec3 light = o.shading == Shading::unlit ? Vec3{0, 0, 1} : to_float(proj.toward_eye(to_double(m.position(Vertex(t.v[0])))));
+    const Vec3 light = o.shading == Shading::unlit
+                           ? Vec3{0, 0, 1}
+                           : to_float(proj.toward_eye(to_double(m.position(Vertex(t.v[0])))));
     const bool per_vertex_color = !p.vertex_color.empty();
     for (int y = iy0; y <= iy1; ++y) {
       const double py = y + 0.5;
@@ -331,8 +340,8 @@ void rasterise_band(const SurfaceMesh& m, const Projection& proj, const Prepared
         }
         Rgb base;
         if (per_vertex_color) {
-          base = mix3(p.vertex_color[t.v[0]], p.vertex_color[t.v[1]], p.vertex_color[t.v[2]], float(wa), float(wb),
-                      float(wc));
+          base = mix3(p.vertex_color[t.v[0]], p.vertex_color[t.v[1]], p.vertex_color[t.v[2]], float(wa),
+                      float(wb), float(wc));
         } else {
           base = p.face_color[t.face];
         }
@@ -342,7 +351,8 @@ void rasterise_band(const SurfaceMesh& m, const Projection& proj, const Prepared
         }
         Vec3 n = fn;
         if (o.shading == Shading::smooth) {
-          n = p.vertex_normal[t.v[0]] * float(wa) + p.vertex_normal[t.v[1]] * float(wb) + p.vertex_normal[t.v[2]] * float(wc);
+          n = p.vertex_normal[t.v[0]] * float(wa) + p.vertex_normal[t.v[1]] * float(wb) +
+              p.vertex_normal[t.v[2]] * float(wc);
           const float l2 = dot(n, n);
           n = l2 > 0 ? n * (1 / std::sqrt(l2)) : fn;
         }
@@ -377,13 +387,15 @@ Image render(const SurfaceMesh& mesh, const Camera& camera, const RenderOptions&
   check_size(o.width, o.height, "a picture");
   if (o.supersample < 1 || o.supersample > 4)
     throw InvalidInputError("supersample must be in 1..4, got " + std::to_string(o.supersample));
-  if (!(o.line_width > 0 && o.line_width <= 64)) throw InvalidInputError("line width must be in (0, 64] pixels");
+  if (!(o.line_width > 0 && o.line_width <= 64))
+    throw InvalidInputError("line width must be in (0, 64] pixels");
   if (!(o.feature_angle >= 0 && o.feature_angle <= 180))
     throw InvalidInputError("the feature angle must be in [0, 180] degrees");
   if (std::int64_t(o.width) * o.height * o.supersample * o.supersample > kMaxPixels)
-    throw InvalidInputError("a picture of " + std::to_string(o.width) + "x" + std::to_string(o.height) + " with " +
-                            std::to_string(o.supersample * o.supersample) + " samples per pixel needs more than " +
-                            std::to_string(kMaxPixels) + " samples; lower the size or the supersampling");
+    throw InvalidInputError("a picture of " + std::to_string(o.width) + "x" + std::to_string(o.height) +
+                            " with " + std::to_string(o.supersample * o.supersample) +
+                            " samples per pixel needs more than " + std::to_string(kMaxPixels) +
+                            " samples; lower the size or the supersampling");
   if (mesh.n_faces() == 0) throw InvalidInputError("nothing to draw: the mesh has no faces");
   const int s = o.supersample;
   const Projection proj(camera, o.width, o.height);
@@ -421,8 +433,9 @@ Image render(const SurfaceMesh& mesh, const Camera& camera, const RenderOptions&
           acc[1] += c.g;
           acc[2] += c.b;
         }
-      out.set(x, y, {std::uint8_t(acc[0] * norm + 0.5f), std::uint8_t(acc[1] * norm + 0.5f),
-                     std::uint8_t(acc[2] * norm + 0.5f)});
+      out.set(x, y,
+              {std::uint8_t(acc[0] * norm + 0.5f), std::uint8_t(acc[1] * norm + 0.5f),
+               std::uint8_t(acc[2] * norm + 0.5f)});
     }
   return out;
 }

@@ -26,7 +26,7 @@ enum class ColorBy {
   face,       //!< a colour per face
   shard,      //!< a colour per connected component (the shards of a fracture)
   curvature,  //!< mean curvature (cotangent Laplacian), blue (concave) to red (convex)
-  valence,    //!< vertex valence: white where regular (6 among triangles, 4 among quads), blue below, red above
+  valence,  //!< vertex valence: white where regular (6 among triangles, 4 among quads), blue below, red above
 };
 
 struct RenderOptions {

@@ -78,7 +78,8 @@ void Font::draw(Image& image, double x, double y, double px, std::string_view te
     const int w = x1 - x0, h = y1 - y0;
     if (w > 0 && h > 0) {
       bitmap.assign(std::size_t(w) * h, 0);
-      stbtt_MakeCodepointBitmapSubpixel(&impl_->info, bitmap.data(), w, h, w, scale, scale, shift_x, shift_y, g);
+      stbtt_MakeCodepointBitmapSubpixel(&impl_->info, bitmap.data(), w, h, w, scale, scale, shift_x, shift_y,
+                                        g);
       for (int r = 0; r < h; ++r)
         for (int c = 0; c < w; ++c)
           if (const unsigned char a = bitmap[std::size_t(r) * w + c])
@@ -87,7 +88,8 @@ void Font::draw(Image& image, double x, double y, double px, std::string_view te
     int advance = 0, lsb = 0;
     stbtt_GetCodepointHMetrics(&impl_->info, g, &advance, &lsb);
     pen += advance * scale;
-    if (i + 1 < text.size()) pen += scale * stbtt_GetCodepointKernAdvance(&impl_->info, g, glyph_of(text[i + 1]));
+    if (i + 1 < text.size())
+      pen += scale * stbtt_GetCodepointKernAdvance(&impl_->info, g, glyph_of(text[i + 1]));
   }
 }
 

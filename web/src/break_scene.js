@@ -18,13 +18,17 @@ export const STEP = 1 / 60;
 export function plateArrays(n, size, height) {
   const positions = new Float32Array((n + 1) * (n + 1) * 3);
   for (let j = 0, k = 0; j <= n; ++j)
-    for (let i = 0; i <= n; ++i, k += 3) positions.set([(i / n - 0.5) * size, height, (j / n - 0.5) * size], k);
+    for (let i = 0; i <= n; ++i, k += 3)
+      positions.set([(i / n - 0.5) * size, height, (j / n - 0.5) * size], k);
   const indices = new Uint32Array(n * n * 6);
   const at = (i, j) => j * (n + 1) + i;
   for (let j = 0, k = 0; j < n; ++j)
     for (let i = 0; i < n; ++i, k += 6) {
       // Counter-clockwise seen from above (+y).
-      indices.set([at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i + 1, j)], k);
+      indices.set(
+        [at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i + 1, j)],
+        k,
+      );
     }
   return { positions, indices };
 }
@@ -49,9 +53,14 @@ export class BreakWorld {
     this.world.solver.iterations = 20;
     this.groundBody = null;
     this.groundY = 0;
-    this.shards = [];  // {body, mesh}
+    this.shards = []; // {body, mesh}
     this.steps = 0;
-    this.material = new THREE.MeshStandardMaterial({ color: 0x7fb2d9, roughness: 0.35, metalness: 0.05, flatShading: true });
+    this.material = new THREE.MeshStandardMaterial({
+      color: 0x7fb2d9,
+      roughness: 0.35,
+      metalness: 0.05,
+      flatShading: true,
+    });
     this.groundMesh = null;
   }
 
@@ -59,15 +68,21 @@ export class BreakWorld {
   setGround(y, extent) {
     this.clear();
     this.groundY = y;
-    this.groundBody = new CANNON.Body({ mass: 0, type: CANNON.Body.STATIC, shape: new CANNON.Plane() });
+    this.groundBody = new CANNON.Body({
+      mass: 0,
+      type: CANNON.Body.STATIC,
+      shape: new CANNON.Plane(),
+    });
     // The plane's normal is its local +z: turn it to +y.
     this.groundBody.quaternion.setFromEuler(-Math.PI / 2, 0, 0);
     this.groundBody.position.set(0, y, 0);
     this.world.addBody(this.groundBody);
     const grid = new THREE.GridHelper(extent, 20, 0x9aa3ab, 0xc9ced3);
     grid.position.y = y;
-    const floor = new THREE.Mesh(new THREE.PlaneGeometry(extent, extent),
-      new THREE.MeshStandardMaterial({ color: 0xe3e1dc, roughness: 0.95 }));
+    const floor = new THREE.Mesh(
+      new THREE.PlaneGeometry(extent, extent),
+      new THREE.MeshStandardMaterial({ color: 0xe3e1dc, roughness: 0.95 }),
+    );
     floor.rotation.x = -Math.PI / 2;
     floor.position.y = y - 1e-3 * extent;
     this.groundMesh = new THREE.Group();
@@ -100,7 +115,8 @@ export class BreakWorld {
   //! pushed in, `speed` the velocity the push gives it (m/s). The shard's hedge mesh is read here;
   //! the caller disposes it afterwards.
   addShard(shard, away, speed) {
-    if (!shard.closed || !(shard.mass > 0)) throw new Error('a shard without a thickness has no mass to simulate');
+    if (!shard.closed || !(shard.mass > 0))
+      throw new Error('a shard without a thickness has no mass to simulate');
     const com = new THREE.Vector3(...shard.centreOfMass);
     const [a0, a1, a2] = shard.principalAxes.map((a) => new THREE.Vector3(...a));
     const rotation = new THREE.Matrix4().makeBasis(a0, a1, a2);
@@ -112,13 +128,19 @@ export class BreakWorld {
     // The collider: the hull in the principal frame.
     const hp = shard.hull.positions;
     const vertices = [];
-    for (let i = 0; i < hp.length; i += 3) vertices.push(new CANNON.Vec3(...toLocal(hp[i], hp[i + 1], hp[i + 2])));
+    for (let i = 0; i < hp.length; i += 3)
+      vertices.push(new CANNON.Vec3(...toLocal(hp[i], hp[i + 1], hp[i + 2])));
     const faces = [];
     const hi = shard.hull.indices;
     for (let i = 0; i < hi.length; i += 3) faces.push([hi[i], hi[i + 1], hi[i + 2]]);
     const shape = new CANNON.ConvexPolyhedron({ vertices, faces });
 
-    const body = new CANNON.Body({ mass: shard.mass, shape, collisionFilterGroup: 2, collisionFilterMask: 1 });
+    const body = new CANNON.Body({
+      mass: shard.mass,
+      shape,
+      collisionFilterGroup: 2,
+      collisionFilterMask: 1,
+    });
     // Some damping, as air and the contact would give: a curved shard rocks on its hull's
     // vertices, and without it the solver's small errors keep it rocking.
     body.linearDamping = 0.1;
@@ -136,13 +158,20 @@ export class BreakWorld {
     const q = new THREE.Quaternion().setFromRotationMatrix(rotation);
     body.quaternion.set(q.x, q.y, q.z, q.w);
     body.updateInertiaWorld(true);
-    body.applyImpulse(new CANNON.Vec3(away[0] * speed * shard.mass, away[1] * speed * shard.mass, away[2] * speed * shard.mass));
+    body.applyImpulse(
+      new CANNON.Vec3(
+        away[0] * speed * shard.mass,
+        away[1] * speed * shard.mass,
+        away[2] * speed * shard.mass,
+      ),
+    );
     this.world.addBody(body);
 
     // What is drawn: the shard's own faces, in the same frame.
     const { positions, indices } = shard.mesh.toArrays({ triangulate: true });
     const local = new Float32Array(positions.length);
-    for (let i = 0; i < positions.length; i += 3) local.set(toLocal(positions[i], positions[i + 1], positions[i + 2]), i);
+    for (let i = 0; i < positions.length; i += 3)
+      local.set(toLocal(positions[i], positions[i + 1], positions[i + 2]), i);
     const geometry = new THREE.BufferGeometry();
     geometry.setAttribute('position', new THREE.BufferAttribute(local, 3));
     geometry.setIndex(new THREE.BufferAttribute(indices, 1));
@@ -160,7 +189,12 @@ export class BreakWorld {
     this.steps += steps;
     for (const { body, mesh } of this.shards) {
       mesh.position.set(body.position.x, body.position.y, body.position.z);
-      mesh.quaternion.set(body.quaternion.x, body.quaternion.y, body.quaternion.z, body.quaternion.w);
+      mesh.quaternion.set(
+        body.quaternion.x,
+        body.quaternion.y,
+        body.quaternion.z,
+        body.quaternion.w,
+      );
     }
   }
 
@@ -169,7 +203,11 @@ export class BreakWorld {
   get moving() {
     let n = 0;
     for (const { body } of this.shards)
-      if (body.sleepState !== CANNON.Body.SLEEPING && (body.velocity.length() > 0.01 || body.angularVelocity.length() > 0.05)) ++n;
+      if (
+        body.sleepState !== CANNON.Body.SLEEPING &&
+        (body.velocity.length() > 0.01 || body.angularVelocity.length() > 0.05)
+      )
+        ++n;
     return n;
   }
 

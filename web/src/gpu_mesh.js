@@ -47,7 +47,11 @@ export class GpuMesh {
   //! and b are joined by an edge of the mesh.
   rebuild(buffers, isEdge = null) {
     const { layout } = buffers;
-    const vertexCapacity = Math.max(buffers.vertexCapacity, buffers.vertices.length / layout.stride, 1);
+    const vertexCapacity = Math.max(
+      buffers.vertexCapacity,
+      buffers.vertices.length / layout.stride,
+      1,
+    );
     const indexCapacity = Math.max(buffers.indexCapacity, buffers.indices.length, 3);
     this.stride = layout.stride;
     this.vertexArray = new Float32Array(vertexCapacity * layout.stride);
@@ -71,7 +75,11 @@ export class GpuMesh {
     this.geometry = new THREE.BufferGeometry();
     this.lineGeometry = new THREE.BufferGeometry();
     this.geometry.setAttribute('position', position);
-    if (layout.normal >= 0) this.geometry.setAttribute('normal', new THREE.InterleavedBufferAttribute(interleaved, 3, layout.normal));
+    if (layout.normal >= 0)
+      this.geometry.setAttribute(
+        'normal',
+        new THREE.InterleavedBufferAttribute(interleaved, 3, layout.normal),
+      );
     this.geometry.setIndex(index);
     this.lineGeometry.setAttribute('position', position);
     this.lineGeometry.setIndex(lines);
@@ -89,8 +97,14 @@ export class GpuMesh {
   //! Returns the bytes queued for upload.
   update(buffers, result, isEdge = null) {
     const stride = buffers.layout.stride;
-    if (result.resized || result.full || !this.vertexArray || stride !== this.stride ||
-        buffers.vertices.length > this.vertexArray.length || buffers.indices.length > this.indexArray.length)
+    if (
+      result.resized ||
+      result.full ||
+      !this.vertexArray ||
+      stride !== this.stride ||
+      buffers.vertices.length > this.vertexArray.length ||
+      buffers.indices.length > this.indexArray.length
+    )
       return { bytes: this.rebuild(buffers, isEdge), full: true, ranges: 1 };
     const indexCount = buffers.indices.length;
 
@@ -134,7 +148,8 @@ export class GpuMesh {
     for (let i = first; i < first + count; i += 3) {
       const corners = [tri[i], tri[i + 1], tri[i + 2]];
       for (let k = 0; k < 3; ++k) {
-        const a = corners[k], b = corners[(k + 1) % 3];
+        const a = corners[k],
+          b = corners[(k + 1) % 3];
         const o = i * 2 + k * 2;
         const keep = a !== b && (!isEdge || isEdge(a, b));
         out[o] = a;
@@ -182,7 +197,12 @@ export class UploadMeter {
   }
 
   snapshot() {
-    return { subBytes: this.subBytes, subCalls: this.subCalls, fullBytes: this.fullBytes, fullCalls: this.fullCalls };
+    return {
+      subBytes: this.subBytes,
+      subCalls: this.subCalls,
+      fullBytes: this.fullBytes,
+      fullCalls: this.fullCalls,
+    };
   }
 
   since(before) {

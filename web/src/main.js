@@ -10,16 +10,16 @@ const fmt = (n) => n.toLocaleString('en-US');
 
 const state = {
   hedge: null,
-  current: null,     // the PageMesh shown
+  current: null, // the PageMesh shown
   viewer: null,
-  hover: null,      // { kind: 'face' | 'edge' | 'vertex', face, halfedge, vertex, point }
+  hover: null, // { kind: 'face' | 'edge' | 'vertex', face, halfedge, vertex, point }
   busy: false,
   lastUpload: null, // { bytes, full, ranges, gl: meter delta }
-  mode: 'edit',     // 'break' in a break scene: a click strikes
-  world: null,      // the BreakWorld (cannon-es) of the break scene
-  thickness: 0,     // of the shards in the break scene
-  strikes: [],      // {ms, wasmMs, shards} of each strike in the scene
-  ticking: false,   // the physics loop is running
+  mode: 'edit', // 'break' in a break scene: a click strikes
+  world: null, // the BreakWorld (cannon-es) of the break scene
+  thickness: 0, // of the shards in the break scene
+  strikes: [], // {ms, wasmMs, shards} of each strike in the scene
+  ticking: false, // the physics loop is running
 };
 
 // Mass per unit volume (kg/m^3) of each material, for the shards' mass properties.
@@ -72,7 +72,8 @@ function showStats() {
   $('stat-f').textContent = fmt(c.faces);
   const problems = s.problems();
   const valid = $('stat-valid');
-  valid.textContent = problems.length === 0 ? 'valid' : `${problems.length} problem(s): ${problems[0]}`;
+  valid.textContent =
+    problems.length === 0 ? 'valid' : `${problems.length} problem(s): ${problems[0]}`;
   valid.className = problems.length === 0 ? 'ok' : 'bad';
   document.body.dataset.counts = `${c.vertices},${c.edges},${c.faces}`;
   document.body.dataset.valid = problems.length === 0 ? '1' : '0';
@@ -83,7 +84,8 @@ const ms = (t) => `${t.toFixed(t < 10 ? 2 : 1)} ms`;
 //! The last operation and its time; `syncMs`: the RenderSync sync and the buffer copies after it.
 function showOperation(name, opMs, syncMs) {
   $('stat-op').textContent = name;
-  $('stat-time').textContent = syncMs === undefined ? ms(opMs) : `${ms(opMs)} (then sync and upload ${ms(syncMs)})`;
+  $('stat-time').textContent =
+    syncMs === undefined ? ms(opMs) : `${ms(opMs)} (then sync and upload ${ms(syncMs)})`;
 }
 
 function showUpload(upload) {
@@ -93,7 +95,12 @@ function showUpload(upload) {
   const kind = upload.full ? 'full upload' : 'partial';
   $('stat-upload').textContent =
     `${fmt(sent)} B (${kind}: ${gl.subCalls} ranges, ${gl.fullCalls} whole buffers) of ${fmt(total)} B`;
-  document.body.dataset.upload = JSON.stringify({ ...gl, queued: upload.bytes, full: upload.full, total });
+  document.body.dataset.upload = JSON.stringify({
+    ...gl,
+    queued: upload.bytes,
+    full: upload.full,
+    total,
+  });
 }
 
 // ---- loading ------------------------------------------------------------------------------------
@@ -147,7 +154,8 @@ function segmentDistance(p, a, b) {
   const ab = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
   const ap = [p[0] - a[0], p[1] - a[1], p[2] - a[2]];
   const len2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
-  const t = len2 > 0 ? Math.min(1, Math.max(0, (ap[0] * ab[0] + ap[1] * ab[1] + ap[2] * ab[2]) / len2)) : 0;
+  const t =
+    len2 > 0 ? Math.min(1, Math.max(0, (ap[0] * ab[0] + ap[1] * ab[1] + ap[2] * ab[2]) / len2)) : 0;
   const d = [ap[0] - t * ab[0], ap[1] - t * ab[1], ap[2] - t * ab[2]];
   return Math.hypot(d[0], d[1], d[2]);
 }
@@ -179,7 +187,8 @@ function elementAt(event) {
     const d = distance(c.a, hit.point);
     if (d < vertexReach && (!best || d < best.d)) best = { d, h: c.h, v: c.r.origin };
   }
-  if (best) return { kind: 'vertex', face: hit.face, halfedge: best.h, vertex: best.v, point: hit.point };
+  if (best)
+    return { kind: 'vertex', face: hit.face, halfedge: best.h, vertex: best.v, point: hit.point };
   let bestEdge = null;
   for (const c of loop) {
     const d = segmentDistance(hit.point, c.a, c.b);
@@ -207,7 +216,9 @@ function describe(el) {
   const lines = [];
   if (el.kind === 'face') {
     const loop = s.faceHalfedges(el.face);
-    lines.push(`face f${el.face}: ${loop.length} corners, half-edges ${loop.map((h) => 'h' + h).join(' ')}`);
+    lines.push(
+      `face f${el.face}: ${loop.length} corners, half-edges ${loop.map((h) => 'h' + h).join(' ')}`,
+    );
     lines.push(...recordLines(s, el.halfedge, 'halfedge(f)'));
   } else if (el.kind === 'edge') {
     const r = s.record(el.halfedge);
@@ -216,9 +227,17 @@ function describe(el) {
     lines.push(...recordLines(s, r.twin, 'twin'));
   } else {
     const ring = s.oneRing(el.vertex);
-    const p = s.position(el.vertex).map((x) => x.toFixed(3)).join(', ');
+    const p = s
+      .position(el.vertex)
+      .map((x) => x.toFixed(3))
+      .join(', ');
     lines.push(`vertex v${el.vertex}: (${p}), valence ${ring.length}`);
-    lines.push(`  one-ring ${ring.slice(0, 12).map((v) => 'v' + v).join(' ')}${ring.length > 12 ? ' ...' : ''}`);
+    lines.push(
+      `  one-ring ${ring
+        .slice(0, 12)
+        .map((v) => 'v' + v)
+        .join(' ')}${ring.length > 12 ? ' ...' : ''}`,
+    );
     lines.push(...recordLines(s, s.outgoing(el.vertex), 'outgoing'));
   }
   return lines.join('\n');
@@ -239,12 +258,18 @@ function drawArrow(s, h, color) {
   if (r.face < 0) {
     // A boundary half-edge: bend it away from its twin's face.
     const inside = faceCentre(s, s.record(r.twin).face);
-    const a = s.position(r.origin), b = s.position(r.target);
+    const a = s.position(r.origin),
+      b = s.position(r.target);
     const outside = [0, 1, 2].map((i) => a[i] + b[i] - inside[i]);
     state.viewer.addHalfedgeArrow(a, b, outside, color);
     return;
   }
-  state.viewer.addHalfedgeArrow(s.position(r.origin), s.position(r.target), faceCentre(s, r.face), color);
+  state.viewer.addHalfedgeArrow(
+    s.position(r.origin),
+    s.position(r.target),
+    faceCentre(s, r.face),
+    color,
+  );
 }
 
 function drawHover() {
@@ -258,7 +283,8 @@ function drawHover() {
   const points = loopPoints(el.face);
   let unit = 0;
   for (let i = 0; i < points.length; ++i) {
-    const a = points[i], b = points[(i + 1) % points.length];
+    const a = points[i],
+      b = points[(i + 1) % points.length];
     unit += Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]) / points.length;
   }
   if (el.kind === 'face') viewer.addPolygon(points, COLORS.face);
@@ -294,7 +320,13 @@ function drawHover() {
 }
 
 function setHover(el) {
-  const same = (a, b) => a && b && a.kind === b.kind && a.face === b.face && a.halfedge === b.halfedge && a.vertex === b.vertex;
+  const same = (a, b) =>
+    a &&
+    b &&
+    a.kind === b.kind &&
+    a.face === b.face &&
+    a.halfedge === b.halfedge &&
+    a.vertex === b.vertex;
   if (same(el, state.hover) || (!el && !state.hover)) return;
   state.hover = el;
   $('records').textContent = el ? describe(el) : 'Hover the mesh.';
@@ -378,15 +410,17 @@ async function setupBreak(name) {
   let bytes = null;
   if (name === 'spot') {
     const response = await fetch('/data/spot_triangulated.obj');
-    if (!response.ok) throw new Error(`could not fetch spot_triangulated.obj (HTTP ${response.status})`);
+    if (!response.ok)
+      throw new Error(`could not fetch spot_triangulated.obj (HTTP ${response.status})`);
     bytes = new Uint8Array(await response.arrayBuffer());
   }
   leaveBreak();
   const t0 = performance.now();
-  const next = name === 'plate'
-    ? PageMesh.fromBuffers(state.hedge, plateArrays(224, 3, 1))
-    : PageMesh.load(state.hedge, bytes, 'spot_triangulated.obj');
-  next.buildPicking();  // strikes go through the picking tree, as in a game
+  const next =
+    name === 'plate'
+      ? PageMesh.fromBuffers(state.hedge, plateArrays(224, 3, 1))
+      : PageMesh.load(state.hedge, bytes, 'spot_triangulated.obj');
+  next.buildPicking(); // strikes go through the picking tree, as in a game
   const loadMs = performance.now() - t0;
   clearError();
   adopt(next, name === 'plate' ? 'plate, 224 x 224 squares' : 'spot_triangulated.obj', loadMs);
@@ -401,7 +435,10 @@ async function setupBreak(name) {
   // The plate as glass, so the shards below show through; no wireframe over its 100k triangles.
   state.viewer.setSeeThrough(name === 'plate');
   state.viewer.setWireframe(name !== 'plate' && $('show-wire').checked);
-  state.viewer.frame({ min: [box.min[0], ground, box.min[2]], max: box.max }, name === 'plate' ? [-0.45, 0.9, -0.8] : undefined);
+  state.viewer.frame(
+    { min: [box.min[0], ground, box.min[2]], max: box.max },
+    name === 'plate' ? [-0.45, 0.9, -0.8] : undefined,
+  );
   document.body.dataset.scene = name;
   $('stat-shards').textContent = 'click the mesh to strike it';
 }
@@ -412,14 +449,21 @@ function showFracture() {
   const m = median(strikes.map((x) => x.ms));
   $('stat-fracture').textContent =
     `${ms(last.ms)} (in fracture() ${ms(last.wasmMs)}), median ${ms(m)} over ${strikes.length} strike(s); ${last.shards} shards`;
-  document.body.dataset.fracture = JSON.stringify({ last: last.ms, wasm: last.wasmMs, median: m, strikes: strikes.length, shards: last.shards });
+  document.body.dataset.fracture = JSON.stringify({
+    last: last.ms,
+    wasm: last.wasmMs,
+    median: m,
+    strikes: strikes.length,
+    shards: last.shards,
+  });
 }
 
 function showShards() {
   const w = state.world;
   const n = w.shards.length;
   const moving = w.moving;
-  $('stat-shards').textContent = `${fmt(n)} shards: ${fmt(moving)} moving, ${fmt(n - moving)} at rest (${fmt(w.steps)} steps)`;
+  $('stat-shards').textContent =
+    `${fmt(n)} shards: ${fmt(moving)} moving, ${fmt(n - moving)} at rest (${fmt(w.steps)} steps)`;
   document.body.dataset.shards = String(n);
   document.body.dataset.physicsSteps = String(w.steps);
 }
@@ -455,7 +499,8 @@ function strikeOptions() {
   const material = $('break-material').value;
   const text = $('break-seed').value;
   const seed = Number(text);
-  if (text.trim() === '' || !Number.isInteger(seed) || seed < 0) throw new Error(`the seed must be a whole number (0 or more), not '${text}'`);
+  if (text.trim() === '' || !Number.isInteger(seed) || seed < 0)
+    throw new Error(`the seed must be a whole number (0 or more), not '${text}'`);
   return { material, seed, thickness: state.thickness, density: DENSITY[material] };
 }
 
@@ -480,9 +525,13 @@ function strike(point, direction) {
       // Away from the impact along the surface, and on along the strike.
       const out = [0, 1, 2].map((i) => shard.centreOfMass[i] - point[i]);
       const len = Math.hypot(...out) || 1;
-      const away = [0, 1, 2].map((i) => out[i] / len + 0.5 * direction[i] / d);
+      const away = [0, 1, 2].map((i) => out[i] / len + (0.5 * direction[i]) / d);
       const n = Math.hypot(...away) || 1;
-      state.world.addShard(shard, away.map((x) => x / n), PUSH);
+      state.world.addShard(
+        shard,
+        away.map((x) => x / n),
+        PUSH,
+      );
     }
   } finally {
     for (const shard of result.shards) shard.dispose();
@@ -527,7 +576,10 @@ async function timeStrikes(count = 25) {
       seed = (seed * 1103515245 + 12345) % 2147483648;
       return seed / 2147483648;
     };
-    const times = [], inWasm = [], shards = [], warmUp = [];
+    const times = [],
+      inWasm = [],
+      shards = [],
+      warmUp = [];
     let skipped = 0;
     const WARM_UP = 5;
     for (let attempt = 0; times.length < count && attempt < (count + WARM_UP) * 50; ++attempt) {
@@ -535,10 +587,19 @@ async function timeStrikes(count = 25) {
         copy.dispose();
         copy = fresh();
       }
-      const z = 2 * random() - 1, a = 2 * Math.PI * random(), r = Math.sqrt(1 - z * z);
-      const origin = [centre[0] + radius * r * Math.cos(a), centre[1] + radius * z, centre[2] + radius * r * Math.sin(a)];
+      const z = 2 * random() - 1,
+        a = 2 * Math.PI * random(),
+        r = Math.sqrt(1 - z * z);
+      const origin = [
+        centre[0] + radius * r * Math.cos(a),
+        centre[1] + radius * z,
+        centre[2] + radius * r * Math.sin(a),
+      ];
       const target = [0, 1, 2].map((i) => box.min[i] + random() * (box.max[i] - box.min[i]));
-      const hit = copy.pick(origin, [0, 1, 2].map((i) => target[i] - origin[i]));
+      const hit = copy.pick(
+        origin,
+        [0, 1, 2].map((i) => target[i] - origin[i]),
+      );
       if (!hit) continue;
       let result;
       const t0 = performance.now();
@@ -598,7 +659,7 @@ function wireInput() {
     if (!down || event.button !== 0) return;
     const moved = Math.hypot(event.clientX - down.x, event.clientY - down.y);
     down = null;
-    if (moved > 4) return;  // an orbit, not a click
+    if (moved > 4) return; // an orbit, not a click
     if (state.mode === 'break') guard('strike', () => strikeAt(event));
     else guard('edit', () => clickEdit(elementAt(event)));
   });
@@ -641,56 +702,78 @@ function wireInput() {
     button.type = 'button';
     button.id = `subdivide-${id}`;
     button.textContent = label;
-    button.addEventListener('click', () => guard(label, () => applyEdit(label, (s) => {
-      s.subdivide(id);
-      return label;
-    })));
+    button.addEventListener('click', () =>
+      guard(label, () =>
+        applyEdit(label, (s) => {
+          s.subdivide(id);
+          return label;
+        }),
+      ),
+    );
     buttons.appendChild(button);
   }
-  $('smooth').addEventListener('click', () => guard('smooth', () => applyEdit('smooth', (s) => {
-    s.smooth();
-    return 'smooth (Taubin, 10 steps)';
-  })));
+  $('smooth').addEventListener('click', () =>
+    guard('smooth', () =>
+      applyEdit('smooth', (s) => {
+        s.smooth();
+        return 'smooth (Taubin, 10 steps)';
+      }),
+    ),
+  );
   const ratio = $('decimate-ratio');
   const ratioLabel = () => {
     $('decimate-label').textContent = `${ratio.value}% of faces`;
   };
   ratio.addEventListener('input', ratioLabel);
   ratioLabel();
-  $('decimate').addEventListener('click', () => guard('decimate', () => applyEdit('decimate', (s) => {
-    const before = s.counts().faces;
-    const target = Math.max(4, Math.round(before * Number(ratio.value) / 100));
-    s.decimate(target);
-    return `decimate to ${fmt(target)} faces`;
-  })));
+  $('decimate').addEventListener('click', () =>
+    guard('decimate', () =>
+      applyEdit('decimate', (s) => {
+        const before = s.counts().faces;
+        const target = Math.max(4, Math.round((before * Number(ratio.value)) / 100));
+        s.decimate(target);
+        return `decimate to ${fmt(target)} faces`;
+      }),
+    ),
+  );
   $('break-setup').addEventListener('click', () => {
     const name = $('break-scene').value;
     guard(`setting up the ${name} scene`, () => setupBreak(name));
   });
-  $('break-bench').addEventListener('click', () => guard('timing strikes', async () => {
-    $('stat-fracture').textContent = 'timing 25 strikes...';
-    const r = await timeStrikes(25);
-    const sorted = [...r.times].sort((a, b) => a - b);
-    const report = {
-      material: r.material, triangles: r.triangles, strikes: r.times.length,
-      medianMs: median(r.times), p95Ms: sorted[Math.floor(0.95 * (sorted.length - 1))],
-      medianInWasmMs: median(r.inWasm), meanShards: r.shards.reduce((a, b) => a + b, 0) / r.shards.length,
-      warmUpMs: r.warmUp, skipped: r.skipped,
-    };
-    report.text = `${r.material} on ${fmt(r.triangles)} triangles: median ${ms(report.medianMs)} per strike ` +
-      `(in fracture() ${ms(report.medianInWasmMs)}), p95 ${ms(report.p95Ms)}, ${report.meanShards.toFixed(1)} shards, ` +
-      `over ${report.strikes} strikes (first of 5 warm-up: ${ms(r.warmUp[0])})` +
-      (r.skipped ? `; ${r.skipped} points refused (a lone face)` : '');
-    clearError();
-    $('stat-fracture').textContent = report.text;
-    document.body.dataset.breakBench = JSON.stringify(report);
-  }));
-  $('pick-bench').addEventListener('click', () => guard('picking benchmark', async () => {
-    $('stat-pick').textContent = 'measuring...';
-    const report = await measurePicking(state.hedge, state.current, Number($('pick-size').value));
-    $('stat-pick').textContent = report.text;
-    document.body.dataset.pick = JSON.stringify(report);
-  }));
+  $('break-bench').addEventListener('click', () =>
+    guard('timing strikes', async () => {
+      $('stat-fracture').textContent = 'timing 25 strikes...';
+      const r = await timeStrikes(25);
+      const sorted = [...r.times].sort((a, b) => a - b);
+      const report = {
+        material: r.material,
+        triangles: r.triangles,
+        strikes: r.times.length,
+        medianMs: median(r.times),
+        p95Ms: sorted[Math.floor(0.95 * (sorted.length - 1))],
+        medianInWasmMs: median(r.inWasm),
+        meanShards: r.shards.reduce((a, b) => a + b, 0) / r.shards.length,
+        warmUpMs: r.warmUp,
+        skipped: r.skipped,
+      };
+      report.text =
+        `${r.material} on ${fmt(r.triangles)} triangles: median ${ms(report.medianMs)} per strike ` +
+        `(in fracture() ${ms(report.medianInWasmMs)}), p95 ${ms(report.p95Ms)}, ${report.meanShards.toFixed(1)} shards, ` +
+        `over ${report.strikes} strikes (first of 5 warm-up: ${ms(r.warmUp[0])})` +
+        (r.skipped ? `; ${r.skipped} points refused (a lone face)` : '');
+      clearError();
+      $('stat-fracture').textContent = report.text;
+      document.body.dataset.breakBench = JSON.stringify(report);
+    }),
+  );
+  $('pick-bench').addEventListener('click', () =>
+    guard('picking benchmark', async () => {
+      $('stat-pick').textContent = 'measuring...';
+      const report = await measurePicking(state.hedge, state.current, Number($('pick-size').value));
+      $('stat-pick').textContent = report.text;
+      document.body.dataset.pick = JSON.stringify(report);
+    }),
+  );
 }
 
 async function main() {
@@ -705,7 +788,9 @@ async function main() {
   try {
     state.hedge = await loadHedge();
   } catch (error) {
-    showError(`The hedge WebAssembly module did not load (build it with bindings/wasm/build): ${messageOf(error)}`);
+    showError(
+      `The hedge WebAssembly module did not load (build it with bindings/wasm/build): ${messageOf(error)}`,
+    );
     return;
   }
   await guard('loading spot_triangulated.obj', () => loadSample('spot_triangulated.obj'));
@@ -741,13 +826,16 @@ window.playground = {
       const h = s.faceHalfedges(f)[0];
       const r = s.record(h);
       if (s.record(r.twin).face < 0) continue;
-      const a = s.position(r.origin), b = s.position(r.target);
+      const a = s.position(r.origin),
+        b = s.position(r.target);
       const mid = [0, 1, 2].map((i) => (a[i] + b[i]) / 2);
       const { x, y } = state.viewer.project(mid);
-      const pa = state.viewer.project(a), pb = state.viewer.project(b);
+      const pa = state.viewer.project(a),
+        pb = state.viewer.project(b);
       const length = Math.hypot(pa.x - pb.x, pa.y - pb.y);
       const el = elementAt({ clientX: x, clientY: y });
-      if (el && el.kind === 'edge' && s.record(el.halfedge).edge === r.edge) out.push({ edge: r.edge, halfedge: h, x, y, length });
+      if (el && el.kind === 'edge' && s.record(el.halfedge).edge === r.edge)
+        out.push({ edge: r.edge, halfedge: h, x, y, length });
     }
     return out;
   },
@@ -763,10 +851,13 @@ window.playground = {
       const el = elementAt({ clientX: x, clientY: y });
       if (!el || el.kind !== 'face' || el.face !== f) continue;
       if (!largest) return { face: f, x, y };
-      const corners = s.faceHalfedges(f).map((h) => state.viewer.project(s.position(s.record(h).origin)));
+      const corners = s
+        .faceHalfedges(f)
+        .map((h) => state.viewer.project(s.position(s.record(h).origin)));
       let area = 0;
       for (let i = 0; i < corners.length; ++i) {
-        const p = corners[i], q = corners[(i + 1) % corners.length];
+        const p = corners[i],
+          q = corners[(i + 1) % corners.length];
         area += (p.x * q.y - q.x * p.y) / 2;
       }
       if (!best || Math.abs(area) > best.area) best = { face: f, x, y, area: Math.abs(area) };

@@ -22,7 +22,9 @@ export class PageMesh {
     this.hedge = hedge;
     this.mesh = mesh;
     // Computed normals: the same smooth shading for every file, updated around each edit.
-    this.render = render ? mesh.createRender({ normals: 'computed', texcoords: false, colors: false }) : null;
+    this.render = render
+      ? mesh.createRender({ normals: 'computed', texcoords: false, colors: false })
+      : null;
     this.rays = null;
     this.pickFaces = null;
   }
@@ -63,15 +65,21 @@ export class PageMesh {
     const report = this.mesh.buildReport();
     const notes = [];
     const labels = {
-      weldedVertices: 'welded vertices', degenerateFaces: 'degenerate faces dropped',
-      repeatedCorners: 'repeated corners', reorientedFaces: 'faces reoriented',
-      nonManifoldEdges: 'non-manifold edges split', nonManifoldVertices: 'non-manifold vertices split',
-      duplicatedVertices: 'vertices duplicated', isolatedVertices: 'isolated vertices',
+      weldedVertices: 'welded vertices',
+      degenerateFaces: 'degenerate faces dropped',
+      repeatedCorners: 'repeated corners',
+      reorientedFaces: 'faces reoriented',
+      nonManifoldEdges: 'non-manifold edges split',
+      nonManifoldVertices: 'non-manifold vertices split',
+      duplicatedVertices: 'vertices duplicated',
+      isolatedVertices: 'isolated vertices',
     };
-    for (const [key, label] of Object.entries(labels)) if (report[key]) notes.push(`${report[key]} ${label}`);
+    for (const [key, label] of Object.entries(labels))
+      if (report[key]) notes.push(`${report[key]} ${label}`);
     const warnings = report.warnings || [];
     const shown = warnings.slice(0, 3);
-    if (warnings.length > shown.length) shown.push(`and ${warnings.length - shown.length} more warnings`);
+    if (warnings.length > shown.length)
+      shown.push(`and ${warnings.length - shown.length} more warnings`);
     return [...(notes.length ? [`repairs: ${notes.join(', ')}`] : []), ...shown].join('; ');
   }
 
@@ -121,10 +129,11 @@ export class PageMesh {
   //! Valid until the next edit.
   edgeTest() {
     if (this.mesh.isTriangleMesh()) return null;
-    const source = this.render.vertexSource.slice();  // a copy: the test calls into the module
+    const source = this.render.vertexSource.slice(); // a copy: the test calls into the module
     const rings = new Map();
     return (a, b) => {
-      const va = source[a], vb = source[b];
+      const va = source[a],
+        vb = source[b];
       let ring = rings.get(va);
       if (!ring) {
         ring = new Set(this.mesh.oneRing(va).vertices);

@@ -11,9 +11,11 @@ const FRAMES = 60;
 function random(seed) {
   let x = seed >>> 0 || 1;
   return () => {
-    x ^= x << 13; x >>>= 0;
+    x ^= x << 13;
+    x >>>= 0;
     x ^= x >>> 17;
-    x ^= x << 5; x >>>= 0;
+    x ^= x << 5;
+    x >>>= 0;
     return x / 4294967296;
   };
 }
@@ -29,7 +31,11 @@ function makeRays(box, count, seed) {
     const z = next() * 2 - 1;
     const phi = next() * 2 * Math.PI;
     const s = Math.sqrt(1 - z * z);
-    const o = [centre[0] + radius * s * Math.cos(phi), centre[1] + radius * s * Math.sin(phi), centre[2] + radius * z];
+    const o = [
+      centre[0] + radius * s * Math.cos(phi),
+      centre[1] + radius * s * Math.sin(phi),
+      centre[2] + radius * z,
+    ];
     const t = [0, 1, 2].map((i) => box.min[i] + next() * (box.max[i] - box.min[i]));
     const d = [t[0] - o[0], t[1] - o[1], t[2] - o[2]];
     const len = Math.hypot(d[0], d[1], d[2]) || 1;
@@ -57,7 +63,12 @@ export async function measurePicking(hedge, current, loopSteps) {
   if (loopSteps > 0) {
     const response = await fetch('/data/spot_triangulated.obj');
     if (!response.ok) throw new Error(`could not fetch the spot sample (HTTP ${response.status})`);
-    owned = PageMesh.load(hedge, new Uint8Array(await response.arrayBuffer()), 'spot_triangulated.obj', { render: false });
+    owned = PageMesh.load(
+      hedge,
+      new Uint8Array(await response.arrayBuffer()),
+      'spot_triangulated.obj',
+      { render: false },
+    );
     mesh = owned;
     const t0 = performance.now();
     for (let i = 0; i < loopSteps; ++i) mesh.subdivide('loop');
@@ -84,11 +95,22 @@ export async function measurePicking(hedge, current, loopSteps) {
     times.sort((a, b) => a - b);
     const medianMs = percentile(times, 0.5);
     const p95Ms = percentile(times, 0.95);
-    const text = `${RAYS_PER_FRAME} rays/frame on ${triangles.toLocaleString('en-US')} triangles: ` +
+    const text =
+      `${RAYS_PER_FRAME} rays/frame on ${triangles.toLocaleString('en-US')} triangles: ` +
       `${medianMs.toFixed(2)} ms median, ${p95Ms.toFixed(2)} ms p95 (${hits} hits), ${fps.toFixed(0)} fps` +
       ` over ${FRAMES} frames; BVH built in ${buildMs.toFixed(0)} ms` +
       (owned ? `, mesh subdivided in ${subdivideMs.toFixed(0)} ms` : '');
-    return { triangles, rays: RAYS_PER_FRAME, frames: FRAMES, medianMs, p95Ms, fps, hits, buildMs, text };
+    return {
+      triangles,
+      rays: RAYS_PER_FRAME,
+      frames: FRAMES,
+      medianMs,
+      p95Ms,
+      fps,
+      hits,
+      buildMs,
+      text,
+    };
   } finally {
     if (owned) owned.dispose();
   }

@@ -22,7 +22,11 @@ export class Viewer {
   constructor(canvas) {
     this.canvas = canvas;
     // preserveDrawingBuffer keeps the last frame readable for screenshots.
-    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+    this.renderer = new THREE.WebGLRenderer({
+      canvas,
+      antialias: true,
+      preserveDrawingBuffer: true,
+    });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
     this.meter = new UploadMeter(this.renderer.getContext());
     this.scene = new THREE.Scene();
@@ -39,10 +43,20 @@ export class Viewer {
     this.scene.add(this.camera);
 
     const material = new THREE.MeshStandardMaterial({
-      color: COLORS.surface, roughness: 0.7, metalness: 0.0, side: THREE.DoubleSide,
-      flatShading: false, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1,
+      color: COLORS.surface,
+      roughness: 0.7,
+      metalness: 0.0,
+      side: THREE.DoubleSide,
+      flatShading: false,
+      polygonOffset: true,
+      polygonOffsetFactor: 1,
+      polygonOffsetUnits: 1,
     });
-    const lineMaterial = new THREE.LineBasicMaterial({ color: COLORS.wire, transparent: true, opacity: 0.45 });
+    const lineMaterial = new THREE.LineBasicMaterial({
+      color: COLORS.wire,
+      transparent: true,
+      opacity: 0.45,
+    });
     this.mesh = new GpuMesh(material, lineMaterial);
     this.scene.add(this.mesh.group);
 
@@ -102,8 +116,10 @@ export class Viewer {
     const radius = Math.max(max.distanceTo(min) * 0.5, 1e-6);
     this.controls.target.copy(center);
     const fov = THREE.MathUtils.degToRad(this.camera.fov);
-    const distance = radius / Math.sin(fov / 2) * 1.05;
-    this.camera.position.copy(center).add(new THREE.Vector3(...from).normalize().multiplyScalar(distance));
+    const distance = (radius / Math.sin(fov / 2)) * 1.05;
+    this.camera.position
+      .copy(center)
+      .add(new THREE.Vector3(...from).normalize().multiplyScalar(distance));
     this.camera.near = distance / 100;
     this.camera.far = distance * 100;
     this.camera.updateProjectionMatrix();
@@ -116,7 +132,8 @@ export class Viewer {
     const rect = this.canvas.getBoundingClientRect();
     const ndc = new THREE.Vector2(
       ((event.clientX - rect.left) / rect.width) * 2 - 1,
-      -((event.clientY - rect.top) / rect.height) * 2 + 1);
+      -((event.clientY - rect.top) / rect.height) * 2 + 1,
+    );
     this.raycaster.setFromCamera(ndc, this.camera);
     const { origin, direction } = this.raycaster.ray;
     return { origin: origin.toArray(), direction: direction.toArray() };
@@ -134,7 +151,10 @@ export class Viewer {
   project(p) {
     const v = new THREE.Vector3(...p).project(this.camera);
     const rect = this.canvas.getBoundingClientRect();
-    return { x: rect.left + (v.x + 1) / 2 * rect.width, y: rect.top + (1 - v.y) / 2 * rect.height };
+    return {
+      x: rect.left + ((v.x + 1) / 2) * rect.width,
+      y: rect.top + ((1 - v.y) / 2) * rect.height,
+    };
   }
 
   clearOverlay() {
@@ -152,12 +172,19 @@ export class Viewer {
   addPolygon(points, color) {
     if (points.length < 3) return;
     const positions = [];
-    for (let i = 1; i + 1 < points.length; ++i) positions.push(...points[0], ...points[i], ...points[i + 1]);
+    for (let i = 1; i + 1 < points.length; ++i)
+      positions.push(...points[0], ...points[i], ...points[i + 1]);
     const geometry = new THREE.BufferGeometry();
     geometry.setAttribute('position', new THREE.Float32BufferAttribute(positions, 3));
     const material = new THREE.MeshBasicMaterial({
-      color, transparent: true, opacity: 0.55, side: THREE.DoubleSide, depthTest: true,
-      polygonOffset: true, polygonOffsetFactor: -2, polygonOffsetUnits: -2,
+      color,
+      transparent: true,
+      opacity: 0.55,
+      side: THREE.DoubleSide,
+      depthTest: true,
+      polygonOffset: true,
+      polygonOffsetFactor: -2,
+      polygonOffsetUnits: -2,
     });
     this.overlay.add(new THREE.Mesh(geometry, material));
   }
@@ -172,7 +199,10 @@ export class Viewer {
     const geometry = new THREE.CylinderGeometry(r, r, length, 8, 1, false);
     const mesh = new THREE.Mesh(geometry, new THREE.MeshBasicMaterial({ color }));
     mesh.position.copy(start).add(end).multiplyScalar(0.5);
-    mesh.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), end.clone().sub(start).normalize());
+    mesh.quaternion.setFromUnitVectors(
+      new THREE.Vector3(0, 1, 0),
+      end.clone().sub(start).normalize(),
+    );
     this.overlay.add(mesh);
   }
 
@@ -196,7 +226,14 @@ export class Viewer {
     const dir = to.clone().sub(from);
     const length = dir.length();
     if (length === 0) return;
-    const arrow = new THREE.ArrowHelper(dir.normalize(), from, length, color, length * 0.3, length * 0.15);
+    const arrow = new THREE.ArrowHelper(
+      dir.normalize(),
+      from,
+      length,
+      color,
+      length * 0.3,
+      length * 0.15,
+    );
     // Drawn over everything, after the transparent face highlight (so marked transparent too).
     for (const part of [arrow.line, arrow.cone]) {
       part.material.depthTest = false;

@@ -21,20 +21,27 @@ const cli = process.env.HEDGE_CLI || join(repoDir, 'build', 'release', 'tools', 
 const wasmDir = process.env.HEDGE_WASM_DIR || join(repoDir, 'build', 'wasm', 'dist');
 const outDir = process.env.HEDGE_E2E_OUT || join(repoDir, 'build', 'output', 'web-e2e');
 const executablePath = process.env.CHROMIUM || '/usr/bin/chromium';
-const only = process.argv.includes('--only') ? process.argv[process.argv.indexOf('--only') + 1] : null;
+const only = process.argv.includes('--only')
+  ? process.argv[process.argv.indexOf('--only') + 1]
+  : null;
 
 class Failure extends Error {}
 function check(condition, message) {
   if (!condition) throw new Failure(message);
 }
 function checkEqual(actual, expected, what) {
-  check(actual === expected, `${what}: expected ${JSON.stringify(expected)}, got ${JSON.stringify(actual)}`);
+  check(
+    actual === expected,
+    `${what}: expected ${JSON.stringify(expected)}, got ${JSON.stringify(actual)}`,
+  );
 }
 
 // `hedge info --json FILE`: the counts the page must show for the same file.
 function cliInfo(file) {
   check(existsSync(cli), `no hedge CLI at ${cli} (build the release preset)`);
-  const out = execFileSync(cli, ['info', '--json', join(repoDir, 'data', file)], { encoding: 'utf8' });
+  const out = execFileSync(cli, ['info', '--json', join(repoDir, 'data', file)], {
+    encoding: 'utf8',
+  });
   return JSON.parse(out);
 }
 
@@ -49,9 +56,16 @@ async function counts(page) {
 async function loadSample(page, name) {
   await page.selectOption('#sample', name);
   await page.click('#load-sample');
-  await page.waitForFunction((n) => !document.body.dataset.busy &&
-    (document.body.dataset.mesh === n || (document.body.dataset.error || '').includes(n)), name);
-  check(await page.isHidden('#error'), `loading ${name} failed: ${await page.textContent('#error-text')}`);
+  await page.waitForFunction(
+    (n) =>
+      !document.body.dataset.busy &&
+      (document.body.dataset.mesh === n || (document.body.dataset.error || '').includes(n)),
+    name,
+  );
+  check(
+    await page.isHidden('#error'),
+    `loading ${name} failed: ${await page.textContent('#error-text')}`,
+  );
 }
 
 async function edits(page) {
@@ -74,7 +88,11 @@ async function drawnPixels(page) {
     const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
     let n = 0;
     for (let i = 0; i < data.length; i += 4) {
-      if (Math.abs(data[i] - 0xf4) + Math.abs(data[i + 1] - 0xf4) + Math.abs(data[i + 2] - 0xf2) > 24) ++n;
+      if (
+        Math.abs(data[i] - 0xf4) + Math.abs(data[i + 1] - 0xf4) + Math.abs(data[i + 2] - 0xf2) >
+        24
+      )
+        ++n;
     }
     return n;
   });
@@ -83,10 +101,14 @@ async function drawnPixels(page) {
 // Moves the pointer onto a visible interior edge until the page highlights it; returns it.
 // `central`: the edges nearest the middle of the view first.
 async function hoverEdge(page, { central = false } = {}) {
-  const candidates = await page.evaluate((n) => window.playground.visibleEdges(n), central ? 200 : 20);
+  const candidates = await page.evaluate(
+    (n) => window.playground.visibleEdges(n),
+    central ? 200 : 20,
+  );
   if (central) {
     const box = await page.locator('#canvas').boundingBox();
-    const cx = box.x + box.width / 2, cy = box.y + box.height / 2;
+    const cx = box.x + box.width / 2,
+      cy = box.y + box.height / 2;
     const score = (e) => Math.hypot(e.x - cx, e.y - cy) - 2 * e.length;
     candidates.sort((a, b) => score(a) - score(b));
   }
@@ -95,7 +117,9 @@ async function hoverEdge(page, { central = false } = {}) {
     await page.mouse.move(c.x + 40, c.y + 40);
     await page.mouse.move(c.x, c.y);
     try {
-      await page.waitForFunction(() => document.body.dataset.hover === 'edge', null, { timeout: 2000 });
+      await page.waitForFunction(() => document.body.dataset.hover === 'edge', null, {
+        timeout: 2000,
+      });
       return c;
     } catch {
       // The highlight landed on a neighbour (a vertex within a few pixels): try the next edge.
@@ -110,16 +134,21 @@ async function clickEdge(page, mode) {
   const c = await hoverEdge(page);
   const before = await edits(page);
   await page.mouse.click(c.x, c.y);
-  await page.waitForFunction((n) => Number(document.body.dataset.edits || 0) > n, before, { timeout: 5000 });
+  await page.waitForFunction((n) => Number(document.body.dataset.edits || 0) > n, before, {
+    timeout: 5000,
+  });
   return c;
 }
 
 async function dropFile(page, name, text) {
-  const transfer = await page.evaluateHandle(({ name, text }) => {
-    const dt = new DataTransfer();
-    dt.items.add(new File([text], name, { type: 'application/octet-stream' }));
-    return dt;
-  }, { name, text });
+  const transfer = await page.evaluateHandle(
+    ({ name, text }) => {
+      const dt = new DataTransfer();
+      dt.items.add(new File([text], name, { type: 'application/octet-stream' }));
+      return dt;
+    },
+    { name, text },
+  );
   await page.dispatchEvent('#view', 'dragover', { dataTransfer: transfer });
   await page.dispatchEvent('#view', 'drop', { dataTransfer: transfer });
 }
@@ -132,10 +161,13 @@ async function checkGpuCopy(page, what) {
     const b = current.buffers();
     const gpu = viewer.mesh;
     for (let i = 0; i < b.vertices.length; ++i)
-      if (gpu.vertexArray[i] !== b.vertices[i]) return `vertex float ${i}: ${gpu.vertexArray[i]} != ${b.vertices[i]}`;
+      if (gpu.vertexArray[i] !== b.vertices[i])
+        return `vertex float ${i}: ${gpu.vertexArray[i]} != ${b.vertices[i]}`;
     for (let i = 0; i < b.indices.length; ++i)
-      if (gpu.indexArray[i] !== b.indices[i]) return `index ${i}: ${gpu.indexArray[i]} != ${b.indices[i]}`;
-    if (gpu.indexCount !== b.indices.length) return `draw range ${gpu.indexCount} != ${b.indices.length}`;
+      if (gpu.indexArray[i] !== b.indices[i])
+        return `index ${i}: ${gpu.indexArray[i]} != ${b.indices[i]}`;
+    if (gpu.indexCount !== b.indices.length)
+      return `draw range ${gpu.indexCount} != ${b.indices.length}`;
     return null;
   });
   check(mismatch === null, `${what}: the GPU copy differs from RenderSync's buffers: ${mismatch}`);
@@ -144,11 +176,19 @@ async function checkGpuCopy(page, what) {
 // The partial-upload check shared by the edit tests: some bytes went up through bufferSubData, no
 // buffer was reallocated, and far less than the whole buffers was sent.
 function checkPartialUpload(upload, what) {
-  check(upload.full === false, `${what}: the edit re-uploaded the buffers whole: ${JSON.stringify(upload)}`);
+  check(
+    upload.full === false,
+    `${what}: the edit re-uploaded the buffers whole: ${JSON.stringify(upload)}`,
+  );
   checkEqual(upload.fullCalls, 0, `${what}: whole-buffer uploads (bufferData)`);
-  check(upload.subCalls > 0 && upload.subBytes > 0, `${what}: nothing was uploaded: ${JSON.stringify(upload)}`);
-  check(upload.subBytes * 20 < upload.total,
-    `${what}: ${upload.subBytes} B uploaded is not small against the ${upload.total} B buffers`);
+  check(
+    upload.subCalls > 0 && upload.subBytes > 0,
+    `${what}: nothing was uploaded: ${JSON.stringify(upload)}`,
+  );
+  check(
+    upload.subBytes * 20 < upload.total,
+    `${what}: ${upload.subBytes} B uploaded is not small against the ${upload.total} B buffers`,
+  );
 }
 
 // ---- tests --------------------------------------------------------------------------------------
@@ -157,8 +197,15 @@ const tests = [];
 const test = (name, body) => tests.push({ name, body });
 
 test('page loads without console errors', async ({ page, problems }) => {
-  checkEqual(await page.getAttribute('body', 'data-mesh'), 'spot_triangulated.obj', 'mesh loaded at start');
-  check(await page.isHidden('#error'), `the page shows an error: ${await page.textContent('#error-text')}`);
+  checkEqual(
+    await page.getAttribute('body', 'data-mesh'),
+    'spot_triangulated.obj',
+    'mesh loaded at start',
+  );
+  check(
+    await page.isHidden('#error'),
+    `the page shows an error: ${await page.textContent('#error-text')}`,
+  );
   const drawn = await drawnPixels(page);
   check(drawn > 5000, `the canvas shows almost nothing (${drawn} drawn pixels)`);
   checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity shown');
@@ -173,7 +220,11 @@ test('samples match hedge info', async ({ page }) => {
     checkEqual(shown.vertices, info.vertices, `${name}: vertices`);
     checkEqual(shown.edges, info.edges, `${name}: edges`);
     checkEqual(shown.faces, info.faces, `${name}: faces`);
-    checkEqual(await page.getAttribute('body', 'data-valid'), info.valid ? '1' : '0', `${name}: validity`);
+    checkEqual(
+      await page.getAttribute('body', 'data-valid'),
+      info.valid ? '1' : '0',
+      `${name}: validity`,
+    );
     const statText = await page.textContent('#stat-f');
     checkEqual(statText.replace(/,/g, ''), String(info.faces), `${name}: faces in the stats panel`);
   }
@@ -192,13 +243,25 @@ test('hovering an edge shows its half-edge records, one-ring and arrows', async 
   checkEqual(record.twin, h ^ 1, 'twin of the hovered half-edge');
   for (const key of ['origin', 'twin', 'next', 'prev']) {
     const prefix = key === 'origin' ? 'v' : 'h';
-    check(new RegExp(`${key}\\s+${prefix}${record[key]}\\b`).test(text), `records panel lacks ${key} ${prefix}${record[key]}: ${text}`);
+    check(
+      new RegExp(`${key}\\s+${prefix}${record[key]}\\b`).test(text),
+      `records panel lacks ${key} ${prefix}${record[key]}: ${text}`,
+    );
   }
-  check(text.includes(`edge e${record.edge}: v${record.origin} - v${record.target}`), `edge line missing: ${text}`);
+  check(
+    text.includes(`edge e${record.edge}: v${record.origin} - v${record.target}`),
+    `edge line missing: ${text}`,
+  );
   // Highlight, one-ring spokes and four arrows (the half-edge, next, prev and twin) are drawn.
   const overlay = await page.evaluate(() => window.playground.state.viewer.overlay.children.length);
-  const ring = await page.evaluate((v) => window.playground.state.current.oneRing(v).length, record.origin);
-  check(overlay >= 2 + 2 * ring + 4, `${overlay} overlay objects for an edge with a ${ring}-vertex ring and 4 arrows`);
+  const ring = await page.evaluate(
+    (v) => window.playground.state.current.oneRing(v).length,
+    record.origin,
+  );
+  check(
+    overlay >= 2 + 2 * ring + 4,
+    `${overlay} overlay objects for an edge with a ${ring}-vertex ring and 4 arrows`,
+  );
   await page.screenshot({ path: join(outDir, 'inspect_edge.png') });
 
   // A face: the panel lists its loop, the arrows go round it (the picture in the README).
@@ -206,10 +269,17 @@ test('hovering an edge shows its half-edge records, one-ring and arrows', async 
   check(face, 'no visible face found to hover');
   await page.mouse.move(face.x, face.y);
   await page.waitForFunction(() => document.body.dataset.hover === 'face', null, { timeout: 2000 });
-  const loop = await page.evaluate((f) => window.playground.state.current.faceHalfedges(f), face.face);
+  const loop = await page.evaluate(
+    (f) => window.playground.state.current.faceHalfedges(f),
+    face.face,
+  );
   const faceText = await page.textContent('#records');
-  check(faceText.includes(`face f${face.face}: ${loop.length} corners, half-edges ${loop.map((g) => 'h' + g).join(' ')}`),
-    `face records: ${faceText}`);
+  check(
+    faceText.includes(
+      `face f${face.face}: ${loop.length} corners, half-edges ${loop.map((g) => 'h' + g).join(' ')}`,
+    ),
+    `face records: ${faceText}`,
+  );
   await page.screenshot({ path: join(outDir, 'inspect_face.png') });
 });
 
@@ -259,7 +329,9 @@ test('flip and collapse an edge, split a face', async ({ page, log }) => {
   await page.waitForFunction(() => document.body.dataset.hover === 'face', null, { timeout: 2000 });
   const n = await edits(page);
   await page.mouse.click(centre.x, centre.y);
-  await page.waitForFunction((k) => Number(document.body.dataset.edits || 0) > k, n, { timeout: 5000 });
+  await page.waitForFunction((k) => Number(document.body.dataset.edits || 0) > k, n, {
+    timeout: 5000,
+  });
   after = await counts(page);
   checkEqual(after.faces - before.faces, 2, 'faces added by splitting a triangle');
   checkEqual(after.vertices - before.vertices, 1, 'vertices added by splitting a triangle');
@@ -278,12 +350,27 @@ test('a refused collapse says why and changes nothing', async ({ page }) => {
   await page.mouse.click(c.x, c.y);
   await page.waitForSelector('#error', { state: 'visible', timeout: 5000 });
   const message = await page.textContent('#error-text');
-  check(/collapse of half-edge \d+ refused: \S/.test(message), `the refusal does not say why: ${message}`);
-  checkEqual(JSON.stringify(await counts(page)), JSON.stringify(before), 'counts after a refused collapse');
-  checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity after a refused collapse');
+  check(
+    /collapse of half-edge \d+ refused: \S/.test(message),
+    `the refusal does not say why: ${message}`,
+  );
+  checkEqual(
+    JSON.stringify(await counts(page)),
+    JSON.stringify(before),
+    'counts after a refused collapse',
+  );
+  checkEqual(
+    await page.getAttribute('body', 'data-valid'),
+    '1',
+    'validity after a refused collapse',
+  );
   // And the page still edits: a split of the same edge.
   await clickEdge(page, 'split');
-  checkEqual((await counts(page)).faces - before.faces, 2, 'faces added by a split after the refusal');
+  checkEqual(
+    (await counts(page)).faces - before.faces,
+    2,
+    'faces added by a split after the refusal',
+  );
 });
 
 test('subdivide, smooth and decimate', async ({ page }) => {
@@ -297,15 +384,24 @@ test('subdivide, smooth and decimate', async ({ page }) => {
   checkEqual(loop.vertices, start.vertices + start.edges, 'vertices after Loop subdivision');
   await page.click('#smooth');
   await page.waitForFunction(() => Number(document.body.dataset.edits || 0) >= 2);
-  checkEqual(JSON.stringify(await counts(page)), JSON.stringify(loop), 'smoothing keeps the counts');
+  checkEqual(
+    JSON.stringify(await counts(page)),
+    JSON.stringify(loop),
+    'smoothing keeps the counts',
+  );
   await page.fill('#decimate-ratio', '25');
   await page.click('#decimate');
   await page.waitForFunction(() => Number(document.body.dataset.edits || 0) >= 3);
   const decimated = await counts(page);
-  check(decimated.faces <= Math.round(loop.faces * 0.25) + 2 && decimated.faces > 0,
-    `decimation to 25% left ${decimated.faces} of ${loop.faces} faces`);
+  check(
+    decimated.faces <= Math.round(loop.faces * 0.25) + 2 && decimated.faces > 0,
+    `decimation to 25% left ${decimated.faces} of ${loop.faces} faces`,
+  );
   checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity after decimation');
-  check(await page.isHidden('#error'), `the page shows an error: ${await page.textContent('#error-text')}`);
+  check(
+    await page.isHidden('#error'),
+    `the page shows an error: ${await page.textContent('#error-text')}`,
+  );
 
   // Catmull-Clark of the (closed, mostly quad) control mesh: a quad per corner, so twice the edges,
   // and a vertex per vertex, edge and face.
@@ -315,7 +411,11 @@ test('subdivide, smooth and decimate', async ({ page }) => {
   await page.waitForFunction(() => Number(document.body.dataset.edits || 0) >= 4);
   const cc = await counts(page);
   checkEqual(cc.faces, 2 * quads.edges, 'faces after Catmull-Clark of a closed mesh');
-  checkEqual(cc.vertices, quads.vertices + quads.edges + quads.faces, 'vertices after Catmull-Clark');
+  checkEqual(
+    cc.vertices,
+    quads.vertices + quads.edges + quads.faces,
+    'vertices after Catmull-Clark',
+  );
   checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity after Catmull-Clark');
 });
 
@@ -324,17 +424,30 @@ test('a malformed file shows an error and the page keeps working', async ({ page
   await dropFile(page, 'broken.obj', 'v 0 0 0\nv 1 0 0\nv 0 1 zero\nf 1 2 3\n');
   await page.waitForSelector('#error', { state: 'visible', timeout: 5000 });
   const message = await page.textContent('#error-text');
-  check(/broken\.obj\b.*\b3\b/.test(message), `the error does not name the file and line 3: ${message}`);
-  checkEqual(JSON.stringify(await counts(page)), JSON.stringify(before), 'the loaded mesh after a bad file');
+  check(
+    /broken\.obj\b.*\b3\b/.test(message),
+    `the error does not name the file and line 3: ${message}`,
+  );
+  checkEqual(
+    JSON.stringify(await counts(page)),
+    JSON.stringify(before),
+    'the loaded mesh after a bad file',
+  );
   checkEqual(await page.getAttribute('body', 'data-mesh'), 'spot_triangulated.obj', 'mesh kept');
 
   await dropFile(page, 'empty.stl', '');
-  await page.waitForFunction(() => (document.body.dataset.error || '').includes('empty.stl'), null, { timeout: 5000 });
+  await page.waitForFunction(
+    () => (document.body.dataset.error || '').includes('empty.stl'),
+    null,
+    { timeout: 5000 },
+  );
   await page.screenshot({ path: join(outDir, 'malformed_file_error.png') });
 
   // A truncated face is dropped with a warning naming the line; the rest of the file loads.
   await dropFile(page, 'short.obj', 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2\n');
-  await page.waitForFunction(() => document.body.dataset.mesh === 'short.obj', null, { timeout: 5000 });
+  await page.waitForFunction(() => document.body.dataset.mesh === 'short.obj', null, {
+    timeout: 5000,
+  });
   checkEqual((await counts(page)).faces, 1, 'faces of short.obj');
   const notes = await page.textContent('#mesh-notes');
   check(notes.includes('short.obj:6'), `the warning does not name line 6: ${notes}`);
@@ -342,10 +455,24 @@ test('a malformed file shows an error and the page keeps working', async ({ page
 
   // Still working: an edit, then a good file by drop, which also clears the message.
   await clickEdge(page, 'split');
-  checkEqual((await counts(page)).faces - before.faces, 2, 'faces added by a split after the errors');
-  await dropFile(page, 'tet.off', 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n');
-  await page.waitForFunction(() => document.body.dataset.mesh === 'tet.off', null, { timeout: 5000 });
-  checkEqual(JSON.stringify(await counts(page)), JSON.stringify({ vertices: 4, edges: 6, faces: 4 }), 'tetrahedron dropped');
+  checkEqual(
+    (await counts(page)).faces - before.faces,
+    2,
+    'faces added by a split after the errors',
+  );
+  await dropFile(
+    page,
+    'tet.off',
+    'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n',
+  );
+  await page.waitForFunction(() => document.body.dataset.mesh === 'tet.off', null, {
+    timeout: 5000,
+  });
+  checkEqual(
+    JSON.stringify(await counts(page)),
+    JSON.stringify({ vertices: 4, edges: 6, faces: 4 }),
+    'tetrahedron dropped',
+  );
   check(await page.isHidden('#error'), 'the error stays after a good file');
 });
 
@@ -366,8 +493,15 @@ test('picking: 500 rays per frame on 93,696 triangles', async ({ page, log }) =>
 async function setupBreak(page, scene) {
   await page.selectOption('#break-scene', scene);
   await page.click('#break-setup');
-  await page.waitForFunction((s) => document.body.dataset.scene === s && !document.body.dataset.busy, scene, { timeout: 30000 });
-  check(await page.isHidden('#error'), `setting up ${scene} failed: ${await page.textContent('#error-text')}`);
+  await page.waitForFunction(
+    (s) => document.body.dataset.scene === s && !document.body.dataset.busy,
+    scene,
+    { timeout: 30000 },
+  );
+  check(
+    await page.isHidden('#error'),
+    `setting up ${scene} failed: ${await page.textContent('#error-text')}`,
+  );
 }
 
 // Clicks the mesh at world point p and waits for the strike to land; returns the strike's stats.
@@ -375,8 +509,15 @@ async function strikeAt(page, p) {
   const before = await edits(page);
   const { x, y } = await page.evaluate((q) => window.playground.project(q), p);
   await page.mouse.click(x, y);
-  await page.waitForFunction((n) => Number(document.body.dataset.edits || 0) > n || document.body.dataset.error, before, { timeout: 10000 });
-  check(await page.isHidden('#error'), `the strike failed: ${await page.textContent('#error-text')}`);
+  await page.waitForFunction(
+    (n) => Number(document.body.dataset.edits || 0) > n || document.body.dataset.error,
+    before,
+    { timeout: 10000 },
+  );
+  check(
+    await page.isHidden('#error'),
+    `the strike failed: ${await page.textContent('#error-text')}`,
+  );
   return JSON.parse(await page.getAttribute('body', 'data-fracture'));
 }
 
@@ -385,11 +526,20 @@ const steps = async (page) => Number(await page.getAttribute('body', 'data-physi
 
 // Waits until every shard is still (slower than 1 cm/s and 0.05 rad/s), at most `seconds`.
 async function waitForRest(page, seconds) {
-  await page.waitForFunction(() => window.playground.shards().every((s) => s.asleep || (s.speed < 0.01 && s.angularSpeed < 0.05)),
-    null, { timeout: seconds * 1000, polling: 500 });
+  await page.waitForFunction(
+    () =>
+      window.playground
+        .shards()
+        .every((s) => s.asleep || (s.speed < 0.01 && s.angularSpeed < 0.05)),
+    null,
+    { timeout: seconds * 1000, polling: 500 },
+  );
 }
 
-test('break: a strike on the plate makes shards that fall and settle on the ground', async ({ page, log }) => {
+test('break: a strike on the plate makes shards that fall and settle on the ground', async ({
+  page,
+  log,
+}) => {
   await setupBreak(page, 'plate');
   checkEqual((await counts(page)).faces, 100352, 'faces of the plate');
   await page.selectOption('#break-material', 'glass');
@@ -398,40 +548,74 @@ test('break: a strike on the plate makes shards that fall and settle on the grou
   const stats = await strikeAt(page, [0.11, 1, 0.07]);
   check(stats.shards >= 20 && stats.shards <= 40, `${stats.shards} shards from a glass strike`);
   checkEqual(stats.strikes, 1, 'strikes counted');
-  check(stats.last > 0 && stats.wasm > 0 && stats.wasm <= stats.last, `implausible times: ${JSON.stringify(stats)}`);
+  check(
+    stats.last > 0 && stats.wasm > 0 && stats.wasm <= stats.last,
+    `implausible times: ${JSON.stringify(stats)}`,
+  );
   const after = await counts(page);
   check(after.faces < facesBefore, `the plate still has ${after.faces} faces`);
-  checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'the plate after the strike is valid');
+  checkEqual(
+    await page.getAttribute('body', 'data-valid'),
+    '1',
+    'the plate after the strike is valid',
+  );
   check((await page.textContent('#stat-valid')) === 'valid', 'the stats panel says valid');
   checkPartialUpload(await lastUpload(page), 'strike');
   await checkGpuCopy(page, 'strike');
-  checkEqual(Number(await page.getAttribute('body', 'data-shards')), stats.shards, 'bodies in the physics');
+  checkEqual(
+    Number(await page.getAttribute('body', 'data-shards')),
+    stats.shards,
+    'bodies in the physics',
+  );
 
   // All bodies of the strike, from where it made them (before any step) to a later frame.
-  const { steps: startSteps, shards: start } = await page.evaluate(() => window.playground.strikeSnapshot());
+  const { steps: startSteps, shards: start } = await page.evaluate(() =>
+    window.playground.strikeSnapshot(),
+  );
   checkEqual(start.length, stats.shards, 'bodies made by the strike');
   const startY = start.map((s) => s.position[1]);
-  check(startY.every((y) => y > 0.98 && y < 1), `the shards start in the plate (y = 1, 1 cm thick): ${startY.join(' ')}`);
-  await page.waitForFunction((n) => Number(document.body.dataset.physicsSteps) >= n + 20, startSteps, { timeout: 30000 });
+  check(
+    startY.every((y) => y > 0.98 && y < 1),
+    `the shards start in the plate (y = 1, 1 cm thick): ${startY.join(' ')}`,
+  );
+  await page.waitForFunction(
+    (n) => Number(document.body.dataset.physicsSteps) >= n + 20,
+    startSteps,
+    { timeout: 30000 },
+  );
   const moved = await shardReport(page);
   checkEqual(moved.length, start.length, 'bodies after 20 steps');
   const falling = moved.filter((s, i) => s.position[1] < start[i].position[1] - 1e-3).length;
   checkEqual(falling, start.length, 'shards lower after 20 steps');
-  const shifted = moved.filter((s, i) => Math.hypot(s.position[0] - start[i].position[0], s.position[2] - start[i].position[2]) > 1e-3).length;
-  check(shifted > start.length / 2, `only ${shifted} of ${start.length} shards moved sideways (away from the impact)`);
+  const shifted = moved.filter(
+    (s, i) =>
+      Math.hypot(s.position[0] - start[i].position[0], s.position[2] - start[i].position[2]) > 1e-3,
+  ).length;
+  check(
+    shifted > start.length / 2,
+    `only ${shifted} of ${start.length} shards moved sideways (away from the impact)`,
+  );
 
   await waitForRest(page, 120);
   const rest = await shardReport(page);
   const ground = await page.evaluate(() => window.playground.groundY());
   checkEqual(ground, 0, 'ground height');
   for (const [i, s] of rest.entries()) {
-    check(s.lowest > ground - 0.005, `shard ${i} sinks into the ground: its lowest point is at ${s.lowest}`);
-    check(s.position[1] < 0.1, `shard ${i} did not fall to the ground: its centre is at y = ${s.position[1]}`);
+    check(
+      s.lowest > ground - 0.005,
+      `shard ${i} sinks into the ground: its lowest point is at ${s.lowest}`,
+    );
+    check(
+      s.position[1] < 0.1,
+      `shard ${i} did not fall to the ground: its centre is at y = ${s.position[1]}`,
+    );
     check(s.speed < 0.01, `shard ${i} still moves at ${s.speed} m/s`);
   }
   const settledSteps = await steps(page);
   check(/at rest/.test(await page.textContent('#stat-shards')), 'the shard count is shown');
-  log(`    ${stats.shards} shards, settled after ${settledSteps} steps (${(settledSteps / 60).toFixed(1)} s simulated); strike ${stats.last.toFixed(2)} ms`);
+  log(
+    `    ${stats.shards} shards, settled after ${settledSteps} steps (${(settledSteps / 60).toFixed(1)} s simulated); strike ${stats.last.toFixed(2)} ms`,
+  );
   await page.screenshot({ path: join(outDir, 'break_plate.png') });
 
   // A second strike elsewhere, another material; and a bad seed is refused without harm.
@@ -439,7 +623,11 @@ test('break: a strike on the plate makes shards that fall and settle on the grou
   const second = await strikeAt(page, [-0.6, 1, -0.4]);
   check(second.shards >= 3 && second.shards <= 7, `${second.shards} shards from a stone strike`);
   checkEqual(second.strikes, 2, 'strikes counted');
-  checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'the plate after two strikes is valid');
+  checkEqual(
+    await page.getAttribute('body', 'data-valid'),
+    '1',
+    'the plate after two strikes is valid',
+  );
   const faces = (await counts(page)).faces;
   await page.fill('#break-seed', '-3');
   const { x, y } = await page.evaluate(() => window.playground.project([0.5, 1, 0.5]));
@@ -456,8 +644,15 @@ test('break: a strike on a 3D object', async ({ page }) => {
   check(centre !== null, 'no visible face of spot');
   const before = await edits(page);
   await page.mouse.click(centre.x, centre.y);
-  await page.waitForFunction((n) => Number(document.body.dataset.edits || 0) > n || document.body.dataset.error, before, { timeout: 10000 });
-  check(await page.isHidden('#error'), `the strike failed: ${await page.textContent('#error-text')}`);
+  await page.waitForFunction(
+    (n) => Number(document.body.dataset.edits || 0) > n || document.body.dataset.error,
+    before,
+    { timeout: 10000 },
+  );
+  check(
+    await page.isHidden('#error'),
+    `the strike failed: ${await page.textContent('#error-text')}`,
+  );
   const stats = JSON.parse(await page.getAttribute('body', 'data-fracture'));
   check(stats.shards >= 2, `${stats.shards} shards`);
   checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'spot after the strike is valid');
@@ -473,13 +668,22 @@ test('break: 25 glass strikes on the 100k-triangle plate, timed', async ({ page,
   await setupBreak(page, 'plate');
   await page.selectOption('#break-material', 'glass');
   await page.click('#break-bench');
-  await page.waitForFunction(() => document.body.dataset.breakBench || document.body.dataset.error, null, { timeout: 120000 });
+  await page.waitForFunction(
+    () => document.body.dataset.breakBench || document.body.dataset.error,
+    null,
+    { timeout: 120000 },
+  );
   check(await page.isHidden('#error'), `timing failed: ${await page.textContent('#error-text')}`);
   const report = JSON.parse(await page.getAttribute('body', 'data-break-bench'));
   checkEqual(report.triangles, 100352, 'triangles of the plate');
   checkEqual(report.strikes, 25, 'strikes timed');
   check(report.meanShards > 30, `${report.meanShards} shards per glass strike`);
-  check(report.medianMs > 0 && report.medianInWasmMs <= report.medianMs && report.medianMs <= report.p95Ms, `implausible: ${report.text}`);
+  check(
+    report.medianMs > 0 &&
+      report.medianInWasmMs <= report.medianMs &&
+      report.medianMs <= report.p95Ms,
+    `implausible: ${report.text}`,
+  );
   checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'the plate is left valid');
   log(`    ${report.text}`);
 });
@@ -491,26 +695,44 @@ test('the server serves its roots only, with the right types', async ({ url }) =
     return new Promise((resolveGet, rejectGet) => {
       const req = request(new URL(path, url), { method: 'GET', path }, (res) => {
         res.resume();
-        res.on('end', () => resolveGet({ status: res.statusCode, type: res.headers['content-type'] }));
+        res.on('end', () =>
+          resolveGet({ status: res.statusCode, type: res.headers['content-type'] }),
+        );
       });
       req.on('error', rejectGet);
       req.end();
     });
   };
   checkEqual((await get('/wasm/hedge.wasm')).type, 'application/wasm', 'type of hedge.wasm');
-  checkEqual((await get('/wasm/hedge.mjs')).type, 'text/javascript; charset=utf-8', 'type of hedge.mjs');
+  checkEqual(
+    (await get('/wasm/hedge.mjs')).type,
+    'text/javascript; charset=utf-8',
+    'type of hedge.mjs',
+  );
   checkEqual((await get('/data/anchor.off')).status, 200, 'a sample');
   // Each of these would reach the repository's README.md if the dots were followed.
-  for (const path of ['/../README.md', '/data/..%2fREADME.md', '/data/%2e%2e%2fREADME.md', '/%2e%2e/README.md',
-    '/wasm/..%2f..%2f..%2fREADME.md', '/node_modules/..%2f..%2fREADME.md'])
+  for (const path of [
+    '/../README.md',
+    '/data/..%2fREADME.md',
+    '/data/%2e%2e%2fREADME.md',
+    '/%2e%2e/README.md',
+    '/wasm/..%2f..%2f..%2fREADME.md',
+    '/node_modules/..%2f..%2fREADME.md',
+  ])
     checkEqual((await get(path)).status, 404, `GET ${path}`);
 });
 
 // ---- runner -------------------------------------------------------------------------------------
 
 async function run() {
-  check(existsSync(executablePath), `no browser at ${executablePath} (install chromium: scripts/deps.sh group web)`);
-  check(existsSync(join(wasmDir, 'hedge.mjs')), `no WebAssembly build in ${wasmDir} (run bindings/wasm/build)`);
+  check(
+    existsSync(executablePath),
+    `no browser at ${executablePath} (install chromium: scripts/deps.sh group web)`,
+  );
+  check(
+    existsSync(join(wasmDir, 'hedge.mjs')),
+    `no WebAssembly build in ${wasmDir} (run bindings/wasm/build)`,
+  );
   mkdirSync(outDir, { recursive: true });
   const { server, url } = await startServer({ port: 0, wasm: wasmDir });
   const profile = mkdtempSync(join(tmpdir(), 'hedge-e2e-'));
@@ -518,8 +740,16 @@ async function run() {
     executablePath,
     headless: true,
     viewport: { width: 1100, height: 700 },
-    args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
-      '--disable-component-update', '--disable-sync', '--enable-unsafe-swiftshader'],
+    args: [
+      '--no-sandbox',
+      '--disable-gpu',
+      '--disable-quic',
+      '--no-first-run',
+      '--disable-background-networking',
+      '--disable-component-update',
+      '--disable-sync',
+      '--enable-unsafe-swiftshader',
+    ],
   });
   let failed = 0;
   let ran = 0;
@@ -539,16 +769,23 @@ async function run() {
       const lines = [];
       try {
         await page.goto(url);
-        await page.waitForFunction(() => document.body.dataset.ready === '1' || document.body.dataset.error,
-          null, { timeout: 30000 });
-        check(await page.getAttribute('body', 'data-ready') === '1',
-          `the page did not start: ${await page.getAttribute('body', 'data-error')}`);
+        await page.waitForFunction(
+          () => document.body.dataset.ready === '1' || document.body.dataset.error,
+          null,
+          { timeout: 30000 },
+        );
+        check(
+          (await page.getAttribute('body', 'data-ready')) === '1',
+          `the page did not start: ${await page.getAttribute('body', 'data-error')}`,
+        );
         await t.body({ page, problems, url, log: (s) => lines.push(s) });
         check(problems.length === 0, `browser errors: ${problems.join(' | ')}`);
         console.log(`PASS ${t.name} (${Date.now() - t0} ms)`);
       } catch (error) {
         ++failed;
-        console.log(`FAIL ${t.name} (${Date.now() - t0} ms)\n    ${error instanceof Failure ? error.message : error.stack}`);
+        console.log(
+          `FAIL ${t.name} (${Date.now() - t0} ms)\n    ${error instanceof Failure ? error.message : error.stack}`,
+        );
       } finally {
         for (const s of lines) console.log(s);
         const file = join(outDir, `${t.name.replace(/[^a-z0-9]+/gi, '_').toLowerCase()}.png`);
@@ -561,12 +798,17 @@ async function run() {
     server.close();
     rmSync(profile, { recursive: true, force: true });
   }
-  console.log(`${ran - failed} of ${ran} browser tests passed in ${((Date.now() - started) / 1000).toFixed(1)} s;` +
-    ` screenshots in ${outDir}`);
+  console.log(
+    `${ran - failed} of ${ran} browser tests passed in ${((Date.now() - started) / 1000).toFixed(1)} s;` +
+      ` screenshots in ${outDir}`,
+  );
   return failed === 0;
 }
 
-run().then((ok) => process.exit(ok ? 0 : 1), (error) => {
-  console.error(error instanceof Failure ? `e2e: ${error.message}` : error);
-  process.exit(1);
-});
+run().then(
+  (ok) => process.exit(ok ? 0 : 1),
+  (error) => {
+    console.error(error instanceof Failure ? `e2e: ${error.message}` : error);
+    process.exit(1);
+  },
+);

@@ -12,7 +12,9 @@ function area(mesh) {
     const [a, b, c] = [t[i] * 3, t[i + 1] * 3, t[i + 2] * 3];
     const u = [p[b] - p[a], p[b + 1] - p[a + 1], p[b + 2] - p[a + 2]];
     const v = [p[c] - p[a], p[c + 1] - p[a + 1], p[c + 2] - p[a + 2]];
-    sum += Math.hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]) / 2;
+    sum +=
+      Math.hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]) /
+      2;
   }
   return sum;
 }
@@ -39,13 +41,23 @@ test('a glass strike on a plate gives valid shards whose areas and the rest add 
   const before = area(mesh);
   assert.ok(Math.abs(before - 900) < 1e-9);
   const result = mesh.fracture([15.3, 14.6, 0], { material: 'glass', seed: 7 });
-  assert.ok(result.shards.length >= 20 && result.shards.length <= 40, `${result.shards.length} shards`);
+  assert.ok(
+    result.shards.length >= 20 && result.shards.length <= 40,
+    `${result.shards.length} shards`,
+  );
   assert.ok(result.impactFace >= 0);
-  assert.deepEqual(result.impactPoint.map((x) => Math.round(x * 10) / 10), [15.3, 14.6, 0]);
+  assert.deepEqual(
+    result.impactPoint.map((x) => Math.round(x * 10) / 10),
+    [15.3, 14.6, 0],
+  );
   const sec = result.seconds;
   const stages = sec.locate + sec.scatter + sec.cut + sec.detach + sec.hulls;
-  for (const stage of ['locate', 'scatter', 'cut', 'detach', 'hulls', 'pack']) assert.ok(sec[stage] >= 0, stage);
-  assert.ok(stages > 0 && stages <= sec.fracture * 1.001, `stages ${stages} s within the call's ${sec.fracture} s`);
+  for (const stage of ['locate', 'scatter', 'cut', 'detach', 'hulls', 'pack'])
+    assert.ok(sec[stage] >= 0, stage);
+  assert.ok(
+    stages > 0 && stages <= sec.fracture * 1.001,
+    `stages ${stages} s within the call's ${sec.fracture} s`,
+  );
   let shardArea = 0;
   for (const shard of result.shards) {
     assert.deepEqual(shard.mesh.validate(), []);
@@ -58,10 +70,17 @@ test('a glass strike on a plate gives valid shards whose areas and the rest add 
     assert.equal(shard.mass, 0);
     const hullVertices = shard.hull.positions.length / 3;
     assert.ok(hullVertices >= 4);
-    assert.equal(shard.hull.indices.length / 3, 2 * hullVertices - 4, 'the hull is a closed triangle mesh');
+    assert.equal(
+      shard.hull.indices.length / 3,
+      2 * hullVertices - 4,
+      'the hull is a closed triangle mesh',
+    );
   }
   const rest = area(mesh);
-  assert.ok(Math.abs(shardArea + rest - before) <= 1e-5 * before, `${shardArea} + ${rest} vs ${before}`);
+  assert.ok(
+    Math.abs(shardArea + rest - before) <= 1e-5 * before,
+    `${shardArea} + ${rest} vs ${before}`,
+  );
   assert.deepEqual(mesh.validate(), []);
   disposeAll(result);
   mesh.dispose();
@@ -96,9 +115,15 @@ test('with a thickness each shard is a closed solid with its mass properties and
     assert.deepEqual(shard.mesh.validate(), []);
     assert.equal(shard.closed, true);
     // A flat slab of the front's area, the thickness deep.
-    assert.ok(Math.abs(shard.volume - shard.area * thickness) <= 1e-4 * shard.volume, `${shard.volume} vs ${shard.area * thickness}`);
+    assert.ok(
+      Math.abs(shard.volume - shard.area * thickness) <= 1e-4 * shard.volume,
+      `${shard.volume} vs ${shard.area * thickness}`,
+    );
     assert.ok(Math.abs(shard.mass - density * shard.volume) <= 1e-9 * shard.mass);
-    assert.ok(Math.abs(shard.centreOfMass[2] + thickness / 2) < 1e-5, 'the centre of mass is mid-depth');
+    assert.ok(
+      Math.abs(shard.centreOfMass[2] + thickness / 2) < 1e-5,
+      'the centre of mass is mid-depth',
+    );
     const [i0, i1, i2] = shard.principalMoments;
     assert.ok(i0 > 0 && i0 <= i1 && i1 <= i2);
     assert.ok(Math.abs(shard.inertia[1] - shard.inertia[3]) < 1e-9, 'the tensor is symmetric');
@@ -112,7 +137,9 @@ test('with a thickness each shard is a closed solid with its mass properties and
       const n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
       const len = Math.hypot(...n);
       for (let k = 0; k < p.length; k += 3) {
-        const d = ((p[k] - hp[a]) * n[0] + (p[k + 1] - hp[a + 1]) * n[1] + (p[k + 2] - hp[a + 2]) * n[2]) / len;
+        const d =
+          ((p[k] - hp[a]) * n[0] + (p[k + 1] - hp[a + 1]) * n[1] + (p[k + 2] - hp[a + 2]) * n[2]) /
+          len;
         assert.ok(d < 1e-4, `a shard vertex lies ${d} outside its hull`);
       }
     }
@@ -148,7 +175,7 @@ test('the remaining mesh reaches its Render as a partial sync', () => {
   const sync = render.sync();
   assert.equal(sync.full, false);
   assert.ok(sync.indexRanges.length > 0);
-  assert.ok(sync.indexBytes < triangles * 12 / 4, `${sync.indexBytes} index bytes rewritten`);
+  assert.ok(sync.indexBytes < (triangles * 12) / 4, `${sync.indexBytes} index bytes rewritten`);
   assert.equal(render.sizes().triangles, mesh.counts().faces);
   assert.deepEqual(mesh.validate(), []);
   disposeAll(result);
@@ -160,7 +187,10 @@ test('bad strikes throw a HedgeError and leave the mesh unchanged', () => {
   const mesh = grid(10);
   const before = Array.from(mesh.toArrays().indices);
   const refused = (impact, options, pattern) => {
-    assert.throws(() => mesh.fracture(impact, options), (e) => e instanceof HedgeError && pattern.test(e.message));
+    assert.throws(
+      () => mesh.fracture(impact, options),
+      (e) => e instanceof HedgeError && pattern.test(e.message),
+    );
   };
   refused([NaN, 1, 0], {}, /impact.*not finite/);
   refused([1, Infinity, 0], {}, /not finite/);
@@ -176,7 +206,9 @@ test('bad strikes throw a HedgeError and leave the mesh unchanged', () => {
   assert.deepEqual(Array.from(mesh.toArrays().indices), before);
   assert.deepEqual(mesh.validate(), []);
   // A custom material works once it is right.
-  const result = mesh.fracture([5, 5, 0], { material: { name: 'tile', rings: [{ points: 5, spacing: 1.5, jitter: 0.3 }] } });
+  const result = mesh.fracture([5, 5, 0], {
+    material: { name: 'tile', rings: [{ points: 5, spacing: 1.5, jitter: 0.3 }] },
+  });
   assert.ok(result.shards.length >= 2 && result.shards.length <= 5);
   assert.deepEqual(mesh.validate(), []);
   disposeAll(result);
@@ -204,12 +236,17 @@ test('repeated strikes with their shards disposed leave the heap as it was', () 
   let bytes = 0;
   for (let i = 0; i < 30; ++i) {
     const before = hedge.heapBytesInUse();
-    const result = mesh.fracture([10.3 + (i % 6) * 20, 10.6 + Math.floor(i / 6) * 20, 0], { seed: i });
+    const result = mesh.fracture([10.3 + (i % 6) * 20, 10.6 + Math.floor(i / 6) * 20, 0], {
+      seed: i,
+    });
     bytes = Math.max(bytes, hedge.heapBytesInUse() - before);
     disposeAll(result);
   }
   assert.ok(bytes > 0);
-  assert.ok(hedge.heapBytesInUse() - base < 2_000_000, `the mesh's own growth: ${hedge.heapBytesInUse() - base} bytes`);
+  assert.ok(
+    hedge.heapBytesInUse() - base < 2_000_000,
+    `the mesh's own growth: ${hedge.heapBytesInUse() - base} bytes`,
+  );
   assert.deepEqual(mesh.validate(), []);
   mesh.dispose();
 });

@@ -43,18 +43,25 @@ const collect = async () => {
   }
 };
 
-test('1,000 meshes dropped without dispose are freed by the garbage collector', { skip: typeof globalThis.gc !== 'function' && 'needs node --expose-gc' }, async () => {
-  await collect();
-  const inUse = hedge.heapBytesInUse();
-  let peak = 0;
-  for (let batch = 0; batch < 10; ++batch) {
-    for (let i = 0; i < 100; ++i) buildAndUse(); // dropped at once
-    peak = Math.max(peak, hedge.heapBytesInUse());
+test(
+  '1,000 meshes dropped without dispose are freed by the garbage collector',
+  { skip: typeof globalThis.gc !== 'function' && 'needs node --expose-gc' },
+  async () => {
     await collect();
-  }
-  await collect();
-  const after = hedge.heapBytesInUse();
-  // 100 live meshes at a time at most (about 10 MB); afterwards all were freed.
-  assert.ok(peak - inUse > 100 * 50_000 * 0.5, `the batches were allocated (${peak - inUse} bytes)`);
-  assert.ok(after - inUse < 200_000, `the heap is back to ${after} bytes from ${inUse}`);
-});
+    const inUse = hedge.heapBytesInUse();
+    let peak = 0;
+    for (let batch = 0; batch < 10; ++batch) {
+      for (let i = 0; i < 100; ++i) buildAndUse(); // dropped at once
+      peak = Math.max(peak, hedge.heapBytesInUse());
+      await collect();
+    }
+    await collect();
+    const after = hedge.heapBytesInUse();
+    // 100 live meshes at a time at most (about 10 MB); afterwards all were freed.
+    assert.ok(
+      peak - inUse > 100 * 50_000 * 0.5,
+      `the batches were allocated (${peak - inUse} bytes)`,
+    );
+    assert.ok(after - inUse < 200_000, `the heap is back to ${after} bytes from ${inUse}`);
+  },
+);

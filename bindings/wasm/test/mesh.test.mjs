@@ -64,7 +64,8 @@ test('the one-ring of an interior vertex and the half-edges of a face', () => {
   assert.equal(mesh.vertex(4).boundary, false);
   const face = mesh.face(0);
   assert.deepEqual([...face.vertices].sort(), [0, 2, 4]);
-  for (let k = 0; k < 3; ++k) assert.equal(mesh.halfedge(face.halfedges[k]).next, face.halfedges[(k + 1) % 3]);
+  for (let k = 0; k < 3; ++k)
+    assert.equal(mesh.halfedge(face.halfedges[k]).next, face.halfedges[(k + 1) % 3]);
   const edge = mesh.edge(face.edges[0]);
   assert.deepEqual(edge.halfedges, [2 * face.edges[0], 2 * face.edges[0] + 1]);
   assert.ok(edge.faces.includes(0));
@@ -79,7 +80,7 @@ test('a grid corner is a boundary vertex with a boundary gap in its ring', () =>
   mesh.dispose();
 });
 
-test('each file format goes through hedge\'s own readers', () => {
+test("each file format goes through hedge's own readers", () => {
   // Counts from the files themselves: the tetrahedron of tet.obj, the OFF and PLY headers, and
   // the icosahedron of the binary STL (welded: 12 vertices, 30 edges, 20 faces).
   const tet = hedge.fromFile(sample('tet.obj'), 'tet.obj');
@@ -92,7 +93,10 @@ test('each file format goes through hedge\'s own readers', () => {
     .decode(offBytes.subarray(0, 200))
     .split('\n')
     .filter((l) => l.trim() && !l.startsWith('#'));
-  const [nv, nf] = (header[0].trim() === 'OFF' ? header[1] : header[0].replace(/^OFF/, '')).trim().split(/\s+/).map(Number);
+  const [nv, nf] = (header[0].trim() === 'OFF' ? header[1] : header[0].replace(/^OFF/, ''))
+    .trim()
+    .split(/\s+/)
+    .map(Number);
   const off = hedge.fromFile(offBytes, 'anchor.off');
   assert.equal(off.counts().faces, nf);
   assert.equal(off.counts().vertices, nv);
@@ -100,7 +104,10 @@ test('each file format goes through hedge\'s own readers', () => {
   const plyBytes = sample('bob_small.ply');
   const plyHeader = new TextDecoder().decode(plyBytes.subarray(0, 600));
   const plyFaces = Number(/element face (\d+)/.exec(plyHeader)[1]);
-  const ply = hedge.fromFile(plyBytes.buffer.slice(plyBytes.byteOffset, plyBytes.byteOffset + plyBytes.byteLength), 'bob_small.ply');
+  const ply = hedge.fromFile(
+    plyBytes.buffer.slice(plyBytes.byteOffset, plyBytes.byteOffset + plyBytes.byteLength),
+    'bob_small.ply',
+  );
   assert.equal(ply.counts().faces, plyFaces);
 
   const stl = hedge.fromFile(sample('icosahedron_binary.stl'), 'icosahedron_binary.stl');
@@ -134,22 +141,31 @@ test('a hostile glTF reads no other file, and deep or amplifying JSON is refused
     new TextEncoder().encode(head + '"meshes":' + meshes + ',"buffers":' + buffers + extra + '}');
   const one = '[{"primitives":[{"attributes":{"POSITION":0}}]}]';
   // Positions (0,0,0) (1,0,0) (0,1,0).
-  const embedded = '[{"byteLength":36,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]';
+  const embedded =
+    '[{"byteLength":36,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]';
   const triangle = hedge.fromFile(file(one, embedded), 'tri.gltf');
   assert.equal(triangle.counts().faces, 1);
   triangle.dispose();
   // Bytes from a page have no folder: external buffers are off.
   assert.throws(
     () => hedge.fromFile(file(one, '[{"byteLength":36,"uri":"tri.bin"}]'), 'tri.gltf'),
-    (e) => e.kind === 'io' && /tri\.gltf: buffer 0: .*reading external buffers is turned off/.test(e.message),
+    (e) =>
+      e.kind === 'io' &&
+      /tri\.gltf: buffer 0: .*reading external buffers is turned off/.test(e.message),
   );
   assert.throws(
     () => hedge.fromFile(file(one, '[{"byteLength":36,"uri":"../../etc/passwd"}]'), 'tri.gltf'),
     (e) => e.kind === 'io' && /turned off/.test(e.message),
   );
   assert.throws(
-    () => hedge.fromFile(file(one, embedded, ',"extras":' + '['.repeat(17000) + ']'.repeat(17000)), 'deep.gltf'),
-    (e) => e.kind === 'io' && /deep\.gltf: malformed glTF: JSON nested deeper than 64 levels/.test(e.message),
+    () =>
+      hedge.fromFile(
+        file(one, embedded, ',"extras":' + '['.repeat(17000) + ']'.repeat(17000)),
+        'deep.gltf',
+      ),
+    (e) =>
+      e.kind === 'io' &&
+      /deep\.gltf: malformed glTF: JSON nested deeper than 64 levels/.test(e.message),
   );
   // 1,000 primitives sharing one accessor of 30,000 indices: 30M corners from 120 KB, refused.
   const shared = new TextEncoder().encode(
@@ -157,8 +173,12 @@ test('a hostile glTF reads no other file, and deep or amplifying JSON is refused
       '"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},' +
       '{"bufferView":1,"componentType":5123,"count":30000,"type":"SCALAR"}],' +
       '"bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":60000}],' +
-      '"meshes":[{"primitives":[' + Array(1000).fill('{"attributes":{"POSITION":0},"indices":1}').join(',') + ']}],' +
-      '"buffers":[{"byteLength":60036,"uri":"data:application/octet-stream;base64,' + 'A'.repeat(80048) + '"}]}',
+      '"meshes":[{"primitives":[' +
+      Array(1000).fill('{"attributes":{"POSITION":0},"indices":1}').join(',') +
+      ']}],' +
+      '"buffers":[{"byteLength":60036,"uri":"data:application/octet-stream;base64,' +
+      'A'.repeat(80048) +
+      '"}]}',
   );
   assert.throws(
     () => hedge.fromFile(shared, 'shared.gltf'),
@@ -170,11 +190,21 @@ test('a malformed file throws a HedgeError naming the file and line, and the mod
   const bad = new TextEncoder().encode('v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 oops\n');
   assert.throws(
     () => hedge.fromFile(bad, 'broken.obj'),
-    (e) => e instanceof HedgeError && e instanceof Error && e.kind === 'io' && /broken\.obj:4/.test(e.message),
+    (e) =>
+      e instanceof HedgeError &&
+      e instanceof Error &&
+      e.kind === 'io' &&
+      /broken\.obj:4/.test(e.message),
   );
   const truncated = sample('icosahedron_binary.stl').subarray(0, 200);
-  assert.throws(() => hedge.fromFile(truncated, 'cut.stl'), (e) => e.kind === 'io' && /cut\.stl/.test(e.message));
-  assert.throws(() => hedge.fromFile(bad, 'mesh.xyz'), (e) => e.kind === 'io' && /xyz/.test(e.message));
+  assert.throws(
+    () => hedge.fromFile(truncated, 'cut.stl'),
+    (e) => e.kind === 'io' && /cut\.stl/.test(e.message),
+  );
+  assert.throws(
+    () => hedge.fromFile(bad, 'mesh.xyz'),
+    (e) => e.kind === 'io' && /xyz/.test(e.message),
+  );
   const mesh = grid(1);
   assert.equal(mesh.counts().faces, 2);
   mesh.dispose();
@@ -182,15 +212,27 @@ test('a malformed file throws a HedgeError naming the file and line, and the mod
 
 test('bad typed-array input is refused with a clear message', () => {
   assert.throws(
-    () => hedge.fromBuffers({ positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, NaN, 0]), indices: new Uint32Array([0, 1, 2]) }),
+    () =>
+      hedge.fromBuffers({
+        positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, NaN, 0]),
+        indices: new Uint32Array([0, 1, 2]),
+      }),
     (e) => e.kind === 'invalid-argument' && /finite|NaN/i.test(e.message),
   );
   assert.throws(
-    () => hedge.fromBuffers({ positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0]), indices: new Uint32Array([0, 1, 7]) }),
+    () =>
+      hedge.fromBuffers({
+        positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0]),
+        indices: new Uint32Array([0, 1, 7]),
+      }),
     (e) => e.kind === 'invalid-argument' && /7/.test(e.message),
   );
   assert.throws(
-    () => hedge.fromBuffers({ positions: new Float32Array([0, 0, 0, 1, 0]), indices: new Uint32Array([0, 1, 2]) }),
+    () =>
+      hedge.fromBuffers({
+        positions: new Float32Array([0, 0, 0, 1, 0]),
+        indices: new Uint32Array([0, 1, 2]),
+      }),
     (e) => e.kind === 'invalid-argument' && /3 per vertex/.test(e.message),
   );
   // Three triangles on one edge: not a manifold, refused under the strict policy.
@@ -198,7 +240,10 @@ test('bad typed-array input is refused with a clear message', () => {
     positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1]),
     indices: new Uint32Array([0, 1, 2, 1, 0, 3, 0, 1, 4]),
   };
-  assert.throws(() => hedge.fromBuffers({ ...fan, policy: 'strict' }), (e) => e.kind === 'topology');
+  assert.throws(
+    () => hedge.fromBuffers({ ...fan, policy: 'strict' }),
+    (e) => e.kind === 'topology',
+  );
   const repaired = hedge.fromBuffers(fan);
   assert.ok(repaired.buildReport().repairs > 0);
   assert.deepEqual(repaired.validate(), []);
@@ -207,23 +252,50 @@ test('bad typed-array input is refused with a clear message', () => {
 
 test('queries on dead elements and disposed meshes throw', () => {
   const mesh = grid(1);
-  assert.throws(() => mesh.halfedge(1000), (e) => e.kind === 'invalid-argument' && /half-edge 1000/.test(e.message));
-  assert.throws(() => mesh.vertex(-1), (e) => e.kind === 'invalid-argument');
-  assert.throws(() => mesh.setPosition(0, [0, NaN, 0]), (e) => e.kind === 'invalid-argument' && /finite/.test(e.message));
+  assert.throws(
+    () => mesh.halfedge(1000),
+    (e) => e.kind === 'invalid-argument' && /half-edge 1000/.test(e.message),
+  );
+  assert.throws(
+    () => mesh.vertex(-1),
+    (e) => e.kind === 'invalid-argument',
+  );
+  assert.throws(
+    () => mesh.setPosition(0, [0, NaN, 0]),
+    (e) => e.kind === 'invalid-argument' && /finite/.test(e.message),
+  );
   mesh.dispose();
   mesh.dispose(); // idempotent
   assert.equal(mesh.disposed, true);
-  assert.throws(() => mesh.counts(), (e) => e instanceof HedgeError && e.kind === 'disposed');
+  assert.throws(
+    () => mesh.counts(),
+    (e) => e instanceof HedgeError && e.kind === 'disposed',
+  );
 });
 
 test('arguments of the wrong type are refused before they reach the module', () => {
   const mesh = grid(2);
-  assert.throws(() => hedge.fromBuffers({ positions: 'abc', indices: new Uint32Array(3) }), (e) => e.kind === 'invalid-argument');
-  assert.throws(() => mesh.setPosition(0, ['a', 0, 0]), (e) => e.kind === 'invalid-argument' && /finite/.test(e.message));
-  assert.throws(() => mesh.setPosition(0, [1, 2]), (e) => e.kind === 'invalid-argument');
+  assert.throws(
+    () => hedge.fromBuffers({ positions: 'abc', indices: new Uint32Array(3) }),
+    (e) => e.kind === 'invalid-argument',
+  );
+  assert.throws(
+    () => mesh.setPosition(0, ['a', 0, 0]),
+    (e) => e.kind === 'invalid-argument' && /finite/.test(e.message),
+  );
+  assert.throws(
+    () => mesh.setPosition(0, [1, 2]),
+    (e) => e.kind === 'invalid-argument',
+  );
   assert.equal(mesh.pick(['x', 0, 1], [0, 0, -1]), null, 'a NaN origin finds nothing');
-  assert.throws(() => mesh.pickMany(new Float32Array(6), [0]), (e) => e.kind === 'invalid-argument');
-  assert.throws(() => mesh.pickMany(new Float32Array(12), new Int32Array(1)), (e) => e.kind === 'invalid-argument' && /2 entries/.test(e.message));
+  assert.throws(
+    () => mesh.pickMany(new Float32Array(6), [0]),
+    (e) => e.kind === 'invalid-argument',
+  );
+  assert.throws(
+    () => mesh.pickMany(new Float32Array(12), new Int32Array(1)),
+    (e) => e.kind === 'invalid-argument' && /2 entries/.test(e.message),
+  );
   assert.deepEqual(mesh.position(0), [0, 0, 0]);
   // Still working after all that.
   assert.equal(mesh.pick([0.5, 0.2, 1], [0, 0, -1]).face, 0);

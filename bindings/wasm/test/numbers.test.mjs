@@ -13,14 +13,23 @@ test('coordinates parse to the nearest float, with the grammar of from_chars', (
     'numbers.obj',
   );
   const p = Array.from(mesh.positions);
-  const expected = [0.1, -2.5e-3, 7, 0, 3.4028234663852886e38, -0, 1.17549435e-38, 16777217, 0.5].map(Math.fround);
+  const expected = [
+    0.1, -2.5e-3, 7, 0, 3.4028234663852886e38, -0, 1.17549435e-38, 16777217, 0.5,
+  ].map(Math.fround);
   assert.deepEqual(p, expected);
   assert.ok(Object.is(p[5], -0), '-0 keeps its sign');
   mesh.dispose();
 });
 
 test('numbers out of float range or in other notations are errors naming the line', () => {
-  for (const bad of ['v 1e39 0 0', 'v 0x10 0 0', 'v nan 0 0', 'v inf 0 0', 'v 1.5.5 0 0', 'v e5 0 0']) {
+  for (const bad of [
+    'v 1e39 0 0',
+    'v 0x10 0 0',
+    'v nan 0 0',
+    'v inf 0 0',
+    'v 1.5.5 0 0',
+    'v e5 0 0',
+  ]) {
     assert.throws(
       () => hedge.fromFile(text(`v 0 0 0\n${bad}\nv 0 1 0\nf 1 2 3\n`), 'bad.obj'),
       (e) => e.kind === 'io' && /bad\.obj:2/.test(e.message),

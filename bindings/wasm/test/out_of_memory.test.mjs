@@ -11,13 +11,20 @@ test('a subdivision past what wasm memory holds throws out-of-memory and changes
   const counts = mesh.counts();
   const positions = new Float32Array(mesh.positions);
   // Six more steps would make 134 million faces: more than 2 GB.
-  assert.throws(() => mesh.subdivide('midpoint', 6), (e) => e.kind === 'out-of-memory' && /memory/.test(e.message));
+  assert.throws(
+    () => mesh.subdivide('midpoint', 6),
+    (e) => e.kind === 'out-of-memory' && /memory/.test(e.message),
+  );
   assert.deepEqual(mesh.counts(), counts);
   assert.deepEqual(new Float32Array(mesh.positions), positions);
   assert.deepEqual(mesh.validate(), []);
   // The mesh, its render buffers and picking still work.
   mesh.splitFace(0);
-  assert.equal(render.sync().full, true, 'the restored mesh reports a reset: the buffers are rebuilt');
+  assert.equal(
+    render.sync().full,
+    true,
+    'the restored mesh reports a reset: the buffers are rebuilt',
+  );
   assert.equal(render.sizes().triangles, counts.faces + 2);
   assert.ok(mesh.pick([0.1, 0.1, 5], [0, 0, -1]));
   assert.deepEqual(mesh.validate(), []);

@@ -9,12 +9,25 @@ test('a ray down onto the grid hits the triangle below it, with the nearest edge
   const hit = mesh.pick([1.3, 2.1, 5], [0, 0, -1]);
   assert.ok(hit);
   assert.ok(Math.abs(hit.t - 5) < 1e-6);
-  assert.deepEqual(hit.point.map((x) => Math.round(x * 1e5) / 1e5), [1.3, 2.1, 0]);
+  assert.deepEqual(
+    hit.point.map((x) => Math.round(x * 1e5) / 1e5),
+    [1.3, 2.1, 0],
+  );
   const corners = mesh.face(hit.face).vertices.map((v) => mesh.position(v));
   // The triangle (1,2) (2,2) (2,3): below the diagonal.
-  assert.deepEqual(corners.map((p) => p.slice(0, 2)).sort(), [[1, 2], [2, 2], [2, 3]]);
-  const edge = mesh.edge(hit.edge).vertices.map((v) => mesh.position(v).slice(0, 2)).sort();
-  assert.deepEqual(edge, [[1, 2], [2, 2]]);
+  assert.deepEqual(corners.map((p) => p.slice(0, 2)).sort(), [
+    [1, 2],
+    [2, 2],
+    [2, 3],
+  ]);
+  const edge = mesh
+    .edge(hit.edge)
+    .vertices.map((v) => mesh.position(v).slice(0, 2))
+    .sort();
+  assert.deepEqual(edge, [
+    [1, 2],
+    [2, 2],
+  ]);
   assert.equal(hit.edge, hit.halfedge >> 1);
   assert.equal(mesh.halfedge(hit.halfedge).face, hit.face);
   assert.deepEqual(mesh.position(hit.vertex).slice(0, 2), [1, 2]);
@@ -50,15 +63,25 @@ test('pick agrees with a brute-force scan of every triangle; pickMany with pick'
     // Brute force: the nearest triangle crossed (Moller-Trumbore in double).
     let best = Infinity;
     for (let t = 0; t < indices.length; t += 3) {
-      const [a, b, c] = [0, 1, 2].map((k) => positions.subarray(3 * indices[t + k], 3 * indices[t + k] + 3));
+      const [a, b, c] = [0, 1, 2].map((k) =>
+        positions.subarray(3 * indices[t + k], 3 * indices[t + k] + 3),
+      );
       const e1 = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
       const e2 = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
-      const p = [d[1] * e2[2] - d[2] * e2[1], d[2] * e2[0] - d[0] * e2[2], d[0] * e2[1] - d[1] * e2[0]];
+      const p = [
+        d[1] * e2[2] - d[2] * e2[1],
+        d[2] * e2[0] - d[0] * e2[2],
+        d[0] * e2[1] - d[1] * e2[0],
+      ];
       const det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
       if (Math.abs(det) < 1e-12) continue;
       const s = [o[0] - a[0], o[1] - a[1], o[2] - a[2]];
       const u = (s[0] * p[0] + s[1] * p[1] + s[2] * p[2]) / det;
-      const q = [s[1] * e1[2] - s[2] * e1[1], s[2] * e1[0] - s[0] * e1[2], s[0] * e1[1] - s[1] * e1[0]];
+      const q = [
+        s[1] * e1[2] - s[2] * e1[1],
+        s[2] * e1[0] - s[0] * e1[2],
+        s[0] * e1[1] - s[1] * e1[0],
+      ];
       const v = (d[0] * q[0] + d[1] * q[1] + d[2] * q[2]) / det;
       const t2 = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
       if (u >= 0 && v >= 0 && u + v <= 1 && t2 >= 0) best = Math.min(best, t2);

@@ -40,7 +40,10 @@ test('an edit syncs only its dirty ranges, which hold the edit', () => {
   assert.equal(result.full, false);
   assert.ok(result.vertexRanges.length >= 2 && result.indexRanges.length >= 2);
   assert.ok(result.vertexBytes + result.indexBytes > 0);
-  assert.ok(result.vertexBytes + result.indexBytes < total / 4, `${result.vertexBytes + result.indexBytes} of ${total} bytes`);
+  assert.ok(
+    result.vertexBytes + result.indexBytes < total / 4,
+    `${result.vertexBytes + result.indexBytes} of ${total} bytes`,
+  );
   // The new vertex's render vertex lies in a dirty range, with its position.
   const source = render.vertexSource;
   const stride = render.layout.stride;
@@ -48,13 +51,23 @@ test('an edit syncs only its dirty ranges, which hold the edit', () => {
   assert.ok(rv >= 0);
   let covered = false;
   for (let k = 0; k < result.vertexRanges.length; k += 2)
-    covered ||= rv >= result.vertexRanges[k] && rv < result.vertexRanges[k] + result.vertexRanges[k + 1];
+    covered ||=
+      rv >= result.vertexRanges[k] && rv < result.vertexRanges[k] + result.vertexRanges[k + 1];
   assert.ok(covered);
   const views = render.dirtyViews(result);
   assert.equal(views.vertices.length, result.vertexRanges.length / 2);
-  assert.equal(views.vertices.reduce((n, a) => n + a.byteLength, 0), result.vertexBytes);
-  assert.equal(views.indices.reduce((n, a) => n + a.byteLength, 0), result.indexBytes);
-  assert.deepEqual(Array.from(render.vertices.subarray(rv * stride, rv * stride + 3)), mesh.position(v));
+  assert.equal(
+    views.vertices.reduce((n, a) => n + a.byteLength, 0),
+    result.vertexBytes,
+  );
+  assert.equal(
+    views.indices.reduce((n, a) => n + a.byteLength, 0),
+    result.indexBytes,
+  );
+  assert.deepEqual(
+    Array.from(render.vertices.subarray(rv * stride, rv * stride + 3)),
+    mesh.position(v),
+  );
   // The face's triangles name the new vertex's render vertex.
   const [slot, count] = render.faceTriangles(40);
   assert.equal(count, 1);
@@ -117,7 +130,10 @@ test('a render outlives the disposal of its mesh', () => {
   assert.equal(render.sync().vertexRanges.length, 0);
   render.dispose();
   render.dispose();
-  assert.throws(() => render.sizes(), (e) => e.kind === 'disposed');
+  assert.throws(
+    () => render.sizes(),
+    (e) => e.kind === 'disposed',
+  );
 });
 
 test('an algorithm that renumbers everything makes the next sync full, with the new triangles', () => {
@@ -150,10 +166,18 @@ test('texture coordinates from a file reach the vertex layout, UV seams as separ
       .decode(sample('spot_triangulated.obj'))
       .split('\n')
       .filter((l) => l.startsWith('vt '))
-      .map((l) => l.trim().split(/\s+/).slice(1, 3).map((x) => Math.fround(Number(x))).join(' ')),
+      .map((l) =>
+        l
+          .trim()
+          .split(/\s+/)
+          .slice(1, 3)
+          .map((x) => Math.fround(Number(x)))
+          .join(' '),
+      ),
   );
   const v = render.vertices;
-  for (let r = 0; r < sizes.vertexSlots; ++r) assert.ok(uvs.has(`${v[r * 8 + 6]} ${v[r * 8 + 7]}`), `render vertex ${r}`);
+  for (let r = 0; r < sizes.vertexSlots; ++r)
+    assert.ok(uvs.has(`${v[r * 8 + 6]} ${v[r * 8 + 7]}`), `render vertex ${r}`);
   render.dispose();
   mesh.dispose();
 });

@@ -23,7 +23,15 @@ export function gridArrays(n) {
   const indices = [];
   const at = (i, j) => j * (n + 1) + i;
   for (let j = 0; j < n; ++j)
-    for (let i = 0; i < n; ++i) indices.push(at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    for (let i = 0; i < n; ++i)
+      indices.push(
+        at(i, j),
+        at(i + 1, j),
+        at(i + 1, j + 1),
+        at(i, j),
+        at(i + 1, j + 1),
+        at(i, j + 1),
+      );
   return { positions: new Float32Array(positions), indices: new Uint32Array(indices) };
 }
 
@@ -35,7 +43,9 @@ export function grid(n) {
 export function octahedron() {
   return hedge.fromBuffers({
     positions: new Float32Array([1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1]),
-    indices: new Uint32Array([0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5]),
+    indices: new Uint32Array([
+      0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5,
+    ]),
   });
 }
 
@@ -50,8 +60,12 @@ export function tetrahedron() {
 /** A closed cube of six quads. */
 export function cube() {
   return hedge.fromBuffers({
-    positions: new Float32Array([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1]),
-    indices: new Uint32Array([0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7]),
+    positions: new Float32Array([
+      0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1,
+    ]),
+    indices: new Uint32Array([
+      0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7,
+    ]),
     faceSizes: new Uint32Array([4, 4, 4, 4, 4, 4]),
   });
 }

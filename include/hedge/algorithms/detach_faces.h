@@ -12,6 +12,7 @@ namespace hedge {
 //! `mesh`. Vertices of `mesh` that the removal leaves pinched (two fans) are split, so both
 //! meshes stay manifold. `vertex_origin`, if given, receives new-mesh vertex -> source vertex.
 //! Deleted or repeated faces are ignored. O(size of the set + its one-ring).
-SurfaceMesh detach_faces(SurfaceMesh& mesh, std::span<const Face> faces, std::vector<Vertex>* vertex_origin = nullptr);
+SurfaceMesh detach_faces(SurfaceMesh& mesh, std::span<const Face> faces,
+                         std::vector<Vertex>* vertex_origin = nullptr);
 
 }  // namespace hedge

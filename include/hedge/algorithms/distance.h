@@ -67,6 +67,7 @@ OneSidedDistance one_sided_distance(const SurfaceMesh& from, const SurfaceMesh& 
 //! The symmetric sampled Hausdorff distance between a and b and the mean distance: both one-sided
 //! measures, each surface sampled with the same options. Twice the cost of one_sided_distance.
 //! \throw InvalidInputError as one_sided_distance.
-HausdorffDistance hausdorff_distance(const SurfaceMesh& a, const SurfaceMesh& b, const DistanceOptions& options = {});
+HausdorffDistance hausdorff_distance(const SurfaceMesh& a, const SurfaceMesh& b,
+                                     const DistanceOptions& options = {});
 
 }  // namespace hedge

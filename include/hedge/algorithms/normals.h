@@ -32,7 +32,8 @@ FaceProperty<Vec3> compute_face_normals(SurfaceMesh& mesh, std::string_view name
 //! Unit vertex normals into vertex property `name` (created if missing): the weighted sum of the
 //! normals of the faces around each vertex, normalised. Isolated vertices, and vertices whose faces
 //! cancel out, get a zero normal. O(V + F).
-VertexProperty<Vec3> compute_vertex_normals(SurfaceMesh& mesh, NormalWeighting weighting = NormalWeighting::area,
+VertexProperty<Vec3> compute_vertex_normals(SurfaceMesh& mesh,
+                                            NormalWeighting weighting = NormalWeighting::area,
                                             std::string_view name = "v:normal");
 
 //! Corner normals into half-edge property `name` (created if missing), for the corner of face(h) at

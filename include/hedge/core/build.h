@@ -39,15 +39,15 @@ struct BuildOptions {
 
 //! What build() did. All counts are zero for clean input.
 struct BuildReport {
-  std::size_t welded_vertices = 0;          //!< input vertices merged into another by welding
-  std::size_t degenerate_faces = 0;         //!< faces dropped: fewer than 3 distinct corners
-  std::size_t repeated_corners = 0;         //!< consecutive repeated corners removed from kept faces
-  std::size_t reoriented_faces = 0;         //!< faces whose winding was reversed
-  std::size_t non_manifold_edges = 0;       //!< input edges with more than two faces, or two faces of
-                                            //!< one direction that could not be re-oriented; cut apart
-  std::size_t non_manifold_vertices = 0;    //!< vertices whose faces formed several fans
-  std::size_t duplicated_vertices = 0;      //!< vertices added to split them
-  std::size_t isolated_vertices = 0;        //!< vertices no face uses (kept; not a repair)
+  std::size_t welded_vertices = 0;        //!< input vertices merged into another by welding
+  std::size_t degenerate_faces = 0;       //!< faces dropped: fewer than 3 distinct corners
+  std::size_t repeated_corners = 0;       //!< consecutive repeated corners removed from kept faces
+  std::size_t reoriented_faces = 0;       //!< faces whose winding was reversed
+  std::size_t non_manifold_edges = 0;     //!< input edges with more than two faces, or two faces of
+                                          //!< one direction that could not be re-oriented; cut apart
+  std::size_t non_manifold_vertices = 0;  //!< vertices whose faces formed several fans
+  std::size_t duplicated_vertices = 0;    //!< vertices added to split them
+  std::size_t isolated_vertices = 0;      //!< vertices no face uses (kept; not a repair)
 
   //! input vertex -> mesh vertex (after welding; a split vertex maps to its first copy).
   std::vector<Index> vertex_map;

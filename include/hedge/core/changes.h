@@ -31,10 +31,10 @@ enum class ChangeEvent : std::uint32_t {
   vertex_data_changed = 1u << 1,  //!< other vertex properties changed
   faces_added = 1u << 2,
   faces_removed = 1u << 3,
-  faces_changed = 1u << 4,        //!< corners, corner properties or face properties changed
+  faces_changed = 1u << 4,  //!< corners, corner properties or face properties changed
   vertices_added = 1u << 5,
   vertices_removed = 1u << 6,
-  reset = 1u << 7,                //!< every index may have changed (garbage collection, rebuild)
+  reset = 1u << 7,  //!< every index may have changed (garbage collection, rebuild)
   all = 0xffu,
 };
 constexpr ChangeEvent operator|(ChangeEvent a, ChangeEvent b) {

@@ -50,9 +50,7 @@ struct IndexedMesh {
   std::vector<ReadWarning> warnings;
 
   //! Number of faces, whether or not face_sizes is used.
-  std::size_t face_count() const {
-    return face_sizes.empty() ? indices.size() / 3 : face_sizes.size();
-  }
+  std::size_t face_count() const { return face_sizes.empty() ? indices.size() / 3 : face_sizes.size(); }
   bool is_triangles() const { return face_sizes.empty(); }
 };
 

@@ -123,8 +123,10 @@ class PropertyArray final : public BasePropertyArray {
   std::size_t bytes() const override { return data_.capacity() * sizeof(T); }
   std::size_t element_bytes() const override { return sizeof(T); }
   bool equal(std::size_t i, std::size_t j) const override {
-    if constexpr (std::equality_comparable<T>) return data_[i] == data_[j];
-    else return true;
+    if constexpr (std::equality_comparable<T>)
+      return data_[i] == data_[j];
+    else
+      return true;
   }
 
   std::vector<T>& vector() { return data_; }
@@ -163,10 +165,14 @@ class Property {
   PropertyArray<T>* array_ = nullptr;
 };
 
-template <typename T> using VertexProperty = Property<Vertex, T>;
-template <typename T> using HalfedgeProperty = Property<Halfedge, T>;
-template <typename T> using EdgeProperty = Property<Edge, T>;
-template <typename T> using FaceProperty = Property<Face, T>;
+template <typename T>
+using VertexProperty = Property<Vertex, T>;
+template <typename T>
+using HalfedgeProperty = Property<Halfedge, T>;
+template <typename T>
+using EdgeProperty = Property<Edge, T>;
+template <typename T>
+using FaceProperty = Property<Face, T>;
 
 //! Every property array of one element kind.
 class PropertyContainer {

@@ -57,24 +57,54 @@ class ElementRange {
 
 // What a circulator yields for each half-edge it visits, and which half-edges it passes over.
 struct HalfedgeOf {
-  template <typename M> static Halfedge get(const M&, Halfedge h) { return h; }
-  template <typename M> static bool skip(const M&, Halfedge) { return false; }
+  template <typename M>
+  static Halfedge get(const M&, Halfedge h) {
+    return h;
+  }
+  template <typename M>
+  static bool skip(const M&, Halfedge) {
+    return false;
+  }
 };
 struct TargetOf {
-  template <typename M> static Vertex get(const M& m, Halfedge h) { return m.to_vertex(h); }
-  template <typename M> static bool skip(const M&, Halfedge) { return false; }
+  template <typename M>
+  static Vertex get(const M& m, Halfedge h) {
+    return m.to_vertex(h);
+  }
+  template <typename M>
+  static bool skip(const M&, Halfedge) {
+    return false;
+  }
 };
 struct EdgeOf {
-  template <typename M> static Edge get(const M& m, Halfedge h) { return m.edge(h); }
-  template <typename M> static bool skip(const M&, Halfedge) { return false; }
+  template <typename M>
+  static Edge get(const M& m, Halfedge h) {
+    return m.edge(h);
+  }
+  template <typename M>
+  static bool skip(const M&, Halfedge) {
+    return false;
+  }
 };
 struct FaceOf {
-  template <typename M> static Face get(const M& m, Halfedge h) { return m.face(h); }
-  template <typename M> static bool skip(const M& m, Halfedge h) { return !m.face(h).is_valid(); }
+  template <typename M>
+  static Face get(const M& m, Halfedge h) {
+    return m.face(h);
+  }
+  template <typename M>
+  static bool skip(const M& m, Halfedge h) {
+    return !m.face(h).is_valid();
+  }
 };
 struct TwinFaceOf {
-  template <typename M> static Face get(const M& m, Halfedge h) { return m.face(m.twin(h)); }
-  template <typename M> static bool skip(const M& m, Halfedge h) { return !m.face(m.twin(h)).is_valid(); }
+  template <typename M>
+  static Face get(const M& m, Halfedge h) {
+    return m.face(m.twin(h));
+  }
+  template <typename M>
+  static bool skip(const M& m, Halfedge h) {
+    return !m.face(m.twin(h)).is_valid();
+  }
 };
 
 struct CirculatorEnd {};
@@ -82,12 +112,19 @@ struct CirculatorEnd {};
 // Steps of the two circulator kinds.
 template <bool CCW>
 struct RotateStep {
-  template <typename M> static Halfedge step(const M& m, Halfedge h) {
-    if constexpr (CCW) return m.rotate_ccw(h); else return m.rotate_cw(h);
+  template <typename M>
+  static Halfedge step(const M& m, Halfedge h) {
+    if constexpr (CCW)
+      return m.rotate_ccw(h);
+    else
+      return m.rotate_cw(h);
   }
 };
 struct NextStep {
-  template <typename M> static Halfedge step(const M& m, Halfedge h) { return m.next(h); }
+  template <typename M>
+  static Halfedge step(const M& m, Halfedge h) {
+    return m.next(h);
+  }
 };
 
 template <typename M, typename Get, typename Step>

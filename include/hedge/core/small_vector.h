@@ -36,7 +36,8 @@ class SmallVector {
   //! True if an element equals t. O(size).
   bool contains(const T& t) const {
     const auto in = inline_.begin();
-    if (std::find(in, in + static_cast<std::ptrdiff_t>(std::min(n_, N)), t) != in + static_cast<std::ptrdiff_t>(std::min(n_, N)))
+    if (std::find(in, in + static_cast<std::ptrdiff_t>(std::min(n_, N)), t) !=
+        in + static_cast<std::ptrdiff_t>(std::min(n_, N)))
       return true;
     return std::find(spill_.begin(), spill_.end(), t) != spill_.end();
   }

@@ -10,8 +10,8 @@
 // Positions are the float x3 vertex property "v:position".
 #pragma once
 
-#include <cstddef>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -229,7 +229,9 @@ class SurfaceMesh {
   // costs O(1) a step; the *_ccw variants cost one prev() a step. ----
   //! Outgoing half-edges of v, clockwise.
   VertexCirculator<SurfaceMesh, HalfedgeOf> halfedges(Vertex v) const { return {this, halfedge(v)}; }
-  VertexCirculator<SurfaceMesh, HalfedgeOf, true> halfedges_ccw(Vertex v) const { return {this, halfedge(v)}; }
+  VertexCirculator<SurfaceMesh, HalfedgeOf, true> halfedges_ccw(Vertex v) const {
+    return {this, halfedge(v)};
+  }
   //! Neighbouring vertices of v, clockwise.
   VertexCirculator<SurfaceMesh, TargetOf> vertices(Vertex v) const { return {this, halfedge(v)}; }
   VertexCirculator<SurfaceMesh, TargetOf, true> vertices_ccw(Vertex v) const { return {this, halfedge(v)}; }
@@ -326,7 +328,8 @@ class SurfaceMesh {
   //! collected at the same time. Properties move with their elements, and the change log records a
   //! reset. Returns the maps, as garbage_collection() does. O(#elements).
   //! \throw InvalidInputError, with the mesh unchanged, if a map is not such a numbering.
-  GarbageMaps renumber(std::vector<Index> new_vertex, std::vector<Index> new_edge, std::vector<Index> new_face);
+  GarbageMaps renumber(std::vector<Index> new_vertex, std::vector<Index> new_edge,
+                       std::vector<Index> new_face);
   //! Releases spare capacity of every array.
   void shrink_to_fit();
   //! Heap bytes held by connectivity, flags and all properties (capacity, not size).
@@ -357,20 +360,24 @@ class SurfaceMesh {
   // false): they grow geometrically, in cover(), rather than by one bit per new element.
   std::vector<bool> v_deleted_, e_deleted_, f_deleted_;
   static void cover(std::vector<bool>& flags, std::size_t n) {
-    if (flags.size() < n) [[unlikely]] grow_flags(flags, n);
+    if (flags.size() < n) [[unlikely]]
+      grow_flags(flags, n);
   }
   static void grow_flags(std::vector<bool>& flags, std::size_t n);
   // Growth of the connectivity arrays, in one place per element kind: when a kind runs out of
   // room, its arrays double together, each moved with one memcpy (handles and positions are
   // trivially copyable) rather than element by element as std::vector does.
   void room_for_vertices(std::size_t n) {
-    if (v_halfedge_.capacity() - v_halfedge_.size() < n) [[unlikely]] grow_vertices(n);
+    if (v_halfedge_.capacity() - v_halfedge_.size() < n) [[unlikely]]
+      grow_vertices(n);
   }
   void room_for_halfedges(std::size_t n) {
-    if (h_vertex_.capacity() - h_vertex_.size() < n) [[unlikely]] grow_halfedges(n);
+    if (h_vertex_.capacity() - h_vertex_.size() < n) [[unlikely]]
+      grow_halfedges(n);
   }
   void room_for_faces(std::size_t n) {
-    if (f_halfedge_.capacity() - f_halfedge_.size() < n) [[unlikely]] grow_faces(n);
+    if (f_halfedge_.capacity() - f_halfedge_.size() < n) [[unlikely]]
+      grow_faces(n);
   }
   void grow_vertices(std::size_t n);
   void grow_halfedges(std::size_t n);
@@ -453,5 +460,3 @@ inline Face SurfaceMesh::new_faces() {
 }  // namespace hedge
 
 #undef HEDGE_ALWAYS_INLINE
-
-

@@ -17,9 +17,21 @@ struct VecN<T, 2> {
   constexpr const T& operator[](std::size_t i) const { return i == 0 ? x : y; }
   friend constexpr bool operator==(const VecN&, const VecN&) = default;
 
-  constexpr VecN& operator+=(const VecN& o) { x += o.x; y += o.y; return *this; }
-  constexpr VecN& operator-=(const VecN& o) { x -= o.x; y -= o.y; return *this; }
-  constexpr VecN& operator*=(T s) { x *= s; y *= s; return *this; }
+  constexpr VecN& operator+=(const VecN& o) {
+    x += o.x;
+    y += o.y;
+    return *this;
+  }
+  constexpr VecN& operator-=(const VecN& o) {
+    x -= o.x;
+    y -= o.y;
+    return *this;
+  }
+  constexpr VecN& operator*=(T s) {
+    x *= s;
+    y *= s;
+    return *this;
+  }
   friend constexpr VecN operator+(VecN a, const VecN& b) { return a += b; }
   friend constexpr VecN operator-(VecN a, const VecN& b) { return a -= b; }
   friend constexpr VecN operator*(VecN a, T s) { return a *= s; }
@@ -33,9 +45,24 @@ struct VecN<T, 3> {
   constexpr const T& operator[](std::size_t i) const { return i == 0 ? x : (i == 1 ? y : z); }
   friend constexpr bool operator==(const VecN&, const VecN&) = default;
 
-  constexpr VecN& operator+=(const VecN& o) { x += o.x; y += o.y; z += o.z; return *this; }
-  constexpr VecN& operator-=(const VecN& o) { x -= o.x; y -= o.y; z -= o.z; return *this; }
-  constexpr VecN& operator*=(T s) { x *= s; y *= s; z *= s; return *this; }
+  constexpr VecN& operator+=(const VecN& o) {
+    x += o.x;
+    y += o.y;
+    z += o.z;
+    return *this;
+  }
+  constexpr VecN& operator-=(const VecN& o) {
+    x -= o.x;
+    y -= o.y;
+    z -= o.z;
+    return *this;
+  }
+  constexpr VecN& operator*=(T s) {
+    x *= s;
+    y *= s;
+    z *= s;
+    return *this;
+  }
   friend constexpr VecN operator+(VecN a, const VecN& b) { return a += b; }
   friend constexpr VecN operator-(VecN a, const VecN& b) { return a -= b; }
   friend constexpr VecN operator*(VecN a, T s) { return a *= s; }
@@ -49,13 +76,17 @@ using Vec3 = VecN<float, 3>;
 using Vec3d = VecN<double, 3>;
 
 template <typename T>
-constexpr T dot(const VecN<T, 3>& a, const VecN<T, 3>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr T dot(const VecN<T, 3>& a, const VecN<T, 3>& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 template <typename T>
 constexpr VecN<T, 3> cross(const VecN<T, 3>& a, const VecN<T, 3>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 template <typename T>
-inline T norm(const VecN<T, 3>& a) { return std::sqrt(dot(a, a)); }
+inline T norm(const VecN<T, 3>& a) {
+  return std::sqrt(dot(a, a));
+}
 template <typename T>
 inline VecN<T, 3> normalize(const VecN<T, 3>& a) {
   T n = norm(a);

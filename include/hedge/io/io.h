@@ -65,8 +65,8 @@ std::uint64_t read_budget(const ReadOptions& options, std::uint64_t input_bytes)
 // Every reader returns a mesh whose indices are all in range and whose coordinates are all finite,
 // with face_sizes empty when every face is a triangle. A face of 1 or 2 corners (what a file cut in
 // the middle of a face line leaves) is kept and noted in IndexedMesh::warnings with its line (text)
-// or byte offset (binary); read_mesh() refuses it under the strict policy, and the repair drops it. It costs O(file size) time and allocates no
-// more than the file's size can justify, whatever counts a header claims.
+// or byte offset (binary); read_mesh() refuses it under the strict policy, and the repair drops it. It costs
+// O(file size) time and allocates no more than the file's size can justify, whatever counts a header claims.
 // \throw IoError on malformed input: what() is "name:line: message" for text ("name (byte N):
 // message" for binary data) and says what was expected and what was found. Elements are numbered
 // from 0 in messages, as in the IndexedMesh ("face 12" is the 13th face).
@@ -148,9 +148,10 @@ std::string write_stl(const IndexedMesh& mesh, const WriteOptions& options = {})
 //! POSITION (float, with the min/max the specification requires), NORMAL, TEXCOORD_0 and COLOR_0
 //! (float VEC4) when the mesh has them (v flipped as read_gltf() says), u16 indices when the vertex
 //! count allows, else u32. Polygons are fanned from their first corner. A mesh vertex splits into
-//! one glTF vertex per distinct (texcoord, normal, colour) of its corners (seams, hard edges); vertex v keeps number v with
-//! its first corner's attributes and the split copies follow, so positions read back in order. A
-//! vertex no face uses is written with zero attributes. A mesh without faces gives a file without scenes or meshes.
+//! one glTF vertex per distinct (texcoord, normal, colour) of its corners (seams, hard edges); vertex v keeps
+//! number v with its first corner's attributes and the split copies follow, so positions read back in order.
+//! A vertex no face uses is written with zero attributes. A mesh without faces gives a file without scenes or
+//! meshes.
 std::string write_gltf(const IndexedMesh& mesh, const WriteOptions& options = {});
 std::string write_glb(const IndexedMesh& mesh, const WriteOptions& options = {});
 std::string write_indexed(const IndexedMesh& mesh, FileFormat format, const WriteOptions& options = {});

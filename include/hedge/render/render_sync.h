@@ -20,8 +20,8 @@
 // address.
 #pragma once
 
-#include <cstddef>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -37,7 +37,7 @@ namespace hedge {
 //! Where the normal stream comes from. With `automatic`, the default, normals follow the geometry;
 //! `attribute` keeps imported normals as they are, whatever moves.
 enum class NormalSource {
-  none,      //!< no normal stream
+  none,  //!< no normal stream
   //! "h:normal" corners, else "v:normal" vertices, as they are: never recomputed, so a moved vertex
   //! keeps its imported normal. None if neither exists. (A RenderSync of the same mesh with
   //! `automatic` normals rewrites that property, and this one then shows what it wrote.)
@@ -143,7 +143,9 @@ class RenderSync {
   //! Interleaved layout: every vertex, layout().stride floats each. Separate: the positions.
   std::span<const float> vertices() const { return streams_[0]; }
   //! One stream in separate layout (empty if the attribute is absent or the layout interleaved).
-  std::span<const float> positions() const { return layout_.interleaved ? std::span<const float>() : streams_[0]; }
+  std::span<const float> positions() const {
+    return layout_.interleaved ? std::span<const float>() : streams_[0];
+  }
   std::span<const float> normals() const { return stream(1); }
   std::span<const float> texcoords() const { return stream(2); }
   std::span<const float> colors() const { return stream(3); }
@@ -237,7 +239,7 @@ class RenderSync {
   VertexLayout layout_;
   //! This object's place in the mesh's change log (detached when it is destroyed).
   ChangeConsumer changes_;
-  bool building_ = false;  // a full build reports whole buffers, not written slots
+  bool building_ = false;      // a full build reports whole buffers, not written slots
   bool full_pending_ = false;  // compact() moved every slot: the next sync reports whole buffers
 
   // Attribute sources, resolved against the mesh's properties.
@@ -248,23 +250,23 @@ class RenderSync {
   HalfedgeProperty<Color> h_color_;
   VertexProperty<Color> v_color_;
   bool computed_normals_ = false;
-  bool follow_normals_ = false;  // attribute normals, recomputed into the mesh around edits
+  bool follow_normals_ = false;      // attribute normals, recomputed into the mesh around edits
   std::vector<Vec3> vertex_normal_;  // computed normals, per mesh vertex
   std::vector<std::uint32_t> normal_stamp_;
   std::uint32_t normal_generation_ = 0;
   std::vector<Vertex> normal_seeds_;
   std::vector<Face> normal_faces_;
   std::vector<std::pair<Vec3, Vec3d>> normal_groups_;  // follow_normal: old value, new sum
-  std::vector<std::size_t> normal_corner_group_;        // follow_normal: group of each corner
+  std::vector<std::size_t> normal_corner_group_;       // follow_normal: group of each corner
 
   // Vertex buffer: streams_[0] interleaved (or positions), [1..3] normals, texcoords, colours.
   std::vector<float> streams_[4];
-  std::vector<Vertex> rv_vertex_;          // slot -> mesh vertex
-  std::vector<Index> rv_next_;             // next render vertex of the same mesh vertex
-  std::vector<std::uint32_t> rv_refs_;     // index-buffer entries using the slot
+  std::vector<Vertex> rv_vertex_;       // slot -> mesh vertex
+  std::vector<Index> rv_next_;          // next render vertex of the same mesh vertex
+  std::vector<std::uint32_t> rv_refs_;  // index-buffer entries using the slot
   std::vector<Index> free_vertices_;
-  std::vector<Index> v_first_rv_;          // mesh vertex -> first render vertex
-  std::vector<Index> corner_rv_;           // half-edge -> render vertex of the corner it enters
+  std::vector<Index> v_first_rv_;  // mesh vertex -> first render vertex
+  std::vector<Index> corner_rv_;   // half-edge -> render vertex of the corner it enters
   std::size_t vertex_capacity_ = 0;
 
   // Index buffer.
