@@ -64,9 +64,8 @@ namespace Hedge
         {
             get
             {
-                int major, minor, patch;
-                Status.Check(Native.hedge_version(out major, out minor, out patch));
-                return new Version(major, minor, patch);
+                int status = Native.hedge_version(out int major, out int minor, out int patch);
+                return Status.Checked(status, new Version(major, minor, patch));
             }
         }
 
@@ -267,8 +266,7 @@ namespace Hedge
         {
             get
             {
-                MeshCounts counts;
-                Status.Check(Native.hedge_mesh_counts(id, out counts));
+                MeshCounts counts = Status.Checked(Native.hedge_mesh_counts(id, out MeshCounts c), c);
                 if (counts.HalfEdgeSlots < 0) throw Status.TooLarge("half-edge slots");
                 return counts;
             }
@@ -283,12 +281,7 @@ namespace Hedge
         /// <summary>Live faces.</summary>
         public int FaceCount { get { return (int)Counts.Faces; } }
 
-        public Vec3 GetPosition(Vertex v)
-        {
-            Vec3 p;
-            Status.Check(Native.hedge_mesh_get_position(id, v.Raw, out p));
-            return p;
-        }
+        public Vec3 GetPosition(Vertex v) { return Status.Checked(Native.hedge_mesh_get_position(id, v.Raw, out Vec3 p), p); }
 
         /// <summary>Moves a vertex; render buffers see it at their next sync. Coordinates must be finite.</summary>
         public void SetPosition(Vertex v, float x, float y, float z)
@@ -302,9 +295,7 @@ namespace Hedge
         /// <returns>The floats needed (3 x vertex slots); with a null buffer, only that.</returns>
         public int CopyPositions(float[] buffer)
         {
-            ulong count;
-            int status = Native.hedge_mesh_copy_positions(id, buffer, buffer != null ? (ulong)buffer.Length : 0, out count);
-            return Status.Filled(status, buffer == null, count);
+            return Filled(Native.hedge_mesh_copy_positions(id, buffer, Status.Capacity(buffer), out ulong n), buffer, n);
         }
 
 
@@ -343,9 +334,7 @@ namespace Hedge
         public double CacheMissRatio(int cacheSize = 16)
         {
             if (cacheSize < 0) throw new ArgumentOutOfRangeException(nameof(cacheSize), "the cache size is 0 or more");
-            double ratio;
-            Status.Check(Native.hedge_mesh_cache_miss_ratio(id, (uint)cacheSize, out ratio));
-            return ratio;
+            return Status.Checked(Native.hedge_mesh_cache_miss_ratio(id, (uint)cacheSize, out double ratio), ratio);
         }
 
         /// <summary>Decimates a triangle mesh by quadric-ranked edge collapses until the targets of the options are met, the
@@ -357,9 +346,7 @@ namespace Hedge
         public DecimateResult Decimate(DecimateOptions options)
         {
             pendingRenders.Drain();
-            DecimateResult result;
-            Status.Check(Native.hedge_mesh_decimate(id, ref options, out result));
-            return result;
+            return Status.Checked(Native.hedge_mesh_decimate(id, ref options, out DecimateResult result), result);
         }
 
         /// <summary>Breaks the mesh at the impact into shards (hedge/algorithms/fracture.h): break points in rings
@@ -409,29 +396,14 @@ namespace Hedge
         /// <summary>Area, volume (NaN unless closed) and bounding box of the mesh (one native call, O(n)).</summary>
         public MeshGeometry Geometry
         {
-            get
-            {
-                MeshGeometry g;
-                Status.Check(Native.hedge_mesh_geometry(id, out g));
-                return g;
-            }
+            get { return Status.Checked(Native.hedge_mesh_geometry(id, out MeshGeometry g), g); }
         }
 
         /// <summary>The unit normal of a live face, by its winding (zero for a degenerate face).</summary>
-        public Vec3 FaceNormal(Face f)
-        {
-            Vec3 n;
-            Status.Check(Native.hedge_face_normal(id, f.Raw, out n));
-            return n;
-        }
+        public Vec3 FaceNormal(Face f) { return Status.Checked(Native.hedge_face_normal(id, f.Raw, out Vec3 n), n); }
 
         /// <summary>The area of a live face.</summary>
-        public double FaceArea(Face f)
-        {
-            double a;
-            Status.Check(Native.hedge_face_area(id, f.Raw, out a));
-            return a;
-        }
+        public double FaceArea(Face f) { return Status.Checked(Native.hedge_face_area(id, f.Raw, out double a), a); }
 
         /// <summary>Computes unit vertex normals into the mesh. <see cref="RenderBuffers"/> made afterwards with
         /// <see cref="NormalSource.Attribute"/> (or Automatic) use them.</summary>
@@ -453,9 +425,7 @@ namespace Hedge
         /// <returns>The number of floats needed (3 x VertexSlots).</returns>
         public int CopyVertexNormals(float[] buffer)
         {
-            ulong count;
-            int status = Native.hedge_mesh_copy_vertex_normals(id, buffer, buffer != null ? (ulong)buffer.Length : 0, out count);
-            return Status.Filled(status, buffer == null, count);
+            return Filled(Native.hedge_mesh_copy_vertex_normals(id, buffer, Status.Capacity(buffer), out ulong n), buffer, n);
         }
 
         /// <summary>Copies the corner normals, 3 floats per half-edge slot (the corner of the half-edge's face at its
@@ -463,9 +433,7 @@ namespace Hedge
         /// <returns>The number of floats needed (3 x HalfEdgeSlots).</returns>
         public int CopyCornerNormals(float[] buffer)
         {
-            ulong count;
-            int status = Native.hedge_mesh_copy_corner_normals(id, buffer, buffer != null ? (ulong)buffer.Length : 0, out count);
-            return Status.Filled(status, buffer == null, count);
+            return Filled(Native.hedge_mesh_copy_corner_normals(id, buffer, Status.Capacity(buffer), out ulong n), buffer, n);
         }
 
         /// <summary>The sampled symmetric Hausdorff distance between this surface and other's: each surface's vertices
@@ -475,324 +443,32 @@ namespace Hedge
         public double HausdorffDistance(HalfEdgeMesh other, out double meanDistance, ulong samples = 100000, ulong seed = 1)
         {
             if (other == null) throw new ArgumentNullException("other");
-            double distance;
-            Status.Check(Native.hedge_mesh_hausdorff(id, other.id, samples, seed, out distance, out meanDistance));
-            return distance;
+            int status = Native.hedge_mesh_hausdorff(id, other.id, samples, seed, out double distance, out meanDistance);
+            return Status.Checked(status, distance);
         }
 
-        // =========================================================================================
-        // Adjacency (O(1) unless noted)
-        // =========================================================================================
-
-        /// <summary>The opposite half-edge (checked against the mesh: a dead half-edge throws).</summary>
-        public HalfEdge Twin(HalfEdge h)
-        {
-            uint r;
-            Status.Check(Native.hedge_halfedge_twin(id, h.Raw, out r));
-            return new HalfEdge(r);
-        }
-
-        /// <summary>The next half-edge in the face or boundary loop.</summary>
-        public HalfEdge Next(HalfEdge h)
-        {
-            uint r;
-            Status.Check(Native.hedge_halfedge_next(id, h.Raw, out r));
-            return new HalfEdge(r);
-        }
-
-        /// <summary>The previous half-edge in the face or boundary loop. O(face degree), O(valence) on a boundary.</summary>
-        public HalfEdge Prev(HalfEdge h)
-        {
-            uint r;
-            Status.Check(Native.hedge_halfedge_prev(id, h.Raw, out r));
-            return new HalfEdge(r);
-        }
-
-        /// <summary>The vertex the half-edge points to.</summary>
-        public Vertex ToVertex(HalfEdge h)
-        {
-            uint r;
-            Status.Check(Native.hedge_halfedge_to_vertex(id, h.Raw, out r));
-            return new Vertex(r);
-        }
-
-        /// <summary>The vertex the half-edge starts at.</summary>
-        public Vertex FromVertex(HalfEdge h)
-        {
-            uint r;
-            Status.Check(Native.hedge_halfedge_from_vertex(id, h.Raw, out r));
-            return new Vertex(r);
-        }
-
-        /// <summary>The face of the half-edge; <see cref="Face.Invalid"/> for a boundary half-edge.</summary>
-        public Face GetFace(HalfEdge h)
-        {
-            uint r;
-            Status.Check(Native.hedge_halfedge_face(id, h.Raw, out r));
-            return new Face(r);
-        }
-
-        /// <summary>The edge of the half-edge.</summary>
-        public Edge GetEdge(HalfEdge h)
-        {
-            uint r;
-            Status.Check(Native.hedge_halfedge_edge(id, h.Raw, out r));
-            return new Edge(r);
-        }
-
-        /// <summary>One outgoing half-edge of the vertex (a boundary one if the vertex is on a boundary);
-        /// <see cref="HalfEdge.Invalid"/> for an isolated vertex.</summary>
-        public HalfEdge GetHalfEdge(Vertex v)
-        {
-            uint r;
-            Status.Check(Native.hedge_vertex_halfedge(id, v.Raw, out r));
-            return new HalfEdge(r);
-        }
-
-        /// <summary>The face's half-edge: its corners start at this half-edge's target.</summary>
-        public HalfEdge GetHalfEdge(Face f)
-        {
-            uint r;
-            Status.Check(Native.hedge_face_halfedge(id, f.Raw, out r));
-            return new HalfEdge(r);
-        }
-
-        /// <summary>Half-edge i (0 or 1) of the edge.</summary>
-        public HalfEdge GetHalfEdge(Edge e, int i)
-        {
-            if (i < 0) throw new ArgumentOutOfRangeException("i", i, "a half-edge of an edge is 0 or 1");
-            uint r;
-            Status.Check(Native.hedge_edge_halfedge(id, e.Raw, (uint)i, out r));
-            return new HalfEdge(r);
-        }
-
-        /// <summary>True if the vertex is on a boundary or isolated.</summary>
-        public bool IsBoundary(Vertex v)
-        {
-            int r;
-            Status.Check(Native.hedge_vertex_is_boundary(id, v.Raw, out r));
-            return r != 0;
-        }
-
-        /// <summary>True if the half-edge has no face.</summary>
-        public bool IsBoundary(HalfEdge h)
-        {
-            int r;
-            Status.Check(Native.hedge_halfedge_is_boundary(id, h.Raw, out r));
-            return r != 0;
-        }
-
-        /// <summary>True if either half-edge of the edge has no face.</summary>
-        public bool IsBoundary(Edge e)
-        {
-            int r;
-            Status.Check(Native.hedge_edge_is_boundary(id, e.Raw, out r));
-            return r != 0;
-        }
-
-        /// <summary>True if any edge of the face is on a boundary. O(face degree).</summary>
-        public bool IsBoundary(Face f)
-        {
-            int r;
-            Status.Check(Native.hedge_face_is_boundary(id, f.Raw, out r));
-            return r != 0;
-        }
-
-        /// <summary>Number of edges at the vertex. O(valence).</summary>
-        public int Valence(Vertex v)
-        {
-            uint r;
-            Status.Check(Native.hedge_vertex_valence(id, v.Raw, out r));
-            return (int)r;
-        }
-
-        /// <summary>Number of corners of the face. O(face degree).</summary>
-        public int Valence(Face f)
-        {
-            uint r;
-            Status.Check(Native.hedge_face_valence(id, f.Raw, out r));
-            return (int)r;
-        }
-
-        /// <summary>The half-edge from one vertex to another, or <see cref="HalfEdge.Invalid"/> when no edge
-        /// joins them. O(valence).</summary>
-        public HalfEdge FindHalfEdge(Vertex from, Vertex to)
-        {
-            uint r;
-            Status.Check(Native.hedge_mesh_find_halfedge(id, from.Raw, to.Raw, out r));
-            return new HalfEdge(r);
-        }
-
-        // Deletion flags: these accept deleted elements (only an index out of range throws).
-        public bool IsDeleted(Vertex v)
-        {
-            int r;
-            Status.Check(Native.hedge_vertex_is_deleted(id, v.Raw, out r));
-            return r != 0;
-        }
-
-        public bool IsDeleted(HalfEdge h)
-        {
-            int r;
-            Status.Check(Native.hedge_halfedge_is_deleted(id, h.Raw, out r));
-            return r != 0;
-        }
-
-        public bool IsDeleted(Edge e)
-        {
-            int r;
-            Status.Check(Native.hedge_edge_is_deleted(id, e.Raw, out r));
-            return r != 0;
-        }
-
-        public bool IsDeleted(Face f)
-        {
-            int r;
-            Status.Check(Native.hedge_face_is_deleted(id, f.Raw, out r));
-            return r != 0;
-        }
-
-        // =========================================================================================
-        // Circulators into caller arrays. The one-ring of a vertex is clockwise, starting at
-        // GetHalfEdge(v) (at the boundary gap for a boundary vertex); an isolated vertex has an empty
-        // one-ring. Each returns the count; null asks for the count only.
-        // =========================================================================================
-
-        /// <summary>Outgoing half-edges of the vertex.</summary>
-        public int GetVertexHalfEdges(Vertex v, HalfEdge[] result)
-        {
-            uint count;
-            int status = Native.hedge_vertex_halfedges(id, v.Raw, result, Status.Capacity(result), out count);
-            return Status.Filled(status, result == null, count);
-        }
-
-        /// <summary>Neighbour vertices (the targets of the outgoing half-edges, same order).</summary>
-        public int GetVertexNeighbours(Vertex v, Vertex[] result)
-        {
-            uint count;
-            int status = Native.hedge_vertex_vertices(id, v.Raw, result, Status.Capacity(result), out count);
-            return Status.Filled(status, result == null, count);
-        }
-
-        /// <summary>Faces around the vertex (boundary gaps skipped).</summary>
-        public int GetVertexFaces(Vertex v, Face[] result)
-        {
-            uint count;
-            int status = Native.hedge_vertex_faces(id, v.Raw, result, Status.Capacity(result), out count);
-            return Status.Filled(status, result == null, count);
-        }
-
-        /// <summary>Corners of the face in order (counter-clockwise), starting at the target of GetHalfEdge(f).</summary>
-        public int GetFaceVertices(Face f, Vertex[] result)
-        {
-            uint count;
-            int status = Native.hedge_face_vertices(id, f.Raw, result, Status.Capacity(result), out count);
-            return Status.Filled(status, result == null, count);
-        }
-
-        /// <summary>Half-edges of the face in order, starting at GetHalfEdge(f); the i-th enters the i-th
-        /// corner of <see cref="GetFaceVertices"/>.</summary>
-        public int GetFaceHalfEdges(Face f, HalfEdge[] result)
-        {
-            uint count;
-            int status = Native.hedge_face_halfedges(id, f.Raw, result, Status.Capacity(result), out count);
-            return Status.Filled(status, result == null, count);
-        }
-
-        // =========================================================================================
-        // Predicates. True if the edit of the same name would be carried out.
-        // =========================================================================================
-
-        static bool Ok(int status, int ok)
-        {
-            Status.Check(status);
-            return ok != 0;
-        }
-
-        public bool CanSplitEdge(Edge e)
-        {
-            int ok;
-            return Ok(Native.hedge_can_split_edge(id, e.Raw, out ok), ok);
-        }
-
-        /// <summary>True if collapsing h keeps the mesh a valid manifold (link condition, no valence
-        /// below 3 left, no tetrahedron collapsed, ...). O(valence).</summary>
-        public bool CanCollapse(HalfEdge h)
-        {
-            int ok;
-            return Ok(Native.hedge_can_collapse(id, h.Raw, out ok), ok);
-        }
-
-        /// <summary>True if the edge is interior between two triangles and can be turned. O(valence).</summary>
-        public bool CanFlip(Edge e)
-        {
-            int ok;
-            return Ok(Native.hedge_can_flip(id, e.Raw, out ok), ok);
-        }
-
-        public bool CanFlip(HalfEdge h) { return CanFlip(h.Edge); }
-
-        public bool CanSplitFace(Face f)
-        {
-            int ok;
-            return Ok(Native.hedge_can_split_face(id, f.Raw, out ok), ok);
-        }
-
-        /// <summary>True if the face of h0 and h1 can be cut along a new edge from the target of h0 to the
-        /// target of h1: both in the same live face, the targets not adjacent in it and not joined yet.</summary>
-        public bool CanCutFace(HalfEdge h0, HalfEdge h1)
-        {
-            int ok;
-            return Ok(Native.hedge_can_cut_face(id, h0.Raw, h1.Raw, out ok), ok);
-        }
-
-        /// <summary>True if a face with the first count corners (counter-clockwise) can be added while every
-        /// vertex and edge stays manifold.</summary>
-        public bool CanAddFace(Vertex[] corners, int count)
-        {
-            CheckSpan(corners, count, "corners");
-            int ok;
-            return Ok(Native.hedge_can_add_face(id, corners, (uint)count, out ok), ok);
-        }
-
-        public bool CanAddFace(Vertex[] corners)
-        {
-            if (corners == null) throw new ArgumentNullException("corners");
-            return CanAddFace(corners, corners.Length);
-        }
-
-        public bool CanAddFace(Vertex a, Vertex b, Vertex c)
-        {
-            corners3[0] = a;
-            corners3[1] = b;
-            corners3[2] = c;
-            return CanAddFace(corners3, 3);
-        }
-
-        public bool CanRemoveFace(Face f)
-        {
-            int ok;
-            return Ok(Native.hedge_can_remove_face(id, f.Raw, out ok), ok);
-        }
-
-        public bool CanRemoveVertex(Vertex v)
-        {
-            int ok;
-            return Ok(Native.hedge_can_remove_vertex(id, v.Raw, out ok), ok);
-        }
-
-        /// <summary>True if h is a boundary half-edge whose loop has at least 3 edges.</summary>
-        public bool CanFillHole(HalfEdge h)
-        {
-            int ok;
-            return Ok(Native.hedge_can_fill_hole(id, h.Raw, out ok), ok);
-        }
-
+        // Throws unless array holds at least count entries (count 0 or more).
         static void CheckSpan(Array array, int count, string name)
         {
             if (array == null) throw new ArgumentNullException(name);
             if (count < 0 || count > array.Length)
                 throw new ArgumentOutOfRangeException("count", count, name + " holds " + array.Length + " entries");
+        }
+
+        // The length of the corners array, which must not be null.
+        static int LengthOf(Vertex[] corners)
+        {
+            if (corners == null) throw new ArgumentNullException("corners");
+            return corners.Length;
+        }
+
+        // The three corners in the mesh's scratch array (for the three-corner overloads).
+        Vertex[] Triangle(Vertex a, Vertex b, Vertex c)
+        {
+            corners3[0] = a;
+            corners3[1] = b;
+            corners3[2] = c;
+            return corners3;
         }
 
         // =========================================================================================
@@ -874,9 +550,8 @@ namespace Hedge
         /// <returns>The number of new vertices.</returns>
         public int SplitAllFaces(Vertex[] newVertices = null)
         {
-            uint count;
-            Status.Check(Native.hedge_split_all_faces(id, newVertices, Status.Capacity(newVertices), out count));
-            return (int)count;
+            return (int)Status.Checked(Native.hedge_split_all_faces(id, newVertices, Status.Capacity(newVertices),
+                                                                     out uint count), count);
         }
 
         /// <summary>Adds a face with the first count corners (counter-clockwise).</summary>
@@ -888,19 +563,9 @@ namespace Hedge
             return WasRefused(Native.hedge_add_face(id, corners, (uint)count, out f)) ? Face.Invalid : new Face(f);
         }
 
-        public Face AddFace(Vertex[] corners)
-        {
-            if (corners == null) throw new ArgumentNullException("corners");
-            return AddFace(corners, corners.Length);
-        }
+        public Face AddFace(Vertex[] corners) { return AddFace(corners, LengthOf(corners)); }
 
-        public Face AddFace(Vertex a, Vertex b, Vertex c)
-        {
-            corners3[0] = a;
-            corners3[1] = b;
-            corners3[2] = c;
-            return AddFace(corners3, 3);
-        }
+        public Face AddFace(Vertex a, Vertex b, Vertex c) { return AddFace(Triangle(a, b, c), 3); }
 
         /// <summary>Removes the face; edges and vertices it leaves unused go too.</summary>
         /// <returns>False if <see cref="CanRemoveFace"/> refuses.</returns>

@@ -65,6 +65,14 @@ namespace Hedge
             if (status != 0) throw Failure(status);
         }
 
+        /// <summary>The value a native call wrote, once its status is checked: call, check and convert in
+        /// one expression, e.g. <c>Checked(Native.f(id, out double r), r)</c>.</summary>
+        internal static T Checked<T>(int status, T value)
+        {
+            if (status != 0) throw Failure(status);
+            return value;
+        }
+
         internal const int BufferTooSmall = (int)HedgeStatus.BufferTooSmall;
 
         /// <summary>The count of a "caller buffer" call, or the exception for its status. A null buffer asks

@@ -156,9 +156,7 @@ namespace Hedge
         {
             if (triangleIndex < 0)
                 throw new ArgumentOutOfRangeException("triangleIndex", triangleIndex, "a triangle index is >= 0");
-            Face face;
-            Status.Check(Native.hedge_render_triangle_face(id, triangleIndex, out face));
-            return face;
+            return Status.Checked(Native.hedge_render_triangle_face(id, triangleIndex, out Face face), face);
         }
 
         /// <summary>The library's own vertex stream, read in place: valid until the next Sync, commit,

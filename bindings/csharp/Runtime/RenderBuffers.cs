@@ -98,9 +98,7 @@ namespace Hedge
         public SyncResult Sync()
         {
             mesh.PendingRenders.Drain();
-            SyncResult result;
-            Status.Check(Native.hedge_render_sync(id, out result));
-            return result;
+            return Status.Checked(Native.hedge_render_sync(id, out SyncResult result), result);
         }
 
         /// <summary>Opens a transaction of these buffers: edits are gathered until the matching commit
@@ -112,9 +110,7 @@ namespace Hedge
         public SyncResult CommitTransaction()
         {
             mesh.PendingRenders.Drain();
-            SyncResult result;
-            Status.Check(Native.hedge_render_commit(id, out result));
-            return result;
+            return Status.Checked(Native.hedge_render_commit(id, out SyncResult result), result);
         }
 
         /// <summary>Rebuilds every buffer from scratch, a full export (slots restart in face order, so it
@@ -122,20 +118,13 @@ namespace Hedge
         public SyncResult Rebuild()
         {
             mesh.PendingRenders.Drain();
-            SyncResult result;
-            Status.Check(Native.hedge_render_rebuild(id, out result));
-            return result;
+            return Status.Checked(Native.hedge_render_rebuild(id, out SyncResult result), result);
         }
 
         /// <summary>The result of the last sync, commit or rebuild.</summary>
         public SyncResult LastResult
         {
-            get
-            {
-                SyncResult result;
-                Status.Check(Native.hedge_render_last_result(id, out result));
-                return result;
-            }
+            get { return Status.Checked(Native.hedge_render_last_result(id, out SyncResult result), result); }
         }
 
         /// <summary>The render-vertex slot ranges the last sync, commit or rebuild rewrote, sorted, merged and
@@ -362,26 +351,29 @@ namespace Hedge
 
         static void CopyFloats(IntPtr data, ulong available, long first, long count, float[] destination)
         {
-            if (count == 0) return;
-            if ((ulong)(first + count) > available)
-                throw new ArgumentOutOfRangeException("count", "floats [" + first + ", " + (first + count) +
-                                                               ") beyond the stream's " + available);
-            if (first + count > destination.Length)
-                throw new ArgumentException("holds " + destination.Length + " floats, " + (first + count) +
-                                            " needed: reallocate it after a resize", "destination");
+            if (!CheckCopy(available, first, count, destination, "floats", "the stream's ")) return;
             Marshal.Copy(new IntPtr(data.ToInt64() + first * sizeof(float)), destination, (int)first, (int)count);
         }
 
         static void CopyInts(IntPtr data, ulong available, long first, long count, int[] destination)
         {
-            if (count == 0) return;
-            if ((ulong)(first + count) > available)
-                throw new ArgumentOutOfRangeException("count", "indices [" + first + ", " + (first + count) +
-                                                               ") beyond the index buffer's " + available);
-            if (first + count > destination.Length)
-                throw new ArgumentException("holds " + destination.Length + " indices, " + (first + count) +
-                                            " needed: reallocate it after a resize", "destination");
+            if (!CheckCopy(available, first, count, destination, "indices", "the index buffer's ")) return;
             Marshal.Copy(new IntPtr(data.ToInt64() + first * sizeof(int)), destination, (int)first, (int)count);
+        }
+
+        // Checks a copy of entries [first, first + count) of a native buffer of `available` entries into
+        // the same place of destination; false when there is nothing to copy.
+        static bool CheckCopy(ulong available, long first, long count, Array destination, string entries,
+                              string source)
+        {
+            if (count == 0) return false;
+            if ((ulong)(first + count) > available)
+                throw new ArgumentOutOfRangeException("count", entries + " [" + first + ", " + (first + count) +
+                                                               ") beyond " + source + available);
+            if (first + count > destination.Length)
+                throw new ArgumentException("holds " + destination.Length + " " + entries + ", " + (first + count) +
+                                            " needed: reallocate it after a resize", "destination");
+            return true;
         }
 
         // =========================================================================================

@@ -83,12 +83,7 @@ namespace Hedge
         /// <summary>The C ABI's defaults: repair, no welding, epsilon 1e-6.</summary>
         public static BuildOptions Default
         {
-            get
-            {
-                BuildOptions options;
-                Status.Check(Native.hedge_build_options_default(out options));
-                return options;
-            }
+            get { return Status.Checked(Native.hedge_build_options_default(out BuildOptions options), options); }
         }
     }
 
@@ -115,12 +110,7 @@ namespace Hedge
         /// default memory budget.</summary>
         public static ReadOptions ForFiles
         {
-            get
-            {
-                ReadOptions options;
-                Status.Check(Native.hedge_read_options_default(out options));
-                return options;
-            }
+            get { return Status.Checked(Native.hedge_read_options_default(out ReadOptions options), options); }
         }
 
         /// <summary>The defaults for bytes in memory: no external buffers, the default budget.</summary>
@@ -250,12 +240,7 @@ namespace Hedge
         /// <summary>Uniform, 10 iterations, lambda 0.5, mu -0.53, boundary fixed.</summary>
         public static SmoothOptions Default
         {
-            get
-            {
-                SmoothOptions o;
-                Status.Check(Native.hedge_smooth_options_default(out o));
-                return o;
-            }
+            get { return Status.Checked(Native.hedge_smooth_options_default(out SmoothOptions o), o); }
         }
     }
 
@@ -292,12 +277,7 @@ namespace Hedge
         /// degrees, boundary free, seams kept.</summary>
         public static DecimateOptions Default
         {
-            get
-            {
-                DecimateOptions o;
-                Status.Check(Native.hedge_decimate_options_default(out o));
-                return o;
-            }
+            get { return Status.Checked(Native.hedge_decimate_options_default(out DecimateOptions o), o); }
         }
     }
 
@@ -379,9 +359,7 @@ namespace Hedge
         /// <summary>A preset with seed 0, no thickness, density 1, automatic tolerance and hulls on.</summary>
         public static FractureOptions Preset(FracturePreset preset)
         {
-            FractureOptions o;
-            Status.Check(Native.hedge_fracture_options_default((int)preset, out o));
-            return o;
+            return Status.Checked(Native.hedge_fracture_options_default((int)preset, out FractureOptions o), o);
         }
     }
 
@@ -494,12 +472,7 @@ namespace Hedge
         /// x not flipped.</summary>
         public static RenderOptions Default
         {
-            get
-            {
-                RenderOptions options;
-                Status.Check(Native.hedge_render_options_default(out options));
-                return options;
-            }
+            get { return Status.Checked(Native.hedge_render_options_default(out RenderOptions options), options); }
         }
 
         /// <summary>For a Unity Mesh: one stream per attribute (position, normal, texcoord, colour:
@@ -625,12 +598,7 @@ namespace Hedge
         /// <summary>The defaults: exact welding, repair, epsilon 1e-6, counter-clockwise, x not flipped.</summary>
         public static EngineImportOptions Default
         {
-            get
-            {
-                EngineImportOptions options;
-                Status.Check(Native.hedge_engine_import_options_default(out options));
-                return options;
-            }
+            get { return Status.Checked(Native.hedge_engine_import_options_default(out EngineImportOptions o), o); }
         }
 
         /// <summary>For a Unity Mesh: positions welded exactly, and Unity's coordinates and triangles kept as

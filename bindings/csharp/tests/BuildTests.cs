@@ -5,17 +5,11 @@ namespace Hedge.Tests
 {
     public static class BuildTests
     {
-        public static void Register(Runner r)
-        {
-            r.Add("BuildTests.Welding", Welding);
-            r.Add("BuildTests.RepairAndStrict", RepairAndStrict);
-            r.Add("BuildTests.InvalidInput", InvalidInput);
-        }
-
         // A unit quad as two triangles with their own copies of the shared corners: 6 input vertices.
         static readonly float[] SplitQuad = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0 };
         static readonly int[] SplitQuadTriangles = { 0, 1, 2, 3, 4, 5 };
 
+        [Test]
         static void Welding()
         {
             BuildOptions options = BuildOptions.Default;
@@ -77,6 +71,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void RepairAndStrict()
         {
             // Three triangles on the edge 0-1 (non-manifold), one degenerate triangle (2, 2, 5) and a
@@ -113,6 +108,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void InvalidInput()
         {
             BuildReport report;

@@ -1,9 +1,12 @@
-// A small test harness: assertions that name the file and line of the failed check, and a runner
-// that prints each test's name and result and returns the number of failed tests.
+// A small test harness: assertions that name the file and line of the failed check, a [Test]
+// attribute, and a runner that finds the marked tests, prints each test's name and result and
+// returns the number of failed tests.
 using System;
 using System.Collections.Generic;
 using System.Diagnostics;
 using System.IO;
+using System.Linq;
+using System.Reflection;
 using System.Runtime.CompilerServices;
 using System.Text;
 
@@ -152,12 +155,39 @@ namespace Hedge.Tests
         }
     }
 
+    /// <summary>Marks a static, parameterless method as a test; the runner names it Class.Method.</summary>
+    [AttributeUsage(AttributeTargets.Method)]
+    public sealed class TestAttribute : Attribute
+    {
+    }
+
     /// <summary>Runs named tests, printing each one's name and outcome.</summary>
     public sealed class Runner
     {
         readonly List<KeyValuePair<string, Action>> tests = new List<KeyValuePair<string, Action>>();
 
         public void Add(string name, Action test) { tests.Add(new KeyValuePair<string, Action>(name, test)); }
+
+        /// <summary>Adds the [Test] methods of the class, in the order they are written.</summary>
+        public void AddTests(Type type)
+        {
+            const BindingFlags all = BindingFlags.Static | BindingFlags.Public | BindingFlags.NonPublic;
+            foreach (MethodInfo method in type.GetMethods(all).OrderBy(m => m.MetadataToken))
+            {
+                if (!method.IsDefined(typeof(TestAttribute), false)) continue;
+                if (method.GetParameters().Length != 0 || method.ReturnType != typeof(void))
+                    throw new InvalidOperationException(type.Name + "." + method.Name +
+                                                        ": a [Test] method takes nothing and returns void");
+                Add(type.Name + "." + method.Name, (Action)Delegate.CreateDelegate(typeof(Action), method));
+            }
+        }
+
+        /// <summary>Adds the [Test] methods of every class of the assembly, class by class in name order.</summary>
+        public void AddTests(Assembly assembly)
+        {
+            foreach (Type type in assembly.GetTypes().OrderBy(t => t.FullName, StringComparer.Ordinal))
+                AddTests(type);
+        }
 
         /// <summary>Runs the tests whose name contains filter (all if null); returns the number that failed.</summary>
         public int Run(string filter)

@@ -8,21 +8,9 @@ namespace Hedge.Tests
 {
     public static class ErrorTests
     {
-        public static void Register(Runner r)
-        {
-            r.Add("ErrorTests.DisposedMesh", DisposedMesh);
-            r.Add("ErrorTests.DisposedRenderBuffers", DisposedRenderBuffers);
-            r.Add("ErrorTests.DeadAndOutOfRangeElements", DeadAndOutOfRangeElements);
-            r.Add("ErrorTests.IntIndicesAndNegativeInputs", IntIndicesAndNegativeInputs);
-            r.Add("ErrorTests.MalformedAndMissingFiles", MalformedAndMissingFiles);
-            r.Add("ErrorTests.FilesRoundTrip", FilesRoundTrip);
-            r.Add("ErrorTests.HostileFilesAreRefused", HostileFilesAreRefused);
-            r.Add("ErrorTests.FinalizersRelease", FinalizersRelease);
-            r.Add("ErrorTests.SecondThreadIsRefusedNotHung", SecondThreadIsRefusedNotHung);
-        }
-
         // One mesh, one thread at a time: a call that overlaps another thread's call on the same mesh throws
         // HedgeException(Busy) at once, and the mesh is intact afterwards.
+        [Test]
         static void SecondThreadIsRefusedNotHung()
         {
             using (HalfEdgeMesh mesh = Meshes.Tet())
@@ -61,6 +49,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void DisposedMesh()
         {
             HalfEdgeMesh mesh = Meshes.Tet();
@@ -81,6 +70,7 @@ namespace Hedge.Tests
             Check.Equal("HalfEdgeMesh (disposed)", mesh.ToString());
         }
 
+        [Test]
         static void DisposedRenderBuffers()
         {
             HalfEdgeMesh mesh = Meshes.Pyramid();
@@ -100,6 +90,7 @@ namespace Hedge.Tests
             Check.True(b.IsDisposed);
         }
 
+        [Test]
         static void DeadAndOutOfRangeElements()
         {
             using (HalfEdgeMesh mesh = Meshes.Pyramid())
@@ -121,6 +112,7 @@ namespace Hedge.Tests
 
         // Indices and counts are int, as Unity's APIs take them: "none" is -1 (never 4294967295), and a
         // negative input is an ArgumentException that says what and where.
+        [Test]
         static void IntIndicesAndNegativeInputs()
         {
             Check.Equal(-1, Vertex.Invalid.Index);
@@ -165,6 +157,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void MalformedAndMissingFiles()
         {
             string broken = Context.Scratch("broken.obj");
@@ -192,6 +185,7 @@ namespace Hedge.Tests
             File.Delete(range);
         }
 
+        [Test]
         static void FilesRoundTrip()
         {
             BuildReport report;
@@ -236,6 +230,7 @@ namespace Hedge.Tests
 
         // A glTF from a stranger: its external buffers are read only beside it (never from bytes in
         // memory), and the read budget refuses what would take too much memory.
+        [Test]
         static void HostileFilesAreRefused()
         {
             Check.Equal(16, Marshal.SizeOf(typeof(ReadOptions)));
@@ -321,6 +316,7 @@ namespace Hedge.Tests
             return Native.hedge_render_counts(render, out counts) == 0;
         }
 
+        [Test]
         static void FinalizersRelease()
         {
             MakeGarbage();

@@ -5,8 +5,7 @@ namespace Hedge.Tests
 {
     public static class ExampleTests
     {
-        public static void Register(Runner r) { r.Add("ExampleTests.ReadmeExample", ReadmeExample); }
-
+        [Test]
         static void ReadmeExample()
         {
             // ---- from README.md ----

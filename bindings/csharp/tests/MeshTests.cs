@@ -64,29 +64,10 @@ namespace Hedge.Tests
 
     public static class MeshTests
     {
-        public static void Register(Runner r)
-        {
-            r.Add("MeshTests.VersionAndLayouts", VersionAndLayouts);
-            r.Add("MeshTests.HandleArithmetic", HandleArithmetic);
-            r.Add("MeshTests.TetrahedronAdjacency", TetrahedronAdjacency);
-            r.Add("MeshTests.TetrahedronCollapseRefused", TetrahedronCollapseRefused);
-            r.Add("MeshTests.RefusalsCarryTheirReason", RefusalsCarryTheirReason);
-            r.Add("MeshTests.PyramidEdits", PyramidEdits);
-            r.Add("MeshTests.GridPolygonsAndDiagonals", GridPolygonsAndDiagonals);
-            r.Add("MeshTests.DetachAndGarbageCollection", DetachAndGarbageCollection);
-            r.Add("MeshTests.OriginalNamesForward", OriginalNamesForward);
-            r.Add("MeshTests.GeometryAndNormals", GeometryAndNormals);
-            r.Add("MeshTests.SmoothingPullsALiftedVertexDown", SmoothingPullsALiftedVertexDown);
-            r.Add("MeshTests.SubdivisionRefinesAndRenderBuffersFollow", SubdivisionRefinesAndRenderBuffersFollow);
-            r.Add("MeshTests.HausdorffDistanceOfARaisedCopy", HausdorffDistanceOfARaisedCopy);
-            r.Add("MeshTests.DecimationReachesItsTarget", DecimationReachesItsTarget);
-            r.Add("MeshTests.SimulateBreakingGivesShardsForRigidBodies", SimulateBreakingGivesShardsForRigidBodies);
-            r.Add("MeshTests.UnityQuadKeepsTheUsersCoordinates", UnityQuadKeepsTheUsersCoordinates);
-        }
-
         // The original project's quad as a Unity Mesh holds it: with the Unity options the mesh holds Unity's
         // own coordinates, a vertex set to (1, 0.5, 0) lands at (1, 0.5, 0) in the buffers, computed normals
         // point to -z as Unity's RecalculateNormals gives, and the triangles come back in the same winding.
+        [Test]
         static void UnityQuadKeepsTheUsersCoordinates()
         {
             float[] p = { 0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0 };
@@ -125,6 +106,7 @@ namespace Hedge.Tests
 
         // A unit cube of 12 triangles: area, volume, box, face normals, vertex normals along the diagonals,
         // and corner normals with a crease that render buffers turn into 24 vertices (hard edges).
+        [Test]
         static void GeometryAndNormals()
         {
             float[] positions = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1 };
@@ -170,6 +152,7 @@ namespace Hedge.Tests
         }
 
         // The grid against a copy raised by 0.5: every point is 0.5 from the other; a mesh without faces is refused.
+        [Test]
         static void HausdorffDistanceOfARaisedCopy()
         {
             float[] raised = (float[])Meshes.GridPositions.Clone();
@@ -190,6 +173,7 @@ namespace Hedge.Tests
 
         // Loop subdivision of a tetrahedron: 4 -> 16 -> 64 faces, still closed and valid; its render buffers
         // rebuild at the next sync; quads are refused unchanged.
+        [Test]
         static void SubdivisionRefinesAndRenderBuffersFollow()
         {
             float[] positions = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
@@ -234,6 +218,7 @@ namespace Hedge.Tests
 
         // A loop-subdivided tetrahedron (130 vertices) decimated to 20: the counts come back, the mesh stays valid and
         // closed, the render buffers follow the renumbering; quads and bad options are refused.
+        [Test]
         static void DecimationReachesItsTarget()
         {
             float[] positions = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
@@ -291,6 +276,7 @@ namespace Hedge.Tests
 
         // The original's demo on a 24 x 24 plate: glass breaks into many shards whose areas add up, each a valid mesh
         // with a hull; with a thickness each is a closed solid with mass; the same seed repeats; a miss is refused.
+        [Test]
         static void SimulateBreakingGivesShardsForRigidBodies()
         {
             Check.Equal(464, Marshal.SizeOf(typeof(FractureOptions)), "hedge_fracture_options");
@@ -341,6 +327,7 @@ namespace Hedge.Tests
 
         // A 2 x 2 grid of quads with its middle vertex lifted: every method but cotangent (quads) pulls it down,
         // the boundary stays, and a mask keeps it where it is.
+        [Test]
         static void SmoothingPullsALiftedVertexDown()
         {
             float[] positions = { 0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 1, 2, 1, 0, 0, 2, 0, 1, 2, 0, 2, 2, 0 };
@@ -367,6 +354,7 @@ namespace Hedge.Tests
 
         // The original project's names do exactly what the names they stand for do: the same edits on two
         // copies of one mesh give the same results.
+        [Test]
         static void OriginalNamesForward()
         {
             float[] positions = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5f, 0.5f, 1 };
@@ -394,6 +382,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void VersionAndLayouts()
         {
             Check.Equal(Context.ExpectedVersion, HalfEdgeMesh.LibraryVersion.ToString(3), "library version");
@@ -450,6 +439,7 @@ namespace Hedge.Tests
             Check.Equal(Winding.CounterClockwise, EngineImportOptions.Unity.Winding);
         }
 
+        [Test]
         static void HandleArithmetic()
         {
             var h = new HalfEdge(5);
@@ -466,6 +456,7 @@ namespace Hedge.Tests
             Check.ThrowsType<ArgumentOutOfRangeException>(() => new Edge(1).GetHalfEdge(2));
         }
 
+        [Test]
         static void TetrahedronAdjacency()
         {
             using (HalfEdgeMesh mesh = Meshes.Tet())
@@ -545,6 +536,7 @@ namespace Hedge.Tests
 
         // A refused edit returns false / an invalid handle, throws nothing, and LastRefusal says why; the next
         // edit that is done clears it.
+        [Test]
         static void RefusalsCarryTheirReason()
         {
             using (HalfEdgeMesh mesh = Meshes.Tet())
@@ -575,6 +567,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void TetrahedronCollapseRefused()
         {
             using (HalfEdgeMesh mesh = Meshes.Tet())
@@ -607,6 +600,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void PyramidEdits()
         {
             using (HalfEdgeMesh mesh = Meshes.Pyramid())
@@ -730,6 +724,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void GridPolygonsAndDiagonals()
         {
             using (HalfEdgeMesh mesh = Meshes.Grid())
@@ -775,6 +770,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void DetachAndGarbageCollection()
         {
             using (HalfEdgeMesh mesh = Meshes.Grid())

@@ -8,17 +8,6 @@ namespace Hedge.Tests
 {
     public static class PickingTests
     {
-        public static void Register(Runner r)
-        {
-            r.Add("PickingTests.Raycast", Raycast);
-            r.Add("PickingTests.ClosestPointAndFaceContainingPoint", ClosestPointAndFaceContainingPoint);
-            r.Add("PickingTests.QueriesFollowEdits", QueriesFollowEdits);
-            r.Add("PickingTests.BadInputThrowsAndChangesNothing", BadInputThrowsAndChangesNothing);
-            r.Add("PickingTests.FaceOfTriangleAfterSplitCollapseCompact", FaceOfTriangleAfterSplitCollapseCompact);
-            r.Add("PickingTests.EngineHitFindsTheSameFace", EngineHitFindsTheSameFace);
-            r.Add("PickingTests.NoAllocationPerQuery", NoAllocationPerQuery);
-        }
-
         // An n x n grid of unit squares in the plane z = 0, two triangles each, read from an OBJ file.
         static HalfEdgeMesh Grid(int n)
         {
@@ -53,6 +42,7 @@ namespace Hedge.Tests
             return (double)(b.X - a.X) * (y - a.Y) - (double)(b.Y - a.Y) * (x - a.X);
         }
 
+        [Test]
         static void Raycast()
         {
             Check.Equal(48, Marshal.SizeOf(typeof(SurfaceHit)), "hedge_surface_hit is 48 bytes");
@@ -81,6 +71,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void ClosestPointAndFaceContainingPoint()
         {
             using (HalfEdgeMesh mesh = Grid(2))
@@ -107,6 +98,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void QueriesFollowEdits()
         {
             using (HalfEdgeMesh mesh = Grid(2))
@@ -143,6 +135,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void BadInputThrowsAndChangesNothing()
         {
             using (HalfEdgeMesh mesh = Grid(2))
@@ -189,6 +182,7 @@ namespace Hedge.Tests
             Check.ThrowsType<ArgumentOutOfRangeException>(() => buffers.FaceOfTriangle(-1));
         }
 
+        [Test]
         static void FaceOfTriangleAfterSplitCollapseCompact()
         {
             using (HalfEdgeMesh mesh = Grid(3))
@@ -286,6 +280,7 @@ namespace Hedge.Tests
             return new[] { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
         }
 
+        [Test]
         static void EngineHitFindsTheSameFace()
         {
             using (HalfEdgeMesh mesh = Grid(4))
@@ -330,6 +325,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void NoAllocationPerQuery()
         {
             using (HalfEdgeMesh mesh = Grid(4))

@@ -33,13 +33,7 @@ namespace Hedge.Tests
             Directory.CreateDirectory(Context.ScratchDir);
 
             var runner = new Runner();
-            MeshTests.Register(runner);
-            BuildTests.Register(runner);
-            RenderTests.Register(runner);
-            SeamTests.Register(runner);
-            ErrorTests.Register(runner);
-            ExampleTests.Register(runner);
-            PickingTests.Register(runner);
+            runner.AddTests(typeof(Program).Assembly);
             int failed = runner.Run(args.Length > 3 ? args[3] : null);
             return failed > 0 ? 1 : 0;
         }

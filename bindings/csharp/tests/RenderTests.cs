@@ -6,16 +6,6 @@ namespace Hedge.Tests
 {
     public static class RenderTests
     {
-        public static void Register(Runner r)
-        {
-            r.Add("RenderTests.BuffersMatchMesh", BuffersMatchMesh);
-            r.Add("RenderTests.DirtyRangesAndTransactions", DirtyRangesAndTransactions);
-            r.Add("RenderTests.HolesCompactRebuild", HolesCompactRebuild);
-            r.Add("RenderTests.UnityConventions", UnityConventions);
-            r.Add("RenderTests.NoAllocationOnHotPaths", NoAllocationOnHotPaths);
-            r.Add("RenderTests.ImportedNormalsFollowOrStay", ImportedNormalsFollowOrStay);
-        }
-
         /// <summary>Every live triangle of the index buffer is a face of the mesh (corners in order, up to
         /// rotation, through the render-vertex source map), and the render vertices carry their mesh
         /// vertex's position.</summary>
@@ -134,6 +124,7 @@ namespace Hedge.Tests
 
         // Imported normals follow a moved vertex by default (Automatic): its render normal becomes the
         // area-weighted normal of its faces, as ComputeVertexNormals gives it. With Attribute they stay.
+        [Test]
         static void ImportedNormalsFollowOrStay()
         {
             foreach (NormalSource source in new[] { NormalSource.Automatic, NormalSource.Attribute })
@@ -173,6 +164,7 @@ namespace Hedge.Tests
                 }
         }
 
+        [Test]
         static void BuffersMatchMesh()
         {
             using (HalfEdgeMesh mesh = Meshes.Pyramid())
@@ -226,6 +218,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void DirtyRangesAndTransactions()
         {
             using (HalfEdgeMesh mesh = Meshes.Pyramid())
@@ -298,6 +291,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void HolesCompactRebuild()
         {
             using (HalfEdgeMesh mesh = Meshes.Pyramid())
@@ -343,6 +337,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void UnityConventions()
         {
             using (HalfEdgeMesh mesh = Meshes.Pyramid())
@@ -385,6 +380,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void NoAllocationOnHotPaths()
         {
             using (HalfEdgeMesh mesh = Meshes.Pyramid())

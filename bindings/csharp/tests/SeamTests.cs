@@ -12,15 +12,6 @@ namespace Hedge.Tests
 {
     public static class SeamTests
     {
-        public static void Register(Runner r)
-        {
-            r.Add("SeamTests.SpotRoundTrip", SpotRoundTrip);
-            r.Add("SeamTests.SpotRoundTripUnityConventions", SpotRoundTripUnity);
-            r.Add("SeamTests.SpotRoundTripMirrored", SpotRoundTripMirrored);
-            r.Add("SeamTests.SpotEditsKeepMirrorsInStep", SpotEdits);
-            r.Add("SeamTests.SplitThenCollapseLeavesOneRenderVertex", SplitThenCollapse);
-        }
-
         /// <summary>Engine arrays: one entry per engine vertex.</summary>
         sealed class EngineMesh
         {
@@ -225,6 +216,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void SpotRoundTrip()
         {
             EngineMesh spot = ReadEngineObj(Context.Data("spot_triangulated.obj"));
@@ -235,13 +227,15 @@ namespace Hedge.Tests
 
         // Spot as Unity's importer would hold it (x mirrored, winding reversed): Unity's data are taken as they
         // are, and come back as they were.
-        static void SpotRoundTripUnity()
+        [Test]
+        static void SpotRoundTripUnityConventions()
         {
             EngineMesh spot = ToUnity(ReadEngineObj(Context.Data("spot_triangulated.obj")));
             RoundTrip(spot, EngineImportOptions.Unity, Separate(Winding.CounterClockwise, false));
         }
 
         // The conversion options for data in another convention: mirrored on the way in and back out.
+        [Test]
         static void SpotRoundTripMirrored()
         {
             EngineMesh spot = ToUnity(ReadEngineObj(Context.Data("spot_triangulated.obj")));
@@ -291,7 +285,8 @@ namespace Hedge.Tests
 
         // The reported case: on a seamless grid, split the edge from uv (0.5, 0.5) to (0.75, 0.5) at a quarter and
         // merge the new vertex back into the first end: the survivor must keep one render vertex.
-        static void SplitThenCollapse()
+        [Test]
+        static void SplitThenCollapseLeavesOneRenderVertex()
         {
             using (HalfEdgeMesh mesh = UvGrid(4))
             using (RenderBuffers buffers = mesh.GenerateUnityMesh())
@@ -325,7 +320,8 @@ namespace Hedge.Tests
             }
         }
 
-        static void SpotEdits()
+        [Test]
+        static void SpotEditsKeepMirrorsInStep()
         {
             EngineMesh spot = ReadEngineObj(Context.Data("spot_triangulated.obj"));
             BuildReport report;

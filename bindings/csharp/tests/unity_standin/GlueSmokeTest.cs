@@ -16,9 +16,7 @@ namespace Hedge.Tests
         public static int Main(string[] args)
         {
             var runner = new Runner();
-            runner.Add("GlueSmokeTest.BuildEditUpload", BuildEditUpload);
-            NativeUploadTests.Register(runner);
-            runner.Add("GlueSmokeTest.NormalsFollowOrStay", NormalsFollowOrStay);
+            runner.AddTests(typeof(GlueSmokeTest).Assembly);
             return runner.Run(args.Length > 0 ? args[0] : null) > 0 ? 1 : 0;
         }
 
@@ -101,6 +99,7 @@ namespace Hedge.Tests
 
         // Lifting a base corner of the pyramid tilts its normal by default; with keepImportedNormals the
         // imported (0, 0, -1) stays.
+        [Test]
         static void NormalsFollowOrStay()
         {
             foreach (bool keep in new[] { false, true })
@@ -123,6 +122,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void BuildEditUpload()
         {
             var go = new GameObject();

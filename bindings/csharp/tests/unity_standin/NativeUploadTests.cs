@@ -14,14 +14,6 @@ namespace Hedge.Tests
 {
     public static class NativeUploadTests
     {
-        public static void Register(Runner r)
-        {
-            r.Add("NativeUploadTests.UnityArraysInAndOut", UnityArraysInAndOut);
-            r.Add("NativeUploadTests.UploadsFromNativeMemory", UploadsFromNativeMemory);
-            r.Add("NativeUploadTests.ThirtyTwoBitIndicesWhenTheVerticesDoNotFit", ThirtyTwoBitIndicesWhenTheVerticesDoNotFit);
-            r.Add("NativeUploadTests.ClickToSplitSample", ClickToSplitSample);
-        }
-
         // A flat n x n grid of unit squares at z = 0 as Unity arrays, with texcoords.
         static UnityEngine.Mesh Grid(int n)
         {
@@ -50,6 +42,7 @@ namespace Hedge.Tests
             return m;
         }
 
+        [Test]
         static void UnityArraysInAndOut()
         {
             UnityEngine.Mesh source = Grid(3);
@@ -126,6 +119,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void UploadsFromNativeMemory()
         {
             UnityEngine.Mesh source = Grid(4);
@@ -201,6 +195,7 @@ namespace Hedge.Tests
             Check.Equal(liveBefore, NativeArray<ushort>.LiveAllocations, "the 16-bit scratch was freed");
         }
 
+        [Test]
         static void ThirtyTwoBitIndicesWhenTheVerticesDoNotFit()
         {
             UnityEngine.Mesh source = Grid(160); // 25921 vertices
@@ -222,6 +217,7 @@ namespace Hedge.Tests
             }
         }
 
+        [Test]
         static void ClickToSplitSample()
         {
             MeshCollider.All.Clear();
