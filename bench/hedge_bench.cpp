@@ -21,6 +21,12 @@
 // fracture(), as in a game; when a fifth of the faces has broken off, the mesh and its tree are
 // restored with the timer paused. Counters: shards and faces per impact, and the mean
 // microseconds of each stage (locate, scatter, cut, detach, hulls).
+// BM_capi_fracture/<mesh>: the same impacts through the C ABI (hedge_mesh_fracture), as an engine
+// binding makes them: a mesh handle made of the same triangles, the same generator for the faces
+// hit and the seeds, the handle's picking tree built with the timer paused (hedge_mesh_bvh_update)
+// and kept up to date by the strikes; restored as BM_fracture restores. Shards are made into
+// handles by the call and destroyed with the timer paused. Counters as BM_fracture's, without the
+// stages.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -38,6 +44,7 @@
 #include "hedge/algorithms/fracture.h"
 #include "hedge/algorithms/locate.h"
 #include "hedge/algorithms/reorder.h"
+#include "hedge/c_api.h"
 #include "hedge/core/build.h"
 #include "hedge/core/operations.h"
 
@@ -217,11 +224,129 @@ void fracture_impacts(benchmark::State& state, std::string name, std::string roo
   state.counters["hulls_us"] = 1e6 * total.hulls / n;
 }
 
+//! A C ABI mesh of the triangles of `m` (which has no deleted element), numbered as in `m`, with its
+//! picking tree built. Null, with the error in `error`, on failure.
+hedge_mesh* capi_mesh(const hedge::SurfaceMesh& m, std::string& error) {
+  std::vector<float> xyz;
+  xyz.reserve(3 * m.n_vertices());
+  for (hedge::Vertex v : m.vertices()) {
+    const hedge::Vec3 p = m.position(v);
+    xyz.insert(xyz.end(), {p.x, p.y, p.z});
+  }
+  std::vector<std::uint32_t> indices;
+  indices.reserve(3 * m.n_faces());
+  for (hedge::Face f : m.faces())
+    for (hedge::Vertex v : m.vertices(f)) indices.push_back(v.idx());
+  hedge_mesh* mesh = nullptr;
+  if (hedge_mesh_create(xyz.data(), std::uint32_t(m.n_vertices()), indices.data(),
+                        std::uint32_t(indices.size()), nullptr, 0, nullptr, nullptr, nullptr, nullptr,
+                        &mesh) != HEDGE_OK ||
+      hedge_mesh_bvh_update(mesh, nullptr) != HEDGE_OK) {
+    error = hedge_last_error();
+    if (mesh) hedge_mesh_destroy(mesh);
+    return nullptr;
+  }
+  return mesh;
+}
+
+//! The centroid of a live face of a C ABI mesh, computed as hedge::face_centroid() computes it.
+bool capi_face_centroid(hedge_mesh* mesh, std::uint32_t f, float out[3]) {
+  std::uint32_t corners[16], n = 0;
+  if (hedge_face_vertices(mesh, f, corners, 16, &n) != HEDGE_OK || n == 0) return false;
+  double c[3] = {0, 0, 0};
+  for (std::uint32_t i = 0; i < n; ++i) {
+    float p[3];
+    if (hedge_mesh_get_position(mesh, corners[i], p) != HEDGE_OK) return false;
+    for (int k = 0; k < 3; ++k) c[k] += double(p[k]);
+  }
+  for (int k = 0; k < 3; ++k) out[k] = float(c[k] / double(n));
+  return true;
+}
+
+void capi_fracture_impacts(benchmark::State& state, std::string name, std::string root) {
+  const hedge::SurfaceMesh* input = nullptr;
+  try {
+    input = fracture_input(name, root);
+  } catch (const std::exception& e) {
+    state.SkipWithError(("skipped: " + std::string(e.what())).c_str());
+    return;
+  }
+  std::string error;
+  hedge_mesh* mesh = capi_mesh(*input, error);
+  hedge_fracture_options options;
+  hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &options);
+  std::uint32_t capacity = 0;
+  for (std::uint32_t i = 0; i < options.ring_count; ++i) capacity += options.rings[i].points;
+  std::vector<hedge_fracture_shard> shards(capacity);
+  std::mt19937_64 rng(1);
+  double broken = 0, faces = 0;
+  std::vector<double> seconds;
+  for (auto _ : state) {
+    state.PauseTiming();
+    hedge_counts counts{};
+    if (mesh) hedge_mesh_counts(mesh, &counts);
+    if (mesh && counts.faces < input->n_faces() * 4 / 5) {
+      hedge_mesh_destroy(mesh);
+      mesh = capi_mesh(*input, error);
+      if (mesh) hedge_mesh_counts(mesh, &counts);
+    }
+    if (!mesh) {
+      state.SkipWithError(("hedge_mesh_create: " + error).c_str());
+      break;
+    }
+    std::uint32_t f = 0;
+    std::int32_t deleted = 1;
+    do {
+      f = static_cast<std::uint32_t>(rng() % counts.face_slots);
+      hedge_face_is_deleted(mesh, f, &deleted);
+    } while (deleted);
+    float impact[3] = {0, 0, 0};
+    if (!capi_face_centroid(mesh, f, impact)) {
+      state.SkipWithError(("the centroid of face " + std::to_string(f) + ": " + hedge_last_error()).c_str());
+      break;
+    }
+    options.seed = rng();
+    std::uint32_t count = 0;
+    state.ResumeTiming();
+    const auto start = std::chrono::steady_clock::now();
+    const hedge_status status =
+        hedge_mesh_fracture(mesh, impact[0], impact[1], impact[2], &options, shards.data(), capacity, &count);
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    state.PauseTiming();
+    if (status != HEDGE_OK) {
+      state.SkipWithError(("hedge_mesh_fracture: " + std::string(hedge_last_error())).c_str());
+      break;
+    }
+    broken += double(count);
+    for (std::uint32_t i = 0; i < count; ++i) {
+      hedge_counts c{};
+      hedge_mesh_counts(shards[i].mesh, &c);
+      faces += double(c.faces);
+      hedge_mesh_destroy(shards[i].mesh);
+      if (shards[i].hull) hedge_mesh_destroy(shards[i].hull);
+    }
+    state.ResumeTiming();
+  }
+  if (mesh) hedge_mesh_destroy(mesh);
+  if (seconds.empty()) return;
+  const double n = double(seconds.size());
+  std::sort(seconds.begin(), seconds.end());
+  state.counters["triangles"] = double(input->n_faces());
+  state.counters["shards"] = broken / n;
+  state.counters["faces"] = faces / n;
+  state.counters["median_us"] = 1e6 * seconds[seconds.size() / 2];
+  state.counters["p99_us"] = 1e6 * seconds[std::min(seconds.size() - 1, seconds.size() * 99 / 100)];
+}
+
 void register_fracture(const std::string& root) {
-  for (const char* name : {"plate_100k", "plate_1m", "igea"})
+  for (const char* name : {"plate_100k", "plate_1m", "igea"}) {
     benchmark::RegisterBenchmark((std::string("BM_fracture/") + name).c_str(), fracture_impacts,
                                  std::string(name), root)
         ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((std::string("BM_capi_fracture/") + name).c_str(), capi_fracture_impacts,
+                                 std::string(name), root)
+        ->Unit(benchmark::kMillisecond);
+  }
 }
 
 }  // namespace

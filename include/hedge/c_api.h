@@ -613,7 +613,12 @@ HEDGE_API hedge_status hedge_fracture_options_default(int32_t preset, hedge_frac
  *  or options out of range: HEDGE_ERROR_INVALID_ARGUMENT naming what, and the mesh is unchanged.
  *  Options out of range include more than 100000 points on a ring, more than 10000 break points
  *  in all rings, and a thickness beyond 10 times the diagonal of the mesh's bounding box (the
- *  limits of fracture.h); they are checked before the capacity. */
+ *  limits of fracture.h); they are checked before the capacity.
+ *  The impact is located through the mesh's picking tree (see Picking below), built by the first
+ *  strike or picking call if there is none and kept up to date across strikes, so a strike costs
+ *  the broken area, whatever the size of the mesh: only the first one on a mesh pays for the tree,
+ *  O(n log n) for n faces (call hedge_mesh_bvh_update() after loading to pay it then). The tree
+ *  stays valid after the strike for the next strike and the picking calls. */
 HEDGE_API hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z,
                                            const hedge_fracture_options* options,
                                            hedge_fracture_shard* out_shards, uint32_t capacity,
@@ -739,7 +744,8 @@ HEDGE_API hedge_status hedge_mesh_validation_report(const hedge_mesh* mesh, char
 /* Picking (hedge/algorithms/locate.h): rays, nearest points, the face under a point            */
 /* ============================================================================================ */
 /* The mesh handle owns a bounding volume hierarchy over its live faces (hedge::FaceBvh), made by
- * the first picking call: O(n log n) for n faces, about 45 bytes a face. Each later picking call
+ * the first picking call (or hedge_mesh_fracture(), which locates its impacts through the same
+ * tree): O(n log n) for n faces, about 45 bytes a face. Each later picking call
  * first takes in the edits made since the previous one from the mesh's change log (FaceBvh::update:
  * a few microseconds per changed face, nothing when nothing changed; after garbage collection or
  * another renumbering it rebuilds), then answers in O(log n) expected time. While the tree exists
@@ -773,7 +779,8 @@ enum {
  *  call, so that the next query does not pay for it (call it after loading, or once after a batch
  *  of edits). \param out_bytes optional (NULL): heap bytes the tree holds. */
 HEDGE_API hedge_status hedge_mesh_bvh_update(hedge_mesh* mesh, uint64_t* out_bytes);
-/** Frees the picking tree (the next picking call builds it again). No tree: does nothing. */
+/** Frees the picking tree (the next picking call or fracture builds it again). No tree: does
+ *  nothing. */
 HEDGE_API hedge_status hedge_mesh_bvh_release(hedge_mesh* mesh);
 
 /** The first face hit by the ray origin + t x direction, 0 <= t <= t_max: watertight (a ray through

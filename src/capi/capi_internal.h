@@ -42,6 +42,11 @@ struct MeshObject {
   int depth = 0;
 };
 
+//! The mesh's picking tree (`object.bvh`): built on first use, otherwise brought up to date with
+//! the edits since its last use through the mesh's change log (FaceBvh::update()). Every picking
+//! call and hedge_mesh_fracture go through it (src/capi/picking.cpp), so a mesh has one tree.
+FaceBvh& picking_tree(MeshObject& object);
+
 //! What a hedge_render handle names. It shares ownership of its mesh object, so a call that is
 //! running on it keeps the mesh alive even if another thread destroys the mesh meanwhile.
 struct RenderObject {

@@ -163,6 +163,10 @@ struct FractureResult {
 //! Breaks `mesh` at `impact` (see the file comment). With `bvh` (built over `mesh`) the impact is
 //! located through it and it is kept up to date through update(): the cost is then that of the
 //! broken area, O(k log k) for its k faces plus the shards' hulls, whatever the size of the mesh.
+//! The tree is up to date with the mesh when the call returns, ready for the next impact and for
+//! queries (keep one per mesh, as the C ABI's and the wasm binding's picking trees are kept); a
+//! refusal leaves the mesh as it was and the tree usable, and should the call throw after
+//! editing the mesh (out of memory), the edits wait in the change log for the tree's next update().
 //! Without one, a temporary FaceBvh is built first, O(n log n).
 //! Faces must be convex (polygons are split at their centroid); every face of the mesh must have
 //! a nonzero area near the impact.

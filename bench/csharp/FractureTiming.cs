@@ -1,0 +1,98 @@
+// Times HalfEdgeMesh.Fracture from C# (Mono) as a game calls it: one strike at a time on a flat plate
+// of n x n quads (2 n^2 triangles), glass preset, at the centroid of a random remaining triangle,
+// through the mesh's picking tree. The tree is built once before the strikes (UpdatePickingTree, timed
+// apart); a few warm-up strikes are not counted; when a fifth of the faces has broken off, the plate
+// is made again, not timed. Prints the median and the 99th percentile of the strikes.
+//
+//   mono FractureTiming.exe [n (708: 1,002,528 triangles)] [strikes (200)]
+//
+// Built and run by the fracture_timing_csharp target (bench/csharp/CMakeLists.txt).
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using Hedge;
+
+static class FractureTiming
+{
+    static HalfEdgeMesh Plate(int n)
+    {
+        var positions = new float[3 * (n + 1) * (n + 1)];
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i)
+            {
+                int v = j * (n + 1) + i;
+                positions[3 * v] = i;
+                positions[3 * v + 1] = j;
+            }
+        var triangles = new int[6 * n * n];
+        int k = 0;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+            {
+                int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+                foreach (int v in new[] { a, b, c, a, c, d }) triangles[k++] = v;
+            }
+        return HalfEdgeMesh.FromTriangles(positions, triangles);
+    }
+
+    // The centroid of a random triangle of the plate that is still there.
+    static Vec3 Impact(HalfEdgeMesh mesh, int n, Random random)
+    {
+        while (true)
+        {
+            int i = random.Next(n), j = random.Next(n);
+            bool upper = random.Next(2) == 1;
+            // Triangles (i, j), (i + 1, j), (i + 1, j + 1) and (i, j), (i + 1, j + 1), (i, j + 1).
+            var p = upper ? new Vec3(i + 1f / 3, j + 2f / 3, 0) : new Vec3(i + 2f / 3, j + 1f / 3, 0);
+            Face face;
+            if (mesh.TryGetFaceContainingPoint(p, out face)) return p;
+        }
+    }
+
+    static double Percentile(List<double> sorted, int percent)
+    {
+        return sorted[Math.Min(sorted.Count - 1, sorted.Count * percent / 100)];
+    }
+
+    static int Main(string[] args)
+    {
+        int n = args.Length > 0 ? int.Parse(args[0]) : 708;
+        int strikes = args.Length > 1 ? int.Parse(args[1]) : 200;
+        const int warmup = 5;
+        var random = new Random(1);
+        FractureOptions options = FractureOptions.Preset(FracturePreset.Glass);
+        var clock = new Stopwatch();
+        var times = new List<double>();
+        double shards = 0, build = 0;
+        HalfEdgeMesh mesh = null;
+        int triangles = 2 * n * n;
+        for (int s = 0; s < warmup + strikes; ++s)
+        {
+            if (mesh == null || mesh.FaceCount < triangles * 4 / 5)
+            {
+                if (mesh != null) mesh.Dispose();
+                mesh = Plate(n);
+                clock.Restart();
+                mesh.UpdatePickingTree();
+                build = clock.Elapsed.TotalMilliseconds;
+            }
+            Vec3 impact = Impact(mesh, n, random);
+            options.Seed = (ulong)random.Next();
+            clock.Restart();
+            FractureShard[] result = mesh.Fracture(impact, options);
+            double ms = clock.Elapsed.TotalMilliseconds;
+            if (s >= warmup)
+            {
+                times.Add(ms);
+                shards += result.Length;
+            }
+            foreach (FractureShard shard in result) shard.Dispose();
+        }
+        mesh.Dispose();
+        times.Sort();
+        Console.WriteLine("C# Fracture, plate of {0:N0} triangles, glass, {1} strikes (after {2} warm-up): median {3:F3} ms, " +
+                          "p99 {4:F3} ms, {5:F1} shards per strike; picking tree built in {6:F0} ms before the strikes",
+                          triangles, strikes, warmup, Percentile(times, 50), Percentile(times, 99), shards / strikes, build);
+        return 0;
+    }
+}

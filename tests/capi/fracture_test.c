@@ -1,0 +1,208 @@
+/* Tests of hedge_mesh_fracture() through the mesh's picking tree (src/capi/algorithms.cpp and
+ * picking.cpp), compiled as C11: strikes in a row on one mesh, whose tree each strike keeps up to
+ * date, give the same shards as the same strikes on a twin mesh whose tree is freed before each
+ * strike (so each strike builds a fresh one); a strike where an earlier one removed the faces finds
+ * no surface there. The rest of hedge_mesh_fracture() is tested in c_api_test.c.
+ * Each CHECK reports file:line and exits non-zero on failure. */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hedge/c_api.h"
+
+static int g_checks = 0;
+
+#define CHECK(cond)                                                                                 \
+  do {                                                                                              \
+    ++g_checks;                                                                                     \
+    if (!(cond)) {                                                                                  \
+      fprintf(stderr, "%s:%d: CHECK failed: %s\n  last error: \"%s\"\n", __FILE__, __LINE__, #cond, \
+              hedge_last_error());                                                                  \
+      exit(1);                                                                                      \
+    }                                                                                               \
+  } while (0)
+
+#define CHECK_STATUS(call, expected)                                                                    \
+  do {                                                                                                  \
+    const hedge_status status_ = (call);                                                                \
+    ++g_checks;                                                                                         \
+    if (status_ != (expected)) {                                                                        \
+      fprintf(stderr, "%s:%d: %s returned %s, expected %s\n  last error: \"%s\"\n", __FILE__, __LINE__, \
+              #call, hedge_status_string(status_), hedge_status_string(expected), hedge_last_error());  \
+      exit(1);                                                                                          \
+    }                                                                                                   \
+  } while (0)
+
+#define CHECK_OK(call) CHECK_STATUS(call, HEDGE_OK)
+
+enum { kMaxShards = 64 };
+
+static hedge_counts counts_of(const hedge_mesh* mesh) {
+  hedge_counts c;
+  CHECK_OK(hedge_mesh_counts(mesh, &c));
+  return c;
+}
+
+static void check_valid(hedge_mesh* mesh) {
+  uint32_t problems = 1;
+  CHECK_OK(hedge_mesh_validate(mesh, &problems));
+  CHECK(problems == 0);
+}
+
+/* A plate of n x n quads, each two triangles, in z = 0. */
+static hedge_mesh* make_plate(uint32_t n) {
+  float* positions = malloc(sizeof(float) * 3 * (n + 1) * (n + 1));
+  uint32_t* triangles = malloc(sizeof(uint32_t) * 6 * n * n);
+  CHECK(positions != NULL && triangles != NULL);
+  uint32_t k = 0;
+  for (uint32_t j = 0; j <= n; ++j)
+    for (uint32_t i = 0; i <= n; ++i) {
+      float* p = positions + 3 * ((n + 1) * j + i);
+      p[0] = (float)i, p[1] = (float)j, p[2] = 0;
+    }
+  for (uint32_t j = 0; j < n; ++j)
+    for (uint32_t i = 0; i < n; ++i) {
+      const uint32_t a = (n + 1) * j + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+      const uint32_t quad[6] = {a, b, c, a, c, d};
+      memcpy(triangles + k, quad, sizeof quad);
+      k += 6;
+    }
+  hedge_mesh* plate = NULL;
+  CHECK_OK(
+      hedge_mesh_create(positions, (n + 1) * (n + 1), triangles, k, NULL, 0, NULL, NULL, NULL, NULL, &plate));
+  free(positions);
+  free(triangles);
+  return plate;
+}
+
+/* The two meshes have the same counts and the same positions in the same slots. */
+static void check_same_mesh(const hedge_mesh* a, const hedge_mesh* b) {
+  const hedge_counts ca = counts_of(a), cb = counts_of(b);
+  CHECK(memcmp(&ca, &cb, sizeof ca) == 0);
+  const uint64_t n = 3 * (uint64_t)ca.vertex_slots;
+  float* pa = malloc(sizeof(float) * (n + 1));
+  float* pb = malloc(sizeof(float) * (n + 1));
+  CHECK(pa != NULL && pb != NULL);
+  uint64_t na = 0, nb = 0;
+  CHECK_OK(hedge_mesh_copy_positions(a, pa, n, &na));
+  CHECK_OK(hedge_mesh_copy_positions(b, pb, n, &nb));
+  CHECK(na == n && nb == n && memcmp(pa, pb, sizeof(float) * n) == 0);
+  free(pa);
+  free(pb);
+}
+
+/* Strikes `cached` (its tree kept from earlier calls) and `fresh` (its tree freed first) at the same
+ * point with the same seed: the same shards, the same remaining meshes. Returns the shard count. */
+static uint32_t strike_both(hedge_mesh* cached, hedge_mesh* fresh, float x, float y, uint64_t seed) {
+  hedge_fracture_options o;
+  CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o));
+  o.seed = seed;
+  hedge_fracture_shard a[kMaxShards], b[kMaxShards];
+  uint32_t na = 0, nb = 0;
+  CHECK_OK(hedge_mesh_fracture(cached, x, y, 0, &o, a, kMaxShards, &na));
+  CHECK_OK(hedge_mesh_bvh_release(fresh));
+  CHECK_OK(hedge_mesh_fracture(fresh, x, y, 0, &o, b, kMaxShards, &nb));
+  CHECK(na > 0 && na == nb);
+  for (uint32_t i = 0; i < na && i < nb; ++i) {
+    CHECK(a[i].area == b[i].area && a[i].area > 0);
+    CHECK(a[i].centroid[0] == b[i].centroid[0] && a[i].centroid[1] == b[i].centroid[1]);
+    check_same_mesh(a[i].mesh, b[i].mesh);
+    check_valid(a[i].mesh);
+    CHECK((a[i].hull == NULL) == (b[i].hull == NULL));
+    CHECK_OK(hedge_mesh_destroy(a[i].mesh));
+    CHECK_OK(hedge_mesh_destroy(b[i].mesh));
+    if (a[i].hull != NULL) CHECK_OK(hedge_mesh_destroy(a[i].hull));
+    if (b[i].hull != NULL) CHECK_OK(hedge_mesh_destroy(b[i].hull));
+  }
+  check_same_mesh(cached, fresh);
+  check_valid(cached);
+  check_valid(fresh);
+  return na;
+}
+
+/* Straight down onto the plate at (x, y): whether the picking tree finds a face, and which. */
+static int32_t pick_down(hedge_mesh* mesh, float x, float y, uint32_t* out_face) {
+  const float origin[3] = {x, y, 1}, down[3] = {0, 0, -1};
+  hedge_surface_hit hit;
+  int32_t found = -1;
+  CHECK_OK(hedge_mesh_raycast(mesh, origin, down, INFINITY, &hit, &found));
+  if (found) *out_face = hit.face;
+  return found;
+}
+
+/* The centroid of a live face. */
+static void face_centroid(const hedge_mesh* mesh, uint32_t f, float out[2]) {
+  uint32_t corners[8], n = 0;
+  CHECK_OK(hedge_face_vertices(mesh, f, corners, 8, &n));
+  CHECK(n >= 3);
+  double x = 0, y = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    float p[3];
+    CHECK_OK(hedge_mesh_get_position(mesh, corners[i], p));
+    x += p[0], y += p[1];
+  }
+  out[0] = (float)(x / n), out[1] = (float)(y / n);
+}
+
+static void test_strikes_in_a_row(void) {
+  hedge_mesh* cached = make_plate(40);
+  hedge_mesh* fresh = make_plate(40);
+  uint64_t bytes = 0;
+  CHECK_OK(hedge_mesh_bvh_update(cached, &bytes));
+  CHECK(bytes > 0);
+
+  /* The first strike: the tree built above locates it. */
+  CHECK(strike_both(cached, fresh, 20.3f, 19.6f, 5) >= 20);
+
+  /* Where the first strike broke the plate: no surface, for picking and for a second strike,
+   * which is refused with the mesh unchanged. */
+  uint32_t face = HEDGE_INVALID_INDEX;
+  CHECK(pick_down(cached, 20.3f, 19.6f, &face) == 0);
+  const hedge_counts before = counts_of(cached);
+  hedge_fracture_shard shards[kMaxShards];
+  uint32_t count = 0;
+  CHECK_STATUS(hedge_mesh_fracture(cached, 20.3f, 19.6f, 0, NULL, shards, kMaxShards, &count),
+               HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK(strstr(hedge_last_error(), "tolerance") != NULL);
+  const hedge_counts after = counts_of(cached);
+  CHECK(memcmp(&before, &after, sizeof before) == 0);
+
+  /* At the rim of the hole: the remaining face nearest to the first impact (found face by face),
+   * which the first strike cut or refined. The updated tree finds it, and a strike there breaks
+   * what remains as a fresh tree does. */
+  uint32_t rim = HEDGE_INVALID_INDEX;
+  float at[2] = {0, 0};
+  double nearest = INFINITY;
+  for (uint32_t f = 0; f < after.face_slots; ++f) {
+    int32_t deleted = 1;
+    CHECK_OK(hedge_face_is_deleted(cached, f, &deleted));
+    if (deleted) continue;
+    float c[2];
+    face_centroid(cached, f, c);
+    const double d = hypot(c[0] - 20.3, c[1] - 19.6);
+    if (d < nearest) nearest = d, rim = f, at[0] = c[0], at[1] = c[1];
+  }
+  CHECK(rim != HEDGE_INVALID_INDEX && nearest > 2);
+  const float first_impact[3] = {20.3f, 19.6f, 0};
+  hedge_surface_hit hit;
+  int32_t found = 0;
+  CHECK_OK(hedge_mesh_closest_point(cached, first_impact, INFINITY, &hit, &found));
+  CHECK(found == 1 && hit.distance > 1);
+  CHECK(pick_down(cached, at[0], at[1], &face) == 1 && face == rim);
+  CHECK(strike_both(cached, fresh, at[0], at[1], 6) > 0);
+
+  /* Far from both holes, where the plate is whole. */
+  CHECK(strike_both(cached, fresh, 8.4f, 31.7f, 7) >= 20);
+  CHECK(pick_down(cached, 8.4f, 31.7f, &face) == 0 && pick_down(cached, 35.5f, 5.5f, &face) == 1);
+
+  CHECK_OK(hedge_mesh_destroy(cached));
+  CHECK_OK(hedge_mesh_destroy(fresh));
+}
+
+int main(void) {
+  test_strikes_in_a_row();
+  printf("fracture_test: %d checks passed\n", g_checks);
+  return 0;
+}
