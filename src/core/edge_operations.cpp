@@ -234,7 +234,11 @@ bool has_properties(const Mesh& m) {
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
-bool can_split_edge(const SurfaceMesh& m, Edge e) { return m.is_live(e); }
+bool can_split_edge(const SurfaceMesh& m, Edge e) { return split_refusal(m, e) == nullptr; }
+
+const char* split_refusal(const SurfaceMesh& m, Edge e) {
+  return m.is_live(e) ? nullptr : "the edge is not live";
+}
 
 // Both cases are out of line: split_edge itself is the test and a tail call, and neither case's
 // register use weighs on the other.
@@ -506,27 +510,52 @@ bool joined(const Mesh& m, Halfedge out, Vertex w) {
   return false;
 }
 
-// can_flip's tests once the two triangles are known: h -> h1 -> h2 and t -> t1 -> t2.
-bool flip_allowed(const Mesh& m, Halfedge h, Halfedge t, Halfedge h1, Halfedge h2, Halfedge t1) {
+// flip_refusal's tests once the two triangles are known: h -> h1 -> h2 and t -> t1 -> t2.
+const char* flip_check(const Mesh& m, Halfedge h, Halfedge t, Halfedge h1, Halfedge h2, Halfedge t1) {
   const Vertex c = m.to_vertex(h1), d = m.to_vertex(t1);
   // h2 leaves c, h leaves a and t leaves b: the walks start there. The two short fixed walks come
   // first: the loop about c ends on a mispredicted branch, which would restart them.
-  return c != d && keeps_enough_edges(m, h) && keeps_enough_edges(m, t) && !joined(m, h2, d);
+  if (c == d) return "the two triangles on the edge share their tip";
+  if (!keeps_enough_edges(m, h) || !keeps_enough_edges(m, t))
+    return "an end is an interior vertex of valence 3 (the flip would leave it with 2)";
+  if (joined(m, h2, d)) return "the tips of its triangles are already joined by an edge";
+  return nullptr;
+}
+
+// The two triangles on e (h -> h1 -> h2 and t -> t1 -> t2), or why there are none.
+struct FlipSides {
+  Halfedge h, t, h1, h2, t1, t2;
+  const char* refusal = nullptr;
+};
+FlipSides flip_sides(const Mesh& m, Edge e) {
+  FlipSides s;
+  if (!m.is_live(e)) {
+    s.refusal = "the edge is not live";
+    return s;
+  }
+  if (m.is_boundary(e)) {
+    s.refusal = "the edge is on the boundary (a flip needs a triangle on both sides)";
+    return s;
+  }
+  s.h = Mesh::halfedge(e, 0);
+  s.t = Mesh::twin(s.h);
+  s.h1 = m.next(s.h), s.h2 = m.next(s.h1), s.t1 = m.next(s.t), s.t2 = m.next(s.t1);
+  if (m.next(s.h2) != s.h || m.next(s.t2) != s.t)
+    s.refusal = "a face on the edge is not a triangle";
+  else
+    s.refusal = flip_check(m, s.h, s.t, s.h1, s.h2, s.t1);
+  return s;
 }
 }  // namespace
 
-bool can_flip(const SurfaceMesh& m, Edge e) {
-  if (!m.is_live(e) || m.is_boundary(e)) return false;
-  const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
-  const Halfedge h1 = m.next(h), h2 = m.next(h1), t1 = m.next(t), t2 = m.next(t1);
-  return m.next(h2) == h && m.next(t2) == t && flip_allowed(m, h, t, h1, h2, t1);
-}
+bool can_flip(const SurfaceMesh& m, Edge e) { return flip_refusal(m, e) == nullptr; }
+
+const char* flip_refusal(const SurfaceMesh& m, Edge e) { return flip_sides(m, e).refusal; }
 
 Edge flip(SurfaceMesh& m, Edge e) {
-  if (!m.is_live(e) || m.is_boundary(e)) return {};
-  const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
-  const Halfedge h1 = m.next(h), h2 = m.next(h1), t1 = m.next(t), t2 = m.next(t1);
-  if (m.next(h2) != h || m.next(t2) != t || !flip_allowed(m, h, t, h1, h2, t1)) return {};
+  const FlipSides s = flip_sides(m, e);
+  if (s.refusal != nullptr) return {};
+  const Halfedge h = s.h, t = s.t, h1 = s.h1, h2 = s.h2, t1 = s.t1, t2 = s.t2;
   const Vertex a = m.from_vertex(h), b = m.to_vertex(h);
   const Vertex c = m.to_vertex(h1), d = m.to_vertex(t1);
   const Face f1 = m.face(h), f2 = m.face(t);

@@ -134,7 +134,11 @@ std::array<float, 3> barycentric(const Vec3& a, const Vec3& b, const Vec3& c, co
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
-bool can_split_face(const SurfaceMesh& m, Face f) { return m.is_live(f); }
+bool can_split_face(const SurfaceMesh& m, Face f) { return split_face_refusal(m, f) == nullptr; }
+
+const char* split_face_refusal(const SurfaceMesh& m, Face f) {
+  return m.is_live(f) ? nullptr : "the face is not live";
+}
 
 Vertex split_face(SurfaceMesh& m, Face f, const Vec3& point) {
   if (!can_split_face(m, f) || !is_finite(point)) return {};
@@ -185,11 +189,20 @@ Vertex split_face(SurfaceMesh& m, Face f, const Vec3& point) {
 }
 
 bool can_cut_face(const SurfaceMesh& m, Halfedge h0, Halfedge h1) {
-  if (!m.is_live(h0) || !m.is_live(h1) || h0 == h1) return false;
+  return cut_face_refusal(m, h0, h1) == nullptr;
+}
+
+const char* cut_face_refusal(const SurfaceMesh& m, Halfedge h0, Halfedge h1) {
+  if (!m.is_live(h0) || !m.is_live(h1)) return "a half-edge is not live";
+  if (h0 == h1) return "the two half-edges are the same";
   const Face f = m.face(h0);
-  if (!f.is_valid() || m.face(h1) != f) return false;
-  if (m.next(h0) == h1 || m.next(h1) == h0) return false;
-  return !m.find_halfedge(m.to_vertex(h0), m.to_vertex(h1)).is_valid();
+  if (!f.is_valid()) return "the half-edges are on a boundary, not in a face";
+  if (m.face(h1) != f) return "the half-edges are in different faces";
+  if (m.next(h0) == h1 || m.next(h1) == h0)
+    return "their targets are neighbours in the face (the cut would double an edge)";
+  if (m.find_halfedge(m.to_vertex(h0), m.to_vertex(h1)).is_valid())
+    return "an edge already joins their targets";
+  return nullptr;
 }
 
 Halfedge cut_face(SurfaceMesh& m, Halfedge h0, Halfedge h1) {
