@@ -318,8 +318,10 @@ hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z,
     const std::size_t points = fracture_break_points(f);
     count = static_cast<std::uint32_t>(points);
     check_capacity(points, out_shards, capacity, "out_shards");
-    // Its InvalidInputError becomes HEDGE_ERROR_INVALID_ARGUMENT, the mesh unchanged.
-    FractureResult r = fracture(object->mesh, impact, f);
+    // Its InvalidInputError becomes HEDGE_ERROR_INVALID_ARGUMENT, the mesh unchanged. The impact is
+    // located through the mesh's picking tree, which fracture() brings up to date before and after
+    // its edits: the strike costs the broken area, not a tree over the whole mesh.
+    FractureResult r = fracture(object->mesh, impact, f, &picking_tree(*object));
     // Handles are registered only once every shard is ready, so a failure leaves none behind.
     std::vector<std::shared_ptr<MeshObject>> meshes, hulls;
     for (Shard& s : r.shards) {

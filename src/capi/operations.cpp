@@ -33,12 +33,12 @@ void hedge::capi::write_maps(const GarbageMaps& maps, const MapBuffers& b) {
 
 namespace {
 
-[[noreturn]] void refused(const std::string& what, const char* why = nullptr) {
-  fail(HEDGE_ERROR_REFUSED,
-       what + " refused: " + (why ? why : "the operation would break the mesh") + "; nothing was changed");
+// The edits whose predicate has no refusal of its own in the library yet.
+[[noreturn]] void refused(const std::string& what) {
+  binding::refuse(what, "the edit would leave a vertex or an edge non-manifold");
 }
 
-std::string name(const char* kind, std::uint32_t i) { return std::string(kind) + " " + std::to_string(i); }
+std::string name(const char* kind, std::uint32_t i) { return binding::element_name(kind, i); }
 
 }  // namespace
 
@@ -53,13 +53,8 @@ hedge_status hedge_split_edge(hedge_mesh* mesh, uint32_t edge, float x, float y,
                               uint32_t* out_vertex) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    const Edge e = live_edge(m, edge);
-    const Vec3 p = need_point(x, y, z);
     need(out_vertex, "out_vertex");
-    const Vertex v = split_edge(m, e, p);
-    if (!v.is_valid()) refused("split_edge of " + name("edge", edge));
-    *out_vertex = v.idx();
+    *out_vertex = binding::split_edge(object->mesh, edge, Vec3{x, y, z}).idx();
   });
 }
 
@@ -71,12 +66,8 @@ hedge_status hedge_can_collapse(const hedge_mesh* mesh, uint32_t halfedge, int32
 hedge_status hedge_collapse(hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_vertex) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    const Halfedge h = live_halfedge(m, halfedge);
     need(out_vertex, "out_vertex");
-    const Vertex v = collapse(m, h);
-    if (!v.is_valid()) refused("collapse of " + name("halfedge", halfedge), collapse_refusal(m, h));
-    *out_vertex = v.idx();
+    *out_vertex = binding::collapse(object->mesh, halfedge).idx();
   });
 }
 
@@ -86,12 +77,7 @@ hedge_status hedge_can_flip(const hedge_mesh* mesh, uint32_t edge, int32_t* out_
 }
 
 hedge_status hedge_flip(hedge_mesh* mesh, uint32_t edge) {
-  return guard([&] {
-    auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    const Edge e = live_edge(m, edge);
-    if (!flip(m, e).is_valid()) refused("flip of " + name("edge", edge));
-  });
+  return guard([&] { binding::flip(find_mesh(mesh)->mesh, edge); });
 }
 
 hedge_status hedge_can_split_face(const hedge_mesh* mesh, uint32_t face, int32_t* out_ok) {
@@ -103,13 +89,8 @@ hedge_status hedge_split_face(hedge_mesh* mesh, uint32_t face, float x, float y,
                               uint32_t* out_vertex) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    const Face f = live_face(m, face);
-    const Vec3 p = need_point(x, y, z);
     need(out_vertex, "out_vertex");
-    const Vertex v = split_face(m, f, p);
-    if (!v.is_valid()) refused("split_face of " + name("face", face));
-    *out_vertex = v.idx();
+    *out_vertex = binding::split_face(object->mesh, face, Vec3{x, y, z}).idx();
   });
 }
 
@@ -127,15 +108,8 @@ hedge_status hedge_cut_face(hedge_mesh* mesh, uint32_t halfedge0, uint32_t halfe
                             uint32_t* out_halfedge) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    const Halfedge h0 = live_halfedge(m, halfedge0);
-    const Halfedge h1 = live_halfedge(m, halfedge1);
     need(out_halfedge, "out_halfedge");
-    const std::string what =
-        "cut_face of " + name("halfedge", halfedge0) + " and " + std::to_string(halfedge1);
-    const Halfedge h = cut_face(m, h0, h1);
-    if (!h.is_valid()) refused(what);
-    *out_halfedge = h.idx();
+    *out_halfedge = binding::cut_face(object->mesh, halfedge0, halfedge1).idx();
   });
 }
 
@@ -226,12 +200,10 @@ hedge_status hedge_fill_hole(hedge_mesh* mesh, uint32_t halfedge, uint32_t* buff
   return guard([&] {
     auto object = find_mesh(mesh);
     SurfaceMesh& m = object->mesh;
-    const Halfedge h = live_halfedge(m, halfedge);
     need(out_count, "out_count");
-    // The predicate comes first: the buffer check below walks the loop, which the predicate has
-    // found sound, and a refusal takes precedence over a small buffer.
-    if (!can_fill_hole(m, h))
-      refused("fill_hole of " + name("halfedge", halfedge) + " (not on a boundary loop of 3 edges or more)");
+    // The refusal comes first: the buffer check below walks the loop, which the refusal has found
+    // sound, and a refusal takes precedence over a small buffer.
+    const Halfedge h = binding::require_fill_hole(m, halfedge);
     if (buffer != nullptr) {
       std::size_t length = 0;
       for ([[maybe_unused]] Halfedge g : m.loop(h)) ++length;

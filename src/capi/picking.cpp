@@ -1,5 +1,6 @@
-// The C ABI: picking (hedge/algorithms/locate.h) through a FaceBvh the mesh handle owns, built by
-// the first query and updated from the mesh's change log by each later one.
+// The C ABI: picking (hedge/algorithms/locate.h) through the mesh's picking tree, built by the first
+// query and updated from the mesh's change log by each later one (binding::picking_tree);
+// hedge_mesh_fracture (algorithms.cpp) locates its impacts through the same tree.
 #include <cstdio>
 #include <limits>
 
@@ -9,15 +10,6 @@ using namespace hedge;
 using namespace hedge::capi;
 
 namespace {
-
-//! The mesh's picking tree, built or brought up to date with the edits since the last call.
-const FaceBvh& current_bvh(MeshObject& object) {
-  if (!object.bvh)
-    object.bvh = std::make_unique<FaceBvh>(object.mesh);
-  else
-    object.bvh->update();
-  return *object.bvh;
-}
 
 Vec3 need_vector(const float* xyz, const char* name) {
   need(xyz, name);
@@ -74,7 +66,7 @@ extern "C" {
 hedge_status hedge_mesh_bvh_update(hedge_mesh* mesh, uint64_t* out_bytes) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    const FaceBvh& bvh = current_bvh(*object);
+    const FaceBvh& bvh = picking_tree(*object);
     if (out_bytes != nullptr) *out_bytes = bvh.memory_bytes();
   });
 }
@@ -90,7 +82,7 @@ hedge_status hedge_mesh_raycast(hedge_mesh* mesh, const float* origin, const flo
     const Vec3 d = need_vector(direction, "direction");
     if (d.x == 0 && d.y == 0 && d.z == 0) fail(HEDGE_ERROR_INVALID_ARGUMENT, "direction is zero");
     const double limit = need_limit(t_max, "t_max", true);
-    const auto found = current_bvh(object).first_hit(o, d, limit);
+    const auto found = picking_tree(object).first_hit(o, d, limit);
     if (!found) return false;
     const double length = std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z);
     fill_hit(*found, static_cast<float>(found->t), static_cast<float>(found->t * length), &hit);
@@ -103,8 +95,8 @@ hedge_status hedge_mesh_closest_point(hedge_mesh* mesh, const float* point, floa
   return pick(mesh, out_hit, out_found, [&](MeshObject& object, hedge_surface_hit& hit) {
     const Vec3 p = need_vector(point, "point");
     const double limit = need_limit(max_distance, "max_distance", true);
-    const auto found = std::isinf(limit) ? current_bvh(object).closest_point(p)
-                                         : current_bvh(object).closest_point(p, limit);
+    const auto found = std::isinf(limit) ? picking_tree(object).closest_point(p)
+                                         : picking_tree(object).closest_point(p, limit);
     if (!found) return false;
     fill_hit(*found, 0, static_cast<float>(std::sqrt(found->squared_distance)), &hit);
     return true;
@@ -116,7 +108,7 @@ hedge_status hedge_mesh_face_containing_point(hedge_mesh* mesh, const float* poi
   return pick(mesh, out_hit, out_found, [&](MeshObject& object, hedge_surface_hit& hit) {
     const Vec3 p = need_vector(point, "point");
     const double limit = need_limit(tolerance, "tolerance", false);
-    const auto found = current_bvh(object).face_containing(p, limit);
+    const auto found = picking_tree(object).face_containing(p, limit);
     if (!found) return false;
     fill_hit(*found, 0, static_cast<float>(std::sqrt(found->squared_distance)), &hit);
     return true;
@@ -145,7 +137,7 @@ hedge_status hedge_mesh_face_containing_point_2d(hedge_mesh* mesh, float u, floa
         fail(HEDGE_ERROR_INVALID_ARGUMENT,
              "plane is " + std::to_string(plane) + ", not a HEDGE_PLANE_* value");
     }
-    const auto found = current_bvh(object).face_containing(Vec2{u, v}, projection);
+    const auto found = picking_tree(object).face_containing(Vec2{u, v}, projection);
     if (!found) return false;
     fill_hit(*found, 0, 0, &hit);
     return true;

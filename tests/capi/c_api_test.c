@@ -384,6 +384,8 @@ static void test_tetrahedron(void) {
       CHECK_STATUS(hedge_collapse(tet, h, &survivor), HEDGE_ERROR_REFUSED);
       CHECK_ERROR_HAS("refused");
       CHECK_ERROR_HAS("would be left with too few edges"); /* the reason, not only the verdict */
+      CHECK(strstr(hedge_last_refusal(), "would be left with too few edges") != NULL);
+      CHECK(strstr(hedge_last_error(), hedge_last_refusal()) != NULL);
       CHECK(survivor == 1234);
       CHECK(same_counts(counts_of(tet), c));
       CHECK(next_of(tet, next_of(tet, next_of(tet, h))) == h);
@@ -393,7 +395,11 @@ static void test_tetrahedron(void) {
       CHECK_OK(hedge_can_flip(tet, e, &ok));
       CHECK(ok == 0);
       CHECK_STATUS(hedge_flip(tet, e), HEDGE_ERROR_REFUSED);
+      CHECK(strcmp(hedge_last_refusal(),
+                   "an end is an interior vertex of valence 3 (the flip would leave it with 2)") == 0);
     }
+    CHECK_OK(hedge_can_flip(tet, 0, &(int32_t){0}));
+    CHECK(strcmp(hedge_last_refusal(), "") == 0); /* cleared by a call that was not refused */
     copy_positions(tet, after, 12);
     CHECK(memcmp(before, after, sizeof before) == 0);
     for (uint32_t f = 0; f < 4; ++f) CHECK(face_is(tet, f, kTetTriangles + 3 * f, 3));

@@ -1,0 +1,35 @@
+// The names of the library's enums that bindings and the CLI take as strings, written once, with one
+// spelling everywhere (the CLI's --method, the JS API's strings, ...):
+//   Subdivision   loop, midpoint, catmull-clark, sqrt3, split-faces (also catmull_clark, split_faces)
+//   SmoothMethod  uniform, taubin, cotangent, implicit (also cotan)
+//   NormalSource  none, attribute, computed, auto (also automatic)
+// The spellings in parentheses are accepted aliases; name() gives the first.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hedge/algorithms/smooth.h"
+#include "hedge/algorithms/subdivide.h"
+#include "hedge/render/render_sync.h"
+
+namespace hedge::binding {
+
+//! The value `text` names. \throw InvalidInputError "unknown smoothing method 'x' (uniform, taubin,
+//! cotangent, implicit)" for a name that is none.
+Subdivision parse_subdivision(std::string_view text);
+SmoothMethod parse_smooth_method(std::string_view text);
+NormalSource parse_normal_source(std::string_view text);
+
+//! The value's name.
+const char* name(Subdivision value);
+const char* name(SmoothMethod value);
+const char* name(NormalSource value);
+
+//! Every accepted spelling (names first, then aliases), for a command line's list of choices.
+std::vector<std::string> subdivision_spellings();
+std::vector<std::string> smooth_method_spellings();
+std::vector<std::string> normal_source_spellings();
+
+}  // namespace hedge::binding
