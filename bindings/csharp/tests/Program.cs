@@ -40,6 +40,7 @@ namespace Hedge.Tests
             ErrorTests.Register(runner);
             ExampleTests.Register(runner);
             PickingTests.Register(runner);
+            RefusalTableTests.Register(runner);
             int failed = runner.Run(args.Length > 3 ? args[3] : null);
             return failed > 0 ? 1 : 0;
         }
