@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "binding/handles.h"
+#include "binding/names.h"
 #include "hedge/algorithms/locate.h"
 #include "hedge/core/export.h"
 #include "hedge/error.h"
@@ -33,25 +34,6 @@ double distance_to_segment(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
 }
 
 Vec3d as_double(const Vec3& p) { return {double(p.x), double(p.y), double(p.z)}; }
-
-TopologyPolicy policy_from(int policy) {
-  if (policy == 0) return TopologyPolicy::strict;
-  if (policy == 1) return TopologyPolicy::repair;
-  throw InvalidInputError("unknown topology policy " + std::to_string(policy) + " (0 strict, 1 repair)");
-}
-
-Weld weld_from(int weld) {
-  switch (weld) {
-    case 0:
-      return Weld::none;
-    case 1:
-      return Weld::exact;
-    case 2:
-      return Weld::epsilon;
-    default:
-      throw InvalidInputError("unknown weld mode " + std::to_string(weld) + " (0 none, 1 exact, 2 epsilon)");
-  }
-}
 
 val report_to_js(const BuildReport& r) {
   val out = val::object();
@@ -105,8 +87,8 @@ WasmMesh WasmMesh::from_buffers(val positions, val indices, val face_sizes, int 
     copy_from_js(indices, in.indices, js_length(indices, "indices"));
     copy_from_js(face_sizes, in.face_sizes, js_length(face_sizes, "faceSizes"));
     BuildOptions options;
-    options.policy = policy_from(policy);
-    options.weld = weld_from(weld);
+    options.policy = binding::to_policy(policy);
+    options.weld = binding::to_weld(weld);
     auto state = std::make_shared<MeshState>();
     state->mesh = build(in, options, &state->report);
     return WasmMesh(std::move(state));

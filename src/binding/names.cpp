@@ -2,6 +2,7 @@
 
 #include <span>
 
+#include "binding/errors.h"
 #include "hedge/error.h"
 
 namespace hedge::binding {
@@ -78,5 +79,42 @@ const char* name(NormalSource value) { return name_in<NormalSource>(kNormalSourc
 std::vector<std::string> subdivision_spellings() { return spellings<Subdivision>(kSubdivision); }
 std::vector<std::string> smooth_method_spellings() { return spellings<SmoothMethod>(kSmoothMethod); }
 std::vector<std::string> normal_source_spellings() { return spellings<NormalSource>(kNormalSource); }
+
+Weld to_weld(std::int32_t weld) {
+  switch (weld) {
+    case HEDGE_WELD_NONE:
+      return Weld::none;
+    case HEDGE_WELD_EXACT:
+      return Weld::exact;
+    case HEDGE_WELD_EPSILON:
+      return Weld::epsilon;
+    default:
+      fail(HEDGE_ERROR_INVALID_ARGUMENT, "weld is " + std::to_string(weld) + ", not a HEDGE_WELD_* value");
+  }
+}
+
+TopologyPolicy to_policy(std::int32_t policy) {
+  switch (policy) {
+    case HEDGE_POLICY_STRICT:
+      return TopologyPolicy::strict;
+    case HEDGE_POLICY_REPAIR:
+      return TopologyPolicy::repair;
+    default:
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "policy is " + std::to_string(policy) + ", not a HEDGE_POLICY_* value");
+  }
+}
+
+Winding to_winding(std::int32_t winding) {
+  switch (winding) {
+    case HEDGE_WINDING_CCW:
+      return Winding::ccw;
+    case HEDGE_WINDING_CW:
+      return Winding::cw;
+    default:
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "winding is " + std::to_string(winding) + ", not a HEDGE_WINDING_* value");
+  }
+}
 
 }  // namespace hedge::binding

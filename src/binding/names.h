@@ -3,15 +3,19 @@
 //   Subdivision   loop, midpoint, catmull-clark, sqrt3, split-faces (also catmull_clark, split_faces)
 //   SmoothMethod  uniform, taubin, cotangent, implicit (also cotan)
 //   NormalSource  none, attribute, computed, auto (also automatic)
-// The spellings in parentheses are accepted aliases; name() gives the first.
+// The spellings in parentheses are accepted aliases; name() gives the first. Below them, the build
+// options' enums from the C ABI's integers (HEDGE_WELD_*, ...), which the JS API passes too.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "hedge/algorithms/smooth.h"
 #include "hedge/algorithms/subdivide.h"
+#include "hedge/core/build.h"
+#include "hedge/core/export.h"
 #include "hedge/render/render_sync.h"
 
 namespace hedge::binding {
@@ -31,5 +35,11 @@ const char* name(NormalSource value);
 std::vector<std::string> subdivision_spellings();
 std::vector<std::string> smooth_method_spellings();
 std::vector<std::string> normal_source_spellings();
+
+//! The value of a HEDGE_WELD_*, HEDGE_POLICY_* or HEDGE_WINDING_* constant. \throw BindingError
+//! (HEDGE_ERROR_INVALID_ARGUMENT) "weld is 7, not a HEDGE_WELD_* value" for another integer.
+Weld to_weld(std::int32_t weld);
+TopologyPolicy to_policy(std::int32_t policy);
+Winding to_winding(std::int32_t winding);
 
 }  // namespace hedge::binding

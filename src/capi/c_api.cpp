@@ -200,43 +200,6 @@ void fill_report(const BuildReport& r, hedge_build_report* out) {
   out->repairs = to_u32(r.repairs(), "repairs");
 }
 
-Weld to_weld(std::int32_t weld) {
-  switch (weld) {
-    case HEDGE_WELD_NONE:
-      return Weld::none;
-    case HEDGE_WELD_EXACT:
-      return Weld::exact;
-    case HEDGE_WELD_EPSILON:
-      return Weld::epsilon;
-    default:
-      fail(HEDGE_ERROR_INVALID_ARGUMENT, "weld is " + std::to_string(weld) + ", not a HEDGE_WELD_* value");
-  }
-}
-
-TopologyPolicy to_policy(std::int32_t policy) {
-  switch (policy) {
-    case HEDGE_POLICY_STRICT:
-      return TopologyPolicy::strict;
-    case HEDGE_POLICY_REPAIR:
-      return TopologyPolicy::repair;
-    default:
-      fail(HEDGE_ERROR_INVALID_ARGUMENT,
-           "policy is " + std::to_string(policy) + ", not a HEDGE_POLICY_* value");
-  }
-}
-
-Winding to_winding(std::int32_t winding) {
-  switch (winding) {
-    case HEDGE_WINDING_CCW:
-      return Winding::ccw;
-    case HEDGE_WINDING_CW:
-      return Winding::cw;
-    default:
-      fail(HEDGE_ERROR_INVALID_ARGUMENT,
-           "winding is " + std::to_string(winding) + ", not a HEDGE_WINDING_* value");
-  }
-}
-
 BuildOptions to_build_options(const hedge_build_options& o) {
   BuildOptions b;
   b.policy = to_policy(o.policy);

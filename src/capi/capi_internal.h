@@ -21,6 +21,7 @@
 #include "binding/errors.h"
 #include "binding/handles.h"
 #include "binding/mesh_state.h"
+#include "binding/names.h"
 #include "hedge/algorithms/locate.h"
 #include "hedge/c_api.h"
 #include "hedge/core/build.h"
@@ -177,8 +178,8 @@ void copy_string(const std::string& text, char* buffer, std::uint32_t capacity, 
 //! Fills a C build report from the library's.
 void fill_report(const BuildReport& report, hedge_build_report* out);
 BuildOptions to_build_options(const hedge_build_options& options);
-Weld to_weld(std::int32_t weld);
-TopologyPolicy to_policy(std::int32_t policy);
-Winding to_winding(std::int32_t winding);
+using binding::to_policy;
+using binding::to_weld;
+using binding::to_winding;
 
 }  // namespace hedge::capi
