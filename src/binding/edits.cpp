@@ -133,4 +133,34 @@ std::vector<Face> fill_hole(SurfaceMesh& m, std::uint32_t halfedge) {
   return faces;
 }
 
+std::vector<Vertex> live_vertices(const SurfaceMesh& m, std::span<const std::uint32_t> vertices) {
+  std::vector<Vertex> out;
+  out.reserve(vertices.size());
+  for (const std::uint32_t v : vertices) out.push_back(live_vertex(m, v));
+  return out;
+}
+
+Face add_face(SurfaceMesh& m, std::span<const Vertex> corners) {
+  std::string what = "add_face of";
+  for (const Vertex v : corners) what.append(" ").append(std::to_string(v.idx()));
+  require_allowed(add_face_refusal(m, corners), what);
+  const Face f = hedge::add_face(m, corners);
+  if (!f.is_valid()) fail(HEDGE_ERROR_INTERNAL, "add_face refused an edit its refusal allowed");
+  return f;
+}
+
+void remove_face(SurfaceMesh& m, std::uint32_t face) {
+  const Face f = live_face(m, face);
+  require_allowed(remove_face_refusal(m, f), "remove_face of " + element_name("face", face));
+  if (!hedge::remove_face(m, f))
+    fail(HEDGE_ERROR_INTERNAL, "remove_face refused an edit its refusal allowed");
+}
+
+void remove_vertex(SurfaceMesh& m, std::uint32_t vertex) {
+  const Vertex v = live_vertex(m, vertex);
+  require_allowed(remove_vertex_refusal(m, v), "remove_vertex of " + element_name("vertex", vertex));
+  if (!hedge::remove_vertex(m, v))
+    fail(HEDGE_ERROR_INTERNAL, "remove_vertex refused an edit its refusal allowed");
+}
+
 }  // namespace hedge::binding

@@ -51,5 +51,13 @@ Halfedge cut_face(SurfaceMesh& m, std::uint32_t halfedge0, std::uint32_t halfedg
 Halfedge require_fill_hole(const SurfaceMesh& m, std::uint32_t halfedge);
 //! Fills the hole at `halfedge`. \return the new faces.
 std::vector<Face> fill_hole(SurfaceMesh& m, std::uint32_t halfedge);
+//! The live vertices a binding names, checked (handles) for add_face.
+std::vector<Vertex> live_vertices(const SurfaceMesh& m, std::span<const std::uint32_t> vertices);
+//! Adds a face with these corners (checked with live_vertices()). \return the new face.
+Face add_face(SurfaceMesh& m, std::span<const Vertex> corners);
+//! Removes `face`, and the edges and vertices it leaves unused.
+void remove_face(SurfaceMesh& m, std::uint32_t face);
+//! Removes `vertex` with its faces, and what they leave unused.
+void remove_vertex(SurfaceMesh& m, std::uint32_t vertex);
 
 }  // namespace hedge::binding

@@ -13,6 +13,16 @@
 using namespace hedge;
 using namespace hedge::capi;
 
+namespace {
+// A predicate's entry point: checks the handles, then writes can(mesh, element) to *out_ok as 0 or 1.
+template <typename H>
+hedge_status predicate(const hedge_mesh* mesh, std::uint32_t index, std::int32_t* out_ok,
+                       bool (*can)(const SurfaceMesh&, H)) {
+  return element_query<H>(mesh, index, out_ok, "out_ok",
+                          [can](const SurfaceMesh& m, H x) { return can(m, x) ? 1 : 0; });
+}
+}  // namespace
+
 void hedge::capi::check_map_buffers(const SurfaceMesh& m, const MapBuffers& b) {
   if (b.vertex != nullptr) check_capacity(m.vertex_slots(), b.vertex, b.vertex_capacity, "vertex_map");
   if (b.halfedge != nullptr)
@@ -31,22 +41,10 @@ void hedge::capi::write_maps(const GarbageMaps& maps, const MapBuffers& b) {
   put(maps.faces, b.face);
 }
 
-namespace {
-
-// The edits whose predicate has no refusal of its own in the library yet.
-[[noreturn]] void refused(const std::string& what) {
-  binding::refuse(what, "the edit would leave a vertex or an edge non-manifold");
-}
-
-std::string name(const char* kind, std::uint32_t i) { return binding::element_name(kind, i); }
-
-}  // namespace
-
 extern "C" {
 
 hedge_status hedge_can_split_edge(const hedge_mesh* mesh, uint32_t edge, int32_t* out_ok) {
-  return element_query<Edge>(mesh, edge, out_ok, "out_ok",
-                             [](const SurfaceMesh& m, Edge x) { return can_split_edge(m, x) ? 1 : 0; });
+  return predicate<Edge>(mesh, edge, out_ok, can_split_edge);
 }
 
 hedge_status hedge_split_edge(hedge_mesh* mesh, uint32_t edge, float x, float y, float z,
@@ -59,8 +57,7 @@ hedge_status hedge_split_edge(hedge_mesh* mesh, uint32_t edge, float x, float y,
 }
 
 hedge_status hedge_can_collapse(const hedge_mesh* mesh, uint32_t halfedge, int32_t* out_ok) {
-  return element_query<Halfedge>(mesh, halfedge, out_ok, "out_ok",
-                                 [](const SurfaceMesh& m, Halfedge x) { return can_collapse(m, x) ? 1 : 0; });
+  return predicate<Halfedge>(mesh, halfedge, out_ok, can_collapse);
 }
 
 hedge_status hedge_collapse(hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_vertex) {
@@ -72,8 +69,7 @@ hedge_status hedge_collapse(hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_v
 }
 
 hedge_status hedge_can_flip(const hedge_mesh* mesh, uint32_t edge, int32_t* out_ok) {
-  return element_query<Edge>(mesh, edge, out_ok, "out_ok",
-                             [](const SurfaceMesh& m, Edge x) { return can_flip(m, x) ? 1 : 0; });
+  return predicate<Edge>(mesh, edge, out_ok, can_flip);
 }
 
 hedge_status hedge_flip(hedge_mesh* mesh, uint32_t edge) {
@@ -81,8 +77,7 @@ hedge_status hedge_flip(hedge_mesh* mesh, uint32_t edge) {
 }
 
 hedge_status hedge_can_split_face(const hedge_mesh* mesh, uint32_t face, int32_t* out_ok) {
-  return element_query<Face>(mesh, face, out_ok, "out_ok",
-                             [](const SurfaceMesh& m, Face x) { return can_split_face(m, x) ? 1 : 0; });
+  return predicate<Face>(mesh, face, out_ok, can_split_face);
 }
 
 hedge_status hedge_split_face(hedge_mesh* mesh, uint32_t face, float x, float y, float z,
@@ -136,9 +131,8 @@ hedge_status hedge_can_add_face(const hedge_mesh* mesh, const uint32_t* vertices
   return guard([&] {
     auto object = find_mesh(mesh);
     need_array(vertices, count, "vertices");
-    std::vector<Vertex> corners;
-    corners.reserve(count);
-    for (std::uint32_t i = 0; i < count; ++i) corners.push_back(live_vertex(object->mesh, vertices[i]));
+    const std::vector<Vertex> corners =
+        binding::live_vertices(object->mesh, std::span<const std::uint32_t>(vertices, count));
     need(out_ok, "out_ok") = can_add_face(object->mesh, corners) ? 1 : 0;
   });
 }
@@ -146,53 +140,32 @@ hedge_status hedge_can_add_face(const hedge_mesh* mesh, const uint32_t* vertices
 hedge_status hedge_add_face(hedge_mesh* mesh, const uint32_t* vertices, uint32_t count, uint32_t* out_face) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
     need_array(vertices, count, "vertices");
-    std::vector<Vertex> corners;
-    corners.reserve(count);
-    for (std::uint32_t i = 0; i < count; ++i) corners.push_back(live_vertex(m, vertices[i]));
+    const std::vector<Vertex> corners =
+        binding::live_vertices(object->mesh, std::span<const std::uint32_t>(vertices, count));
     need(out_face, "out_face");
-    std::string what = "add_face of";
-    for (Vertex v : corners) what.append(" ").append(std::to_string(v.idx()));
-    const Face f = add_face(m, corners);
-    if (!f.is_valid()) refused(what);
-    *out_face = f.idx();
+    *out_face = binding::add_face(object->mesh, corners).idx();
   });
 }
 
 hedge_status hedge_can_remove_face(const hedge_mesh* mesh, uint32_t face, int32_t* out_ok) {
-  return element_query<Face>(mesh, face, out_ok, "out_ok",
-                             [](const SurfaceMesh& m, Face x) { return can_remove_face(m, x) ? 1 : 0; });
+  return predicate<Face>(mesh, face, out_ok, can_remove_face);
 }
 
 hedge_status hedge_remove_face(hedge_mesh* mesh, uint32_t face) {
-  return guard([&] {
-    auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    const Face f = live_face(m, face);
-    if (!remove_face(m, f)) refused("remove_face of " + name("face", face));
-  });
+  return guard([&] { binding::remove_face(find_mesh(mesh)->mesh, face); });
 }
 
 hedge_status hedge_can_remove_vertex(const hedge_mesh* mesh, uint32_t vertex, int32_t* out_ok) {
-  return element_query<Vertex>(mesh, vertex, out_ok, "out_ok", [](const SurfaceMesh& m, Vertex x) {
-    return can_remove_vertex(m, x) ? 1 : 0;
-  });
+  return predicate<Vertex>(mesh, vertex, out_ok, can_remove_vertex);
 }
 
 hedge_status hedge_remove_vertex(hedge_mesh* mesh, uint32_t vertex) {
-  return guard([&] {
-    auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    const Vertex v = live_vertex(m, vertex);
-    if (!remove_vertex(m, v)) refused("remove_vertex of " + name("vertex", vertex));
-  });
+  return guard([&] { binding::remove_vertex(find_mesh(mesh)->mesh, vertex); });
 }
 
 hedge_status hedge_can_fill_hole(const hedge_mesh* mesh, uint32_t halfedge, int32_t* out_ok) {
-  return element_query<Halfedge>(mesh, halfedge, out_ok, "out_ok", [](const SurfaceMesh& m, Halfedge x) {
-    return can_fill_hole(m, x) ? 1 : 0;
-  });
+  return predicate<Halfedge>(mesh, halfedge, out_ok, can_fill_hole);
 }
 
 hedge_status hedge_fill_hole(hedge_mesh* mesh, uint32_t halfedge, uint32_t* buffer, uint32_t capacity,

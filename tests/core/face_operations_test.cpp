@@ -297,5 +297,34 @@ TEST(Refusal, CutFaceSaysWhy) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+TEST(Refusal, AddAndRemoveSayWhy) {
+  SurfaceMesh m = build(test::grid(3, false));  // 3 x 3 quads; face j * 3 + i
+  const Vertex lone = m.add_vertex(Vec3{9, 9, 0});
+  const Vertex two[] = {Vertex(0), Vertex(1)};
+  EXPECT_STREQ(add_face_refusal(m, two), "a face needs at least 3 corners");
+  const Vertex repeated[] = {Vertex(0), Vertex(1), Vertex(0)};
+  EXPECT_STREQ(add_face_refusal(m, repeated), "a corner is repeated");
+  const Vertex inside[] = {Vertex(0), Vertex(1), lone};  // 0 -> 1 runs inside face 0
+  EXPECT_STREQ(add_face_refusal(m, inside), "an edge of the face already has a face on that side");
+  const Vertex outside[] = {Vertex(1), Vertex(0), lone};
+  EXPECT_EQ(add_face_refusal(m, outside), nullptr);
+  EXPECT_TRUE(can_add_face(m, outside));
+
+  ASSERT_EQ(remove_face_refusal(m, Face(4)), nullptr);
+  ASSERT_TRUE(remove_face(m, Face(4)));  // the centre
+  EXPECT_STREQ(remove_face_refusal(m, Face(4)), "the face is not live");
+  // Face 0 meets the hole at vertex 5 only: removing it would pinch vertex 5.
+  EXPECT_STREQ(remove_face_refusal(m, Face(0)),
+               "a corner would be left with two gaps in its fan of faces (pinched)");
+  EXPECT_FALSE(remove_face(m, Face(0)));
+  EXPECT_STREQ(remove_vertex_refusal(m, Vertex(0)),
+               "a corner of its faces would be left with two gaps in its fan of faces (pinched)");
+  EXPECT_EQ(remove_vertex_refusal(m, Vertex(1)), nullptr);
+  ASSERT_TRUE(remove_vertex(m, Vertex(1)));
+  EXPECT_STREQ(remove_vertex_refusal(m, Vertex(1)), "the vertex is not live");
+  ASSERT_TRUE(remove_vertex(m, lone));
+  EXPECT_TRUE(m.validate().empty());
+}
+
 }  // namespace
 }  // namespace hedge

@@ -2,9 +2,10 @@
 //
 // Every operation that can be illegal has a public predicate (can_*) and returns an empty result
 // (an invalid handle, false, or an empty list) when refused; a refused operation leaves the mesh
-// exactly as it was. The edits that the bindings explain also have a refusal (*_refusal): why the
-// edit is refused, in a few words, as a static string, or null if it is allowed. Their can_* is
-// exactly "the refusal is null", so the two cannot disagree. Each costs O(1) or O(valence) unless noted.
+// exactly as it was. Each such edit also has a refusal (*_refusal): why the edit is refused, in a
+// few words, as a static string, or null if it is allowed. Its can_* is exactly "the refusal is
+// null", so the two cannot disagree; the bindings report the refusal as the reason. Each costs
+// O(1) or O(valence) unless noted.
 // Properties follow the edits:
 //  - vertex properties of a new vertex are interpolated from the vertices around it (blended for
 //    float-like types, taken from the nearest source otherwise; see BasePropertyArray::interpolate),
@@ -95,10 +96,14 @@ Halfedge cut_face(SurfaceMesh& mesh, Halfedge h0, Halfedge h1);
 //! The mean of f's corner positions (accumulated in double). O(face degree).
 Vec3 face_centroid(const SurfaceMesh& mesh, Face f);
 
-//! True if a face with these corners can be added while every vertex and edge stays manifold:
-//! at least 3 distinct live vertices; each existing edge free on the new face's side; each
-//! non-isolated vertex on a boundary, with the new face entering its boundary gap. O(n valence).
+//! True if add_face_refusal(mesh, vertices) is null: a face with these corners can be added while
+//! every vertex and edge stays manifold: at least 3 distinct live vertices; each existing edge free
+//! on the new face's side; each non-isolated vertex on a boundary, with the new face entering its
+//! boundary gap. O(n valence).
 bool can_add_face(const SurfaceMesh& mesh, std::span<const Vertex> vertices);
+//! Why can_add_face(mesh, vertices) is false, in a few words; null if the face can be added. The
+//! string is static. Same cost as can_add_face().
+const char* add_face_refusal(const SurfaceMesh& mesh, std::span<const Vertex> vertices);
 //! Adds a face with the given corners (counter-clockwise); boundaries are relinked.
 //! \attention Vertices stay manifold, so a face that would meet the mesh at a vertex only (no
 //! shared edge there) is refused. Building face by face therefore needs an order in which each
@@ -107,15 +112,20 @@ bool can_add_face(const SurfaceMesh& mesh, std::span<const Vertex> vertices);
 //! \return the new face, invalid if refused.
 Face add_face(SurfaceMesh& mesh, std::span<const Vertex> vertices);
 
-//! True if removing f leaves every vertex manifold (a vertex already on a boundary must share a
-//! boundary edge with f). O(face degree).
+//! True if remove_face_refusal(mesh, f) is null: f is live and removing it leaves every vertex
+//! manifold (a vertex already on a boundary must share a boundary edge with f). O(face degree).
 bool can_remove_face(const SurfaceMesh& mesh, Face f);
+//! Why can_remove_face(mesh, f) is false, in a few words; null if f can be removed. Static string.
+const char* remove_face_refusal(const SurfaceMesh& mesh, Face f);
 //! Removes f; edges left with no face are removed, and so are vertices left with no edge.
 //! \return false if refused.
 bool remove_face(SurfaceMesh& mesh, Face f);
 
-//! True if removing v with its faces leaves every remaining vertex manifold. O(valence^2).
+//! True if remove_vertex_refusal(mesh, v) is null: v is live and removing it with its faces leaves
+//! every remaining vertex manifold. O(valence^2).
 bool can_remove_vertex(const SurfaceMesh& mesh, Vertex v);
+//! Why can_remove_vertex(mesh, v) is false, in a few words; null if v can be removed. Static string.
+const char* remove_vertex_refusal(const SurfaceMesh& mesh, Vertex v);
 //! Removes v, its faces, and what they leave unused. \return false if refused.
 bool remove_vertex(SurfaceMesh& mesh, Vertex v);
 
