@@ -80,41 +80,27 @@ std::vector<std::string> subdivision_spellings() { return spellings<Subdivision>
 std::vector<std::string> smooth_method_spellings() { return spellings<SmoothMethod>(kSmoothMethod); }
 std::vector<std::string> normal_source_spellings() { return spellings<NormalSource>(kNormalSource); }
 
+void unknown_constant(const char* what, std::int32_t constant, const char* constants) {
+  fail(HEDGE_ERROR_INVALID_ARGUMENT,
+       std::string(what) + " is " + std::to_string(constant) + ", not a " + constants + " value");
+}
+
 Weld to_weld(std::int32_t weld) {
-  switch (weld) {
-    case HEDGE_WELD_NONE:
-      return Weld::none;
-    case HEDGE_WELD_EXACT:
-      return Weld::exact;
-    case HEDGE_WELD_EPSILON:
-      return Weld::epsilon;
-    default:
-      fail(HEDGE_ERROR_INVALID_ARGUMENT, "weld is " + std::to_string(weld) + ", not a HEDGE_WELD_* value");
-  }
+  static constexpr Constant<Weld> kWelds[] = {
+      {HEDGE_WELD_NONE, Weld::none}, {HEDGE_WELD_EXACT, Weld::exact}, {HEDGE_WELD_EPSILON, Weld::epsilon}};
+  return from_constant(kWelds, weld, "weld", "HEDGE_WELD_*");
 }
 
 TopologyPolicy to_policy(std::int32_t policy) {
-  switch (policy) {
-    case HEDGE_POLICY_STRICT:
-      return TopologyPolicy::strict;
-    case HEDGE_POLICY_REPAIR:
-      return TopologyPolicy::repair;
-    default:
-      fail(HEDGE_ERROR_INVALID_ARGUMENT,
-           "policy is " + std::to_string(policy) + ", not a HEDGE_POLICY_* value");
-  }
+  static constexpr Constant<TopologyPolicy> kPolicies[] = {{HEDGE_POLICY_STRICT, TopologyPolicy::strict},
+                                                           {HEDGE_POLICY_REPAIR, TopologyPolicy::repair}};
+  return from_constant(kPolicies, policy, "policy", "HEDGE_POLICY_*");
 }
 
 Winding to_winding(std::int32_t winding) {
-  switch (winding) {
-    case HEDGE_WINDING_CCW:
-      return Winding::ccw;
-    case HEDGE_WINDING_CW:
-      return Winding::cw;
-    default:
-      fail(HEDGE_ERROR_INVALID_ARGUMENT,
-           "winding is " + std::to_string(winding) + ", not a HEDGE_WINDING_* value");
-  }
+  static constexpr Constant<Winding> kWindings[] = {{HEDGE_WINDING_CCW, Winding::ccw},
+                                                    {HEDGE_WINDING_CW, Winding::cw}};
+  return from_constant(kWindings, winding, "winding", "HEDGE_WINDING_*");
 }
 
 }  // namespace hedge::binding

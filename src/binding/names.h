@@ -36,6 +36,25 @@ std::vector<std::string> subdivision_spellings();
 std::vector<std::string> smooth_method_spellings();
 std::vector<std::string> normal_source_spellings();
 
+//! Fails with HEDGE_ERROR_INVALID_ARGUMENT: "<what> is <constant>, not a <constants> value".
+[[noreturn]] void unknown_constant(const char* what, std::int32_t constant, const char* constants);
+
+//! One C ABI constant and the library's value it stands for.
+template <typename E>
+struct Constant {
+  std::int32_t constant;
+  E value;
+};
+//! The value that `constant` stands for in `table`. \throw BindingError
+//! (HEDGE_ERROR_INVALID_ARGUMENT) "<what> is 7, not a <constants> value" if it is none of them.
+template <typename E, std::size_t N>
+E from_constant(const Constant<E> (&table)[N], std::int32_t constant, const char* what,
+                const char* constants) {
+  for (const Constant<E>& c : table)
+    if (c.constant == constant) return c.value;
+  unknown_constant(what, constant, constants);
+}
+
 //! The value of a HEDGE_WELD_*, HEDGE_POLICY_* or HEDGE_WINDING_* constant. \throw BindingError
 //! (HEDGE_ERROR_INVALID_ARGUMENT) "weld is 7, not a HEDGE_WELD_* value" for another integer.
 Weld to_weld(std::int32_t weld);
