@@ -45,7 +45,7 @@ int run_smooth(const SmoothCommandOptions& o) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   save_mesh(loaded.mesh, o.output, o.ascii);
   std::printf("smoothed %s -> %s: %s, %d iterations, %zu vertices, %.1f ms\n", o.input.c_str(),
-              o.output.c_str(), binding::name(s.method), o.iterations, loaded.mesh.n_vertices(), ms);
+              o.output.c_str(), o.method.c_str(), o.iterations, loaded.mesh.n_vertices(), ms);
   return kExitOk;
 }
 
