@@ -5,10 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <string>
 #include <vector>
 
 #include "hedge/core/build.h"
 #include "hedge/core/surface_mesh.h"
+#include "support/random_edits.h"
 #include "test_meshes.h"
 
 namespace hedge::test {
@@ -75,6 +78,31 @@ inline void expect_corner_uv_matches_position(const SurfaceMesh& m) {
       EXPECT_NEAR(uv[h].x, p.x, 1e-5f);
       EXPECT_NEAR(uv[h].y, p.y, 1e-5f);
     }
+}
+
+// Calls check(m) on m as it is and after each of `steps` seeded random edits (support/random_edits.h).
+template <typename Check>
+void after_random_edits(SurfaceMesh& m, std::uint64_t seed, int steps, Check&& check) {
+  RandomEditor editor(m, seed);
+  check(m);
+  for (int i = 0; i < steps; ++i) {
+    editor.step();
+    check(m);
+  }
+}
+
+// Expects an edit's predicate, its refusal, the conditions its documentation states (`contract`,
+// written in the test from the mesh's queries) and the edit itself (done on a copy of m; edit(copy)
+// says whether it was done) to agree: the predicate holds, the contract holds and the edit is done
+// exactly when the refusal is null.
+template <typename Edit>
+void expect_refusal_agrees(const SurfaceMesh& m, bool predicate, bool contract, const char* refusal,
+                           Edit&& edit, const std::string& what) {
+  EXPECT_EQ(predicate, refusal == nullptr) << what << ": " << (refusal ? refusal : "allowed");
+  EXPECT_EQ(contract, refusal == nullptr) << what << ": " << (refusal ? refusal : "allowed");
+  SurfaceMesh copy = m;
+  EXPECT_EQ(edit(copy), refusal == nullptr) << what << ": " << (refusal ? refusal : "allowed");
+  EXPECT_TRUE(copy.validate().empty()) << what;
 }
 
 }  // namespace hedge::test

@@ -1,15 +1,26 @@
 // Types of the hedge JS API (hedge.js). Element indices are numbers; -1 means "none".
 
+/** The C ABI's status codes (hedge_status), one to one. */
 export type ErrorKind =
-  'invalid-argument' | 'io' | 'topology' | 'refused' | 'out-of-memory' | 'internal' | 'disposed';
+  | 'invalid-argument'
+  | 'bad-handle'
+  | 'refused'
+  | 'io'
+  | 'topology'
+  | 'out-of-memory'
+  | 'buffer-too-small'
+  | 'internal'
+  | 'busy';
 
 export class HedgeError extends Error {
   readonly kind: ErrorKind;
+  /** A refused edit's reason (the library's refusal); null for other errors. */
+  readonly refusal: string | null;
 }
 
 export type SubdivisionScheme = 'loop' | 'midpoint' | 'catmull-clark' | 'sqrt3' | 'split-faces';
 export type SmoothMethod = 'uniform' | 'taubin' | 'cotangent' | 'implicit';
-export type Operation = 'splitEdge' | 'flip' | 'collapse' | 'splitFace';
+export type Operation = 'splitEdge' | 'flip' | 'collapse' | 'splitFace' | 'cutFace' | 'fillHole';
 export type Vec3 = [number, number, number] | Float32Array | Float64Array;
 
 export const subdivisionSchemes: readonly SubdivisionScheme[];
@@ -245,15 +256,23 @@ export class Mesh {
   oneRing(v: number): OneRing;
   pick(origin: Vec3, direction: Vec3): Pick | null;
   pickMany(rays: Float32Array, out?: Int32Array): Int32Array;
+  /** Why the last refused edit was refused; null after an edit that was done. */
+  readonly lastRefusal: string | null;
+  refusal(op: Operation, ...elements: number[]): string | null;
+  /** @deprecated use refusal(op, element). */
   whyNot(op: Operation, element: number): string | null;
   canSplitEdge(e: number): boolean;
   canFlip(e: number): boolean;
   canCollapse(h: number): boolean;
   canSplitFace(f: number): boolean;
+  canCutFace(h0: number, h1: number): boolean;
+  canFillHole(h: number): boolean;
   splitEdge(e: number, point?: Vec3): number;
   flip(e: number): number;
   collapse(h: number, point?: Vec3): number;
   splitFace(f: number, point?: Vec3): number;
+  cutFace(h0: number, h1: number): number;
+  fillHole(h: number): number[];
   garbageCollection(): void;
   subdivide(scheme?: SubdivisionScheme, steps?: number): void;
   smooth(options?: {

@@ -26,23 +26,17 @@ const point3 = (p, what) => {
   return Array.from(p, Number);
 };
 
-const KINDS = [
-  'none',
-  'invalid-argument',
-  'io',
-  'topology',
-  'refused',
-  'out-of-memory',
-  'internal',
-];
-
-/** An error raised by hedge. kind: 'invalid-argument', 'io', 'topology', 'refused',
- *  'out-of-memory', 'internal' or 'disposed'. */
+/** An error raised by hedge. kind names the C ABI's status (hedge_status), one to one:
+ *  'invalid-argument', 'bad-handle' (a disposed object, an element out of range or deleted),
+ *  'refused', 'io', 'topology', 'out-of-memory', 'buffer-too-small', 'internal' or 'busy'. A
+ *  refused edit's error also carries refusal: the library's reason, the same text as the C ABI's
+ *  hedge_last_refusal() and C#'s LastRefusal (null for other errors). */
 export class HedgeError extends Error {
-  constructor(kind, message) {
+  constructor(kind, message, refusal = null) {
     super(message);
     this.name = 'HedgeError';
     this.kind = kind;
+    this.refusal = refusal;
   }
 }
 
@@ -118,10 +112,11 @@ export class Hedge {
   _check(result) {
     const M = this.module;
     if (M.HEAP32[this._errorSlot] !== 0) {
-      const kind = KINDS[M.HEAP32[this._errorSlot + 1]] ?? 'internal';
+      const kind = M.errorKind(M.HEAP32[this._errorSlot + 1]);
       const message = M.takeErrorMessage();
+      const refusal = M.takeRefusal();
       if (result && typeof result.delete === 'function' && !result.isDeleted()) result.delete();
-      throw new HedgeError(kind, message);
+      throw new HedgeError(kind, message, refusal === '' ? null : refusal);
     }
     return result;
   }
@@ -200,7 +195,7 @@ class NativeOwner {
   }
 
   _n() {
-    if (!this._native) throw new HedgeError('disposed', `this ${this._what} was disposed`);
+    if (!this._native) throw new HedgeError('bad-handle', `this ${this._what} was disposed`);
     return this._native;
   }
 
@@ -335,50 +330,92 @@ export class Mesh extends NativeOwner {
     return out;
   }
 
-  // ---- Local operations. Each throws a HedgeError of kind 'refused', saying why, when its
-  // predicate refuses; the mesh is then unchanged. ----
+  // ---- Local operations. Each checks its elements (a HedgeError of kind 'bad-handle' for one out
+  // of range or deleted), then the library's refusal: a refused edit throws a HedgeError of kind
+  // 'refused' whose refusal says why, and leaves the mesh unchanged. lastRefusal keeps that reason
+  // until the next edit is done. ----
 
-  /** null if op ('splitEdge', 'flip', 'collapse' (element: a half-edge), 'splitFace') is allowed on
-   *  the element, else the reason in words. */
-  whyNot(op, element) {
-    const reason = this._call('whyNot', String(op), element);
+  /** Why the last refused edit on this mesh was refused (the library's reason, as HedgeError's
+   *  refusal); null after an edit that was done, or before any edit. */
+  lastRefusal = null;
+
+  /** null if edit ('splitEdge', 'flip', 'collapse', 'splitFace' (one element each), 'cutFace' (two
+   *  half-edges), 'fillHole' (a half-edge)) is allowed on the elements, else the library's refusal
+   *  in words ("the edge is on the boundary (...)", "the edge is not live", ...). */
+  refusal(edit, ...elements) {
+    const reason = this._call('refusal', String(edit), elements);
     return reason === '' ? null : reason;
   }
 
+  /** @deprecated since 0.2: use refusal(op, element), which it calls; kept for one release. */
+  whyNot(op, element) {
+    return this.refusal(op, element);
+  }
+
   canSplitEdge(e) {
-    return this.whyNot('splitEdge', e) === null;
+    return this.refusal('splitEdge', e) === null;
   }
   canFlip(e) {
-    return this.whyNot('flip', e) === null;
+    return this.refusal('flip', e) === null;
   }
   canCollapse(h) {
-    return this.whyNot('collapse', h) === null;
+    return this.refusal('collapse', h) === null;
   }
   canSplitFace(f) {
-    return this.whyNot('splitFace', f) === null;
+    return this.refusal('splitFace', f) === null;
+  }
+  canCutFace(h0, h1) {
+    return this.refusal('cutFace', h0, h1) === null;
+  }
+  canFillHole(h) {
+    return this.refusal('fillHole', h) === null;
+  }
+
+  /** Runs an edit, keeping lastRefusal. */
+  _edit(name, ...args) {
+    try {
+      const result = this._call(name, ...args);
+      this.lastRefusal = null;
+      return result;
+    } catch (e) {
+      if (e instanceof HedgeError && e.kind === 'refused') this.lastRefusal = e.refusal;
+      throw e;
+    }
   }
 
   /** Inserts a vertex on edge e at point (default: the midpoint); triangles beside it are split in
    *  two. Returns the new vertex. */
   splitEdge(e, point) {
-    return this._call('splitEdge', e, point === undefined ? undefined : point3(point, 'splitEdge'));
+    return this._edit('splitEdge', e, point === undefined ? undefined : point3(point, 'splitEdge'));
   }
 
   /** Turns edge e between its two triangles. Returns e. */
   flip(e) {
-    return this._call('flip', e);
+    return this._edit('flip', e);
   }
 
   /** Merges the origin of half-edge h into its target, which survives and moves to point if given
    *  (e.g. the midpoint). Returns the surviving vertex. */
   collapse(h, point) {
-    return this._call('collapse', h, point === undefined ? undefined : point3(point, 'collapse'));
+    return this._edit('collapse', h, point === undefined ? undefined : point3(point, 'collapse'));
   }
 
   /** Inserts a vertex into face f at point (default: its centroid), fanning the face into
    *  triangles. Returns the new vertex. */
   splitFace(f, point) {
-    return this._call('splitFace', f, point === undefined ? undefined : point3(point, 'splitFace'));
+    return this._edit('splitFace', f, point === undefined ? undefined : point3(point, 'splitFace'));
+  }
+
+  /** Cuts the face of half-edges h0 and h1 in two along a new edge from the target of h0 to the
+   *  target of h1. Returns the new half-edge (from the target of h0). */
+  cutFace(h0, h1) {
+    return this._edit('cutFace', h0, h1);
+  }
+
+  /** Fills the hole whose boundary loop holds half-edge h (a boundary half-edge) with triangles.
+   *  Returns the new faces. */
+  fillHole(h) {
+    return this._edit('fillHole', h);
   }
 
   /** Removes deleted elements, renumbering every element. */

@@ -2,13 +2,16 @@
  *
  * Conventions
  *  - Every function returns a status code (hedge_status: HEDGE_OK = 0, errors negative), except
- *    hedge_last_error() and hedge_status_string(), which cannot fail and return a string. Results
+ *    hedge_last_error(), hedge_last_refusal() and hedge_status_string(), which cannot fail and
+ *    return a string. Results
  *    are written through out parameters, which are never NULL unless documented as optional; on an
  *    error the out parameters are left unchanged unless documented otherwise.
  *  - No C++ exception ever crosses this interface. After a call that failed, hedge_last_error()
  *    gives the message on the calling thread (an I/O error names the file and the line or byte
- *    offset). Every other call that succeeds clears the message to the empty string (hedge_last_error
- *    and hedge_status_string leave it as it is).
+ *    offset). Every other call that succeeds clears the message to the empty string (the three
+ *    string functions leave it as it is). The status codes are the one list of error kinds of
+ *    every binding: the JS API's HedgeError.kind and the C# binding's HedgeStatus name them one to
+ *    one.
  *  - Objects are opaque handles: hedge_mesh* and hedge_render*. A handle is not an address: it is
  *    an id checked against a registry of live objects on every call, so NULL, a destroyed handle or
  *    a value that was never a handle yields HEDGE_ERROR_BAD_HANDLE instead of undefined behaviour.
@@ -101,6 +104,12 @@ enum {
 /** The message of the last failed call on this thread; "" after a call that succeeded. The pointer
  *  stays valid until the next hedge_* call on this thread. Never NULL. */
 HEDGE_API const char* hedge_last_error(void);
+
+/** Why the last call on this thread was refused (HEDGE_ERROR_REFUSED): the library's refusal in a
+ *  few words ("the edge is on the boundary (a flip needs a triangle on both sides)"), the same text
+ *  in every binding; hedge_last_error() says more ("flip of edge 3 refused: ...; nothing was
+ *  changed"). "" after a call that was not refused. Static storage; never NULL. */
+HEDGE_API const char* hedge_last_refusal(void);
 
 /** A short constant name for a status code ("HEDGE_OK", "HEDGE_ERROR_REFUSED", ...), or
  *  "HEDGE_ERROR_UNKNOWN" for a value that is not a status code. Never NULL; static storage. */
@@ -301,9 +310,10 @@ HEDGE_API hedge_status hedge_face_halfedges(const hedge_mesh* mesh, uint32_t fac
 /* (hedge/algorithms/: fill_hole.h, split_all_faces.h, detach_faces.h)                          */
 /* ============================================================================================ */
 /* Each edit has a predicate hedge_can_*(..., int32_t* out_ok). An edit its predicate refuses
- * returns HEDGE_ERROR_REFUSED and leaves the mesh exactly as it was. Deleted elements are left in
- * their slots (flagged) until hedge_mesh_garbage_collection(). Render objects of the mesh see
- * every edit at their next sync. Points are finite x, y, z (else HEDGE_ERROR_INVALID_ARGUMENT). */
+ * returns HEDGE_ERROR_REFUSED and leaves the mesh exactly as it was; hedge_last_refusal() then says
+ * why. Element handles are checked before the predicate (HEDGE_ERROR_BAD_HANDLE). Deleted elements are left
+ * in their slots (flagged) until hedge_mesh_garbage_collection(). Render objects of the mesh see every edit
+ * at their next sync. Points are finite x, y, z (else HEDGE_ERROR_INVALID_ARGUMENT). */
 
 /** True if the edge can be split (it is live). O(1). */
 HEDGE_API hedge_status hedge_can_split_edge(const hedge_mesh* mesh, uint32_t edge, int32_t* out_ok);

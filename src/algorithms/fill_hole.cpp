@@ -7,12 +7,16 @@
 
 namespace hedge {
 
-bool can_fill_hole(const SurfaceMesh& m, Halfedge h) {
-  if (!m.is_live(h) || !m.is_boundary(h)) return false;
+bool can_fill_hole(const SurfaceMesh& m, Halfedge h) { return fill_hole_refusal(m, h) == nullptr; }
+
+const char* fill_hole_refusal(const SurfaceMesh& m, Halfedge h) {
+  if (!m.is_live(h)) return "the half-edge is not live";
+  if (!m.is_boundary(h)) return "the half-edge is not on a boundary (it has a face)";
   std::size_t n = 0;
   for ([[maybe_unused]] Halfedge g : m.loop(h))
-    if (++n > m.halfedge_slots()) return false;  // a damaged loop, which would never end
-  return n >= 3;
+    if (++n > m.halfedge_slots()) return "its boundary loop is damaged (it never closes)";
+  if (n < 3) return "its boundary loop has fewer than 3 edges (no room for a face)";
+  return nullptr;
 }
 
 std::vector<Face> fill_hole(SurfaceMesh& m, Halfedge h) {

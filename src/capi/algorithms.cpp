@@ -22,32 +22,33 @@ using namespace hedge::capi;
 namespace {
 
 NormalWeighting to_weighting(std::int32_t w) {
-  switch (w) {
-    case HEDGE_WEIGHTING_AREA:
-      return NormalWeighting::area;
-    case HEDGE_WEIGHTING_ANGLE:
-      return NormalWeighting::angle;
-    case HEDGE_WEIGHTING_UNIFORM:
-      return NormalWeighting::uniform;
-    default:
-      fail(HEDGE_ERROR_INVALID_ARGUMENT,
-           "weighting must be HEDGE_WEIGHTING_AREA, _ANGLE or _UNIFORM, got " + std::to_string(w));
-  }
+  static constexpr binding::Constant<NormalWeighting> kWeightings[] = {
+      {HEDGE_WEIGHTING_AREA, NormalWeighting::area},
+      {HEDGE_WEIGHTING_ANGLE, NormalWeighting::angle},
+      {HEDGE_WEIGHTING_UNIFORM, NormalWeighting::uniform}};
+  return binding::from_constant(kWeightings, w, "weighting", "HEDGE_WEIGHTING_*");
 }
 
-// Copies a Vec3 property, 3 floats per slot.
-template <typename Prop>
-void copy_vec3(const Prop& prop, std::size_t slots, float* buffer, std::uint64_t capacity,
-               std::uint64_t* out_count) {
-  const std::uint64_t needed = 3 * std::uint64_t(slots);
-  *out_count = needed;
-  check_capacity(needed, buffer, capacity);
-  for (std::size_t i = 0; i < slots; ++i) {
-    const Vec3& n = prop.vector()[i];
-    buffer[3 * i] = n.x;
-    buffer[3 * i + 1] = n.y;
-    buffer[3 * i + 2] = n.z;
-  }
+// Copies a Vec3 property, 3 floats per slot (its array holds one value per slot); get(mesh) finds
+// it, `missing` says what to do when the mesh has none.
+template <typename Get>
+hedge_status copy_vec3(const hedge_mesh* mesh, Get&& get, const char* missing, float* buffer,
+                       std::uint64_t capacity, std::uint64_t* out_count) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    need(out_count, "out_count");
+    const auto prop = get(object->mesh);
+    if (!prop) fail(HEDGE_ERROR_INVALID_ARGUMENT, missing);
+    const auto& values = prop.vector();
+    const std::uint64_t needed = 3 * std::uint64_t(values.size());
+    *out_count = needed;
+    check_capacity(needed, buffer, capacity);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      buffer[3 * i] = values[i].x;
+      buffer[3 * i + 1] = values[i].y;
+      buffer[3 * i + 2] = values[i].z;
+    }
+  });
 }
 
 }  // namespace
@@ -117,32 +118,18 @@ hedge_status hedge_mesh_compute_corner_normals(hedge_mesh* mesh, double crease_d
 
 hedge_status hedge_mesh_copy_vertex_normals(const hedge_mesh* mesh, float* buffer, uint64_t capacity,
                                             uint64_t* out_count) {
-  return guard([&] {
-    auto object = find_mesh(mesh);
-    const SurfaceMesh& m = object->mesh;
-    need(out_count, "out_count");
-    const auto normals = m.get_vertex_property<Vec3>("v:normal");
-    if (!normals)
-      fail(HEDGE_ERROR_INVALID_ARGUMENT,
-           "the mesh has no vertex normals: compute them first "
-           "(hedge_mesh_compute_vertex_normals)");
-    copy_vec3(normals, m.vertex_slots(), buffer, capacity, out_count);
-  });
+  return copy_vec3(
+      mesh, [](const SurfaceMesh& m) { return m.get_vertex_property<Vec3>("v:normal"); },
+      "the mesh has no vertex normals: compute them first (hedge_mesh_compute_vertex_normals)", buffer,
+      capacity, out_count);
 }
 
 hedge_status hedge_mesh_copy_corner_normals(const hedge_mesh* mesh, float* buffer, uint64_t capacity,
                                             uint64_t* out_count) {
-  return guard([&] {
-    auto object = find_mesh(mesh);
-    const SurfaceMesh& m = object->mesh;
-    need(out_count, "out_count");
-    const auto normals = m.get_halfedge_property<Vec3>("h:normal");
-    if (!normals)
-      fail(HEDGE_ERROR_INVALID_ARGUMENT,
-           "the mesh has no corner normals: compute them first "
-           "(hedge_mesh_compute_corner_normals)");
-    copy_vec3(normals, m.halfedge_slots(), buffer, capacity, out_count);
-  });
+  return copy_vec3(
+      mesh, [](const SurfaceMesh& m) { return m.get_halfedge_property<Vec3>("h:normal"); },
+      "the mesh has no corner normals: compute them first (hedge_mesh_compute_corner_normals)", buffer,
+      capacity, out_count);
 }
 
 hedge_status hedge_mesh_hausdorff(const hedge_mesh* a, const hedge_mesh* b, uint64_t samples, uint64_t seed,

@@ -72,48 +72,27 @@ hedge_render* register_render(std::shared_ptr<RenderObject> render, const hedge_
   return reinterpret_cast<hedge_render*>(id);
 }
 
-MeshUse::MeshUse(std::shared_ptr<MeshObject> object) : object_(std::move(object)) {
-  const std::thread::id me = std::this_thread::get_id();
-  std::thread::id user{};
-  if (object_->user.compare_exchange_strong(user, me, std::memory_order_acquire)) {
-    object_->depth = 1;
-  } else if (user == me) {
-    ++object_->depth;  // a nested use on the same thread
-  } else {
-    object_.reset();
-    fail(HEDGE_ERROR_BUSY,
-         "the mesh is in a call on another thread; a mesh and its render objects take calls from one thread "
-         "at "
-         "a time");
-  }
-}
-
-MeshUse::~MeshUse() {
-  if (object_ && --object_->depth == 0) object_->user.store(std::thread::id{}, std::memory_order_release);
-}
-
-MeshUse find_mesh(const hedge_mesh* handle) {
+namespace {
+// The live object a handle names in `objects`. \throw BindingError (HEDGE_ERROR_BAD_HANDLE) if none.
+template <typename T>
+std::shared_ptr<T> lookup(const std::unordered_map<std::uintptr_t, std::shared_ptr<T>>& objects,
+                          const void* handle, const char* kind) {
   Registry& r = registry();
-  std::shared_ptr<MeshObject> found;
+  std::shared_ptr<T> found;
   {
     std::shared_lock lock(r.mutex);
-    auto it = r.meshes.find(id_of(handle));
-    if (it != r.meshes.end()) found = it->second;
+    auto it = objects.find(id_of(handle));
+    if (it != objects.end()) found = it->second;
   }
-  if (!found) bad_handle("mesh", handle);
-  return MeshUse(std::move(found));
+  if (!found) bad_handle(kind, handle);
+  return found;
 }
+}  // namespace
+
+MeshUse find_mesh(const hedge_mesh* handle) { return MeshUse(lookup(registry().meshes, handle, "mesh")); }
 
 RenderUse find_render(const hedge_render* handle) {
-  Registry& r = registry();
-  std::shared_ptr<RenderObject> found;
-  {
-    std::shared_lock lock(r.mutex);
-    auto it = r.renders.find(id_of(handle));
-    if (it != r.renders.end()) found = it->second;
-  }
-  if (!found) bad_handle("render", handle);
-  return RenderUse(std::move(found));
+  return RenderUse(lookup(registry().renders, handle, "render"));
 }
 
 std::pair<std::shared_ptr<MeshObject>, std::vector<std::shared_ptr<RenderObject>>> unregister_mesh(
@@ -160,33 +139,26 @@ std::shared_ptr<RenderObject> unregister_render(const hedge_render* handle) {
 namespace {
 thread_local std::string t_error;
 thread_local const char* t_static_error = nullptr;  // used when copying the message ran out of memory
+thread_local const char* t_refusal = "";            // static strings only
 }  // namespace
-
-void fail(hedge_status status, std::string message) { throw ApiError{status, std::move(message)}; }
 
 void clear_error() noexcept {
   t_error.clear();
   t_static_error = nullptr;
+  t_refusal = "";
 }
 
-void set_error(const char* message) noexcept {
+void set_error(const binding::Failure& failure) noexcept {
+  t_refusal = failure.refusal;
   try {
-    t_error = message;
+    t_error = failure.message;
     t_static_error = nullptr;
   } catch (...) {
     t_static_error = "out of memory (while recording an error message)";
   }
 }
 
-Vec3 need_point(float x, float y, float z) {
-  const Vec3 p{x, y, z};
-  if (!is_finite(p)) {
-    char text[96];
-    std::snprintf(text, sizeof text, "point (%g, %g, %g) is not finite", double(x), double(y), double(z));
-    fail(HEDGE_ERROR_INVALID_ARGUMENT, text);
-  }
-  return p;
-}
+Vec3 need_point(float x, float y, float z) { return binding::need_point(Vec3{x, y, z}); }
 
 bool need_bool(std::int32_t value, const char* name) {
   if (value != 0 && value != 1)
@@ -198,42 +170,6 @@ std::uint32_t to_u32(std::size_t n, const char* what) {
   if (n > 0xFFFFFFFFu)
     fail(HEDGE_ERROR_INTERNAL, std::string(what) + " is " + std::to_string(n) + ", beyond 32 bits");
   return static_cast<std::uint32_t>(n);
-}
-
-void check_range(const char* kind, std::uint32_t i, std::size_t slots) {
-  if (i >= slots) {
-    if (i == HEDGE_INVALID_INDEX) fail(HEDGE_ERROR_BAD_HANDLE, std::string(kind) + " is HEDGE_INVALID_INDEX");
-    fail(HEDGE_ERROR_BAD_HANDLE, std::string(kind) + " " + std::to_string(i) +
-                                     " is out of range (the mesh has " + std::to_string(slots) + " " + kind +
-                                     " slots)");
-  }
-}
-
-namespace {
-[[noreturn]] void deleted(const char* kind, std::uint32_t i) {
-  fail(HEDGE_ERROR_BAD_HANDLE, std::string(kind) + " " + std::to_string(i) + " is deleted");
-}
-}  // namespace
-
-Vertex live_vertex(const SurfaceMesh& m, std::uint32_t v) {
-  if (m.is_live(Vertex(v))) return Vertex(v);
-  check_range("vertex", v, m.vertex_slots());
-  deleted("vertex", v);
-}
-Halfedge live_halfedge(const SurfaceMesh& m, std::uint32_t h) {
-  if (m.is_live(Halfedge(h))) return Halfedge(h);
-  check_range("halfedge", h, m.halfedge_slots());
-  deleted("halfedge", h);
-}
-Edge live_edge(const SurfaceMesh& m, std::uint32_t e) {
-  if (m.is_live(Edge(e))) return Edge(e);
-  check_range("edge", e, m.edge_slots());
-  deleted("edge", e);
-}
-Face live_face(const SurfaceMesh& m, std::uint32_t f) {
-  if (m.is_live(Face(f))) return Face(f);
-  check_range("face", f, m.face_slots());
-  deleted("face", f);
 }
 
 void check_capacity_impl(std::uint64_t needed, const void* buffer, std::uint64_t capacity, const char* name) {
@@ -262,43 +198,6 @@ void fill_report(const BuildReport& r, hedge_build_report* out) {
   out->duplicated_vertices = to_u32(r.duplicated_vertices, "duplicated_vertices");
   out->isolated_vertices = to_u32(r.isolated_vertices, "isolated_vertices");
   out->repairs = to_u32(r.repairs(), "repairs");
-}
-
-Weld to_weld(std::int32_t weld) {
-  switch (weld) {
-    case HEDGE_WELD_NONE:
-      return Weld::none;
-    case HEDGE_WELD_EXACT:
-      return Weld::exact;
-    case HEDGE_WELD_EPSILON:
-      return Weld::epsilon;
-    default:
-      fail(HEDGE_ERROR_INVALID_ARGUMENT, "weld is " + std::to_string(weld) + ", not a HEDGE_WELD_* value");
-  }
-}
-
-TopologyPolicy to_policy(std::int32_t policy) {
-  switch (policy) {
-    case HEDGE_POLICY_STRICT:
-      return TopologyPolicy::strict;
-    case HEDGE_POLICY_REPAIR:
-      return TopologyPolicy::repair;
-    default:
-      fail(HEDGE_ERROR_INVALID_ARGUMENT,
-           "policy is " + std::to_string(policy) + ", not a HEDGE_POLICY_* value");
-  }
-}
-
-Winding to_winding(std::int32_t winding) {
-  switch (winding) {
-    case HEDGE_WINDING_CCW:
-      return Winding::ccw;
-    case HEDGE_WINDING_CW:
-      return Winding::cw;
-    default:
-      fail(HEDGE_ERROR_INVALID_ARGUMENT,
-           "winding is " + std::to_string(winding) + ", not a HEDGE_WINDING_* value");
-  }
 }
 
 BuildOptions to_build_options(const hedge_build_options& o) {
@@ -330,32 +229,9 @@ extern "C" {
 
 const char* hedge_last_error(void) { return t_static_error != nullptr ? t_static_error : t_error.c_str(); }
 
-const char* hedge_status_string(hedge_status code) {
-  switch (code) {
-    case HEDGE_OK:
-      return "HEDGE_OK";
-    case HEDGE_ERROR_INVALID_ARGUMENT:
-      return "HEDGE_ERROR_INVALID_ARGUMENT";
-    case HEDGE_ERROR_BAD_HANDLE:
-      return "HEDGE_ERROR_BAD_HANDLE";
-    case HEDGE_ERROR_REFUSED:
-      return "HEDGE_ERROR_REFUSED";
-    case HEDGE_ERROR_IO:
-      return "HEDGE_ERROR_IO";
-    case HEDGE_ERROR_TOPOLOGY:
-      return "HEDGE_ERROR_TOPOLOGY";
-    case HEDGE_ERROR_OUT_OF_MEMORY:
-      return "HEDGE_ERROR_OUT_OF_MEMORY";
-    case HEDGE_ERROR_BUFFER_TOO_SMALL:
-      return "HEDGE_ERROR_BUFFER_TOO_SMALL";
-    case HEDGE_ERROR_INTERNAL:
-      return "HEDGE_ERROR_INTERNAL";
-    case HEDGE_ERROR_BUSY:
-      return "HEDGE_ERROR_BUSY";
-    default:
-      return "HEDGE_ERROR_UNKNOWN";
-  }
-}
+const char* hedge_last_refusal(void) { return t_refusal; }
+
+const char* hedge_status_string(hedge_status code) { return binding::status_name(code); }
 
 hedge_status hedge_version(int32_t* out_major, int32_t* out_minor, int32_t* out_patch) {
   return guard([&] {

@@ -1,5 +1,6 @@
 // Shared machinery of the C ABI: the registry of live objects, the error channel and the checks
-// every entry point makes before touching the library.
+// every entry point makes before touching the library. What every binding shares (handle checks,
+// error kinds, refusals, the picking tree, the busy check) is the binding core's (src/binding/).
 #pragma once
 
 #include <algorithm>
@@ -16,6 +17,11 @@
 #include <utility>
 #include <vector>
 
+#include "binding/edits.h"
+#include "binding/errors.h"
+#include "binding/handles.h"
+#include "binding/mesh_state.h"
+#include "binding/names.h"
 #include "hedge/algorithms/locate.h"
 #include "hedge/c_api.h"
 #include "hedge/core/build.h"
@@ -26,26 +32,23 @@
 
 namespace hedge::capi {
 
-//! What a hedge_mesh handle names.
-struct MeshObject {
-  SurfaceMesh mesh;
-  //! The picking tree, made by the first picking call and brought up to date by each later one
-  //! (src/capi/picking.cpp). Declared after `mesh`: destroyed first, as it follows mesh's change log.
-  std::unique_ptr<FaceBvh> bvh;
+using binding::check_range;
+using binding::fail;
+using binding::live_edge;
+using binding::live_element;
+using binding::live_face;
+using binding::live_halfedge;
+using binding::live_vertex;
+using binding::picking_tree;
+
+//! What a hedge_mesh handle names: the mesh with its picking tree and busy check (MeshState), and
+//! what the C ABI keeps beside them.
+struct MeshObject : binding::MeshState {
   //! Problems found by the last hedge_mesh_validate().
   std::vector<std::string> problems;
   //! Ids of the render objects made for this mesh (guarded by the registry's lock).
   std::vector<std::uintptr_t> renders;
-  //! The thread in a call on this mesh or one of its render objects (none: the default id), and
-  //! how many nested uses it holds (touched by that thread only). See MeshUse.
-  std::atomic<std::thread::id> user{};
-  int depth = 0;
 };
-
-//! The mesh's picking tree (`object.bvh`): built on first use, otherwise brought up to date with
-//! the edits since its last use through the mesh's change log (FaceBvh::update()). Every picking
-//! call and hedge_mesh_fracture go through it (src/capi/picking.cpp), so a mesh has one tree.
-FaceBvh& picking_tree(MeshObject& object);
 
 //! What a hedge_render handle names. It shares ownership of its mesh object, so a call that is
 //! running on it keeps the mesh alive even if another thread destroys the mesh meanwhile.
@@ -54,31 +57,9 @@ struct RenderObject {
   std::unique_ptr<RenderSync> sync;
 };
 
-//! A failure detected by the C ABI layer itself, with the status it maps to.
-struct ApiError {
-  hedge_status status;
-  std::string message;
-};
-
-[[noreturn]] void fail(hedge_status status, std::string message);
-
 //! A call's use of a mesh object: while it lives, the mesh belongs to the calling thread. Taking a
-//! mesh that another thread is using fails at once (HEDGE_ERROR_BUSY) rather than racing it: one
-//! compare-and-swap per call. The same thread may take it again (nested).
-class MeshUse {
- public:
-  //! \throw ApiError (HEDGE_ERROR_BUSY) if another thread uses the mesh.
-  explicit MeshUse(std::shared_ptr<MeshObject> object);
-  MeshUse(MeshUse&& other) noexcept = default;
-  MeshUse& operator=(MeshUse&&) = delete;
-  ~MeshUse();
-  MeshObject* operator->() const { return object_.get(); }
-  MeshObject& operator*() const { return *object_; }
-  const std::shared_ptr<MeshObject>& shared() const { return object_; }
-
- private:
-  std::shared_ptr<MeshObject> object_;
-};
+//! mesh that another thread is using fails at once (HEDGE_ERROR_BUSY) rather than racing it.
+using MeshUse = binding::MeshUse<MeshObject>;
 
 //! A call's use of a render object, and so of its mesh.
 class RenderUse {
@@ -97,59 +78,37 @@ class RenderUse {
 hedge_mesh* register_mesh(std::shared_ptr<MeshObject> mesh);
 hedge_render* register_render(std::shared_ptr<RenderObject> render, const hedge_mesh* mesh);
 //! The object a handle names, in use by the calling thread until the result is destroyed.
-//! \throw ApiError: HEDGE_ERROR_BAD_HANDLE if it names none, HEDGE_ERROR_BUSY if another thread
+//! \throw BindingError: HEDGE_ERROR_BAD_HANDLE if it names none, HEDGE_ERROR_BUSY if another thread
 //!   is using the mesh.
 MeshUse find_mesh(const hedge_mesh* handle);
 RenderUse find_render(const hedge_render* handle);
 //! Removes a mesh and its render objects from the registry; returns them (destroyed by the caller,
-//! outside the lock). \throw ApiError if the handle names no mesh.
+//! outside the lock). \throw BindingError if the handle names no mesh.
 std::pair<std::shared_ptr<MeshObject>, std::vector<std::shared_ptr<RenderObject>>> unregister_mesh(
     const hedge_mesh* handle);
 std::shared_ptr<RenderObject> unregister_render(const hedge_render* handle);
 
 // ---- Error channel. ----
 void clear_error() noexcept;
-void set_error(const char* message) noexcept;
+//! Records a failure for hedge_last_error() and hedge_last_refusal().
+void set_error(const binding::Failure& failure) noexcept;
 
-//! Runs `body` (returning void) and converts every exception into a status code and a message.
+//! Runs `body` (returning void) and converts every exception into a status code and a message
+//! (binding/errors.h maps them).
 template <typename Body>
 hedge_status guard(Body&& body) noexcept {
   try {
     clear_error();
     body();
     return HEDGE_OK;
-  } catch (const ApiError& e) {
-    set_error(e.message.c_str());
-    return e.status;
-  } catch (const IoError& e) {
-    set_error(e.what());
-    return HEDGE_ERROR_IO;
-  } catch (const TopologyError& e) {
-    set_error(e.what());
-    return HEDGE_ERROR_TOPOLOGY;
-  } catch (const InvalidInputError& e) {
-    set_error(e.what());
-    return HEDGE_ERROR_INVALID_ARGUMENT;
-  } catch (const Error& e) {
-    // Every hedge::Error comes from bad input or an illegal request (hedge/error.h), never a bug.
-    set_error(e.what());
-    return HEDGE_ERROR_INVALID_ARGUMENT;
-  } catch (const std::bad_alloc&) {
-    set_error("out of memory");
-    return HEDGE_ERROR_OUT_OF_MEMORY;
-  } catch (const std::length_error& e) {
-    set_error(e.what());
-    return HEDGE_ERROR_OUT_OF_MEMORY;
-  } catch (const std::exception& e) {
-    set_error(e.what());
-    return HEDGE_ERROR_INTERNAL;
   } catch (...) {
-    set_error("unknown internal error");
-    return HEDGE_ERROR_INTERNAL;
+    const binding::Failure failure = binding::current_failure();
+    set_error(failure);
+    return failure.status;
   }
 }
 
-// ---- Argument checks; each throws ApiError. ----
+// ---- Argument checks; each throws a BindingError. ----
 template <typename T>
 T& need(T* p, const char* name) {
   if (p == nullptr) fail(HEDGE_ERROR_INVALID_ARGUMENT, std::string(name) + " is NULL");
@@ -178,32 +137,10 @@ struct MapBuffers {
   std::uint32_t* face;
   std::uint32_t face_capacity;
 };
-//! \throw ApiError (HEDGE_ERROR_BUFFER_TOO_SMALL) unless every given buffer holds a map of m's slots.
+//! \throw BindingError (HEDGE_ERROR_BUFFER_TOO_SMALL) unless every given buffer holds a map of m's slots.
 void check_map_buffers(const SurfaceMesh& m, const MapBuffers& b);
 //! Copies the maps into the given buffers.
 void write_maps(const GarbageMaps& maps, const MapBuffers& b);
-
-//! \throw ApiError (HEDGE_ERROR_BAD_HANDLE) unless i < slots; `kind` names the element in the message.
-void check_range(const char* kind, std::uint32_t i, std::size_t slots);
-
-//! A live element of the mesh. \throw ApiError (HEDGE_ERROR_BAD_HANDLE) if out of range or deleted.
-Vertex live_vertex(const SurfaceMesh& m, std::uint32_t v);
-Halfedge live_halfedge(const SurfaceMesh& m, std::uint32_t h);
-Edge live_edge(const SurfaceMesh& m, std::uint32_t e);
-Face live_face(const SurfaceMesh& m, std::uint32_t f);
-
-//! A live element of type H (see live_vertex and the others).
-template <typename H>
-H live_element(const SurfaceMesh& m, std::uint32_t index) {
-  if constexpr (std::is_same_v<H, Vertex>)
-    return live_vertex(m, index);
-  else if constexpr (std::is_same_v<H, Halfedge>)
-    return live_halfedge(m, index);
-  else if constexpr (std::is_same_v<H, Edge>)
-    return live_edge(m, index);
-  else
-    return live_face(m, index);
-}
 
 //! One query about one live element: checks the handles, then writes fn(mesh, element) to *out.
 template <typename H, typename Out, typename Fn>
@@ -241,8 +178,8 @@ void copy_string(const std::string& text, char* buffer, std::uint32_t capacity, 
 //! Fills a C build report from the library's.
 void fill_report(const BuildReport& report, hedge_build_report* out);
 BuildOptions to_build_options(const hedge_build_options& options);
-Weld to_weld(std::int32_t weld);
-TopologyPolicy to_policy(std::int32_t policy);
-Winding to_winding(std::int32_t winding);
+using binding::to_policy;
+using binding::to_weld;
+using binding::to_winding;
 
 }  // namespace hedge::capi

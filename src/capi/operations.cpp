@@ -13,6 +13,16 @@
 using namespace hedge;
 using namespace hedge::capi;
 
+namespace {
+// A predicate's entry point: checks the handles, then writes can(mesh, element) to *out_ok as 0 or 1.
+template <typename H>
+hedge_status predicate(const hedge_mesh* mesh, std::uint32_t index, std::int32_t* out_ok,
+                       bool (*can)(const SurfaceMesh&, H)) {
+  return element_query<H>(mesh, index, out_ok, "out_ok",
+                          [can](const SurfaceMesh& m, H x) { return can(m, x) ? 1 : 0; });
+}
+}  // namespace
+
 void hedge::capi::check_map_buffers(const SurfaceMesh& m, const MapBuffers& b) {
   if (b.vertex != nullptr) check_capacity(m.vertex_slots(), b.vertex, b.vertex_capacity, "vertex_map");
   if (b.halfedge != nullptr)
@@ -31,85 +41,51 @@ void hedge::capi::write_maps(const GarbageMaps& maps, const MapBuffers& b) {
   put(maps.faces, b.face);
 }
 
-namespace {
-
-[[noreturn]] void refused(const std::string& what, const char* why = nullptr) {
-  fail(HEDGE_ERROR_REFUSED,
-       what + " refused: " + (why ? why : "the operation would break the mesh") + "; nothing was changed");
-}
-
-std::string name(const char* kind, std::uint32_t i) { return std::string(kind) + " " + std::to_string(i); }
-
-}  // namespace
-
 extern "C" {
 
 hedge_status hedge_can_split_edge(const hedge_mesh* mesh, uint32_t edge, int32_t* out_ok) {
-  return element_query<Edge>(mesh, edge, out_ok, "out_ok",
-                             [](const SurfaceMesh& m, Edge x) { return can_split_edge(m, x) ? 1 : 0; });
+  return predicate<Edge>(mesh, edge, out_ok, can_split_edge);
 }
 
 hedge_status hedge_split_edge(hedge_mesh* mesh, uint32_t edge, float x, float y, float z,
                               uint32_t* out_vertex) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    const Edge e = live_edge(m, edge);
-    const Vec3 p = need_point(x, y, z);
     need(out_vertex, "out_vertex");
-    const Vertex v = split_edge(m, e, p);
-    if (!v.is_valid()) refused("split_edge of " + name("edge", edge));
-    *out_vertex = v.idx();
+    *out_vertex = binding::split_edge(object->mesh, edge, Vec3{x, y, z}).idx();
   });
 }
 
 hedge_status hedge_can_collapse(const hedge_mesh* mesh, uint32_t halfedge, int32_t* out_ok) {
-  return element_query<Halfedge>(mesh, halfedge, out_ok, "out_ok",
-                                 [](const SurfaceMesh& m, Halfedge x) { return can_collapse(m, x) ? 1 : 0; });
+  return predicate<Halfedge>(mesh, halfedge, out_ok, can_collapse);
 }
 
 hedge_status hedge_collapse(hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_vertex) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    const Halfedge h = live_halfedge(m, halfedge);
     need(out_vertex, "out_vertex");
-    const Vertex v = collapse(m, h);
-    if (!v.is_valid()) refused("collapse of " + name("halfedge", halfedge), collapse_refusal(m, h));
-    *out_vertex = v.idx();
+    *out_vertex = binding::collapse(object->mesh, halfedge).idx();
   });
 }
 
 hedge_status hedge_can_flip(const hedge_mesh* mesh, uint32_t edge, int32_t* out_ok) {
-  return element_query<Edge>(mesh, edge, out_ok, "out_ok",
-                             [](const SurfaceMesh& m, Edge x) { return can_flip(m, x) ? 1 : 0; });
+  return predicate<Edge>(mesh, edge, out_ok, can_flip);
 }
 
 hedge_status hedge_flip(hedge_mesh* mesh, uint32_t edge) {
-  return guard([&] {
-    auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    const Edge e = live_edge(m, edge);
-    if (!flip(m, e).is_valid()) refused("flip of " + name("edge", edge));
-  });
+  return guard([&] { binding::flip(find_mesh(mesh)->mesh, edge); });
 }
 
 hedge_status hedge_can_split_face(const hedge_mesh* mesh, uint32_t face, int32_t* out_ok) {
-  return element_query<Face>(mesh, face, out_ok, "out_ok",
-                             [](const SurfaceMesh& m, Face x) { return can_split_face(m, x) ? 1 : 0; });
+  return predicate<Face>(mesh, face, out_ok, can_split_face);
 }
 
 hedge_status hedge_split_face(hedge_mesh* mesh, uint32_t face, float x, float y, float z,
                               uint32_t* out_vertex) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    const Face f = live_face(m, face);
-    const Vec3 p = need_point(x, y, z);
     need(out_vertex, "out_vertex");
-    const Vertex v = split_face(m, f, p);
-    if (!v.is_valid()) refused("split_face of " + name("face", face));
-    *out_vertex = v.idx();
+    *out_vertex = binding::split_face(object->mesh, face, Vec3{x, y, z}).idx();
   });
 }
 
@@ -127,15 +103,8 @@ hedge_status hedge_cut_face(hedge_mesh* mesh, uint32_t halfedge0, uint32_t halfe
                             uint32_t* out_halfedge) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    const Halfedge h0 = live_halfedge(m, halfedge0);
-    const Halfedge h1 = live_halfedge(m, halfedge1);
     need(out_halfedge, "out_halfedge");
-    const std::string what =
-        "cut_face of " + name("halfedge", halfedge0) + " and " + std::to_string(halfedge1);
-    const Halfedge h = cut_face(m, h0, h1);
-    if (!h.is_valid()) refused(what);
-    *out_halfedge = h.idx();
+    *out_halfedge = binding::cut_face(object->mesh, halfedge0, halfedge1).idx();
   });
 }
 
@@ -162,9 +131,8 @@ hedge_status hedge_can_add_face(const hedge_mesh* mesh, const uint32_t* vertices
   return guard([&] {
     auto object = find_mesh(mesh);
     need_array(vertices, count, "vertices");
-    std::vector<Vertex> corners;
-    corners.reserve(count);
-    for (std::uint32_t i = 0; i < count; ++i) corners.push_back(live_vertex(object->mesh, vertices[i]));
+    const std::vector<Vertex> corners =
+        binding::live_vertices(object->mesh, std::span<const std::uint32_t>(vertices, count));
     need(out_ok, "out_ok") = can_add_face(object->mesh, corners) ? 1 : 0;
   });
 }
@@ -172,53 +140,32 @@ hedge_status hedge_can_add_face(const hedge_mesh* mesh, const uint32_t* vertices
 hedge_status hedge_add_face(hedge_mesh* mesh, const uint32_t* vertices, uint32_t count, uint32_t* out_face) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
     need_array(vertices, count, "vertices");
-    std::vector<Vertex> corners;
-    corners.reserve(count);
-    for (std::uint32_t i = 0; i < count; ++i) corners.push_back(live_vertex(m, vertices[i]));
+    const std::vector<Vertex> corners =
+        binding::live_vertices(object->mesh, std::span<const std::uint32_t>(vertices, count));
     need(out_face, "out_face");
-    std::string what = "add_face of";
-    for (Vertex v : corners) what.append(" ").append(std::to_string(v.idx()));
-    const Face f = add_face(m, corners);
-    if (!f.is_valid()) refused(what);
-    *out_face = f.idx();
+    *out_face = binding::add_face(object->mesh, corners).idx();
   });
 }
 
 hedge_status hedge_can_remove_face(const hedge_mesh* mesh, uint32_t face, int32_t* out_ok) {
-  return element_query<Face>(mesh, face, out_ok, "out_ok",
-                             [](const SurfaceMesh& m, Face x) { return can_remove_face(m, x) ? 1 : 0; });
+  return predicate<Face>(mesh, face, out_ok, can_remove_face);
 }
 
 hedge_status hedge_remove_face(hedge_mesh* mesh, uint32_t face) {
-  return guard([&] {
-    auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    const Face f = live_face(m, face);
-    if (!remove_face(m, f)) refused("remove_face of " + name("face", face));
-  });
+  return guard([&] { binding::remove_face(find_mesh(mesh)->mesh, face); });
 }
 
 hedge_status hedge_can_remove_vertex(const hedge_mesh* mesh, uint32_t vertex, int32_t* out_ok) {
-  return element_query<Vertex>(mesh, vertex, out_ok, "out_ok", [](const SurfaceMesh& m, Vertex x) {
-    return can_remove_vertex(m, x) ? 1 : 0;
-  });
+  return predicate<Vertex>(mesh, vertex, out_ok, can_remove_vertex);
 }
 
 hedge_status hedge_remove_vertex(hedge_mesh* mesh, uint32_t vertex) {
-  return guard([&] {
-    auto object = find_mesh(mesh);
-    SurfaceMesh& m = object->mesh;
-    const Vertex v = live_vertex(m, vertex);
-    if (!remove_vertex(m, v)) refused("remove_vertex of " + name("vertex", vertex));
-  });
+  return guard([&] { binding::remove_vertex(find_mesh(mesh)->mesh, vertex); });
 }
 
 hedge_status hedge_can_fill_hole(const hedge_mesh* mesh, uint32_t halfedge, int32_t* out_ok) {
-  return element_query<Halfedge>(mesh, halfedge, out_ok, "out_ok", [](const SurfaceMesh& m, Halfedge x) {
-    return can_fill_hole(m, x) ? 1 : 0;
-  });
+  return predicate<Halfedge>(mesh, halfedge, out_ok, can_fill_hole);
 }
 
 hedge_status hedge_fill_hole(hedge_mesh* mesh, uint32_t halfedge, uint32_t* buffer, uint32_t capacity,
@@ -226,12 +173,10 @@ hedge_status hedge_fill_hole(hedge_mesh* mesh, uint32_t halfedge, uint32_t* buff
   return guard([&] {
     auto object = find_mesh(mesh);
     SurfaceMesh& m = object->mesh;
-    const Halfedge h = live_halfedge(m, halfedge);
     need(out_count, "out_count");
-    // The predicate comes first: the buffer check below walks the loop, which the predicate has
-    // found sound, and a refusal takes precedence over a small buffer.
-    if (!can_fill_hole(m, h))
-      refused("fill_hole of " + name("halfedge", halfedge) + " (not on a boundary loop of 3 edges or more)");
+    // The refusal comes first: the buffer check below walks the loop, which the refusal has found
+    // sound, and a refusal takes precedence over a small buffer.
+    const Halfedge h = binding::require_fill_hole(m, halfedge);
     if (buffer != nullptr) {
       std::size_t length = 0;
       for ([[maybe_unused]] Halfedge g : m.loop(h)) ++length;

@@ -1,6 +1,6 @@
-// The C ABI: picking (hedge/algorithms/locate.h) through a FaceBvh the mesh handle owns, built by
-// the first query and updated from the mesh's change log by each later one; hedge_mesh_fracture
-// (algorithms.cpp) locates its impacts through the same tree.
+// The C ABI: picking (hedge/algorithms/locate.h) through the mesh's picking tree, built by the first
+// query and updated from the mesh's change log by each later one (binding::picking_tree);
+// hedge_mesh_fracture (algorithms.cpp) locates its impacts through the same tree.
 #include <cstdio>
 #include <limits>
 
@@ -8,14 +8,6 @@
 
 using namespace hedge;
 using namespace hedge::capi;
-
-FaceBvh& hedge::capi::picking_tree(MeshObject& object) {
-  if (!object.bvh)
-    object.bvh = std::make_unique<FaceBvh>(object.mesh);
-  else
-    object.bvh->update();
-  return *object.bvh;
-}
 
 namespace {
 

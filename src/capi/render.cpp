@@ -14,23 +14,12 @@ hedge_render_options default_render_options() {
 
 RenderOptions to_render_options(const hedge_render_options& o) {
   RenderOptions r;
-  switch (o.normals) {
-    case HEDGE_NORMALS_NONE:
-      r.normals = NormalSource::none;
-      break;
-    case HEDGE_NORMALS_ATTRIBUTE:
-      r.normals = NormalSource::attribute;
-      break;
-    case HEDGE_NORMALS_COMPUTED:
-      r.normals = NormalSource::computed;
-      break;
-    case HEDGE_NORMALS_AUTOMATIC:
-      r.normals = NormalSource::automatic;
-      break;
-    default:
-      fail(HEDGE_ERROR_INVALID_ARGUMENT,
-           "normals is " + std::to_string(o.normals) + ", not a HEDGE_NORMALS_* value");
-  }
+  static constexpr binding::Constant<NormalSource> kNormals[] = {
+      {HEDGE_NORMALS_NONE, NormalSource::none},
+      {HEDGE_NORMALS_ATTRIBUTE, NormalSource::attribute},
+      {HEDGE_NORMALS_COMPUTED, NormalSource::computed},
+      {HEDGE_NORMALS_AUTOMATIC, NormalSource::automatic}};
+  r.normals = binding::from_constant(kNormals, o.normals, "normals", "HEDGE_NORMALS_*");
   r.texcoords = need_bool(o.texcoords, "texcoords");
   r.colors = need_bool(o.colors, "colors");
   r.interleaved = need_bool(o.interleaved, "interleaved");

@@ -234,7 +234,11 @@ bool has_properties(const Mesh& m) {
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
-bool can_split_edge(const SurfaceMesh& m, Edge e) { return m.is_live(e); }
+bool can_split_edge(const SurfaceMesh& m, Edge e) { return split_refusal(m, e) == nullptr; }
+
+const char* split_refusal(const SurfaceMesh& m, Edge e) {
+  return m.is_live(e) ? nullptr : "the edge is not live";
+}
 
 // Both cases are out of line: split_edge itself is the test and a tail call, and neither case's
 // register use weighs on the other.
@@ -489,7 +493,7 @@ namespace {
 // False if from_vertex(out) is an interior vertex with at most 3 edges (a flip would leave it with
 // 2). Rotates from `out`, a half-edge at hand, rather than from the vertex's stored half-edge (one
 // dependent load less), and looks at faces only when there are 3 edges or fewer. O(1).
-bool keeps_enough_edges(const Mesh& m, Halfedge out) {
+[[gnu::always_inline]] inline bool keeps_enough_edges(const Mesh& m, Halfedge out) {
   const Halfedge x1 = m.rotate_cw(out), x2 = m.rotate_cw(x1), x3 = m.rotate_cw(x2);
   if (x1 != out && x2 != out && x3 != out) return true;  // more than 3 edges
   // 3 edges or fewer, all among out, x1, x2: fine if one is a boundary half-edge.
@@ -506,27 +510,41 @@ bool joined(const Mesh& m, Halfedge out, Vertex w) {
   return false;
 }
 
-// can_flip's tests once the two triangles are known: h -> h1 -> h2 and t -> t1 -> t2.
-bool flip_allowed(const Mesh& m, Halfedge h, Halfedge t, Halfedge h1, Halfedge h2, Halfedge t1) {
+// flip_refusal's tests once the two triangles are known: h -> h1 -> h2 and t -> t1 -> t2.
+[[gnu::always_inline]] inline const char* flip_check(const Mesh& m, Halfedge h, Halfedge t, Halfedge h1,
+                                                     Halfedge h2, Halfedge t1) {
   const Vertex c = m.to_vertex(h1), d = m.to_vertex(t1);
   // h2 leaves c, h leaves a and t leaves b: the walks start there. The two short fixed walks come
   // first: the loop about c ends on a mispredicted branch, which would restart them.
-  return c != d && keeps_enough_edges(m, h) && keeps_enough_edges(m, t) && !joined(m, h2, d);
+  if (c == d) return "the two triangles on the edge share their tip";
+  if (!keeps_enough_edges(m, h) || !keeps_enough_edges(m, t))
+    return "an end is an interior vertex of valence 3 (the flip would leave it with 2)";
+  if (joined(m, h2, d)) return "the tips of its triangles are already joined by an edge";
+  return nullptr;
+}
+
+// flip_refusal(), inlined into can_flip() too: there each reason folds into "refused", so the hot
+// predicate costs what a yes-or-no test costs.
+[[gnu::always_inline]] inline const char* flip_refusal_of(const Mesh& m, Edge e) {
+  if (!m.is_live(e)) return "the edge is not live";
+  if (m.is_boundary(e)) return "the edge is on the boundary (a flip needs a triangle on both sides)";
+  const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
+  const Halfedge h1 = m.next(h), h2 = m.next(h1), t1 = m.next(t), t2 = m.next(t1);
+  if (m.next(h2) != h || m.next(t2) != t) return "a face on the edge is not a triangle";
+  return flip_check(m, h, t, h1, h2, t1);
 }
 }  // namespace
 
-bool can_flip(const SurfaceMesh& m, Edge e) {
-  if (!m.is_live(e) || m.is_boundary(e)) return false;
-  const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
-  const Halfedge h1 = m.next(h), h2 = m.next(h1), t1 = m.next(t), t2 = m.next(t1);
-  return m.next(h2) == h && m.next(t2) == t && flip_allowed(m, h, t, h1, h2, t1);
-}
+bool can_flip(const SurfaceMesh& m, Edge e) { return flip_refusal_of(m, e) == nullptr; }
 
+const char* flip_refusal(const SurfaceMesh& m, Edge e) { return flip_refusal_of(m, e); }
+
+// flip_refusal()'s tests again, inline: the edit needs the half-edges they find.
 Edge flip(SurfaceMesh& m, Edge e) {
   if (!m.is_live(e) || m.is_boundary(e)) return {};
   const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
   const Halfedge h1 = m.next(h), h2 = m.next(h1), t1 = m.next(t), t2 = m.next(t1);
-  if (m.next(h2) != h || m.next(t2) != t || !flip_allowed(m, h, t, h1, h2, t1)) return {};
+  if (m.next(h2) != h || m.next(t2) != t || flip_check(m, h, t, h1, h2, t1) != nullptr) return {};
   const Vertex a = m.from_vertex(h), b = m.to_vertex(h);
   const Vertex c = m.to_vertex(h1), d = m.to_vertex(t1);
   const Face f1 = m.face(h), f2 = m.face(t);

@@ -134,7 +134,11 @@ std::array<float, 3> barycentric(const Vec3& a, const Vec3& b, const Vec3& c, co
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
-bool can_split_face(const SurfaceMesh& m, Face f) { return m.is_live(f); }
+bool can_split_face(const SurfaceMesh& m, Face f) { return split_face_refusal(m, f) == nullptr; }
+
+const char* split_face_refusal(const SurfaceMesh& m, Face f) {
+  return m.is_live(f) ? nullptr : "the face is not live";
+}
 
 Vertex split_face(SurfaceMesh& m, Face f, const Vec3& point) {
   if (!can_split_face(m, f) || !is_finite(point)) return {};
@@ -185,11 +189,20 @@ Vertex split_face(SurfaceMesh& m, Face f, const Vec3& point) {
 }
 
 bool can_cut_face(const SurfaceMesh& m, Halfedge h0, Halfedge h1) {
-  if (!m.is_live(h0) || !m.is_live(h1) || h0 == h1) return false;
+  return cut_face_refusal(m, h0, h1) == nullptr;
+}
+
+const char* cut_face_refusal(const SurfaceMesh& m, Halfedge h0, Halfedge h1) {
+  if (!m.is_live(h0) || !m.is_live(h1)) return "a half-edge is not live";
+  if (h0 == h1) return "the two half-edges are the same";
   const Face f = m.face(h0);
-  if (!f.is_valid() || m.face(h1) != f) return false;
-  if (m.next(h0) == h1 || m.next(h1) == h0) return false;
-  return !m.find_halfedge(m.to_vertex(h0), m.to_vertex(h1)).is_valid();
+  if (!f.is_valid()) return "the half-edges are on a boundary, not in a face";
+  if (m.face(h1) != f) return "the half-edges are in different faces";
+  if (m.next(h0) == h1 || m.next(h1) == h0)
+    return "their targets are neighbours in the face (the cut would double an edge)";
+  if (m.find_halfedge(m.to_vertex(h0), m.to_vertex(h1)).is_valid())
+    return "an edge already joins their targets";
+  return nullptr;
 }
 
 Halfedge cut_face(SurfaceMesh& m, Halfedge h0, Halfedge h1) {
@@ -234,39 +247,45 @@ struct AddPlan {
   std::vector<Halfedge> existing;  // existing[i]: v_i -> v_{i+1}, or invalid
 };
 
-bool plan_add_face(const Mesh& m, std::span<const Vertex> vs, AddPlan& plan) {
+// add_face_refusal(), planning the face's existing edges into `plan` when it is allowed.
+const char* plan_add_face(const Mesh& m, std::span<const Vertex> vs, AddPlan& plan) {
   const std::size_t n = vs.size();
-  if (n < 3) return false;
+  if (n < 3) return "a face needs at least 3 corners";
   for (std::size_t i = 0; i < n; ++i) {
-    if (!m.is_live(vs[i])) return false;
+    if (!m.is_live(vs[i])) return "a corner is not a live vertex";
     for (std::size_t j = i + 1; j < n; ++j)
-      if (vs[i] == vs[j]) return false;
+      if (vs[i] == vs[j]) return "a corner is repeated";
   }
   plan.existing.assign(n, Halfedge());
   for (std::size_t i = 0; i < n; ++i) {
     const Halfedge h = m.find_halfedge(vs[i], vs[(i + 1) % n]);
-    if (h.is_valid() && !m.is_boundary(h)) return false;  // that side already has a face
+    if (h.is_valid() && !m.is_boundary(h)) return "an edge of the face already has a face on that side";
     plan.existing[i] = h;
   }
   for (std::size_t i = 0; i < n; ++i) {
     const Vertex v = vs[i];
     if (m.is_isolated(v)) continue;
-    if (!m.is_boundary(v)) return false;  // a closed fan has no room
+    if (!m.is_boundary(v)) return "a corner is an interior vertex (its fan of faces is closed)";
     const Halfedge in = plan.existing[(i + n - 1) % n], out = plan.existing[i];
-    if (!in.is_valid() && !out.is_valid()) return false;  // would touch v at a second gap
+    if (!in.is_valid() && !out.is_valid())
+      return "the face would meet a corner's faces at the vertex only (a second gap in its fan)";
   }
-  return true;
+  return nullptr;
 }
 }  // namespace
 
 bool can_add_face(const SurfaceMesh& m, std::span<const Vertex> vs) {
+  return add_face_refusal(m, vs) == nullptr;
+}
+
+const char* add_face_refusal(const SurfaceMesh& m, std::span<const Vertex> vertices) {
   AddPlan plan;
-  return plan_add_face(m, vs, plan);
+  return plan_add_face(m, vertices, plan);
 }
 
 Face add_face(SurfaceMesh& m, std::span<const Vertex> vs) {
   AddPlan plan;
-  if (!plan_add_face(m, vs, plan)) return {};
+  if (plan_add_face(m, vs, plan) != nullptr) return {};
   const std::size_t n = vs.size();
   // The boundary half-edges into and out of each vertex's gap, read before anything changes (a
   // vertex has one gap, so an existing boundary edge of the new face at v is one of these).
@@ -317,11 +336,14 @@ Face add_face(SurfaceMesh& m, std::span<const Vertex> vs) {
 }
 
 // ---------------------------------------------------------------------------------------------
-bool can_remove_face(const SurfaceMesh& m, Face f) {
-  if (!m.is_live(f)) return false;
+bool can_remove_face(const SurfaceMesh& m, Face f) { return remove_face_refusal(m, f) == nullptr; }
+
+const char* remove_face_refusal(const SurfaceMesh& m, Face f) {
+  if (!m.is_live(f)) return "the face is not live";
   for (Vertex v : m.vertices(f))
-    if (gaps_after(m, v, [&](Face g) { return g == f; }) > 1) return false;
-  return true;
+    if (gaps_after(m, v, [&](Face g) { return g == f; }) > 1)
+      return "a corner would be left with two gaps in its fan of faces (pinched)";
+  return nullptr;
 }
 
 bool remove_face(SurfaceMesh& m, Face f) {
@@ -340,15 +362,18 @@ std::vector<Face> faces_of(const Mesh& m, Vertex v) {
 }
 }  // namespace
 
-bool can_remove_vertex(const SurfaceMesh& m, Vertex v) {
-  if (!m.is_live(v)) return false;
+bool can_remove_vertex(const SurfaceMesh& m, Vertex v) { return remove_vertex_refusal(m, v) == nullptr; }
+
+const char* remove_vertex_refusal(const SurfaceMesh& m, Vertex v) {
+  if (!m.is_live(v)) return "the vertex is not live";
   const std::vector<Face> fs = faces_of(m, v);
   auto removed = [&](Face g) { return std::binary_search(fs.begin(), fs.end(), g); };
   // Every corner of the removed faces is affected, not only v's neighbours (polygons).
   for (Face f : fs)
     for (Vertex w : m.vertices(f))
-      if (w != v && gaps_after(m, w, removed) > 1) return false;
-  return true;
+      if (w != v && gaps_after(m, w, removed) > 1)
+        return "a corner of its faces would be left with two gaps in its fan of faces (pinched)";
+  return nullptr;
 }
 
 bool remove_vertex(SurfaceMesh& m, Vertex v) {

@@ -128,5 +128,43 @@ TEST(CanFillHole, AcceptsAHoleAndFillHoleFollowsItEverywhere) {
   EXPECT_GT(refused, 0u);
   EXPECT_TRUE(m.validate().empty());
 }
+
+// can_fill_hole as its comment states it: a live boundary half-edge on a loop of 3 edges or more.
+bool fill_hole_contract(const SurfaceMesh& m, Halfedge h) {
+  if (!m.is_live(h) || !m.is_boundary(h)) return false;
+  std::size_t n = 0;
+  for (Halfedge g = h; n == 0 || g != h; g = m.next(g)) ++n;
+  return n >= 3;
+}
+
+// fill_hole_refusal against can_fill_hole, its contract and fill_hole, on half-edges of a mesh that random
+// edits keep changing (its removals open holes).
+TEST(Refusal, FillHoleAgreesWithItsEditOverRandomEdits) {
+  SurfaceMesh m = build(test::grid(5, false));
+  std::size_t refused = 0, allowed = 0;
+  test::after_random_edits(m, 13, 250, [&](const SurfaceMesh& mesh) {
+    for (std::size_t k = 0; k < 6; ++k) {
+      Halfedge h(static_cast<Index>((k * 104729 + mesh.n_halfedges()) % mesh.halfedge_slots()));
+      if (k % 2 == 0 && mesh.is_live(h) && !mesh.is_boundary(h)) h = SurfaceMesh::twin(h);
+      const char* why = fill_hole_refusal(mesh, h);
+      (why ? refused : allowed) += 1;
+      test::expect_refusal_agrees(
+          mesh, can_fill_hole(mesh, h), fill_hole_contract(mesh, h), why,
+          [&](SurfaceMesh& c) { return !fill_hole(c, h).empty(); },
+          "fill the hole at half-edge " + std::to_string(h.idx()));
+    }
+  });
+  EXPECT_GT(refused, 100u);
+  EXPECT_GT(allowed, 100u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Refusal, FillHoleSaysWhy) {
+  SurfaceMesh m = build(test::grid(1, false));
+  const Halfedge h = m.halfedge(Face(0));
+  EXPECT_STREQ(fill_hole_refusal(m, h), "the half-edge is not on a boundary (it has a face)");
+  EXPECT_EQ(fill_hole_refusal(m, SurfaceMesh::twin(h)), nullptr);
+  EXPECT_TRUE(m.validate().empty());
+}
 }  // namespace
 }  // namespace hedge

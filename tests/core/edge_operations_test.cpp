@@ -421,5 +421,80 @@ TEST(Flip, Refusals) {
   EXPECT_TRUE(quads.validate().empty());
 }
 
+// can_flip as its comment states it, from the mesh's queries alone: e is interior, both its faces
+// are triangles, its tips differ and are not joined by an edge, and neither end is an interior
+// vertex of valence 3.
+bool flip_contract(const SurfaceMesh& m, Edge e) {
+  if (!m.is_live(e) || m.is_boundary(e)) return false;
+  const Halfedge h = SurfaceMesh::halfedge(e, 0), t = SurfaceMesh::twin(h);
+  if (m.valence(m.face(h)) != 3 || m.valence(m.face(t)) != 3) return false;
+  const Vertex c = m.to_vertex(m.next(h)), d = m.to_vertex(m.next(t));
+  if (c == d || m.find_edge(c, d).is_valid()) return false;
+  for (const Vertex v : {m.from_vertex(h), m.to_vertex(h)})
+    if (!m.is_boundary(v) && m.valence(v) <= 3) return false;
+  return true;
+}
+
+// split_refusal, collapse_refusal and flip_refusal against their predicates, their contracts and the
+// edits, on live and deleted elements of a mesh that random edits keep changing.
+TEST(Refusal, SplitCollapseAndFlipAgreeWithTheirEditsOverRandomEdits) {
+  SurfaceMesh m = build(test::grid(5, false));
+  std::size_t refused = 0, allowed = 0;
+  test::after_random_edits(m, 11, 250, [&](const SurfaceMesh& mesh) {
+    for (std::size_t k = 0; k < 6; ++k) {
+      const Edge e(static_cast<Index>((k * 7919 + mesh.n_edges()) % mesh.edge_slots()));
+      const Halfedge h = SurfaceMesh::halfedge(e, k % 2);
+      const std::string name = "edge " + std::to_string(e.idx());
+      test::expect_refusal_agrees(
+          mesh, can_split_edge(mesh, e), mesh.is_live(e), split_refusal(mesh, e),
+          [&](SurfaceMesh& c) {
+            return split_edge(c, e, Vec3{0.5f, 0.5f, 0}).is_valid();
+          },
+          "split " + name);
+      test::expect_refusal_agrees(
+          mesh, can_collapse(mesh, h), can_collapse(mesh, h), collapse_refusal(mesh, h),
+          [&](SurfaceMesh& c) { return collapse(c, h).is_valid(); }, "collapse of " + name);
+      const char* why = flip_refusal(mesh, e);
+      (why ? refused : allowed) += 1;
+      test::expect_refusal_agrees(
+          mesh, can_flip(mesh, e), flip_contract(mesh, e), why,
+          [&](SurfaceMesh& c) { return flip(c, e).is_valid(); }, "flip " + name);
+    }
+  });
+  EXPECT_GT(refused, 100u);
+  EXPECT_GT(allowed, 100u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Refusal, FlipSaysWhy) {
+  SurfaceMesh m = build(test::grid(2, true));
+  const Edge boundary = m.find_edge(Vertex(0), Vertex(1));
+  EXPECT_STREQ(flip_refusal(m, boundary),
+               "the edge is on the boundary (a flip needs a triangle on both sides)");
+  SurfaceMesh quads = build(test::grid(2, false));
+  EXPECT_STREQ(flip_refusal(quads, quads.find_edge(Vertex(1), Vertex(4))),
+               "a face on the edge is not a triangle");
+  const Halfedge inside =
+      SurfaceMesh::halfedge(boundary, m.is_boundary(SurfaceMesh::halfedge(boundary, 0)) ? 1 : 0);
+  ASSERT_TRUE(remove_face(m, m.face(inside)));
+  ASSERT_FALSE(m.is_live(boundary));
+  EXPECT_STREQ(flip_refusal(m, boundary), "the edge is not live");
+  EXPECT_STREQ(split_refusal(m, boundary), "the edge is not live");
+  EXPECT_TRUE(m.validate().empty());
+
+  // A tetrahedron whose two faces away from edge e are split: the ends of e have 4 edges each, and
+  // its tips are still joined by the tetrahedron's opposite edge.
+  SurfaceMesh tet = build(test::tetrahedron());
+  const Edge e(0);
+  std::vector<Face> away;
+  for (const Face f : tet.faces())
+    if (tet.face(e, 0) != f && tet.face(e, 1) != f) away.push_back(f);
+  ASSERT_EQ(away.size(), 2u);
+  for (const Face f : away) ASSERT_TRUE(split_face(tet, f, face_centroid(tet, f)).is_valid());
+  EXPECT_STREQ(flip_refusal(tet, e), "the tips of its triangles are already joined by an edge");
+  EXPECT_FALSE(can_flip(tet, e));
+  EXPECT_TRUE(tet.validate().empty());
+}
+
 }  // namespace
 }  // namespace hedge

@@ -240,5 +240,91 @@ TEST(RemoveFaces, EveryFaceLeavesAnEmptyMesh) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+// can_cut_face as its comment states it, from the mesh's queries alone: h0 and h1 are two half-edges
+// of the same live face, their targets are not adjacent in it, and no edge joins them yet.
+bool cut_face_contract(const SurfaceMesh& m, Halfedge h0, Halfedge h1) {
+  if (!m.is_live(h0) || !m.is_live(h1) || h0 == h1 || !m.face(h0).is_valid() || m.face(h0) != m.face(h1))
+    return false;
+  const Vertex a = m.to_vertex(h0), b = m.to_vertex(h1);
+  for (const Halfedge h : m.halfedges(m.face(h0)))
+    if ((m.from_vertex(h) == a && m.to_vertex(h) == b) || (m.from_vertex(h) == b && m.to_vertex(h) == a))
+      return false;
+  return !m.find_edge(a, b).is_valid();
+}
+
+// split_face_refusal and cut_face_refusal against their predicates, their contracts and the edits,
+// on live and deleted elements of a mesh that random edits keep changing.
+TEST(Refusal, SplitFaceAndCutFaceAgreeWithTheirEditsOverRandomEdits) {
+  SurfaceMesh m = build(test::grid(5, false));
+  std::size_t refused = 0, allowed = 0;
+  test::after_random_edits(m, 12, 250, [&](const SurfaceMesh& mesh) {
+    for (std::size_t k = 0; k < 6; ++k) {
+      const Face f(static_cast<Index>((k * 7919 + mesh.n_faces()) % mesh.face_slots()));
+      test::expect_refusal_agrees(
+          mesh, can_split_face(mesh, f), mesh.is_live(f), split_face_refusal(mesh, f),
+          [&](SurfaceMesh& c) {
+            return split_face(c, f, Vec3{0.5f, 0.5f, 0}).is_valid();
+          },
+          "split face " + std::to_string(f.idx()));
+      // h0 in a face (or deleted, or on the boundary), h1 one to four steps further in its loop.
+      const Halfedge h0(static_cast<Index>((k * 104729 + mesh.n_halfedges()) % mesh.halfedge_slots()));
+      Halfedge h1 = h0;
+      if (mesh.is_live(h0))
+        for (std::size_t i = 0; i <= k % 4; ++i) h1 = mesh.next(h1);
+      if (k == 5) h1 = Halfedge(static_cast<Index>((h1.idx() + 17) % mesh.halfedge_slots()));
+      const char* why = cut_face_refusal(mesh, h0, h1);
+      (why ? refused : allowed) += 1;
+      test::expect_refusal_agrees(
+          mesh, can_cut_face(mesh, h0, h1), cut_face_contract(mesh, h0, h1), why,
+          [&](SurfaceMesh& c) { return cut_face(c, h0, h1).is_valid(); },
+          "cut face at half-edges " + std::to_string(h0.idx()) + " and " + std::to_string(h1.idx()));
+    }
+  });
+  EXPECT_GT(refused, 100u);
+  EXPECT_GT(allowed, 30u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Refusal, CutFaceSaysWhy) {
+  SurfaceMesh m = build(test::grid(1, false));  // one quad
+  const Halfedge h = m.halfedge(Face(0));
+  EXPECT_STREQ(cut_face_refusal(m, h, h), "the two half-edges are the same");
+  EXPECT_STREQ(cut_face_refusal(m, h, m.next(h)),
+               "their targets are neighbours in the face (the cut would double an edge)");
+  EXPECT_STREQ(cut_face_refusal(m, SurfaceMesh::twin(h), m.next(h)),
+               "the half-edges are on a boundary, not in a face");
+  EXPECT_EQ(cut_face_refusal(m, h, m.next(m.next(h))), nullptr);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Refusal, AddAndRemoveSayWhy) {
+  SurfaceMesh m = build(test::grid(3, false));  // 3 x 3 quads; face j * 3 + i
+  const Vertex lone = m.add_vertex(Vec3{9, 9, 0});
+  const Vertex two[] = {Vertex(0), Vertex(1)};
+  EXPECT_STREQ(add_face_refusal(m, two), "a face needs at least 3 corners");
+  const Vertex repeated[] = {Vertex(0), Vertex(1), Vertex(0)};
+  EXPECT_STREQ(add_face_refusal(m, repeated), "a corner is repeated");
+  const Vertex inside[] = {Vertex(0), Vertex(1), lone};  // 0 -> 1 runs inside face 0
+  EXPECT_STREQ(add_face_refusal(m, inside), "an edge of the face already has a face on that side");
+  const Vertex outside[] = {Vertex(1), Vertex(0), lone};
+  EXPECT_EQ(add_face_refusal(m, outside), nullptr);
+  EXPECT_TRUE(can_add_face(m, outside));
+
+  ASSERT_EQ(remove_face_refusal(m, Face(4)), nullptr);
+  ASSERT_TRUE(remove_face(m, Face(4)));  // the centre
+  EXPECT_STREQ(remove_face_refusal(m, Face(4)), "the face is not live");
+  // Face 0 meets the hole at vertex 5 only: removing it would pinch vertex 5.
+  EXPECT_STREQ(remove_face_refusal(m, Face(0)),
+               "a corner would be left with two gaps in its fan of faces (pinched)");
+  EXPECT_FALSE(remove_face(m, Face(0)));
+  EXPECT_STREQ(remove_vertex_refusal(m, Vertex(0)),
+               "a corner of its faces would be left with two gaps in its fan of faces (pinched)");
+  EXPECT_EQ(remove_vertex_refusal(m, Vertex(1)), nullptr);
+  ASSERT_TRUE(remove_vertex(m, Vertex(1)));
+  EXPECT_STREQ(remove_vertex_refusal(m, Vertex(1)), "the vertex is not live");
+  ASSERT_TRUE(remove_vertex(m, lone));
+  EXPECT_TRUE(m.validate().empty());
+}
+
 }  // namespace
 }  // namespace hedge

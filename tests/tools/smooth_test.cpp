@@ -9,7 +9,7 @@ using namespace cli_test;
 
 TEST_F(HedgeCli, SmoothWritesASmootherMeshWithTheSameConnectivity) {
   const fs::path out = tmp("smooth.obj");
-  for (const char* method : {"uniform", "taubin", "cotan", "implicit"}) {
+  for (const char* method : {"uniform", "taubin", "cotangent", "implicit", "cotan"}) {
     const Result r =
         run({"smooth", data("spot_triangulated.obj"), out.string(), "--method", method, "--iterations", "5"});
     ASSERT_EQ(r.code, 0) << method << ": " << r.err;
@@ -29,7 +29,7 @@ TEST_F(HedgeCli, SmoothRefusesBadInputWithoutWriting) {
   expect_usage_error({"smooth", data("tet.obj"), out.string(), "--method", "gaussian"});
   expect_usage_error({"smooth", data("tet.obj"), out.string(), "--iterations", "-3"});
   expect_data_error({"smooth", data("tet.obj"), out.string(), "--lambda", "2"}, "lambda");
-  expect_data_error({"smooth", data("spot_control_mesh.obj"), out.string(), "--method", "cotan"},
+  expect_data_error({"smooth", data("spot_control_mesh.obj"), out.string(), "--method", "cotangent"},
                     "triangles");
   EXPECT_FALSE(fs::exists(out));
 }

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "binding/names.h"
 #include "commands.h"
 #include "load.h"
 #include "numbers.h"
@@ -30,10 +31,7 @@ int run_smooth(const SmoothCommandOptions& o) {
   format_from_path(o.output);  // an unknown extension fails before the work
   LoadedMesh loaded = load_mesh(o.input, o.load);
   SmoothOptions s;
-  s.method = o.method == "taubin"     ? SmoothMethod::taubin
-             : o.method == "cotan"    ? SmoothMethod::cotangent
-             : o.method == "implicit" ? SmoothMethod::implicit
-                                      : SmoothMethod::uniform;
+  s.method = binding::parse_smooth_method(o.method);
   s.iterations = o.iterations;
   s.lambda = o.lambda;
   s.mu = o.mu;
@@ -62,10 +60,11 @@ Command add_smooth_command(CLI::App& parent) {
   app->add_option("OUT", o->output, "Output mesh file; missing folders are created")->required();
   app->add_option(
          "--method", o->method,
-         "uniform (umbrella), taubin (lambda|mu, no shrinking), cotan (cotangent weights, triangles only) "
-         "or implicit (backward Euler steps of the cotangent flow; lambda is the time step)")
+         "uniform (umbrella), taubin (lambda|mu, no shrinking), cotangent (cotangent weights, triangles "
+         "only; cotan also accepted) or implicit (backward Euler steps of the cotangent flow; lambda is the "
+         "time step)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"uniform", "taubin", "cotan", "implicit"}));
+      ->check(CLI::IsMember(binding::smooth_method_spellings()));
   app->add_option("--iterations", o->iterations, "Iterations")
       ->capture_default_str()
       ->transform(whole_number<int>(0, 100000));

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "binding/names.h"
 #include "commands.h"
 #include "hedge/error.h"
 #include "load.h"
@@ -30,11 +31,7 @@ int run_subdivide(const SubdivideCommandOptions& o) {
   LoadedMesh loaded = load_mesh(o.input, o.load);
   SurfaceMesh& m = loaded.mesh;
   const std::size_t faces_before = m.n_faces();
-  const Subdivision scheme = o.scheme == "midpoint"        ? Subdivision::midpoint
-                             : o.scheme == "catmull-clark" ? Subdivision::catmull_clark
-                             : o.scheme == "sqrt3"         ? Subdivision::sqrt3
-                             : o.scheme == "split-faces"   ? Subdivision::split_faces
-                                                           : Subdivision::loop;
+  const Subdivision scheme = binding::parse_subdivision(o.scheme);
   // The estimate against the budget before anything is allocated, with the most steps that fit.
   // Writing the result copies it once more: measured, the whole command peaked at up to 1.2 times
   // the library's estimate writing binary PLY, and up to 2 times writing OBJ text.
@@ -81,7 +78,7 @@ Command add_subdivide_command(CLI::App& parent) {
          "smooth 1-to-3 with flips, triangles), midpoint (1-to-4, shape kept, triangles) or split-faces "
          "(1-to-3 at centroids, any polygons, shape kept)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"loop", "catmull-clark", "sqrt3", "midpoint", "split-faces"}));
+      ->check(CLI::IsMember(binding::subdivision_spellings()));
   app->add_option("--steps", o->steps,
                   "Steps (each makes about 4 times the faces; refused past --max-memory)")
       ->capture_default_str()

@@ -351,7 +351,7 @@ test('a refused collapse says why and changes nothing', async ({ page }) => {
   await page.waitForSelector('#error', { state: 'visible', timeout: 5000 });
   const message = await page.textContent('#error-text');
   check(
-    /collapse of half-edge \d+ refused: \S/.test(message),
+    /collapse of halfedge \d+ refused: \S/.test(message),
     `the refusal does not say why: ${message}`,
   );
   checkEqual(

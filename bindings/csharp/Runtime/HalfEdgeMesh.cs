@@ -476,11 +476,11 @@ namespace Hedge
         // then says why. Render buffers of the mesh see every edit at their next sync.
         // =========================================================================================
 
-        /// <summary>Why the last edit of this mesh was refused (the library's message, as hedge_last_error()
-        /// gave it right after the call, e.g. "collapse of halfedge 12 refused: it would pull a seam vertex off
-        /// its seam; nothing was changed"), or null if the last edit was done. Every edit (split, collapse,
-        /// flip, cut, add, remove, fill) sets it; nothing throws for a refusal, and only a refusal allocates
-        /// (the string).</summary>
+        /// <summary>Why the last edit of this mesh was refused: the library's refusal, as hedge_last_refusal()
+        /// gave it right after the call (e.g. "it would pull a seam vertex off its seam"), the same text as the
+        /// JS API's lastRefusal; or null if the last edit was done. Every edit (split, collapse, flip, cut,
+        /// add, remove, fill) sets it; nothing throws for a refusal, and only a refusal allocates (the
+        /// string).</summary>
         public string LastRefusal { get; private set; }
 
         // True if the status says "refused" (then LastRefusal holds the reason); throws for any other failure.
@@ -488,7 +488,7 @@ namespace Hedge
         {
             if (status == Refused)
             {
-                LastRefusal = Status.FromUtf8(Native.hedge_last_error());
+                LastRefusal = Status.FromUtf8(Native.hedge_last_refusal());
                 return true;
             }
             LastRefusal = null;

@@ -132,7 +132,7 @@ test('a render outlives the disposal of its mesh', () => {
   render.dispose();
   assert.throws(
     () => render.sizes(),
-    (e) => e.kind === 'disposed',
+    (e) => e.kind === 'bad-handle',
   );
 });
 

@@ -1,0 +1,49 @@
+// The name tables of the binding core (src/binding/names.cpp).
+#include "binding/names.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "binding/errors.h"
+#include "hedge/error.h"
+
+namespace hedge::binding {
+namespace {
+
+TEST(BindingNames, OneSpellingEachAndItsAliases) {
+  EXPECT_EQ(parse_smooth_method("cotangent"), SmoothMethod::cotangent);
+  EXPECT_EQ(parse_smooth_method("cotan"), SmoothMethod::cotangent);
+  EXPECT_STREQ(name(SmoothMethod::cotangent), "cotangent");
+  EXPECT_EQ(parse_subdivision("catmull-clark"), Subdivision::catmull_clark);
+  EXPECT_EQ(parse_subdivision("split_faces"), Subdivision::split_faces);
+  EXPECT_STREQ(name(Subdivision::split_faces), "split-faces");
+  EXPECT_EQ(parse_normal_source("auto"), NormalSource::automatic);
+  EXPECT_STREQ(name(NormalSource::automatic), "auto");
+  for (const std::string& s : smooth_method_spellings()) EXPECT_NO_THROW(parse_smooth_method(s)) << s;
+  for (const std::string& s : subdivision_spellings()) EXPECT_NO_THROW(parse_subdivision(s)) << s;
+  const auto methods = smooth_method_spellings();
+  EXPECT_NE(std::find(methods.begin(), methods.end(), "cotan"), methods.end());
+  try {
+    parse_smooth_method("gaussian");
+    ADD_FAILURE() << "accepted";
+  } catch (const InvalidInputError& e) {
+    EXPECT_STREQ(e.what(), "unknown smoothing method 'gaussian' (uniform, taubin, cotangent, implicit)");
+  }
+}
+
+TEST(BindingNames, TheCAbisConstants) {
+  EXPECT_EQ(to_weld(HEDGE_WELD_EPSILON), Weld::epsilon);
+  EXPECT_EQ(to_policy(HEDGE_POLICY_STRICT), TopologyPolicy::strict);
+  EXPECT_EQ(to_winding(HEDGE_WINDING_CW), Winding::cw);
+  try {
+    to_weld(7);
+    ADD_FAILURE() << "accepted";
+  } catch (const BindingError& e) {
+    EXPECT_EQ(e.status, HEDGE_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(e.message, "weld is 7, not a HEDGE_WELD_* value");
+  }
+}
+
+}  // namespace
+}  // namespace hedge::binding

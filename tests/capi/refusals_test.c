@@ -1,0 +1,179 @@
+/* The shared table of refused edits and bad handles (tests/cases/refusals.txt, which says its
+ * format) run through the C ABI: each case must give the table's status and text, as the JS API's
+ * and the C# binding's tests of the same table must. Compiled as C11. */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hedge/c_api.h"
+
+#define MAX_MESHES 16
+#define LINE_SIZE 4096
+
+static int g_failures = 0;
+static int g_cases = 0;
+
+typedef struct {
+  char name[32];
+  char obj[LINE_SIZE];
+} NamedMesh;
+
+static NamedMesh g_meshes[MAX_MESHES];
+static int g_mesh_count = 0;
+
+/* Strips leading and trailing blanks in place. */
+static char* trim(char* s) {
+  while (*s == ' ' || *s == '\t') ++s;
+  size_t n = strlen(s);
+  while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t' || s[n - 1] == '\n' || s[n - 1] == '\r'))
+    s[--n] = '\0';
+  return s;
+}
+
+/* The next field of *s up to `sep` (or the end), trimmed; NULL when *s is used up. Cuts *s. */
+static char* next_field(char** s, char sep) {
+  if (*s == NULL) return NULL;
+  char* start = *s;
+  char* end = strchr(start, sep);
+  if (end != NULL) {
+    *end = '\0';
+    *s = end + 1;
+  } else {
+    *s = NULL;
+  }
+  return trim(start);
+}
+
+static hedge_mesh* read_mesh(const char* name) {
+  for (int i = 0; i < g_mesh_count; ++i) {
+    if (strcmp(g_meshes[i].name, name) != 0) continue;
+    char text[LINE_SIZE], file[64];
+    strcpy(text, g_meshes[i].obj);
+    for (char* c = text; *c; ++c)
+      if (*c == ';') *c = '\n';
+    snprintf(file, sizeof file, "%s.obj", name);
+    hedge_mesh* mesh = NULL;
+    if (hedge_mesh_read_memory(text, strlen(text), file, NULL, NULL, NULL, &mesh) != HEDGE_OK) {
+      fprintf(stderr, "mesh %s: %s\n", name, hedge_last_error());
+      exit(1);
+    }
+    return mesh;
+  }
+  fprintf(stderr, "no mesh named %s in the table\n", name);
+  exit(1);
+}
+
+/* An element: e:A-B, h:A>B, or e:N, h:N, f:N. */
+static uint32_t element(hedge_mesh* mesh, const char* token) {
+  unsigned a = 0, b = 0;
+  uint32_t h = HEDGE_INVALID_INDEX;
+  if (sscanf(token, "e:%u-%u", &a, &b) == 2 || sscanf(token, "h:%u>%u", &a, &b) == 2) {
+    if (hedge_mesh_find_halfedge(mesh, a, b, &h) != HEDGE_OK || h == HEDGE_INVALID_INDEX) {
+      fprintf(stderr, "%s: no such half-edge (%s)\n", token, hedge_last_error());
+      exit(1);
+    }
+    return token[0] == 'e' ? h >> 1 : h;
+  }
+  if (sscanf(token + 2, "%u", &a) == 1) return a;
+  fprintf(stderr, "bad element %s\n", token);
+  exit(1);
+}
+
+typedef struct {
+  char name[32];
+  uint32_t elements[2];
+  int count;
+} Edit;
+
+static Edit parse_edit(hedge_mesh* mesh, char* text) {
+  Edit edit;
+  memset(&edit, 0, sizeof edit);
+  char* rest = text;
+  const char* name = next_field(&rest, ' ');
+  snprintf(edit.name, sizeof edit.name, "%s", name != NULL ? name : "");
+  for (char* t = next_field(&rest, ' '); t != NULL && edit.count < 2; t = next_field(&rest, ' '))
+    if (*t != '\0') edit.elements[edit.count++] = element(mesh, t);
+  return edit;
+}
+
+static hedge_status run_edit(hedge_mesh* mesh, const Edit* e) {
+  uint32_t out = 0, faces[64], n = 0;
+  const uint32_t a = e->elements[0], b = e->elements[1];
+  if (strcmp(e->name, "flip") == 0) return hedge_flip(mesh, a);
+  if (strcmp(e->name, "collapse") == 0) return hedge_collapse(mesh, a, &out);
+  if (strcmp(e->name, "split_edge") == 0) return hedge_split_edge(mesh, a, 0, 0, 0, &out);
+  if (strcmp(e->name, "split_face") == 0) return hedge_split_face(mesh, a, 0, 0, 0, &out);
+  if (strcmp(e->name, "cut_face") == 0) return hedge_cut_face(mesh, a, b, &out);
+  if (strcmp(e->name, "fill_hole") == 0) return hedge_fill_hole(mesh, a, faces, 64, &n);
+  fprintf(stderr, "unknown edit %s\n", e->name);
+  exit(1);
+}
+
+static void run_case(char* line) {
+  char* fields[5];
+  char* rest = line;
+  int n = 0;
+  for (char* f = next_field(&rest, '|'); f != NULL && n < 5; f = next_field(&rest, '|')) fields[n++] = f;
+  if (n != 5) {
+    fprintf(stderr, "a case needs 5 fields: %s\n", line);
+    exit(1);
+  }
+  ++g_cases;
+  hedge_mesh* mesh = read_mesh(fields[0]);
+  char edit_text[256];
+  snprintf(edit_text, sizeof edit_text, "%s", fields[2]);
+  const Edit checked = parse_edit(mesh, edit_text); /* before the edits done first */
+  if (strcmp(fields[1], "-") != 0) {
+    char* edits = fields[1];
+    for (char* t = next_field(&edits, ';'); t != NULL; t = next_field(&edits, ';')) {
+      const Edit done = parse_edit(mesh, t);
+      if (run_edit(mesh, &done) != HEDGE_OK) {
+        fprintf(stderr, "case %s | %s: the edit done first failed: %s\n", fields[0], fields[2],
+                hedge_last_error());
+        exit(1);
+      }
+    }
+  }
+  const hedge_status status = run_edit(mesh, &checked);
+  const char* text = status == HEDGE_ERROR_REFUSED ? hedge_last_refusal() : hedge_last_error();
+  if (strcmp(hedge_status_string(status), fields[3]) != 0 || strcmp(text, fields[4]) != 0) {
+    fprintf(stderr, "case %s | %s | %s:\n  expected %s \"%s\"\n  got      %s \"%s\"\n", fields[0], fields[1],
+            fields[2], fields[3], fields[4], hedge_status_string(status), text);
+    ++g_failures;
+  }
+  uint32_t problems = 1;
+  if (hedge_mesh_validate(mesh, &problems) != HEDGE_OK || problems != 0) {
+    fprintf(stderr, "case %s | %s: the mesh is not valid afterwards\n", fields[0], fields[2]);
+    ++g_failures;
+  }
+  hedge_mesh_destroy(mesh);
+}
+
+int main(void) {
+  const char* path = HEDGE_CASES_DIR "/refusals.txt";
+  FILE* in = fopen(path, "r");
+  if (in == NULL) {
+    fprintf(stderr, "cannot open %s\n", path);
+    return 1;
+  }
+  char line[LINE_SIZE];
+  while (fgets(line, sizeof line, in) != NULL) {
+    char* s = trim(line);
+    if (strncmp(s, "mesh ", 5) == 0) {
+      char* eq = strchr(s, '=');
+      if (eq == NULL || g_mesh_count == MAX_MESHES) return fprintf(stderr, "bad mesh line: %s\n", s), 1;
+      *eq = '\0';
+      snprintf(g_meshes[g_mesh_count].name, sizeof g_meshes[0].name, "%s", trim(s + 5));
+      snprintf(g_meshes[g_mesh_count].obj, sizeof g_meshes[0].obj, "%s", trim(eq + 1));
+      ++g_mesh_count;
+    } else if (strncmp(s, "case ", 5) == 0) {
+      run_case(s + 5);
+    }
+  }
+  fclose(in);
+  if (g_cases == 0) return fprintf(stderr, "no cases in %s\n", path), 1;
+  if (g_failures > 0) return fprintf(stderr, "%d of %d cases failed\n", g_failures, g_cases), 1;
+  printf("refusals_test: %d cases passed\n", g_cases);
+  return 0;
+}
