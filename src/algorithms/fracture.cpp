@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <queue>
 #include <string>
@@ -15,6 +16,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "format.h"
 #include "hedge/algorithms/detach_faces.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/core/build.h"
@@ -25,29 +27,12 @@ namespace hedge {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using detail::number;
+
 //! A barycentric weight this close to 1 (or to 0) puts the impact on a corner (or an edge).
 constexpr double kSnap = 1e-3;
 constexpr std::size_t kMaxRefineSplits = 20000;  // per round
 constexpr unsigned kMaxRingPoints = 100000;
-
-//! splitmix64 (Steele, Lea and Flood 2014): one 64-bit state, a Weyl step and a mixing function.
-class Generator {
- public:
-  explicit Generator(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    state_ += 0x9E3779B97F4A7C15ull;
-    std::uint64_t z = state_;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  //! Uniform in [0, 1): the top 53 bits, scaled exactly.
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-
- private:
-  std::uint64_t state_;
-};
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point& t) {
@@ -56,14 +41,6 @@ double seconds_since(Clock::time_point& t) {
   t = now;
   return s;
 }
-
-std::string number(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
-
-Vec3d sub(const Vec3d& a, const Vec3d& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 
 //! Distances with the grain shortened: the component along `axis` counts `shrink` times.
 struct Metric {
@@ -75,34 +52,6 @@ struct Metric {
     return std::sqrt(perp2 + a * a * shrink * shrink);
   }
 };
-
-Vec3d centroid_of(const SurfaceMesh& m, Face f) {
-  Vec3d c{};
-  double n = 0;
-  for (Vertex v : m.vertices(f)) {
-    c += to_double(m.position(v));
-    n += 1;
-  }
-  return c * (1.0 / n);
-}
-
-double longest_edge(const SurfaceMesh& m, Face f) {
-  double best = 0;
-  for (Halfedge h : m.halfedges(f))
-    best = std::max(
-        best, norm(sub(to_double(m.position(m.to_vertex(h))), to_double(m.position(m.from_vertex(h))))));
-  return best;
-}
-
-double mean_edge(const SurfaceMesh& m, Face f) {
-  double sum = 0;
-  double n = 0;
-  for (Halfedge h : m.halfedges(f)) {
-    sum += norm(sub(to_double(m.position(m.to_vertex(h))), to_double(m.position(m.from_vertex(h)))));
-    n += 1;
-  }
-  return sum / n;
-}
 
 std::size_t check_options(const FractureOptions& o) {
   auto fail = [](const std::string& what) { throw InvalidInputError("fracture: " + what); };
@@ -191,17 +140,17 @@ class Area {
       }
       heap.emplace(key, g.idx());
     };
-    for (Face f : m.faces(centre)) offer(f, metric.length(sub(centroid_of(m, f), p)));
+    for (Face f : m.faces(centre)) offer(f, metric.length(centroid(m, f) - p));
     while (!heap.empty()) {
       const auto [d, fi] = heap.top();
       heap.pop();
       if (slot.count(fi) || d > best[fi]) continue;
       const Face f(fi);
       slot.emplace(fi, static_cast<std::uint32_t>(faces.size()));
-      faces.push_back({f, d, centroid_of(m, f)});
+      faces.push_back({f, d, centroid(m, f)});
       for (Face g : m.faces(f)) {
         if (slot.count(g.idx())) continue;
-        const double dg = std::max(d, metric.length(sub(centroid_of(m, g), p)));
+        const double dg = std::max(d, metric.length(centroid(m, g) - p));
         if (dg <= radius) offer(g, dg);
       }
     }
@@ -221,16 +170,15 @@ bool refine(SurfaceMesh& m, const Area& area, const Vec3d& p, double radius, dou
   for (std::size_t i = 0; i < work.size() && splits < kMaxRefineSplits; ++i) {
     const Face f = work[i];
     if (!m.is_live(f)) continue;
-    if (i >= area.faces.size() && metric.length(sub(centroid_of(m, f), p)) > radius) continue;
+    if (i >= area.faces.size() && metric.length(centroid(m, f) - p) > radius) continue;
     Vertex v;
     if (m.valence(f) > 3) {
-      v = split_face(m, f, to_float(centroid_of(m, f)));
+      v = split_face(m, f, to_float(centroid(m, f)));
     } else {
       Halfedge longest;
       double best = max_edge;
       for (Halfedge h : m.halfedges(f)) {
-        const double l =
-            norm(sub(to_double(m.position(m.to_vertex(h))), to_double(m.position(m.from_vertex(h)))));
+        const double l = edge_length(m, h);
         if (l > best) {
           best = l;
           longest = h;
@@ -363,7 +311,7 @@ double farthest_outside(const ConvexHull& hull, const std::vector<Vec3>& points)
   for (Face f : h.faces()) {
     const Vec3d n = normalize(area_vector(h, f));
     const Vec3d a = to_double(h.position(h.to_vertex(h.halfedge(f))));
-    for (const Vec3& q : points) worst = std::max(worst, dot(sub(to_double(q), a), n));
+    for (const Vec3& q : points) worst = std::max(worst, dot(to_double(q) - a, n));
   }
   return worst;
 }
@@ -375,7 +323,7 @@ void measure_shard(Shard& shard, const FractureOptions& o) {
   for (Face f : s.faces()) {
     const double a = face_area(s, f);
     area += a;
-    weighted += centroid_of(s, f) * a;
+    weighted += centroid(s, f) * a;
   }
   shard.area = area;
   shard.centroid = area > 0 ? weighted * (1.0 / area) : Vec3d{};
@@ -488,15 +436,15 @@ FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOpt
 
   // ---- frame and metric ----
   const FractureMaterial& mat = o.material;
-  const double unit = mat.absolute ? 1.0 : mean_edge(mesh, hit->face);
+  const double unit = mat.absolute ? 1.0 : mean_edge_length(mesh, hit->face);
   Vec3d normal = normalize(area_vector(mesh, hit->face));
   if (dot(normal, normal) == 0) normal = {0, 0, 1};
   Metric metric;
   Vec3d t1 = any_perpendicular(normal);
   if (mat.grain_stretch > 1) {
     const Vec3d g = normalize(to_double(mat.grain));
-    const Vec3d in_plane = sub(g, normal * dot(g, normal));
-    if (norm(in_plane) > std::sin(6 * kPi / 180)) {
+    const Vec3d in_plane = g - normal * dot(g, normal);
+    if (norm(in_plane) > std::sin(6 * std::numbers::pi / 180)) {
       t1 = normalize(in_plane);
       metric.axis = t1;
       metric.shrink = 1 / mat.grain_stretch;
@@ -530,21 +478,22 @@ FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOpt
   const std::size_t k = area.faces.size();
   std::vector<std::array<double, 2>> polar(k);
   for (std::size_t i = 0; i < k; ++i) {
-    const Vec3d d = sub(area.faces[i].centroid, p);
+    const Vec3d d = area.faces[i].centroid - p;
     const double x = dot(d, t1) * metric.shrink, y = dot(d, t2);
     const double len = std::hypot(x, y);
     const double r = area.faces[i].distance;
     polar[i] = len > 0 ? std::array<double, 2>{r * x / len, r * y / len} : std::array<double, 2>{0, 0};
   }
-  Generator rng(o.seed);
+  SplitMix64 rng(o.seed);
   std::vector<std::uint32_t> seeds;
   std::vector<std::int32_t> seed_of(k, -1);
   double ring_radius = 0;
   for (const FractureRing& ring : mat.rings) {
     ring_radius += ring.spacing;
-    const double phase = 2 * kPi * rng.uniform();
+    const double phase = 2 * std::numbers::pi * rng.uniform();
     for (unsigned i = 0; i < ring.points; ++i) {
-      const double angle = phase + 2 * kPi * (i + ring.jitter * (rng.uniform() - 0.5)) / ring.points;
+      const double angle =
+          phase + 2 * std::numbers::pi * (i + ring.jitter * (rng.uniform() - 0.5)) / ring.points;
       const double r = (ring_radius + ring.jitter * ring.spacing * (rng.uniform() - 0.5)) * unit;
       const double x = r * std::cos(angle), y = r * std::sin(angle);
       std::size_t best = 0;
@@ -584,7 +533,7 @@ FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOpt
         const auto it = area.slot.find(g.idx());
         if (it == area.slot.end() || cell[it->second] >= 0) continue;
         const double dg =
-            std::max(d, metric.length(sub(area.faces[it->second].centroid, area.faces[seeds[c]].centroid)));
+            std::max(d, metric.length(area.faces[it->second].centroid - area.faces[seeds[c]].centroid));
         if (dg < best[it->second]) {
           best[it->second] = dg;
           heap.emplace(dg, c, it->second);

@@ -30,11 +30,6 @@ struct Tri {
 
 enum EdgeClass : std::uint8_t { kNoLine = 0, kWire = 1, kFeature = 2, kBoundary = 3 };
 
-Vec3d unit_or_zero(const Vec3d& v) {
-  const double l = std::sqrt(dot(v, v));
-  return l > 0 && std::isfinite(l) ? v * (1 / l) : Vec3d{0, 0, 0};
-}
-
 // Connected components over faces sharing an edge; -> component per face slot.
 std::vector<Index> face_components(const SurfaceMesh& m) {
   std::vector<Index> comp(m.face_slots(), kInvalidIndex);
