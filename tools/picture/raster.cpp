@@ -8,6 +8,8 @@
 #include <thread>
 
 #include "colors.h"
+#include "hedge/algorithms/components.h"
+#include "hedge/algorithms/curvature.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/error.h"
 
@@ -29,67 +31,6 @@ struct Tri {
 };
 
 enum EdgeClass : std::uint8_t { kNoLine = 0, kWire = 1, kFeature = 2, kBoundary = 3 };
-
-// Connected components over faces sharing an edge; -> component per face slot.
-std::vector<Index> face_components(const SurfaceMesh& m) {
-  std::vector<Index> comp(m.face_slots(), kInvalidIndex);
-  std::vector<Face> stack;
-  Index next = 0;
-  for (Face seed : m.faces()) {
-    if (comp[seed.idx()] != kInvalidIndex) continue;
-    comp[seed.idx()] = next;
-    stack.push_back(seed);
-    while (!stack.empty()) {
-      const Face f = stack.back();
-      stack.pop_back();
-      for (Halfedge h : m.halfedges(f)) {
-        const Face g = m.face(SurfaceMesh::twin(h));
-        if (g.is_valid() && comp[g.idx()] == kInvalidIndex) {
-          comp[g.idx()] = next;
-          stack.push_back(g);
-        }
-      }
-    }
-    ++next;
-  }
-  return comp;
-}
-
-// Signed mean curvature per vertex slot from the cotangent Laplacian (0 on the boundary).
-std::vector<double> mean_curvature(const SurfaceMesh& m, const std::vector<Vec3>& vertex_normal) {
-  std::vector<Vec3d> lap(m.vertex_slots(), Vec3d{0, 0, 0});
-  std::vector<double> area(m.vertex_slots(), 0);
-  for (Face f : m.faces()) {
-    // Fan triangles, each adding its cotangent weights and a third of its area to its corners.
-    Vertex c[3];
-    const Halfedge h0 = m.halfedge(f);
-    c[0] = m.to_vertex(h0);
-    for (Halfedge h = m.next(h0); m.next(h) != h0; h = m.next(h)) {
-      c[1] = m.to_vertex(h);
-      c[2] = m.to_vertex(m.next(h));
-      const Vec3d p[3] = {to_double(m.position(c[0])), to_double(m.position(c[1])),
-                          to_double(m.position(c[2]))};
-      const double a2 = std::sqrt(dot(cross(p[1] - p[0], p[2] - p[0]), cross(p[1] - p[0], p[2] - p[0])));
-      if (!(a2 > 0)) continue;
-      for (int k = 0; k < 3; ++k) {
-        const int i = (k + 1) % 3, j = (k + 2) % 3;  // the side opposite corner k
-        const double cot = dot(p[i] - p[k], p[j] - p[k]) / a2;
-        lap[c[i].idx()] += (p[j] - p[i]) * (0.5 * cot);
-        lap[c[j].idx()] += (p[i] - p[j]) * (0.5 * cot);
-        area[c[k].idx()] += a2 / 6;
-      }
-    }
-  }
-  std::vector<double> h(m.vertex_slots(), 0);
-  for (Vertex v : m.vertices()) {
-    if (m.is_boundary(v) || !(area[v.idx()] > 0)) continue;
-    const Vec3d l = lap[v.idx()] * (1 / area[v.idx()]);
-    const double mag = 0.5 * std::sqrt(dot(l, l));
-    h[v.idx()] =
-        dot(l, to_double(vertex_normal[v.idx()])) < 0 ? mag : -mag;  // convex (outward normal): positive
-  }
-  return h;
-}
 
 // A diverging scale: -1 blue, 0 near white, +1 red.
 Rgb diverging(double t) {
@@ -155,7 +96,7 @@ Prepared prepare(const SurfaceMesh& m, const Projection& proj, const RenderOptio
     for (std::size_t i = b; i < e; ++i)
       if (!m.is_deleted(Face(Index(i)))) p.face_normal[i] = to_float(area_vector(m, Face(Index(i))));
   });
-  if (o.shading == Shading::smooth || o.color_by == ColorBy::curvature) {
+  if (o.shading == Shading::smooth) {
     p.vertex_normal.assign(nv, Vec3{0, 0, 0});
     parallel_for(nv, threads, [&](std::size_t b, std::size_t e, unsigned) {
       for (std::size_t i = b; i < e; ++i) {
@@ -173,8 +114,8 @@ Prepared prepare(const SurfaceMesh& m, const Projection& proj, const RenderOptio
   if (o.color_by == ColorBy::face) {
     for (Face f : m.faces()) p.face_color[f.idx()] = categorical(f.idx());
   } else if (o.color_by == ColorBy::shard) {
-    const std::vector<Index> comp = face_components(m);
-    for (Face f : m.faces()) p.face_color[f.idx()] = categorical(comp[f.idx()]);
+    const Components comp = face_components(m);
+    for (Face f : m.faces()) p.face_color[f.idx()] = categorical(comp.label[f.idx()]);
   } else if (o.color_by == ColorBy::valence) {
     p.vertex_color.assign(m.vertex_slots(), o.base);
     // Regular valence from the faces around: a corner of a regular n-gon spans pi (n - 2) / n, so
@@ -194,7 +135,7 @@ Prepared prepare(const SurfaceMesh& m, const Projection& proj, const RenderOptio
       p.vertex_color[v.idx()] = diverging((double(m.valence(v)) - regular) / 3);
     }
   } else if (o.color_by == ColorBy::curvature) {
-    const std::vector<double> h = mean_curvature(m, p.vertex_normal);
+    const std::vector<double> h = mean_curvature(m);
     std::vector<double> mags;
     for (Vertex v : m.vertices()) mags.push_back(std::abs(h[v.idx()]));
     double scale = 1;
