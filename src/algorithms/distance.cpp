@@ -6,11 +6,11 @@
 #include <limits>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/locate.h"
+#include "hedge/core/threads.h"
 #include "hedge/error.h"
 
 namespace hedge {
@@ -106,11 +106,7 @@ OneSidedDistance measure(const SurfaceMesh& from, const SurfaceMesh& to, const D
       previous_distance = distance[k];
     }
   };
-  const std::size_t threads = std::min<std::size_t>(options.threads, std::max<std::size_t>(1, n / 4096));
-  std::vector<std::thread> workers;
-  for (std::size_t t = 1; t < threads; ++t) workers.emplace_back(run, n * t / threads, n * (t + 1) / threads);
-  run(0, n / threads);
-  for (std::thread& w : workers) w.join();
+  detail::parallel_ranges(n, run, 4096, options.threads);
 
   OneSidedDistance r;
   r.points = n;

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "hedge/core/operations.h"
+#include "hedge/core/threads.h"
 #include "hedge/error.h"
-#include "parallel.h"
 
 namespace hedge {
 
@@ -22,6 +22,15 @@ namespace {
 // edge's new vertex, second(h) from there to h's end (see the header for the numbering).
 inline Index first_half(Index h) { return 4 * (h >> 1) + 3 * (h & 1); }
 inline Index second_half(Index h) { return 4 * (h >> 1) + 2 - (h & 1); }
+
+// Every pass writes each new element from a formula of the old ones, so a pass splits between
+// threads (include/hedge/core/threads.h) without changing the result; at most 8 of them, as a pass
+// streams memory and more threads only queue for it.
+constexpr std::size_t kMaxThreads = 8;
+template <typename Body>
+void for_ranges(std::size_t n, Body&& body) {
+  detail::parallel_ranges(n, body, std::size_t(1) << 15, kMaxThreads);
+}
 
 // The mesh being refined, read-only: the refined one is built in a mesh of its own, so that the
 // input stays as it was until the result is complete.
@@ -45,7 +54,7 @@ double loop_beta(std::size_t n) {
 // moves them) and the edge vertices (then ne; Loop's masks, or midpoints).
 void positions_1_to_4(const SurfaceMesh& m, const Old& o, bool loop, Vec3* out) {
   const Vec3* p = m.positions().vector().data();
-  detail::parallel_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
+  for_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
     for (std::size_t e = begin; e < end; ++e) {
       const Vec3d a = to_double(p[o.to[2 * e].idx()]), b = to_double(p[o.to[2 * e + 1].idx()]);
       Vec3d np = (a + b) * 0.5;
@@ -59,7 +68,7 @@ void positions_1_to_4(const SurfaceMesh& m, const Old& o, bool loop, Vec3* out) 
   });
   double betas[32];
   for (std::size_t n = 1; n < 32; ++n) betas[n] = loop_beta(n);
-  detail::parallel_ranges(o.nv, [&](std::size_t begin, std::size_t end) {
+  for_ranges(o.nv, [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v) {
       const Halfedge start = o.vout[v];
       if (!loop || !start.is_valid()) {
@@ -99,7 +108,7 @@ void check(const SurfaceMesh& m, Subdivision scheme, int steps) {
   const std::vector<Halfedge>& next = m.halfedge_next_array();
   const std::vector<Halfedge>& fhe = m.face_halfedge_array();
   std::atomic<std::size_t> all_corners{0}, not_triangle{nf};
-  detail::parallel_ranges(nf, [&](std::size_t begin, std::size_t end) {
+  for_ranges(nf, [&](std::size_t begin, std::size_t end) {
     std::size_t sum = 0, first = nf;
     for (std::size_t f = begin; f < end; ++f) {
       if (m.is_deleted(Face(Index(f)))) continue;
@@ -245,7 +254,7 @@ Old read_old(const SurfaceMesh& m) {
   o.fhe = m.face_halfedge_array().data();
   o.sharp.resize(o.ne);
   const auto crease = m.get_edge_property<std::uint8_t>("e:crease");
-  detail::parallel_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
+  for_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
     for (std::size_t e = begin; e < end; ++e)
       o.sharp[e] = !o.face[2 * e].is_valid() || !o.face[2 * e + 1].is_valid() ||
                    (crease && crease[Edge(Index(e))] != 0);
@@ -286,7 +295,7 @@ Index keep_old_corners(SurfaceMesh& out, const SurfaceMesh& src, std::size_t nh)
 // The halves of every old edge (with the boundary half-edges' links), the outgoing half-edges of
 // the old vertices and of the edge vertices V + e.
 void write_edge_halves(SurfaceMesh& m, const Old& o) {
-  detail::parallel_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
+  for_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
     for (std::size_t e = begin; e < end; ++e) {
       const Index h0 = Index(2 * e), h1 = h0 + 1;
       const Vertex a = o.to[h1], b = o.to[h0], mid(Index(o.nv + e));
@@ -309,7 +318,7 @@ void write_edge_halves(SurfaceMesh& m, const Old& o) {
     }
   });
   // Old vertices: the first half of their old outgoing half-edge (boundary stays boundary).
-  detail::parallel_ranges(o.nv, [&](std::size_t begin, std::size_t end) {
+  for_ranges(o.nv, [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v)
       m.set_halfedge(Vertex(Index(v)),
                      o.vout[v].is_valid() ? Halfedge(first_half(o.vout[v].idx())) : Halfedge());
@@ -353,7 +362,7 @@ SurfaceMesh refine_1_to_4(const SurfaceMesh& src, Subdivision scheme) {
   write_edge_halves(m, o);
   write_edge_half_properties(m, src, o, old_base);
   // Faces: three corner triangles and the middle one.
-  detail::parallel_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
+  for_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
       Index h[3];
       h[0] = o.fhe[f].idx();
@@ -421,7 +430,7 @@ SurfaceMesh refine_1_to_4(const SurfaceMesh& src, Subdivision scheme) {
 
 void catmull_clark_positions(const SurfaceMesh& m, const Old& o, Vec3* out) {
   std::vector<Vec3d> face_point(o.nf);
-  detail::parallel_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
+  for_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
       Vec3d c{0, 0, 0};
       std::size_t n = 0;
@@ -430,7 +439,7 @@ void catmull_clark_positions(const SurfaceMesh& m, const Old& o, Vec3* out) {
       out[o.nv + o.ne + f] = to_float(face_point[f]);
     }
   });
-  detail::parallel_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
+  for_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
     for (std::size_t e = begin; e < end; ++e) {
       const Halfedge h(Index(2 * e)), t(Index(2 * e + 1));
       const Vec3d a = to_double(m.position(o.to[h.idx()])), b = to_double(m.position(o.to[t.idx()]));
@@ -440,7 +449,7 @@ void catmull_clark_positions(const SurfaceMesh& m, const Old& o, Vec3* out) {
       out[o.nv + e] = to_float(p);
     }
   });
-  detail::parallel_ranges(o.nv, [&](std::size_t begin, std::size_t end) {
+  for_ranges(o.nv, [&](std::size_t begin, std::size_t end) {
     for (std::size_t vi = begin; vi < end; ++vi) {
       const Vertex v{Index(vi)};
       const Vec3d s = to_double(m.position(v));
@@ -471,7 +480,7 @@ SurfaceMesh refine_catmull_clark(const SurfaceMesh& src) {
   const Old o = read_old(src);
   // first(f): the running sum of the face degrees.
   std::vector<Index> first(o.nf + 1);
-  detail::parallel_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
+  for_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
       const Index start = o.fhe[f].idx();
       Index n = 0, h = start;
@@ -494,7 +503,7 @@ SurfaceMesh refine_catmull_clark(const SurfaceMesh& src) {
   const Index inner = Index(2 * o.ne);
   auto to_centre = [&](Index q) { return Halfedge(2 * (inner + q)); };
   auto from_centre = [&](Index q) { return Halfedge(2 * (inner + q) + 1); };
-  detail::parallel_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
+  for_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
       const Vertex centre(Index(o.nv + o.ne + f));
       const Index start = o.fhe[f].idx(), q0 = first[f], q_end = first[f + 1];
@@ -594,13 +603,13 @@ Split face_rings(const SurfaceMesh& m) {
     return n;
   };
   s.first.resize(s.nf + 1);
-  detail::parallel_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
+  for_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) s.first[f + 1] = degree(f);
   });
   s.first[0] = 0;
   for (std::size_t f = 0; f < s.nf; ++f) s.first[f + 1] += s.first[f];
   s.ring.resize(s.first[s.nf]);
-  detail::parallel_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
+  for_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
       Halfedge h = m.halfedge(Face(Index(f)));
       for (Index c = s.first[f]; c < s.first[f + 1]; ++c, h = next[h.idx()]) s.ring[c] = h.idx();
@@ -618,7 +627,7 @@ std::vector<Vec3> sqrt3_positions(const SurfaceMesh& m, const std::vector<std::u
   const std::vector<Halfedge>& next = m.halfedge_next_array();
   double alphas[32];
   for (std::size_t n = 1; n < 32; ++n) alphas[n] = (4 - 2 * std::cos(2 * std::numbers::pi / double(n))) / 9;
-  detail::parallel_ranges(out.size(), [&](std::size_t begin, std::size_t end) {
+  for_ranges(out.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v) {
       out[v] = p[v];
       const Halfedge start = m.halfedge(Vertex(Index(v)));
@@ -651,19 +660,19 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3) {
   if (sqrt3) {
     keep.resize(s.ne);
     const auto crease = src.get_edge_property<std::uint8_t>("e:crease");
-    detail::parallel_ranges(s.ne, [&](std::size_t begin, std::size_t end) {
+    for_ranges(s.ne, [&](std::size_t begin, std::size_t end) {
       for (std::size_t e = begin; e < end; ++e)
         keep[e] = src.is_boundary(Edge(Index(e))) || (crease && crease[Edge(Index(e))] != 0);
     });
     q.resize(2 * s.ne);  // boundary half-edges' entries are never read
-    detail::parallel_ranges(nc, [&](std::size_t begin, std::size_t end) {
+    for_ranges(nc, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) q[s.ring[i]] = Index(i);
     });
     smoothed = sqrt3_positions(src, keep);
   }
   // Face centroids, summed in double as face_centroid() does.
   std::vector<Vec3> centres(s.nf);
-  detail::parallel_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
+  for_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
     const Vec3* p = src.positions().vector().data();
     const std::vector<Vertex>& to = src.halfedge_vertex_array();
     for (std::size_t f = begin; f < end; ++f) {
@@ -676,14 +685,14 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3) {
   // Old vertices, edges and half-edges keep their index, links and properties; the links of the
   // old half-edges of faces and the old vertices' outgoing half-edges are rewritten below.
   SurfaceMesh m = refined_like(src, s.nv + s.nf, s.ne + nc, nc, s.nv);
-  detail::parallel_ranges(2 * s.ne, [&](std::size_t begin, std::size_t end) {
+  for_ranges(2 * s.ne, [&](std::size_t begin, std::size_t end) {
     for (std::size_t h = begin; h < end; ++h) {
       m.set_vertex(Halfedge(Index(h)), src.to_vertex(Halfedge(Index(h))));
       m.set_next(Halfedge(Index(h)), src.next(Halfedge(Index(h))));
       m.set_face(Halfedge(Index(h)), src.face(Halfedge(Index(h))));
     }
   });
-  detail::parallel_ranges(s.nv, [&](std::size_t begin, std::size_t end) {
+  for_ranges(s.nv, [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v)
       m.set_halfedge(Vertex(Index(v)), src.halfedge(Vertex(Index(v))));
   });
@@ -699,7 +708,7 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3) {
   }
   auto in = [&](Index c) { return Halfedge(2 * (E + c)); };
   auto out = [&](Index c) { return Halfedge(2 * (E + c) + 1); };
-  detail::parallel_ranges(s.nf, [&](std::size_t f_begin, std::size_t f_end) {
+  for_ranges(s.nf, [&](std::size_t f_begin, std::size_t f_end) {
     for (std::size_t f = f_begin; f < f_end; ++f) {
       const Index b = s.first[f], n = s.first[f + 1] - b;
       const Vertex centre(V + Index(f));
@@ -734,7 +743,7 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3) {
   });
   // An interior old vertex whose outgoing half-edge was flipped leaves by the spoke of that edge's twin.
   if (sqrt3)
-    detail::parallel_ranges(s.nv, [&](std::size_t begin, std::size_t end) {
+    for_ranges(s.nv, [&](std::size_t begin, std::size_t end) {
       for (std::size_t v = begin; v < end; ++v) {
         const Halfedge o = m.halfedge(Vertex(Index(v)));
         if (o.is_valid() && !m.is_boundary(o) && !keep[o.idx() >> 1])

@@ -5,12 +5,12 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
-#include <thread>
 
 #include "colors.h"
 #include "hedge/algorithms/components.h"
 #include "hedge/algorithms/curvature.h"
 #include "hedge/algorithms/geometry.h"
+#include "hedge/core/threads.h"
 #include "hedge/error.h"
 
 namespace hedge::picture {
@@ -50,18 +50,11 @@ struct Prepared {
   std::vector<Rgb> vertex_color;    // per vertex slot, when colours vary per vertex
 };
 
-// Runs fn(begin, end, chunk) over `threads` chunks of [0, n) in parallel (one chunk when n is small).
-// fn must not throw.
+// Runs fn(begin, end, chunk) over at most `threads` chunks of [0, n) in parallel (one chunk when n
+// is small), by the library's parallel-for. fn must not throw.
 template <typename Fn>
 void parallel_for(std::size_t n, unsigned threads, Fn&& fn) {
-  if (threads <= 1 || n < 8192) {
-    fn(std::size_t(0), n, 0u);
-    return;
-  }
-  std::vector<std::thread> pool;
-  for (unsigned k = 0; k < threads; ++k)
-    pool.emplace_back([&fn, n, threads, k] { fn(n * k / threads, n * (k + 1) / threads, k); });
-  for (std::thread& t : pool) t.join();
+  detail::parallel_ranges(n, fn, 8192, threads);
 }
 
 Prepared prepare(const SurfaceMesh& m, const Projection& proj, const RenderOptions& o, int s,
@@ -335,7 +328,7 @@ Image render(const SurfaceMesh& mesh, const Camera& camera, const RenderOptions&
   if (mesh.n_faces() == 0) throw InvalidInputError("nothing to draw: the mesh has no faces");
   const int s = o.supersample;
   const Projection proj(camera, o.width, o.height);
-  unsigned threads = o.threads != 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  unsigned threads = o.threads != 0 ? o.threads : max_threads();
   threads = std::clamp(threads, 1u, 16u);
   const Prepared p = prepare(mesh, proj, o, s, threads);
 
@@ -344,17 +337,10 @@ Image render(const SurfaceMesh& mesh, const Camera& camera, const RenderOptions&
   b.h = o.height * s;
   b.key.assign(std::size_t(b.w) * b.h, -std::numeric_limits<float>::infinity());
   b.color.assign(std::size_t(b.w) * b.h, o.background);
-  threads = std::min<unsigned>(threads, unsigned(b.h));
-  if (threads == 1) {
-    rasterise_band(mesh, proj, p, o, s, b, 0, b.h);
-  } else {
-    std::vector<std::thread> pool;
-    for (unsigned k = 0; k < threads; ++k) {
-      const int y0 = int(std::int64_t(b.h) * k / threads), y1 = int(std::int64_t(b.h) * (k + 1) / threads);
-      pool.emplace_back([&, y0, y1] { rasterise_band(mesh, proj, p, o, s, b, y0, y1); });
-    }
-    for (std::thread& t : pool) t.join();
-  }
+  detail::parallel_ranges(
+      std::size_t(b.h),
+      [&](std::size_t y0, std::size_t y1) { rasterise_band(mesh, proj, p, o, s, b, int(y0), int(y1)); }, 1,
+      threads);
   draw_marked(mesh, p, o, s, b);
 
   Image out(o.width, o.height, o.background);
