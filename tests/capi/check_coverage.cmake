@@ -1,8 +1,13 @@
-# Checks that the C test calls every function the C ABI declares.
-# Usage: cmake -DHEADER=include/hedge/c_api.h -DTEST_SOURCE=tests/capi/c_api_test.c -P check_coverage.cmake
+# Checks that the C tests call every function the C ABI declares.
+# Usage: cmake -DHEADER=include/hedge/c_api.h "-DTEST_SOURCE=tests/capi/c_api_test.c;tests/capi/threads_test.c"
+#   -P check_coverage.cmake (TEST_SOURCE: one test source or a list of them)
 # Every declaration in the header starts with "HEDGE_API <type> <name>(" on one line.
 file(STRINGS "${HEADER}" declarations REGEX "^HEDGE_API ")
-file(READ "${TEST_SOURCE}" test_source)
+set(test_source "")
+foreach(source IN LISTS TEST_SOURCE)
+  file(READ "${source}" text)
+  string(APPEND test_source "${text}")
+endforeach()
 set(count 0)
 set(missing "")
 foreach(line IN LISTS declarations)
