@@ -68,6 +68,7 @@ TEST(Curvature, MeanCurvatureIsNegativeForInwardNormals) {
   const std::vector<double> h = mean_curvature(m);
   for (Vertex v : m.vertices()) EXPECT_NEAR(h[v.idx()] * -2, 1, tolerance(m, v, 0.02)) << v.idx();
   EXPECT_NEAR(area_weighted_mean(m, h) * -2, 1, 0.01);
+  EXPECT_EQ(m.validate(), std::vector<std::string>{});
 }
 
 // Gauss-Bonnet: the angle defects (curvature times vertex area) of a closed surface sum to 2 pi
@@ -86,6 +87,7 @@ TEST(Curvature, ASpheresGaussianCurvatureIsOneOverItsRadiusSquared) {
   for (Vertex v : m.vertices()) EXPECT_NEAR(k[v.idx()] * r * r, 1, tolerance(m, v, 0.03)) << v.idx();
   EXPECT_NEAR(area_weighted_mean(m, k) * r * r, 1, 0.01);
   EXPECT_NEAR(total_defect(m, k), 4 * std::numbers::pi, 1e-9);
+  EXPECT_EQ(m.validate(), std::vector<std::string>{});
 }
 
 TEST(Curvature, APlaneHasNoneAndItsBoundaryIsLeftAtZero) {

@@ -49,6 +49,8 @@ static float* subdivided_grid(uint64_t* out_count) {
   CHECK(hedge_mesh_create(positions, n * n, indices, 4 * kSide * kSide, sizes, kSide * kSide, NULL, NULL,
                           NULL, NULL, &mesh) == HEDGE_OK);
   CHECK(hedge_mesh_subdivide(mesh, HEDGE_SUBDIVISION_CATMULL_CLARK, 1) == HEDGE_OK);
+  uint32_t problems = 1;
+  CHECK(hedge_mesh_validate(mesh, &problems) == HEDGE_OK && problems == 0);
   uint64_t count = 0;
   CHECK(hedge_mesh_copy_positions(mesh, NULL, 0, &count) == HEDGE_ERROR_BUFFER_TOO_SMALL);
   float* out = malloc(sizeof(float) * count);
