@@ -231,6 +231,10 @@ export class Hedge {
     weld?: 'none' | 'exact' | 'epsilon';
   }): Mesh;
   fromFile(bytes: Uint8Array | ArrayBuffer, name: string): Mesh;
+  /** The thread setting; the module is single-threaded, so it changes nothing (n: integer >= 0). */
+  setMaxThreads(n: number): void;
+  /** Always 1: the module runs every call on the calling thread. */
+  maxThreads(): number;
   heapBytesInUse(): number;
   readonly memoryBytes: number;
   readonly version: string;

@@ -157,6 +157,21 @@ export class Hedge {
     return new Mesh(this, native);
   }
 
+  /** The library's thread setting (hedge::set_max_threads). The WebAssembly module is built
+   *  without threads: every call runs on the calling thread, whatever is set. setMaxThreads accepts
+   *  any whole number >= 0 (0: every core) and maxThreads() reports 1. */
+  setMaxThreads(n) {
+    if (!Number.isInteger(n) || n < 0)
+      throw new HedgeError(
+        'invalid-argument',
+        `setMaxThreads: expected a whole number >= 0, got ${n}`,
+      );
+  }
+
+  maxThreads() {
+    return 1;
+  }
+
   /** Bytes of wasm heap in use by the allocator (what a leak makes grow). */
   heapBytesInUse() {
     return this.module.heapBytesInUse();

@@ -1040,6 +1040,20 @@ HEDGE_API hedge_status hedge_mesh_from_engine_mesh(const float* positions, uint3
                                                    const hedge_engine_import_options* options,
                                                    hedge_build_report* out_report, hedge_mesh** out_mesh);
 
+/* ============================================================================================ */
+/* Threads (hedge/core/threads.h)                                                               */
+/* ============================================================================================ */
+
+/** Sets how many threads one call may run on, the calling thread included, for the whole process:
+ *  1 starts no worker thread at all (every call runs on the calling thread, as inside a game's
+ *  frame); 0 restores the default, every core the process may run on. Only subdivision and the
+ *  Hausdorff distance use worker threads, joined before they return; their results do not depend on
+ *  the count. Any thread may call it at any time; a call already running keeps its count. */
+HEDGE_API hedge_status hedge_set_max_threads(uint32_t n);
+/** *out_n receives the number of threads a call may run on now (at least 1): the value set, or the
+ *  number of usable cores when 0 was set or nothing was. */
+HEDGE_API hedge_status hedge_max_threads(uint32_t* out_n);
+
 #ifdef __cplusplus
 } /* extern "C" */
 #endif

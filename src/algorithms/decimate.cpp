@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -26,15 +27,6 @@ namespace hedge {
 namespace {
 
 using Mesh = SurfaceMesh;
-constexpr double kPi = 3.14159265358979323846;
-
-//! The bits of a float (memcpy rather than std::bit_cast, which older standard libraries such as
-//! emscripten's libc++ lack). For a non-negative float they order as the values do.
-std::uint32_t float_bits(float f) {
-  std::uint32_t out;
-  std::memcpy(&out, &f, sizeof(out));
-  return out;
-}
 
 // Sum of weighted squared distances to planes n.x + d = 0: x'Ax + 2b'x + c, with A symmetric
 // (a00 a01 a02 a11 a12 a22) and w the total weight of the geometric planes.
@@ -137,7 +129,7 @@ class Decimator {
         pos_(m.positions().vector().data()),
         uv_(m.get_halfedge_property<Vec2>("h:texcoord")),
         crease_(m.get_edge_property<std::uint8_t>("e:crease")) {
-    const double cos_max = std::cos(o.max_normal_change_degrees * kPi / 180);
+    const double cos_max = std::cos(o.max_normal_change_degrees * std::numbers::pi / 180);
     min_cos_ = o.max_normal_change_degrees >= 180 ? -2.0 : cos_max;
     max_cost_ = std::isinf(o.max_error) ? std::numeric_limits<double>::infinity() : o.max_error * o.max_error;
     seams_ = uv_ && o.keep_seams;
@@ -210,7 +202,7 @@ void Decimator::gather_quadrics() {
   q_.assign(m_.vertex_slots(), Quadric{});
   input_normal_.assign(m_.face_slots(), Vec3{0, 0, 0});
   const double feature_cos =
-      o_.feature_angle_degrees >= 180 ? -2.0 : std::cos(o_.feature_angle_degrees * kPi / 180);
+      o_.feature_angle_degrees >= 180 ? -2.0 : std::cos(o_.feature_angle_degrees * std::numbers::pi / 180);
   const double wa2 = o_.attribute_weight * o_.attribute_weight;
   const BoundingBox box = bounding_box(m_);
   const Vec3d extent = to_double(box.max) - to_double(box.min);

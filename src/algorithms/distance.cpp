@@ -6,10 +6,11 @@
 #include <limits>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/locate.h"
+#include "hedge/core/threads.h"
 #include "hedge/error.h"
 
 namespace hedge {
@@ -35,8 +36,7 @@ struct SampledSurface {
       Halfedge h = m.next(m.halfedge(f));
       for (Halfedge last = m.prev(m.halfedge(f)); h != last; h = m.next(h)) {
         const Vertex c1 = m.to_vertex(h), c2 = m.to_vertex(m.next(h));
-        const Vec3d n = cross(to_double(m.position(c1)) - p0, to_double(m.position(c2)) - p0);
-        total += 0.5 * norm(n);
+        total += triangle_area(p0, to_double(m.position(c1)), to_double(m.position(c2)));
         triangles.push_back({c0, c1, c2});
         area_prefix.push_back(total);
       }
@@ -45,31 +45,24 @@ struct SampledSurface {
   double area() const { return area_prefix.empty() ? 0 : area_prefix.back(); }
 };
 
-//! splitmix64's finaliser: a well-mixed 64-bit value from (seed, i), so that any point can be drawn
-//! on its own, in any order and on any thread.
-std::uint64_t mix(std::uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
-}
-//! A uniform double in [0, 1) from 53 random bits.
-double unit(std::uint64_t bits) { return static_cast<double>(bits >> 11) * 0x1.0p-53; }
-
 //! Point k of the sample: a vertex for k < vertices.size(), else a face sample. The face samples
 //! are stratified: sample i falls in the i-th of `count` equal slices of the total area.
 Vec3d sample_point(const SurfaceMesh& m, const SampledSurface& s, std::size_t k, std::size_t count,
                    std::uint64_t seed) {
   if (k < s.vertices.size()) return to_double(m.position(s.vertices[k]));
   const std::size_t i = k - s.vertices.size();
-  const std::uint64_t base = mix(seed * 0x9e3779b97f4a7c15ull + 3 * i + 1);
-  const double u = (static_cast<double>(i) + unit(base)) / static_cast<double>(count) * s.area();
+  // Stateless draws (splitmix64_mix of a counter), so that any point can be drawn on its own, in
+  // any order and on any thread.
+  const std::uint64_t base = splitmix64_mix(seed * SplitMix64::kGamma + 3 * i + 1);
+  const double u = (static_cast<double>(i) + unit_interval(base)) / static_cast<double>(count) * s.area();
   const std::size_t t = std::min<std::size_t>(
       static_cast<std::size_t>(std::upper_bound(s.area_prefix.begin(), s.area_prefix.end(), u) -
                                s.area_prefix.begin()),
       s.triangles.size() - 1);
   // Uniform on the triangle: sqrt of one number picks the distance from corner 0, the other the
   // position across.
-  const double r1 = std::sqrt(unit(mix(base + 1))), r2 = unit(mix(base + 2));
+  const double r1 = std::sqrt(unit_interval(splitmix64_mix(base + 1))),
+               r2 = unit_interval(splitmix64_mix(base + 2));
   const Vec3d a = to_double(m.position(s.triangles[t][0])), b = to_double(m.position(s.triangles[t][1])),
               c = to_double(m.position(s.triangles[t][2]));
   return a * (1 - r1) + b * (r1 * (1 - r2)) + c * (r1 * r2);
@@ -113,11 +106,7 @@ OneSidedDistance measure(const SurfaceMesh& from, const SurfaceMesh& to, const D
       previous_distance = distance[k];
     }
   };
-  const std::size_t threads = std::min<std::size_t>(options.threads, std::max<std::size_t>(1, n / 4096));
-  std::vector<std::thread> workers;
-  for (std::size_t t = 1; t < threads; ++t) workers.emplace_back(run, n * t / threads, n * (t + 1) / threads);
-  run(0, n / threads);
-  for (std::thread& w : workers) w.join();
+  detail::parallel_ranges(n, run, 4096, options.threads);
 
   OneSidedDistance r;
   r.points = n;

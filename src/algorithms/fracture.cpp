@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <queue>
 #include <string>
@@ -15,6 +16,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "format.h"
 #include "hedge/algorithms/detach_faces.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/core/build.h"
@@ -25,29 +27,12 @@ namespace hedge {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using detail::number;
+
 //! A barycentric weight this close to 1 (or to 0) puts the impact on a corner (or an edge).
 constexpr double kSnap = 1e-3;
 constexpr std::size_t kMaxRefineSplits = 20000;  // per round
 constexpr unsigned kMaxRingPoints = 100000;
-
-//! splitmix64 (Steele, Lea and Flood 2014): one 64-bit state, a Weyl step and a mixing function.
-class Generator {
- public:
-  explicit Generator(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    state_ += 0x9E3779B97F4A7C15ull;
-    std::uint64_t z = state_;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  //! Uniform in [0, 1): the top 53 bits, scaled exactly.
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-
- private:
-  std::uint64_t state_;
-};
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point& t) {
@@ -56,14 +41,6 @@ double seconds_since(Clock::time_point& t) {
   t = now;
   return s;
 }
-
-std::string number(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
-
-Vec3d sub(const Vec3d& a, const Vec3d& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 
 //! Distances with the grain shortened: the component along `axis` counts `shrink` times.
 struct Metric {
@@ -75,34 +52,6 @@ struct Metric {
     return std::sqrt(perp2 + a * a * shrink * shrink);
   }
 };
-
-Vec3d centroid_of(const SurfaceMesh& m, Face f) {
-  Vec3d c{};
-  double n = 0;
-  for (Vertex v : m.vertices(f)) {
-    c += to_double(m.position(v));
-    n += 1;
-  }
-  return c * (1.0 / n);
-}
-
-double longest_edge(const SurfaceMesh& m, Face f) {
-  double best = 0;
-  for (Halfedge h : m.halfedges(f))
-    best = std::max(
-        best, norm(sub(to_double(m.position(m.to_vertex(h))), to_double(m.position(m.from_vertex(h))))));
-  return best;
-}
-
-double mean_edge(const SurfaceMesh& m, Face f) {
-  double sum = 0;
-  double n = 0;
-  for (Halfedge h : m.halfedges(f)) {
-    sum += norm(sub(to_double(m.position(m.to_vertex(h))), to_double(m.position(m.from_vertex(h)))));
-    n += 1;
-  }
-  return sum / n;
-}
 
 std::size_t check_options(const FractureOptions& o) {
   auto fail = [](const std::string& what) { throw InvalidInputError("fracture: " + what); };
@@ -191,17 +140,17 @@ class Area {
       }
       heap.emplace(key, g.idx());
     };
-    for (Face f : m.faces(centre)) offer(f, metric.length(sub(centroid_of(m, f), p)));
+    for (Face f : m.faces(centre)) offer(f, metric.length(centroid(m, f) - p));
     while (!heap.empty()) {
       const auto [d, fi] = heap.top();
       heap.pop();
       if (slot.count(fi) || d > best[fi]) continue;
       const Face f(fi);
       slot.emplace(fi, static_cast<std::uint32_t>(faces.size()));
-      faces.push_back({f, d, centroid_of(m, f)});
+      faces.push_back({f, d, centroid(m, f)});
       for (Face g : m.faces(f)) {
         if (slot.count(g.idx())) continue;
-        const double dg = std::max(d, metric.length(sub(centroid_of(m, g), p)));
+        const double dg = std::max(d, metric.length(centroid(m, g) - p));
         if (dg <= radius) offer(g, dg);
       }
     }
@@ -221,16 +170,15 @@ bool refine(SurfaceMesh& m, const Area& area, const Vec3d& p, double radius, dou
   for (std::size_t i = 0; i < work.size() && splits < kMaxRefineSplits; ++i) {
     const Face f = work[i];
     if (!m.is_live(f)) continue;
-    if (i >= area.faces.size() && metric.length(sub(centroid_of(m, f), p)) > radius) continue;
+    if (i >= area.faces.size() && metric.length(centroid(m, f) - p) > radius) continue;
     Vertex v;
     if (m.valence(f) > 3) {
-      v = split_face(m, f, to_float(centroid_of(m, f)));
+      v = split_face(m, f, to_float(centroid(m, f)));
     } else {
       Halfedge longest;
       double best = max_edge;
       for (Halfedge h : m.halfedges(f)) {
-        const double l =
-            norm(sub(to_double(m.position(m.to_vertex(h))), to_double(m.position(m.from_vertex(h)))));
+        const double l = edge_length(m, h);
         if (l > best) {
           best = l;
           longest = h;
@@ -363,7 +311,7 @@ double farthest_outside(const ConvexHull& hull, const std::vector<Vec3>& points)
   for (Face f : h.faces()) {
     const Vec3d n = normalize(area_vector(h, f));
     const Vec3d a = to_double(h.position(h.to_vertex(h.halfedge(f))));
-    for (const Vec3& q : points) worst = std::max(worst, dot(sub(to_double(q), a), n));
+    for (const Vec3& q : points) worst = std::max(worst, dot(to_double(q) - a, n));
   }
   return worst;
 }
@@ -375,7 +323,7 @@ void measure_shard(Shard& shard, const FractureOptions& o) {
   for (Face f : s.faces()) {
     const double a = face_area(s, f);
     area += a;
-    weighted += centroid_of(s, f) * a;
+    weighted += centroid(s, f) * a;
   }
   shard.area = area;
   shard.centroid = area > 0 ? weighted * (1.0 / area) : Vec3d{};
@@ -410,6 +358,201 @@ void measure_shard(Shard& shard, const FractureOptions& o) {
   }
 }
 
+// ---- the steps of fracture(), in order ----
+
+//! Refuses an impact that is not finite, a mesh without faces, a FaceBvh of another mesh and a
+//! thickness out of proportion (options are checked by check_options()).
+void check_input(const SurfaceMesh& mesh, const Vec3& impact, const FractureOptions& o, const FaceBvh* bvh) {
+  if (!is_finite(impact))
+    throw InvalidInputError("fracture: the impact (" + number(impact.x) + ", " + number(impact.y) + ", " +
+                            number(impact.z) + ") is not finite");
+  if (mesh.n_faces() == 0) throw InvalidInputError("fracture: the mesh has no face");
+  if (bvh && bvh->mesh() != &mesh)
+    throw InvalidInputError("fracture: the FaceBvh was built over another mesh");
+  check_thickness(mesh, o.thickness);
+}
+
+//! The nearest point of the surface to the impact, by bvh (brought up to date) or a tree of its
+//! own. Refuses an impact beyond the tolerance and a face without a neighbour.
+LocateResult locate_impact(SurfaceMesh& mesh, const Vec3& impact, const FractureOptions& o, FaceBvh* bvh) {
+  std::optional<FaceBvh> own;
+  FaceBvh* tree = bvh;
+  if (tree) {
+    tree->update();
+  } else {
+    own.emplace(mesh);
+    tree = &*own;
+  }
+  const std::optional<LocateResult> hit = tree->closest_point(impact);
+  if (!hit) throw InvalidInputError("fracture: no face found near the impact");
+  const double tolerance = o.tolerance > 0 ? o.tolerance : 1e-3 * longest_edge(mesh, hit->face);
+  const double distance = std::sqrt(hit->squared_distance);
+  if (!(distance <= tolerance))
+    throw InvalidInputError("fracture: the impact (" + number(impact.x) + ", " + number(impact.y) + ", " +
+                            number(impact.z) + ") is " + number(distance) + " from the nearest face (" +
+                            std::to_string(hit->face.idx()) + "), beyond the tolerance " + number(tolerance) +
+                            "; the nearest point of the surface is (" + number(hit->point.x) + ", " +
+                            number(hit->point.y) + ", " + number(hit->point.z) + ")");
+  bool neighbour = false;
+  for (Halfedge h : mesh.halfedges(hit->face))
+    if (!mesh.is_boundary(SurfaceMesh::twin(h))) {
+      neighbour = true;
+      break;
+    }
+  if (!neighbour)
+    throw InvalidInputError("fracture: face " + std::to_string(hit->face.idx()) +
+                            " at the impact has no neighbour: too small to break");
+  return *hit;
+}
+
+//! The frame of the impact: the face normal, two directions in its plane (t1 along the grain if
+//! there is one), the metric, the length unit of the rings and the radius of the broken area.
+struct Frame {
+  Vec3d normal, t1, t2;
+  Metric metric;
+  double unit = 1, radius = 0;
+};
+
+Frame impact_frame(const SurfaceMesh& mesh, const LocateResult& hit, const FractureMaterial& mat) {
+  Frame f;
+  f.unit = mat.absolute ? 1.0 : mean_edge_length(mesh, hit.face);
+  f.normal = normalize(area_vector(mesh, hit.face));
+  if (dot(f.normal, f.normal) == 0) f.normal = {0, 0, 1};
+  f.t1 = any_perpendicular(f.normal);
+  if (mat.grain_stretch > 1) {
+    const Vec3d g = normalize(to_double(mat.grain));
+    const Vec3d in_plane = g - f.normal * dot(g, f.normal);
+    if (norm(in_plane) > std::sin(6 * std::numbers::pi / 180)) {
+      f.t1 = normalize(in_plane);
+      f.metric.axis = f.t1;
+      f.metric.shrink = 1 / mat.grain_stretch;
+    }
+  }
+  f.t2 = cross(f.normal, f.t1);
+  double outer = 0;
+  for (const FractureRing& r : mat.rings) outer += r.spacing;
+  f.radius = (outer + 0.5 * mat.rings.back().spacing) * f.unit;
+  return f;
+}
+
+//! The broken area about the impact p (at vertex centre), refined where its faces are large. The
+//! time goes to result.seconds (gathering as scatter, splitting as cut).
+Area broken_area(SurfaceMesh& mesh, Vertex centre, const Vec3d& p, const Frame& frame,
+                 const FractureMaterial& mat, FractureResult& result, Clock::time_point& t) {
+  Area area;
+  area.gather(mesh, centre, p, frame.radius, frame.metric);
+  result.seconds.scatter += seconds_since(t);
+  // Splits change the centroids and so the area's rim: again until nothing is split (a polygon or a
+  // long edge newly reached at the rim), a few rounds at most.
+  for (int round = 0;
+       round < 8 && refine(mesh, area, p, frame.radius, mat.refine_edge * frame.unit, frame.metric);
+       ++round) {
+    result.seconds.cut += seconds_since(t);
+    area.gather(mesh, centre, p, frame.radius, frame.metric);
+    result.seconds.scatter += seconds_since(t);
+  }
+  return area;
+}
+
+//! The break points of the rings, drawn in the impact's plane and carried onto the surface: each
+//! goes to the area face whose centroid, mapped to polar form about p, is nearest. Returns the
+//! area slots of the distinct faces hit, in the order first hit.
+std::vector<std::uint32_t> scatter(const Area& area, const Vec3d& p, const Frame& frame,
+                                   const FractureMaterial& mat, std::uint64_t seed) {
+  const std::size_t k = area.faces.size();
+  std::vector<std::array<double, 2>> polar(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    const Vec3d d = area.faces[i].centroid - p;
+    const double x = dot(d, frame.t1) * frame.metric.shrink, y = dot(d, frame.t2);
+    const double len = std::hypot(x, y);
+    const double r = area.faces[i].distance;
+    polar[i] = len > 0 ? std::array<double, 2>{r * x / len, r * y / len} : std::array<double, 2>{0, 0};
+  }
+  SplitMix64 rng(seed);
+  std::vector<std::uint32_t> seeds;
+  std::vector<std::int32_t> seed_of(k, -1);
+  double ring_radius = 0;
+  for (const FractureRing& ring : mat.rings) {
+    ring_radius += ring.spacing;
+    const double phase = 2 * std::numbers::pi * rng.uniform();
+    for (unsigned i = 0; i < ring.points; ++i) {
+      const double angle =
+          phase + 2 * std::numbers::pi * (i + ring.jitter * (rng.uniform() - 0.5)) / ring.points;
+      const double r = (ring_radius + ring.jitter * ring.spacing * (rng.uniform() - 0.5)) * frame.unit;
+      const double x = r * std::cos(angle), y = r * std::sin(angle);
+      std::size_t best = 0;
+      double best_d = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < k; ++j) {
+        const double dx = polar[j][0] - x, dy = polar[j][1] - y;
+        const double d = dx * dx + dy * dy;
+        if (d < best_d) {
+          best_d = d;
+          best = j;
+        }
+      }
+      if (seed_of[best] < 0) {
+        seed_of[best] = static_cast<std::int32_t>(seeds.size());
+        seeds.push_back(static_cast<std::uint32_t>(best));
+      }
+    }
+  }
+  return seeds;
+}
+
+//! The cells: each face of the area goes to its nearest break point along the surface (a
+//! Dijkstra over face adjacency from all seeds at once). One list of faces per seed.
+std::vector<std::vector<Face>> cells(const SurfaceMesh& mesh, const Area& area,
+                                     const std::vector<std::uint32_t>& seeds, const Metric& metric) {
+  const std::size_t k = area.faces.size();
+  std::vector<std::int32_t> cell(k, -1);
+  using Item = std::tuple<double, std::int32_t, std::uint32_t>;  // distance, cell, area slot
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+  std::vector<double> best(k, std::numeric_limits<double>::infinity());
+  for (std::size_t s = 0; s < seeds.size(); ++s) {
+    best[seeds[s]] = 0;
+    heap.emplace(0.0, static_cast<std::int32_t>(s), seeds[s]);
+  }
+  while (!heap.empty()) {
+    const auto [d, c, i] = heap.top();
+    heap.pop();
+    if (cell[i] >= 0) continue;
+    cell[i] = c;
+    for (Face g : mesh.faces(area.faces[i].face)) {
+      const auto it = area.slot.find(g.idx());
+      if (it == area.slot.end() || cell[it->second] >= 0) continue;
+      const double dg =
+          std::max(d, metric.length(area.faces[it->second].centroid - area.faces[seeds[c]].centroid));
+      if (dg < best[it->second]) {
+        best[it->second] = dg;
+        heap.emplace(dg, c, it->second);
+      }
+    }
+  }
+  std::vector<std::vector<Face>> faces(seeds.size());
+  for (std::size_t i = 0; i < k; ++i)
+    if (cell[i] >= 0) faces[static_cast<std::size_t>(cell[i])].push_back(area.faces[i].face);
+  return faces;
+}
+
+//! Each non-empty cell detached from the mesh into a shard of its own (faces in index order).
+std::vector<Shard> detach(SurfaceMesh& mesh, std::vector<std::vector<Face>>& cells) {
+  std::vector<Shard> shards;
+  shards.reserve(cells.size());
+  for (std::vector<Face>& faces : cells) {
+    if (faces.empty()) continue;
+    std::sort(faces.begin(), faces.end());
+    Shard shard;
+    shard.mesh = detach_faces(mesh, faces);
+    shards.push_back(std::move(shard));
+  }
+  return shards;
+}
+
+//! Every shard made a solid and measured (measure_shard).
+void solids(std::vector<Shard>& shards, const FractureOptions& o) {
+  for (Shard& shard : shards) measure_shard(shard, o);
+}
+
 }  // namespace
 
 std::vector<std::string> fracture_material_names() { return {"glass", "stone", "wood", "ice"}; }
@@ -439,178 +582,40 @@ FractureMaterial fracture_material(std::string_view preset) {
 
 std::size_t fracture_break_points(const FractureOptions& options) { return check_options(options); }
 
+// The pipeline: locate the impact, take its frame, cut it into the surface, gather the broken area
+// (refined where its faces are large), scatter the break points, grow a cell about each, detach
+// the cells and make each a solid. Each step is a function of its own above.
 FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOptions& o, FaceBvh* bvh) {
   const std::size_t total_points = check_options(o);
-  if (!is_finite(impact))
-    throw InvalidInputError("fracture: the impact (" + number(impact.x) + ", " + number(impact.y) + ", " +
-                            number(impact.z) + ") is not finite");
-  if (mesh.n_faces() == 0) throw InvalidInputError("fracture: the mesh has no face");
-  if (bvh && bvh->mesh() != &mesh)
-    throw InvalidInputError("fracture: the FaceBvh was built over another mesh");
-  check_thickness(mesh, o.thickness);
-
+  check_input(mesh, impact, o, bvh);
   FractureResult result;
   Clock::time_point t = Clock::now();
 
-  // ---- locate ----
-  std::optional<FaceBvh> own;
-  FaceBvh* tree = bvh;
-  if (tree) {
-    tree->update();
-  } else {
-    own.emplace(mesh);
-    tree = &*own;
-  }
-  const std::optional<LocateResult> hit = tree->closest_point(impact);
-  if (!hit) throw InvalidInputError("fracture: no face found near the impact");
-  const double tolerance = o.tolerance > 0 ? o.tolerance : 1e-3 * longest_edge(mesh, hit->face);
-  const double distance = std::sqrt(hit->squared_distance);
-  if (!(distance <= tolerance))
-    throw InvalidInputError("fracture: the impact (" + number(impact.x) + ", " + number(impact.y) + ", " +
-                            number(impact.z) + ") is " + number(distance) + " from the nearest face (" +
-                            std::to_string(hit->face.idx()) + "), beyond the tolerance " + number(tolerance) +
-                            "; the nearest point of the surface is (" + number(hit->point.x) + ", " +
-                            number(hit->point.y) + ", " + number(hit->point.z) + ")");
-  bool neighbour = false;
-  for (Halfedge h : mesh.halfedges(hit->face))
-    if (!mesh.is_boundary(SurfaceMesh::twin(h))) {
-      neighbour = true;
-      break;
-    }
-  if (!neighbour)
-    throw InvalidInputError("fracture: face " + std::to_string(hit->face.idx()) +
-                            " at the impact has no neighbour: too small to break");
-  result.impact_face = hit->face;
-  result.impact_point = hit->point;
+  const LocateResult hit = locate_impact(mesh, impact, o, bvh);
+  result.impact_face = hit.face;
+  result.impact_point = hit.point;
   result.seconds.locate = seconds_since(t);
-
   if (total_points == 0) return result;
 
-  // ---- frame and metric ----
-  const FractureMaterial& mat = o.material;
-  const double unit = mat.absolute ? 1.0 : mean_edge(mesh, hit->face);
-  Vec3d normal = normalize(area_vector(mesh, hit->face));
-  if (dot(normal, normal) == 0) normal = {0, 0, 1};
-  Metric metric;
-  Vec3d t1 = any_perpendicular(normal);
-  if (mat.grain_stretch > 1) {
-    const Vec3d g = normalize(to_double(mat.grain));
-    const Vec3d in_plane = sub(g, normal * dot(g, normal));
-    if (norm(in_plane) > std::sin(6 * kPi / 180)) {
-      t1 = normalize(in_plane);
-      metric.axis = t1;
-      metric.shrink = 1 / mat.grain_stretch;
-    }
-  }
-  const Vec3d t2 = cross(normal, t1);
-  double outer = 0;
-  for (const FractureRing& r : mat.rings) outer += r.spacing;
-  const double radius = (outer + 0.5 * mat.rings.back().spacing) * unit;
-
-  // ---- cut the impact in ----
+  const Frame frame = impact_frame(mesh, hit, o.material);
   Vec3 impact_on_surface;
-  const Vertex centre = cut_impact(mesh, *hit, impact_on_surface);
+  const Vertex centre = cut_impact(mesh, hit, impact_on_surface);
   result.impact_point = impact_on_surface;
   const Vec3d p = to_double(impact_on_surface);
   result.seconds.cut += seconds_since(t);
 
-  // ---- gather the broken area, refine it where its faces are large ----
-  Area area;
-  area.gather(mesh, centre, p, radius, metric);
-  result.seconds.scatter += seconds_since(t);
-  // Splits change the centroids and so the area's rim: again until nothing is split (a polygon or a
-  // long edge newly reached at the rim), a few rounds at most.
-  for (int round = 0; round < 8 && refine(mesh, area, p, radius, mat.refine_edge * unit, metric); ++round) {
-    result.seconds.cut += seconds_since(t);
-    area.gather(mesh, centre, p, radius, metric);
-    result.seconds.scatter += seconds_since(t);
-  }
-
-  // ---- scatter the break points and carry them onto the surface ----
-  const std::size_t k = area.faces.size();
-  std::vector<std::array<double, 2>> polar(k);
-  for (std::size_t i = 0; i < k; ++i) {
-    const Vec3d d = sub(area.faces[i].centroid, p);
-    const double x = dot(d, t1) * metric.shrink, y = dot(d, t2);
-    const double len = std::hypot(x, y);
-    const double r = area.faces[i].distance;
-    polar[i] = len > 0 ? std::array<double, 2>{r * x / len, r * y / len} : std::array<double, 2>{0, 0};
-  }
-  Generator rng(o.seed);
-  std::vector<std::uint32_t> seeds;
-  std::vector<std::int32_t> seed_of(k, -1);
-  double ring_radius = 0;
-  for (const FractureRing& ring : mat.rings) {
-    ring_radius += ring.spacing;
-    const double phase = 2 * kPi * rng.uniform();
-    for (unsigned i = 0; i < ring.points; ++i) {
-      const double angle = phase + 2 * kPi * (i + ring.jitter * (rng.uniform() - 0.5)) / ring.points;
-      const double r = (ring_radius + ring.jitter * ring.spacing * (rng.uniform() - 0.5)) * unit;
-      const double x = r * std::cos(angle), y = r * std::sin(angle);
-      std::size_t best = 0;
-      double best_d = std::numeric_limits<double>::infinity();
-      for (std::size_t j = 0; j < k; ++j) {
-        const double dx = polar[j][0] - x, dy = polar[j][1] - y;
-        const double d = dx * dx + dy * dy;
-        if (d < best_d) {
-          best_d = d;
-          best = j;
-        }
-      }
-      if (seed_of[best] < 0) {
-        seed_of[best] = static_cast<std::int32_t>(seeds.size());
-        seeds.push_back(static_cast<std::uint32_t>(best));
-      }
-    }
-  }
+  const Area area = broken_area(mesh, centre, p, frame, o.material, result, t);
+  const std::vector<std::uint32_t> seeds = scatter(area, p, frame, o.material, o.seed);
   result.seconds.scatter += seconds_since(t);
 
-  // ---- cells: each face of the area goes to its nearest break point along the surface ----
-  std::vector<std::int32_t> cell(k, -1);
-  {
-    using Item = std::tuple<double, std::int32_t, std::uint32_t>;  // distance, cell, area slot
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
-    std::vector<double> best(k, std::numeric_limits<double>::infinity());
-    for (std::size_t s = 0; s < seeds.size(); ++s) {
-      best[seeds[s]] = 0;
-      heap.emplace(0.0, static_cast<std::int32_t>(s), seeds[s]);
-    }
-    while (!heap.empty()) {
-      const auto [d, c, i] = heap.top();
-      heap.pop();
-      if (cell[i] >= 0) continue;
-      cell[i] = c;
-      for (Face g : mesh.faces(area.faces[i].face)) {
-        const auto it = area.slot.find(g.idx());
-        if (it == area.slot.end() || cell[it->second] >= 0) continue;
-        const double dg =
-            std::max(d, metric.length(sub(area.faces[it->second].centroid, area.faces[seeds[c]].centroid)));
-        if (dg < best[it->second]) {
-          best[it->second] = dg;
-          heap.emplace(dg, c, it->second);
-        }
-      }
-    }
-  }
-  std::vector<std::vector<Face>> cells(seeds.size());
-  for (std::size_t i = 0; i < k; ++i)
-    if (cell[i] >= 0) cells[static_cast<std::size_t>(cell[i])].push_back(area.faces[i].face);
+  std::vector<std::vector<Face>> faces_of_cell = cells(mesh, area, seeds, frame.metric);
   result.seconds.cut += seconds_since(t);
 
-  // ---- detach ----
-  result.shards.reserve(cells.size());
-  for (std::vector<Face>& faces : cells) {
-    if (faces.empty()) continue;
-    std::sort(faces.begin(), faces.end());
-    Shard shard;
-    shard.mesh = detach_faces(mesh, faces);
-    result.shards.push_back(std::move(shard));
-  }
+  result.shards = detach(mesh, faces_of_cell);
   if (bvh) bvh->update();
   result.seconds.detach += seconds_since(t);
 
-  // ---- per shard ----
-  for (Shard& shard : result.shards) measure_shard(shard, o);
+  solids(result.shards, o);
   result.seconds.hulls += seconds_since(t);
   return result;
 }

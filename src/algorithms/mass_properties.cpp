@@ -5,17 +5,14 @@
 #include <cstdio>
 #include <string>
 
+#include "format.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/error.h"
 
 namespace hedge {
 namespace {
 
-std::string number(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.9g", x);
-  return buffer;
-}
+using detail::number;
 
 void check_input(const SurfaceMesh& mesh, double density) {
   if (!std::isfinite(density) || density <= 0)

@@ -13,18 +13,6 @@ namespace hedge {
 
 namespace {
 
-Vec3d unit(const Vec3d& v) {
-  const double l = std::sqrt(dot(v, v));
-  return l > 0 && std::isfinite(l) ? v * (1 / l) : Vec3d{0, 0, 0};
-}
-
-// The angle at corner v between the directions to a and to b, in [0, pi]; 0 if degenerate.
-double corner_angle(const Vec3d& v, const Vec3d& a, const Vec3d& b) {
-  const Vec3d x = a - v, y = b - v;
-  const double s = std::sqrt(dot(cross(x, y), cross(x, y))), c = dot(x, y);
-  return (s > 0 || c != 0) ? std::atan2(s, c) : 0.0;
-}
-
 // Unit and area normals of every face slot.
 struct FaceNormals {
   std::vector<Vec3d> unit, area;
@@ -35,7 +23,7 @@ FaceNormals all_face_normals(const SurfaceMesh& m) {
   n.area.assign(m.face_slots(), Vec3d{0, 0, 0});
   for (Face f : m.faces()) {
     n.area[f.idx()] = area_vector(m, f);
-    n.unit[f.idx()] = unit(n.area[f.idx()]);
+    n.unit[f.idx()] = unit_or_zero(n.area[f.idx()]);
   }
   return n;
 }
@@ -60,7 +48,7 @@ Vec3d weighted(const SurfaceMesh& m, const FaceNormals& n, Face f, Halfedge out,
 
 }  // namespace
 
-Vec3 face_normal(const SurfaceMesh& mesh, Face f) { return to_float(unit(area_vector(mesh, f))); }
+Vec3 face_normal(const SurfaceMesh& mesh, Face f) { return to_float(unit_or_zero(area_vector(mesh, f))); }
 
 FaceProperty<Vec3> compute_face_normals(SurfaceMesh& mesh, std::string_view name) {
   FaceProperty<Vec3> prop = mesh.face_property<Vec3>(name);
@@ -91,7 +79,7 @@ VertexProperty<Vec3> compute_vertex_normals(SurfaceMesh& mesh, NormalWeighting w
       if (mesh.face(first).is_valid())
         sum += weighted(mesh, n, mesh.face(first), first, SurfaceMesh::twin(prev_out), weighting);
     }
-    prop[v] = to_float(unit(sum));
+    prop[v] = to_float(unit_or_zero(sum));
     mesh.mark_changed(v, ChangeEvent::vertex_data_changed);
   }
   mesh.changes().notify();
@@ -129,7 +117,7 @@ HalfedgeProperty<Vec3> compute_corner_normals(SurfaceMesh& mesh, double crease_d
     std::size_t wedge_begin = 0;  // in steps from start
     Vec3d sum{0, 0, 0};
     auto close_wedge = [&](std::size_t end) {
-      const Vec3 normal = to_float(unit(sum));
+      const Vec3 normal = to_float(unit_or_zero(sum));
       for (std::size_t s = wedge_begin; s < end; ++s) {
         const std::size_t i = (start + s) % k;
         if (mesh.face(outs[i]).is_valid()) prop[SurfaceMesh::twin(outs[(i + k - 1) % k])] = normal;

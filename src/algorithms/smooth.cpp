@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "hedge/algorithms/geometry.h"
 #include "hedge/error.h"
 
 namespace hedge {
@@ -36,23 +37,10 @@ void check(const SurfaceMesh& m, const SmoothOptions& o) {
                                 " corners (triangulate first)");
 }
 
-// The cotangent weight of every edge slot: half the sum of the cotangents of the angles opposite it,
-// clamped to zero; boundary edges have one angle.
-void cotangent_weights(const SurfaceMesh& m, const std::vector<Vec3d>& p, std::vector<double>& w) {
-  w.assign(m.edge_slots(), 0);
-  for (Face f : m.faces()) {
-    const Halfedge h0 = m.halfedge(f), h1 = m.next(h0), h2 = m.next(h1);
-    const Halfedge hs[3] = {h0, h1, h2};
-    for (const Halfedge h : hs) {
-      // The angle at the corner opposite h: at to_vertex(next(h)), between its two other sides.
-      const Vec3d a = p[m.from_vertex(h).idx()], b = p[m.to_vertex(h).idx()],
-                  c = p[m.to_vertex(m.next(h)).idx()];
-      const Vec3d u = a - c, v = b - c;
-      const Vec3d x = cross(u, v);
-      const double s = std::sqrt(dot(x, x));
-      if (s > 0) w[SurfaceMesh::edge(h).idx()] += 0.5 * dot(u, v) / s;
-    }
-  }
+// The cotangent weights (geometry.h) clamped to zero, so that every weight pulls: an edge between
+// two obtuse angles would otherwise push its ends apart.
+void clamped_cotangent_weights(const SurfaceMesh& m, const std::vector<Vec3d>& p, std::vector<double>& w) {
+  w = cotangent_weights(m, p);
   for (double& x : w) x = std::max(0.0, x);
 }
 
@@ -67,17 +55,9 @@ void smooth_implicit(const SurfaceMesh& m, const SmoothOptions& o, const std::ve
     if (moving[v.idx()] != 0) unknown[v.idx()] = n++;
   if (n == 0) return;
   std::vector<double> w;
-  cotangent_weights(m, p, w);
-  std::vector<double> mass(nv, 0);
+  clamped_cotangent_weights(m, p, w);
+  const std::vector<double> mass = vertex_areas(m, p);
   double edge_sum = 0;
-  for (Face f : m.faces()) {
-    const Halfedge h0 = m.halfedge(f);
-    const Vec3d a = p[m.to_vertex(h0).idx()], b = p[m.to_vertex(m.next(h0)).idx()],
-                c = p[m.from_vertex(h0).idx()];
-    const Vec3d x = cross(b - a, c - a);
-    const double third = std::sqrt(dot(x, x)) / 6;
-    for (Vertex v : m.vertices(f)) mass[v.idx()] += third;
-  }
   for (Edge e : m.edges()) {
     const Vec3d d = p[m.vertex(e, 0).idx()] - p[m.vertex(e, 1).idx()];
     edge_sum += std::sqrt(dot(d, d));
@@ -151,7 +131,7 @@ void smooth(SurfaceMesh& m, const SmoothOptions& o) {
   } else {
     std::vector<double> w;
     auto step = [&](double factor) {
-      if (o.method == SmoothMethod::cotangent) cotangent_weights(m, p, w);
+      if (o.method == SmoothMethod::cotangent) clamped_cotangent_weights(m, p, w);
       for (Vertex v : m.vertices()) {
         const std::size_t i = v.idx();
         next[i] = p[i];

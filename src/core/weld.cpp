@@ -20,13 +20,8 @@ std::uint64_t mix(std::uint64_t x) {
   return x;
 }
 
-// memcpy rather than std::bit_cast, which older standard libraries (emscripten's libc++) lack.
-std::uint32_t bits(float f) {
-  const float g = f == 0.0f ? 0.0f : f;
-  std::uint32_t out;
-  std::memcpy(&out, &g, sizeof(out));
-  return out;
-}
+// -0 and +0 weld: both get the bits of +0.
+std::uint32_t bits(float f) { return float_bits(f == 0.0f ? 0.0f : f); }
 
 std::vector<Index> weld_exact(std::span<const Vec3> p, std::vector<Vec3>& unique) {
   const std::size_t n = p.size();

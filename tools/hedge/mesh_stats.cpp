@@ -1,47 +1,10 @@
 #include "mesh_stats.h"
 
-#include <algorithm>
-#include <numeric>
-
+#include "hedge/algorithms/components.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/reorder.h"
 
 namespace hedge::cli {
-
-namespace {
-
-// Union-find with path halving; union by index keeps it simple and is fast enough for a CLI.
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), Index{0}); }
-  Index find(Index i) {
-    while (parent_[i] != i) {
-      parent_[i] = parent_[parent_[i]];
-      i = parent_[i];
-    }
-    return i;
-  }
-  void unite(Index a, Index b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<Index> parent_;
-};
-
-}  // namespace
-
-std::size_t count_components(const SurfaceMesh& mesh) {
-  DisjointSets sets(mesh.vertex_slots());
-  for (Edge e : mesh.edges()) sets.unite(mesh.vertex(e, 0).idx(), mesh.vertex(e, 1).idx());
-  std::size_t components = 0;
-  for (Vertex v : mesh.vertices()) {
-    if (!mesh.is_isolated(v) && sets.find(v.idx()) == v.idx()) ++components;
-  }
-  return components;
-}
 
 MeshStats compute_stats(const SurfaceMesh& mesh) {
   MeshStats s;
@@ -62,7 +25,7 @@ MeshStats compute_stats(const SurfaceMesh& mesh) {
   // left at their defaults unless validate() found nothing.
   if (!s.problems.empty()) return s;
   s.boundary_loops = mesh.boundary_loops().size();
-  s.components = count_components(mesh);
+  s.components = vertex_components(mesh).count;
   s.is_manifold = true;
   for (Vertex v : mesh.vertices()) {
     if (mesh.is_isolated(v)) {

@@ -41,9 +41,6 @@ struct MeshStats {
   std::vector<std::string> problems;
 };
 
-//! Counts components with a union-find over the edges. O(#V + #E).
-std::size_t count_components(const SurfaceMesh& mesh);
-
 //! Computes everything in MeshStats. O(#elements).
 MeshStats compute_stats(const SurfaceMesh& mesh);
 

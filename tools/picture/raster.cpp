@@ -5,10 +5,12 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
-#include <thread>
 
 #include "colors.h"
+#include "hedge/algorithms/components.h"
+#include "hedge/algorithms/curvature.h"
 #include "hedge/algorithms/geometry.h"
+#include "hedge/core/threads.h"
 #include "hedge/error.h"
 
 namespace hedge::picture {
@@ -30,72 +32,6 @@ struct Tri {
 
 enum EdgeClass : std::uint8_t { kNoLine = 0, kWire = 1, kFeature = 2, kBoundary = 3 };
 
-Vec3d unit_or_zero(const Vec3d& v) {
-  const double l = std::sqrt(dot(v, v));
-  return l > 0 && std::isfinite(l) ? v * (1 / l) : Vec3d{0, 0, 0};
-}
-
-// Connected components over faces sharing an edge; -> component per face slot.
-std::vector<Index> face_components(const SurfaceMesh& m) {
-  std::vector<Index> comp(m.face_slots(), kInvalidIndex);
-  std::vector<Face> stack;
-  Index next = 0;
-  for (Face seed : m.faces()) {
-    if (comp[seed.idx()] != kInvalidIndex) continue;
-    comp[seed.idx()] = next;
-    stack.push_back(seed);
-    while (!stack.empty()) {
-      const Face f = stack.back();
-      stack.pop_back();
-      for (Halfedge h : m.halfedges(f)) {
-        const Face g = m.face(SurfaceMesh::twin(h));
-        if (g.is_valid() && comp[g.idx()] == kInvalidIndex) {
-          comp[g.idx()] = next;
-          stack.push_back(g);
-        }
-      }
-    }
-    ++next;
-  }
-  return comp;
-}
-
-// Signed mean curvature per vertex slot from the cotangent Laplacian (0 on the boundary).
-std::vector<double> mean_curvature(const SurfaceMesh& m, const std::vector<Vec3>& vertex_normal) {
-  std::vector<Vec3d> lap(m.vertex_slots(), Vec3d{0, 0, 0});
-  std::vector<double> area(m.vertex_slots(), 0);
-  for (Face f : m.faces()) {
-    // Fan triangles, each adding its cotangent weights and a third of its area to its corners.
-    Vertex c[3];
-    const Halfedge h0 = m.halfedge(f);
-    c[0] = m.to_vertex(h0);
-    for (Halfedge h = m.next(h0); m.next(h) != h0; h = m.next(h)) {
-      c[1] = m.to_vertex(h);
-      c[2] = m.to_vertex(m.next(h));
-      const Vec3d p[3] = {to_double(m.position(c[0])), to_double(m.position(c[1])),
-                          to_double(m.position(c[2]))};
-      const double a2 = std::sqrt(dot(cross(p[1] - p[0], p[2] - p[0]), cross(p[1] - p[0], p[2] - p[0])));
-      if (!(a2 > 0)) continue;
-      for (int k = 0; k < 3; ++k) {
-        const int i = (k + 1) % 3, j = (k + 2) % 3;  // the side opposite corner k
-        const double cot = dot(p[i] - p[k], p[j] - p[k]) / a2;
-        lap[c[i].idx()] += (p[j] - p[i]) * (0.5 * cot);
-        lap[c[j].idx()] += (p[i] - p[j]) * (0.5 * cot);
-        area[c[k].idx()] += a2 / 6;
-      }
-    }
-  }
-  std::vector<double> h(m.vertex_slots(), 0);
-  for (Vertex v : m.vertices()) {
-    if (m.is_boundary(v) || !(area[v.idx()] > 0)) continue;
-    const Vec3d l = lap[v.idx()] * (1 / area[v.idx()]);
-    const double mag = 0.5 * std::sqrt(dot(l, l));
-    h[v.idx()] =
-        dot(l, to_double(vertex_normal[v.idx()])) < 0 ? mag : -mag;  // convex (outward normal): positive
-  }
-  return h;
-}
-
 // A diverging scale: -1 blue, 0 near white, +1 red.
 Rgb diverging(double t) {
   t = std::clamp(std::isfinite(t) ? t : 0.0, -1.0, 1.0);
@@ -114,18 +50,11 @@ struct Prepared {
   std::vector<Rgb> vertex_color;    // per vertex slot, when colours vary per vertex
 };
 
-// Runs fn(begin, end, chunk) over `threads` chunks of [0, n) in parallel (one chunk when n is small).
-// fn must not throw.
+// Runs fn(begin, end, chunk) over at most `threads` chunks of [0, n) in parallel (one chunk when n
+// is small), by the library's parallel-for. fn must not throw.
 template <typename Fn>
 void parallel_for(std::size_t n, unsigned threads, Fn&& fn) {
-  if (threads <= 1 || n < 8192) {
-    fn(std::size_t(0), n, 0u);
-    return;
-  }
-  std::vector<std::thread> pool;
-  for (unsigned k = 0; k < threads; ++k)
-    pool.emplace_back([&fn, n, threads, k] { fn(n * k / threads, n * (k + 1) / threads, k); });
-  for (std::thread& t : pool) t.join();
+  detail::parallel_ranges(n, fn, 8192, threads);
 }
 
 Prepared prepare(const SurfaceMesh& m, const Projection& proj, const RenderOptions& o, int s,
@@ -160,7 +89,7 @@ Prepared prepare(const SurfaceMesh& m, const Projection& proj, const RenderOptio
     for (std::size_t i = b; i < e; ++i)
       if (!m.is_deleted(Face(Index(i)))) p.face_normal[i] = to_float(area_vector(m, Face(Index(i))));
   });
-  if (o.shading == Shading::smooth || o.color_by == ColorBy::curvature) {
+  if (o.shading == Shading::smooth) {
     p.vertex_normal.assign(nv, Vec3{0, 0, 0});
     parallel_for(nv, threads, [&](std::size_t b, std::size_t e, unsigned) {
       for (std::size_t i = b; i < e; ++i) {
@@ -178,8 +107,8 @@ Prepared prepare(const SurfaceMesh& m, const Projection& proj, const RenderOptio
   if (o.color_by == ColorBy::face) {
     for (Face f : m.faces()) p.face_color[f.idx()] = categorical(f.idx());
   } else if (o.color_by == ColorBy::shard) {
-    const std::vector<Index> comp = face_components(m);
-    for (Face f : m.faces()) p.face_color[f.idx()] = categorical(comp[f.idx()]);
+    const Components comp = face_components(m);
+    for (Face f : m.faces()) p.face_color[f.idx()] = categorical(comp.label[f.idx()]);
   } else if (o.color_by == ColorBy::valence) {
     p.vertex_color.assign(m.vertex_slots(), o.base);
     // Regular valence from the faces around: a corner of a regular n-gon spans pi (n - 2) / n, so
@@ -199,7 +128,7 @@ Prepared prepare(const SurfaceMesh& m, const Projection& proj, const RenderOptio
       p.vertex_color[v.idx()] = diverging((double(m.valence(v)) - regular) / 3);
     }
   } else if (o.color_by == ColorBy::curvature) {
-    const std::vector<double> h = mean_curvature(m, p.vertex_normal);
+    const std::vector<double> h = mean_curvature(m);
     std::vector<double> mags;
     for (Vertex v : m.vertices()) mags.push_back(std::abs(h[v.idx()]));
     double scale = 1;
@@ -399,7 +328,7 @@ Image render(const SurfaceMesh& mesh, const Camera& camera, const RenderOptions&
   if (mesh.n_faces() == 0) throw InvalidInputError("nothing to draw: the mesh has no faces");
   const int s = o.supersample;
   const Projection proj(camera, o.width, o.height);
-  unsigned threads = o.threads != 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  unsigned threads = o.threads != 0 ? o.threads : max_threads();
   threads = std::clamp(threads, 1u, 16u);
   const Prepared p = prepare(mesh, proj, o, s, threads);
 
@@ -408,17 +337,10 @@ Image render(const SurfaceMesh& mesh, const Camera& camera, const RenderOptions&
   b.h = o.height * s;
   b.key.assign(std::size_t(b.w) * b.h, -std::numeric_limits<float>::infinity());
   b.color.assign(std::size_t(b.w) * b.h, o.background);
-  threads = std::min<unsigned>(threads, unsigned(b.h));
-  if (threads == 1) {
-    rasterise_band(mesh, proj, p, o, s, b, 0, b.h);
-  } else {
-    std::vector<std::thread> pool;
-    for (unsigned k = 0; k < threads; ++k) {
-      const int y0 = int(std::int64_t(b.h) * k / threads), y1 = int(std::int64_t(b.h) * (k + 1) / threads);
-      pool.emplace_back([&, y0, y1] { rasterise_band(mesh, proj, p, o, s, b, y0, y1); });
-    }
-    for (std::thread& t : pool) t.join();
-  }
+  detail::parallel_ranges(
+      std::size_t(b.h),
+      [&](std::size_t y0, std::size_t y1) { rasterise_band(mesh, proj, p, o, s, b, int(y0), int(y1)); }, 1,
+      threads);
   draw_marked(mesh, p, o, s, b);
 
   Image out(o.width, o.height, o.background);

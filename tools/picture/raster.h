@@ -53,7 +53,8 @@ struct RenderOptions {
   Rgb marked_color{200, 0, 200};
   //! Width of a line in pixels.
   double line_width = 1.0;
-  //! Threads for the bands of rows; 0 uses every core.
+  //! Most threads for the bands of rows (at most 16); 0: max_threads() (core/threads.h). Never
+  //! more than max_threads().
   unsigned threads = 0;
 };
 

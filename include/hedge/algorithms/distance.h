@@ -8,6 +8,10 @@
 // point's distance to the other surface is exact (FaceBvh::closest_point, in double); the
 // maximum over a finite sample is a lower bound of the true Hausdorff distance, which it
 // approaches as the sample grows (a sample misses at most what lies between its points).
+//
+// Threads: both functions split the points between up to min(options.threads, max_threads())
+// threads (core/threads.h), the calling thread one of them, and join them before they return.
+// Concurrent calls may share the meshes, which they only read.
 #pragma once
 
 #include <cstddef>
@@ -28,7 +32,8 @@ struct DistanceOptions {
   std::size_t samples = 100000;
   //! Seed of the draws.
   std::uint64_t seed = 1;
-  //! Threads measuring the points (1 or more; each takes an equal share). The results do not
+  //! Most threads measuring the points (1 or more; each takes an equal share), the calling thread
+  //! included; the process-wide max_threads() (core/threads.h) caps it too. The results do not
   //! depend on it.
   unsigned threads = 2;
 };

@@ -29,10 +29,10 @@
 // number of shards of the same number of faces, and the cost does not depend on the mesh's size or
 // resolution. With `absolute` true they are model units; a coarse mesh is then refined (step 4).
 //
-// Determinism: a seeded generator of its own (splitmix64) and an integer-to-double conversion of
-// its own (no std:: distribution, whose output differs between standard libraries), no global
-// state, ties broken by index and no hashed container iterated: the same mesh, impact, options and
-// seed give the same shards, bit for bit, on every run.
+// Determinism: the library's seeded generator (SplitMix64, algorithms/geometry.h) and its
+// integer-to-double conversion (no std:: distribution, whose output differs between standard
+// libraries), no global state, ties broken by index and no hashed container iterated: the same
+// mesh, impact, options and seed give the same shards, bit for bit, on every run.
 //
 // Properties: face properties (a material id) follow each face into its shard; vertex and corner
 // properties (UVs, normals) are interpolated by the splits (core/operations.h) and copied by the

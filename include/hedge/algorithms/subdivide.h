@@ -55,6 +55,10 @@
 // (std::bad_alloc) at any point, in any step, the mesh is left exactly as it was: same counts,
 // links, deletion flags, positions and property values. Its property arrays stay the same objects,
 // so handles to them stay valid, and see the refined mesh afterwards.
+// Threads: each step splits its passes over the elements between up to min(8, max_threads())
+// threads (core/threads.h), the calling thread one of them, when a pass has at least 32768
+// elements per thread; set_max_threads(1) keeps it on the calling thread. The result does not
+// depend on the number of threads, and every thread is joined before subdivide() returns.
 #pragma once
 
 #include "hedge/core/progress.h"

@@ -1,6 +1,21 @@
 // Light ranges over mesh elements for range-for: element ranges that skip deleted slots, and
 // circulators about a vertex or along a face loop. They hold a pointer to the mesh and a handle;
 // nothing is allocated.
+//
+// Edits while a range or circulator is in use:
+//  - An element range reads the deletion flags as it advances, over the slots that existed when it
+//    was made: an element deleted ahead of the iterator is skipped, elements added meanwhile are not
+//    visited, and the element at the iterator may be deleted (the loop goes on to the next live
+//    one). So "for (Face f : mesh.faces()) if (...) delete or split f" is safe.
+//  - A circulator follows the links (next, twin) as it goes and stops when it is back at its start.
+//    An edit that changes the links around its vertex or face (splitting, collapsing, flipping
+//    or deleting an element there) leaves it meaningless: it may visit elements twice, miss some
+//    or never end. Collect what it yields into a vector first, then edit. Edits elsewhere in the
+//    mesh do not affect it.
+//  - garbage_collection() (and renumber()) invalidates every range and circulator in progress:
+//    indices move, so neither may be used again; make new ones.
+// A range or circulator in use on one thread while another edits the mesh is a data race
+// (see surface_mesh.h for the thread rule).
 #pragma once
 
 #include <cstddef>

@@ -8,6 +8,15 @@
 //  - each face stores one half-edge; the face's corners start at that half-edge's target vertex;
 //  - deletion is a bit per element; garbage_collection() compacts.
 // Positions are the float x3 vertex property "v:position".
+//
+// Threads: a SurfaceMesh has no lock of its own. Any number of threads may read one mesh at once
+// (every const member, the ranges and circulators, the const free functions of the library), as
+// long as none edits it. An edit (any non-const member or function taking a non-const mesh:
+// operations, properties, garbage_collection(), the algorithms that change the mesh) needs the
+// mesh to itself: no other thread may read or edit it meanwhile. The change log lent to const
+// readers is the one exception to "const is a read": attaching, detaching and consuming through
+// watch_changes() count as edits (core/changes.h). Different meshes are independent. Functions
+// that start worker threads of their own say so in their header (core/threads.h lists them).
 #pragma once
 
 #include <array>

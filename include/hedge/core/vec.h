@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 
 namespace hedge {
 
@@ -92,9 +94,23 @@ inline VecN<T, 3> normalize(const VecN<T, 3>& a) {
   T n = norm(a);
   return n > T(0) ? a / n : a;
 }
+//! a scaled to length 1, or zero when its length is zero or not finite (a degenerate normal).
+template <typename T>
+inline VecN<T, 3> unit_or_zero(const VecN<T, 3>& a) {
+  const T n = norm(a);
+  return n > T(0) && std::isfinite(n) ? a * (T(1) / n) : VecN<T, 3>{0, 0, 0};
+}
 inline Vec3d to_double(const Vec3& v) { return {v.x, v.y, v.z}; }
 inline Vec3 to_float(const Vec3d& v) {
   return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
+}
+//! The bits of a float (memcpy rather than std::bit_cast, which older standard libraries such as
+//! emscripten's libc++ lack). For non-negative floats they order as the values do; -0 and +0
+//! differ.
+inline std::uint32_t float_bits(float f) {
+  std::uint32_t out;
+  std::memcpy(&out, &f, sizeof(out));
+  return out;
 }
 template <typename T, int N>
 inline bool is_finite(const VecN<T, N>& v) {
