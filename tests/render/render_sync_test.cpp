@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <random>
 
+#include "edits/random_edits.h"
 #include "hedge/core/operations.h"
 #include "hedge/io/io.h"
-#include "support/random_edits.h"
 #include "test_meshes.h"
 
 namespace hedge {

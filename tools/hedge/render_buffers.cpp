@@ -6,12 +6,12 @@
 #include <memory>
 
 #include "commands.h"
+#include "edits/random_edits.h"
 #include "hedge/render/render_sync.h"
 #include "load.h"
 #include "memory_budget.h"
 #include "mesh_stats.h"
 #include "numbers.h"
-#include "support/random_edits.h"
 
 namespace hedge::cli {
 

@@ -5,10 +5,10 @@
 #include <memory>
 
 #include "commands.h"
+#include "edits/random_edits.h"
 #include "load.h"
 #include "mesh_stats.h"
 #include "numbers.h"
-#include "support/random_edits.h"
 
 namespace hedge::cli {
 
