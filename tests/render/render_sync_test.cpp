@@ -602,6 +602,25 @@ TEST(RenderSync, GarbageCollectionRebuilds) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+TEST(RenderSync, FlipXNegatesTheNormalsToo) {
+  // A tetrahedron: unlike a flat grid's, some of its normals leave the x = 0 plane, so a missing
+  // negation shows.
+  SurfaceMesh m = build(test::tetrahedron());
+  const RenderSync plain(m, RenderOptions{.normals = NormalSource::computed});
+  const RenderSync flipped(m, RenderOptions{.normals = NormalSource::computed, .flip_x = true});
+  std::size_t off_plane = 0;
+  for (Halfedge h : m.halfedges()) {
+    if (m.is_boundary(h)) continue;
+    const Vec3 a = render_normal(plain, h), b = render_normal(flipped, h);
+    off_plane += std::abs(a.x) > 1e-3f;
+    EXPECT_EQ(b.x, -a.x);
+    EXPECT_EQ(b.y, a.y);
+    EXPECT_EQ(b.z, a.z);
+  }
+  EXPECT_GT(off_plane, 0u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
 TEST(RenderSync, WindingAndAxes) {
   SurfaceMesh m = build(test::grid(2, true));
   RenderSync ccw(m, RenderOptions{.normals = NormalSource::computed});
