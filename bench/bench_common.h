@@ -174,6 +174,21 @@ struct EditRng {
   }
 };
 
+//! kEditCount attempts of one edit, the same draws on every backend: each attempt draws a live
+//! element among the `slots()` there are then (redrawing those `deleted(i)` says are gone) and calls
+//! `edit(i)`, which says whether it changed the mesh. Returns the attempts that did.
+template <class Slots, class Deleted, class Edit>
+std::size_t edit_sequence(Slots&& slots, Deleted&& deleted, Edit&& edit) {
+  EditRng rng;
+  std::size_t done = 0;
+  for (std::size_t k = 0; k < kEditCount; ++k) {
+    const std::size_t n = slots();
+    const std::size_t i = rng.live_index(n, deleted);
+    if (i < n && edit(i)) ++done;
+  }
+  return done;
+}
+
 //! Element counts of a mesh, as its library reports them (live elements only).
 struct Counts {
   std::size_t v = 0, e = 0, f = 0;
@@ -184,9 +199,12 @@ struct Counts {
 enum class EditKind { collapse, split, flip };
 //! The element counts an edit sequence implies, whatever the library: every edit keeps the Euler
 //! characteristic; a collapse removes one vertex, a split adds one, a flip changes no count; a
-//! closed triangle mesh (3F = 2E) stays one. Returns an empty string if `after` agrees.
+//! closed triangle mesh (3F = 2E) stays one. `checksum` is the sequence's: the edits done, except
+//! for splits, which all succeed (no edge is ever deleted) and whose checksum is #V + #F. Returns an
+//! empty string if `after` agrees.
 inline std::string check_edit_counts(EditKind kind, const Counts& before, const Counts& after,
-                                     double successes) {
+                                     double checksum) {
+  const double successes = kind == EditKind::split ? static_cast<double>(kEditCount) : checksum;
   const long long k = std::llround(successes);
   const long long dv = kind == EditKind::collapse ? -k : kind == EditKind::split ? k : 0;
   std::string err;

@@ -150,25 +150,24 @@ double loop_op(Context& c) {
 //! Euler::collapse_edge. That collapses halfedge(edge(h)), which is h or its opposite; the
 //! connectivity is the same either way, and the survivor gets target(h)'s position, so the result
 //! matches hedge's from_vertex(h)-into-to_vertex(h). Returns the number of collapses done.
+HI halfedge_at(std::size_t i) { return HI(static_cast<SMesh::size_type>(i)); }
+EI edge_at(std::size_t i) { return EI(static_cast<SMesh::size_type>(i)); }
+
 double collapse_op(Context& c) {
   SMesh& m = edit_mesh(c);
-  EditRng rng;
-  std::size_t done = 0;
-  for (std::size_t k = 0; k < kEditCount; ++k) {
-    const std::size_t n = m.num_halfedges();  // includes removed ones (kept until collect_garbage)
-    const std::size_t i =
-        rng.live_index(n, [&](std::size_t j) { return m.is_removed(HI(static_cast<SMesh::size_type>(j))); });
-    if (i == n) continue;
-    const HI h(static_cast<SMesh::size_type>(i));
-    const EI e = m.edge(h);
-    if (CGAL::Euler::does_satisfy_link_condition(e, m)) {
-      const Kernel::Point_3 keep = m.point(m.target(h));
-      const VI v = CGAL::Euler::collapse_edge(e, m);
-      m.point(v) = keep;
-      ++done;
-    }
-  }
-  return static_cast<double>(done);
+  // num_halfedges() includes removed ones (kept until collect_garbage).
+  return static_cast<double>(edit_sequence([&] { return m.num_halfedges(); },
+                                           [&](std::size_t j) { return m.is_removed(halfedge_at(j)); },
+                                           [&](std::size_t i) {
+                                             const HI h = halfedge_at(i);
+                                             const EI e = m.edge(h);
+                                             if (!CGAL::Euler::does_satisfy_link_condition(e, m))
+                                               return false;
+                                             const Kernel::Point_3 keep = m.point(m.target(h));
+                                             const VI v = CGAL::Euler::collapse_edge(e, m);
+                                             m.point(v) = keep;
+                                             return true;
+                                           }));
 }
 
 //! Random edge (among the current ones), split at its midpoint so that the result matches hedge's
@@ -177,22 +176,21 @@ double collapse_op(Context& c) {
 //! #V + #F after the sequence.
 double split_op(Context& c) {
   SMesh& m = edit_mesh(c);
-  EditRng rng;
-  for (std::size_t k = 0; k < kEditCount; ++k) {
-    const std::size_t n = m.num_edges();
-    const std::size_t i =
-        rng.live_index(n, [&](std::size_t j) { return m.is_removed(EI(static_cast<SMesh::size_type>(j))); });
-    if (i == n) continue;
-    const HI h = m.halfedge(EI(static_cast<SMesh::size_type>(i)));  // a -> b
-    const Kernel::Point_3& a = m.point(m.source(h));
-    const Kernel::Point_3& b = m.point(m.target(h));
-    const Kernel::Point_3 mid(0.5f * (a.x() + b.x()), 0.5f * (a.y() + b.y()), 0.5f * (a.z() + b.z()));
-    const HI hnew = CGAL::Euler::split_edge(h, m);  // a -> v, then h: v -> b
-    m.point(m.target(hnew)) = mid;
-    if (!m.is_border(h)) CGAL::Euler::split_face(hnew, m.next(h), m);  // v -> tip of (a, v, b, c)
-    const HI o = m.opposite(h);                                        // b -> v, v -> a, a -> d, d -> b
-    if (!m.is_border(o)) CGAL::Euler::split_face(o, m.next(m.next(o)), m);
-  }
+  edit_sequence([&] { return m.num_edges(); }, [&](std::size_t j) { return m.is_removed(edge_at(j)); },
+                [&](std::size_t i) {
+                  const HI h = m.halfedge(edge_at(i));  // a -> b
+                  const Kernel::Point_3& a = m.point(m.source(h));
+                  const Kernel::Point_3& b = m.point(m.target(h));
+                  const Kernel::Point_3 mid(0.5f * (a.x() + b.x()), 0.5f * (a.y() + b.y()),
+                                            0.5f * (a.z() + b.z()));
+                  const HI hnew = CGAL::Euler::split_edge(h, m);  // a -> v, then h: v -> b
+                  m.point(m.target(hnew)) = mid;
+                  if (!m.is_border(h))
+                    CGAL::Euler::split_face(hnew, m.next(h), m);  // v -> tip of (a, v, b, c)
+                  const HI o = m.opposite(h);                     // b -> v, v -> a, a -> d, d -> b
+                  if (!m.is_border(o)) CGAL::Euler::split_face(o, m.next(m.next(o)), m);
+                  return true;
+                });
   return static_cast<double>(m.number_of_vertices() + m.number_of_faces());
 }
 
@@ -213,20 +211,13 @@ bool can_flip(const SMesh& m, EI e) {
 //! Random edge, the check above, then Euler::flip_edge. Returns the number of flips done.
 double flip_op(Context& c) {
   SMesh& m = edit_mesh(c);
-  EditRng rng;
-  std::size_t done = 0;
-  for (std::size_t k = 0; k < kEditCount; ++k) {
-    const std::size_t n = m.num_edges();
-    const std::size_t i =
-        rng.live_index(n, [&](std::size_t j) { return m.is_removed(EI(static_cast<SMesh::size_type>(j))); });
-    if (i == n) continue;
-    const EI e(static_cast<SMesh::size_type>(i));
-    if (can_flip(m, e)) {
-      CGAL::Euler::flip_edge(m.halfedge(e), m);
-      ++done;
-    }
-  }
-  return static_cast<double>(done);
+  return static_cast<double>(edit_sequence([&] { return m.num_edges(); },
+                                           [&](std::size_t j) { return m.is_removed(edge_at(j)); },
+                                           [&](std::size_t i) {
+                                             if (!can_flip(m, edge_at(i))) return false;
+                                             CGAL::Euler::flip_edge(m.halfedge(edge_at(i)), m);
+                                             return true;
+                                           }));
 }
 
 Counts counts(const SMesh& m) { return {m.number_of_vertices(), m.number_of_edges(), m.number_of_faces()}; }
@@ -239,8 +230,7 @@ std::string check_edit(const MeshBox& reference, const MeshBox& edited, double c
   if (!after.is_valid(false)) err += "Surface_mesh::is_valid failed; ";
   if (!CGAL::is_valid_polygon_mesh(after)) err += "is_valid_polygon_mesh failed; ";
   if (!CGAL::is_triangle_mesh(after)) err += "is_triangle_mesh failed; ";
-  const double successes = kind == EditKind::split ? static_cast<double>(kEditCount) : checksum;
-  return err + check_edit_counts(kind, counts(before), counts(after), successes);
+  return err + check_edit_counts(kind, counts(before), counts(after), checksum);
 }
 
 // ---- Decimation, on a copy in double coordinates (the quadrics lose too much in float). ----

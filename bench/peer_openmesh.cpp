@@ -146,22 +146,19 @@ std::unique_ptr<MeshBox> copy_mesh(const MeshBox& reference) {
 
 //! Random half-edge (deleted ones redrawn), is_collapse_ok, then collapse: from_vertex_handle(h)
 //! merges into to_vertex_handle(h), which keeps its position. Returns the number of collapses done.
+OMesh::HalfedgeHandle halfedge_at(std::size_t i) { return OMesh::HalfedgeHandle(static_cast<int>(i)); }
+OMesh::EdgeHandle edge_at(std::size_t i) { return OMesh::EdgeHandle(static_cast<int>(i)); }
+
 double collapse_op(Context& c) {
   OMesh& m = mesh_of(c);
-  EditRng rng;
-  std::size_t done = 0;
-  for (std::size_t k = 0; k < kEditCount; ++k) {
-    const std::size_t n = m.n_halfedges();  // includes deleted ones until garbage_collection
-    const std::size_t i = rng.live_index(
-        n, [&](std::size_t j) { return m.status(OMesh::HalfedgeHandle(static_cast<int>(j))).deleted(); });
-    if (i == n) continue;
-    const OMesh::HalfedgeHandle h(static_cast<int>(i));
-    if (m.is_collapse_ok(h)) {
-      m.collapse(h);
-      ++done;
-    }
-  }
-  return static_cast<double>(done);
+  // n_halfedges() includes deleted ones until garbage_collection.
+  return static_cast<double>(edit_sequence([&] { return m.n_halfedges(); },
+                                           [&](std::size_t j) { return m.status(halfedge_at(j)).deleted(); },
+                                           [&](std::size_t i) {
+                                             if (!m.is_collapse_ok(halfedge_at(i))) return false;
+                                             m.collapse(halfedge_at(i));
+                                             return true;
+                                           }));
 }
 
 //! Random edge (among the current ones), TriMesh split(eh, point) = add_vertex + the 2-to-4 split
@@ -169,19 +166,16 @@ double collapse_op(Context& c) {
 //! becomes two, as in hedge. Returns #V + #F after the sequence.
 double split_op(Context& c) {
   OMesh& m = mesh_of(c);
-  EditRng rng;
-  for (std::size_t k = 0; k < kEditCount; ++k) {
-    const std::size_t n = m.n_edges();
-    const std::size_t i = rng.live_index(
-        n, [&](std::size_t j) { return m.status(OMesh::EdgeHandle(static_cast<int>(j))).deleted(); });
-    if (i == n) continue;
-    const OMesh::EdgeHandle e(static_cast<int>(i));
-    const OMesh::HalfedgeHandle h = m.halfedge_handle(e, 0);
-    const OMesh::Point& a = m.point(m.from_vertex_handle(h));
-    const OMesh::Point& b = m.point(m.to_vertex_handle(h));
-    const OMesh::Point mid(0.5f * (a[0] + b[0]), 0.5f * (a[1] + b[1]), 0.5f * (a[2] + b[2]));
-    m.split(e, mid);
-  }
+  edit_sequence([&] { return m.n_edges(); }, [&](std::size_t j) { return m.status(edge_at(j)).deleted(); },
+                [&](std::size_t i) {
+                  const OMesh::EdgeHandle e = edge_at(i);
+                  const OMesh::HalfedgeHandle h = m.halfedge_handle(e, 0);
+                  const OMesh::Point& a = m.point(m.from_vertex_handle(h));
+                  const OMesh::Point& b = m.point(m.to_vertex_handle(h));
+                  const OMesh::Point mid(0.5f * (a[0] + b[0]), 0.5f * (a[1] + b[1]), 0.5f * (a[2] + b[2]));
+                  m.split(e, mid);
+                  return true;
+                });
   return static_cast<double>(m.n_vertices() + m.n_faces());
 }
 
@@ -224,20 +218,13 @@ double sqrt3_op(Context& c) {
 //! Random edge, is_flip_ok, then flip. Returns the number of flips done.
 double flip_op(Context& c) {
   OMesh& m = mesh_of(c);
-  EditRng rng;
-  std::size_t done = 0;
-  for (std::size_t k = 0; k < kEditCount; ++k) {
-    const std::size_t n = m.n_edges();
-    const std::size_t i = rng.live_index(
-        n, [&](std::size_t j) { return m.status(OMesh::EdgeHandle(static_cast<int>(j))).deleted(); });
-    if (i == n) continue;
-    const OMesh::EdgeHandle e(static_cast<int>(i));
-    if (m.is_flip_ok(e)) {
-      m.flip(e);
-      ++done;
-    }
-  }
-  return static_cast<double>(done);
+  return static_cast<double>(edit_sequence([&] { return m.n_edges(); },
+                                           [&](std::size_t j) { return m.status(edge_at(j)).deleted(); },
+                                           [&](std::size_t i) {
+                                             if (!m.is_flip_ok(edge_at(i))) return false;
+                                             m.flip(edge_at(i));
+                                             return true;
+                                           }));
 }
 
 //! Live element counts (n_vertices() etc. include deleted elements until garbage_collection).
@@ -249,25 +236,26 @@ Counts counts(const OMesh& m) {
   return n;
 }
 
+//! The first line of what OpenMesh's MeshCheckerT finds wrong with `m`, or "" when nothing.
+std::string mesh_checker_problem(const OMesh& m) {
+  std::ostringstream log;
+  if (OpenMesh::Utils::MeshCheckerT<OMesh>(m).check(OpenMesh::Utils::MeshCheckerT<OMesh>::CHECK_ALL, log))
+    return "";
+  const std::string first = log.str();
+  return "MeshCheckerT::check failed: " + first.substr(0, first.find('\n')) + "; ";
+}
+
 template <EditKind kind>
 std::string check_edit(const MeshBox& reference, const MeshBox& edited, double checksum) {
   const OMesh& before = static_cast<const OMBox&>(reference).m;
   const OMesh& after = static_cast<const OMBox&>(edited).m;
-  std::string err;
-  std::ostringstream log;
-  if (!OpenMesh::Utils::MeshCheckerT<OMesh>(after).check(OpenMesh::Utils::MeshCheckerT<OMesh>::CHECK_ALL,
-                                                         log)) {
-    std::string first = log.str();
-    first = first.substr(0, first.find('\n'));
-    err = "MeshCheckerT::check failed: " + first + "; ";
-  }
+  std::string err = mesh_checker_problem(after);
   for (auto f : after.faces())
     if (after.valence(f) != 3) {
       err += "a face of " + std::to_string(after.valence(f)) + " vertices; ";
       break;
     }
-  const double successes = kind == EditKind::split ? static_cast<double>(kEditCount) : checksum;
-  return err + check_edit_counts(kind, counts(before), counts(after), successes);
+  return err + check_edit_counts(kind, counts(before), counts(after), checksum);
 }
 
 //! DecimaterT with ModQuadricT as its only module, no error limit, down to the common target vertex
@@ -298,13 +286,7 @@ Input decimate_result(const MeshBox& edited) {
 }
 
 std::string check_decimate(const MeshBox&, const MeshBox& edited, double) {
-  const OMesh& m = static_cast<const OMBox&>(edited).m;
-  std::ostringstream log;
-  if (!OpenMesh::Utils::MeshCheckerT<OMesh>(m).check(OpenMesh::Utils::MeshCheckerT<OMesh>::CHECK_ALL, log)) {
-    std::string first = log.str();
-    return "MeshCheckerT::check failed: " + first.substr(0, first.find('\n')) + "; ";
-  }
-  return "";
+  return mesh_checker_problem(static_cast<const OMBox&>(edited).m);
 }
 
 }  // namespace

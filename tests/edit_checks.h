@@ -11,7 +11,7 @@
 
 #include "hedge/core/build.h"
 #include "hedge/core/surface_mesh.h"
-#include "support/random_edits.h"
+#include "edits/random_edits.h"
 #include "test_meshes.h"
 
 namespace hedge::test {
@@ -80,7 +80,7 @@ inline void expect_corner_uv_matches_position(const SurfaceMesh& m) {
     }
 }
 
-// Calls check(m) on m as it is and after each of `steps` seeded random edits (support/random_edits.h).
+// Calls check(m) on m as it is and after each of `steps` seeded random edits (tools/edits/random_edits.h).
 template <typename Check>
 void after_random_edits(SurfaceMesh& m, std::uint64_t seed, int steps, Check&& check) {
   RandomEditor editor(m, seed);

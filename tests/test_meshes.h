@@ -6,6 +6,7 @@
 
 #include "hedge/core/build.h"
 #include "hedge/core/indexed_mesh.h"
+#include "hedge/core/surface_mesh.h"
 
 namespace hedge::test {
 
@@ -71,6 +72,14 @@ inline IndexedMesh triangle_lattice(int n) {
       }
     }
   return in;
+}
+
+//! The first edge of `m` for which `pick(e)` holds, or an invalid edge.
+template <typename Pick>
+Edge first_edge(const SurfaceMesh& m, Pick&& pick) {
+  for (Edge e : m.edges())
+    if (pick(e)) return e;
+  return Edge();
 }
 
 inline std::string data_path(const std::string& name) { return std::string(HEDGE_DATA_DIR) + "/" + name; }

@@ -5,8 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "core_private/small_vector.h"
 #include "hedge/algorithms/locate.h"
-#include "hedge/core/small_vector.h"
 #include "hedge/error.h"
 #include "locate_internal.h"
 

@@ -6,8 +6,8 @@
 #include <utility>
 
 #include "hedge/core/operations.h"
-#include "hedge/core/small_vector.h"
 #include "operations_internal.h"
+#include "small_vector.h"
 
 namespace hedge {
 

@@ -72,20 +72,12 @@ IndexedMesh read_indexed(std::string_view data, FileFormat format, const std::st
 }
 
 std::string write_indexed(const IndexedMesh& mesh, FileFormat format, const WriteOptions& options) {
-  switch (format) {
-    case FileFormat::obj:
-      return write_obj(mesh, options);
-    case FileFormat::off:
-      return write_off(mesh, options);
-    case FileFormat::ply:
-      return write_ply(mesh, options);
-    case FileFormat::stl:
-      return write_stl(mesh, options);
-    case FileFormat::gltf:
-      return write_gltf(mesh, options);
-    case FileFormat::glb:
-      return write_glb(mesh, options);
-  }
+  using Writer = std::string (*)(const IndexedMesh&, const WriteOptions&);
+  static constexpr std::pair<FileFormat, Writer> kWriters[] = {
+      {FileFormat::obj, write_obj}, {FileFormat::off, write_off},   {FileFormat::ply, write_ply},
+      {FileFormat::stl, write_stl}, {FileFormat::gltf, write_gltf}, {FileFormat::glb, write_glb}};
+  for (const auto& [f, write] : kWriters)
+    if (f == format) return write(mesh, options);
   throw InvalidInputError("unknown format");
 }
 

@@ -143,11 +143,17 @@ class ObjReader {
     return v;
   }
 
-  void read_position() {
+  //! The three numbers of a `statement` ("v", "vn").
+  Vec3 read_vec3(const char* statement) {
     Vec3 v;
-    v.x = read_number("v", 0);
-    v.y = read_number("v", 1);
-    v.z = read_number("v", 2);
+    v.x = read_number(statement, 0);
+    v.y = read_number(statement, 1);
+    v.z = read_number(statement, 2);
+    return v;
+  }
+
+  void read_position() {
+    const Vec3 v = read_vec3("v");
     if (!is_finite(v))
       fail("vertex " + std::to_string(mesh_.positions.size()) + " has a non-finite coordinate");
     mesh_.positions.push_back(v);
@@ -167,10 +173,7 @@ class ObjReader {
   }
 
   void read_normal() {
-    Vec3 n;
-    n.x = read_number("vn", 0);
-    n.y = read_number("vn", 1);
-    n.z = read_number("vn", 2);
+    const Vec3 n = read_vec3("vn");
     if (!is_finite(n)) fail("normal " + std::to_string(mesh_.normals.size()) + " has a non-finite component");
     mesh_.normals.push_back(n);
     skip_line();

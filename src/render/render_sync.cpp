@@ -139,35 +139,36 @@ void RenderSync::fill_vertex(Vertex v, Halfedge h, float* out) const {
   out[at++] = sx * p.x;
   out[at++] = p.y;
   out[at++] = p.z;
-  if (layout_.normal >= 0) {
-    const bool from_corner = static_cast<bool>(h_normal_);
-    if (!from_corner || h.is_valid()) {
-      const Vec3 n = from_corner ? h_normal_[h] : v_normal_ ? v_normal_[v] : vertex_normal_[v.idx()];
-      out[at] = sx * n.x;
-      out[at + 1] = n.y;
-      out[at + 2] = n.z;
-    }
-    at += 3;
-  }
-  if (layout_.texcoord >= 0) {
-    const bool from_corner = static_cast<bool>(h_texcoord_);
-    if (!from_corner || h.is_valid()) {
-      const Vec2 t = from_corner ? h_texcoord_[h] : v_texcoord_[v];
-      out[at] = t.x;
-      out[at + 1] = t.y;
-    }
-    at += 2;
-  }
-  if (layout_.color >= 0) {
-    const bool from_corner = static_cast<bool>(h_color_);
-    if (!from_corner || h.is_valid()) {
-      const Color c = from_corner ? h_color_[h] : v_color_[v];
-      out[at] = c.r;
-      out[at + 1] = c.g;
-      out[at + 2] = c.b;
-      out[at + 3] = c.a;
-    }
-  }
+  // An attribute from its corner property when the mesh has one (written only where h is valid),
+  // else from the vertex; its `width` floats keep their room in the vertex either way.
+  auto attribute = [&](std::int32_t offset, std::uint32_t width, const auto& corner, auto from_vertex,
+                       auto write) {
+    if (offset < 0) return;
+    const bool from_corner = static_cast<bool>(corner);
+    if (!from_corner || h.is_valid()) write(from_corner ? corner[h] : from_vertex(), out + at);
+    at += width;
+  };
+  attribute(
+      layout_.normal, 3, h_normal_, [&] { return v_normal_ ? v_normal_[v] : vertex_normal_[v.idx()]; },
+      [&](const Vec3& n, float* o) {
+        o[0] = sx * n.x;
+        o[1] = n.y;
+        o[2] = n.z;
+      });
+  attribute(
+      layout_.texcoord, 2, h_texcoord_, [&] { return v_texcoord_[v]; },
+      [](const Vec2& t, float* o) {
+        o[0] = t.x;
+        o[1] = t.y;
+      });
+  attribute(
+      layout_.color, 4, h_color_, [&] { return v_color_[v]; },
+      [](const Color& c, float* o) {
+        o[0] = c.r;
+        o[1] = c.g;
+        o[2] = c.b;
+        o[3] = c.a;
+      });
 }
 
 void RenderSync::read_vertex(Index rv, float* out) const {

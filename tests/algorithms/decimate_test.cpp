@@ -55,6 +55,17 @@ void expect_same(const SurfaceMesh& a, const SurfaceMesh& b) {
   EXPECT_EQ(a.halfedge_face_array(), b.halfedge_face_array());
 }
 
+// decimate(m) to `target` vertices must throw an InvalidInputError that names `where`; `what` says
+// what the input was, for the failure message.
+void expect_refused(SurfaceMesh& m, std::size_t target, const std::string& where, const std::string& what) {
+  try {
+    decimate(m, {.target_vertices = target});
+    ADD_FAILURE() << "no error for " << what;
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << e.what();
+  }
+}
+
 TEST(Decimate, ReachesAVertexTargetWithoutFlippingFaces) {
   const SurfaceMesh input = read_mesh(test::data_path("spot_triangulated.obj"));
   SurfaceMesh m = input;
@@ -286,22 +297,12 @@ TEST(Decimate, AnEmptyMeshAndAMetTargetChangeNothing) {
 TEST(Decimate, RefusesPolygonsNaNsAndBadOptionsAndChangesNothing) {
   SurfaceMesh quads = build(test::grid(4, false));
   const SurfaceMesh quads_before = quads;
-  try {
-    decimate(quads, {.target_vertices = 5});
-    ADD_FAILURE() << "no error for a quad mesh";
-  } catch (const InvalidInputError& e) {
-    EXPECT_NE(std::string(e.what()).find("face 0"), std::string::npos) << e.what();
-  }
+  expect_refused(quads, 5, "face 0", "a quad mesh");
   expect_same(quads, quads_before);
 
   SurfaceMesh nan = build(test::grid(4, true));
   nan.position(Vertex(7)).y = std::numeric_limits<float>::quiet_NaN();
-  try {
-    decimate(nan, {.target_vertices = 5});
-    ADD_FAILURE() << "no error for a NaN position";
-  } catch (const InvalidInputError& e) {
-    EXPECT_NE(std::string(e.what()).find("vertex 7"), std::string::npos) << e.what();
-  }
+  expect_refused(nan, 5, "vertex 7", "a NaN position");
 
   SurfaceMesh m = build(test::grid(4, true));
   const SurfaceMesh before = m;
@@ -346,12 +347,7 @@ TEST(Decimate, RefusesANonManifoldVertex) {
   m.set_halfedge(v[4], M::twin(b34));
   ASSERT_FALSE(m.is_manifold(v[0]));
   const SurfaceMesh before = m;
-  try {
-    decimate(m, {.target_vertices = 3});
-    ADD_FAILURE() << "no error for a non-manifold vertex";
-  } catch (const InvalidInputError& e) {
-    EXPECT_NE(std::string(e.what()).find("vertex 0"), std::string::npos) << e.what();
-  }
+  expect_refused(m, 3, "vertex 0", "a non-manifold vertex");
   expect_same(m, before);
 }
 

@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "edits/random_edits.h"
 #include "hedge/algorithms/locate.h"
 #include "hedge/core/build.h"
 #include "hedge/core/operations.h"
 #include "hedge/error.h"
 #include "locate_reference.h"
-#include "support/random_edits.h"
 #include "test_meshes.h"
 
 namespace hedge {

@@ -192,12 +192,7 @@ TEST(ChangeLog, OperationsMarkTheFacesTheyTouch) {
   int notified = 0;
   m.changes().subscribe(ChangeEvent::all, [&](ChangeEvent) { ++notified; });
 
-  Edge e;
-  for (Edge c : m.edges())
-    if (can_flip(m, c)) {
-      e = c;
-      break;
-    }
+  const Edge e = test::first_edge(m, [&](Edge c) { return can_flip(m, c); });
   ASSERT_TRUE(e.is_valid());
   const Face f0 = m.face(e, 0), f1 = m.face(e, 1);
   flip(m, e);

@@ -19,13 +19,14 @@
 #include "hedge/core/build.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "test_meshes.h"
 
 namespace hedge {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string data_path(const std::string& name) { return std::string(HEDGE_DATA_DIR) + "/" + name; }
+using test::data_path;
 
 // A fresh folder per test, removed afterwards.
 class FileTest : public ::testing::Test {

@@ -1,5 +1,5 @@
 // Hostile glTF files: what src/io/gltf_guard.cpp refuses before tinygltf parses, and the reader's
-// memory budget (src/io/gltf.cpp). Each file here is one an attacker could send.
+// memory budget (src/io/gltf_read.cpp). Each file here is one an attacker could send.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>

@@ -10,45 +10,21 @@
 
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "support/io_checks.h"
+#include "test_meshes.h"
 
 namespace hedge {
 namespace {
 
-std::string data_path(const std::string& name) { return std::string(HEDGE_DATA_DIR) + "/" + name; }
+using test::data_path;
+using test::expect_same;
+using test::same_bits;
+using Counts = test::FileCounts;
 
 IndexedMesh read_data(const std::string& name) { return read_obj(read_file(data_path(name)), name); }
 
-// Bitwise equality, so that -0 vs +0 or a changed last bit is caught.
-template <typename T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
-void expect_same(const IndexedMesh& a, const IndexedMesh& b) {
-  EXPECT_TRUE(same_bits(a.positions, b.positions));
-  EXPECT_EQ(a.indices, b.indices);
-  EXPECT_EQ(a.face_sizes, b.face_sizes);
-  EXPECT_TRUE(same_bits(a.texcoords, b.texcoords));
-  EXPECT_EQ(a.texcoord_indices, b.texcoord_indices);
-  EXPECT_TRUE(same_bits(a.normals, b.normals));
-  EXPECT_EQ(a.normal_indices, b.normal_indices);
-}
-
-// Runs `f`, expecting an IoError whose message contains `text` and whose line is `line`.
-template <typename F>
-void expect_io_error(F&& f, const std::string& text, std::uint64_t line) {
-  try {
-    f();
-    ADD_FAILURE() << "no IoError; expected one containing \"" << text << "\"";
-  } catch (const IoError& e) {
-    EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
-    EXPECT_EQ(e.line(), line) << e.what();
-    EXPECT_EQ(e.path(), "model.obj");
-  }
-}
-
 void expect_obj_error(const std::string& text, const std::string& message, std::uint64_t line) {
-  expect_io_error([&] { read_obj(text, "model.obj"); }, message, line);
+  test::expect_io_error([&] { read_obj(text, "model.obj"); }, message, line, "model.obj");
 }
 
 TEST(ObjRead, TetrahedronWithNormals) {
@@ -95,19 +71,11 @@ TEST(ObjRead, TriangulatedWithTextureCoordinates) {
   EXPECT_EQ(m.texcoord_indices.size(), 3u * 5856u);
 }
 
-struct Counts {
-  const char* file;
-  std::size_t vertices, faces, corners;
-};
-
 class ObjDefectFiles : public ::testing::TestWithParam<Counts> {};
 
 TEST_P(ObjDefectFiles, CountsMatchTheShippedDescription) {
   const Counts c = GetParam();
-  const IndexedMesh m = read_data(c.file);
-  EXPECT_EQ(m.positions.size(), c.vertices);
-  EXPECT_EQ(m.face_count(), c.faces);
-  EXPECT_EQ(m.indices.size(), c.corners);
+  test::expect_counts(read_data(c.file), c);
 }
 
 INSTANTIATE_TEST_SUITE_P(Data, ObjDefectFiles,

@@ -6,42 +6,27 @@
 
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "support/io_checks.h"
+#include "test_meshes.h"
 
 namespace hedge {
 namespace {
 
-std::string data_path(const std::string& name) { return std::string(HEDGE_DATA_DIR) + "/" + name; }
+using test::data_path;
+using Counts = test::FileCounts;
 
 IndexedMesh read_data(const std::string& name) { return read_off(read_file(data_path(name)), name); }
 
-template <typename F>
-void expect_io_error(F&& f, const std::string& text, std::uint64_t line) {
-  try {
-    f();
-    ADD_FAILURE() << "no IoError; expected one containing \"" << text << "\"";
-  } catch (const IoError& e) {
-    EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
-    EXPECT_EQ(e.line(), line) << e.what();
-  }
-}
-
 void expect_off_error(const std::string& text, const std::string& message, std::uint64_t line) {
-  expect_io_error([&] { read_off(text, "m.off"); }, message, line);
+  test::expect_io_error([&] { read_off(text, "m.off"); }, message, line, "m.off");
 }
-
-struct Counts {
-  const char* file;
-  std::size_t vertices, faces, corners;
-};
 
 class OffFiles : public ::testing::TestWithParam<Counts> {};
 
 TEST_P(OffFiles, CountsMatchTheShippedDescription) {
   const Counts c = GetParam();
   const IndexedMesh m = read_data(c.file);
-  EXPECT_EQ(m.positions.size(), c.vertices);
-  EXPECT_EQ(m.face_count(), c.faces);
-  EXPECT_EQ(m.indices.size(), c.corners);
+  test::expect_counts(m, c);
   EXPECT_EQ(m.is_triangles(), c.corners == 3 * c.faces);
 }
 

@@ -6,34 +6,23 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 #include "io/io_errors.h"
+#include "support/io_checks.h"
+#include "test_meshes.h"
 
 namespace hedge {
 namespace {
 
-std::string data_path(const std::string& name) { return std::string(HEDGE_DATA_DIR) + "/" + name; }
+using test::data_path;
+using test::expect_same;
 
 IndexedMesh read_data(const std::string& name) { return read_ply(read_file(data_path(name)), name); }
-
-template <typename T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
-void expect_same(const IndexedMesh& a, const IndexedMesh& b) {
-  EXPECT_TRUE(same_bits(a.positions, b.positions));
-  EXPECT_EQ(a.indices, b.indices);
-  EXPECT_EQ(a.face_sizes, b.face_sizes);
-  EXPECT_TRUE(same_bits(a.texcoords, b.texcoords));
-  EXPECT_EQ(a.texcoord_indices, b.texcoord_indices);
-  EXPECT_TRUE(same_bits(a.normals, b.normals));
-  EXPECT_EQ(a.normal_indices, b.normal_indices);
-}
 
 // A value of a PLY body: its type letter (b B h H i I f d, as Python's struct) and its value.
 struct Val {
@@ -49,37 +38,25 @@ void put(std::string& out, T v, bool big) {
   out.append(b, sizeof(T));
 }
 
+// `value` as a T, in the byte order `big` says.
+template <typename T>
+void put_as(std::string& out, double value, bool big) {
+  put(out, static_cast<T>(value), big);
+}
+
 std::string encode(const std::vector<Val>& values, bool big) {
+  // The type letters of PLY's scalar types, as Python's struct spells them.
+  static const std::map<char, void (*)(std::string&, double, bool)> kPut = {
+      {'b', put_as<std::int8_t>},   {'B', put_as<std::uint8_t>}, {'h', put_as<std::int16_t>},
+      {'H', put_as<std::uint16_t>}, {'i', put_as<std::int32_t>}, {'I', put_as<std::uint32_t>},
+      {'f', put_as<float>},         {'d', put_as<double>}};
   std::string out;
   for (const Val& v : values) {
-    switch (v.type) {
-      case 'b':
-        put(out, static_cast<std::int8_t>(v.value), big);
-        break;
-      case 'B':
-        put(out, static_cast<std::uint8_t>(v.value), big);
-        break;
-      case 'h':
-        put(out, static_cast<std::int16_t>(v.value), big);
-        break;
-      case 'H':
-        put(out, static_cast<std::uint16_t>(v.value), big);
-        break;
-      case 'i':
-        put(out, static_cast<std::int32_t>(v.value), big);
-        break;
-      case 'I':
-        put(out, static_cast<std::uint32_t>(v.value), big);
-        break;
-      case 'f':
-        put(out, static_cast<float>(v.value), big);
-        break;
-      case 'd':
-        put(out, v.value, big);
-        break;
-      default:
-        ADD_FAILURE() << "bad type letter";
-    }
+    const auto it = kPut.find(v.type);
+    if (it == kPut.end())
+      ADD_FAILURE() << "bad type letter";
+    else
+      it->second(out, v.value, big);
   }
   return out;
 }

@@ -10,11 +10,12 @@
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 #include "io/io_errors.h"
+#include "test_meshes.h"
 
 namespace hedge {
 namespace {
 
-std::string data_path(const std::string& name) { return std::string(HEDGE_DATA_DIR) + "/" + name; }
+using test::data_path;
 
 using test::catch_io_error;
 

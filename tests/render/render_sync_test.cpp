@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <random>
 
+#include "edits/random_edits.h"
 #include "hedge/core/operations.h"
 #include "hedge/io/io.h"
-#include "support/random_edits.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -155,6 +155,14 @@ void expect_matches_fresh(const RenderSync& rs) {
     }
 }
 
+// What every sync must leave: the consumer's mirror equal to the buffers, the buffers consistent
+// with themselves and with a fresh RenderSync of the same mesh.
+void expect_in_sync(const Mirror& mirror, const RenderSync& rs) {
+  mirror.expect_equal(rs);
+  expect_consistent(rs);
+  expect_matches_fresh(rs);
+}
+
 // A face whose removal is legal and whose corners are all interior.
 Face removable_face(const SurfaceMesh& m) {
   for (Face f : m.faces()) {
@@ -213,12 +221,7 @@ TEST(RenderSync, FlipRewritesOnlyItsTwoTriangles) {
   RenderSync rs(m, RenderOptions{.normals = NormalSource::none});
   Mirror mirror;
   mirror.apply(rs, rs.last_result());
-  Edge e;
-  for (Edge c : m.edges())
-    if (can_flip(m, c)) {
-      e = c;
-      break;
-    }
+  const Edge e = test::first_edge(m, [&](Edge c) { return can_flip(m, c); });
   ASSERT_TRUE(e.is_valid());
   const SlotRange a = rs.triangles(m.face(e, 0)), b = rs.triangles(m.face(e, 1));
   ASSERT_TRUE(flip(m, e).is_valid());
@@ -236,9 +239,7 @@ TEST(RenderSync, FlipRewritesOnlyItsTwoTriangles) {
   EXPECT_EQ(r.index_bytes, 24u);
   EXPECT_EQ(rs.triangles(m.face(e, 0)).count, 1u);
   mirror.apply(rs, r);
-  mirror.expect_equal(rs);
-  expect_consistent(rs);
-  expect_matches_fresh(rs);
+  expect_in_sync(mirror, rs);
   EXPECT_TRUE(m.validate().empty());
 }
 
@@ -265,9 +266,7 @@ TEST(RenderSync, MovedVertexRewritesItsRenderVerticesAndNeighbourNormals) {
     EXPECT_TRUE(written) << "render vertex " << rv;
   }
   mirror.apply(rs, r);
-  mirror.expect_equal(rs);
-  expect_consistent(rs);
-  expect_matches_fresh(rs);
+  expect_in_sync(mirror, rs);
   EXPECT_TRUE(m.validate().empty());
 }
 
@@ -291,9 +290,7 @@ void random_edit_run(SurfaceMesh m, const RenderOptions& options, std::size_t st
     mirror.apply(rs, rs.sync());
     if (step % 25 == 0 || step + 1 == steps) {
       SCOPED_TRACE("step " + std::to_string(step));
-      mirror.expect_equal(rs);
-      expect_consistent(rs);
-      expect_matches_fresh(rs);
+      expect_in_sync(mirror, rs);
     }
   }
   EXPECT_TRUE(m.validate().empty());
@@ -383,9 +380,7 @@ TEST(RenderSync, ImportedNormalsFollowAMovedVertexByDefault) {
   for (Halfedge o : m.halfedges(neighbour))
     expect_near(render_normal(rs, SurfaceMesh::twin(o)), tilted, "the neighbour");
   EXPECT_EQ(render_normal(rs, far_corner), (Vec3{0, 0.6f, 0.8f}));
-  mirror.expect_equal(rs);
-  expect_consistent(rs);
-  expect_matches_fresh(rs);
+  expect_in_sync(mirror, rs);
   EXPECT_TRUE(m.validate().empty());
 }
 
@@ -604,6 +599,25 @@ TEST(RenderSync, GarbageCollectionRebuilds) {
   EXPECT_TRUE(r.full);
   EXPECT_EQ(rs.free_triangle_slots(), 0u);
   expect_consistent(rs);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(RenderSync, FlipXNegatesTheNormalsToo) {
+  // A tetrahedron: unlike a flat grid's, some of its normals leave the x = 0 plane, so a missing
+  // negation shows.
+  SurfaceMesh m = build(test::tetrahedron());
+  const RenderSync plain(m, RenderOptions{.normals = NormalSource::computed});
+  const RenderSync flipped(m, RenderOptions{.normals = NormalSource::computed, .flip_x = true});
+  std::size_t off_plane = 0;
+  for (Halfedge h : m.halfedges()) {
+    if (m.is_boundary(h)) continue;
+    const Vec3 a = render_normal(plain, h), b = render_normal(flipped, h);
+    off_plane += std::abs(a.x) > 1e-3f;
+    EXPECT_EQ(b.x, -a.x);
+    EXPECT_EQ(b.y, a.y);
+    EXPECT_EQ(b.z, a.z);
+  }
+  EXPECT_GT(off_plane, 0u);
   EXPECT_TRUE(m.validate().empty());
 }
 

@@ -1,6 +1,5 @@
 // hedge convert IN OUT: read, build (repairing unless --strict) and write; formats by extension.
 #include <iostream>
-#include <memory>
 
 #include "commands.h"
 #include "hedge/algorithms/reorder.h"
@@ -35,22 +34,23 @@ int run_convert(const ConvertOptions& options) {
   return kExitOk;
 }
 
-}  // namespace
-
-Command add_convert_command(CLI::App& parent) {
-  auto options = std::make_shared<ConvertOptions>();
-  CLI::App* app = parent.add_subcommand(
-      "convert", "Convert between OBJ, OFF, PLY, STL and glTF (.gltf, .glb); formats from the extensions");
-  app->add_option("IN", options->input, "Input mesh file")->required();
-  app->add_option("OUT", options->output, "Output mesh file; missing folders are created")->required();
-  app->add_flag("--ascii", options->ascii, "Write PLY and STL as text instead of binary");
+void add_convert_arguments(CLI::App* app, ConvertOptions* options) {
+  add_in_out_arguments(*app, options->input, options->output);
+  add_ascii_flag(*app, options->ascii);
   app->add_option("--reorder", options->reorder,
                   "Renumber before writing: spatial (a Morton curve: traversals read memory in order) or "
                   "vertex-cache (faces for a GPU's vertex cache, vertices by first use)")
       ->capture_default_str()
       ->check(CLI::IsMember({"none", "spatial", "vertex-cache"}));
-  add_load_options(*app, options->load);
-  return {app, [options] { return run_convert(*options); }};
+}
+
+}  // namespace
+
+Command add_convert_command(CLI::App& parent) {
+  return make_command<ConvertOptions>(
+      parent, "convert",
+      "Convert between OBJ, OFF, PLY, STL and glTF (.gltf, .glb); formats from the extensions",
+      add_convert_arguments, run_convert);
 }
 
 }  // namespace hedge::cli

@@ -2,13 +2,12 @@
 #include "hedge/algorithms/decimate.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
-#include <memory>
 #include <string>
+#include <utility>
 
 #include "commands.h"
 #include "hedge/error.h"
@@ -55,13 +54,11 @@ int run_decimate(const DecimateCommandOptions& o) {
   d.keep_boundary = o.keep_boundary;
   d.keep_seams = !o.break_seams;
   const std::size_t v0 = mesh.n_vertices(), f0 = mesh.n_faces();
-  const auto start = std::chrono::steady_clock::now();
-  ProgressBar bar("decimate");
-  d.progress = bar.callback();
-  const DecimateResult r = decimate(mesh, d);
-  bar.finish();
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  DecimateResult r;
+  const double ms = run_with_progress("decimate", [&](Progress progress) {
+    d.progress = std::move(progress);
+    r = decimate(mesh, d);
+  });
   save_mesh(mesh, o.output, o.ascii);
   std::printf(
       "decimated %s -> %s: %zu -> %zu vertices, %zu -> %zu faces, %zu collapses, max error %.6g, %.1f ms\n",
@@ -69,15 +66,8 @@ int run_decimate(const DecimateCommandOptions& o) {
   return kExitOk;
 }
 
-}  // namespace
-
-Command add_decimate_command(CLI::App& parent) {
-  auto o = std::make_shared<DecimateCommandOptions>();
-  CLI::App* app = parent.add_subcommand("decimate",
-                                        "Decimate a triangle mesh by quadric-error edge collapses to a "
-                                        "vertex or face count or an error, and write it");
-  app->add_option("IN", o->input, "Input mesh file (triangles)")->required();
-  app->add_option("OUT", o->output, "Output mesh file; missing folders are created")->required();
+void add_decimate_arguments(CLI::App* app, DecimateCommandOptions* o) {
+  add_in_out_arguments(*app, o->input, o->output, "Input mesh file (triangles)");
   auto* ratio = app->add_option("--ratio", o->ratio, "Keep this fraction of the vertices, in (0, 1]")
                     ->transform(real_number(0, 1, true));
   auto* faces = app->add_option("--faces", o->faces, "Stop at this many faces")
@@ -113,13 +103,20 @@ Command add_decimate_command(CLI::App& parent) {
                   "Refuse collapses that turn a face by more than this many degrees")
       ->capture_default_str()
       ->transform(real_number(0, 180));
-  app->add_flag("--ascii", o->ascii, "Write PLY and STL as text instead of binary");
-  add_load_options(*app, o->load);
+  add_ascii_flag(*app, o->ascii);
   app->callback([app, ratio, faces, vertices] {
     if (ratio->count() + faces->count() + vertices->count() + app->get_option("--max-error")->count() == 0)
       throw CLI::ValidationError("decimate", "give --ratio, --faces, --vertices or --max-error");
   });
-  return {app, [o] { return run_decimate(*o); }};
+}
+
+}  // namespace
+
+Command add_decimate_command(CLI::App& parent) {
+  return make_command<DecimateCommandOptions>(parent, "decimate",
+                                              "Decimate a triangle mesh by quadric-error edge collapses to "
+                                              "a vertex or face count or an error, and write it",
+                                              add_decimate_arguments, run_decimate);
 }
 
 }  // namespace hedge::cli

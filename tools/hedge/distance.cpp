@@ -5,7 +5,6 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
-#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -81,13 +80,7 @@ int run_distance(const DistanceCommandOptions& o) {
   return kExitOk;
 }
 
-}  // namespace
-
-Command add_distance_command(CLI::App& parent) {
-  auto options = std::make_shared<DistanceCommandOptions>();
-  CLI::App* app = parent.add_subcommand(
-      "distance",
-      "Sampled symmetric Hausdorff distance and mean distance between the surfaces of two meshes");
+void add_distance_arguments(CLI::App* app, DistanceCommandOptions* options) {
   app->add_option("A", options->a, "First mesh file")->required();
   app->add_option("B", options->b, "Second mesh file")->required();
   app->add_option(
@@ -95,12 +88,17 @@ Command add_distance_command(CLI::App& parent) {
          "Points drawn on the faces of each surface, besides its vertices (at most 100000000; 8 bytes each)")
       ->capture_default_str()
       ->transform(whole_number<std::size_t>(0, kMaxDistanceSamples));
-  app->add_option("--seed", options->seed, "Seed of the draws")
-      ->capture_default_str()
-      ->transform(whole_number<std::uint64_t>(0));
-  app->add_flag("--json", options->json, "Print one JSON object instead of text");
-  add_load_options(*app, options->load);
-  return {app, [options] { return run_distance(*options); }};
+  add_seed_option(*app, options->seed, "Seed of the draws");
+  add_json_flag(*app, options->json);
+}
+
+}  // namespace
+
+Command add_distance_command(CLI::App& parent) {
+  return make_command<DistanceCommandOptions>(
+      parent, "distance",
+      "Sampled symmetric Hausdorff distance and mean distance between the surfaces of two meshes",
+      add_distance_arguments, run_distance);
 }
 
 }  // namespace hedge::cli

@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -21,6 +20,7 @@
 #include "load.h"
 #include "material_json.h"
 #include "numbers.h"
+#include "progress_bar.h"
 
 namespace hedge::cli {
 
@@ -107,8 +107,7 @@ int run_fracture(const FractureCommandOptions& o) {
   SurfaceMesh& mesh = loaded.mesh;
   const auto start = std::chrono::steady_clock::now();
   const FractureResult r = fracture(mesh, impact, f);
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms = ms_since(start);
 
   // Everything is computed; only now is DIR touched. Each file is replaced atomically and
   // summary.json comes last, so a summary always describes complete files.
@@ -169,13 +168,7 @@ int run_fracture(const FractureCommandOptions& o) {
   return kExitOk;
 }
 
-}  // namespace
-
-Command add_fracture_command(CLI::App& parent) {
-  auto o = std::make_shared<FractureCommandOptions>();
-  CLI::App* app = parent.add_subcommand(
-      "fracture",
-      "Break a mesh at an impact point into shards; write the rest, one OBJ per shard and summary.json");
+void add_fracture_arguments(CLI::App* app, FractureCommandOptions* o) {
   app->add_option("IN", o->input, "Input mesh file")->required();
   app->add_option("--impact", o->impact,
                   "The impact point x,y,z, on (or within the tolerance of) the surface")
@@ -193,9 +186,7 @@ Command add_fracture_command(CLI::App& parent) {
   app->add_option("--material", o->material,
                   "glass, stone, wood, ice, or a material file FILE.json (docs/fracture.md)")
       ->capture_default_str();
-  app->add_option("--seed", o->seed, "Seed of the break points")
-      ->capture_default_str()
-      ->transform(whole_number<std::uint64_t>(0));
+  add_seed_option(*app, o->seed, "Seed of the break points");
   app->add_option("-o,--output", o->output, "Output folder (created if missing)")->required();
   app->add_option("--thickness", o->thickness,
                   "Extrude each shard into a solid this thick (model units); 0: none")
@@ -210,9 +201,16 @@ Command add_fracture_command(CLI::App& parent) {
          "longest edge")
       ->capture_default_str()
       ->transform(real_number(0));
-  app->add_flag("--json", o->json, "Print the summary as JSON, with timings");
-  add_load_options(*app, o->load);
-  return {app, [o] { return run_fracture(*o); }};
+  add_json_flag(*app, o->json, "Print the summary as JSON, with timings");
+}
+
+}  // namespace
+
+Command add_fracture_command(CLI::App& parent) {
+  return make_command<FractureCommandOptions>(
+      parent, "fracture",
+      "Break a mesh at an impact point into shards; write the rest, one OBJ per shard and summary.json",
+      add_fracture_arguments, run_fracture);
 }
 
 }  // namespace hedge::cli

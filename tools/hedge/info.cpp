@@ -1,7 +1,6 @@
 // hedge info FILE: load (repairing by default), then report counts, topology and repairs.
 #include <iomanip>
 #include <iostream>
-#include <memory>
 #include <sstream>
 
 #include "commands.h"
@@ -86,16 +85,17 @@ int run_info(const InfoOptions& options) {
   return kExitOk;
 }
 
+void add_info_arguments(CLI::App* app, InfoOptions* options) {
+  add_mesh_file_argument(*app, options->file);
+  add_json_flag(*app, options->json);
+}
+
 }  // namespace
 
 Command add_info_command(CLI::App& parent) {
-  auto options = std::make_shared<InfoOptions>();
-  CLI::App* app = parent.add_subcommand(
-      "info", "Load a mesh (repairing it unless --strict) and report counts, topology and repairs");
-  app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
-  app->add_flag("--json", options->json, "Print one JSON object instead of text");
-  add_load_options(*app, options->load);
-  return {app, [options] { return run_info(*options); }};
+  return make_command<InfoOptions>(
+      parent, "info", "Load a mesh (repairing it unless --strict) and report counts, topology and repairs",
+      add_info_arguments, run_info);
 }
 
 }  // namespace hedge::cli

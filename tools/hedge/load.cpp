@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <utility>
 
 #include "hedge/error.h"
 #include "numbers.h"
@@ -82,20 +83,11 @@ void save_mesh(const SurfaceMesh& mesh, const std::string& path, bool ascii) {
 }
 
 const char* format_name(FileFormat format) {
-  switch (format) {
-    case FileFormat::obj:
-      return "obj";
-    case FileFormat::off:
-      return "off";
-    case FileFormat::ply:
-      return "ply";
-    case FileFormat::stl:
-      return "stl";
-    case FileFormat::gltf:
-      return "gltf";
-    case FileFormat::glb:
-      return "glb";
-  }
+  static constexpr std::pair<FileFormat, const char*> kNames[] = {
+      {FileFormat::obj, "obj"}, {FileFormat::off, "off"},   {FileFormat::ply, "ply"},
+      {FileFormat::stl, "stl"}, {FileFormat::gltf, "gltf"}, {FileFormat::glb, "glb"}};
+  for (const auto& [f, name] : kNames)
+    if (f == format) return name;
   return "unknown";
 }
 

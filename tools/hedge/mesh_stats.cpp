@@ -59,28 +59,30 @@ nlohmann::json repairs_json(const BuildReport& report) {
 }
 
 nlohmann::json stats_json(const MeshStats& s) {
-  nlohmann::json j;
-  j["vertices"] = s.vertices;
-  j["edges"] = s.edges;
-  j["faces"] = s.faces;
-  j["halfedges"] = s.halfedges;
-  j["boundary_loops"] = s.boundary_loops;
-  j["components"] = s.components;
-  j["isolated_vertices"] = s.isolated_vertices;
-  j["euler_characteristic"] = s.euler_characteristic;
-  j["genus"] = s.genus ? nlohmann::json(*s.genus) : nlohmann::json(nullptr);
-  j["is_closed"] = s.is_closed;
-  j["is_triangle_mesh"] = s.is_triangle_mesh;
-  j["is_quad_mesh"] = s.is_quad_mesh;
-  j["is_manifold"] = s.is_manifold;
-  j["area"] = s.area;
-  j["volume"] = s.volume ? nlohmann::json(*s.volume) : nlohmann::json(nullptr);
-  j["cache_miss_ratio"] = s.cache_miss_ratio;
-  j["bounding_box"] = {{"min", {s.box_min.x, s.box_min.y, s.box_min.z}},
-                       {"max", {s.box_max.x, s.box_max.y, s.box_max.z}}};
-  j["valid"] = s.problems.empty();
-  j["problems"] = s.problems;
-  return j;
+  auto or_null = [](const auto& optional) {
+    return optional ? nlohmann::json(*optional) : nlohmann::json(nullptr);
+  };
+  return {
+      {"vertices", s.vertices},
+      {"edges", s.edges},
+      {"faces", s.faces},
+      {"halfedges", s.halfedges},
+      {"boundary_loops", s.boundary_loops},
+      {"components", s.components},
+      {"isolated_vertices", s.isolated_vertices},
+      {"euler_characteristic", s.euler_characteristic},
+      {"genus", or_null(s.genus)},
+      {"is_closed", s.is_closed},
+      {"is_triangle_mesh", s.is_triangle_mesh},
+      {"is_quad_mesh", s.is_quad_mesh},
+      {"is_manifold", s.is_manifold},
+      {"area", s.area},
+      {"volume", or_null(s.volume)},
+      {"cache_miss_ratio", s.cache_miss_ratio},
+      {"bounding_box",
+       {{"min", {s.box_min.x, s.box_min.y, s.box_min.z}}, {"max", {s.box_max.x, s.box_max.y, s.box_max.z}}}},
+      {"valid", s.problems.empty()},
+      {"problems", s.problems}};
 }
 
 }  // namespace hedge::cli

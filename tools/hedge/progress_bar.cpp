@@ -73,4 +73,16 @@ void ProgressBar::draw(double fraction) {
   shown_ = true;
 }
 
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+double run_with_progress(const std::string& label, const std::function<void(Progress)>& work) {
+  const auto start = std::chrono::steady_clock::now();
+  ProgressBar bar(label);
+  work(bar.callback());
+  bar.finish();
+  return ms_since(start);
+}
+
 }  // namespace hedge::cli

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -44,5 +45,12 @@ class ProgressBar {
   std::size_t width_ = 0;  // of the last line drawn
   std::chrono::steady_clock::time_point start_, last_draw_;
 };
+
+//! Milliseconds since `start`.
+double ms_since(std::chrono::steady_clock::time_point start);
+
+//! Runs `work`, handing it the callback of a bar labelled `label`, and returns how long it took in
+//! milliseconds. The bar is finished when the work returns.
+double run_with_progress(const std::string& label, const std::function<void(Progress)>& work);
 
 }  // namespace hedge::cli

@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
-#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -20,6 +19,7 @@
 #include "picture/diagram.h"
 #include "picture/raster.h"
 #include "picture/sheet.h"
+#include "progress_bar.h"
 
 namespace hedge::cli {
 
@@ -203,22 +203,18 @@ int run_render(const RenderCommandOptions& o) {
     what = o.input + " (" + std::to_string(loaded.mesh.n_faces()) + " faces, " + std::to_string(w) + "x" +
            std::to_string(h) + ")";
   }
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms = ms_since(start);
   std::printf("wrote %s: %s in %.0f ms\n", o.output.c_str(), what.c_str(), ms);
   return kExitOk;
 }
 
-}  // namespace
+//! An option of three comma-separated coordinates, x,y,z.
+void add_point_option(CLI::App* app, const char* name, std::vector<double>& point, const char* help) {
+  app->add_option(name, point, help)->delimiter(',')->expected(3)->transform(real_number(-kInf, kInf));
+}
 
-Command add_render_command(CLI::App& parent) {
-  auto o = std::make_shared<RenderCommandOptions>();
-  CLI::App* app = parent.add_subcommand(
-      "render",
-      "Draw a mesh to a PNG picture without a GPU: shaded, with highlighted boundary, feature and "
-      "repaired elements; several meshes side by side (--grid); or the half-edge diagram of a small "
-      "mesh (--halfedges, PNG or SVG)");
-  app->add_option("FILE", o->input, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)");
+void add_render_arguments(CLI::App* app, RenderCommandOptions* o) {
+  add_mesh_file_argument(*app, o->input, false);
   app->add_option("-o,--output", o->output, "Picture to write: .png, or .svg with --halfedges")->required();
   app->add_option("--grid", o->grid, "Several mesh files, drawn side by side with captions")->expected(1, -1);
   app->add_option("--columns", o->columns, "Pictures per row with --grid (0: all in one row)")
@@ -229,18 +225,9 @@ Command add_render_command(CLI::App& parent) {
   app->add_option("--view", o->view, std::string("Camera: ") + view_names())
       ->capture_default_str()
       ->check(CLI::IsMember({"front", "back", "left", "right", "top", "bottom", "iso"}));
-  app->add_option("--eye", o->eye, "Explicit camera position x,y,z (with --target)")
-      ->delimiter(',')
-      ->expected(3)
-      ->transform(real_number(-kInf, kInf));
-  app->add_option("--target", o->target, "Point the explicit camera looks at, x,y,z")
-      ->delimiter(',')
-      ->expected(3)
-      ->transform(real_number(-kInf, kInf));
-  app->add_option("--up", o->up, "Up direction of the explicit camera, x,y,z (default 0,1,0)")
-      ->delimiter(',')
-      ->expected(3)
-      ->transform(real_number(-kInf, kInf));
+  add_point_option(app, "--eye", o->eye, "Explicit camera position x,y,z (with --target)");
+  add_point_option(app, "--target", o->target, "Point the explicit camera looks at, x,y,z");
+  add_point_option(app, "--up", o->up, "Up direction of the explicit camera, x,y,z (default 0,1,0)");
   app->add_option("--fov", o->fov,
                   "Vertical field of view in degrees of the explicit camera (0: orthographic)")
       ->capture_default_str()
@@ -266,7 +253,6 @@ Command add_render_command(CLI::App& parent) {
   app->add_option("--max-faces", o->max_faces, "Largest mesh --halfedges draws")
       ->capture_default_str()
       ->transform(whole_number<std::size_t>(1));
-  add_load_options(*app, o->load);
   // Command-line mistakes are usage errors (exit 2), found while parsing.
   app->parse_complete_callback([o] {
     if (o->input.empty() == o->grid.empty())
@@ -276,7 +262,17 @@ Command add_render_command(CLI::App& parent) {
     if (o->halfedges && !o->grid.empty())
       throw CLI::ValidationError("render", "--halfedges draws one mesh; --grid is for shaded pictures");
   });
-  return {app, [o] { return run_render(*o); }};
+}
+
+}  // namespace
+
+Command add_render_command(CLI::App& parent) {
+  return make_command<RenderCommandOptions>(
+      parent, "render",
+      "Draw a mesh to a PNG picture without a GPU: shaded, with highlighted boundary, feature and "
+      "repaired elements; several meshes side by side (--grid); or the half-edge diagram of a small "
+      "mesh (--halfedges, PNG or SVG)",
+      add_render_arguments, run_render);
 }
 
 }  // namespace hedge::cli

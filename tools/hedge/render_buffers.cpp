@@ -3,15 +3,14 @@
 // after each, comparing the bytes each sync rewrote with a full upload.
 #include <algorithm>
 #include <iostream>
-#include <memory>
 
 #include "commands.h"
+#include "edits/random_edits.h"
 #include "hedge/render/render_sync.h"
 #include "load.h"
 #include "memory_budget.h"
 #include "mesh_stats.h"
 #include "numbers.h"
-#include "support/random_edits.h"
 
 namespace hedge::cli {
 
@@ -111,27 +110,27 @@ int run_render_buffers(const RenderBuffersOptions& options) {
   return valid ? kExitOk : kExitDataError;
 }
 
-}  // namespace
-
-Command add_render_buffers_command(CLI::App& parent) {
-  auto options = std::make_shared<RenderBuffersOptions>();
-  CLI::App* app = parent.add_subcommand(
-      "render-buffers", "Show the engine buffers of a mesh and how little a sync after an edit uploads");
-  app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
+void add_render_buffers_arguments(CLI::App* app, RenderBuffersOptions* options) {
+  add_mesh_file_argument(*app, options->file);
   app->add_option("--edits", options->edits, "Random local edits in the sample")
       ->capture_default_str()
       ->transform(whole_number<std::size_t>(0, 10000000));
-  app->add_option("--seed", options->seed, "Random seed")
-      ->capture_default_str()
-      ->transform(whole_number<std::uint64_t>(0));
+  add_seed_option(*app, options->seed);
   app->add_option("--winding", options->winding, "Index winding: ccw, or cw (Unity, Direct3D)")
       ->capture_default_str()
       ->check(CLI::IsMember({"ccw", "cw"}));
   app->add_flag("--flip-x", options->flip_x, "Negate x (left-handed axes, as Unity)");
   app->add_flag("--separate", options->separate, "One buffer per attribute instead of interleaved vertices");
-  app->add_flag("--json", options->json, "Print one JSON object");
-  add_load_options(*app, options->load);
-  return {app, [options] { return run_render_buffers(*options); }};
+  add_json_flag(*app, options->json, "Print one JSON object");
+}
+
+}  // namespace
+
+Command add_render_buffers_command(CLI::App& parent) {
+  return make_command<RenderBuffersOptions>(
+      parent, "render-buffers",
+      "Show the engine buffers of a mesh and how little a sync after an edit uploads",
+      add_render_buffers_arguments, run_render_buffers);
 }
 
 }  // namespace hedge::cli

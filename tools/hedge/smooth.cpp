@@ -1,10 +1,9 @@
 // hedge smooth IN OUT: read, smooth the positions, write; formats by extension.
 #include "hedge/algorithms/smooth.h"
 
-#include <chrono>
 #include <cstdio>
-#include <memory>
 #include <string>
+#include <utility>
 
 #include "binding/names.h"
 #include "commands.h"
@@ -36,26 +35,17 @@ int run_smooth(const SmoothCommandOptions& o) {
   s.lambda = o.lambda;
   s.mu = o.mu;
   s.fix_boundary = !o.free_boundary;
-  const auto start = std::chrono::steady_clock::now();
-  ProgressBar bar("smooth");
-  s.progress = bar.callback();
-  smooth(loaded.mesh, s);
-  bar.finish();
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms = run_with_progress("smooth", [&](Progress progress) {
+    s.progress = std::move(progress);
+    smooth(loaded.mesh, s);
+  });
   save_mesh(loaded.mesh, o.output, o.ascii);
   std::printf("smoothed %s -> %s: %s, %d iterations, %zu vertices, %.1f ms\n", o.input.c_str(),
               o.output.c_str(), o.method.c_str(), o.iterations, loaded.mesh.n_vertices(), ms);
   return kExitOk;
 }
 
-}  // namespace
-
-Command add_smooth_command(CLI::App& parent) {
-  auto o = std::make_shared<SmoothCommandOptions>();
-  CLI::App* app = parent.add_subcommand(
-      "smooth",
-      "Smooth a mesh's vertex positions (boundary fixed unless --free-boundary) and write the result");
+void add_smooth_arguments(CLI::App* app, SmoothCommandOptions* o) {
   app->add_option("IN", o->input, "Input mesh file")->required();
   app->add_option("OUT", o->output, "Output mesh file; missing folders are created")->required();
   app->add_option(
@@ -77,9 +67,16 @@ Command add_smooth_command(CLI::App& parent) {
       ->capture_default_str()
       ->transform(real_number(-kInf, kInf));
   app->add_flag("--free-boundary", o->free_boundary, "Let boundary vertices move along the boundary");
-  app->add_flag("--ascii", o->ascii, "Write PLY and STL as text instead of binary");
-  add_load_options(*app, o->load);
-  return {app, [o] { return run_smooth(*o); }};
+  add_ascii_flag(*app, o->ascii);
+}
+
+}  // namespace
+
+Command add_smooth_command(CLI::App& parent) {
+  return make_command<SmoothCommandOptions>(
+      parent, "smooth",
+      "Smooth a mesh's vertex positions (boundary fixed unless --free-boundary) and write the result",
+      add_smooth_arguments, run_smooth);
 }
 
 }  // namespace hedge::cli

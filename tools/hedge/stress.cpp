@@ -2,13 +2,12 @@
 // user's mesh and reports what was applied and refused, and whether the mesh stayed valid.
 // Exits 1 if the mesh ever became invalid, so scripts can bisect a failing seed.
 #include <iostream>
-#include <memory>
 
 #include "commands.h"
+#include "edits/random_edits.h"
 #include "load.h"
 #include "mesh_stats.h"
 #include "numbers.h"
-#include "support/random_edits.h"
 
 namespace hedge::cli {
 
@@ -81,26 +80,25 @@ int run_stress(const StressOptions& options) {
   return r.valid && r.euler_mismatches == 0 ? kExitOk : kExitDataError;
 }
 
-}  // namespace
-
-Command add_stress_command(CLI::App& parent) {
-  auto options = std::make_shared<StressOptions>();
-  CLI::App* app = parent.add_subcommand(
-      "stress", "Apply a seeded random sequence of local operations and check validity");
-  app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
+void add_stress_arguments(CLI::App* app, StressOptions* options) {
+  add_mesh_file_argument(*app, options->file);
   app->add_option("--ops", options->ops, "Number of operations")
       ->capture_default_str()
       ->transform(whole_number<std::size_t>(0, 100000000));
-  app->add_option("--seed", options->seed, "Random seed")
-      ->capture_default_str()
-      ->transform(whole_number<std::uint64_t>(0));
+  add_seed_option(*app, options->seed);
   app->add_option("--validate-every", options->validate_every,
                   "Validate after every N-th operation (0: only at the end)")
       ->capture_default_str()
       ->transform(whole_number<std::size_t>(0));
-  app->add_flag("--json", options->json, "Print one JSON object");
-  add_load_options(*app, options->load);
-  return {app, [options] { return run_stress(*options); }};
+  add_json_flag(*app, options->json, "Print one JSON object");
+}
+
+}  // namespace
+
+Command add_stress_command(CLI::App& parent) {
+  return make_command<StressOptions>(parent, "stress",
+                                     "Apply a seeded random sequence of local operations and check validity",
+                                     add_stress_arguments, run_stress);
 }
 
 }  // namespace hedge::cli

@@ -1,10 +1,9 @@
 // hedge subdivide IN OUT: read, subdivide, write; formats by extension.
 #include "hedge/algorithms/subdivide.h"
 
-#include <chrono>
 #include <cstdio>
-#include <memory>
 #include <string>
+#include <utility>
 
 #include "binding/names.h"
 #include "commands.h"
@@ -53,25 +52,16 @@ int run_subdivide(const SubdivideCommandOptions& o) {
                            : "use --steps " + std::to_string(fit) + " or fewer") +
                      (text ? " (or write a binary format, which needs less)" : ""));
   }
-  const auto start = std::chrono::steady_clock::now();
-  ProgressBar bar("subdivide");
-  subdivide(m, scheme, o.steps, bar.callback(), budget);
-  bar.finish();
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms = run_with_progress(
+      "subdivide", [&](Progress progress) { subdivide(m, scheme, o.steps, std::move(progress), budget); });
   save_mesh(m, o.output, o.ascii);
   std::printf("subdivided %s -> %s: %s x%d, %zu -> %zu faces, %zu vertices, %.1f ms\n", o.input.c_str(),
               o.output.c_str(), o.scheme.c_str(), o.steps, faces_before, m.n_faces(), m.n_vertices(), ms);
   return kExitOk;
 }
 
-}  // namespace
-
-Command add_subdivide_command(CLI::App& parent) {
-  auto o = std::make_shared<SubdivideCommandOptions>();
-  CLI::App* app = parent.add_subcommand("subdivide", "Subdivide a mesh and write the result");
-  app->add_option("IN", o->input, "Input mesh file")->required();
-  app->add_option("OUT", o->output, "Output mesh file; missing folders are created")->required();
+void add_subdivide_arguments(CLI::App* app, SubdivideCommandOptions* o) {
+  add_in_out_arguments(*app, o->input, o->output);
   app->add_option(
          "--scheme", o->scheme,
          "loop (smooth, triangles), catmull-clark (smooth, any polygons, gives quads), sqrt3 (Kobbelt's "
@@ -83,9 +73,14 @@ Command add_subdivide_command(CLI::App& parent) {
                   "Steps (each makes about 4 times the faces; refused past --max-memory)")
       ->capture_default_str()
       ->transform(whole_number<int>(0, 12));
-  app->add_flag("--ascii", o->ascii, "Write PLY and STL as text instead of binary");
-  add_load_options(*app, o->load);
-  return {app, [o] { return run_subdivide(*o); }};
+  add_ascii_flag(*app, o->ascii);
+}
+
+}  // namespace
+
+Command add_subdivide_command(CLI::App& parent) {
+  return make_command<SubdivideCommandOptions>(parent, "subdivide", "Subdivide a mesh and write the result",
+                                               add_subdivide_arguments, run_subdivide);
 }
 
 }  // namespace hedge::cli

@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
-#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -32,6 +31,7 @@
 #include "picture/diagram.h"
 #include "picture/raster.h"
 #include "picture/sheet.h"
+#include "progress_bar.h"
 
 namespace hedge::cli {
 
@@ -59,11 +59,6 @@ struct Row {
   std::string file;
 };
 
-double ms_since(Clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-}
-
-// The interior vertex nearest to the eye, so that an edit around it faces the camera.
 //! The remaining mesh and its shards as one mesh for a picture, each shard pushed away from the
 //! impact by `spread` times its centroid's distance, so the cracks show.
 SurfaceMesh exploded_view(const SurfaceMesh& rest, const std::vector<Shard>& shards, const Vec3& impact,
@@ -91,6 +86,7 @@ SurfaceMesh exploded_view(const SurfaceMesh& rest, const std::vector<Shard>& sha
   return build(all, exact);
 }
 
+//! The interior vertex nearest to the eye, so that an edit around it faces the camera.
 Vertex front_vertex(const SurfaceMesh& m, const Camera& camera) {
   Vertex best;
   double best_d = 1e300;
@@ -125,254 +121,293 @@ std::vector<Face> faces_near(const SurfaceMesh& m, Vertex v, int rings) {
   return faces;
 }
 
+//! What the stages of a tour share: the loaded mesh, the camera, the meshes made so far, and the
+//! pictures and table rows they added.
+struct Tour {
+  const TourOptions& o;
+  LoadedMesh loaded;
+  double load_ms = 0;
+  int w = 0, h = 0;
+  Camera camera;
+  std::string base;  //!< output folder and mesh name, the start of every file written
+  std::uint64_t budget = 0;
+  std::size_t corners = 0;  //!< face corners of the loaded mesh: faces after one 1-to-n split
+  std::string too_large;    //!< why a subdivision stage is skipped
+  SurfaceMesh split;        //!< all faces split 1-to-3, else the loaded mesh
+  bool split_fits = false;
+  std::optional<SurfaceMesh> fine;  //!< the finest triangle mesh so far, for decimation and fracture
+  std::vector<Panel> panels;
+  std::vector<Row> rows;
+  std::vector<std::pair<std::string, std::string>> skipped;  //!< stage, why
+
+  const SurfaceMesh& mesh() const { return loaded.mesh; }
+
+  //! Draws `m` as the panel `stage`, adds its row, and writes it to `file` unless that is empty.
+  void add(const std::string& stage, const SurfaceMesh& m, double edit_ms, RenderOptions r,
+           const std::string& file) {
+    r.width = w;
+    r.height = h;
+    const auto d = Clock::now();
+    panels.push_back({render(m, camera, r), stage});
+    add_row(stage, m, edit_ms, ms_since(d), file);
+  }
+
+  void add_row(const std::string& stage, const SurfaceMesh& m, double edit_ms, double draw_ms,
+               const std::string& file) {
+    const MeshStats s = compute_stats(m);
+    rows.push_back(
+        {stage, s.vertices, s.faces, s.boundary_loops, s.problems.empty(), edit_ms, draw_ms, file});
+    if (!file.empty()) write_mesh(m, file);
+  }
+};
+
+//! Runs `edit` and returns how long it took, in milliseconds.
+template <typename Edit>
+double timed(Edit&& edit) {
+  const auto t = Clock::now();
+  edit();
+  return ms_since(t);
+}
+
+RenderOptions wireframe() {
+  RenderOptions r;
+  r.wireframe = true;
+  return r;
+}
+
+// 1. As loaded: repaired vertices as dots, boundaries and creases in colour.
+void stage_loaded(Tour& t) {
+  RenderOptions r;
+  r.feature_angle = 60;
+  const BuildReport& report = t.loaded.report;
+  std::unordered_map<Index, int> uses;
+  for (Index origin : report.vertex_origin) ++uses[origin];
+  for (std::size_t v = 0; v < report.vertex_origin.size(); ++v)
+    if (uses[report.vertex_origin[v]] > 1) r.marked.push_back(Vertex(Index(v)));
+  const std::string what =
+      report.repairs() > 0 ? "loaded, " + std::to_string(report.repairs()) + " repairs" : "loaded";
+  t.add(what, t.mesh(), t.load_ms, r, "");
+}
+
+// 2. The structure: every edge, vertices coloured by valence.
+void stage_edges(Tour& t) {
+  RenderOptions r = wireframe();
+  r.color_by = ColorBy::valence;
+  t.add("edges, valence colours", t.mesh(), 0, r, "");
+}
+
+// 3. Catmull-Clark: any polygons become quads, and the surface rounds off. Two steps, fewer on a
+// large mesh (a step makes as many quads as there are face corners).
+void stage_catmull_clark(Tour& t) {
+  const std::size_t max_faces = t.o.max_faces;
+  int steps = t.corners * 4 <= max_faces ? 2 : t.corners <= max_faces ? 1 : 0;
+  while (steps > 0 && subdivide_memory(t.mesh(), Subdivision::catmull_clark, steps) > t.budget) --steps;
+  if (steps == 0) {
+    t.skipped.push_back({"Catmull-Clark", t.too_large});
+    return;
+  }
+  SurfaceMesh cc = t.mesh();
+  const double ms = timed([&] { subdivide(cc, Subdivision::catmull_clark, steps); });
+  t.add("Catmull-Clark, " + std::to_string(steps) + (steps == 1 ? " step" : " steps"), cc, ms, wireframe(),
+        t.base + "_catmull_clark.obj");
+}
+
+// 4. Split all faces 1-to-3 at their centroids (a triangle per corner).
+void stage_split(Tour& t) {
+  t.split = t.mesh();
+  t.split_fits =
+      t.corners <= t.o.max_faces && subdivide_memory(t.mesh(), Subdivision::split_faces, 1) <= t.budget;
+  if (!t.split_fits) {
+    t.skipped.push_back({"split all faces", t.too_large});
+    return;
+  }
+  const double ms = timed([&] { split_all_faces(t.split); });
+  RenderOptions r = wireframe();
+  r.shading = Shading::flat;
+  t.add("split all faces (1-to-3)", t.split, ms, r, t.base + "_split.obj");
+}
+
+// 5. The split mesh through one step of Loop's subdivision.
+void stage_loop(Tour& t) {
+  if (!t.split_fits || 4 * t.split.n_faces() > t.o.max_faces ||
+      subdivide_memory(t.split, Subdivision::loop, 1) > t.budget) {
+    t.skipped.push_back({"Loop subdivision", t.too_large});
+    if (t.split_fits) t.fine = t.split;
+    return;
+  }
+  SurfaceMesh loop = t.split;
+  const double ms = timed([&] { subdivide(loop, Subdivision::loop, 1); });
+  t.add("then Loop subdivision", loop, ms, wireframe(), t.base + "_loop.obj");
+  t.fine = std::move(loop);
+}
+
+// 6. The split mesh smoothed instead by Taubin's filter, which does not shrink it. A mesh too large
+// to split is smoothed as it is.
+void stage_smooth(Tour& t) {
+  SmoothOptions taubin;
+  taubin.method = SmoothMethod::taubin;
+  const double ms = timed([&] { smooth(t.split, taubin); });
+  t.add(t.split_fits ? "or smoothed (Taubin, 10 iterations)" : "smoothed (Taubin, 10 iterations)", t.split,
+        ms, wireframe(), t.base + "_smooth.obj");
+}
+
+// 7. The finest triangle mesh decimated to a quarter of its faces by quadric error.
+void stage_decimate(Tour& t) {
+  if (!t.fine) {
+    t.skipped.push_back({"decimation and fracture", "no triangle mesh: for the split, " + t.too_large});
+    return;
+  }
+  SurfaceMesh coarse = *t.fine;
+  DecimateOptions d;
+  d.target_faces = std::max<std::size_t>(4, t.fine->n_faces() / 4);
+  DecimateResult dr;
+  const double ms = timed([&] { dr = decimate(coarse, d); });
+  t.add("decimated to " + std::to_string(dr.faces) + " faces", coarse, ms, wireframe(),
+        t.base + "_decimated.obj");
+}
+
+// 8. The finest triangle mesh broken like glass where it faces the eye, its shards pushed apart so
+// the cracks show.
+void stage_fracture(Tour& t) {
+  if (!t.fine) return;  // said by stage_decimate
+  const Vertex hit = front_vertex(*t.fine, t.camera);
+  if (!hit.is_valid()) {
+    t.skipped.push_back({"fracture", "no vertex faces the camera"});
+    return;
+  }
+  SurfaceMesh rest = *t.fine;
+  FractureOptions f;
+  f.seed = 1;
+  try {
+    FractureResult fr;
+    const double ms = timed([&] { fr = fracture(rest, t.fine->position(hit), f); });
+    RenderOptions r;
+    r.color_by = ColorBy::shard;
+    r.shading = Shading::flat;
+    const SurfaceMesh view = exploded_view(rest, fr.shards, fr.impact_point, 0.35);
+    t.add("glass fracture: " + std::to_string(fr.shards.size()) + " shards", view, ms, r,
+          t.base + "_fractured.obj");
+  } catch (const InvalidInputError& e) {
+    // A mesh too small to break, say: the tour goes on, and says why.
+    t.skipped.push_back({"fracture", e.what()});
+  }
+}
+
+//! Rings of faces around `centre` until they are about a sixtieth of the mesh, keeping at least
+//! half of it.
+std::vector<Face> hole_region(const SurfaceMesh& mesh, Vertex centre) {
+  int rings = 1;
+  std::vector<Face> region = faces_near(mesh, centre, rings);
+  while (region.size() < std::max<std::size_t>(4, mesh.n_faces() / 60) && rings < 12) {
+    std::vector<Face> wider = faces_near(mesh, centre, rings + 1);
+    if (2 * wider.size() > mesh.n_faces()) break;
+    region = std::move(wider);
+    ++rings;
+  }
+  return region;
+}
+
+//! Fills the boundary loops of `filled` that `original` does not have; returns the faces added.
+std::size_t fill_new_holes(SurfaceMesh& filled, const SurfaceMesh& original) {
+  std::size_t faces = 0;
+  const std::size_t loops_before = original.boundary_loops().size();
+  for (int guard = 0; filled.boundary_loops().size() > loops_before && guard < 64; ++guard) {
+    // Fill the loops the cut made: those with a half-edge of a face next to the region.
+    bool any = false;
+    for (Halfedge b : filled.boundary_loops()) {
+      if (!original.is_boundary(b) && can_fill_hole(filled, b)) {
+        faces += fill_hole(filled, b).size();
+        any = true;
+        break;
+      }
+    }
+    if (!any) break;
+  }
+  return faces;
+}
+
+// 9. A hole cut around the vertex nearest the eye, then 10. filled again, and 11. the half-edge
+// diagram of the faces around that vertex, detached as a mesh of their own.
+void stage_hole(Tour& t) {
+  const SurfaceMesh& mesh = t.mesh();
+  const Vertex centre = front_vertex(mesh, t.camera);
+  if (!centre.is_valid() || faces_near(mesh, centre, 1).size() >= mesh.n_faces()) return;
+  SurfaceMesh holed = mesh;
+  const std::vector<Face> region = hole_region(mesh, centre);
+  const double cut_ms = timed([&] { remove_faces(holed, region); });
+  t.add("faces removed: a hole", holed, cut_ms, wireframe(), t.base + "_hole.obj");
+
+  SurfaceMesh filled = holed;
+  std::size_t filled_faces = 0;
+  const double fill_ms = timed([&] { filled_faces = fill_new_holes(filled, mesh); });
+  RenderOptions f = wireframe();
+  f.color_by = ColorBy::face;
+  f.shading = Shading::flat;
+  t.add("hole filled: " + std::to_string(filled_faces) + " new faces", filled, fill_ms, f,
+        t.base + "_filled.obj");
+
+  SurfaceMesh rest = mesh, patch;
+  const double detach_ms = timed([&] { patch = detach_faces(rest, faces_near(mesh, centre, 1)); });
+  Image diagram(t.w, t.h);
+  ImageCanvas canvas(diagram);
+  DiagramOptions d;
+  d.legend = false;
+  const double draw_ms =
+      timed([&] { draw_halfedge_diagram(patch, diagram_camera(patch, double(t.w) / t.h), canvas, d); });
+  t.panels.push_back({std::move(diagram), "half-edges of one vertex's faces"});
+  t.add_row("detached one-ring (diagram)", patch, detach_ms, draw_ms, t.base + "_patch.obj");
+}
+
+//! The stages of the tour, in order; each adds pictures and rows, or says why it was skipped.
+constexpr void (*kStages[])(Tour&) = {stage_loaded,   stage_edges,    stage_catmull_clark,
+                                      stage_split,    stage_loop,     stage_smooth,
+                                      stage_decimate, stage_fracture, stage_hole};
+
+//! Prints the table of stages and what was written; true when every stage's mesh was valid.
+bool print_report(const Tour& t, const std::string& sheet_path) {
+  std::printf("%-34s %9s %9s %6s %6s %9s %9s\n", "stage", "vertices", "faces", "holes", "valid", "edit ms",
+              "draw ms");
+  bool all_valid = true;
+  for (const Row& r : t.rows) {
+    std::printf("%-34s %9zu %9zu %6zu %6s %9.2f %9.1f\n", r.stage.c_str(), r.vertices, r.faces,
+                r.boundary_loops, r.valid ? "yes" : "NO", r.edit_ms, r.draw_ms);
+    all_valid = all_valid && r.valid;
+  }
+  for (const auto& [stage, why] : t.skipped) std::printf("%-34s skipped: %s\n", stage.c_str(), why.c_str());
+  std::printf("\nwrote %s (every stage side by side)\n", sheet_path.c_str());
+  for (const Row& r : t.rows)
+    if (!r.file.empty()) std::printf("wrote %s\n", r.file.c_str());
+  return all_valid;
+}
+
 int run_tour(const TourOptions& o) {
   const auto total = Clock::now();
   std::filesystem::create_directories(o.out_dir);
   std::string name = std::filesystem::path(o.input).stem().string();
   if (name.empty()) name = "mesh";
-  const std::string base = (std::filesystem::path(o.out_dir) / name).string();
 
-  auto t = Clock::now();
-  LoadedMesh loaded = load_mesh(o.input, o.load);
-  const double load_ms = ms_since(t);
-  SurfaceMesh& mesh = loaded.mesh;
-  if (mesh.n_faces() == 0) throw InvalidInputError(o.input + ": nothing to show: the mesh has no faces");
+  Tour t{o};
+  t.base = (std::filesystem::path(o.out_dir) / name).string();
+  t.load_ms = timed([&] { t.loaded = load_mesh(o.input, o.load); });
+  if (t.mesh().n_faces() == 0) throw InvalidInputError(o.input + ": nothing to show: the mesh has no faces");
+  t.w = o.panel;
+  t.h = o.panel * 3 / 4;
+  t.camera = frame(t.mesh(), View::iso, double(t.w) / t.h);
+  for (Face f : t.mesh().faces()) t.corners += t.mesh().valence(f);
+  t.budget = effective_budget(o.load.memory);
+  t.too_large = "the result would pass " + std::to_string(o.max_faces) + " faces or " +
+                bytes_text(double(t.budget)) + " of memory (--max-faces, --max-memory)";
+  for (auto stage : kStages) stage(t);
 
-  const int w = o.panel, h = o.panel * 3 / 4;
-  const Camera camera = frame(mesh, View::iso, double(w) / h);
-  std::vector<Panel> panels;
-  std::vector<Row> rows;
-  std::vector<std::pair<std::string, std::string>> skipped;  // stage, why
-  auto add = [&](const std::string& stage, const SurfaceMesh& m, double edit_ms, RenderOptions r,
-                 const std::string& file) {
-    r.width = w;
-    r.height = h;
-    const auto d = Clock::now();
-    panels.push_back({render(m, camera, r), stage});
-    const double draw_ms = ms_since(d);
-    const MeshStats s = compute_stats(m);
-    rows.push_back(
-        {stage, s.vertices, s.faces, s.boundary_loops, s.problems.empty(), edit_ms, draw_ms, file});
-    if (!file.empty()) write_mesh(m, file);
-  };
-
-  // 1. As loaded: repaired vertices as dots, boundaries and creases in colour.
-  {
-    RenderOptions r;
-    r.feature_angle = 60;
-    std::unordered_map<Index, int> uses;
-    for (Index origin : loaded.report.vertex_origin) ++uses[origin];
-    for (std::size_t v = 0; v < loaded.report.vertex_origin.size(); ++v)
-      if (uses[loaded.report.vertex_origin[v]] > 1) r.marked.push_back(Vertex(Index(v)));
-    const std::string what = loaded.report.repairs() > 0
-                                 ? "loaded, " + std::to_string(loaded.report.repairs()) + " repairs"
-                                 : "loaded";
-    add(what, mesh, load_ms, r, "");
-  }
-  // 2. The structure: every edge, vertices coloured by valence.
-  {
-    RenderOptions r;
-    r.wireframe = true;
-    r.color_by = ColorBy::valence;
-    add("edges, valence colours", mesh, 0, r, "");
-  }
-  // 3. Catmull-Clark: any polygons become quads, and the surface rounds off. Two steps, fewer on a
-  // large mesh (a step makes as many quads as there are face corners).
-  std::size_t corners = 0;
-  for (Face f : mesh.faces()) corners += mesh.valence(f);
-  const std::uint64_t budget = effective_budget(o.load.memory);
-  const std::string too_large = "the result would pass " + std::to_string(o.max_faces) + " faces or " +
-                                bytes_text(double(budget)) + " of memory (--max-faces, --max-memory)";
-  int cc_steps = corners * 4 <= o.max_faces ? 2 : corners <= o.max_faces ? 1 : 0;
-  while (cc_steps > 0 && subdivide_memory(mesh, Subdivision::catmull_clark, cc_steps) > budget) --cc_steps;
-  if (cc_steps > 0) {
-    SurfaceMesh cc = mesh;
-    t = Clock::now();
-    subdivide(cc, Subdivision::catmull_clark, cc_steps);
-    const double ms = ms_since(t);
-    RenderOptions r;
-    r.wireframe = true;
-    add("Catmull-Clark, " + std::to_string(cc_steps) + (cc_steps == 1 ? " step" : " steps"), cc, ms, r,
-        base + "_catmull_clark.obj");
-  } else {
-    skipped.push_back({"Catmull-Clark", too_large});
-  }
-  // 4. Split all faces 1-to-3 at their centroids (a triangle per corner), 5. the result through one
-  // step of Loop's subdivision, and 6. smoothed instead by Taubin's filter, which does not shrink
-  // it. A mesh too large to split is smoothed as it is.
-  SurfaceMesh split = mesh;
-  std::optional<SurfaceMesh> fine;  // the finest triangle mesh so far, for decimation and fracture
-  const bool split_fits =
-      corners <= o.max_faces && subdivide_memory(mesh, Subdivision::split_faces, 1) <= budget;
-  if (split_fits) {
-    t = Clock::now();
-    split_all_faces(split);
-    const double ms = ms_since(t);
-    RenderOptions r;
-    r.wireframe = true;
-    r.shading = Shading::flat;
-    add("split all faces (1-to-3)", split, ms, r, base + "_split.obj");
-  } else {
-    skipped.push_back({"split all faces", too_large});
-  }
-  if (split_fits && 4 * split.n_faces() <= o.max_faces &&
-      subdivide_memory(split, Subdivision::loop, 1) <= budget) {
-    SurfaceMesh loop = split;
-    t = Clock::now();
-    subdivide(loop, Subdivision::loop, 1);
-    const double loop_ms = ms_since(t);
-    RenderOptions lr;
-    lr.wireframe = true;
-    add("then Loop subdivision", loop, loop_ms, lr, base + "_loop.obj");
-    fine = std::move(loop);
-  } else {
-    skipped.push_back({"Loop subdivision", too_large});
-    if (split_fits) fine = split;
-  }
-  {
-    t = Clock::now();
-    SmoothOptions taubin;
-    taubin.method = SmoothMethod::taubin;
-    smooth(split, taubin);
-    const double smooth_ms = ms_since(t);
-    RenderOptions sr;
-    sr.wireframe = true;
-    add(split_fits ? "or smoothed (Taubin, 10 iterations)" : "smoothed (Taubin, 10 iterations)", split,
-        smooth_ms, sr, base + "_smooth.obj");
-  }
-  // 7. The finest triangle mesh decimated to a quarter of its faces by quadric error, and 8. broken
-  // like glass where it faces the eye, its shards pushed apart so the cracks show.
-  if (fine) {
-    SurfaceMesh coarse = *fine;
-    DecimateOptions d;
-    d.target_faces = std::max<std::size_t>(4, fine->n_faces() / 4);
-    t = Clock::now();
-    const DecimateResult dr = decimate(coarse, d);
-    const double decimate_ms = ms_since(t);
-    RenderOptions r;
-    r.wireframe = true;
-    add("decimated to " + std::to_string(dr.faces) + " faces", coarse, decimate_ms, r,
-        base + "_decimated.obj");
-
-    const Vertex hit = front_vertex(*fine, camera);
-    if (hit.is_valid()) {
-      SurfaceMesh rest = *fine;
-      FractureOptions f;
-      f.seed = 1;
-      t = Clock::now();
-      try {
-        const FractureResult fr = fracture(rest, fine->position(hit), f);
-        const double fracture_ms = ms_since(t);
-        RenderOptions fo;
-        fo.color_by = ColorBy::shard;
-        fo.shading = Shading::flat;
-        const SurfaceMesh view = exploded_view(rest, fr.shards, fr.impact_point, 0.35);
-        add("glass fracture: " + std::to_string(fr.shards.size()) + " shards", view, fracture_ms, fo,
-            base + "_fractured.obj");
-      } catch (const InvalidInputError& e) {
-        // A mesh too small to break, say: the tour goes on, and says why.
-        skipped.push_back({"fracture", e.what()});
-      }
-    } else {
-      skipped.push_back({"fracture", "no vertex faces the camera"});
-    }
-  } else {
-    skipped.push_back({"decimation and fracture", "no triangle mesh: for the split, " + too_large});
-  }
-  // 9. A hole cut around the vertex nearest the eye, then 10. filled again.
-  const Vertex centre = front_vertex(mesh, camera);
-  if (centre.is_valid() && faces_near(mesh, centre, 1).size() < mesh.n_faces()) {
-    // Rings around it until the hole is about a sixtieth of the mesh, keeping at least half.
-    int rings = 1;
-    std::vector<Face> region = faces_near(mesh, centre, rings);
-    while (region.size() < std::max<std::size_t>(4, mesh.n_faces() / 60) && rings < 12) {
-      std::vector<Face> wider = faces_near(mesh, centre, rings + 1);
-      if (2 * wider.size() > mesh.n_faces()) break;
-      region = std::move(wider);
-      ++rings;
-    }
-    SurfaceMesh holed = mesh;
-    t = Clock::now();
-    remove_faces(holed, region);
-    const double cut_ms = ms_since(t);
-    RenderOptions r;
-    r.wireframe = true;
-    add("faces removed: a hole", holed, cut_ms, r, base + "_hole.obj");
-
-    SurfaceMesh filled = holed;
-    t = Clock::now();
-    std::size_t filled_faces = 0;
-    const std::size_t loops_before = mesh.boundary_loops().size();
-    for (int guard = 0; filled.boundary_loops().size() > loops_before && guard < 64; ++guard) {
-      // Fill the loops the cut made: those with a half-edge of a face next to the region.
-      bool any = false;
-      for (Halfedge b : filled.boundary_loops()) {
-        if (!mesh.is_boundary(b) && can_fill_hole(filled, b)) {
-          filled_faces += fill_hole(filled, b).size();
-          any = true;
-          break;
-        }
-      }
-      if (!any) break;
-    }
-    const double fill_ms = ms_since(t);
-    RenderOptions f;
-    f.wireframe = true;
-    f.color_by = ColorBy::face;
-    f.shading = Shading::flat;
-    add("hole filled: " + std::to_string(filled_faces) + " new faces", filled, fill_ms, f,
-        base + "_filled.obj");
-
-    // 11. The half-edge diagram of the faces around that vertex, detached as a mesh of their own.
-    SurfaceMesh rest = mesh;
-    t = Clock::now();
-    const SurfaceMesh patch = detach_faces(rest, faces_near(mesh, centre, 1));
-    const double detach_ms = ms_since(t);
-    Image diagram(w, h);
-    ImageCanvas canvas(diagram);
-    DiagramOptions d;
-    d.legend = false;
-    const auto dt = Clock::now();
-    draw_halfedge_diagram(patch, diagram_camera(patch, double(w) / h), canvas, d);
-    const double draw_ms = ms_since(dt);
-    panels.push_back({std::move(diagram), "half-edges of one vertex's faces"});
-    const MeshStats s = compute_stats(patch);
-    rows.push_back({"detached one-ring (diagram)", s.vertices, s.faces, s.boundary_loops, s.problems.empty(),
-                    detach_ms, draw_ms, base + "_patch.obj"});
-    write_mesh(patch, base + "_patch.obj");
-  }
-
-  const std::string sheet_path = base + "_tour.png";
-  write_png(contact_sheet(panels, 3), sheet_path);
-
-  std::printf("%-34s %9s %9s %6s %6s %9s %9s\n", "stage", "vertices", "faces", "holes", "valid", "edit ms",
-              "draw ms");
-  bool all_valid = true;
-  for (const Row& r : rows) {
-    std::printf("%-34s %9zu %9zu %6zu %6s %9.2f %9.1f\n", r.stage.c_str(), r.vertices, r.faces,
-                r.boundary_loops, r.valid ? "yes" : "NO", r.edit_ms, r.draw_ms);
-    all_valid = all_valid && r.valid;
-  }
-  for (const auto& [stage, why] : skipped) std::printf("%-34s skipped: %s\n", stage.c_str(), why.c_str());
-  std::printf("\nwrote %s (every stage side by side)\n", sheet_path.c_str());
-  for (const Row& r : rows)
-    if (!r.file.empty()) std::printf("wrote %s\n", r.file.c_str());
+  const std::string sheet_path = t.base + "_tour.png";
+  write_png(contact_sheet(t.panels, 3), sheet_path);
+  const bool all_valid = print_report(t, sheet_path);
   std::printf("total %.0f ms\n", ms_since(total));
   return all_valid ? kExitOk : kExitDataError;
 }
 
-}  // namespace
-
-Command add_tour_command(CLI::App& parent) {
-  auto o = std::make_shared<TourOptions>();
-  CLI::App* app = parent.add_subcommand(
-      "tour",
-      "Show what hedge does to a mesh: load and repair, validate, Catmull-Clark, split all faces, "
-      "Loop-subdivide and smooth, decimate, break like glass, "
-      "cut a hole and fill it, the half-edge diagram of one vertex's faces; writes a contact sheet PNG of "
-      "every stage, the "
-      "edited meshes, and prints counts and timings");
-  app->add_option("FILE", o->input, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
+void add_tour_arguments(CLI::App* app, TourOptions* o) {
+  add_mesh_file_argument(*app, o->input);
   app->add_option("--out", o->out_dir, "Folder for the pictures and meshes (created if missing)")
       ->capture_default_str();
   app->add_option("--panel", o->panel, "Width of each picture of the contact sheet, in pixels")
@@ -382,8 +417,18 @@ Command add_tour_command(CLI::App& parent) {
                   "Skip the subdivision stages whose result would pass this many faces")
       ->capture_default_str()
       ->transform(whole_number<std::size_t>(1));
-  add_load_options(*app, o->load);
-  return {app, [o] { return run_tour(*o); }};
+}
+
+}  // namespace
+
+Command add_tour_command(CLI::App& parent) {
+  return make_command<TourOptions>(
+      parent, "tour",
+      "Show what hedge does to a mesh: load and repair, validate, Catmull-Clark, split all faces, "
+      "Loop-subdivide and smooth, decimate, break like glass, cut a hole and fill it, the half-edge "
+      "diagram of one vertex's faces; writes a contact sheet PNG of every stage, the edited meshes, and "
+      "prints counts and timings",
+      add_tour_arguments, run_tour);
 }
 
 }  // namespace hedge::cli

@@ -1,7 +1,6 @@
 // hedge validate FILE: load and check every invariant. Exit 0 when valid, 1 when not. Under
 // --strict, input that would need repairs is reported as invalid with the topology error.
 #include <iostream>
-#include <memory>
 #include <optional>
 
 #include "commands.h"
@@ -53,16 +52,17 @@ int run_validate(const ValidateOptions& options) {
   return valid ? kExitOk : kExitDataError;
 }
 
+void add_validate_arguments(CLI::App* app, ValidateOptions* options) {
+  add_mesh_file_argument(*app, options->file);
+  add_json_flag(*app, options->json);
+}
+
 }  // namespace
 
 Command add_validate_command(CLI::App& parent) {
-  auto options = std::make_shared<ValidateOptions>();
-  CLI::App* app = parent.add_subcommand(
-      "validate", "Check every half-edge invariant; exit status 0 when valid, 1 when invalid");
-  app->add_option("FILE", options->file, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
-  app->add_flag("--json", options->json, "Print one JSON object instead of text");
-  add_load_options(*app, options->load);
-  return {app, [options] { return run_validate(*options); }};
+  return make_command<ValidateOptions>(
+      parent, "validate", "Check every half-edge invariant; exit status 0 when valid, 1 when invalid",
+      add_validate_arguments, run_validate);
 }
 
 }  // namespace hedge::cli

@@ -7,10 +7,10 @@
 #include <span>
 
 #include "hedge/core/build.h"
+#include "hedge/core/color.h"
 #include "hedge/core/export.h"
 #include "hedge/core/surface_mesh.h"
 #include "hedge/core/vec.h"
-#include "hedge/render/color.h"
 
 namespace hedge {
 

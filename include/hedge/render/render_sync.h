@@ -28,9 +28,9 @@
 #include <vector>
 
 #include "hedge/core/build.h"
+#include "hedge/core/color.h"
 #include "hedge/core/export.h"
 #include "hedge/core/surface_mesh.h"
-#include "hedge/render/color.h"
 
 namespace hedge {
 

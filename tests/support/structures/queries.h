@@ -72,17 +72,10 @@ inline constexpr std::array<std::array<Growth, kQueryCount>, kStructureCount> kE
 }};
 
 constexpr std::string_view growth_name(Growth g) {
-  switch (g) {
-    case Growth::none:
-      return "N/A";
-    case Growth::constant:
-      return "O(1)";
-    case Growth::valence:
-      return "O(n_ev)";
-    case Growth::linear:
-      return "O(n_t)";
-  }
-  return "?";
+  // In the order of Growth.
+  constexpr std::array<std::string_view, 4> names = {"N/A", "O(1)", "O(n_ev)", "O(n_t)"};
+  const auto i = static_cast<std::size_t>(g);
+  return i < names.size() ? names[i] : "?";
 }
 
 }  // namespace hedge::structures

@@ -1,4 +1,4 @@
-#include "support/random_edits.h"
+#include "edits/random_edits.h"
 
 #include <algorithm>
 
@@ -8,25 +8,11 @@
 namespace hedge {
 
 const char* edit_name(EditKind k) {
-  switch (k) {
-    case EditKind::split_edge:
-      return "split_edge";
-    case EditKind::collapse:
-      return "collapse";
-    case EditKind::flip:
-      return "flip";
-    case EditKind::split_face:
-      return "split_face";
-    case EditKind::cut_face:
-      return "cut_face";
-    case EditKind::remove_face:
-      return "remove_face";
-    case EditKind::remove_vertex:
-      return "remove_vertex";
-    case EditKind::count:
-      break;
-  }
-  return "?";
+  // In the order of EditKind.
+  static constexpr const char* kNames[kEditKinds] = {
+      "split_edge", "collapse", "flip", "split_face", "cut_face", "remove_face", "remove_vertex"};
+  const auto i = static_cast<std::size_t>(k);
+  return i < kEditKinds ? kNames[i] : "?";
 }
 
 std::size_t RandomEditReport::total_applied() const {

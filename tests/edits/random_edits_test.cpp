@@ -1,4 +1,4 @@
-#include "support/random_edits.h"
+#include "edits/random_edits.h"
 
 #include <gtest/gtest.h>
 

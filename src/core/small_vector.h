@@ -1,7 +1,8 @@
 // SmallVector: a sequence that keeps its first N elements inline and spills the rest to the heap.
 // Local operations and BVH traversals keep short per-call lists (a one-ring, a traversal stack)
 // whose size is almost always small: inline storage makes them allocation-free in that case and
-// still correct for any size.
+// still correct for any size. Private to the library: core includes it as "small_vector.h", the
+// layers that use core as "core_private/small_vector.h" (src/CMakeLists.txt links it there).
 #pragma once
 
 #include <algorithm>

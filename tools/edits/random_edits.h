@@ -1,5 +1,6 @@
-// Test support: seeded random sequences of local operations, the stress driver behind the test
-// suite and the `hedge stress` and `hedge render-buffers` commands. Not part of the library's API.
+// The seeded random-operation driver: random sequences of local operations, behind the stress
+// tests and the `hedge stress` and `hedge render-buffers` commands. Tool code, not part of the
+// library's API.
 #pragma once
 
 #include <array>

@@ -1,8 +1,8 @@
-// glTF 2.0: .gltf (JSON) and .glb (binary container) through tinygltf.
+// glTF 2.0 reading: .gltf (JSON) and .glb (binary container) through tinygltf.
 //
-// tinygltf parses the JSON, decodes data URIs and GLB chunks and serializes the model; everything
-// it leaves to its user is checked here: every index into the file's arrays, every accessor's byte
-// range against its buffer, component types per attribute, index ranges and non-finite values.
+// tinygltf parses the JSON, decodes data URIs and GLB chunks; everything it leaves to its user is
+// checked here: every index into the file's arrays, every accessor's byte range against its buffer,
+// component types per attribute, index ranges and non-finite values.
 
 #include <algorithm>
 #include <array>
@@ -10,37 +10,20 @@
 #include <cstdint>
 #include <cstring>
 #include <exception>
-#include <fstream>  // tinygltf's file writers use it even under TINYGLTF_NO_FS
 #include <limits>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <unordered_map>
 #include <vector>
 
-// tinygltf's implementation is compiled here, from Debian's header, under a namespace of hedge's
-// own, so that a program linking hedge's archive and another copy of tinygltf gets neither duplicate
-// nor interposed symbols. Images are not decoded (a mesh reader has no use for them, and a decoder
-// is attack surface for untrusted files), and the only files it may open are the external buffers
-// gltf_guard.h approved.
-#define tinygltf hedge_tinygltf
-#define TINYGLTF_IMPLEMENTATION
-#define TINYGLTF_NO_STB_IMAGE
-#define TINYGLTF_NO_STB_IMAGE_WRITE
-#define TINYGLTF_NO_EXTERNAL_IMAGE
-#define TINYGLTF_NO_FS
-#include <tiny_gltf.h>
-#undef tinygltf
-
 #include "gltf_guard.h"
+#include "gltf_internal.h"
 #include "hedge/io/io.h"
 #include "parse_util.h"
 
 namespace hedge {
 
 namespace {
-
-namespace tg = ::hedge_tinygltf;
 
 using Mat4 = std::array<double, 16>;  // column-major, as glTF stores node matrices
 
@@ -593,193 +576,6 @@ class Reader {
   std::vector<ReadWarning> warnings_;
 };
 
-// --- writing -------------------------------------------------------------------------------------
-
-struct CornerKey {
-  std::uint32_t v, t, n, c;
-  friend bool operator==(const CornerKey&, const CornerKey&) = default;
-};
-
-struct CornerKeyHash {
-  std::size_t operator()(const CornerKey& k) const noexcept {
-    std::uint64_t h = k.v * 0x9E3779B97F4A7C15ull;
-    h ^= (k.t + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2));
-    h ^= (k.n * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2));
-    h ^= (k.c * 0x165667B19E3779F9ull + (h << 6) + (h >> 2));
-    return static_cast<std::size_t>(h ^ (h >> 29));
-  }
-};
-
-template <typename T>
-void append_pod(std::vector<unsigned char>& out, const T& v) {
-  const auto* p = reinterpret_cast<const unsigned char*>(&v);
-  out.insert(out.end(), p, p + sizeof(T));
-}
-
-std::string write_model(const IndexedMesh& mesh, bool binary) {
-  detail::check_writable(mesh);
-  const bool has_t = !mesh.texcoord_indices.empty();
-  const bool has_n = !mesh.normal_indices.empty();
-  const bool has_c = !mesh.color_indices.empty();
-
-  // Triangles, polygons fanned from their first corner, as corner numbers into mesh.indices.
-  std::vector<std::size_t> corners;
-  corners.reserve(mesh.indices.size());
-  detail::for_each_face(mesh, [&](std::size_t first, std::size_t n) {
-    for (std::size_t k = 1; k + 1 < n; ++k) corners.insert(corners.end(), {first, first + k, first + k + 1});
-  });
-
-  // glTF vertices: one per distinct (position, texcoord, normal, colour) of a corner. Vertex v of the mesh
-  // keeps number v with the attributes of its first corner, so positions come back in their order;
-  // corners that differ from it (seams, hard edges) get vertices after the mesh's own.
-  const std::size_t nv = mesh.positions.size();
-  // A vertex no corner uses keeps its position with out-of-range attribute indices: zeros.
-  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-  std::vector<CornerKey> keys(nv);
-  for (std::size_t v = 0; v < nv; ++v) keys[v] = {static_cast<std::uint32_t>(v), kNone, kNone, kNone};
-  std::vector<char> keyed(nv, 0);
-  std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> extra;
-  std::vector<std::uint32_t> out_indices;
-  out_indices.reserve(corners.size());
-  for (const std::size_t c : corners) {
-    const CornerKey key{mesh.indices[c], has_t ? mesh.texcoord_indices[c] : 0,
-                        has_n ? mesh.normal_indices[c] : 0, has_c ? mesh.color_indices[c] : 0};
-    if (!keyed[key.v]) {
-      keyed[key.v] = 1;
-      keys[key.v] = key;
-    }
-    if (keys[key.v] == key) {
-      out_indices.push_back(key.v);
-      continue;
-    }
-    const auto [it, added] = extra.try_emplace(key, 0);
-    if (added) {
-      if (keys.size() >= std::numeric_limits<std::uint32_t>::max() - 1)
-        throw InvalidInputError("too many vertices for glTF indices once split at seams");
-      it->second = static_cast<std::uint32_t>(keys.size());
-      keys.push_back(key);
-    }
-    out_indices.push_back(it->second);
-  }
-
-  tg::Model model;
-  model.asset.version = "2.0";
-  model.asset.generator = "hedge";
-  if (out_indices.empty() || keys.empty()) {
-    // Nothing to draw: a valid file with no scene (glTF accessors cannot be empty).
-    std::ostringstream empty;
-    if (!tg::TinyGLTF().WriteGltfSceneToStream(&model, empty, !binary, binary))
-      throw InvalidInputError("glTF: cannot serialize");
-    return empty.str();
-  }
-
-  tg::Buffer buffer;
-  std::vector<unsigned char>& bytes = buffer.data;
-  const std::size_t count = keys.size();
-  auto add_view = [&](std::size_t begin, int target) {
-    tg::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = begin;
-    view.byteLength = bytes.size() - begin;
-    view.target = target;
-    model.bufferViews.push_back(view);
-    while (bytes.size() % 4 != 0) bytes.push_back(0);  // every view starts 4-byte aligned
-    return static_cast<int>(model.bufferViews.size() - 1);
-  };
-  auto add_accessor = [&](int view, int component_type, int type, std::size_t n) {
-    tg::Accessor a;
-    a.bufferView = view;
-    a.componentType = component_type;
-    a.type = type;
-    a.count = n;
-    model.accessors.push_back(a);
-    return static_cast<int>(model.accessors.size() - 1);
-  };
-
-  tg::Primitive prim;
-  prim.mode = TINYGLTF_MODE_TRIANGLES;
-
-  std::size_t begin = bytes.size();
-  Vec3 lo = mesh.positions[keys[0].v], hi = lo;
-  for (const CornerKey& k : keys) {
-    const Vec3& p = mesh.positions[k.v];
-    append_pod(bytes, p.x);
-    append_pod(bytes, p.y);
-    append_pod(bytes, p.z);
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  prim.attributes["POSITION"] = add_accessor(add_view(begin, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                             TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, count);
-  model.accessors.back().minValues = {lo.x, lo.y, lo.z};
-  model.accessors.back().maxValues = {hi.x, hi.y, hi.z};
-
-  if (has_n) {
-    begin = bytes.size();
-    for (const CornerKey& k : keys) {
-      const Vec3 n = k.n < mesh.normals.size() ? mesh.normals[k.n] : Vec3{0, 0, 0};
-      append_pod(bytes, n.x);
-      append_pod(bytes, n.y);
-      append_pod(bytes, n.z);
-    }
-    prim.attributes["NORMAL"] = add_accessor(add_view(begin, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                             TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, count);
-  }
-  if (has_t) {
-    begin = bytes.size();
-    for (const CornerKey& k : keys) {
-      const Vec2 t = k.t < mesh.texcoords.size() ? mesh.texcoords[k.t] : Vec2{0, 0};
-      append_pod(bytes, t.x);
-      append_pod(bytes, 1.0f - t.y);  // top-left texture origin
-    }
-    prim.attributes["TEXCOORD_0"] = add_accessor(add_view(begin, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                                 TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, count);
-  }
-  if (has_c) {
-    begin = bytes.size();
-    for (const CornerKey& k : keys) {
-      const Color c = k.c < mesh.colors.size() ? mesh.colors[k.c] : Color{0, 0, 0, 0};
-      append_pod(bytes, c.r);
-      append_pod(bytes, c.g);
-      append_pod(bytes, c.b);
-      append_pod(bytes, c.a);
-    }
-    prim.attributes["COLOR_0"] = add_accessor(add_view(begin, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                              TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, count);
-  }
-
-  // 16-bit indices when they fit; the largest value of a type is reserved (primitive restart).
-  begin = bytes.size();
-  const bool shorts = count < 0xFFFF;
-  for (const std::uint32_t i : out_indices)
-    if (shorts)
-      append_pod(bytes, static_cast<std::uint16_t>(i));
-    else
-      append_pod(bytes, i);
-  prim.indices =
-      add_accessor(add_view(begin, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
-                   shorts ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
-                   TINYGLTF_TYPE_SCALAR, out_indices.size());
-  if (bytes.size() > std::numeric_limits<std::uint32_t>::max() - 1024u)
-    throw InvalidInputError("mesh too large for one glTF buffer");
-
-  model.buffers.push_back(std::move(buffer));
-  model.scenes.emplace_back();
-  model.defaultScene = 0;
-  tg::Mesh m;
-  m.primitives.push_back(std::move(prim));
-  model.meshes.push_back(std::move(m));
-  tg::Node node;
-  node.mesh = 0;
-  model.nodes.push_back(node);
-  model.scenes[0].nodes.push_back(0);
-
-  std::ostringstream out;
-  if (!tg::TinyGLTF().WriteGltfSceneToStream(&model, out, !binary, binary))
-    throw InvalidInputError("glTF: cannot serialize the mesh");
-  return out.str();
-}
-
 }  // namespace
 
 IndexedMesh read_gltf(std::string_view data, const std::string& name, const ReadOptions& options) {
@@ -820,9 +616,5 @@ IndexedMesh read_gltf(std::string_view data, const std::string& name, const Read
   }
   return Reader(model, name, data.size(), budget, scan.parse_cost).read();
 }
-
-std::string write_gltf(const IndexedMesh& mesh, const WriteOptions&) { return write_model(mesh, false); }
-
-std::string write_glb(const IndexedMesh& mesh, const WriteOptions&) { return write_model(mesh, true); }
 
 }  // namespace hedge
