@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <random>
-#include <string>
 #include <string_view>
 
 #include "hedge/algorithms/subdivide.h"
@@ -41,6 +40,16 @@ inline std::size_t seam_edges(const SurfaceMesh& s) {
   return n;
 }
 
+// `got` is within `tolerance` of `want` in each coordinate.
+inline ::testing::AssertionResult near(const Vec3& got, const Vec3d& want, double tolerance) {
+  const Vec3d d = to_double(got) - want;
+  if (std::abs(d.x) <= tolerance && std::abs(d.y) <= tolerance && std::abs(d.z) <= tolerance)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure()
+         << "(" << got.x << ", " << got.y << ", " << got.z << ") is not within " << tolerance << " of ("
+         << want.x << ", " << want.y << ", " << want.z << ")";
+}
+
 // Boundary vertices of `before` moved by the cubic B-spline curve rule: 3/4 of themselves and 1/8 of
 // each boundary neighbour (old vertices keep their index).
 inline void expect_boundary_curve_rule(const SurfaceMesh& before, const SurfaceMesh& after) {
@@ -50,9 +59,7 @@ inline void expect_boundary_curve_rule(const SurfaceMesh& before, const SurfaceM
     for (Halfedge h : before.halfedges(v))
       if (before.is_boundary(SurfaceMesh::edge(h))) ends += to_double(before.position(before.to_vertex(h)));
     const Vec3d want = to_double(before.position(v)) * 0.75 + ends * 0.125;
-    EXPECT_NEAR(after.position(v).x, want.x, 1e-6);
-    EXPECT_NEAR(after.position(v).y, want.y, 1e-6);
-    EXPECT_NEAR(after.position(v).z, want.z, 1e-6);
+    EXPECT_TRUE(near(after.position(v), want, 1e-6)) << "boundary vertex " << v.idx();
   }
 }
 
@@ -74,16 +81,6 @@ inline Vec3d neighbour_sum(const SurfaceMesh& m, Vertex v) {
   Vec3d sum{0, 0, 0};
   for (Vertex w : m.vertices(v)) sum += to_double(m.position(w));
   return sum;
-}
-
-// `got` is within `tolerance` of `want` in each coordinate.
-inline ::testing::AssertionResult near(const Vec3& got, const Vec3d& want, double tolerance) {
-  const Vec3d d = to_double(got) - want;
-  if (std::abs(d.x) <= tolerance && std::abs(d.y) <= tolerance && std::abs(d.z) <= tolerance)
-    return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure()
-         << "(" << got.x << ", " << got.y << ", " << got.z << ") is not within " << tolerance << " of ("
-         << want.x << ", " << want.y << ", " << want.z << ")";
 }
 
 // subdivide(m, scheme, steps) is refused with an InvalidInputError whose message contains `says`,
