@@ -6,35 +6,16 @@
 //
 //   mono FractureTiming.exe [n (708: 1,002,528 triangles)] [strikes (200)]
 //
-// Built and run by the fracture_timing_csharp target (bench/csharp/CMakeLists.txt).
+// Built and run by the fracture_timing_csharp target (bench/csharp/CMakeLists.txt); the plate is
+// Meshes.Plate of the binding's tests (bindings/csharp/tests/Meshes.cs).
 using System;
 using System.Collections.Generic;
 using System.Diagnostics;
 using Hedge;
+using Hedge.Tests;
 
 static class FractureTiming
 {
-    static HalfEdgeMesh Plate(int n)
-    {
-        var positions = new float[3 * (n + 1) * (n + 1)];
-        for (int j = 0; j <= n; ++j)
-            for (int i = 0; i <= n; ++i)
-            {
-                int v = j * (n + 1) + i;
-                positions[3 * v] = i;
-                positions[3 * v + 1] = j;
-            }
-        var triangles = new int[6 * n * n];
-        int k = 0;
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
-            {
-                int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
-                foreach (int v in new[] { a, b, c, a, c, d }) triangles[k++] = v;
-            }
-        return HalfEdgeMesh.FromTriangles(positions, triangles);
-    }
-
     // The centroid of a random triangle of the plate that is still there.
     static Vec3 Impact(HalfEdgeMesh mesh, int n, Random random)
     {
@@ -71,7 +52,7 @@ static class FractureTiming
             if (mesh == null || mesh.FaceCount < triangles * 4 / 5)
             {
                 if (mesh != null) mesh.Dispose();
-                mesh = Plate(n);
+                mesh = Meshes.Plate(n);
                 clock.Restart();
                 mesh.UpdatePickingTree();
                 build = clock.Elapsed.TotalMilliseconds;

@@ -24,11 +24,6 @@
 namespace hedge {
 namespace {
 
-using test::Counts;
-using test::counts;
-using test::expect_boundary_curve_rule;
-using test::seam_edges;
-
 TEST(CatmullClark, ACubeBecomesQuadsTendingToARoundBody) {
   SurfaceMesh m = build(test::cube());
   subdivide(m, Subdivision::catmull_clark, 1);
@@ -60,7 +55,7 @@ TEST(CatmullClark, ACubeBecomesQuadsTendingToARoundBody) {
 TEST(CatmullClark, AnyPolygonsBecomeOneQuadPerCorner) {
   SurfaceMesh m =
       read_mesh(test::data_path("spot_control_mesh.obj"));  // 4 triangles, 160 quads, 16 pentagons
-  const Counts c = counts(m);
+  const test::Counts c = test::counts(m);
   subdivide(m, Subdivision::catmull_clark, 1);
   EXPECT_EQ(m.n_faces(), 4u * 3 + 160 * 4 + 16 * 5);
   EXPECT_EQ(m.n_vertices(), c.v + c.e + c.f);
@@ -82,7 +77,7 @@ TEST(CatmullClark, ReproducesALinearHeightFieldAndKeepsTheBoundaryRules) {
   // One step: a boundary vertex moves by the curve rule, 3/4 itself and 1/8 of each boundary neighbour.
   SurfaceMesh one = before;
   subdivide(one, Subdivision::catmull_clark, 1);
-  expect_boundary_curve_rule(before, one);
+  test::expect_boundary_curve_rule(before, one);
   EXPECT_TRUE(m.validate().empty());
 }
 
@@ -93,10 +88,10 @@ TEST(CatmullClark, TexcoordSeamsAndFacePropertiesFollow) {
   for (Face f : m.faces()) id[f] = int(f.idx());
   std::vector<int> corners_of(m.face_slots());
   for (Face f : m.faces()) corners_of[f.idx()] = int(m.valence(f));
-  const std::size_t seams_before = seam_edges(m);
+  const std::size_t seams_before = test::seam_edges(m);
   ASSERT_GT(seams_before, 0u);
   subdivide(m, Subdivision::catmull_clark, 1);
-  EXPECT_EQ(seam_edges(m), 2 * seams_before);
+  EXPECT_EQ(test::seam_edges(m), 2 * seams_before);
   // Each face's quads carry its id, as many as it had corners.
   std::vector<int> quads_of(corners_of.size(), 0);
   const auto after = m.get_face_property<int>("f:id");

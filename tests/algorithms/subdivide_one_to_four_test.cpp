@@ -24,11 +24,6 @@
 namespace hedge {
 namespace {
 
-using test::Counts;
-using test::counts;
-using test::expect_boundary_curve_rule;
-using test::seam_edges;
-
 TEST(Subdivide, MidpointKeepsTheShape) {
   SurfaceMesh m = read_mesh(test::data_path("spot_triangulated.obj"));
   const SurfaceMesh before = m;
@@ -59,20 +54,12 @@ TEST(Subdivide, LoopReproducesLinearFunctionsInTheInterior) {
 
 TEST(Subdivide, LoopConvergesToTheLimitPositionOfARegularVertex) {
   // A regular vertex's limit under Loop's scheme is p/2 + (sum of its 6 neighbours)/12.
-  IndexedMesh in = test::triangle_lattice(10);
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<float> u(-0.5f, 0.5f);
-  for (Vec3& p : in.positions) p.z = u(rng);
-  SurfaceMesh m = build(in);
-  const Vertex centre(Index(5 * 11 + 5));
+  SurfaceMesh m = test::bumpy_lattice(7);
+  const Vertex centre = test::lattice_centre();
   ASSERT_EQ(m.valence(centre), 6u);
-  Vec3d sum{0, 0, 0};
-  for (Vertex w : m.vertices(centre)) sum += to_double(m.position(w));
-  const Vec3d limit = to_double(m.position(centre)) * 0.5 + sum * (1.0 / 12);
+  const Vec3d limit = to_double(m.position(centre)) * 0.5 + test::neighbour_sum(m, centre) * (1.0 / 12);
   subdivide(m, Subdivision::loop, 6);  // old vertices keep their index
-  EXPECT_NEAR(m.position(centre).x, limit.x, 2e-3);
-  EXPECT_NEAR(m.position(centre).y, limit.y, 2e-3);
-  EXPECT_NEAR(m.position(centre).z, limit.z, 2e-3);
+  EXPECT_TRUE(test::near(m.position(centre), limit, 2e-3));
   EXPECT_TRUE(m.validate().empty());
 }
 
@@ -84,7 +71,7 @@ TEST(Subdivide, LoopBoundaryFollowsTheCurveRules) {
   SurfaceMesh m = build(in);
   const SurfaceMesh before = m;
   subdivide(m, Subdivision::loop, 1);
-  expect_boundary_curve_rule(before, m);
+  test::expect_boundary_curve_rule(before, m);
   for (Edge e : before.edges()) {
     if (!before.is_boundary(e)) continue;
     const Vertex mid(Index(before.vertex_slots() + e.idx()));

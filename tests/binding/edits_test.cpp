@@ -8,24 +8,13 @@
 #include <vector>
 
 #include "binding/errors.h"
+#include "binding_error.h"
 #include "hedge/core/build.h"
 #include "hedge/core/operations.h"
 #include "test_meshes.h"
 
 namespace hedge::binding {
 namespace {
-
-// The BindingError that body() throws.
-template <typename Body>
-BindingError error_of(Body&& body) {
-  try {
-    body();
-  } catch (const BindingError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "nothing was thrown";
-  return {HEDGE_OK, ""};
-}
 
 TEST(BindingEdits, ARefusedEditSaysWhatAndWhyAndChangesNothing) {
   SurfaceMesh m = build(test::grid(2, true));

@@ -260,29 +260,6 @@ void test_decimate(void) {
   CHECK_OK(hedge_mesh_destroy(field));
 }
 
-/* A plate of n x n quads, each two triangles, in z = 0: (n + 1)^2 vertices. */
-static hedge_mesh* make_plate(uint32_t n) {
-  float* positions = malloc(sizeof(float) * 3 * (n + 1) * (n + 1));
-  uint32_t* triangles = malloc(sizeof(uint32_t) * 6 * n * n);
-  uint32_t k = 0;
-  for (uint32_t j = 0; j <= n; ++j)
-    for (uint32_t i = 0; i <= n; ++i) {
-      float* p = positions + 3 * ((n + 1) * j + i);
-      p[0] = (float)i, p[1] = (float)j, p[2] = 0;
-    }
-  for (uint32_t j = 0; j < n; ++j)
-    for (uint32_t i = 0; i < n; ++i) {
-      const uint32_t a = (n + 1) * j + i, b = a + 1, c = a + n + 2, d = a + n + 1;
-      const uint32_t quad[6] = {a, b, c, a, c, d};
-      memcpy(triangles + k, quad, sizeof quad);
-      k += 6;
-    }
-  hedge_mesh* plate = make_mesh(positions, (n + 1) * (n + 1), triangles, k, NULL, 0);
-  free(positions);
-  free(triangles);
-  return plate;
-}
-
 void test_fracture(void) {
   CHECK(sizeof(hedge_fracture_ring) == 24 && sizeof(hedge_fracture_options) == 464 &&
         sizeof(hedge_fracture_shard) == 168);

@@ -3,7 +3,9 @@
  * function, threads, and main(); queries_test.c, operations_test.c, render_test.c,
  * algorithms_test.c, picking_test.c), linked into one program. Every function of the header is
  * called at least once, with its error paths; tests/capi/check_coverage.cmake checks that over all
- * of them. Each CHECK reports file:line and exits non-zero on failure. */
+ * of them. Each CHECK reports file:line and exits non-zero on failure.
+ * The programs of their own (fracture_test.c, threads_test.c) use the same checks and helpers: each
+ * defines its own g_checks, and uses none of the shared meshes or tests declared at the end. */
 #pragma once
 
 #include <math.h>
@@ -164,6 +166,30 @@ static inline hedge_mesh* make_triangle_grid(void) {
     memcpy(tris + 6 * q, t, sizeof t);
   }
   return make_mesh(kGridPositions, 9, tris, 24, NULL, 0);
+}
+
+/* A plate of n x n quads, each two triangles, in z = 0: (n + 1)^2 vertices, x and y in [0, n]. */
+static inline hedge_mesh* make_plate(uint32_t n) {
+  float* positions = malloc(sizeof(float) * 3 * (n + 1) * (n + 1));
+  uint32_t* triangles = malloc(sizeof(uint32_t) * 6 * n * n);
+  CHECK(positions != NULL && triangles != NULL);
+  uint32_t k = 0;
+  for (uint32_t j = 0; j <= n; ++j)
+    for (uint32_t i = 0; i <= n; ++i) {
+      float* p = positions + 3 * ((n + 1) * j + i);
+      p[0] = (float)i, p[1] = (float)j, p[2] = 0;
+    }
+  for (uint32_t j = 0; j < n; ++j)
+    for (uint32_t i = 0; i < n; ++i) {
+      const uint32_t a = (n + 1) * j + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+      const uint32_t quad[6] = {a, b, c, a, c, d};
+      memcpy(triangles + k, quad, sizeof quad);
+      k += 6;
+    }
+  hedge_mesh* plate = make_mesh(positions, (n + 1) * (n + 1), triangles, k, NULL, 0);
+  free(positions);
+  free(triangles);
+  return plate;
 }
 
 /* The tests, run in this order by main() (c_api_test.c). */

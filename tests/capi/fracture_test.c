@@ -4,83 +4,16 @@
  * strike (so each strike builds a fresh one); a strike where an earlier one removed the faces finds
  * no surface there. The rest of hedge_mesh_fracture() is tested in c_api_test.c.
  * Each CHECK reports file:line and exits non-zero on failure. */
-#include <math.h>
-#include <stdint.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
+#include "capi_test.h"
 
-#include "hedge/c_api.h"
-
-static int g_checks = 0;
-
-#define CHECK(cond)                                                                                 \
-  do {                                                                                              \
-    ++g_checks;                                                                                     \
-    if (!(cond)) {                                                                                  \
-      fprintf(stderr, "%s:%d: CHECK failed: %s\n  last error: \"%s\"\n", __FILE__, __LINE__, #cond, \
-              hedge_last_error());                                                                  \
-      exit(1);                                                                                      \
-    }                                                                                               \
-  } while (0)
-
-#define CHECK_STATUS(call, expected)                                                                    \
-  do {                                                                                                  \
-    const hedge_status status_ = (call);                                                                \
-    ++g_checks;                                                                                         \
-    if (status_ != (expected)) {                                                                        \
-      fprintf(stderr, "%s:%d: %s returned %s, expected %s\n  last error: \"%s\"\n", __FILE__, __LINE__, \
-              #call, hedge_status_string(status_), hedge_status_string(expected), hedge_last_error());  \
-      exit(1);                                                                                          \
-    }                                                                                                   \
-  } while (0)
-
-#define CHECK_OK(call) CHECK_STATUS(call, HEDGE_OK)
+int g_checks = 0;
 
 enum { kMaxShards = 64 };
-
-static hedge_counts counts_of(const hedge_mesh* mesh) {
-  hedge_counts c;
-  CHECK_OK(hedge_mesh_counts(mesh, &c));
-  return c;
-}
-
-static void check_valid(hedge_mesh* mesh) {
-  uint32_t problems = 1;
-  CHECK_OK(hedge_mesh_validate(mesh, &problems));
-  CHECK(problems == 0);
-}
-
-/* A plate of n x n quads, each two triangles, in z = 0. */
-static hedge_mesh* make_plate(uint32_t n) {
-  float* positions = malloc(sizeof(float) * 3 * (n + 1) * (n + 1));
-  uint32_t* triangles = malloc(sizeof(uint32_t) * 6 * n * n);
-  CHECK(positions != NULL && triangles != NULL);
-  uint32_t k = 0;
-  for (uint32_t j = 0; j <= n; ++j)
-    for (uint32_t i = 0; i <= n; ++i) {
-      float* p = positions + 3 * ((n + 1) * j + i);
-      p[0] = (float)i, p[1] = (float)j, p[2] = 0;
-    }
-  for (uint32_t j = 0; j < n; ++j)
-    for (uint32_t i = 0; i < n; ++i) {
-      const uint32_t a = (n + 1) * j + i, b = a + 1, c = a + n + 2, d = a + n + 1;
-      const uint32_t quad[6] = {a, b, c, a, c, d};
-      memcpy(triangles + k, quad, sizeof quad);
-      k += 6;
-    }
-  hedge_mesh* plate = NULL;
-  CHECK_OK(
-      hedge_mesh_create(positions, (n + 1) * (n + 1), triangles, k, NULL, 0, NULL, NULL, NULL, NULL, &plate));
-  free(positions);
-  free(triangles);
-  return plate;
-}
 
 /* The two meshes have the same counts and the same positions in the same slots. */
 static void check_same_mesh(const hedge_mesh* a, const hedge_mesh* b) {
   const hedge_counts ca = counts_of(a), cb = counts_of(b);
-  CHECK(memcmp(&ca, &cb, sizeof ca) == 0);
+  CHECK(same_counts(ca, cb));
   const uint64_t n = 3 * (uint64_t)ca.vertex_slots;
   float* pa = malloc(sizeof(float) * (n + 1));
   float* pb = malloc(sizeof(float) * (n + 1));
@@ -109,7 +42,7 @@ static uint32_t strike_both(hedge_mesh* cached, hedge_mesh* fresh, float x, floa
     CHECK(a[i].area == b[i].area && a[i].area > 0);
     CHECK(a[i].centroid[0] == b[i].centroid[0] && a[i].centroid[1] == b[i].centroid[1]);
     check_same_mesh(a[i].mesh, b[i].mesh);
-    check_valid(a[i].mesh);
+    CHECK_VALID(a[i].mesh);
     CHECK((a[i].hull == NULL) == (b[i].hull == NULL));
     CHECK_OK(hedge_mesh_destroy(a[i].mesh));
     CHECK_OK(hedge_mesh_destroy(b[i].mesh));
@@ -117,8 +50,8 @@ static uint32_t strike_both(hedge_mesh* cached, hedge_mesh* fresh, float x, floa
     if (b[i].hull != NULL) CHECK_OK(hedge_mesh_destroy(b[i].hull));
   }
   check_same_mesh(cached, fresh);
-  check_valid(cached);
-  check_valid(fresh);
+  CHECK_VALID(cached);
+  CHECK_VALID(fresh);
   return na;
 }
 
@@ -165,9 +98,9 @@ static void test_strikes_in_a_row(void) {
   uint32_t count = 0;
   CHECK_STATUS(hedge_mesh_fracture(cached, 20.3f, 19.6f, 0, NULL, shards, kMaxShards, &count),
                HEDGE_ERROR_INVALID_ARGUMENT);
-  CHECK(strstr(hedge_last_error(), "tolerance") != NULL);
+  CHECK_ERROR_HAS("tolerance");
   const hedge_counts after = counts_of(cached);
-  CHECK(memcmp(&before, &after, sizeof before) == 0);
+  CHECK(same_counts(before, after));
 
   /* At the rim of the hole: the remaining face nearest to the first impact (found face by face),
    * which the first strike cut or refined. The updated tree finds it, and a strike there breaks

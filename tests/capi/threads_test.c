@@ -1,24 +1,9 @@
 /* Tests of the thread setting of the C ABI (hedge_set_max_threads, hedge_max_threads), compiled as
  * C11: the value round-trips, 0 restores the default, a NULL out pointer is refused, and a
  * subdivision gives the same positions on one thread as on two. */
-#include <stdint.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
+#include "capi_test.h"
 
-#include "hedge/c_api.h"
-
-static int g_checks = 0;
-
-#define CHECK(cond)                                                                                 \
-  do {                                                                                              \
-    ++g_checks;                                                                                     \
-    if (!(cond)) {                                                                                  \
-      fprintf(stderr, "%s:%d: CHECK failed: %s\n  last error: \"%s\"\n", __FILE__, __LINE__, #cond, \
-              hedge_last_error());                                                                  \
-      exit(1);                                                                                      \
-    }                                                                                               \
-  } while (0)
+int g_checks = 0;
 
 enum { kSide = 200 }; /* quads per side: 40000 quads, enough for two threads per subdivision pass */
 
@@ -45,18 +30,15 @@ static float* subdivided_grid(uint64_t* out_count) {
       q[3] = (y + 1) * n + x;
       sizes[y * kSide + x] = 4;
     }
-  hedge_mesh* mesh = NULL;
-  CHECK(hedge_mesh_create(positions, n * n, indices, 4 * kSide * kSide, sizes, kSide * kSide, NULL, NULL,
-                          NULL, NULL, &mesh) == HEDGE_OK);
-  CHECK(hedge_mesh_subdivide(mesh, HEDGE_SUBDIVISION_CATMULL_CLARK, 1) == HEDGE_OK);
-  uint32_t problems = 1;
-  CHECK(hedge_mesh_validate(mesh, &problems) == HEDGE_OK && problems == 0);
+  hedge_mesh* mesh = make_mesh(positions, n * n, indices, 4 * kSide * kSide, sizes, kSide * kSide);
+  CHECK_OK(hedge_mesh_subdivide(mesh, HEDGE_SUBDIVISION_CATMULL_CLARK, 1));
+  CHECK_VALID(mesh);
   uint64_t count = 0;
-  CHECK(hedge_mesh_copy_positions(mesh, NULL, 0, &count) == HEDGE_ERROR_BUFFER_TOO_SMALL);
+  CHECK_STATUS(hedge_mesh_copy_positions(mesh, NULL, 0, &count), HEDGE_ERROR_BUFFER_TOO_SMALL);
   float* out = malloc(sizeof(float) * count);
   CHECK(out != NULL);
-  CHECK(hedge_mesh_copy_positions(mesh, out, count, &count) == HEDGE_OK);
-  CHECK(hedge_mesh_destroy(mesh) == HEDGE_OK);
+  CHECK_OK(hedge_mesh_copy_positions(mesh, out, count, &count));
+  CHECK_OK(hedge_mesh_destroy(mesh));
   free(positions);
   free(indices);
   free(sizes);
@@ -66,16 +48,16 @@ static float* subdivided_grid(uint64_t* out_count) {
 
 int main(void) {
   uint32_t n = 0;
-  CHECK(hedge_max_threads(&n) == HEDGE_OK);
+  CHECK_OK(hedge_max_threads(&n));
   CHECK(n >= 1);
   const uint32_t cores = n;
 
-  CHECK(hedge_set_max_threads(1) == HEDGE_OK);
+  CHECK_OK(hedge_set_max_threads(1));
   CHECK(hedge_max_threads(&n) == HEDGE_OK && n == 1);
   uint64_t one_count = 0;
   float* one = subdivided_grid(&one_count);
 
-  CHECK(hedge_set_max_threads(2) == HEDGE_OK);
+  CHECK_OK(hedge_set_max_threads(2));
   CHECK(hedge_max_threads(&n) == HEDGE_OK && n == 2);
   uint64_t two_count = 0;
   float* two = subdivided_grid(&two_count);
@@ -84,11 +66,11 @@ int main(void) {
   free(one);
   free(two);
 
-  CHECK(hedge_set_max_threads(0) == HEDGE_OK);
+  CHECK_OK(hedge_set_max_threads(0));
   CHECK(hedge_max_threads(&n) == HEDGE_OK && n == cores);
 
-  CHECK(hedge_max_threads(NULL) == HEDGE_ERROR_INVALID_ARGUMENT);
-  CHECK(strstr(hedge_last_error(), "out_n") != NULL);
+  CHECK_STATUS(hedge_max_threads(NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("out_n");
   CHECK(hedge_max_threads(&n) == HEDGE_OK && hedge_last_error()[0] == '\0');
 
   printf("threads_test: %d checks passed\n", g_checks);

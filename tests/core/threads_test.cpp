@@ -55,22 +55,18 @@ TEST_F(ThreadsTest, DefaultIsTheUsableCores) {
   EXPECT_GE(max_threads(), 1u);
 }
 
-TEST_F(ThreadsTest, OneThreadRunsEverythingOnTheCallingThread) {
-  set_max_threads(1);
-  EXPECT_EQ(detail::parallel_parts(1'000'000, 1), 1u);
-  const RangeRun r = run_ranges(100'000, 1);
-  EXPECT_TRUE(r.covered);
-  ASSERT_EQ(r.threads.size(), 1u);
-  EXPECT_EQ(*r.threads.begin(), std::this_thread::get_id());
-}
-
-TEST_F(ThreadsTest, TwoThreadsSplitTheRangeBetweenTwo) {
-  set_max_threads(2);
-  EXPECT_EQ(detail::parallel_parts(1'000'000, 1), 2u);
-  const RangeRun r = run_ranges(100'000, 1);
-  EXPECT_TRUE(r.covered);
-  EXPECT_EQ(r.threads.size(), 2u);
-  EXPECT_TRUE(r.threads.count(std::this_thread::get_id()));
+// One thread runs everything on the calling thread; two split the range between two, the calling
+// thread one of them.
+TEST_F(ThreadsTest, TheRangeSplitsBetweenAsManyThreadsAsSetTheCallingThreadAmongThem) {
+  for (const unsigned threads : {1u, 2u}) {
+    SCOPED_TRACE(testing::Message() << threads << " thread(s)");
+    set_max_threads(threads);
+    EXPECT_EQ(detail::parallel_parts(1'000'000, 1), threads);
+    const RangeRun r = run_ranges(100'000, 1);
+    EXPECT_TRUE(r.covered);
+    EXPECT_EQ(r.threads.size(), threads);
+    EXPECT_TRUE(r.threads.count(std::this_thread::get_id()));
+  }
 }
 
 TEST_F(ThreadsTest, PartsRespectTheGrainAndTheCap) {

@@ -112,6 +112,19 @@ namespace Hedge.Tests
             }
         }
 
+        /// <summary>The layout is in one interleaved stream or in streams of their own, with this stride and
+        /// these offsets (in floats; -1: the buffers do not carry it).</summary>
+        static void CheckLayout(VertexLayout layout, bool interleaved, int stride, int position, int normal, int texcoord,
+                                int color)
+        {
+            Check.Equal(interleaved, layout.Interleaved, "interleaved");
+            Check.Equal(stride, layout.Stride, "stride");
+            Check.Equal(position, layout.Position, "position offset");
+            Check.Equal(normal, layout.Normal, "normal offset");
+            Check.Equal(texcoord, layout.Texcoord, "texcoord offset");
+            Check.Equal(color, layout.Color, "color offset");
+        }
+
         // The render normal of the corner entered by h (interleaved layout).
         static Vec3 RenderNormal(RenderBuffers buffers, HalfEdge h)
         {
@@ -170,13 +183,8 @@ namespace Hedge.Tests
             using (HalfEdgeMesh mesh = Meshes.Pyramid())
             using (RenderBuffers buffers = mesh.CreateRenderBuffers())
             {
-                VertexLayout layout = buffers.Layout;
-                Check.True(layout.Interleaved);
-                Check.Equal(6, layout.Stride, "position and computed normal");
-                Check.Equal(0, layout.Position);
-                Check.Equal(3, layout.Normal);
-                Check.Equal(-1, layout.Texcoord, "the pyramid has no texcoords");
-                Check.Equal(-1, layout.Color);
+                // Position and computed normal in one stream; the pyramid has no texcoords or colours.
+                CheckLayout(buffers.Layout, true, 6, 0, 3, -1, -1);
                 BufferCounts counts = buffers.Counts;
                 Check.Equal(5, counts.VertexSlots);
                 Check.Equal(5, counts.Vertices);
@@ -343,11 +351,8 @@ namespace Hedge.Tests
             using (HalfEdgeMesh mesh = Meshes.Pyramid())
             using (RenderBuffers buffers = mesh.GenerateUnityMesh())
             {
-                VertexLayout layout = buffers.Layout;
-                Check.False(layout.Interleaved);
-                Check.Equal(0, layout.Position);
-                Check.Equal(0, layout.Normal, "its own stream");
-                Check.Equal(6, layout.Stride, "floats of a whole vertex over all streams");
+                // Each attribute at 0 of its own stream; the stride counts a whole vertex over all streams.
+                CheckLayout(buffers.Layout, false, 6, 0, 0, -1, -1);
                 Check.Equal(3, buffers.Components(VertexStream.Vertices));
                 Check.Equal(15, buffers.CopyStream(VertexStream.Vertices, null));
                 Check.Equal(15, buffers.CopyStream(VertexStream.Normals, null));

@@ -1,0 +1,22 @@
+// What the tests of the binding core share (edits_test.cpp, handles_test.cpp).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include "binding/errors.h"
+
+namespace hedge::binding {
+
+// The BindingError that body() throws; a test failure (and HEDGE_OK) when it throws none.
+template <typename Body>
+BindingError error_of(Body&& body) {
+  try {
+    body();
+  } catch (const BindingError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "nothing was thrown";
+  return {HEDGE_OK, ""};
+}
+
+}  // namespace hedge::binding
