@@ -1,11 +1,11 @@
-// Local edits of edges: split_edge, collapse and flip. See include/hedge/core/operations.h for the
+// Local edits of edges: split_edge, collapse and flip. See include/hedge/core/edge_operations.h for the
 // contract of each; the face edits are in face_operations.cpp.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
 
-#include "hedge/core/operations.h"
+#include "hedge/core/edge_operations.h"
 #include "operations_internal.h"
 #include "small_vector.h"
 
