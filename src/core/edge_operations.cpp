@@ -1,11 +1,13 @@
 // Local edits of edges: split_edge, collapse and flip. See include/hedge/core/edge_operations.h for the
 // contract of each; the face edits are in face_operations.cpp.
+#include "hedge/core/edge_operations.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
 #include <utility>
 
-#include "hedge/core/edge_operations.h"
 #include "operations_internal.h"
 #include "small_vector.h"
 
@@ -169,6 +171,27 @@ bool has_properties(const Mesh& m) {
   return v;
 }
 
+// Splits a triangle that a split edge has given a fourth corner, the new vertex v: `into` enters v
+// and stays in `keep` with `last`; `out_of` leaves v, and with `mid` it goes to a new face. A new
+// edge s from v to the tip joins them: keep becomes into -> s -> last, the new face
+// out_of -> mid -> twin(s). \return s and the new face.
+std::pair<Halfedge, Face> split_triangle_at(Mesh& m, Vertex v, Halfedge into, Halfedge out_of, Halfedge mid,
+                                            Halfedge last, Face keep) {
+  const Halfedge s = m.new_edge(v, m.to_vertex(mid)), st = Mesh::twin(s);
+  const Face f = m.new_face();
+  m.set_next(into, s);
+  m.set_next(s, last);
+  m.set_face(s, keep);
+  m.set_next(mid, st);
+  m.set_next(st, out_of);
+  m.set_face(st, f);
+  m.set_face(out_of, f);
+  m.set_face(mid, f);
+  m.set_halfedge(keep, into);
+  m.set_halfedge(f, out_of);
+  return {s, f};
+}
+
 // split_edge with a boundary or a polygon on one side at least.
 [[gnu::noinline]] Vertex split_near_boundary_or_polygon(Mesh& m, Edge e, const Vec3& point) {
   const Vec3 p = point;  // point may live in the position array, which add_vertex may move
@@ -191,36 +214,12 @@ bool has_properties(const Mesh& m) {
   m.set_next(g, hn);
   m.set_next(gt, t);
   if (tri1) {  // h -> hn -> hnn becomes h -> s1 -> hnn (fh) and g -> hn -> s1t (f1)
-    s1 = m.new_edge(v, m.to_vertex(hn));
-    f1 = m.new_face();
-    const Halfedge s1t = Mesh::twin(s1);
-    m.set_next(h, s1);
-    m.set_next(s1, hnn);
-    m.set_face(s1, fh);
-    m.set_next(hn, s1t);
-    m.set_next(s1t, g);
-    m.set_face(s1t, f1);
-    m.set_face(g, f1);
-    m.set_face(hn, f1);
-    m.set_halfedge(fh, h);
-    m.set_halfedge(f1, g);
+    std::tie(s1, f1) = split_triangle_at(m, v, h, g, hn, hnn, fh);
   } else {  // a polygon or the boundary loop gets g after h
     m.set_next(h, g);
   }
   if (tri2) {  // t -> tn -> tnn becomes gt -> s2 -> tnn (ft) and t -> tn -> s2t (f2)
-    s2 = m.new_edge(v, m.to_vertex(tn));
-    f2 = m.new_face();
-    const Halfedge s2t = Mesh::twin(s2);
-    m.set_next(gt, s2);
-    m.set_next(s2, tnn);
-    m.set_face(s2, ft);
-    m.set_next(tn, s2t);
-    m.set_next(s2t, t);
-    m.set_face(s2t, f2);
-    m.set_face(t, f2);
-    m.set_face(tn, f2);
-    m.set_halfedge(ft, gt);
-    m.set_halfedge(f2, t);
+    std::tie(s2, f2) = split_triangle_at(m, v, gt, t, tn, tnn, ft);
   }
   m.set_next(k.tp, gt);
   const Halfedge b_out = m.halfedge(b);
