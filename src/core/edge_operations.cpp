@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <tuple>
 #include <utility>
 
 #include "operations_internal.h"
@@ -110,6 +109,25 @@ bool has_properties(const Mesh& m) {
          !m.edge_properties().empty() || !m.face_properties().empty();
 }
 
+// Splits a triangle that a split edge has given a fourth corner, the new vertex v: `into` enters v
+// and stays in `keep` with `last`; `out_of` leaves v, and with `mid` it goes to `f`, a new face.
+// The new edge s runs from v to the tip and joins them: keep becomes into -> s -> last, f becomes
+// out_of -> mid -> twin(s). Sets the links and faces; s's vertices are the caller's.
+void link_triangle_split(Mesh& m, Halfedge into, Halfedge out_of, Halfedge mid, Halfedge last, Face keep,
+                         Halfedge s, Face f) {
+  const Halfedge st = Mesh::twin(s);
+  m.set_next(into, s);
+  m.set_next(s, last);
+  m.set_next(mid, st);
+  m.set_next(st, out_of);
+  m.set_face(s, keep);
+  m.set_face(out_of, f);
+  m.set_face(mid, f);
+  m.set_face(st, f);
+  m.set_halfedge(keep, into);
+  m.set_halfedge(f, out_of);
+}
+
 // split_edge on an interior edge between two triangles, the common case. The new elements are
 // appended first; then what the edit needs is read (cache hits: split_edge has just walked it)
 // and written. Few values are live across the appends, which may move the arrays, so little is
@@ -132,17 +150,8 @@ bool has_properties(const Mesh& m) {
     m.set_vertex(s1, m.to_vertex(hn));
     m.set_vertex(h, v);
     m.set_vertex(s1t, v);
-    m.set_next(h, s1);
-    m.set_next(s1, hnn);
-    m.set_next(hn, s1t);
-    m.set_next(s1t, g);
     m.set_next(g, hn);
-    m.set_face(s1, fh);
-    m.set_face(g, f1);
-    m.set_face(hn, f1);
-    m.set_face(s1t, f1);
-    m.set_halfedge(fh, h);
-    m.set_halfedge(f1, g);
+    link_triangle_split(m, h, g, hn, hnn, fh, s1, f1);
   }
   {
     const Halfedge tn = m.next(t), tnn = m.next(tn);
@@ -150,18 +159,9 @@ bool has_properties(const Mesh& m) {
     m.set_vertex(gt, v);
     m.set_vertex(s2, m.to_vertex(tn));
     m.set_vertex(s2t, v);
-    m.set_next(gt, s2);
-    m.set_next(s2, tnn);
     m.set_next(tnn, gt);
-    m.set_next(tn, s2t);
-    m.set_next(s2t, t);
     m.set_face(gt, ft);
-    m.set_face(s2, ft);
-    m.set_face(t, f2);
-    m.set_face(tn, f2);
-    m.set_face(s2t, f2);
-    m.set_halfedge(ft, gt);
-    m.set_halfedge(f2, t);
+    link_triangle_split(m, gt, t, tn, tnn, ft, s2, f2);
   }
   m.set_halfedge(b, b_out == t ? gt : b_out);  // a store, not a branch on a likely cache miss
   m.set_halfedge(v, g);
@@ -169,27 +169,6 @@ bool has_properties(const Mesh& m) {
     carry_split_properties(m, e, p, v);
   mark_split(m, v);
   return v;
-}
-
-// Splits a triangle that a split edge has given a fourth corner, the new vertex v: `into` enters v
-// and stays in `keep` with `last`; `out_of` leaves v, and with `mid` it goes to a new face. A new
-// edge s from v to the tip joins them: keep becomes into -> s -> last, the new face
-// out_of -> mid -> twin(s). \return s and the new face.
-std::pair<Halfedge, Face> split_triangle_at(Mesh& m, Vertex v, Halfedge into, Halfedge out_of, Halfedge mid,
-                                            Halfedge last, Face keep) {
-  const Halfedge s = m.new_edge(v, m.to_vertex(mid)), st = Mesh::twin(s);
-  const Face f = m.new_face();
-  m.set_next(into, s);
-  m.set_next(s, last);
-  m.set_face(s, keep);
-  m.set_next(mid, st);
-  m.set_next(st, out_of);
-  m.set_face(st, f);
-  m.set_face(out_of, f);
-  m.set_face(mid, f);
-  m.set_halfedge(keep, into);
-  m.set_halfedge(f, out_of);
-  return {s, f};
 }
 
 // split_edge with a boundary or a polygon on one side at least.
@@ -214,12 +193,16 @@ std::pair<Halfedge, Face> split_triangle_at(Mesh& m, Vertex v, Halfedge into, Ha
   m.set_next(g, hn);
   m.set_next(gt, t);
   if (tri1) {  // h -> hn -> hnn becomes h -> s1 -> hnn (fh) and g -> hn -> s1t (f1)
-    std::tie(s1, f1) = split_triangle_at(m, v, h, g, hn, hnn, fh);
+    s1 = m.new_edge(v, m.to_vertex(hn));
+    f1 = m.new_face();
+    link_triangle_split(m, h, g, hn, hnn, fh, s1, f1);
   } else {  // a polygon or the boundary loop gets g after h
     m.set_next(h, g);
   }
   if (tri2) {  // t -> tn -> tnn becomes gt -> s2 -> tnn (ft) and t -> tn -> s2t (f2)
-    std::tie(s2, f2) = split_triangle_at(m, v, gt, t, tn, tnn, ft);
+    s2 = m.new_edge(v, m.to_vertex(tn));
+    f2 = m.new_face();
+    link_triangle_split(m, gt, t, tn, tnn, ft, s2, f2);
   }
   m.set_next(k.tp, gt);
   const Halfedge b_out = m.halfedge(b);
