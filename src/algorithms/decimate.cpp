@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "hedge/algorithms/geometry.h"
-#include "hedge/core/operations.h"
+#include "hedge/core/edge_operations.h"
 #include "hedge/error.h"
 
 namespace hedge {

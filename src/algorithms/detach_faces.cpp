@@ -4,7 +4,7 @@
 #include <algorithm>
 
 #include "hedge/core/build.h"
-#include "hedge/core/operations.h"
+#include "hedge/core/face_operations.h"
 
 namespace hedge {
 

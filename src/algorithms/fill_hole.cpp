@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "hedge/core/operations.h"
+#include "hedge/core/face_operations.h"
 
 namespace hedge {
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "hedge/core/face_operations.h"
 #include "hedge/core/triangulate.h"
 #include "hedge/error.h"
 
@@ -47,15 +48,7 @@ double mean_edge_length(const SurfaceMesh& m, Face f) {
   return n > 0 ? sum / n : 0;
 }
 
-Vec3d centroid(const SurfaceMesh& m, Face f) {
-  Vec3d c{0, 0, 0};
-  std::size_t n = 0;
-  for (Vertex v : m.vertices(f)) {
-    c += at(m, v);
-    ++n;
-  }
-  return n ? c / double(n) : c;
-}
+Vec3d centroid(const SurfaceMesh& m, Face f) { return face_centroid<double>(m, f); }
 
 double corner_angle(const Vec3d& v, const Vec3d& a, const Vec3d& b) {
   const Vec3d x = a - v, y = b - v;

@@ -2,7 +2,7 @@
 #include "hedge/algorithms/split_all_faces.h"
 
 #include "hedge/algorithms/subdivide.h"
-#include "hedge/core/operations.h"
+#include "hedge/core/face_operations.h"
 
 namespace hedge {
 

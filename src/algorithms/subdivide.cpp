@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "hedge/core/operations.h"
 #include "hedge/error.h"
 #include "subdivide_internal.h"
 

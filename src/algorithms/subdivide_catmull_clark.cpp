@@ -5,7 +5,6 @@
 #include <numbers>
 #include <vector>
 
-#include "hedge/core/operations.h"
 #include "subdivide_internal.h"
 
 namespace hedge::detail::subdivision {

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <vector>
 
-#include "hedge/core/operations.h"
+#include "hedge/core/face_operations.h"
 #include "subdivide_internal.h"
 
 namespace hedge::detail::subdivision {

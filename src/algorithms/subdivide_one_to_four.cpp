@@ -1,11 +1,11 @@
 // Subdivision 1-to-4 of triangle meshes: Loop's scheme and the midpoint split.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <vector>
 
-#include "hedge/core/operations.h"
 #include "subdivide_internal.h"
 
 namespace hedge::detail::subdivision {
@@ -20,6 +20,12 @@ double loop_beta(std::size_t n) {
 
 // Positions of the 1-to-4 schemes, from the old arrays: the old vertices (first nv entries; Loop
 // moves them) and the edge vertices (then ne; Loop's masks, or midpoints).
+// The three half-edges of old triangle f, from its first.
+std::array<Index, 3> triangle_halfedges(const Old& o, std::size_t f) {
+  const Index h0 = o.fhe[f].idx(), h1 = o.next[h0].idx();
+  return {h0, h1, o.next[h1].idx()};
+}
+
 void positions_1_to_4(const SurfaceMesh& m, const Old& o, bool loop, Vec3* out) {
   const Vec3* p = m.positions().vector().data();
   for_ranges(o.ne, [&](std::size_t begin, std::size_t end) {
@@ -81,10 +87,7 @@ SurfaceMesh refine_1_to_4(const SurfaceMesh& src, Subdivision scheme) {
   // Faces: three corner triangles and the middle one.
   for_ranges(o.nf, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
-      Index h[3];
-      h[0] = o.fhe[f].idx();
-      h[1] = o.next[h[0]].idx();
-      h[2] = o.next[h[1]].idx();
+      const std::array<Index, 3> h = triangle_halfedges(o, f);
       const Index base_edge = Index(2 * o.ne + 3 * f);
       for (int k = 0; k < 3; ++k) {
         const int k1 = (k + 1) % 3;
@@ -114,10 +117,7 @@ SurfaceMesh refine_1_to_4(const SurfaceMesh& src, Subdivision scheme) {
     // the ends of its edge, so that values across a seam never mix.
     const float half[2] = {0.5f, 0.5f};
     for (std::size_t f = 0; f < o.nf; ++f) {
-      Index h[3];
-      h[0] = o.fhe[f].idx();
-      h[1] = o.next[h[0]].idx();
-      h[2] = o.next[h[1]].idx();
+      const std::array<Index, 3> h = triangle_halfedges(o, f);
       const Index base_edge = Index(2 * o.ne + 3 * f);
       for (int k = 0; k < 3; ++k) {
         const int k1 = (k + 1) % 3, k_1 = (k + 2) % 3;

@@ -162,12 +162,7 @@ hedge_status hedge_mesh_smooth(hedge_mesh* mesh, const hedge_smooth_options* opt
   return guard([&] {
     auto object = find_mesh(mesh);
     SurfaceMesh& m = object->mesh;
-    hedge_smooth_options o;
-    if (options != nullptr) {
-      o = *options;
-    } else {
-      hedge_smooth_options_default(&o);
-    }
+    const hedge_smooth_options o = options_or_defaults(options, hedge_smooth_options_default);
     SmoothOptions s;
     switch (o.method) {
       case HEDGE_SMOOTH_UNIFORM:
@@ -220,12 +215,7 @@ hedge_status hedge_mesh_decimate(hedge_mesh* mesh, const hedge_decimate_options*
                                  hedge_decimate_result* out_result) {
   return guard([&] {
     auto object = find_mesh(mesh);
-    hedge_decimate_options o;
-    if (options != nullptr) {
-      o = *options;
-    } else {
-      hedge_decimate_options_default(&o);
-    }
+    const hedge_decimate_options o = options_or_defaults(options, hedge_decimate_options_default);
     DecimateOptions d;
     d.target_vertices = o.target_vertices;
     d.target_faces = o.target_faces;
@@ -274,12 +264,9 @@ hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z,
   return guard([&] {
     auto object = find_mesh(mesh);
     std::uint32_t& count = need(out_count, "out_count");
-    hedge_fracture_options o;
-    if (options != nullptr) {
-      o = *options;
-    } else {
-      hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o);
-    }
+    const hedge_fracture_options o = options_or_defaults(options, [](hedge_fracture_options* out) {
+      return hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, out);
+    });
     if (o.ring_count > HEDGE_FRACTURE_MAX_RINGS)
       fail(HEDGE_ERROR_INVALID_ARGUMENT, "ring_count must be at most HEDGE_FRACTURE_MAX_RINGS (" +
                                              std::to_string(HEDGE_FRACTURE_MAX_RINGS) + "), got " +

@@ -142,6 +142,17 @@ void check_map_buffers(const SurfaceMesh& m, const MapBuffers& b);
 //! Copies the maps into the given buffers.
 void write_maps(const GarbageMaps& maps, const MapBuffers& b);
 
+//! The caller's options, or, when the caller passed none, the defaults that fill_defaults writes.
+template <typename Options, typename Fill>
+Options options_or_defaults(const Options* options, Fill&& fill_defaults) {
+  Options o{};
+  if (options != nullptr)
+    o = *options;
+  else
+    fill_defaults(&o);
+  return o;
+}
+
 //! One query about one live element: checks the handles, then writes fn(mesh, element) to *out.
 template <typename H, typename Out, typename Fn>
 hedge_status element_query(const hedge_mesh* mesh, std::uint32_t index, Out* out, const char* out_name,

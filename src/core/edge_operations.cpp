@@ -1,11 +1,12 @@
-// Local edits of edges: split_edge, collapse and flip. See include/hedge/core/operations.h for the
+// Local edits of edges: split_edge, collapse and flip. See include/hedge/core/edge_operations.h for the
 // contract of each; the face edits are in face_operations.cpp.
+#include "hedge/core/edge_operations.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
 
-#include "hedge/core/operations.h"
 #include "operations_internal.h"
 #include "small_vector.h"
 
@@ -108,6 +109,25 @@ bool has_properties(const Mesh& m) {
          !m.edge_properties().empty() || !m.face_properties().empty();
 }
 
+// Splits a triangle that a split edge has given a fourth corner, the new vertex v: `into` enters v
+// and stays in `keep` with `last`; `out_of` leaves v, and with `mid` it goes to `f`, a new face.
+// The new edge s runs from v to the tip and joins them: keep becomes into -> s -> last, f becomes
+// out_of -> mid -> twin(s). Sets the links and faces; s's vertices are the caller's.
+void link_triangle_split(Mesh& m, Halfedge into, Halfedge out_of, Halfedge mid, Halfedge last, Face keep,
+                         Halfedge s, Face f) {
+  const Halfedge st = Mesh::twin(s);
+  m.set_next(into, s);
+  m.set_next(s, last);
+  m.set_next(mid, st);
+  m.set_next(st, out_of);
+  m.set_face(s, keep);
+  m.set_face(out_of, f);
+  m.set_face(mid, f);
+  m.set_face(st, f);
+  m.set_halfedge(keep, into);
+  m.set_halfedge(f, out_of);
+}
+
 // split_edge on an interior edge between two triangles, the common case. The new elements are
 // appended first; then what the edit needs is read (cache hits: split_edge has just walked it)
 // and written. Few values are live across the appends, which may move the arrays, so little is
@@ -130,17 +150,8 @@ bool has_properties(const Mesh& m) {
     m.set_vertex(s1, m.to_vertex(hn));
     m.set_vertex(h, v);
     m.set_vertex(s1t, v);
-    m.set_next(h, s1);
-    m.set_next(s1, hnn);
-    m.set_next(hn, s1t);
-    m.set_next(s1t, g);
     m.set_next(g, hn);
-    m.set_face(s1, fh);
-    m.set_face(g, f1);
-    m.set_face(hn, f1);
-    m.set_face(s1t, f1);
-    m.set_halfedge(fh, h);
-    m.set_halfedge(f1, g);
+    link_triangle_split(m, h, g, hn, hnn, fh, s1, f1);
   }
   {
     const Halfedge tn = m.next(t), tnn = m.next(tn);
@@ -148,18 +159,9 @@ bool has_properties(const Mesh& m) {
     m.set_vertex(gt, v);
     m.set_vertex(s2, m.to_vertex(tn));
     m.set_vertex(s2t, v);
-    m.set_next(gt, s2);
-    m.set_next(s2, tnn);
     m.set_next(tnn, gt);
-    m.set_next(tn, s2t);
-    m.set_next(s2t, t);
     m.set_face(gt, ft);
-    m.set_face(s2, ft);
-    m.set_face(t, f2);
-    m.set_face(tn, f2);
-    m.set_face(s2t, f2);
-    m.set_halfedge(ft, gt);
-    m.set_halfedge(f2, t);
+    link_triangle_split(m, gt, t, tn, tnn, ft, s2, f2);
   }
   m.set_halfedge(b, b_out == t ? gt : b_out);  // a store, not a branch on a likely cache miss
   m.set_halfedge(v, g);
@@ -193,34 +195,14 @@ bool has_properties(const Mesh& m) {
   if (tri1) {  // h -> hn -> hnn becomes h -> s1 -> hnn (fh) and g -> hn -> s1t (f1)
     s1 = m.new_edge(v, m.to_vertex(hn));
     f1 = m.new_face();
-    const Halfedge s1t = Mesh::twin(s1);
-    m.set_next(h, s1);
-    m.set_next(s1, hnn);
-    m.set_face(s1, fh);
-    m.set_next(hn, s1t);
-    m.set_next(s1t, g);
-    m.set_face(s1t, f1);
-    m.set_face(g, f1);
-    m.set_face(hn, f1);
-    m.set_halfedge(fh, h);
-    m.set_halfedge(f1, g);
+    link_triangle_split(m, h, g, hn, hnn, fh, s1, f1);
   } else {  // a polygon or the boundary loop gets g after h
     m.set_next(h, g);
   }
   if (tri2) {  // t -> tn -> tnn becomes gt -> s2 -> tnn (ft) and t -> tn -> s2t (f2)
     s2 = m.new_edge(v, m.to_vertex(tn));
     f2 = m.new_face();
-    const Halfedge s2t = Mesh::twin(s2);
-    m.set_next(gt, s2);
-    m.set_next(s2, tnn);
-    m.set_face(s2, ft);
-    m.set_next(tn, s2t);
-    m.set_next(s2t, t);
-    m.set_face(s2t, f2);
-    m.set_face(t, f2);
-    m.set_face(tn, f2);
-    m.set_halfedge(ft, gt);
-    m.set_halfedge(f2, t);
+    link_triangle_split(m, gt, t, tn, tnn, ft, s2, f2);
   }
   m.set_next(k.tp, gt);
   const Halfedge b_out = m.halfedge(b);

@@ -1,12 +1,14 @@
 // Local edits of faces: split_face, cut_face, add_face, and the removals (remove_face,
-// remove_vertex, remove_faces). See include/hedge/core/operations.h for the contract of each; the
+// remove_vertex, remove_faces). See include/hedge/core/face_operations.h for the contract of each; the
 // edge edits are in edge_operations.cpp.
+#include "hedge/core/face_operations.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
-#include "hedge/core/operations.h"
 #include "operations_internal.h"
 
 namespace hedge {
@@ -231,15 +233,22 @@ Halfedge cut_face(SurfaceMesh& m, Halfedge h0, Halfedge h1) {
   return n;
 }
 
-Vec3 face_centroid(const SurfaceMesh& m, Face f) {
+template <typename T>
+VecN<T, 3> face_centroid(const SurfaceMesh& m, Face f) {
   Vec3d c{0, 0, 0};
   std::size_t n = 0;
   for (Vertex v : m.vertices(f)) {
     c += to_double(m.position(v));
     ++n;
   }
-  return n ? to_float(c / double(n)) : Vec3{};
+  if (n) c = c / double(n);
+  if constexpr (std::is_same_v<T, double>)
+    return c;
+  else
+    return to_float(c);
 }
+template Vec3 face_centroid<float>(const SurfaceMesh&, Face);
+template Vec3d face_centroid<double>(const SurfaceMesh&, Face);
 
 // ---------------------------------------------------------------------------------------------
 namespace {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "hedge/core/build.h"
-#include "hedge/core/operations.h"
+#include "hedge/core/face_operations.h"
 #include "test_meshes.h"
 
 namespace hedge {

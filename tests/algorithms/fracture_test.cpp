@@ -14,7 +14,7 @@
 #include "hedge/algorithms/geometry.h"
 #include "hedge/core/build.h"
 #include "hedge/core/export.h"
-#include "hedge/core/operations.h"
+#include "hedge/core/face_operations.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 #include "test_meshes.h"

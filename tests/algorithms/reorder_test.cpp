@@ -9,7 +9,7 @@
 
 #include "hedge/core/build.h"
 #include "hedge/core/changes.h"
-#include "hedge/core/operations.h"
+#include "hedge/core/face_operations.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 #include "test_meshes.h"

@@ -4,7 +4,7 @@
 
 #include "edit_checks.h"
 #include "hedge/core/build.h"
-#include "hedge/core/operations.h"
+#include "hedge/core/face_operations.h"
 #include "test_meshes.h"
 
 namespace hedge {

@@ -15,7 +15,7 @@
 #include "hedge/algorithms/subdivide.h"
 #include "hedge/core/build.h"
 #include "hedge/core/changes.h"
-#include "hedge/core/operations.h"
+#include "hedge/core/face_operations.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 #include "subdivide_test_util.h"

@@ -8,7 +8,7 @@
 #include "binding/errors.h"
 #include "binding_error.h"
 #include "hedge/core/build.h"
-#include "hedge/core/operations.h"
+#include "hedge/core/face_operations.h"
 #include "test_meshes.h"
 
 namespace hedge::binding {

@@ -1,4 +1,6 @@
 // split_edge, collapse and flip (src/core/edge_operations.cpp).
+#include "hedge/core/edge_operations.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,7 +10,7 @@
 
 #include "edit_checks.h"
 #include "hedge/core/build.h"
-#include "hedge/core/operations.h"
+#include "hedge/core/face_operations.h"
 #include "hedge/io/io.h"
 #include "test_meshes.h"
 

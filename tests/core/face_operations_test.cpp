@@ -1,11 +1,12 @@
 // split_face, cut_face, add_face and the removals (src/core/face_operations.cpp).
+#include "hedge/core/face_operations.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 #include "edit_checks.h"
 #include "hedge/core/build.h"
-#include "hedge/core/operations.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -76,6 +77,19 @@ TEST(CutFace, AlongADiagonal) {
   EXPECT_TRUE(m.validate().empty());
   // The diagonal now exists: cutting again is refused.
   EXPECT_FALSE(can_cut_face(m, m.prev(n), m.next(n)));
+}
+
+TEST(FaceCentroid, MeanOfTheCornersInDoubleAndRoundedToFloat) {
+  IndexedMesh in;
+  in.positions = {{0, 0, 0}, {3, 0, 0}, {3, 4, 0}, {0, 4, 0}, {1, 5, 0}};
+  in.indices = {0, 1, 2, 3, 3, 2, 4};
+  in.face_sizes = {4, 3};
+  const SurfaceMesh m = build(in);
+  EXPECT_EQ(face_centroid<double>(m, Face(0)), (Vec3d{1.5, 2, 0}));
+  // (0 + 3 + 1) / 3 and (4 + 4 + 5) / 3 are not floats: the mean is taken in double.
+  EXPECT_EQ(face_centroid<double>(m, Face(1)), (Vec3d{4.0 / 3.0, 13.0 / 3.0, 0}));
+  for (Face f : m.faces()) EXPECT_EQ(face_centroid(m, f), to_float(face_centroid<double>(m, f)));
+  EXPECT_EQ(m.validate(), std::vector<std::string>{});
 }
 
 TEST(AddRemoveFace, RemoveThenAddRestores) {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "hedge/core/operations.h"
+#include "hedge/core/face_operations.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 #include "picture/picture_test_util.h"

@@ -34,27 +34,11 @@ inline Rgb categorical(std::uint32_t i) {
   const int sector = int(hue) % 6;
   const double f = hue - std::floor(hue);
   const double p = val * (1 - sat), q = val * (1 - sat * f), t = val * (1 - sat * (1 - f));
-  double r = 0, g = 0, b = 0;
-  switch (sector) {
-    case 0:
-      r = val, g = t, b = p;
-      break;
-    case 1:
-      r = q, g = val, b = p;
-      break;
-    case 2:
-      r = p, g = val, b = t;
-      break;
-    case 3:
-      r = p, g = q, b = val;
-      break;
-    case 4:
-      r = t, g = p, b = val;
-      break;
-    default:
-      r = val, g = p, b = q;
-      break;
-  }
+  // Each sector of the hue circle takes red, green and blue from these four levels.
+  const double level[4] = {val, p, q, t};
+  constexpr int kRgbLevel[6][3] = {{0, 3, 1}, {2, 0, 1}, {1, 0, 3}, {1, 2, 0}, {3, 1, 0}, {0, 1, 2}};
+  const int* pick = kRgbLevel[sector];
+  const double r = level[pick[0]], g = level[pick[1]], b = level[pick[2]];
   return {to_byte(float(r * 255)), to_byte(float(g * 255)), to_byte(float(b * 255))};
 }
 

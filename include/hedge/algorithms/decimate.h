@@ -60,7 +60,7 @@ struct DecimateOptions {
   bool keep_boundary = false;
   //! True: never collapse across a UV seam or in a way that breaks it ("h:texcoord" corners).
   //! False lifts only this rule's own limits: can_collapse() still refuses a collapse that would pull
-  //! a seam vertex off its seam (the corner rule of core/operations.h).
+  //! a seam vertex off its seam (the corner rule of core/edge_operations.h).
   bool keep_seams = true;
   //! >0: corner UVs enter the quadric with this weight (UV units per model unit). 0: geometry only.
   double attribute_weight = 0;

@@ -2,8 +2,8 @@
 // areas and centroids, the surface area, the bounding box and the enclosed volume), the pieces of
 // the cotangent Laplacian (cotangents, cotangent weights, vertex areas), and a seeded generator.
 // Every algorithm uses these rather than a copy of its own. Computed in double from the float
-// positions. Vector helpers (dot, cross, norm, unit_or_zero) are in core/vec.h; the float
-// centroid face_centroid() is in core/operations.h.
+// positions. Vector helpers (dot, cross, norm, unit_or_zero) are in core/vec.h; the face centroid
+// is core's face_centroid() (core/face_operations.h), which centroid() calls in double.
 #pragma once
 
 #include <array>
@@ -27,8 +27,8 @@ double longest_edge(const SurfaceMesh& mesh, Face f);
 //! The mean length of face f's edges. O(face degree).
 double mean_edge_length(const SurfaceMesh& mesh, Face f);
 
-//! The mean of f's corner positions, in double: face_centroid() (core/operations.h) before it is
-//! rounded to float. O(face degree).
+//! The mean of f's corner positions, in double: face_centroid<double>() of core/face_operations.h
+//! (face_centroid() rounds it to float). O(face degree).
 Vec3d centroid(const SurfaceMesh& mesh, Face f);
 
 //! The angle at corner `at` between the directions to a and to b, in [0, pi]; 0 if either side has

@@ -70,55 +70,50 @@ class ElementRange {
   unsigned shift_;
 };
 
-// What a circulator yields for each half-edge it visits, and which half-edges it passes over.
-struct HalfedgeOf {
+// What a circulator yields for each half-edge it visits (get), and which half-edges it passes over
+// (skip). Most pass over none.
+struct SkipNone {
+  template <typename M>
+  static bool skip(const M&, Halfedge) {
+    return false;
+  }
+};
+struct HalfedgeOf : SkipNone {
   template <typename M>
   static Halfedge get(const M&, Halfedge h) {
     return h;
   }
-  template <typename M>
-  static bool skip(const M&, Halfedge) {
-    return false;
-  }
 };
-struct TargetOf {
+struct TargetOf : SkipNone {
   template <typename M>
   static Vertex get(const M& m, Halfedge h) {
     return m.to_vertex(h);
   }
-  template <typename M>
-  static bool skip(const M&, Halfedge) {
-    return false;
-  }
 };
-struct EdgeOf {
+struct EdgeOf : SkipNone {
   template <typename M>
   static Edge get(const M& m, Halfedge h) {
     return m.edge(h);
   }
+};
+// Passes over the half-edges whose element is invalid (a face across the boundary).
+template <typename Of>
+struct SkipInvalid {
   template <typename M>
-  static bool skip(const M&, Halfedge) {
-    return false;
+  static bool skip(const M& m, Halfedge h) {
+    return !Of::get(m, h).is_valid();
   }
 };
-struct FaceOf {
+struct FaceOf : SkipInvalid<FaceOf> {
   template <typename M>
   static Face get(const M& m, Halfedge h) {
     return m.face(h);
   }
-  template <typename M>
-  static bool skip(const M& m, Halfedge h) {
-    return !m.face(h).is_valid();
-  }
 };
-struct TwinFaceOf {
+struct TwinFaceOf : SkipInvalid<TwinFaceOf> {
   template <typename M>
   static Face get(const M& m, Halfedge h) {
     return m.face(m.twin(h));
-  }
-  template <typename M>
-  static bool skip(const M& m, Halfedge h) {
-    return !m.face(m.twin(h)).is_valid();
   }
 };
 

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 namespace hedge {
 
@@ -18,26 +19,6 @@ struct VecN<T, 2> {
   constexpr T& operator[](std::size_t i) { return i == 0 ? x : y; }
   constexpr const T& operator[](std::size_t i) const { return i == 0 ? x : y; }
   friend constexpr bool operator==(const VecN&, const VecN&) = default;
-
-  constexpr VecN& operator+=(const VecN& o) {
-    x += o.x;
-    y += o.y;
-    return *this;
-  }
-  constexpr VecN& operator-=(const VecN& o) {
-    x -= o.x;
-    y -= o.y;
-    return *this;
-  }
-  constexpr VecN& operator*=(T s) {
-    x *= s;
-    y *= s;
-    return *this;
-  }
-  friend constexpr VecN operator+(VecN a, const VecN& b) { return a += b; }
-  friend constexpr VecN operator-(VecN a, const VecN& b) { return a -= b; }
-  friend constexpr VecN operator*(VecN a, T s) { return a *= s; }
-  friend constexpr VecN operator*(T s, VecN a) { return a *= s; }
 };
 
 template <typename T>
@@ -46,32 +27,49 @@ struct VecN<T, 3> {
   constexpr T& operator[](std::size_t i) { return i == 0 ? x : (i == 1 ? y : z); }
   constexpr const T& operator[](std::size_t i) const { return i == 0 ? x : (i == 1 ? y : z); }
   friend constexpr bool operator==(const VecN&, const VecN&) = default;
-
-  constexpr VecN& operator+=(const VecN& o) {
-    x += o.x;
-    y += o.y;
-    z += o.z;
-    return *this;
-  }
-  constexpr VecN& operator-=(const VecN& o) {
-    x -= o.x;
-    y -= o.y;
-    z -= o.z;
-    return *this;
-  }
-  constexpr VecN& operator*=(T s) {
-    x *= s;
-    y *= s;
-    z *= s;
-    return *this;
-  }
-  friend constexpr VecN operator+(VecN a, const VecN& b) { return a += b; }
-  friend constexpr VecN operator-(VecN a, const VecN& b) { return a -= b; }
-  friend constexpr VecN operator*(VecN a, T s) { return a *= s; }
-  friend constexpr VecN operator*(T s, VecN a) { return a *= s; }
-  friend constexpr VecN operator/(VecN a, T s) { return a *= T(1) / s; }
-  friend constexpr VecN operator-(const VecN& a) { return {-a.x, -a.y, -a.z}; }
 };
+
+// Component-wise arithmetic, written once for every size. The second operand and the scalar are
+// not deduced, so they convert as a plain parameter would (a braced list, an int scalar).
+template <typename T, int N>
+constexpr VecN<T, N>& operator+=(VecN<T, N>& a, const std::type_identity_t<VecN<T, N>>& b) {
+  for (std::size_t i = 0; i < N; ++i) a[i] += b[i];
+  return a;
+}
+template <typename T, int N>
+constexpr VecN<T, N>& operator-=(VecN<T, N>& a, const std::type_identity_t<VecN<T, N>>& b) {
+  for (std::size_t i = 0; i < N; ++i) a[i] -= b[i];
+  return a;
+}
+template <typename T, int N>
+constexpr VecN<T, N>& operator*=(VecN<T, N>& a, std::type_identity_t<T> s) {
+  for (std::size_t i = 0; i < N; ++i) a[i] *= s;
+  return a;
+}
+template <typename T, int N>
+constexpr VecN<T, N> operator+(VecN<T, N> a, const std::type_identity_t<VecN<T, N>>& b) {
+  return a += b;
+}
+template <typename T, int N>
+constexpr VecN<T, N> operator-(VecN<T, N> a, const std::type_identity_t<VecN<T, N>>& b) {
+  return a -= b;
+}
+template <typename T, int N>
+constexpr VecN<T, N> operator*(VecN<T, N> a, std::type_identity_t<T> s) {
+  return a *= s;
+}
+template <typename T, int N>
+constexpr VecN<T, N> operator*(std::type_identity_t<T> s, VecN<T, N> a) {
+  return a *= s;
+}
+template <typename T, int N>
+constexpr VecN<T, N> operator/(VecN<T, N> a, std::type_identity_t<T> s) {
+  return a *= T(1) / s;
+}
+template <typename T, int N>
+constexpr VecN<T, N> operator-(VecN<T, N> a) {
+  return a *= T(-1);
+}
 
 using Vec2 = VecN<float, 2>;
 using Vec3 = VecN<float, 3>;
