@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "edits/random_edits.h"
 #include "hedge/core/build.h"
 #include "hedge/core/surface_mesh.h"
-#include "edits/random_edits.h"
 #include "test_meshes.h"
 
 namespace hedge::test {
