@@ -95,10 +95,6 @@ void add_stress_arguments(CLI::App* app, StressOptions* options) {
 
 }  // namespace
 
-Command add_stress_command(CLI::App& parent) {
-  return make_command<StressOptions>(parent, "stress",
-                                     "Apply a seeded random sequence of local operations and check validity",
-                                     add_stress_arguments, run_stress);
-}
+const CommandBinder stress_command = bind_command<StressOptions, add_stress_arguments, run_stress>;
 
 }  // namespace hedge::cli
