@@ -50,7 +50,8 @@ Command bind_command(CLI::App& app) {
 //! Adds the subcommand `spec` to `parent`.
 Command add_command(CLI::App& parent, const CommandSpec& spec);
 
-//! The command line of the commands that read one mesh and report on it: FILE and --json.
+//! The command line of the commands that read one mesh and report on it: FILE and --json (info and
+//! validate; stress and render-buffers add options of their own).
 struct MeshReportOptions {
   std::string file;
   bool json = false;

@@ -16,15 +16,12 @@ namespace hedge::cli {
 
 namespace {
 
-struct RenderBuffersOptions {
-  std::string file;
+struct RenderBuffersOptions : MeshReportOptions {
   std::size_t edits = 100;
   std::uint64_t seed = 1;
   std::string winding = "ccw";
   bool flip_x = false;
   bool separate = false;
-  bool json = false;
-  LoadOptions load;
 };
 
 double median(std::vector<double> v) {

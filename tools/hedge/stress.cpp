@@ -13,13 +13,10 @@ namespace hedge::cli {
 
 namespace {
 
-struct StressOptions {
-  std::string file;
+struct StressOptions : MeshReportOptions {
   std::size_t ops = 10000;
   std::uint64_t seed = 1;
   std::size_t validate_every = 1;
-  bool json = false;
-  LoadOptions load;
 };
 
 int run_stress(const StressOptions& options) {
