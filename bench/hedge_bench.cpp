@@ -47,6 +47,7 @@
 #include "hedge/c_api.h"
 #include "hedge/core/build.h"
 #include "hedge/core/operations.h"
+#include "indexed_subdivide.h"
 
 namespace {
 
@@ -135,18 +136,6 @@ void decimate_tenth(benchmark::State& state, const hedge::SurfaceMesh* input) {
   state.counters["max_error"] = r.max_error;
 }
 
-hedge::SurfaceMesh plate(int n) {
-  hedge::IndexedMesh m;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) m.positions.push_back({float(i), float(j), 0.f});
-  auto id = [&](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      m.indices.insert(m.indices.end(),
-                       {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-  return hedge::build(m);
-}
-
 //! The meshes BM_fracture breaks, made or read on first use (the 1M plate takes a second).
 const hedge::SurfaceMesh* fracture_input(const std::string& name, const std::string& root) {
   static std::vector<std::pair<std::string, std::unique_ptr<hedge::SurfaceMesh>>> cache;
@@ -154,9 +143,9 @@ const hedge::SurfaceMesh* fracture_input(const std::string& name, const std::str
     if (n == name) return m.get();
   std::unique_ptr<hedge::SurfaceMesh> m;
   if (name == "plate_100k") {
-    m = std::make_unique<hedge::SurfaceMesh>(plate(224));  // 100,352 triangles
+    m = std::make_unique<hedge::SurfaceMesh>(hedge::build(bench::plate(224)));  // 100,352 triangles
   } else if (name == "plate_1m") {
-    m = std::make_unique<hedge::SurfaceMesh>(plate(708));  // 1,002,528 triangles
+    m = std::make_unique<hedge::SurfaceMesh>(hedge::build(bench::plate(708)));  // 1,002,528 triangles
   } else {
     const bench::Input in = bench::load_input(root + "/../shared/meshes/" + name + ".ply");
     m = std::make_unique<hedge::SurfaceMesh>(hedge::build_triangles(
@@ -166,14 +155,36 @@ const hedge::SurfaceMesh* fracture_input(const std::string& name, const std::str
   return cache.back().second.get();
 }
 
-void fracture_impacts(benchmark::State& state, std::string name, std::string root) {
-  const hedge::SurfaceMesh* input = nullptr;
+//! fracture_input(), or nullptr after marking the benchmark skipped with the reason.
+const hedge::SurfaceMesh* fracture_input_or_skip(benchmark::State& state, const std::string& name,
+                                                 const std::string& root) {
   try {
-    input = fracture_input(name, root);
+    return fracture_input(name, root);
   } catch (const std::exception& e) {
     state.SkipWithError(("skipped: " + std::string(e.what())).c_str());
-    return;
+    return nullptr;
   }
+}
+
+//! The counters of both fracture benchmarks: the input's triangles, the mean shards and shard faces
+//! per impact, and the median and 99th percentile of the timed calls in `seconds` (sorted here).
+//! Returns false, setting nothing, when no call was timed.
+bool set_fracture_counters(benchmark::State& state, std::vector<double>& seconds, double triangles,
+                           double shards, double faces) {
+  if (seconds.empty()) return false;
+  const double n = double(seconds.size());
+  std::sort(seconds.begin(), seconds.end());
+  state.counters["triangles"] = triangles;
+  state.counters["shards"] = shards / n;
+  state.counters["faces"] = faces / n;
+  state.counters["median_us"] = 1e6 * seconds[seconds.size() / 2];
+  state.counters["p99_us"] = 1e6 * seconds[std::min(seconds.size() - 1, seconds.size() * 99 / 100)];
+  return true;
+}
+
+void fracture_impacts(benchmark::State& state, std::string name, std::string root) {
+  const hedge::SurfaceMesh* input = fracture_input_or_skip(state, name, root);
+  if (!input) return;
   auto mesh = std::make_unique<hedge::SurfaceMesh>(*input);
   auto bvh = std::make_unique<hedge::FaceBvh>(*mesh);
   std::mt19937_64 rng(1);
@@ -209,14 +220,8 @@ void fracture_impacts(benchmark::State& state, std::string name, std::string roo
     r = {};
     state.ResumeTiming();
   }
-  if (seconds.empty()) return;
+  if (!set_fracture_counters(state, seconds, double(input->n_faces()), shards, faces)) return;
   const double n = double(seconds.size());
-  std::sort(seconds.begin(), seconds.end());
-  state.counters["triangles"] = double(input->n_faces());
-  state.counters["shards"] = shards / n;
-  state.counters["faces"] = faces / n;
-  state.counters["median_us"] = 1e6 * seconds[seconds.size() / 2];
-  state.counters["p99_us"] = 1e6 * seconds[std::min(seconds.size() - 1, seconds.size() * 99 / 100)];
   state.counters["locate_us"] = 1e6 * total.locate / n;
   state.counters["scatter_us"] = 1e6 * total.scatter / n;
   state.counters["cut_us"] = 1e6 * total.cut / n;
@@ -264,13 +269,8 @@ bool capi_face_centroid(hedge_mesh* mesh, std::uint32_t f, float out[3]) {
 }
 
 void capi_fracture_impacts(benchmark::State& state, std::string name, std::string root) {
-  const hedge::SurfaceMesh* input = nullptr;
-  try {
-    input = fracture_input(name, root);
-  } catch (const std::exception& e) {
-    state.SkipWithError(("skipped: " + std::string(e.what())).c_str());
-    return;
-  }
+  const hedge::SurfaceMesh* input = fracture_input_or_skip(state, name, root);
+  if (!input) return;
   std::string error;
   hedge_mesh* mesh = capi_mesh(*input, error);
   hedge_fracture_options options;
@@ -328,14 +328,7 @@ void capi_fracture_impacts(benchmark::State& state, std::string name, std::strin
     state.ResumeTiming();
   }
   if (mesh) hedge_mesh_destroy(mesh);
-  if (seconds.empty()) return;
-  const double n = double(seconds.size());
-  std::sort(seconds.begin(), seconds.end());
-  state.counters["triangles"] = double(input->n_faces());
-  state.counters["shards"] = broken / n;
-  state.counters["faces"] = faces / n;
-  state.counters["median_us"] = 1e6 * seconds[seconds.size() / 2];
-  state.counters["p99_us"] = 1e6 * seconds[std::min(seconds.size() - 1, seconds.size() * 99 / 100)];
+  set_fracture_counters(state, seconds, double(input->n_faces()), broken, faces);
 }
 
 void register_fracture(const std::string& root) {

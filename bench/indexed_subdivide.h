@@ -1,6 +1,6 @@
-// 1-to-4 midpoint subdivision of an indexed triangle mesh, used by the benchmarks to make meshes of
-// a million triangles and more from the shared ones. Texcoords, when present, are subdivided per
-// corner the same way, so UV seams stay seams.
+// Indexed triangle meshes the benchmarks make: 1-to-4 midpoint subdivision of an indexed triangle
+// mesh, to make meshes of a million triangles and more from the shared ones (texcoords, when
+// present, are subdivided per corner the same way, so UV seams stay seams), and a flat plate.
 #pragma once
 
 #include <algorithm>
@@ -57,6 +57,19 @@ inline int subdivide_until(hedge::IndexedMesh& mesh, std::size_t min_faces) {
     ++rounds;
   }
   return rounds;
+}
+
+//! A flat n x n grid of triangles in the XY plane: 2 n^2 triangles.
+inline hedge::IndexedMesh plate(int n) {
+  hedge::IndexedMesh m;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) m.positions.push_back({float(i), float(j), 0.f});
+  auto id = [&](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      m.indices.insert(m.indices.end(),
+                       {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+  return m;
 }
 
 }  // namespace bench

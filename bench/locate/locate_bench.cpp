@@ -34,19 +34,6 @@ namespace {
 using namespace hedge;
 namespace fs = std::filesystem;
 
-//! A flat n x n grid of triangles in the XY plane.
-IndexedMesh plate(int n) {
-  IndexedMesh m;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) m.positions.push_back({float(i), float(j), 0.f});
-  auto id = [&](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      m.indices.insert(m.indices.end(),
-                       {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-  return m;
-}
-
 struct Ray {
   Vec3 origin, direction;
 };
@@ -117,7 +104,7 @@ Workload load_workload(const fs::path& root, std::string mesh_path, std::size_t 
   w.sah.build(w.mesh, {.split = BvhSplit::sah});
   w.median.build(w.mesh, {.split = BvhSplit::median});
   const int side = static_cast<int>(std::ceil(std::sqrt(double(min_faces) / 2)));
-  w.plate_indexed = plate(side);
+  w.plate_indexed = bench::plate(side);
   w.plate = build(w.plate_indexed);
   w.plate_bvh.build(w.plate);
   make_queries(w, 4096);

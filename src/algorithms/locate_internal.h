@@ -265,6 +265,13 @@ struct Found {
     r.point = interpolate(m, corners, barycentric);
     return r;
   }
+  //! The same, with `best` (a squared distance or a ray parameter) stored in r.*distance.
+  template <typename Result>
+  std::optional<Result> report(double Result::*distance) const {
+    std::optional<Result> r = report<Result>();
+    if (r) (*r).*distance = best;
+    return r;
+  }
 };
 
 struct ClosestSearch : Found {
@@ -293,11 +300,7 @@ struct ClosestSearch : Found {
     offer(f, a, b, c, r.squared_distance, r.barycentric);
     return false;
   }
-  std::optional<LocateResult> result() const {
-    auto r = report<LocateResult>();
-    if (r) r->squared_distance = best;
-    return r;
-  }
+  std::optional<LocateResult> result() const { return report(&LocateResult::squared_distance); }
 };
 
 struct RaySearch : Found {
@@ -309,11 +312,7 @@ struct RaySearch : Found {
     if (h) offer(f, a, b, c, h->t, h->barycentric);
     return false;
   }
-  std::optional<RayHit> result() const {
-    auto r = report<RayHit>();
-    if (r) r->t = best;
-    return r;
-  }
+  std::optional<RayHit> result() const { return report(&RayHit::t); }
 };
 
 struct ContainSearch : Found {

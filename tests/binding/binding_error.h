@@ -4,19 +4,14 @@
 #include <gtest/gtest.h>
 
 #include "binding/errors.h"
+#include "caught.h"
 
 namespace hedge::binding {
 
 // The BindingError that body() throws; a test failure (and HEDGE_OK) when it throws none.
 template <typename Body>
 BindingError error_of(Body&& body) {
-  try {
-    body();
-  } catch (const BindingError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "nothing was thrown";
-  return {HEDGE_OK, ""};
+  return test::caught<BindingError>(body, {HEDGE_OK, ""});
 }
 
 }  // namespace hedge::binding

@@ -16,15 +16,20 @@ namespace {
 using test::repair;
 using test::tetrahedron;
 
+// build(in, options) throws an InvalidInputError whose message holds `what`.
+void expect_input_error(const IndexedMesh& in, const BuildOptions& options, const std::string& what) {
+  try {
+    build(in, options);
+    ADD_FAILURE() << "expected InvalidInputError";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+  }
+}
+
 TEST(Build, BadIndicesAndCoordinatesAreInputErrors) {
   IndexedMesh in = tetrahedron();
   in.indices[4] = 9;
-  try {
-    build(in);
-    FAIL() << "expected InvalidInputError";
-  } catch (const InvalidInputError& e) {
-    EXPECT_NE(std::string(e.what()).find("corner 4 refers to vertex 9"), std::string::npos) << e.what();
-  }
+  expect_input_error(in, {}, "corner 4 refers to vertex 9");
   in = tetrahedron();
   in.positions[2].y = std::numeric_limits<float>::quiet_NaN();
   EXPECT_THROW(build(in, repair()), InvalidInputError);
@@ -43,12 +48,7 @@ TEST(Build, CornerAttributeIndicesAreInputErrors) {
   EXPECT_THROW(build(in), InvalidInputError);
   in.texcoord_indices.assign(in.indices.size(), 0);
   in.texcoord_indices[5] = 2;  // past the end of the pool
-  try {
-    build(in);
-    FAIL() << "expected InvalidInputError";
-  } catch (const InvalidInputError& e) {
-    EXPECT_NE(std::string(e.what()).find("corner 5 refers to texcoord 2"), std::string::npos) << e.what();
-  }
+  expect_input_error(in, {}, "corner 5 refers to texcoord 2");
   in.texcoord_indices[5] = 1;
   in.normals = {{0, 0, 1}};
   in.normal_indices.assign(in.indices.size(), 1);
@@ -65,21 +65,10 @@ TEST(Build, ColourIndicesAndNonFiniteColoursAreInputErrors) {
   in.colors = {{1, 0, 0, 1}, {0, 1, 0, 1}};
   in.color_indices.assign(in.indices.size(), 0);
   in.color_indices[7] = 2;  // past the end of the pool
-  try {
-    build(in);
-    FAIL() << "expected InvalidInputError";
-  } catch (const InvalidInputError& e) {
-    EXPECT_NE(std::string(e.what()).find("corner 7 refers to color 2"), std::string::npos) << e.what();
-  }
+  expect_input_error(in, {}, "corner 7 refers to color 2");
   in.color_indices[7] = 1;
   in.colors[1].a = std::numeric_limits<float>::infinity();
-  try {
-    build(in, repair());
-    FAIL() << "expected InvalidInputError";
-  } catch (const InvalidInputError& e) {
-    EXPECT_NE(std::string(e.what()).find("color 1 has a non-finite component"), std::string::npos)
-        << e.what();
-  }
+  expect_input_error(in, repair(), "color 1 has a non-finite component");
   in.colors[1].a = 1;
   SurfaceMesh m = build(in);
   EXPECT_TRUE(m.get_halfedge_property<Color>("h:color"));

@@ -19,6 +19,7 @@
 #include "hedge/core/build.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "io/io_errors.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -26,7 +27,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
+using test::catch_io_error;
 using test::data_path;
+using test::expect_io_error;
 
 // A fresh folder per test, removed afterwards.
 class FileTest : public ::testing::Test {
@@ -50,6 +53,14 @@ class FileTest : public ::testing::Test {
   }
   static void put(const std::string& p, const std::string& bytes) {
     std::ofstream(p, std::ios::binary) << bytes;
+  }
+  //! Writing over a file `name` that has the permissions `perms` replaces its bytes and keeps them.
+  void expect_replaced_keeping(const std::string& name, fs::perms perms) const {
+    put(path(name), "old");
+    fs::permissions(path(name), perms);
+    write_file_atomic(path(name), "new");
+    EXPECT_EQ(read_file(path(name)), "new");
+    EXPECT_EQ(fs::status(path(name)).permissions() & fs::perms::all, perms);
   }
 
   fs::path dir_;
@@ -96,13 +107,8 @@ TEST(ReadIndexed, DispatchesOnTheFormat) {
 }
 
 TEST_F(FileTest, ReadFileErrors) {
-  try {
-    read_file(path("missing.obj"));
-    ADD_FAILURE();
-  } catch (const IoError& e) {
-    EXPECT_EQ(e.path(), path("missing.obj"));
-    EXPECT_NE(std::string(e.what()).find("cannot open"), std::string::npos);
-  }
+  const IoError e = expect_io_error([&] { read_file(path("missing.obj")); }, "cannot open");
+  EXPECT_EQ(e.path(), path("missing.obj"));
   EXPECT_THROW(read_file(dir_.string()), IoError);
   EXPECT_THROW(read_indexed_file(path("missing.off")), IoError);
 }
@@ -217,12 +223,7 @@ TEST_F(FileTest, AtomicWriteKeepsThePermissionsOfTheFileItReplaces) {
   for (bool named : {false, true}) {
     SCOPED_TRACE(named ? "named temporary files" : "unnamed temporary files");
     NamedTemporaryFiles mode(named);
-    put(path("p.txt"), "old");
-    fs::permissions(path("p.txt"), fs::perms::owner_read | fs::perms::owner_write);
-    write_file_atomic(path("p.txt"), "new");
-    EXPECT_EQ(read_file(path("p.txt")), "new");
-    EXPECT_EQ(fs::status(path("p.txt")).permissions() & fs::perms::all,
-              fs::perms::owner_read | fs::perms::owner_write);
+    expect_replaced_keeping("p.txt", fs::perms::owner_read | fs::perms::owner_write);
     fs::remove(path("p.txt"));
   }
 }
@@ -242,35 +243,21 @@ TEST_F(FileTest, AtomicWriteKeepsTheOwnerAndGroupOfTheFileItReplaces) {
 TEST_F(FileTest, AtomicWriteRefusesAReadOnlyFileEvenAsRoot) {
   put(path("ro.obj"), "keep");
   fs::permissions(path("ro.obj"), fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
-  try {
-    write_file_atomic(path("ro.obj"), "new");
-    ADD_FAILURE() << "a read-only file was replaced";
-  } catch (const IoError& e) {
-    EXPECT_EQ(e.path(), path("ro.obj"));
-    EXPECT_NE(std::string(e.what()).find("read-only"), std::string::npos) << e.what();
-  }
+  const IoError e = expect_io_error([&] { write_file_atomic(path("ro.obj"), "new"); }, "read-only");
+  EXPECT_EQ(e.path(), path("ro.obj"));
   EXPECT_EQ(read_file(path("ro.obj")), "keep");
   EXPECT_EQ(fs::status(path("ro.obj")).permissions() & fs::perms::all,
             fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
   EXPECT_EQ(listing(), (std::vector<std::string>{"ro.obj"}));
   // One write permission bit is enough, and it is kept.
-  put(path("group.obj"), "old");
-  fs::permissions(path("group.obj"), fs::perms::owner_read | fs::perms::group_write);
-  write_file_atomic(path("group.obj"), "new");
-  EXPECT_EQ(read_file(path("group.obj")), "new");
-  EXPECT_EQ(fs::status(path("group.obj")).permissions() & fs::perms::all,
-            fs::perms::owner_read | fs::perms::group_write);
+  expect_replaced_keeping("group.obj", fs::perms::owner_read | fs::perms::group_write);
 }
 
 TEST_F(FileTest, AtomicWriteIntoAMissingFolderCreatesNothing) {
   const std::string target = path("no/such/dir/mesh.obj");
-  try {
-    write_file_atomic(target, "data");
-    ADD_FAILURE();
-  } catch (const IoError& e) {
-    EXPECT_EQ(e.path(), target);
-    EXPECT_NE(std::string(e.what()).find("cannot create a temporary file"), std::string::npos) << e.what();
-  }
+  const IoError e =
+      expect_io_error([&] { write_file_atomic(target, "data"); }, "cannot create a temporary file");
+  EXPECT_EQ(e.path(), target);
   EXPECT_FALSE(fs::exists(path("no")));
   EXPECT_TRUE(listing().empty());
 }
@@ -278,12 +265,7 @@ TEST_F(FileTest, AtomicWriteIntoAMissingFolderCreatesNothing) {
 TEST_F(FileTest, AtomicWriteOverADirectoryFailsAndLeavesIt) {
   fs::create_directories(path("target.obj"));
   put(path("target.obj/inside.txt"), "keep");
-  try {
-    write_file_atomic(path("target.obj"), "data");
-    ADD_FAILURE();
-  } catch (const IoError& e) {
-    EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
-  }
+  expect_io_error([&] { write_file_atomic(path("target.obj"), "data"); }, "is a directory");
   EXPECT_TRUE(fs::is_directory(path("target.obj")));
   EXPECT_EQ(read_file(path("target.obj/inside.txt")), "keep");
   EXPECT_EQ(listing(), (std::vector<std::string>{"target.obj"}));  // the temporary was removed
@@ -292,21 +274,11 @@ TEST_F(FileTest, AtomicWriteOverADirectoryFailsAndLeavesIt) {
 TEST_F(FileTest, AtomicWriteRefusesAFifoAndADevice) {
   // Opening the FIFO to write would wait for a reader: a hang here means it was not refused.
   ASSERT_EQ(::mkfifo(path("pipe.obj").c_str(), 0666), 0);
-  try {
-    write_file_atomic(path("pipe.obj"), "data");
-    ADD_FAILURE();
-  } catch (const IoError& e) {
-    EXPECT_NE(std::string(e.what()).find("is a FIFO"), std::string::npos) << e.what();
-  }
+  expect_io_error([&] { write_file_atomic(path("pipe.obj"), "data"); }, "is a FIFO");
   EXPECT_TRUE(fs::is_fifo(fs::symlink_status(path("pipe.obj"))));
   // A device, reached through a link (writing to /dev/null itself would "succeed" unseen).
   fs::create_symlink("/dev/null", path("null.obj"));
-  try {
-    write_file_atomic(path("null.obj"), "data");
-    ADD_FAILURE();
-  } catch (const IoError& e) {
-    EXPECT_NE(std::string(e.what()).find("is a character device"), std::string::npos) << e.what();
-  }
+  expect_io_error([&] { write_file_atomic(path("null.obj"), "data"); }, "is a character device");
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
   EXPECT_TRUE(fs::is_symlink(path("null.obj")));
   EXPECT_EQ(listing(), (std::vector<std::string>{"null.obj", "pipe.obj"}));
@@ -350,12 +322,8 @@ TEST_F(FileTest, AtomicWriteThroughADanglingLinkCreatesItsTarget) {
   // Links in a loop are refused.
   fs::create_symlink("loop_b.obj", path("loop_a.obj"));
   fs::create_symlink("loop_a.obj", path("loop_b.obj"));
-  try {
-    write_file_atomic(path("loop_a.obj"), "data");
-    ADD_FAILURE();
-  } catch (const IoError& e) {
-    EXPECT_NE(std::string(e.what()).find("too many levels of symbolic links"), std::string::npos) << e.what();
-  }
+  expect_io_error([&] { write_file_atomic(path("loop_a.obj"), "data"); },
+                  "too many levels of symbolic links");
   EXPECT_TRUE(fs::is_symlink(path("loop_a.obj")));
   EXPECT_EQ(listing(), (std::vector<std::string>{"dangling.obj", "loop_a.obj", "loop_b.obj", "made.obj"}));
 }
@@ -462,14 +430,10 @@ TEST_F(FileTest, IndexedFilesInEveryFormat) {
 
 TEST_F(FileTest, ErrorsFromFilesNameThePath) {
   put(path("bad.obj"), "v 0 0 0\nv 1 0 0\nf 1 2 x\n");
-  try {
-    read_indexed_file(path("bad.obj"));
-    ADD_FAILURE();
-  } catch (const IoError& e) {
-    EXPECT_EQ(e.path(), path("bad.obj"));
-    EXPECT_EQ(e.line(), 3u);
-    EXPECT_EQ(std::string(e.what()), path("bad.obj") + ":3: expected a vertex index after 'f', got 'x'");
-  }
+  const IoError e = catch_io_error([&] { read_indexed_file(path("bad.obj")); });
+  EXPECT_EQ(e.path(), path("bad.obj"));
+  EXPECT_EQ(e.line(), 3u);
+  EXPECT_EQ(std::string(e.what()), path("bad.obj") + ":3: expected a vertex index after 'f', got 'x'");
 }
 
 TEST_F(FileTest, ATruncatedFaceLineIsNamedWithItsLine) {

@@ -1,8 +1,12 @@
-// Test support for the readers: the IoError a call throws, for checks of its message and place.
+// Test support for the readers and writers: the IoError a call throws, for checks of its message
+// and place.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <string>
+
+#include "caught.h"
 #include "hedge/error.h"
 
 namespace hedge::test {
@@ -10,13 +14,15 @@ namespace hedge::test {
 //! The IoError f() throws; a test failure (and an empty error) when it throws none.
 template <typename F>
 IoError catch_io_error(F&& f) {
-  try {
-    f();
-  } catch (const IoError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no IoError";
-  return IoError("", 0, -1, "");
+  return caught<IoError>(f, IoError("", 0, -1, ""));
+}
+
+//! f() throws an IoError whose message holds `what`; the error, for further checks.
+template <typename F>
+IoError expect_io_error(F&& f, const std::string& what) {
+  IoError e = catch_io_error(f);
+  EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+  return e;
 }
 
 }  // namespace hedge::test

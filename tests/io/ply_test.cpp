@@ -250,38 +250,28 @@ TEST(PlyRead, FacesBeforeVertices) {
   const std::string elements =
       "element face 1\nproperty list uchar int vertex_indices\n"
       "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+  // One triangle (first, 1, 0) over three vertices.
+  auto with_first_index = [&](const char* format, double first) {
+    return ply(format, elements,
+               {{'B', 3},
+                {'i', first},
+                {'i', 1},
+                {'i', 0},
+                {'f', 0},
+                {'f', 0},
+                {'f', 0},
+                {'f', 1},
+                {'f', 0},
+                {'f', 0},
+                {'f', 0},
+                {'f', 1},
+                {'f', 0}});
+  };
   for (const char* format : kFormats) {
     SCOPED_TRACE(format);
-    const IndexedMesh m = read_ply(ply(format, elements,
-                                       {{'B', 3},
-                                        {'i', 2},
-                                        {'i', 1},
-                                        {'i', 0},
-                                        {'f', 0},
-                                        {'f', 0},
-                                        {'f', 0},
-                                        {'f', 1},
-                                        {'f', 0},
-                                        {'f', 0},
-                                        {'f', 0},
-                                        {'f', 1},
-                                        {'f', 0}}));
+    const IndexedMesh m = read_ply(with_first_index(format, 2));
     EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{2, 1, 0}));
-    expect_ply_error(ply(format, elements,
-                         {{'B', 3},
-                          {'i', 3},
-                          {'i', 1},
-                          {'i', 0},
-                          {'f', 0},
-                          {'f', 0},
-                          {'f', 0},
-                          {'f', 1},
-                          {'f', 0},
-                          {'f', 0},
-                          {'f', 0},
-                          {'f', 1},
-                          {'f', 0}}),
-                     "face 0: vertex index 3 is out of range (3 vertices)");
+    expect_ply_error(with_first_index(format, 3), "face 0: vertex index 3 is out of range (3 vertices)");
   }
 }
 

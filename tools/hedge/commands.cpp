@@ -4,9 +4,23 @@
 
 namespace hedge::cli {
 
+Command add_command(CLI::App& parent, const CommandSpec& spec) {
+  return spec.bind(*parent.add_subcommand(spec.name, spec.description));
+}
+
 void add_mesh_file_argument(CLI::App& app, std::string& file, bool required) {
   CLI::Option* option = app.add_option("FILE", file, "Mesh file (.obj, .off, .ply, .stl, .gltf, .glb)");
   if (required) option->required();
+}
+
+void add_mesh_report_arguments(CLI::App* app, MeshReportOptions* options) {
+  add_mesh_file_argument(*app, options->file);
+  add_json_flag(*app, options->json);
+}
+
+LoadedMesh load_input(const InOutOptions& options) {
+  format_from_path(options.output);
+  return load_mesh(options.input, options.load);
 }
 
 void add_in_out_arguments(CLI::App& app, std::string& input, std::string& output, const char* input_help) {

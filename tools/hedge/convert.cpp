@@ -9,12 +9,8 @@ namespace hedge::cli {
 
 namespace {
 
-struct ConvertOptions {
-  std::string input;
-  std::string output;
-  bool ascii = false;
+struct ConvertOptions : InOutOptions {
   std::string reorder = "none";
-  LoadOptions load;
 };
 
 int run_convert(const ConvertOptions& options) {
@@ -46,11 +42,6 @@ void add_convert_arguments(CLI::App* app, ConvertOptions* options) {
 
 }  // namespace
 
-Command add_convert_command(CLI::App& parent) {
-  return make_command<ConvertOptions>(
-      parent, "convert",
-      "Convert between OBJ, OFF, PLY, STL and glTF (.gltf, .glb); formats from the extensions",
-      add_convert_arguments, run_convert);
-}
+const CommandBinder convert_command = bind_command<ConvertOptions, add_convert_arguments, run_convert>;
 
 }  // namespace hedge::cli

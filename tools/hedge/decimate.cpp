@@ -19,8 +19,7 @@ namespace hedge::cli {
 
 namespace {
 
-struct DecimateCommandOptions {
-  std::string input, output;
+struct DecimateCommandOptions : InOutOptions {
   double ratio = 0;  // 0: not given
   std::size_t faces = 0, vertices = 0;
   double max_error = std::numeric_limits<double>::infinity();
@@ -31,13 +30,10 @@ struct DecimateCommandOptions {
   double max_normal_change = DecimateOptions{}.max_normal_change_degrees;
   bool keep_boundary = false;
   bool break_seams = false;
-  bool ascii = false;
-  LoadOptions load;
 };
 
 int run_decimate(const DecimateCommandOptions& o) {
-  format_from_path(o.output);  // an unknown extension fails before the work
-  LoadedMesh loaded = load_mesh(o.input, o.load);
+  LoadedMesh loaded = load_input(o);
   SurfaceMesh& mesh = loaded.mesh;
   DecimateOptions d;
   if (o.ratio > 0)
@@ -112,11 +108,7 @@ void add_decimate_arguments(CLI::App* app, DecimateCommandOptions* o) {
 
 }  // namespace
 
-Command add_decimate_command(CLI::App& parent) {
-  return make_command<DecimateCommandOptions>(parent, "decimate",
-                                              "Decimate a triangle mesh by quadric-error edge collapses to "
-                                              "a vertex or face count or an error, and write it",
-                                              add_decimate_arguments, run_decimate);
-}
+const CommandBinder decimate_command =
+    bind_command<DecimateCommandOptions, add_decimate_arguments, run_decimate>;
 
 }  // namespace hedge::cli

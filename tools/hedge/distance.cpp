@@ -94,11 +94,7 @@ void add_distance_arguments(CLI::App* app, DistanceCommandOptions* options) {
 
 }  // namespace
 
-Command add_distance_command(CLI::App& parent) {
-  return make_command<DistanceCommandOptions>(
-      parent, "distance",
-      "Sampled symmetric Hausdorff distance and mean distance between the surfaces of two meshes",
-      add_distance_arguments, run_distance);
-}
+const CommandBinder distance_command =
+    bind_command<DistanceCommandOptions, add_distance_arguments, run_distance>;
 
 }  // namespace hedge::cli

@@ -206,11 +206,7 @@ void add_fracture_arguments(CLI::App* app, FractureCommandOptions* o) {
 
 }  // namespace
 
-Command add_fracture_command(CLI::App& parent) {
-  return make_command<FractureCommandOptions>(
-      parent, "fracture",
-      "Break a mesh at an impact point into shards; write the rest, one OBJ per shard and summary.json",
-      add_fracture_arguments, run_fracture);
-}
+const CommandBinder fracture_command =
+    bind_command<FractureCommandOptions, add_fracture_arguments, run_fracture>;
 
 }  // namespace hedge::cli

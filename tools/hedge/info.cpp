@@ -11,12 +11,6 @@ namespace hedge::cli {
 
 namespace {
 
-struct InfoOptions {
-  std::string file;
-  bool json = false;
-  LoadOptions load;
-};
-
 const char* yes_no(bool b) { return b ? "yes" : "no"; }
 
 template <typename T>
@@ -24,7 +18,7 @@ void row(const char* label, const T& value) {
   std::cout << "  " << std::left << std::setw(22) << label << value << '\n';
 }
 
-void print_text(const InfoOptions& options, const LoadedMesh& loaded, const MeshStats& s) {
+void print_text(const MeshReportOptions& options, const LoadedMesh& loaded, const MeshStats& s) {
   std::cout << options.file << " (" << format_name(loaded.format) << ")\n";
   row("vertices", s.vertices);
   row("edges", s.edges);
@@ -69,7 +63,7 @@ void print_text(const InfoOptions& options, const LoadedMesh& loaded, const Mesh
   if (!any) row("repairs", "none");
 }
 
-int run_info(const InfoOptions& options) {
+int run_info(const MeshReportOptions& options) {
   const LoadedMesh loaded = load_mesh(options.file, options.load);
   const MeshStats stats = compute_stats(loaded.mesh);
   if (options.json) {
@@ -85,17 +79,8 @@ int run_info(const InfoOptions& options) {
   return kExitOk;
 }
 
-void add_info_arguments(CLI::App* app, InfoOptions* options) {
-  add_mesh_file_argument(*app, options->file);
-  add_json_flag(*app, options->json);
-}
-
 }  // namespace
 
-Command add_info_command(CLI::App& parent) {
-  return make_command<InfoOptions>(
-      parent, "info", "Load a mesh (repairing it unless --strict) and report counts, topology and repairs",
-      add_info_arguments, run_info);
-}
+const CommandBinder info_command = bind_command<MeshReportOptions, add_mesh_report_arguments, run_info>;
 
 }  // namespace hedge::cli

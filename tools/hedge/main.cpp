@@ -5,6 +5,7 @@
 #include <iostream>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "commands.h"
 #include "progress_bar.h"
@@ -37,13 +38,46 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", HEDGE_VERSION);
   app.require_subcommand(1);
 
-  // The command table: one line per subcommand.
-  const Command commands[] = {
-      add_info_command(app),     add_validate_command(app),       add_convert_command(app),
-      add_stress_command(app),   add_render_buffers_command(app), add_render_command(app),
-      add_tour_command(app),     add_smooth_command(app),         add_subdivide_command(app),
-      add_decimate_command(app), add_distance_command(app),       add_fracture_command(app),
+  // The command table, in the order `hedge --help` lists the subcommands: name, description, and the
+  // binder defined in the command's own file.
+  const CommandSpec specs[] = {
+      {"info", "Load a mesh (repairing it unless --strict) and report counts, topology and repairs",
+       info_command},
+      {"validate", "Check every half-edge invariant; exit status 0 when valid, 1 when invalid",
+       validate_command},
+      {"convert", "Convert between OBJ, OFF, PLY, STL and glTF (.gltf, .glb); formats from the extensions",
+       convert_command},
+      {"stress", "Apply a seeded random sequence of local operations and check validity", stress_command},
+      {"render-buffers", "Show the engine buffers of a mesh and how little a sync after an edit uploads",
+       render_buffers_command},
+      {"render",
+       "Draw a mesh to a PNG picture without a GPU: shaded, with highlighted boundary, feature and "
+       "repaired elements; several meshes side by side (--grid); or the half-edge diagram of a small "
+       "mesh (--halfedges, PNG or SVG)",
+       render_command},
+      {"tour",
+       "Show what hedge does to a mesh: load and repair, validate, Catmull-Clark, split all faces, "
+       "Loop-subdivide and smooth, decimate, break like glass, cut a hole and fill it, the half-edge "
+       "diagram of one vertex's faces; writes a contact sheet PNG of every stage, the edited meshes, and "
+       "prints counts and timings",
+       tour_command},
+      {"smooth",
+       "Smooth a mesh's vertex positions (boundary fixed unless --free-boundary) and write the result",
+       smooth_command},
+      {"subdivide", "Subdivide a mesh and write the result", subdivide_command},
+      {"decimate",
+       "Decimate a triangle mesh by quadric-error edge collapses to a vertex or face count or an error, and "
+       "write it",
+       decimate_command},
+      {"distance",
+       "Sampled symmetric Hausdorff distance and mean distance between the surfaces of two meshes",
+       distance_command},
+      {"fracture",
+       "Break a mesh at an impact point into shards; write the rest, one OBJ per shard and summary.json",
+       fracture_command},
   };
+  std::vector<Command> commands;
+  for (const CommandSpec& spec : specs) commands.push_back(add_command(app, spec));
 
   try {
     app.parse(argc, argv);

@@ -266,13 +266,6 @@ void add_render_arguments(CLI::App* app, RenderCommandOptions* o) {
 
 }  // namespace
 
-Command add_render_command(CLI::App& parent) {
-  return make_command<RenderCommandOptions>(
-      parent, "render",
-      "Draw a mesh to a PNG picture without a GPU: shaded, with highlighted boundary, feature and "
-      "repaired elements; several meshes side by side (--grid); or the half-edge diagram of a small "
-      "mesh (--halfedges, PNG or SVG)",
-      add_render_arguments, run_render);
-}
+const CommandBinder render_command = bind_command<RenderCommandOptions, add_render_arguments, run_render>;
 
 }  // namespace hedge::cli

@@ -16,15 +16,12 @@ namespace hedge::cli {
 
 namespace {
 
-struct RenderBuffersOptions {
-  std::string file;
+struct RenderBuffersOptions : MeshReportOptions {
   std::size_t edits = 100;
   std::uint64_t seed = 1;
   std::string winding = "ccw";
   bool flip_x = false;
   bool separate = false;
-  bool json = false;
-  LoadOptions load;
 };
 
 double median(std::vector<double> v) {
@@ -126,11 +123,7 @@ void add_render_buffers_arguments(CLI::App* app, RenderBuffersOptions* options) 
 
 }  // namespace
 
-Command add_render_buffers_command(CLI::App& parent) {
-  return make_command<RenderBuffersOptions>(
-      parent, "render-buffers",
-      "Show the engine buffers of a mesh and how little a sync after an edit uploads",
-      add_render_buffers_arguments, run_render_buffers);
-}
+const CommandBinder render_buffers_command =
+    bind_command<RenderBuffersOptions, add_render_buffers_arguments, run_render_buffers>;
 
 }  // namespace hedge::cli

@@ -15,20 +15,16 @@ namespace hedge::cli {
 
 namespace {
 
-struct SmoothCommandOptions {
-  std::string input, output;
+struct SmoothCommandOptions : InOutOptions {
   std::string method = "uniform";
   int iterations = 10;
   double lambda = 0.5;
   double mu = -0.53;
   bool free_boundary = false;
-  bool ascii = false;
-  LoadOptions load;
 };
 
 int run_smooth(const SmoothCommandOptions& o) {
-  format_from_path(o.output);  // an unknown extension fails before the work
-  LoadedMesh loaded = load_mesh(o.input, o.load);
+  LoadedMesh loaded = load_input(o);
   SmoothOptions s;
   s.method = binding::parse_smooth_method(o.method);
   s.iterations = o.iterations;
@@ -46,8 +42,7 @@ int run_smooth(const SmoothCommandOptions& o) {
 }
 
 void add_smooth_arguments(CLI::App* app, SmoothCommandOptions* o) {
-  app->add_option("IN", o->input, "Input mesh file")->required();
-  app->add_option("OUT", o->output, "Output mesh file; missing folders are created")->required();
+  add_in_out_arguments(*app, o->input, o->output);
   app->add_option(
          "--method", o->method,
          "uniform (umbrella), taubin (lambda|mu, no shrinking), cotangent (cotangent weights, triangles "
@@ -72,11 +67,6 @@ void add_smooth_arguments(CLI::App* app, SmoothCommandOptions* o) {
 
 }  // namespace
 
-Command add_smooth_command(CLI::App& parent) {
-  return make_command<SmoothCommandOptions>(
-      parent, "smooth",
-      "Smooth a mesh's vertex positions (boundary fixed unless --free-boundary) and write the result",
-      add_smooth_arguments, run_smooth);
-}
+const CommandBinder smooth_command = bind_command<SmoothCommandOptions, add_smooth_arguments, run_smooth>;
 
 }  // namespace hedge::cli

@@ -13,13 +13,10 @@ namespace hedge::cli {
 
 namespace {
 
-struct StressOptions {
-  std::string file;
+struct StressOptions : MeshReportOptions {
   std::size_t ops = 10000;
   std::uint64_t seed = 1;
   std::size_t validate_every = 1;
-  bool json = false;
-  LoadOptions load;
 };
 
 int run_stress(const StressOptions& options) {
@@ -95,10 +92,6 @@ void add_stress_arguments(CLI::App* app, StressOptions* options) {
 
 }  // namespace
 
-Command add_stress_command(CLI::App& parent) {
-  return make_command<StressOptions>(parent, "stress",
-                                     "Apply a seeded random sequence of local operations and check validity",
-                                     add_stress_arguments, run_stress);
-}
+const CommandBinder stress_command = bind_command<StressOptions, add_stress_arguments, run_stress>;
 
 }  // namespace hedge::cli

@@ -17,17 +17,13 @@ namespace hedge::cli {
 
 namespace {
 
-struct SubdivideCommandOptions {
-  std::string input, output;
+struct SubdivideCommandOptions : InOutOptions {
   std::string scheme = "loop";
   int steps = 1;
-  bool ascii = false;
-  LoadOptions load;
 };
 
 int run_subdivide(const SubdivideCommandOptions& o) {
-  format_from_path(o.output);  // an unknown extension fails before the work
-  LoadedMesh loaded = load_mesh(o.input, o.load);
+  LoadedMesh loaded = load_input(o);
   SurfaceMesh& m = loaded.mesh;
   const std::size_t faces_before = m.n_faces();
   const Subdivision scheme = binding::parse_subdivision(o.scheme);
@@ -78,9 +74,7 @@ void add_subdivide_arguments(CLI::App* app, SubdivideCommandOptions* o) {
 
 }  // namespace
 
-Command add_subdivide_command(CLI::App& parent) {
-  return make_command<SubdivideCommandOptions>(parent, "subdivide", "Subdivide a mesh and write the result",
-                                               add_subdivide_arguments, run_subdivide);
-}
+const CommandBinder subdivide_command =
+    bind_command<SubdivideCommandOptions, add_subdivide_arguments, run_subdivide>;
 
 }  // namespace hedge::cli

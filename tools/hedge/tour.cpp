@@ -421,14 +421,6 @@ void add_tour_arguments(CLI::App* app, TourOptions* o) {
 
 }  // namespace
 
-Command add_tour_command(CLI::App& parent) {
-  return make_command<TourOptions>(
-      parent, "tour",
-      "Show what hedge does to a mesh: load and repair, validate, Catmull-Clark, split all faces, "
-      "Loop-subdivide and smooth, decimate, break like glass, cut a hole and fill it, the half-edge "
-      "diagram of one vertex's faces; writes a contact sheet PNG of every stage, the edited meshes, and "
-      "prints counts and timings",
-      add_tour_arguments, run_tour);
-}
+const CommandBinder tour_command = bind_command<TourOptions, add_tour_arguments, run_tour>;
 
 }  // namespace hedge::cli

@@ -12,13 +12,7 @@ namespace hedge::cli {
 
 namespace {
 
-struct ValidateOptions {
-  std::string file;
-  bool json = false;
-  LoadOptions load;
-};
-
-int run_validate(const ValidateOptions& options) {
+int run_validate(const MeshReportOptions& options) {
   std::vector<std::string> problems;
   std::optional<BuildReport> report;
   try {
@@ -52,17 +46,9 @@ int run_validate(const ValidateOptions& options) {
   return valid ? kExitOk : kExitDataError;
 }
 
-void add_validate_arguments(CLI::App* app, ValidateOptions* options) {
-  add_mesh_file_argument(*app, options->file);
-  add_json_flag(*app, options->json);
-}
-
 }  // namespace
 
-Command add_validate_command(CLI::App& parent) {
-  return make_command<ValidateOptions>(
-      parent, "validate", "Check every half-edge invariant; exit status 0 when valid, 1 when invalid",
-      add_validate_arguments, run_validate);
-}
+const CommandBinder validate_command =
+    bind_command<MeshReportOptions, add_mesh_report_arguments, run_validate>;
 
 }  // namespace hedge::cli
