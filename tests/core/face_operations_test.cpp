@@ -12,12 +12,7 @@
 namespace hedge {
 namespace {
 
-using test::Counts;
-using test::counts;
-using test::expect_corner_uv_matches_position;
-using test::Snapshot;
-using test::snapshot;
-using test::textured_grid;
+using namespace test;  // edit_checks.h and test_meshes.h
 
 TEST(SplitFace, PointInsideThePositionArray) {
   // As for split_edge: the point may be a reference into the position array that grows.

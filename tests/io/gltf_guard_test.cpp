@@ -5,23 +5,19 @@
 #include <unistd.h>
 
 #include <cstdint>
-#include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "heap_hooks.h"
-#include "hedge/error.h"
-#include "hedge/io/io.h"
 #include "io/base64.h"
+#include "io/gltf_test_common.h"
 #include "io/io_errors.h"
 
 namespace hedge {
 namespace {
 
-namespace fs = std::filesystem;
-using json = nlohmann::json;
+using namespace gltf_test;
 using test::catch_io_error;
 
 using test::heap_peak_during;

@@ -6,15 +6,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <filesystem>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include "hedge/error.h"
-#include "hedge/io/io.h"
 #include "io/base64.h"
+#include "io/gltf_test_common.h"
 #include "io/io_errors.h"
 #include "support/io_checks.h"
 #include "test_meshes.h"
@@ -22,8 +19,7 @@
 namespace hedge {
 namespace {
 
-namespace fs = std::filesystem;
-using json = nlohmann::json;
+using namespace gltf_test;
 
 using test::catch_io_error;
 using test::data_path;

@@ -1,5 +1,6 @@
 // hedge subdivide, run as a user would.
 #include <string>
+#include <vector>
 
 #include "cli_fixture.h"
 
@@ -7,11 +8,21 @@ namespace {
 
 using namespace cli_test;
 
-TEST_F(HedgeCli, SubdivideMultipliesTheFacesAndKeepsTheMeshValid) {
-  const fs::path out = tmp("sub.ply");
-  const Result r = run({"subdivide", data("tet.obj"), out.string(), "--scheme", "loop", "--steps", "3"});
-  ASSERT_EQ(r.code, 0) << r.err;
-  const json j = run_json({"info", out.string(), "--json"});
+// hedge subdivide on tet.obj with `options`, then what hedge info --json says of the file it wrote.
+class HedgeSubdivide : public HedgeCli {
+ protected:
+  json subdivide_tet(const std::string& out_name, const std::vector<std::string>& options) const {
+    const fs::path out = tmp(out_name);
+    std::vector<std::string> args = {"subdivide", data("tet.obj"), out.string()};
+    args.insert(args.end(), options.begin(), options.end());
+    const Result r = run(args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return run_json({"info", out.string(), "--json"});
+  }
+};
+
+TEST_F(HedgeSubdivide, SubdivideMultipliesTheFacesAndKeepsTheMeshValid) {
+  const json j = subdivide_tet("sub.ply", {"--scheme", "loop", "--steps", "3"});
   EXPECT_EQ(j["faces"], 256);
   EXPECT_EQ(j["euler_characteristic"], 2);
   EXPECT_TRUE(j["valid"].get<bool>());
@@ -19,9 +30,7 @@ TEST_F(HedgeCli, SubdivideMultipliesTheFacesAndKeepsTheMeshValid) {
   const json before = run_json({"info", data("tet.obj"), "--json"});
   EXPECT_LT(j["volume"].get<double>(), before["volume"].get<double>());
 
-  const fs::path mid = tmp("mid.obj");
-  ASSERT_EQ(run({"subdivide", data("tet.obj"), mid.string(), "--scheme", "midpoint"}).code, 0);
-  const json m = run_json({"info", mid.string(), "--json"});
+  const json m = subdivide_tet("mid.obj", {"--scheme", "midpoint"});
   EXPECT_EQ(m["faces"], 16);
   EXPECT_NEAR(m["volume"].get<double>(), before["volume"].get<double>(), 1e-6);
 
@@ -50,11 +59,8 @@ TEST_F(HedgeCli, SubdivideRefusesPolygonsForLoopAndBadOptions) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-TEST_F(HedgeCli, SubdivideBySqrt3TriplesTheFacesOfTriangles) {
-  const fs::path out = tmp("sqrt3.obj");
-  const Result r = run({"subdivide", data("tet.obj"), out.string(), "--scheme", "sqrt3", "--steps", "2"});
-  ASSERT_EQ(r.code, 0) << r.err;
-  const json j = run_json({"info", out.string(), "--json"});
+TEST_F(HedgeSubdivide, SubdivideBySqrt3TriplesTheFacesOfTriangles) {
+  const json j = subdivide_tet("sqrt3.obj", {"--scheme", "sqrt3", "--steps", "2"});
   EXPECT_EQ(j["faces"], 36);
   EXPECT_EQ(j["vertices"], 20);
   EXPECT_EQ(j["euler_characteristic"], 2);

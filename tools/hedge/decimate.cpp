@@ -75,30 +75,20 @@ void add_decimate_arguments(CLI::App* app, DecimateCommandOptions* o) {
          "--max-error", o->max_error,
          "Stop before a collapse that would move the surface by more than this distance (model units)")
       ->transform(real_number(0));
-  app->add_option("--boundary-weight", o->boundary_weight,
-                  "Weight of the planes that keep open boundaries (0: none)")
-      ->capture_default_str()
-      ->transform(real_number(0));
+  add_real_option(*app, "--boundary-weight", o->boundary_weight,
+                  "Weight of the planes that keep open boundaries (0: none)", 0);
   app->add_flag("--keep-boundary", o->keep_boundary, "Boundary vertices never move and are never removed");
-  app->add_option(
-         "--feature-angle", o->feature_angle,
-         "Edges whose faces meet at more than this dihedral angle (degrees) are kept like boundaries")
-      ->capture_default_str()
-      ->transform(real_number(0));
-  app->add_option("--feature-weight", o->feature_weight,
-                  "Weight of the planes that keep feature edges (0: none)")
-      ->capture_default_str()
-      ->transform(real_number(0));
+  add_real_option(
+      *app, "--feature-angle", o->feature_angle,
+      "Edges whose faces meet at more than this dihedral angle (degrees) are kept like boundaries", 0);
+  add_real_option(*app, "--feature-weight", o->feature_weight,
+                  "Weight of the planes that keep feature edges (0: none)", 0);
   app->add_flag("--break-seams", o->break_seams,
                 "Lift the seam rule of decimation (collapses off a UV seam stay refused)");
-  app->add_option("--attribute-weight", o->attribute_weight,
-                  "Weight of texture distortion in the error (0: none)")
-      ->capture_default_str()
-      ->transform(real_number(0));
-  app->add_option("--max-normal-change", o->max_normal_change,
-                  "Refuse collapses that turn a face by more than this many degrees")
-      ->capture_default_str()
-      ->transform(real_number(0, 180));
+  add_real_option(*app, "--attribute-weight", o->attribute_weight,
+                  "Weight of texture distortion in the error (0: none)", 0);
+  add_real_option(*app, "--max-normal-change", o->max_normal_change,
+                  "Refuse collapses that turn a face by more than this many degrees", 0, 180);
   add_ascii_flag(*app, o->ascii);
   app->callback([app, ratio, faces, vertices] {
     if (ratio->count() + faces->count() + vertices->count() + app->get_option("--max-error")->count() == 0)

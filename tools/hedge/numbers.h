@@ -39,6 +39,17 @@ CLI::Validator whole_number(T min, T max = std::numeric_limits<T>::max());
 CLI::Validator real_number(double min, double max = std::numeric_limits<double>::infinity(),
                            bool min_open = false);
 
+//! Adds to `app` an option `name` whose value is a real number checked by
+//! real_number(min, max, min_open), with its default shown in --help.
+template <typename T>
+CLI::Option* add_real_option(CLI::App& app, const std::string& name, T& value, const std::string& description,
+                             double min, double max = std::numeric_limits<double>::infinity(),
+                             bool min_open = false) {
+  return app.add_option(name, value, description)
+      ->capture_default_str()
+      ->transform(real_number(min, max, min_open));
+}
+
 //! The number in plain words: "0", "1", "0.5", "1e+30".
 std::string number_text(double value);
 

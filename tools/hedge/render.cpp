@@ -228,10 +228,8 @@ void add_render_arguments(CLI::App* app, RenderCommandOptions* o) {
   add_point_option(app, "--eye", o->eye, "Explicit camera position x,y,z (with --target)");
   add_point_option(app, "--target", o->target, "Point the explicit camera looks at, x,y,z");
   add_point_option(app, "--up", o->up, "Up direction of the explicit camera, x,y,z (default 0,1,0)");
-  app->add_option("--fov", o->fov,
-                  "Vertical field of view in degrees of the explicit camera (0: orthographic)")
-      ->capture_default_str()
-      ->transform(real_number(0, 179));
+  add_real_option(*app, "--fov", o->fov,
+                  "Vertical field of view in degrees of the explicit camera (0: orthographic)", 0, 179);
   app->add_option("--shading", o->shading, "flat or smooth")
       ->capture_default_str()
       ->check(CLI::IsMember({"flat", "smooth"}));
@@ -239,10 +237,8 @@ void add_render_arguments(CLI::App* app, RenderCommandOptions* o) {
       ->capture_default_str()
       ->check(CLI::IsMember({"none", "face", "shard", "curvature", "valence"}));
   app->add_flag("--wireframe", o->wireframe, "Draw every edge");
-  app->add_option("--feature-angle", o->feature_angle,
-                  "Highlight edges whose faces meet at more than this angle, in degrees (0: none)")
-      ->capture_default_str()
-      ->transform(real_number(0, 180));
+  add_real_option(*app, "--feature-angle", o->feature_angle,
+                  "Highlight edges whose faces meet at more than this angle, in degrees (0: none)", 0, 180);
   app->add_option("--supersample", o->supersample, "Samples per pixel along each axis, 1..4 (anti-aliasing)")
       ->capture_default_str()
       ->transform(whole_number<int>(1, 4));

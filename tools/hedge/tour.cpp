@@ -124,6 +124,8 @@ std::vector<Face> faces_near(const SurfaceMesh& m, Vertex v, int rings) {
 //! What the stages of a tour share: the loaded mesh, the camera, the meshes made so far, and the
 //! pictures and table rows they added.
 struct Tour {
+  explicit Tour(const TourOptions& options) : o(options) {}
+
   const TourOptions& o;
   LoadedMesh loaded;
   double load_ms = 0;
@@ -386,7 +388,7 @@ int run_tour(const TourOptions& o) {
   std::string name = std::filesystem::path(o.input).stem().string();
   if (name.empty()) name = "mesh";
 
-  Tour t{o};
+  Tour t(o);
   t.base = (std::filesystem::path(o.out_dir) / name).string();
   t.load_ms = timed([&] { t.loaded = load_mesh(o.input, o.load); });
   if (t.mesh().n_faces() == 0) throw InvalidInputError(o.input + ": nothing to show: the mesh has no faces");
