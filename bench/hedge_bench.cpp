@@ -261,7 +261,7 @@ bool capi_face_centroid(hedge_mesh* mesh, std::uint32_t f, float out[3]) {
   double c[3] = {0, 0, 0};
   for (std::uint32_t i = 0; i < n; ++i) {
     float p[3];
-    if (hedge_mesh_get_position(mesh, corners[i], p) != HEDGE_OK) return false;
+    if (hedge_vertex_position(mesh, corners[i], p) != HEDGE_OK) return false;
     for (int k = 0; k < 3; ++k) c[k] += double(p[k]);
   }
   for (int k = 0; k < 3; ++k) out[k] = float(c[k] / double(n));

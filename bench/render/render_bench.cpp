@@ -1,11 +1,11 @@
 // Incremental render buffers against a full re-export, in one run, on meshes of a million triangles
 // and more: random local edits (split, collapse, flip, split face, vertex moves), each followed by
-// RenderSync::sync(), against building the buffers from scratch after every change
-// (RenderSync::rebuild(); docs/names.md says which call of the original project it stands for). Google
+// RenderBuffers::sync(), against building the buffers from scratch after every change
+// (RenderBuffers::rebuild(); docs/names.md says which call of the original project it stands for). Google
 // Benchmark prints its table for the full export and for edit + sync; then a summary gives, from per-edit
 // samples, the median bytes rewritten and the median time per edit, with their ratios to a full re-export.
 //
-//   hedge_render_bench [--root DIR] [--mesh FILE]... [--min-faces N] [--edits N] [--json FILE]
+//   hedge_render_buffers_bench [--root DIR] [--mesh FILE]... [--min-faces N] [--edits N] [--json FILE]
 //                      [Google Benchmark flags]
 //
 // Default meshes: ../shared/meshes/armadillo.obj (no texcoords: computed normals) and
@@ -26,7 +26,7 @@
 #include "hedge/core/build.h"
 #include "hedge/core/operations.h"
 #include "hedge/io/io.h"
-#include "hedge/render/render_sync.h"
+#include "hedge/render/render_buffers.h"
 #include "indexed_subdivide.h"
 
 namespace {
@@ -88,7 +88,7 @@ bool random_edit(SurfaceMesh& m, std::mt19937_64& rng) {
 }
 
 void BM_FullExport(benchmark::State& state, Workload* w) {
-  RenderSync rs(w->mesh);
+  RenderBuffers rs(w->mesh);
   for (auto _ : state) {
     rs.rebuild();
     benchmark::DoNotOptimize(rs.indices().data());
@@ -99,7 +99,7 @@ void BM_FullExport(benchmark::State& state, Workload* w) {
 
 void BM_EditAndSync(benchmark::State& state, Workload* w) {
   SurfaceMesh m = w->mesh;
-  RenderSync rs(m);
+  RenderBuffers rs(m);
   std::mt19937_64 rng(42);
   std::size_t bytes = 0, edits = 0;
   for (auto _ : state) {
@@ -140,7 +140,7 @@ Summary measure(Workload& w, std::size_t edits) {
   Summary s;
   s.name = w.name;
   SurfaceMesh m = w.mesh;
-  RenderSync rs(m);
+  RenderBuffers rs(m);
   s.triangles = rs.n_triangles();
   s.render_vertices = rs.n_vertices();
   s.seams = rs.seam_splits();
@@ -186,7 +186,7 @@ Summary measure(Workload& w, std::size_t edits) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  fs::path root = HEDGE_RENDER_BENCH_ROOT;
+  fs::path root = HEDGE_RENDER_BUFFERS_BENCH_ROOT;
   std::vector<std::string> meshes;
   std::size_t min_faces = 1000000, edits = 10000;
   std::string json;

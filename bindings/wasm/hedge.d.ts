@@ -297,12 +297,12 @@ export class Mesh {
   toArrays(options?: { triangulate?: boolean }): Arrays;
   toFile(name: string): Uint8Array;
   memoryBytes(): number;
-  createRender(options?: {
+  createRenderBuffers(options?: {
     normals?: 'auto' | 'computed' | 'attribute' | 'none';
     interleaved?: boolean;
     texcoords?: boolean;
     colors?: boolean;
-  }): Render;
+  }): RenderBuffers;
 }
 
 export interface Layout {
@@ -339,7 +339,7 @@ export interface SyncResult {
   full: boolean;
 }
 
-export class Render {
+export class RenderBuffers {
   readonly hedge: Hedge;
   dispose(): void;
   readonly disposed: boolean;
@@ -362,3 +362,17 @@ export class Render {
 
 /** node only (node.js): loadHedge with the wasm read from disk. */
 export function loadHedgeNode(options?: LoadOptions): Promise<Hedge>;
+
+// ---- Deprecated names (kept for one release) ----------------------------------------------------
+// The names of the previous release; the next release removes them.
+
+/** @deprecated Use RenderBuffers. */
+export declare const Render: typeof RenderBuffers;
+/** @deprecated Use RenderBuffers. */
+export type Render = RenderBuffers;
+
+export interface Mesh {
+  /** @deprecated Use createRenderBuffers(options). */
+  createRender(options?: Parameters<Mesh['createRenderBuffers']>[0]): RenderBuffers;
+}
+// ---- End of deprecated names --------------------------------------------------------------------

@@ -8,11 +8,11 @@
 // belongs to edge h >> 1 and its twin is h ^ 1. Every failure throws a HedgeError whose message is
 // hedge's own (the file and line of a malformed file, why an operation was refused).
 //
-// Memory: a Mesh or Render frees its wasm memory when it is garbage-collected, and dispose() frees
+// Memory: a Mesh or RenderBuffers frees its wasm memory when it is garbage-collected, and dispose() frees
 // it at once (calling it again does nothing; any other call on a disposed object throws).
 //
 // Views: positions, render buffers and the like are typed arrays over wasm memory, not copies. A
-// view stays valid until the next call that edits the mesh or syncs its Render (which may move the
+// view stays valid until the next call that edits the mesh or syncs its RenderBuffers (which may move the
 // buffer) or until wasm memory grows (any call that allocates may grow it; the old views then
 // have length 0). Take views right before use; taking one costs no copy.
 import createHedge from './hedge.mjs';
@@ -187,7 +187,7 @@ export class Hedge {
   }
 }
 
-/** What Mesh and Render share: a native object freed on dispose() or when collected. */
+/** What Mesh and RenderBuffers share: a native object freed on dispose() or when collected. */
 class NativeOwner {
   constructor(hedge, native, what) {
     this.hedge = hedge;
@@ -219,7 +219,7 @@ class NativeOwner {
   }
 }
 
-/** A half-edge mesh in wasm memory. dispose() frees it now; a Render made from it keeps working
+/** A half-edge mesh in wasm memory. dispose() frees it now; a RenderBuffers made from it keeps working
  *  (it shares the mesh). */
 export class Mesh extends NativeOwner {
   constructor(hedge, native) {
@@ -471,7 +471,7 @@ export class Mesh extends NativeOwner {
   // ---- Fracture ----
 
   /** Breaks the mesh at `impact` ([x, y, z], within the tolerance of the surface) into shards; the
-   *  mesh is edited in place (the broken faces leave it) and its Render syncs the change as a few
+   *  mesh is edited in place (the broken faces leave it) and its RenderBuffers syncs the change as a few
    *  ranges. material: 'glass', 'stone', 'wood', 'ice' or {name, rings: [{points, spacing,
    *  jitter}], grain, grainStretch, refineEdge, absolute} (docs/fracture.md). seed: a whole number
    *  (the same seed, mesh and impact give the same shards). thickness > 0 makes each shard a
@@ -561,13 +561,24 @@ export class Mesh extends NativeOwner {
     return this._call('memoryBytes');
   }
 
-  /** Engine-ready buffers kept in step with this mesh (RenderSync). options: normals ('auto',
+  /** Engine-ready buffers kept in step with this mesh (RenderBuffers). options: normals ('auto',
    *  'computed', 'attribute', 'none'), interleaved (true), texcoords (true), colors (true). */
-  createRender({ normals = 'auto', interleaved = true, texcoords = true, colors = true } = {}) {
+  createRenderBuffers({
+    normals = 'auto',
+    interleaved = true,
+    texcoords = true,
+    colors = true,
+  } = {}) {
     const native = this.hedge._check(
-      this.hedge.module.NativeRender.create(this._n(), normals, interleaved, texcoords, colors),
+      this.hedge.module.NativeRenderBuffers.create(
+        this._n(),
+        normals,
+        interleaved,
+        texcoords,
+        colors,
+      ),
     );
-    return new Render(this.hedge, native);
+    return new RenderBuffers(this.hedge, native);
   }
 }
 
@@ -599,8 +610,8 @@ export class Shard {
   }
 }
 
-/** Vertex and index buffers for a GPU, updated by dirty ranges (RenderSync). */
-export class Render extends NativeOwner {
+/** Vertex and index buffers for a GPU, updated by dirty ranges (RenderBuffers). */
+export class RenderBuffers extends NativeOwner {
   constructor(hedge, native) {
     super(hedge, native, 'render object');
   }
@@ -695,3 +706,15 @@ export class Render extends NativeOwner {
     return this._call('commit');
   }
 }
+
+// ---- Deprecated names (kept for one release) ----------------------------------------------------
+// The names of the previous release; the next release removes them.
+
+/** @deprecated Use RenderBuffers. */
+export const Render = RenderBuffers;
+
+/** @deprecated Use mesh.createRenderBuffers(options). */
+Mesh.prototype.createRender = function createRender(options) {
+  return this.createRenderBuffers(options);
+};
+// ---- End of deprecated names --------------------------------------------------------------------

@@ -4,7 +4,7 @@
 //   wasm_mesh.*      NativeMesh: construction, queries, picking
 //   wasm_edits.cpp   NativeMesh: local edits and whole-mesh algorithms
 //   wasm_fracture.cpp NativeMesh: fracture
-//   wasm_render.cpp  NativeRender
+//   wasm_render.cpp  NativeRenderBuffers
 //   hedge_wasm.cpp   module-level functions and NativeMesh's registration
 // The binding sits on the binding core (src/binding/), as the C ABI does.
 #include <malloc.h>

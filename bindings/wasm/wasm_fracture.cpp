@@ -70,7 +70,7 @@ val WasmMesh::fracture(val impact, const std::string& preset, val custom, double
     for (std::size_t i = 0; i < n; ++i) {
       Shard& shard = r.shards[i];
       const MassProperties& mp = shard.mass;
-      const double head[] = {double(shard.mesh.n_faces()), shard.area, shard.volume,
+      const double head[] = {double(shard.mesh.n_faces()), shard.area, shard.mass.volume,
                              shard.closed ? 1.0 : 0.0,     mp.mass,    double(int(shard.hull.dimension)),
                              shard.hull.tolerance};
       scalars.insert(scalars.end(), std::begin(head), std::end(head));

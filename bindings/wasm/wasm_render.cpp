@@ -1,5 +1,5 @@
-// NativeRender, the native half of the JS API's Render (hedge.js): a RenderSync of a mesh, sharing
-// the mesh's state (wasm_support.h).
+// NativeRenderBuffers, the native half of the JS API's RenderBuffers (hedge.js): a RenderBuffers of a mesh,
+// sharing the mesh's state (wasm_support.h).
 #include <memory>
 #include <span>
 #include <string>
@@ -8,7 +8,7 @@
 #include "binding/handles.h"
 #include "binding/names.h"
 #include "hedge/error.h"
-#include "hedge/render/render_sync.h"
+#include "hedge/render/render_buffers.h"
 #include "wasm_mesh.h"
 
 namespace hedge::wasm {
@@ -40,21 +40,21 @@ val sync_result_to_js(const SyncResult& r) {
   return out;
 }
 
-class WasmRender {
+class WasmRenderBuffers {
  public:
-  WasmRender() = default;
+  WasmRenderBuffers() = default;
 
-  static WasmRender create(const WasmMesh& mesh, const std::string& normals, bool interleaved, bool texcoords,
-                           bool colors) {
+  static WasmRenderBuffers create(const WasmMesh& mesh, const std::string& normals, bool interleaved,
+                                  bool texcoords, bool colors) {
     return guarded([&] {
-      WasmRender r;
+      WasmRenderBuffers r;
       r.s_ = mesh.state();
       RenderOptions options;
       options.normals = binding::parse_normal_source(normals);
       options.interleaved = interleaved;
       options.texcoords = texcoords;
       options.colors = colors;
-      r.sync_ = std::make_shared<RenderSync>(r.s_->mesh, options);
+      r.sync_ = std::make_shared<RenderBuffers>(r.s_->mesh, options);
       return r;
     });
   }
@@ -75,7 +75,7 @@ class WasmRender {
 
   val sizes() const {
     return guarded([&] {
-      const RenderSync& r = sync();
+      const RenderBuffers& r = sync();
       val out = val::object();
       out.set("vertexSlots", double(r.vertex_slots()));
       out.set("triangleSlots", double(r.triangle_slots()));
@@ -94,7 +94,7 @@ class WasmRender {
   //! 2 texcoords, 3 colours.
   val stream_view(int stream) const {
     return guarded([&] {
-      const RenderSync& r = sync();
+      const RenderBuffers& r = sync();
       std::span<const float> s;
       switch (stream) {
         case 0:
@@ -160,34 +160,34 @@ class WasmRender {
   }
 
  private:
-  RenderSync& sync() const {
+  RenderBuffers& sync() const {
     if (!sync_) throw InvalidInputError("this render object was not created");
     return *sync_;
   }
-  // The state first: members are destroyed in reverse order, so the RenderSync detaches from the
+  // The state first: members are destroyed in reverse order, so the RenderBuffers detaches from the
   // mesh's change log before the mesh can go.
   std::shared_ptr<MeshState> s_;
-  std::shared_ptr<RenderSync> sync_;
+  std::shared_ptr<RenderBuffers> sync_;
 };
 
 }  // namespace
 
 }  // namespace hedge::wasm
 
-EMSCRIPTEN_BINDINGS(hedge_render) {
+EMSCRIPTEN_BINDINGS(hedge_render_buffers) {
   using namespace emscripten;
-  using hedge::wasm::WasmRender;
-  class_<WasmRender>("NativeRender")
-      .class_function("create", &WasmRender::create)
-      .function("layout", &WasmRender::layout)
-      .function("sizes", &WasmRender::sizes)
-      .function("streamView", &WasmRender::stream_view)
-      .function("indicesView", &WasmRender::indices_view)
-      .function("vertexSourceView", &WasmRender::vertex_source_view)
-      .function("faceTriangles", &WasmRender::face_triangles)
-      .function("sync", &WasmRender::do_sync)
-      .function("rebuild", &WasmRender::rebuild)
-      .function("compact", &WasmRender::compact)
-      .function("begin", &WasmRender::begin)
-      .function("commit", &WasmRender::commit);
+  using hedge::wasm::WasmRenderBuffers;
+  class_<WasmRenderBuffers>("NativeRenderBuffers")
+      .class_function("create", &WasmRenderBuffers::create)
+      .function("layout", &WasmRenderBuffers::layout)
+      .function("sizes", &WasmRenderBuffers::sizes)
+      .function("streamView", &WasmRenderBuffers::stream_view)
+      .function("indicesView", &WasmRenderBuffers::indices_view)
+      .function("vertexSourceView", &WasmRenderBuffers::vertex_source_view)
+      .function("faceTriangles", &WasmRenderBuffers::face_triangles)
+      .function("sync", &WasmRenderBuffers::do_sync)
+      .function("rebuild", &WasmRenderBuffers::rebuild)
+      .function("compact", &WasmRenderBuffers::compact)
+      .function("begin", &WasmRenderBuffers::begin)
+      .function("commit", &WasmRenderBuffers::commit);
 }

@@ -11,7 +11,7 @@
 // their destructors and leave the stack pointer lowered, so the binding never does that.
 //
 // Objects. A Mesh holds its SurfaceMesh (and the picking tree) through a shared state, which each
-// Render shares too: disposing a Mesh before its Render leaves the Render working.
+// RenderBuffers shares too: disposing a Mesh before its RenderBuffers leaves the RenderBuffers working.
 #pragma once
 
 #include <emscripten/bind.h>

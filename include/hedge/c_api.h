@@ -12,7 +12,7 @@
  *    string functions leave it as it is). The status codes are the one list of error kinds of
  *    every binding: the JS API's HedgeError.kind and the C# binding's HedgeStatus name them one to
  *    one.
- *  - Objects are opaque handles: hedge_mesh* and hedge_render*. A handle is not an address: it is
+ *  - Objects are opaque handles: hedge_mesh* and hedge_render_buffers*. A handle is not an address: it is
  *    an id checked against a registry of live objects on every call, so NULL, a destroyed handle or
  *    a value that was never a handle yields HEDGE_ERROR_BAD_HANDLE instead of undefined behaviour.
  *    Ids are never reused within a process, so a destroyed handle never aliases a later object.
@@ -123,7 +123,7 @@ HEDGE_API hedge_status hedge_version(int32_t* out_major, int32_t* out_minor, int
 /* ============================================================================================ */
 
 typedef struct hedge_mesh hedge_mesh;
-typedef struct hedge_render hedge_render;
+typedef struct hedge_render_buffers hedge_render_buffers;
 
 /** Topology policy (hedge::TopologyPolicy). */
 enum {
@@ -219,10 +219,11 @@ typedef struct hedge_counts {
 HEDGE_API hedge_status hedge_mesh_counts(const hedge_mesh* mesh, hedge_counts* out_counts);
 
 /** out_xyz receives 3 floats. */
-HEDGE_API hedge_status hedge_mesh_get_position(const hedge_mesh* mesh, uint32_t vertex, float* out_xyz);
+HEDGE_API hedge_status hedge_vertex_position(const hedge_mesh* mesh, uint32_t vertex, float* out_xyz);
 /** Moves a vertex (render objects see it at their next sync). NaN or infinity:
  *  HEDGE_ERROR_INVALID_ARGUMENT. */
-HEDGE_API hedge_status hedge_mesh_set_position(hedge_mesh* mesh, uint32_t vertex, float x, float y, float z);
+HEDGE_API hedge_status hedge_set_vertex_position(hedge_mesh* mesh, uint32_t vertex, float x, float y,
+                                                 float z);
 /** Copies the positions of every vertex slot (deleted ones included, with stale data): 3 floats a
  *  slot, so the size needed (*out_count, in floats) is 3 x vertex_slots. */
 HEDGE_API hedge_status hedge_mesh_copy_positions(const hedge_mesh* mesh, float* buffer, uint64_t capacity,
@@ -357,8 +358,8 @@ HEDGE_API hedge_status hedge_cut_face(hedge_mesh* mesh, uint32_t halfedge0, uint
  *  \param capacity entries in buffer; when buffer is not NULL it must be at least the number of
  *         live faces (else HEDGE_ERROR_BUFFER_TOO_SMALL and nothing is changed).
  *  \param out_count the number of new vertices (the number of live faces). */
-HEDGE_API hedge_status hedge_split_all_faces(hedge_mesh* mesh, uint32_t* buffer, uint32_t capacity,
-                                             uint32_t* out_count);
+HEDGE_API hedge_status hedge_mesh_split_all_faces(hedge_mesh* mesh, uint32_t* buffer, uint32_t capacity,
+                                                  uint32_t* out_count);
 
 /** True if a face with these corners (count vertices, counter-clockwise) can be added while every
  *  vertex and edge stays manifold. O(count x valence). */
@@ -827,13 +828,13 @@ HEDGE_API hedge_status hedge_mesh_face_containing_point_2d(hedge_mesh* mesh, flo
                                                            hedge_surface_hit* out_hit, int32_t* out_found);
 
 /* ============================================================================================ */
-/* Render buffers (hedge/render/render_sync.h)                                                  */
+/* Render buffers (hedge/render/render_buffers.h)                                               */
 /* ============================================================================================ */
 /* A render object keeps engine-ready vertex and index buffers in step with its mesh: each face
  * owns fixed triangle slots, each render vertex (a mesh vertex per distinct set of corner
- * attributes: seams split vertices) a fixed vertex slot; hedge_render_sync() rewrites only what
+ * attributes: seams split vertices) a fixed vertex slot; hedge_render_buffers_sync() rewrites only what
  * the edits since the last sync touched and reports the rewritten ranges. Freed slots stay as
- * holes (degenerate triangles, unreferenced vertices) until hedge_render_compact(). */
+ * holes (degenerate triangles, unreferenced vertices) until hedge_render_buffers_compact(). */
 
 /** Normal source (hedge::NormalSource). */
 enum {
@@ -848,7 +849,7 @@ enum {
   HEDGE_NORMALS_AUTOMATIC = 3
 };
 
-/** Vertex streams for hedge_render_vertex_data() and hedge_render_copy_vertex_data(). */
+/** Vertex streams for hedge_render_buffers_vertex_data() and hedge_render_buffers_copy_vertex_data(). */
 enum {
   /** Interleaved layout: every vertex, stride floats each. Separate layout: the positions. */
   HEDGE_STREAM_VERTICES = 0,
@@ -858,14 +859,14 @@ enum {
 };
 
 /** Render options (hedge::RenderOptions). Layout (24 bytes): six int32_t in this order. */
-typedef struct hedge_render_options {
+typedef struct hedge_render_buffers_options {
   int32_t normals;     /**< HEDGE_NORMALS_* */
   int32_t texcoords;   /**< 1: texcoords from the mesh's corner or vertex texcoords when present */
   int32_t colors;      /**< 1: colours from the mesh's corner or vertex colours when present */
   int32_t interleaved; /**< 1: one buffer of whole vertices; 0: one buffer per stream */
   int32_t winding;     /**< HEDGE_WINDING_*: of the triangles in the index buffer */
   int32_t flip_x;      /**< 1: negate x of positions and normals (mirrored data; Unity needs none) */
-} hedge_render_options;
+} hedge_render_buffers_options;
 
 /** Where each attribute sits in a vertex, in floats; an absent attribute has offset -1.
  *  Interleaved: all in the HEDGE_STREAM_VERTICES buffer, stride floats a vertex, in the order
@@ -889,7 +890,7 @@ typedef struct hedge_range {
 } hedge_range;
 
 /** What a sync (or commit, or rebuild) rewrote. The ranges themselves:
- *  hedge_render_dirty_vertex_ranges() and hedge_render_dirty_index_ranges().
+ *  hedge_render_buffers_dirty_vertex_ranges() and hedge_render_buffers_dirty_index_ranges().
  *  Layout (40 bytes): vertex_bytes @0, index_bytes @8 (uint64_t), vertex_range_count @16,
  *  index_range_count @20, faces_synced @24, vertices_synced @28 (uint32_t), resized @32,
  *  full @36 (int32_t). */
@@ -924,86 +925,98 @@ typedef struct hedge_buffer_counts {
 
 /** Fills *out_options with the defaults: HEDGE_NORMALS_AUTOMATIC, texcoords 1, colors 1,
  *  interleaved 1, HEDGE_WINDING_CCW, flip_x 0. */
-HEDGE_API hedge_status hedge_render_options_default(hedge_render_options* out_options);
+HEDGE_API hedge_status hedge_render_buffers_options_default(hedge_render_buffers_options* out_options);
 
 /** Makes a render object for the mesh and builds its buffers (a full export).
- *  \param options NULL for hedge_render_options_default(). */
-HEDGE_API hedge_status hedge_render_create(hedge_mesh* mesh, const hedge_render_options* options,
-                                           hedge_render** out_render);
+ *  \param options NULL for hedge_render_buffers_options_default(). */
+HEDGE_API hedge_status hedge_render_buffers_create(hedge_mesh* mesh,
+                                                   const hedge_render_buffers_options* options,
+                                                   hedge_render_buffers** out_render);
 /** Destroys a render object (the mesh stays). */
-HEDGE_API hedge_status hedge_render_destroy(hedge_render* render);
+HEDGE_API hedge_status hedge_render_buffers_destroy(hedge_render_buffers* render);
 
 /** Brings the buffers in step with the edits since the last sync. Inside a transaction it does
  *  nothing (an empty result). \param out_result optional (NULL). */
-HEDGE_API hedge_status hedge_render_sync(hedge_render* render, hedge_sync_result* out_result);
+HEDGE_API hedge_status hedge_render_buffers_sync(hedge_render_buffers* render, hedge_sync_result* out_result);
 /** Opens a transaction: edits are gathered until the matching commit (transactions nest). The
  *  transaction is this render object's own: other render objects of the mesh keep syncing. */
-HEDGE_API hedge_status hedge_render_begin(hedge_render* render);
+HEDGE_API hedge_status hedge_render_buffers_begin(hedge_render_buffers* render);
 /** Closes the transaction; the outermost commit syncs once. No open transaction:
  *  HEDGE_ERROR_INVALID_ARGUMENT. \param out_result optional (NULL). */
-HEDGE_API hedge_status hedge_render_commit(hedge_render* render, hedge_sync_result* out_result);
+HEDGE_API hedge_status hedge_render_buffers_commit(hedge_render_buffers* render,
+                                                   hedge_sync_result* out_result);
 /** Rebuilds every buffer from scratch (slots restart in face order, so it also compacts).
  *  \param out_result optional (NULL). */
-HEDGE_API hedge_status hedge_render_rebuild(hedge_render* render, hedge_sync_result* out_result);
+HEDGE_API hedge_status hedge_render_buffers_rebuild(hedge_render_buffers* render,
+                                                    hedge_sync_result* out_result);
 /** The result of the last sync, commit or rebuild. */
-HEDGE_API hedge_status hedge_render_last_result(const hedge_render* render, hedge_sync_result* out_result);
+HEDGE_API hedge_status hedge_render_buffers_last_result(const hedge_render_buffers* render,
+                                                        hedge_sync_result* out_result);
 /** The render-vertex slot ranges the last sync, commit or rebuild rewrote, sorted, merged and
  *  disjoint (the same ranges apply to every stream of a separate layout). */
-HEDGE_API hedge_status hedge_render_dirty_vertex_ranges(const hedge_render* render, hedge_range* buffer,
-                                                        uint32_t capacity, uint32_t* out_count);
+HEDGE_API hedge_status hedge_render_buffers_dirty_vertex_ranges(const hedge_render_buffers* render,
+                                                                hedge_range* buffer, uint32_t capacity,
+                                                                uint32_t* out_count);
 /** The index-buffer ranges (in entries, not triangles) the last sync, commit or rebuild rewrote,
  *  sorted, merged and disjoint. */
-HEDGE_API hedge_status hedge_render_dirty_index_ranges(const hedge_render* render, hedge_range* buffer,
-                                                       uint32_t capacity, uint32_t* out_count);
+HEDGE_API hedge_status hedge_render_buffers_dirty_index_ranges(const hedge_render_buffers* render,
+                                                               hedge_range* buffer, uint32_t capacity,
+                                                               uint32_t* out_count);
 /** Removes the free slots by packing the live render vertices and triangles in their current
  *  order (live slots keep their relative order); re-upload both buffers afterwards. Outside a
- *  transaction it first syncs pending edits, as hedge_render_sync() does. Each map is optional (NULL): old
- * render-vertex slot -> new slot, and old triangle slot -> new triangle slot; freed slots map to
- * HEDGE_INVALID_INDEX. The sizes needed are the vertex_slots and index_count / 3 of hedge_render_counts()
- * after that sync, and are written to *out_vertex_count and *out_triangle_count (each optional, NULL); a map
- * too small gives HEDGE_ERROR_BUFFER_TOO_SMALL and nothing is compacted (the sync may have happened). */
-HEDGE_API hedge_status hedge_render_compact(hedge_render* render, uint32_t* vertex_map,
-                                            uint32_t vertex_capacity, uint32_t* out_vertex_count,
-                                            uint32_t* triangle_map, uint32_t triangle_capacity,
-                                            uint32_t* out_triangle_count);
+ *  transaction it first syncs pending edits, as hedge_render_buffers_sync() does. Each map is optional
+ * (NULL): old render-vertex slot -> new slot, and old triangle slot -> new triangle slot; freed slots map to
+ * HEDGE_INVALID_INDEX. The sizes needed are the vertex_slots and index_count / 3 of
+ * hedge_render_buffers_counts() after that sync, and are written to *out_vertex_count and *out_triangle_count
+ * (each optional, NULL); a map too small gives HEDGE_ERROR_BUFFER_TOO_SMALL and nothing is compacted (the
+ * sync may have happened). */
+HEDGE_API hedge_status hedge_render_buffers_compact(hedge_render_buffers* render, uint32_t* vertex_map,
+                                                    uint32_t vertex_capacity, uint32_t* out_vertex_count,
+                                                    uint32_t* triangle_map, uint32_t triangle_capacity,
+                                                    uint32_t* out_triangle_count);
 
-HEDGE_API hedge_status hedge_render_counts(const hedge_render* render, hedge_buffer_counts* out_counts);
-HEDGE_API hedge_status hedge_render_layout(const hedge_render* render, hedge_vertex_layout* out_layout);
+HEDGE_API hedge_status hedge_render_buffers_counts(const hedge_render_buffers* render,
+                                                   hedge_buffer_counts* out_counts);
+HEDGE_API hedge_status hedge_render_buffers_layout(const hedge_render_buffers* render,
+                                                   hedge_vertex_layout* out_layout);
 
 /** A pointer to a vertex stream (HEDGE_STREAM_*) and its size in floats (0, with a NULL pointer,
  *  for an empty stream). The pointer is valid until the next sync, commit, rebuild or compact of
  *  this render object, or its destruction (or its mesh's). Read-only. */
-HEDGE_API hedge_status hedge_render_vertex_data(const hedge_render* render, int32_t stream,
-                                                const float** out_data, uint64_t* out_count);
+HEDGE_API hedge_status hedge_render_buffers_vertex_data(const hedge_render_buffers* render, int32_t stream,
+                                                        const float** out_data, uint64_t* out_count);
 /** Copies a vertex stream into a caller buffer (capacity and *out_count in floats). */
-HEDGE_API hedge_status hedge_render_copy_vertex_data(const hedge_render* render, int32_t stream,
-                                                     float* buffer, uint64_t capacity, uint64_t* out_count);
+HEDGE_API hedge_status hedge_render_buffers_copy_vertex_data(const hedge_render_buffers* render,
+                                                             int32_t stream, float* buffer, uint64_t capacity,
+                                                             uint64_t* out_count);
 /** A pointer to the index buffer (3 entries per triangle slot) and its size in entries; valid as for
- *  hedge_render_vertex_data(). */
-HEDGE_API hedge_status hedge_render_index_data(const hedge_render* render, const uint32_t** out_data,
-                                               uint64_t* out_count);
+ *  hedge_render_buffers_vertex_data(). */
+HEDGE_API hedge_status hedge_render_buffers_index_data(const hedge_render_buffers* render,
+                                                       const uint32_t** out_data, uint64_t* out_count);
 /** Copies the index buffer into a caller buffer (capacity and *out_count in entries). */
-HEDGE_API hedge_status hedge_render_copy_index_data(const hedge_render* render, uint32_t* buffer,
-                                                    uint64_t capacity, uint64_t* out_count);
+HEDGE_API hedge_status hedge_render_buffers_copy_index_data(const hedge_render_buffers* render,
+                                                            uint32_t* buffer, uint64_t capacity,
+                                                            uint64_t* out_count);
 /** Render vertex slot -> mesh vertex (HEDGE_INVALID_INDEX for a free slot), vertex_slots entries. */
-HEDGE_API hedge_status hedge_render_vertex_source(const hedge_render* render, uint32_t* buffer,
-                                                  uint32_t capacity, uint32_t* out_count);
+HEDGE_API hedge_status hedge_render_buffers_vertex_source(const hedge_render_buffers* render,
+                                                          uint32_t* buffer, uint32_t capacity,
+                                                          uint32_t* out_count);
 /** The render vertex of the corner that the half-edge enters (HEDGE_INVALID_INDEX for a boundary
  *  half-edge), as of the last sync. */
-HEDGE_API hedge_status hedge_render_corner_vertex(const hedge_render* render, uint32_t halfedge,
-                                                  uint32_t* out_render_vertex);
+HEDGE_API hedge_status hedge_render_buffers_corner_vertex(const hedge_render_buffers* render,
+                                                          uint32_t halfedge, uint32_t* out_render_vertex);
 /** The triangle slots of a face, as of the last sync: triangles [*out_first, *out_first +
  *  *out_count) of the index buffer (*out_count 0 if it has none). */
-HEDGE_API hedge_status hedge_render_face_triangles(const hedge_render* render, uint32_t face,
-                                                   uint32_t* out_first, uint32_t* out_count);
+HEDGE_API hedge_status hedge_render_buffers_face_triangles(const hedge_render_buffers* render, uint32_t face,
+                                                           uint32_t* out_first, uint32_t* out_count);
 /** The face that owns triangle slot `triangle` of the index buffer (entries 3 x triangle to
- *  3 x triangle + 2), as of the last sync: the inverse of hedge_render_face_triangles(). This is what
+ *  3 x triangle + 2), as of the last sync: the inverse of hedge_render_buffers_face_triangles(). This is what
  *  an engine's own ray hit gives back (Unity's RaycastHit.triangleIndex on a MeshCollider of the
  *  uploaded mesh). *out_face is HEDGE_INVALID_INDEX (with HEDGE_OK) for a free slot and for a face
  *  deleted by an edit since that sync. O(1). A triangle out of range (>= index_count / 3):
  *  HEDGE_ERROR_BAD_HANDLE. */
-HEDGE_API hedge_status hedge_render_triangle_face(const hedge_render* render, uint32_t triangle,
-                                                  uint32_t* out_face);
+HEDGE_API hedge_status hedge_render_buffers_triangle_face(const hedge_render_buffers* render,
+                                                          uint32_t triangle, uint32_t* out_face);
 
 /* ============================================================================================ */
 /* Engine-mesh import (hedge/render/engine_mesh.h)                                              */
@@ -1053,6 +1066,41 @@ HEDGE_API hedge_status hedge_set_max_threads(uint32_t n);
 /** *out_n receives the number of threads a call may run on now (at least 1): the value set, or the
  *  number of usable cores when 0 was set or nothing was. */
 HEDGE_API hedge_status hedge_max_threads(uint32_t* out_n);
+
+/* ============================================================================================ */
+/* Deprecated names (kept for one release)                                                      */
+/* ============================================================================================ */
+
+/* The names of the previous release, as aliases of the current ones (docs/names.md, "C function
+ * names"): code written against them still compiles, and the next release removes them. They are
+ * macros, so the library exports only the current names. */
+#define hedge_render hedge_render_buffers
+#define hedge_render_options hedge_render_buffers_options
+#define hedge_render_begin hedge_render_buffers_begin
+#define hedge_render_commit hedge_render_buffers_commit
+#define hedge_render_compact hedge_render_buffers_compact
+#define hedge_render_copy_index_data hedge_render_buffers_copy_index_data
+#define hedge_render_copy_vertex_data hedge_render_buffers_copy_vertex_data
+#define hedge_render_corner_vertex hedge_render_buffers_corner_vertex
+#define hedge_render_counts hedge_render_buffers_counts
+#define hedge_render_create hedge_render_buffers_create
+#define hedge_render_destroy hedge_render_buffers_destroy
+#define hedge_render_dirty_index_ranges hedge_render_buffers_dirty_index_ranges
+#define hedge_render_dirty_vertex_ranges hedge_render_buffers_dirty_vertex_ranges
+#define hedge_render_face_triangles hedge_render_buffers_face_triangles
+#define hedge_render_index_data hedge_render_buffers_index_data
+#define hedge_render_last_result hedge_render_buffers_last_result
+#define hedge_render_layout hedge_render_buffers_layout
+#define hedge_render_options_default hedge_render_buffers_options_default
+#define hedge_render_rebuild hedge_render_buffers_rebuild
+#define hedge_render_sync hedge_render_buffers_sync
+#define hedge_render_triangle_face hedge_render_buffers_triangle_face
+#define hedge_render_vertex_data hedge_render_buffers_vertex_data
+#define hedge_render_vertex_source hedge_render_buffers_vertex_source
+#define hedge_split_all_faces hedge_mesh_split_all_faces
+#define hedge_mesh_get_position hedge_vertex_position
+#define hedge_mesh_set_position hedge_set_vertex_position
+/* End of deprecated names */
 
 #ifdef __cplusplus
 } /* extern "C" */

@@ -339,7 +339,6 @@ void measure_shard(Shard& shard, const FractureOptions& o) {
   }
   shard.closed = !boundary;
   if (shard.closed) {
-    shard.volume = volume(shard.mesh);
     try {
       shard.mass = mass_properties(shard.mesh, o.density);
     } catch (const InvalidInputError&) {

@@ -16,7 +16,7 @@
 #include "hedge/algorithms/subdivide.h"
 #include "hedge/core/build.h"
 #include "hedge/core/export.h"
-#include "hedge/render/render_sync.h"
+#include "hedge/render/render_buffers.h"
 
 namespace hedge::binding {
 

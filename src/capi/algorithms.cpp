@@ -313,7 +313,7 @@ hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z,
       out = hedge_fracture_shard{};
       out.centroid[0] = s.centroid.x, out.centroid[1] = s.centroid.y, out.centroid[2] = s.centroid.z;
       out.area = s.area;
-      out.volume = s.volume;
+      out.volume = s.mass.volume;
       out.mass = s.mass.mass;
       out.centre_of_mass[0] = s.mass.centre_of_mass.x;
       out.centre_of_mass[1] = s.mass.centre_of_mass.y;

@@ -59,7 +59,7 @@ hedge_mesh* register_mesh(std::shared_ptr<MeshObject> mesh) {
   return reinterpret_cast<hedge_mesh*>(id);
 }
 
-hedge_render* register_render(std::shared_ptr<RenderObject> render, const hedge_mesh* mesh) {
+hedge_render_buffers* register_render(std::shared_ptr<RenderObject> render, const hedge_mesh* mesh) {
   Registry& r = registry();
   std::unique_lock lock(r.mutex);
   // The mesh may have been destroyed by another thread since the caller looked it up.
@@ -69,7 +69,7 @@ hedge_render* register_render(std::shared_ptr<RenderObject> render, const hedge_
   m->second->renders.reserve(m->second->renders.size() + 1);
   r.renders.emplace(id, std::move(render));
   m->second->renders.push_back(id);  // cannot throw: reserved
-  return reinterpret_cast<hedge_render*>(id);
+  return reinterpret_cast<hedge_render_buffers*>(id);
 }
 
 namespace {
@@ -91,7 +91,7 @@ std::shared_ptr<T> lookup(const std::unordered_map<std::uintptr_t, std::shared_p
 
 MeshUse find_mesh(const hedge_mesh* handle) { return MeshUse(lookup(registry().meshes, handle, "mesh")); }
 
-RenderUse find_render(const hedge_render* handle) {
+RenderUse find_render(const hedge_render_buffers* handle) {
   return RenderUse(lookup(registry().renders, handle, "render"));
 }
 
@@ -118,7 +118,7 @@ std::pair<std::shared_ptr<MeshObject>, std::vector<std::shared_ptr<RenderObject>
   return out;
 }
 
-std::shared_ptr<RenderObject> unregister_render(const hedge_render* handle) {
+std::shared_ptr<RenderObject> unregister_render(const hedge_render_buffers* handle) {
   Registry& r = registry();
   std::unique_lock lock(r.mutex);
   auto it = r.renders.find(id_of(handle));
@@ -342,7 +342,7 @@ hedge_status hedge_mesh_counts(const hedge_mesh* mesh, hedge_counts* out_counts)
   });
 }
 
-hedge_status hedge_mesh_get_position(const hedge_mesh* mesh, uint32_t vertex, float* out_xyz) {
+hedge_status hedge_vertex_position(const hedge_mesh* mesh, uint32_t vertex, float* out_xyz) {
   return guard([&] {
     auto object = find_mesh(mesh);
     const Vec3& p = object->mesh.position(live_vertex(object->mesh, vertex));
@@ -353,7 +353,7 @@ hedge_status hedge_mesh_get_position(const hedge_mesh* mesh, uint32_t vertex, fl
   });
 }
 
-hedge_status hedge_mesh_set_position(hedge_mesh* mesh, uint32_t vertex, float x, float y, float z) {
+hedge_status hedge_set_vertex_position(hedge_mesh* mesh, uint32_t vertex, float x, float y, float z) {
   return guard([&] {
     auto object = find_mesh(mesh);
     const Vertex v = live_vertex(object->mesh, vertex);

@@ -28,7 +28,7 @@
 #include "hedge/core/export.h"
 #include "hedge/core/surface_mesh.h"
 #include "hedge/error.h"
-#include "hedge/render/render_sync.h"
+#include "hedge/render/render_buffers.h"
 
 namespace hedge::capi {
 
@@ -50,11 +50,11 @@ struct MeshObject : binding::MeshState {
   std::vector<std::uintptr_t> renders;
 };
 
-//! What a hedge_render handle names. It shares ownership of its mesh object, so a call that is
+//! What a hedge_render_buffers handle names. It shares ownership of its mesh object, so a call that is
 //! running on it keeps the mesh alive even if another thread destroys the mesh meanwhile.
 struct RenderObject {
   std::shared_ptr<MeshObject> mesh;  // declared first: destroyed after `sync`
-  std::unique_ptr<RenderSync> sync;
+  std::unique_ptr<RenderBuffers> sync;
 };
 
 //! A call's use of a mesh object: while it lives, the mesh belongs to the calling thread. Taking a
@@ -76,17 +76,17 @@ class RenderUse {
 
 // ---- Registry: handles are ids (never addresses, never reused) mapped to live objects. ----
 hedge_mesh* register_mesh(std::shared_ptr<MeshObject> mesh);
-hedge_render* register_render(std::shared_ptr<RenderObject> render, const hedge_mesh* mesh);
+hedge_render_buffers* register_render(std::shared_ptr<RenderObject> render, const hedge_mesh* mesh);
 //! The object a handle names, in use by the calling thread until the result is destroyed.
 //! \throw BindingError: HEDGE_ERROR_BAD_HANDLE if it names none, HEDGE_ERROR_BUSY if another thread
 //!   is using the mesh.
 MeshUse find_mesh(const hedge_mesh* handle);
-RenderUse find_render(const hedge_render* handle);
+RenderUse find_render(const hedge_render_buffers* handle);
 //! Removes a mesh and its render objects from the registry; returns them (destroyed by the caller,
 //! outside the lock). \throw BindingError if the handle names no mesh.
 std::pair<std::shared_ptr<MeshObject>, std::vector<std::shared_ptr<RenderObject>>> unregister_mesh(
     const hedge_mesh* handle);
-std::shared_ptr<RenderObject> unregister_render(const hedge_render* handle);
+std::shared_ptr<RenderObject> unregister_render(const hedge_render_buffers* handle);
 
 // ---- Error channel. ----
 void clear_error() noexcept;

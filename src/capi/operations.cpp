@@ -108,8 +108,8 @@ hedge_status hedge_cut_face(hedge_mesh* mesh, uint32_t halfedge0, uint32_t halfe
   });
 }
 
-hedge_status hedge_split_all_faces(hedge_mesh* mesh, uint32_t* buffer, uint32_t capacity,
-                                   uint32_t* out_count) {
+hedge_status hedge_mesh_split_all_faces(hedge_mesh* mesh, uint32_t* buffer, uint32_t capacity,
+                                        uint32_t* out_count) {
   return guard([&] {
     auto object = find_mesh(mesh);
     SurfaceMesh& m = object->mesh;

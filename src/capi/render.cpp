@@ -1,4 +1,4 @@
-// The C ABI: render buffers (hedge/render/render_sync.h) and engine-mesh import
+// The C ABI: render buffers (hedge/render/render_buffers.h) and engine-mesh import
 // (hedge/render/engine_mesh.h).
 #include "capi_internal.h"
 #include "hedge/render/engine_mesh.h"
@@ -8,11 +8,11 @@ using namespace hedge::capi;
 
 namespace {
 
-hedge_render_options default_render_options() {
+hedge_render_buffers_options default_render_options() {
   return {HEDGE_NORMALS_AUTOMATIC, 1, 1, 1, HEDGE_WINDING_CCW, 0};
 }
 
-RenderOptions to_render_options(const hedge_render_options& o) {
+RenderOptions to_render_options(const hedge_render_buffers_options& o) {
   RenderOptions r;
   static constexpr binding::Constant<NormalSource> kNormals[] = {
       {HEDGE_NORMALS_NONE, NormalSource::none},
@@ -40,7 +40,7 @@ void fill_result(const SyncResult& r, hedge_sync_result* out) {
   out->full = r.full ? 1 : 0;
 }
 
-std::span<const float> stream_of(const RenderSync& sync, std::int32_t stream) {
+std::span<const float> stream_of(const RenderBuffers& sync, std::int32_t stream) {
   switch (stream) {
     case HEDGE_STREAM_VERTICES:
       return sync.vertices();
@@ -68,12 +68,12 @@ void copy_ranges(const std::vector<SlotRange>& ranges, hedge_range* buffer, std:
 
 extern "C" {
 
-hedge_status hedge_render_options_default(hedge_render_options* out_options) {
+hedge_status hedge_render_buffers_options_default(hedge_render_buffers_options* out_options) {
   return guard([&] { need(out_options, "out_options") = default_render_options(); });
 }
 
-hedge_status hedge_render_create(hedge_mesh* mesh, const hedge_render_options* options,
-                                 hedge_render** out_render) {
+hedge_status hedge_render_buffers_create(hedge_mesh* mesh, const hedge_render_buffers_options* options,
+                                         hedge_render_buffers** out_render) {
   return guard([&] {
     auto mesh_object = find_mesh(mesh);
     need(out_render, "out_render");
@@ -81,12 +81,12 @@ hedge_status hedge_render_create(hedge_mesh* mesh, const hedge_render_options* o
         to_render_options(options != nullptr ? *options : default_render_options());
     auto object = std::make_shared<RenderObject>();
     object->mesh = mesh_object.shared();
-    object->sync = std::make_unique<RenderSync>(mesh_object->mesh, render_options);
+    object->sync = std::make_unique<RenderBuffers>(mesh_object->mesh, render_options);
     *out_render = register_render(std::move(object), mesh);
   });
 }
 
-hedge_status hedge_render_destroy(hedge_render* render) {
+hedge_status hedge_render_buffers_destroy(hedge_render_buffers* render) {
   return guard([&] {
     // Destroying the render object detaches it from its mesh's change log: the mesh is used.
     const RenderUse use = find_render(render);
@@ -94,35 +94,36 @@ hedge_status hedge_render_destroy(hedge_render* render) {
   });
 }
 
-hedge_status hedge_render_sync(hedge_render* render, hedge_sync_result* out_result) {
+hedge_status hedge_render_buffers_sync(hedge_render_buffers* render, hedge_sync_result* out_result) {
   return guard([&] {
     auto object = find_render(render);
     fill_result(object->sync->sync(), out_result);
   });
 }
 
-hedge_status hedge_render_begin(hedge_render* render) {
+hedge_status hedge_render_buffers_begin(hedge_render_buffers* render) {
   return guard([&] { find_render(render)->sync->begin(); });
 }
 
-hedge_status hedge_render_commit(hedge_render* render, hedge_sync_result* out_result) {
+hedge_status hedge_render_buffers_commit(hedge_render_buffers* render, hedge_sync_result* out_result) {
   return guard([&] {
     auto object = find_render(render);
     if (!object->sync->in_transaction())
       fail(HEDGE_ERROR_INVALID_ARGUMENT,
-           "commit without an open transaction (no matching hedge_render_begin)");
+           "commit without an open transaction (no matching hedge_render_buffers_begin)");
     fill_result(object->sync->commit(), out_result);
   });
 }
 
-hedge_status hedge_render_rebuild(hedge_render* render, hedge_sync_result* out_result) {
+hedge_status hedge_render_buffers_rebuild(hedge_render_buffers* render, hedge_sync_result* out_result) {
   return guard([&] {
     auto object = find_render(render);
     fill_result(object->sync->rebuild(), out_result);
   });
 }
 
-hedge_status hedge_render_last_result(const hedge_render* render, hedge_sync_result* out_result) {
+hedge_status hedge_render_buffers_last_result(const hedge_render_buffers* render,
+                                              hedge_sync_result* out_result) {
   return guard([&] {
     auto object = find_render(render);
     need(out_result, "out_result");
@@ -130,28 +131,29 @@ hedge_status hedge_render_last_result(const hedge_render* render, hedge_sync_res
   });
 }
 
-hedge_status hedge_render_dirty_vertex_ranges(const hedge_render* render, hedge_range* buffer,
-                                              uint32_t capacity, uint32_t* out_count) {
+hedge_status hedge_render_buffers_dirty_vertex_ranges(const hedge_render_buffers* render, hedge_range* buffer,
+                                                      uint32_t capacity, uint32_t* out_count) {
   return guard([&] {
     auto object = find_render(render);
     copy_ranges(object->sync->last_result().vertex_ranges, buffer, capacity, out_count);
   });
 }
 
-hedge_status hedge_render_dirty_index_ranges(const hedge_render* render, hedge_range* buffer,
-                                             uint32_t capacity, uint32_t* out_count) {
+hedge_status hedge_render_buffers_dirty_index_ranges(const hedge_render_buffers* render, hedge_range* buffer,
+                                                     uint32_t capacity, uint32_t* out_count) {
   return guard([&] {
     auto object = find_render(render);
     copy_ranges(object->sync->last_result().index_ranges, buffer, capacity, out_count);
   });
 }
 
-hedge_status hedge_render_compact(hedge_render* render, uint32_t* vertex_map, uint32_t vertex_capacity,
-                                  uint32_t* out_vertex_count, uint32_t* triangle_map,
-                                  uint32_t triangle_capacity, uint32_t* out_triangle_count) {
+hedge_status hedge_render_buffers_compact(hedge_render_buffers* render, uint32_t* vertex_map,
+                                          uint32_t vertex_capacity, uint32_t* out_vertex_count,
+                                          uint32_t* triangle_map, uint32_t triangle_capacity,
+                                          uint32_t* out_triangle_count) {
   return guard([&] {
     auto object = find_render(render);
-    RenderSync& sync = *object->sync;
+    RenderBuffers& sync = *object->sync;
     // compact() syncs first; do it here so that the map sizes are known before compacting.
     if (!sync.in_transaction()) sync.sync();
     // The maps have one entry per slot, free ones included.
@@ -168,10 +170,11 @@ hedge_status hedge_render_compact(hedge_render* render, uint32_t* vertex_map, ui
   });
 }
 
-hedge_status hedge_render_counts(const hedge_render* render, hedge_buffer_counts* out_counts) {
+hedge_status hedge_render_buffers_counts(const hedge_render_buffers* render,
+                                         hedge_buffer_counts* out_counts) {
   return guard([&] {
     auto object = find_render(render);
-    const RenderSync& sync = *object->sync;
+    const RenderBuffers& sync = *object->sync;
     hedge_buffer_counts& c = need(out_counts, "out_counts");
     c.vertex_slots = to_u32(sync.vertex_slots(), "vertex slots");
     c.index_count = to_u32(sync.index_count(), "index count");
@@ -185,7 +188,8 @@ hedge_status hedge_render_counts(const hedge_render* render, hedge_buffer_counts
   });
 }
 
-hedge_status hedge_render_layout(const hedge_render* render, hedge_vertex_layout* out_layout) {
+hedge_status hedge_render_buffers_layout(const hedge_render_buffers* render,
+                                         hedge_vertex_layout* out_layout) {
   return guard([&] {
     auto object = find_render(render);
     const VertexLayout& l = object->sync->layout();
@@ -199,8 +203,8 @@ hedge_status hedge_render_layout(const hedge_render* render, hedge_vertex_layout
   });
 }
 
-hedge_status hedge_render_vertex_data(const hedge_render* render, int32_t stream, const float** out_data,
-                                      uint64_t* out_count) {
+hedge_status hedge_render_buffers_vertex_data(const hedge_render_buffers* render, int32_t stream,
+                                              const float** out_data, uint64_t* out_count) {
   return guard([&] {
     auto object = find_render(render);
     const std::span<const float> data = stream_of(*object->sync, stream);
@@ -211,16 +215,16 @@ hedge_status hedge_render_vertex_data(const hedge_render* render, int32_t stream
   });
 }
 
-hedge_status hedge_render_copy_vertex_data(const hedge_render* render, int32_t stream, float* buffer,
-                                           uint64_t capacity, uint64_t* out_count) {
+hedge_status hedge_render_buffers_copy_vertex_data(const hedge_render_buffers* render, int32_t stream,
+                                                   float* buffer, uint64_t capacity, uint64_t* out_count) {
   return guard([&] {
     auto object = find_render(render);
     copy_out(stream_of(*object->sync, stream), buffer, capacity, out_count);
   });
 }
 
-hedge_status hedge_render_index_data(const hedge_render* render, const uint32_t** out_data,
-                                     uint64_t* out_count) {
+hedge_status hedge_render_buffers_index_data(const hedge_render_buffers* render, const uint32_t** out_data,
+                                             uint64_t* out_count) {
   return guard([&] {
     auto object = find_render(render);
     const std::span<const std::uint32_t> data = object->sync->indices();
@@ -231,16 +235,16 @@ hedge_status hedge_render_index_data(const hedge_render* render, const uint32_t*
   });
 }
 
-hedge_status hedge_render_copy_index_data(const hedge_render* render, uint32_t* buffer, uint64_t capacity,
-                                          uint64_t* out_count) {
+hedge_status hedge_render_buffers_copy_index_data(const hedge_render_buffers* render, uint32_t* buffer,
+                                                  uint64_t capacity, uint64_t* out_count) {
   return guard([&] {
     auto object = find_render(render);
     copy_out(object->sync->indices(), buffer, capacity, out_count);
   });
 }
 
-hedge_status hedge_render_vertex_source(const hedge_render* render, uint32_t* buffer, uint32_t capacity,
-                                        uint32_t* out_count) {
+hedge_status hedge_render_buffers_vertex_source(const hedge_render_buffers* render, uint32_t* buffer,
+                                                uint32_t capacity, uint32_t* out_count) {
   return guard([&] {
     auto object = find_render(render);
     const std::span<const Vertex> source = object->sync->render_vertex_source();
@@ -250,8 +254,8 @@ hedge_status hedge_render_vertex_source(const hedge_render* render, uint32_t* bu
   });
 }
 
-hedge_status hedge_render_corner_vertex(const hedge_render* render, uint32_t halfedge,
-                                        uint32_t* out_render_vertex) {
+hedge_status hedge_render_buffers_corner_vertex(const hedge_render_buffers* render, uint32_t halfedge,
+                                                uint32_t* out_render_vertex) {
   return guard([&] {
     auto object = find_render(render);
     const Halfedge h = live_halfedge(object->mesh->mesh, halfedge);
@@ -259,8 +263,8 @@ hedge_status hedge_render_corner_vertex(const hedge_render* render, uint32_t hal
   });
 }
 
-hedge_status hedge_render_face_triangles(const hedge_render* render, uint32_t face, uint32_t* out_first,
-                                         uint32_t* out_count) {
+hedge_status hedge_render_buffers_face_triangles(const hedge_render_buffers* render, uint32_t face,
+                                                 uint32_t* out_first, uint32_t* out_count) {
   return guard([&] {
     auto object = find_render(render);
     const Face f = live_face(object->mesh->mesh, face);
@@ -272,10 +276,11 @@ hedge_status hedge_render_face_triangles(const hedge_render* render, uint32_t fa
   });
 }
 
-hedge_status hedge_render_triangle_face(const hedge_render* render, uint32_t triangle, uint32_t* out_face) {
+hedge_status hedge_render_buffers_triangle_face(const hedge_render_buffers* render, uint32_t triangle,
+                                                uint32_t* out_face) {
   return guard([&] {
     auto object = find_render(render);
-    const RenderSync& sync = *object->sync;
+    const RenderBuffers& sync = *object->sync;
     check_range("triangle", triangle, sync.triangle_slots());
     need(out_face, "out_face");
     const Face f = sync.triangle_face(triangle);

@@ -1,10 +1,10 @@
-// RenderSync: see include/hedge/render/render_sync.h.
+// RenderBuffers: see include/hedge/render/render_buffers.h.
 //
 // A render vertex is keyed by its mesh vertex and the values of the corner attributes it carries;
 // the render vertices of one mesh vertex form a short singly linked list (usually one entry, two or
 // three on a seam). Reference counts count index-buffer entries, so that a render vertex no
 // triangle uses any more returns to the free list whatever the triangulation of its faces.
-#include "hedge/render/render_sync.h"
+#include "hedge/render/render_buffers.h"
 
 #include <algorithm>
 #include <array>
@@ -47,35 +47,35 @@ void merge_ranges(std::vector<SlotRange>& r) {
 }
 }  // namespace
 
-RenderSync::RenderSync(SurfaceMesh& mesh, const RenderOptions& options)
+RenderBuffers::RenderBuffers(SurfaceMesh& mesh, const RenderOptions& options)
     : mesh_(&mesh), options_(options), changes_(mesh.watch_changes()) {
   rebuild();  // if it throws, changes_ detaches as it is destroyed
 }
 
-RenderSync::~RenderSync() = default;
+RenderBuffers::~RenderBuffers() = default;
 
-std::span<const float> RenderSync::stream(int i) const {
+std::span<const float> RenderBuffers::stream(int i) const {
   if (layout_.interleaved) return {};
   return streams_[i];
 }
 
-SlotRange RenderSync::triangles(Face f) const {
+SlotRange RenderBuffers::triangles(Face f) const {
   if (!f.is_valid() || f.idx() >= face_slots_.size()) return {};
   return face_slots_[f.idx()];
 }
 
-std::size_t RenderSync::seam_splits() const {
+std::size_t RenderBuffers::seam_splits() const {
   std::size_t used = 0;
   for (Index first : v_first_rv_) used += first != kInvalidIndex;
   return n_vertices() - used;
 }
 
-std::size_t RenderSync::buffer_bytes() const {
+std::size_t RenderBuffers::buffer_bytes() const {
   return vertex_slots() * layout_.stride * sizeof(float) + index_count() * sizeof(std::uint32_t);
 }
 
 // ---- Layout and sources -------------------------------------------------------------------------
-void RenderSync::attach_sources() {
+void RenderBuffers::attach_sources() {
   const SurfaceMesh& m = *mesh_;
   h_normal_ = {};
   v_normal_ = {};
@@ -108,7 +108,7 @@ void RenderSync::attach_sources() {
   }
 }
 
-void RenderSync::setup_layout() {
+void RenderBuffers::setup_layout() {
   VertexLayout l;
   l.interleaved = options_.interleaved;
   const bool present[4] = {true, h_normal_ || v_normal_ || computed_normals_, h_texcoord_ || v_texcoord_,
@@ -131,7 +131,7 @@ void RenderSync::setup_layout() {
 // ---- Vertex data ----------------------------------------------------------------------------------
 // The floats of one render vertex in interleaved order: the vertex-sourced ones of v, and the
 // corner-sourced ones too when h (the half-edge entering the corner) is valid.
-void RenderSync::fill_vertex(Vertex v, Halfedge h, float* out) const {
+void RenderBuffers::fill_vertex(Vertex v, Halfedge h, float* out) const {
   const SurfaceMesh& m = *mesh_;
   const float sx = options_.flip_x ? -1.f : 1.f;
   const Vec3& p = m.position(v);
@@ -171,7 +171,7 @@ void RenderSync::fill_vertex(Vertex v, Halfedge h, float* out) const {
       });
 }
 
-void RenderSync::read_vertex(Index rv, float* out) const {
+void RenderBuffers::read_vertex(Index rv, float* out) const {
   if (layout_.interleaved) {
     std::memcpy(out, streams_[0].data() + std::size_t(rv) * layout_.stride, layout_.stride * sizeof(float));
     return;
@@ -185,7 +185,7 @@ void RenderSync::read_vertex(Index rv, float* out) const {
   }
 }
 
-bool RenderSync::stream_present(int s) const {
+bool RenderBuffers::stream_present(int s) const {
   switch (s) {
     case 0:
       return true;
@@ -198,23 +198,23 @@ bool RenderSync::stream_present(int s) const {
   }
 }
 
-std::uint32_t RenderSync::stored_width(int s) const {
+std::uint32_t RenderBuffers::stored_width(int s) const {
   if (layout_.interleaved) return s == 0 ? layout_.stride : 0;
   return stream_present(s) ? kStreamWidth[s] : 0;
 }
 
-void RenderSync::resize_streams(std::size_t n) {
+void RenderBuffers::resize_streams(std::size_t n) {
   for (int s = 0; s < 4; ++s)
     if (const std::uint32_t w = stored_width(s)) streams_[s].resize(n * w);
 }
 
-void RenderSync::grow_capacity(std::size_t& capacity, std::size_t n) {
+void RenderBuffers::grow_capacity(std::size_t& capacity, std::size_t n) {
   if (n <= capacity) return;
   capacity = grown_capacity(n, capacity);
   if (!building_) result_.resized = true;
 }
 
-void RenderSync::store_vertex(Index rv, const float* data) {
+void RenderBuffers::store_vertex(Index rv, const float* data) {
   if (layout_.interleaved) {
     std::memcpy(streams_[0].data() + std::size_t(rv) * layout_.stride, data, layout_.stride * sizeof(float));
   } else {
@@ -228,7 +228,7 @@ void RenderSync::store_vertex(Index rv, const float* data) {
   }
 }
 
-void RenderSync::rewrite_vertex_data(Vertex v) {
+void RenderBuffers::rewrite_vertex_data(Vertex v) {
   Floats old, now;
   for (Index rv = v_first_rv_[v.idx()]; rv != kInvalidIndex; rv = rv_next_[rv]) {
     read_vertex(rv, old.data());
@@ -240,7 +240,7 @@ void RenderSync::rewrite_vertex_data(Vertex v) {
   }
 }
 
-Index RenderSync::allocate_vertex() {
+Index RenderBuffers::allocate_vertex() {
   Index rv;
   if (!free_vertices_.empty()) {
     rv = free_vertices_.back();
@@ -256,7 +256,7 @@ Index RenderSync::allocate_vertex() {
   return rv;
 }
 
-Index RenderSync::find_or_add_render_vertex(Halfedge corner) {
+Index RenderBuffers::find_or_add_render_vertex(Halfedge corner) {
   const Vertex v = mesh_->to_vertex(corner);
   Floats want;
   fill_vertex(v, corner, want.data());
@@ -275,7 +275,7 @@ Index RenderSync::find_or_add_render_vertex(Halfedge corner) {
   return rv;
 }
 
-void RenderSync::unref_vertex(Index rv) {
+void RenderBuffers::unref_vertex(Index rv) {
   if (--rv_refs_[rv] > 0) return;
   const Vertex v = rv_vertex_[rv];
   Index* link = &v_first_rv_[v.idx()];
@@ -287,7 +287,7 @@ void RenderSync::unref_vertex(Index rv) {
 }
 
 // ---- Index slots ----------------------------------------------------------------------------------
-std::uint32_t RenderSync::allocate_triangles(std::uint32_t count) {
+std::uint32_t RenderBuffers::allocate_triangles(std::uint32_t count) {
   if (count < free_triangles_.size() && !free_triangles_[count].empty()) {
     const std::uint32_t first = free_triangles_[count].back();
     free_triangles_[count].pop_back();
@@ -302,7 +302,7 @@ std::uint32_t RenderSync::allocate_triangles(std::uint32_t count) {
   return first;
 }
 
-void RenderSync::free_triangles(std::uint32_t first, std::uint32_t count) {
+void RenderBuffers::free_triangles(std::uint32_t first, std::uint32_t count) {
   // The triangles stay in the buffer as degenerate ones until they are reused or compacted.
   std::fill_n(indices_.begin() + 3 * std::size_t(first), 3 * std::size_t(count), 0u);
   std::fill_n(triangle_face_.begin() + first, count, kInvalidIndex);
@@ -312,11 +312,11 @@ void RenderSync::free_triangles(std::uint32_t first, std::uint32_t count) {
   free_triangle_slots_ += count;
 }
 
-void RenderSync::mark_indices_written(std::uint32_t first, std::uint32_t count) {
+void RenderBuffers::mark_indices_written(std::uint32_t first, std::uint32_t count) {
   if (!building_ && count > 0) written_indices_.push_back({first, count});
 }
 
-void RenderSync::release_face(Face f) {
+void RenderBuffers::release_face(Face f) {
   SlotRange& s = face_slots_[f.idx()];
   if (s.count == 0) return;
   const std::size_t begin = 3 * std::size_t(s.first), end = begin + 3 * std::size_t(s.count);
@@ -325,7 +325,7 @@ void RenderSync::release_face(Face f) {
   s = {};
 }
 
-void RenderSync::sync_face(Face f) {
+void RenderBuffers::sync_face(Face f) {
   const SurfaceMesh& m = *mesh_;
   corners_.clear();
   for (Halfedge h : m.halfedges(f)) corners_.push_back(h);
@@ -388,7 +388,7 @@ void RenderSync::sync_face(Face f) {
 }
 
 // ---- Normals ----------------------------------------------------------------------------------------
-void RenderSync::update_normal(Vertex w) {
+void RenderBuffers::update_normal(Vertex w) {
   const SurfaceMesh& m = *mesh_;
   // Summed in increasing face order, as full_build() sums, so that both give the same bits.
   normal_faces_.clear();
@@ -400,7 +400,7 @@ void RenderSync::update_normal(Vertex w) {
   vertex_normal_[w.idx()] = to_float(normalize(sum));
 }
 
-void RenderSync::follow_normal(Vertex w) {
+void RenderBuffers::follow_normal(Vertex w) {
   SurfaceMesh& m = *mesh_;
   if (m.is_isolated(w)) return;
   if (v_normal_) {
@@ -434,7 +434,7 @@ void RenderSync::follow_normal(Vertex w) {
   }
 }
 
-void RenderSync::seed_normals(const ChangeLog::Pending& p) {
+void RenderBuffers::seed_normals(const ChangeLog::Pending& p) {
   const SurfaceMesh& m = *mesh_;
   ++normal_generation_;
   auto seed = [&](Vertex w) {
@@ -464,7 +464,7 @@ void RenderSync::seed_normals(const ChangeLog::Pending& p) {
 }
 
 // ---- Sync ---------------------------------------------------------------------------------------------
-void RenderSync::grow_element_arrays() {
+void RenderBuffers::grow_element_arrays() {
   const SurfaceMesh& m = *mesh_;
   if (v_first_rv_.size() < m.vertex_slots()) v_first_rv_.resize(m.vertex_slots(), kInvalidIndex);
   if (corner_rv_.size() < m.halfedge_slots()) corner_rv_.resize(m.halfedge_slots(), kInvalidIndex);
@@ -475,7 +475,7 @@ void RenderSync::grow_element_arrays() {
   }
 }
 
-void RenderSync::full_build() {
+void RenderBuffers::full_build() {
   const SurfaceMesh& m = *mesh_;
   attach_sources();
   setup_layout();
@@ -520,7 +520,7 @@ void RenderSync::full_build() {
   result_.faces_synced = m.n_faces();
 }
 
-void RenderSync::report_full() {
+void RenderBuffers::report_full() {
   result_ = {};
   result_.full = true;
   result_.resized = true;
@@ -532,14 +532,14 @@ void RenderSync::report_full() {
   result_.index_bytes = indices_.size() * sizeof(std::uint32_t);
 }
 
-const SyncResult& RenderSync::rebuild() {
+const SyncResult& RenderBuffers::rebuild() {
   full_build();
   changes_.consume();
   full_pending_ = false;
   return result_;
 }
 
-const SyncResult& RenderSync::sync() {
+const SyncResult& RenderBuffers::sync() {
   sync_changes();
   if (full_pending_ && !in_transaction()) {
     const std::size_t faces = result_.faces_synced;
@@ -550,7 +550,7 @@ const SyncResult& RenderSync::sync() {
   return result_;
 }
 
-void RenderSync::sync_changes() {
+void RenderBuffers::sync_changes() {
   result_ = {};
   if (in_transaction()) return;
   const ChangeLog::Pending p = changes_.pending();
@@ -602,7 +602,7 @@ void RenderSync::sync_changes() {
   finish_result();
 }
 
-void RenderSync::finish_result() {
+void RenderBuffers::finish_result() {
   std::sort(written_vertices_.begin(), written_vertices_.end());
   written_vertices_.erase(std::unique(written_vertices_.begin(), written_vertices_.end()),
                           written_vertices_.end());
@@ -622,9 +622,9 @@ void RenderSync::finish_result() {
   result_.index_bytes = idx * sizeof(std::uint32_t);
 }
 
-void RenderSync::begin() { mesh_->changes().begin(changes_.id()); }
+void RenderBuffers::begin() { mesh_->changes().begin(changes_.id()); }
 
-const SyncResult& RenderSync::commit() {
+const SyncResult& RenderBuffers::commit() {
   if (!mesh_->changes().commit(changes_.id())) {  // an inner transaction, or none was open
     result_ = {};
     return result_;
@@ -632,7 +632,7 @@ const SyncResult& RenderSync::commit() {
   return sync();
 }
 
-RenderRemap RenderSync::compact() {
+RenderRemap RenderBuffers::compact() {
   // Bring everything up to date first, so that the maps describe current buffers.
   if (!in_transaction()) sync();
   RenderRemap map;

@@ -82,7 +82,7 @@ void expect_sound(const SurfaceMesh& mesh, const FractureResult& r, double area_
     if (thickness > 0) {
       EXPECT_TRUE(s.closed);
       EXPECT_FALSE(has_boundary(s.mesh));
-      EXPECT_GT(s.volume, 0);
+      EXPECT_GT(s.mass.volume, 0);
       EXPECT_GT(s.mass.mass, 0);
     } else {
       EXPECT_EQ(s.closed, !has_boundary(s.mesh));
@@ -182,8 +182,8 @@ TEST(Fracture, ThicknessMakesClosedSolidsWithMass) {
   expect_sound(mesh, r, area, o.thickness);
   for (const Shard& s : r.shards) {
     // A flat plate extruded: the volume is area x thickness.
-    EXPECT_NEAR(s.volume, s.area * 0.2, 1e-4 * s.area);
-    EXPECT_NEAR(s.mass.mass, s.volume * 2.5, 1e-6 * s.mass.mass);
+    EXPECT_NEAR(s.mass.volume, s.area * 0.2, 1e-4 * s.area);
+    EXPECT_NEAR(s.mass.mass, s.mass.volume * 2.5, 1e-6 * s.mass.mass);
     EXPECT_NEAR(s.mass.centre_of_mass.z, -0.1, 1e-4);
     EXPECT_EQ(s.hull.dimension, HullDimension::solid);
   }
@@ -320,7 +320,8 @@ TEST(Fracture, WorkIsBoundedRingsPointsAndThicknessAreLimitedBeforeTheMeshIsTouc
   o.thickness = 10 * std::sqrt(200.0) * 0.999;
   const FractureResult r = fracture(mesh, {5.2f, 5.1f, 0}, o, &bvh);
   ASSERT_FALSE(r.shards.empty());
-  for (const Shard& s : r.shards) EXPECT_TRUE(std::isfinite(s.volume) && s.volume < 1e6) << s.volume;
+  for (const Shard& s : r.shards)
+    EXPECT_TRUE(std::isfinite(s.mass.volume) && s.mass.volume < 1e6) << s.mass.volume;
 }
 
 TEST(Fracture, NoBreakPointsNoShardsMeshUnchanged) {

@@ -63,15 +63,15 @@ void test_geometry(void) {
   }
 
   /* Render buffers made afterwards with attribute normals split the cube's corners: 24 vertices. */
-  hedge_render_options ro;
-  CHECK_OK(hedge_render_options_default(&ro));
+  hedge_render_buffers_options ro;
+  CHECK_OK(hedge_render_buffers_options_default(&ro));
   ro.normals = HEDGE_NORMALS_ATTRIBUTE;
-  hedge_render* render = NULL;
-  CHECK_OK(hedge_render_create(cube, &ro, &render));
+  hedge_render_buffers* render = NULL;
+  CHECK_OK(hedge_render_buffers_create(cube, &ro, &render));
   hedge_buffer_counts bc;
-  CHECK_OK(hedge_render_counts(render, &bc));
+  CHECK_OK(hedge_render_buffers_counts(render, &bc));
   CHECK(bc.vertices == 24);
-  CHECK_OK(hedge_render_destroy(render));
+  CHECK_OK(hedge_render_buffers_destroy(render));
 
   /* Raising a corner of the top face: by default (AUTOMATIC) the corner normals follow the geometry;
    * ATTRIBUTE keeps them as they were. */
@@ -83,31 +83,31 @@ void test_geometry(void) {
       if (v == 6 && normals[3 * h + 2] > 0.5f) top = h;
     }
     CHECK(top != INVALID);
-    hedge_render_options follow;
-    CHECK_OK(hedge_render_options_default(&follow));
-    hedge_render *kept = NULL, *followed = NULL;
-    CHECK_OK(hedge_render_create(cube, &ro, &kept));
-    CHECK_OK(hedge_render_create(cube, &follow, &followed));
-    CHECK_OK(hedge_mesh_set_position(cube, 6, 1, 1, 1.5f));
-    hedge_render* both[2] = {kept, followed};
+    hedge_render_buffers_options follow;
+    CHECK_OK(hedge_render_buffers_options_default(&follow));
+    hedge_render_buffers *kept = NULL, *followed = NULL;
+    CHECK_OK(hedge_render_buffers_create(cube, &ro, &kept));
+    CHECK_OK(hedge_render_buffers_create(cube, &follow, &followed));
+    CHECK_OK(hedge_set_vertex_position(cube, 6, 1, 1, 1.5f));
+    hedge_render_buffers* both[2] = {kept, followed};
     float n[2][3];
     for (int i = 0; i < 2; ++i) {
-      CHECK_OK(hedge_render_sync(both[i], NULL));
+      CHECK_OK(hedge_render_buffers_sync(both[i], NULL));
       hedge_vertex_layout layout;
-      CHECK_OK(hedge_render_layout(both[i], &layout));
+      CHECK_OK(hedge_render_buffers_layout(both[i], &layout));
       uint32_t rv = INVALID;
-      CHECK_OK(hedge_render_corner_vertex(both[i], top, &rv));
+      CHECK_OK(hedge_render_buffers_corner_vertex(both[i], top, &rv));
       const float* data = NULL;
       uint64_t floats = 0;
-      CHECK_OK(hedge_render_vertex_data(both[i], HEDGE_STREAM_VERTICES, &data, &floats));
+      CHECK_OK(hedge_render_buffers_vertex_data(both[i], HEDGE_STREAM_VERTICES, &data, &floats));
       CHECK((uint64_t)(rv + 1) * layout.stride <= floats && layout.normal >= 0);
       for (int a = 0; a < 3; ++a) n[i][a] = data[(uint64_t)rv * layout.stride + (uint32_t)layout.normal + a];
     }
     CHECK(n[0][0] == 0 && n[0][1] == 0 && n[0][2] == 1); /* kept */
     CHECK(n[1][2] < 0.99f && n[1][2] > 0.5f);            /* tilted by the raised corner */
     CHECK(near(n[1][0] * n[1][0] + n[1][1] * n[1][1] + n[1][2] * n[1][2], 1, 1e-6));
-    CHECK_OK(hedge_render_destroy(kept));
-    CHECK_OK(hedge_render_destroy(followed));
+    CHECK_OK(hedge_render_buffers_destroy(kept));
+    CHECK_OK(hedge_render_buffers_destroy(followed));
   }
 
   /* An open mesh has no volume: NaN. */
@@ -153,15 +153,15 @@ void test_smooth(void) {
   hedge_mesh* grid = make_mesh(lifted, 9, kGridQuads, 16, kGridSizes, 4);
   float p[3];
   CHECK_OK(hedge_mesh_smooth(grid, NULL, NULL, 0));
-  CHECK_OK(hedge_mesh_get_position(grid, 4, p));
+  CHECK_OK(hedge_vertex_position(grid, 4, p));
   CHECK(p[2] < 0.01f && p[2] >= 0);
-  CHECK_OK(hedge_mesh_get_position(grid, 0, p));
+  CHECK_OK(hedge_vertex_position(grid, 0, p));
   CHECK(p[0] == 0 && p[1] == 0 && p[2] == 0);
   /* A mask that excludes vertex 4: nothing moves. */
   hedge_mesh* again = make_mesh(lifted, 9, kGridQuads, 16, kGridSizes, 4);
   uint8_t mask[9] = {1, 1, 1, 1, 0, 1, 1, 1, 1};
   CHECK_OK(hedge_mesh_smooth(again, NULL, mask, 9));
-  CHECK_OK(hedge_mesh_get_position(again, 4, p));
+  CHECK_OK(hedge_vertex_position(again, 4, p));
   CHECK(p[2] == 1);
   CHECK_STATUS(hedge_mesh_smooth(again, NULL, mask, 8), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_STATUS(hedge_mesh_smooth(again, NULL, NULL, 9), HEDGE_ERROR_INVALID_ARGUMENT);
@@ -174,7 +174,7 @@ void test_smooth(void) {
   o.method = HEDGE_SMOOTH_TAUBIN;
   o.lambda = 3;
   CHECK_STATUS(hedge_mesh_smooth(again, &o, NULL, 0), HEDGE_ERROR_INVALID_ARGUMENT);
-  CHECK_OK(hedge_mesh_get_position(again, 4, p));
+  CHECK_OK(hedge_vertex_position(again, 4, p));
   CHECK(p[2] == 1);
   o.lambda = 0.5;
   CHECK_OK(hedge_mesh_smooth(again, &o, NULL, 0));
@@ -187,11 +187,11 @@ void test_smooth(void) {
     imp.iterations = 1;
     imp.lambda = 10;
     CHECK_OK(hedge_mesh_smooth(pyramid, &imp, NULL, 0));
-    CHECK_OK(hedge_mesh_get_position(pyramid, 4, p));
+    CHECK_OK(hedge_vertex_position(pyramid, 4, p));
     CHECK(p[2] < 0.5f && p[2] >= 0);
     CHECK_OK(hedge_mesh_destroy(pyramid));
   }
-  CHECK_OK(hedge_mesh_get_position(again, 4, p));
+  CHECK_OK(hedge_vertex_position(again, 4, p));
   CHECK(p[2] < 1);
   CHECK_STATUS(hedge_smooth_options_default(NULL), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_OK(hedge_mesh_destroy(again));
@@ -402,15 +402,15 @@ void test_subdivide(void) {
   CHECK_OK(hedge_mesh_validate(grid, &problems));
   CHECK(problems == 0);
   /* A render object of the mesh rebuilds at its next sync: 64 triangles. */
-  hedge_render* render = NULL;
-  CHECK_OK(hedge_render_create(tet, NULL, &render));
+  hedge_render_buffers* render = NULL;
+  CHECK_OK(hedge_render_buffers_create(tet, NULL, &render));
   CHECK_OK(hedge_mesh_subdivide(tet, HEDGE_SUBDIVISION_MIDPOINT, 1));
   hedge_sync_result sync;
-  CHECK_OK(hedge_render_sync(render, &sync));
+  CHECK_OK(hedge_render_buffers_sync(render, &sync));
   hedge_buffer_counts bc;
-  CHECK_OK(hedge_render_counts(render, &bc));
+  CHECK_OK(hedge_render_buffers_counts(render, &bc));
   CHECK(bc.triangles == 256);
-  CHECK_OK(hedge_render_destroy(render));
+  CHECK_OK(hedge_render_buffers_destroy(render));
   /* Reordering: a permutation of the elements, the mesh still valid, with the same counts. */
   const hedge_counts before = counts_of(tet);
   uint32_t vmap[512], fmap[1024];

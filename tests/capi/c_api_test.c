@@ -68,7 +68,7 @@ void test_basics(void) {
   CHECK(sizeof(hedge_build_options) == 16);
   CHECK(sizeof(hedge_build_report) == 36);
   CHECK(sizeof(hedge_counts) == 32);
-  CHECK(sizeof(hedge_render_options) == 24);
+  CHECK(sizeof(hedge_render_buffers_options) == 24);
   CHECK(sizeof(hedge_vertex_layout) == 24);
   CHECK(sizeof(hedge_range) == 8);
   CHECK(sizeof(hedge_sync_result) == 40);
@@ -86,8 +86,8 @@ void test_bad_handles(void) {
   CHECK_STATUS(hedge_mesh_counts(NULL, &c), HEDGE_ERROR_BAD_HANDLE);
   CHECK_ERROR_HAS("NULL");
   CHECK_STATUS(hedge_mesh_destroy(NULL), HEDGE_ERROR_BAD_HANDLE);
-  CHECK_STATUS(hedge_render_destroy(NULL), HEDGE_ERROR_BAD_HANDLE);
-  CHECK_STATUS(hedge_render_sync(NULL, NULL), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_render_buffers_destroy(NULL), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_render_buffers_sync(NULL, NULL), HEDGE_ERROR_BAD_HANDLE);
 
   hedge_mesh* mesh = make_mesh(kTetPositions, 4, kTetTriangles, 12, NULL, 0);
   CHECK_OK(hedge_mesh_counts(mesh, &c));
@@ -96,7 +96,7 @@ void test_bad_handles(void) {
   CHECK_STATUS(hedge_mesh_counts(mesh, &c), HEDGE_ERROR_BAD_HANDLE);
   CHECK_ERROR_HAS("not a live mesh");
   CHECK_STATUS(hedge_halfedge_twin(mesh, 0, &out), HEDGE_ERROR_BAD_HANDLE);
-  CHECK_STATUS(hedge_split_all_faces(mesh, NULL, 0, &out), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_mesh_split_all_faces(mesh, NULL, 0, &out), HEDGE_ERROR_BAD_HANDLE);
   CHECK_STATUS(hedge_mesh_destroy(mesh), HEDGE_ERROR_BAD_HANDLE);
 
   /* A value that was never a handle. */
@@ -110,13 +110,13 @@ void test_bad_handles(void) {
   CHECK_STATUS(hedge_mesh_counts(mesh, &c), HEDGE_ERROR_BAD_HANDLE);
 
   /* A render handle is not a mesh handle, nor the reverse. */
-  hedge_render* render = NULL;
-  CHECK_OK(hedge_render_create(again, NULL, &render));
+  hedge_render_buffers* render = NULL;
+  CHECK_OK(hedge_render_buffers_create(again, NULL, &render));
   CHECK_STATUS(hedge_mesh_counts((const hedge_mesh*)render, &c), HEDGE_ERROR_BAD_HANDLE);
-  CHECK_STATUS(hedge_render_sync((hedge_render*)again, NULL), HEDGE_ERROR_BAD_HANDLE);
-  CHECK_OK(hedge_render_destroy(render));
-  CHECK_STATUS(hedge_render_destroy(render), HEDGE_ERROR_BAD_HANDLE);
-  CHECK_STATUS(hedge_render_sync(render, NULL), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_render_buffers_sync((hedge_render_buffers*)again, NULL), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_OK(hedge_render_buffers_destroy(render));
+  CHECK_STATUS(hedge_render_buffers_destroy(render), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_render_buffers_sync(render, NULL), HEDGE_ERROR_BAD_HANDLE);
   CHECK_OK(hedge_mesh_destroy(again));
 }
 
@@ -408,8 +408,8 @@ void test_validation_text(void) {
  * and each one without a handle refuses a NULL out parameter. */
 void test_every_function_error_path(void) {
   hedge_mesh* dead_mesh = make_mesh(kTetPositions, 4, kTetTriangles, 12, NULL, 0);
-  hedge_render* dead_render = NULL;
-  CHECK_OK(hedge_render_create(dead_mesh, NULL, &dead_render));
+  hedge_render_buffers* dead_render = NULL;
+  CHECK_OK(hedge_render_buffers_create(dead_mesh, NULL, &dead_render));
   CHECK_OK(hedge_mesh_destroy(dead_mesh)); /* destroys dead_render too */
 
   uint32_t u = 0, buffer[16];
@@ -428,15 +428,15 @@ void test_every_function_error_path(void) {
   const uint32_t tri[] = {0, 1, 2};
 
   hedge_mesh* const meshes[] = {NULL, dead_mesh};
-  hedge_render* const renders[] = {NULL, dead_render};
+  hedge_render_buffers* const renders[] = {NULL, dead_render};
   for (int k = 0; k < 2; ++k) {
     hedge_mesh* m = meshes[k];
-    hedge_render* r = renders[k];
+    hedge_render_buffers* r = renders[k];
 #define BAD(call) CHECK_STATUS(call, HEDGE_ERROR_BAD_HANDLE)
     BAD(hedge_mesh_counts(m, &counts));
     BAD(hedge_mesh_fracture(m, 0, 0, 0, NULL, NULL, 0, &u));
-    BAD(hedge_mesh_get_position(m, 0, f));
-    BAD(hedge_mesh_set_position(m, 0, 0, 0, 0));
+    BAD(hedge_vertex_position(m, 0, f));
+    BAD(hedge_set_vertex_position(m, 0, 0, 0, 0));
     BAD(hedge_mesh_copy_positions(m, f, 16, &u64));
     BAD(hedge_halfedge_twin(m, 0, &u));
     BAD(hedge_halfedge_next(m, 0, &u));
@@ -474,7 +474,7 @@ void test_every_function_error_path(void) {
     BAD(hedge_split_face(m, 0, 0, 0, 0, &u));
     BAD(hedge_can_cut_face(m, 0, 4, &i));
     BAD(hedge_cut_face(m, 0, 4, &u));
-    BAD(hedge_split_all_faces(m, buffer, 16, &u));
+    BAD(hedge_mesh_split_all_faces(m, buffer, 16, &u));
     BAD(hedge_can_add_face(m, tri, 3, &i));
     BAD(hedge_add_face(m, tri, 3, &u));
     BAD(hedge_can_remove_face(m, 0, &i));
@@ -490,26 +490,26 @@ void test_every_function_error_path(void) {
     BAD(hedge_mesh_validation_problem(m, 0, text, 16, &u));
     BAD(hedge_mesh_validation_report(m, text, 16, &u));
     BAD(hedge_mesh_destroy(m));
-    BAD(hedge_render_create(m, NULL, &r));
-    BAD(hedge_render_sync(r, &result));
-    BAD(hedge_render_begin(r));
-    BAD(hedge_render_commit(r, &result));
-    BAD(hedge_render_rebuild(r, &result));
-    BAD(hedge_render_last_result(r, &result));
-    BAD(hedge_render_dirty_vertex_ranges(r, ranges, 4, &u));
-    BAD(hedge_render_dirty_index_ranges(r, ranges, 4, &u));
-    BAD(hedge_render_compact(r, NULL, 0, NULL, NULL, 0, NULL));
-    BAD(hedge_render_counts(r, &buffer_counts));
-    BAD(hedge_render_layout(r, &layout));
-    BAD(hedge_render_vertex_data(r, HEDGE_STREAM_VERTICES, &fp, &u64));
-    BAD(hedge_render_copy_vertex_data(r, HEDGE_STREAM_VERTICES, f, 16, &u64));
-    BAD(hedge_render_index_data(r, &up, &u64));
-    BAD(hedge_render_copy_index_data(r, buffer, 16, &u64));
-    BAD(hedge_render_vertex_source(r, buffer, 16, &u));
-    BAD(hedge_render_corner_vertex(r, 0, &u));
-    BAD(hedge_render_face_triangles(r, 0, &u, &u));
-    BAD(hedge_render_triangle_face(r, 0, &u));
-    BAD(hedge_render_destroy(r));
+    BAD(hedge_render_buffers_create(m, NULL, &r));
+    BAD(hedge_render_buffers_sync(r, &result));
+    BAD(hedge_render_buffers_begin(r));
+    BAD(hedge_render_buffers_commit(r, &result));
+    BAD(hedge_render_buffers_rebuild(r, &result));
+    BAD(hedge_render_buffers_last_result(r, &result));
+    BAD(hedge_render_buffers_dirty_vertex_ranges(r, ranges, 4, &u));
+    BAD(hedge_render_buffers_dirty_index_ranges(r, ranges, 4, &u));
+    BAD(hedge_render_buffers_compact(r, NULL, 0, NULL, NULL, 0, NULL));
+    BAD(hedge_render_buffers_counts(r, &buffer_counts));
+    BAD(hedge_render_buffers_layout(r, &layout));
+    BAD(hedge_render_buffers_vertex_data(r, HEDGE_STREAM_VERTICES, &fp, &u64));
+    BAD(hedge_render_buffers_copy_vertex_data(r, HEDGE_STREAM_VERTICES, f, 16, &u64));
+    BAD(hedge_render_buffers_index_data(r, &up, &u64));
+    BAD(hedge_render_buffers_copy_index_data(r, buffer, 16, &u64));
+    BAD(hedge_render_buffers_vertex_source(r, buffer, 16, &u));
+    BAD(hedge_render_buffers_corner_vertex(r, 0, &u));
+    BAD(hedge_render_buffers_face_triangles(r, 0, &u, &u));
+    BAD(hedge_render_buffers_triangle_face(r, 0, &u));
+    BAD(hedge_render_buffers_destroy(r));
 #undef BAD
   }
   CHECK(out_mesh == NULL);
@@ -517,7 +517,7 @@ void test_every_function_error_path(void) {
 #define NULL_OUT(call) CHECK_STATUS(call, HEDGE_ERROR_INVALID_ARGUMENT)
   NULL_OUT(hedge_version(&i, &i, NULL));
   NULL_OUT(hedge_build_options_default(NULL));
-  NULL_OUT(hedge_render_options_default(NULL));
+  NULL_OUT(hedge_render_buffers_options_default(NULL));
   NULL_OUT(hedge_engine_import_options_default(NULL));
   NULL_OUT(hedge_mesh_create(kTetPositions, 4, kTetTriangles, 12, NULL, 0, NULL, NULL, NULL, NULL, NULL));
   NULL_OUT(hedge_mesh_read(HEDGE_DATA_DIR "/tet.obj", NULL, NULL, NULL));
@@ -535,7 +535,7 @@ void test_every_function_error_path(void) {
 
 typedef struct {
   hedge_mesh* mesh;
-  hedge_render* render;
+  hedge_render_buffers* render;
   atomic_int working; /* 1 while the first thread is inside its long call */
   atomic_int done;
   int busy_seen, ok_seen, other_seen;
@@ -557,7 +557,7 @@ static int long_edits(void* arg) {
     if (st != HEDGE_OK) failed = 1;
     hedge_sync_result r;
     do {
-      st = hedge_render_sync(s->render, &r);
+      st = hedge_render_buffers_sync(s->render, &r);
     } while (st == HEDGE_ERROR_BUSY);
     if (st != HEDGE_OK) failed = 1;
   }
@@ -568,10 +568,10 @@ static int long_edits(void* arg) {
 void test_threads(void) {
   hedge_mesh* mesh = make_mesh(kGridPositions, 9, kGridQuads, 16, kGridSizes, 4);
   uint32_t added = 0;
-  CHECK_OK(hedge_split_all_faces(mesh, NULL, 0, &added)); /* triangles, for the midpoint scheme */
+  CHECK_OK(hedge_mesh_split_all_faces(mesh, NULL, 0, &added)); /* triangles, for the midpoint scheme */
   CHECK_OK(hedge_mesh_subdivide(mesh, HEDGE_SUBDIVISION_MIDPOINT, 5));
-  hedge_render* render = NULL;
-  CHECK_OK(hedge_render_create(mesh, NULL, &render));
+  hedge_render_buffers* render = NULL;
+  CHECK_OK(hedge_render_buffers_create(mesh, NULL, &render));
   shared_mesh s = {mesh, render, 0, 0, 0, 0, 0};
   thrd_t editor;
   CHECK(thrd_create(&editor, long_edits, &s) == thrd_success);
@@ -582,8 +582,8 @@ void test_threads(void) {
       hedge_counts c;
       hedge_sync_result r;
       const hedge_status st = i == 0   ? hedge_mesh_counts(mesh, &c)
-                              : i == 1 ? hedge_mesh_set_position(mesh, 0, 0.f, 0.f, 0.f)
-                                       : hedge_render_sync(render, &r);
+                              : i == 1 ? hedge_set_vertex_position(mesh, 0, 0.f, 0.f, 0.f)
+                                       : hedge_render_buffers_sync(render, &r);
       if (st == HEDGE_ERROR_BUSY) {
         ++s.busy_seen;
         CHECK(strstr(hedge_last_error(), "another thread") != NULL);
@@ -604,9 +604,38 @@ void test_threads(void) {
   /* Free again: this thread's calls succeed. */
   hedge_counts c;
   CHECK_OK(hedge_mesh_counts(mesh, &c));
-  CHECK_OK(hedge_render_destroy(render));
+  CHECK_OK(hedge_render_buffers_destroy(render));
   CHECK_OK(hedge_mesh_destroy(mesh));
 }
+
+/* ---------------------------------------------------------------------------------------------- */
+/* Deprecated names (kept for one release)                                                        */
+/* ---------------------------------------------------------------------------------------------- */
+
+/* The previous release's names still compile and reach the current functions. */
+static void test_deprecated_names(void) {
+  hedge_mesh* mesh = make_mesh(kGridPositions, 9, kGridQuads, 16, kGridSizes, 4);
+  hedge_render_options options;
+  CHECK_OK(hedge_render_options_default(&options));
+  hedge_render* render = NULL;
+  CHECK_OK(hedge_render_create(mesh, &options, &render));
+  float p[3];
+  CHECK_OK(hedge_mesh_set_position(mesh, 4, 1, 1, 0.5f));
+  CHECK_OK(hedge_mesh_get_position(mesh, 4, p));
+  CHECK(p[0] == 1 && p[1] == 1 && p[2] == 0.5f);
+  uint32_t added = 0;
+  CHECK_OK(hedge_split_all_faces(mesh, NULL, 0, &added));
+  CHECK(added == 4);
+  hedge_sync_result result;
+  CHECK_OK(hedge_render_sync(render, &result));
+  hedge_buffer_counts counts;
+  CHECK_OK(hedge_render_counts(render, &counts));
+  CHECK(counts.triangles == 16);
+  CHECK_OK(hedge_render_destroy(render));
+  CHECK_VALID(mesh);
+  CHECK_OK(hedge_mesh_destroy(mesh));
+}
+/* End of deprecated names */
 
 int main(void) {
   test_basics();
@@ -630,6 +659,7 @@ int main(void) {
   test_triangle_faces();
   test_every_function_error_path();
   test_threads();
+  test_deprecated_names();
   printf("c_api_test: %d checks passed\n", g_checks);
   return 0;
 }

@@ -83,7 +83,7 @@ static inline void check_valid_at(hedge_mesh* mesh, const char* file, int line) 
 #define CHECK_VALID(mesh) check_valid_at((mesh), __FILE__, __LINE__)
 
 static inline void get_position(const hedge_mesh* mesh, uint32_t v, float out[3]) {
-  CHECK_OK(hedge_mesh_get_position(mesh, v, out));
+  CHECK_OK(hedge_vertex_position(mesh, v, out));
 }
 
 static inline uint32_t to_vertex(const hedge_mesh* mesh, uint32_t h) {

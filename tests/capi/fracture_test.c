@@ -73,7 +73,7 @@ static void face_centroid(const hedge_mesh* mesh, uint32_t f, float out[2]) {
   double x = 0, y = 0;
   for (uint32_t i = 0; i < n; ++i) {
     float p[3];
-    CHECK_OK(hedge_mesh_get_position(mesh, corners[i], p));
+    CHECK_OK(hedge_vertex_position(mesh, corners[i], p));
     x += p[0], y += p[1];
   }
   out[0] = (float)(x / n), out[1] = (float)(y / n);

@@ -205,10 +205,10 @@ void test_pyramid_operations(void) {
   /* split_all_faces: too small a buffer changes nothing. */
   c = counts_of(mesh);
   uint32_t added[64], n_added = 0;
-  CHECK_STATUS(hedge_split_all_faces(mesh, added, c.faces - 1, &n_added), HEDGE_ERROR_BUFFER_TOO_SMALL);
+  CHECK_STATUS(hedge_mesh_split_all_faces(mesh, added, c.faces - 1, &n_added), HEDGE_ERROR_BUFFER_TOO_SMALL);
   CHECK(n_added == c.faces);
   CHECK(same_counts(counts_of(mesh), c));
-  CHECK_OK(hedge_split_all_faces(mesh, added, 64, &n_added));
+  CHECK_OK(hedge_mesh_split_all_faces(mesh, added, 64, &n_added));
   CHECK(n_added == c.faces);
   {
     const hedge_counts after = counts_of(mesh);
@@ -221,7 +221,7 @@ void test_pyramid_operations(void) {
     c = after;
   }
   CHECK_VALID(mesh);
-  CHECK_OK(hedge_split_all_faces(mesh, NULL, 0, &n_added));
+  CHECK_OK(hedge_mesh_split_all_faces(mesh, NULL, 0, &n_added));
   CHECK(n_added == c.faces);
   CHECK_VALID(mesh);
 

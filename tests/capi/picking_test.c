@@ -84,11 +84,11 @@ void test_picking(void) {
   /* Edits are seen by the next query: lift vertex 4 (the centre) and a ray through it finds it. */
   CHECK_OK(hedge_mesh_bvh_update(mesh, &bytes));
   CHECK(bytes > 0);
-  CHECK_OK(hedge_mesh_set_position(mesh, 4, 1, 1, 3));
+  CHECK_OK(hedge_set_vertex_position(mesh, 4, 1, 1, 3));
   const float centre[3] = {1, 1, 10};
   CHECK_OK(hedge_mesh_raycast(mesh, centre, down, INFINITY, &hit, &found));
   CHECK(found == 1 && fabsf(hit.point[2] - 3) < 1e-5f);
-  CHECK_OK(hedge_mesh_set_position(mesh, 4, 1, 1, 0));
+  CHECK_OK(hedge_set_vertex_position(mesh, 4, 1, 1, 0));
   /* A split adds faces: the new vertex's faces are found. */
   uint32_t h = INVALID, e = INVALID, v = INVALID;
   CHECK_OK(hedge_mesh_find_halfedge(mesh, 0, 1, &h));

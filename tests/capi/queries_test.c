@@ -150,15 +150,15 @@ void test_tetrahedron(void) {
     float p[3] = {0, 0, 0};
     get_position(tet, 3, p);
     CHECK(p[0] == 0 && p[1] == 0 && p[2] == 1);
-    CHECK_OK(hedge_mesh_set_position(tet, 3, 0.25f, 0.5f, 2));
+    CHECK_OK(hedge_set_vertex_position(tet, 3, 0.25f, 0.5f, 2));
     get_position(tet, 3, p);
     CHECK(p[0] == 0.25f && p[1] == 0.5f && p[2] == 2);
-    CHECK_STATUS(hedge_mesh_set_position(tet, 3, NAN, 0, 0), HEDGE_ERROR_INVALID_ARGUMENT);
-    CHECK_STATUS(hedge_mesh_set_position(tet, 3, 0, INFINITY, 0), HEDGE_ERROR_INVALID_ARGUMENT);
+    CHECK_STATUS(hedge_set_vertex_position(tet, 3, NAN, 0, 0), HEDGE_ERROR_INVALID_ARGUMENT);
+    CHECK_STATUS(hedge_set_vertex_position(tet, 3, 0, INFINITY, 0), HEDGE_ERROR_INVALID_ARGUMENT);
     CHECK_ERROR_HAS("not finite");
     get_position(tet, 3, p);
     CHECK(p[0] == 0.25f && p[1] == 0.5f && p[2] == 2);
-    CHECK_OK(hedge_mesh_set_position(tet, 3, 0, 0, 1));
+    CHECK_OK(hedge_set_vertex_position(tet, 3, 0, 0, 1));
 
     float all[12];
     uint64_t n = 0;

@@ -13,18 +13,18 @@ static const uint32_t kQuadTriangles[] = {0, 1, 2, 3, 4, 5};
 
 /* Every live triangle of the index buffer is one of the mesh's faces (same corners, same order up
  * to rotation), checked through the render vertex source map. */
-static void check_triangles_match(const hedge_mesh* mesh, const hedge_render* render) {
+static void check_triangles_match(const hedge_mesh* mesh, const hedge_render_buffers* render) {
   hedge_counts mc = counts_of(mesh);
   hedge_buffer_counts rc;
-  CHECK_OK(hedge_render_counts(render, &rc));
+  CHECK_OK(hedge_render_buffers_counts(render, &rc));
   const uint32_t* indices = NULL;
   uint64_t n_indices = 0;
-  CHECK_OK(hedge_render_index_data(render, &indices, &n_indices));
+  CHECK_OK(hedge_render_buffers_index_data(render, &indices, &n_indices));
   CHECK(n_indices == rc.index_count);
   uint32_t* source = malloc(sizeof(uint32_t) * (rc.vertex_slots + 1));
   uint32_t n_source = 0;
   CHECK(source != NULL);
-  CHECK_OK(hedge_render_vertex_source(render, source, rc.vertex_slots + 1, &n_source));
+  CHECK_OK(hedge_render_buffers_vertex_source(render, source, rc.vertex_slots + 1, &n_source));
   CHECK(n_source == rc.vertex_slots);
   uint32_t live_triangles = 0;
   for (uint32_t f = 0; f < mc.face_slots; ++f) {
@@ -32,7 +32,7 @@ static void check_triangles_match(const hedge_mesh* mesh, const hedge_render* re
     CHECK_OK(hedge_face_is_deleted(mesh, f, &deleted));
     if (deleted) continue;
     uint32_t first = INVALID, count = 0, corners[8], loop[8], n = 0;
-    CHECK_OK(hedge_render_face_triangles(render, f, &first, &count));
+    CHECK_OK(hedge_render_buffers_face_triangles(render, f, &first, &count));
     CHECK(count == 1);
     ++live_triangles;
     CHECK_OK(hedge_face_vertices(mesh, f, corners, 8, &n));
@@ -47,7 +47,7 @@ static void check_triangles_match(const hedge_mesh* mesh, const hedge_render* re
     /* The corner render vertices are those of the triangle. */
     for (uint32_t k = 0; k < 3; ++k) {
       uint32_t rv = INVALID;
-      CHECK_OK(hedge_render_corner_vertex(render, loop[k], &rv));
+      CHECK_OK(hedge_render_buffers_corner_vertex(render, loop[k], &rv));
       CHECK(rv == t[0] || rv == t[1] || rv == t[2]);
       CHECK(source[rv] == corners[k]);
     }
@@ -94,29 +94,29 @@ void test_render(void) {
     CHECK(bad == NULL);
   }
 
-  hedge_render_options options;
+  hedge_render_buffers_options options;
   memset(&options, 0xFF, sizeof options);
-  CHECK_OK(hedge_render_options_default(&options));
+  CHECK_OK(hedge_render_buffers_options_default(&options));
   CHECK(options.normals == HEDGE_NORMALS_AUTOMATIC && options.texcoords == 1 && options.colors == 1);
   CHECK(options.interleaved == 1 && options.winding == HEDGE_WINDING_CCW && options.flip_x == 0);
-  hedge_render* render = NULL;
+  hedge_render_buffers* render = NULL;
   {
-    hedge_render_options wrong = options;
+    hedge_render_buffers_options wrong = options;
     wrong.normals = 9;
-    CHECK_STATUS(hedge_render_create(mesh, &wrong, &render), HEDGE_ERROR_INVALID_ARGUMENT);
+    CHECK_STATUS(hedge_render_buffers_create(mesh, &wrong, &render), HEDGE_ERROR_INVALID_ARGUMENT);
     CHECK(render == NULL);
-    CHECK_STATUS(hedge_render_create(NULL, &options, &render), HEDGE_ERROR_BAD_HANDLE);
+    CHECK_STATUS(hedge_render_buffers_create(NULL, &options, &render), HEDGE_ERROR_BAD_HANDLE);
   }
-  CHECK_OK(hedge_render_create(mesh, &options, &render));
+  CHECK_OK(hedge_render_buffers_create(mesh, &options, &render));
 
   /* Layout: position, computed normal, texcoord, colour. */
   hedge_vertex_layout layout;
-  CHECK_OK(hedge_render_layout(render, &layout));
+  CHECK_OK(hedge_render_buffers_layout(render, &layout));
   CHECK(layout.interleaved == 1 && layout.stride == 12);
   CHECK(layout.position == 0 && layout.normal == 3 && layout.texcoord == 6 && layout.color == 8);
 
   hedge_buffer_counts rc;
-  CHECK_OK(hedge_render_counts(render, &rc));
+  CHECK_OK(hedge_render_buffers_counts(render, &rc));
   CHECK(rc.vertex_slots == 5 && rc.vertices == 5 && rc.seam_splits == 1);
   CHECK(rc.free_triangle_slots == 0);
   CHECK(rc.vertex_capacity >= rc.vertex_slots && rc.index_capacity >= rc.index_count);
@@ -125,20 +125,21 @@ void test_render(void) {
 
   /* The first build is a full one. */
   hedge_sync_result result;
-  CHECK_OK(hedge_render_last_result(render, &result));
+  CHECK_OK(hedge_render_buffers_last_result(render, &result));
   CHECK(result.full == 1 && result.resized == 1);
 
   /* Vertex data: pointer and copy agree; every engine (position, texcoord) pair is present. */
   const float* data = NULL;
   uint64_t n_data = 0;
-  CHECK_OK(hedge_render_vertex_data(render, HEDGE_STREAM_VERTICES, &data, &n_data));
+  CHECK_OK(hedge_render_buffers_vertex_data(render, HEDGE_STREAM_VERTICES, &data, &n_data));
   CHECK(data != NULL && n_data == (uint64_t)rc.vertex_slots * layout.stride);
   float copied[256];
   uint64_t n_copied = 0;
-  CHECK_STATUS(hedge_render_copy_vertex_data(render, HEDGE_STREAM_VERTICES, copied, n_data - 1, &n_copied),
-               HEDGE_ERROR_BUFFER_TOO_SMALL);
+  CHECK_STATUS(
+      hedge_render_buffers_copy_vertex_data(render, HEDGE_STREAM_VERTICES, copied, n_data - 1, &n_copied),
+      HEDGE_ERROR_BUFFER_TOO_SMALL);
   CHECK(n_copied == n_data);
-  CHECK_OK(hedge_render_copy_vertex_data(render, HEDGE_STREAM_VERTICES, copied, 256, &n_copied));
+  CHECK_OK(hedge_render_buffers_copy_vertex_data(render, HEDGE_STREAM_VERTICES, copied, 256, &n_copied));
   CHECK(n_copied == n_data && memcmp(copied, data, sizeof(float) * n_data) == 0);
   for (uint32_t i = 0; i < 6; ++i) {
     int found = 0;
@@ -156,38 +157,40 @@ void test_render(void) {
     CHECK(fabsf(v[3]) < 1e-6f && fabsf(v[4]) < 1e-6f && fabsf(v[5] - 1) < 1e-6f);
   }
   /* Separate streams are empty in an interleaved layout. */
-  CHECK_OK(hedge_render_vertex_data(render, HEDGE_STREAM_NORMALS, &data, &n_data));
+  CHECK_OK(hedge_render_buffers_vertex_data(render, HEDGE_STREAM_NORMALS, &data, &n_data));
   CHECK(data == NULL && n_data == 0);
-  CHECK_STATUS(hedge_render_vertex_data(render, 7, &data, &n_data), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_render_buffers_vertex_data(render, 7, &data, &n_data), HEDGE_ERROR_INVALID_ARGUMENT);
 
   /* Index data. */
   const uint32_t* indices = NULL;
   uint64_t n_indices = 0;
   uint32_t index_copy[64];
-  CHECK_OK(hedge_render_index_data(render, &indices, &n_indices));
+  CHECK_OK(hedge_render_buffers_index_data(render, &indices, &n_indices));
   CHECK(n_indices == 6);
-  CHECK_STATUS(hedge_render_copy_index_data(render, index_copy, 5, &n_indices), HEDGE_ERROR_BUFFER_TOO_SMALL);
+  CHECK_STATUS(hedge_render_buffers_copy_index_data(render, index_copy, 5, &n_indices),
+               HEDGE_ERROR_BUFFER_TOO_SMALL);
   CHECK(n_indices == 6);
-  CHECK_OK(hedge_render_copy_index_data(render, index_copy, 64, &n_indices));
+  CHECK_OK(hedge_render_buffers_copy_index_data(render, index_copy, 64, &n_indices));
   CHECK(n_indices == 6 && memcmp(index_copy, indices, 6 * sizeof(uint32_t)) == 0);
   check_triangles_match(mesh, render);
 
   /* Move a vertex: the sync rewrites its render vertices only. */
   uint32_t source[16], n_source = 0;
-  CHECK_OK(hedge_render_vertex_source(render, source, 16, &n_source));
+  CHECK_OK(hedge_render_buffers_vertex_source(render, source, 16, &n_source));
   CHECK(n_source == 5);
-  CHECK_STATUS(hedge_render_vertex_source(render, source, 4, &n_source), HEDGE_ERROR_BUFFER_TOO_SMALL);
-  CHECK_OK(hedge_mesh_set_position(mesh, 1, 1, 0, 0.5f));
-  CHECK_OK(hedge_render_sync(render, &result));
+  CHECK_STATUS(hedge_render_buffers_vertex_source(render, source, 4, &n_source),
+               HEDGE_ERROR_BUFFER_TOO_SMALL);
+  CHECK_OK(hedge_set_vertex_position(mesh, 1, 1, 0, 0.5f));
+  CHECK_OK(hedge_render_buffers_sync(render, &result));
   CHECK(result.full == 0 && result.resized == 0 && result.vertex_range_count >= 1);
   CHECK(result.vertex_bytes > 0);
   {
     hedge_range ranges[16];
     uint32_t n_ranges = 0;
-    CHECK_STATUS(hedge_render_dirty_vertex_ranges(render, ranges, 0, &n_ranges),
+    CHECK_STATUS(hedge_render_buffers_dirty_vertex_ranges(render, ranges, 0, &n_ranges),
                  HEDGE_ERROR_BUFFER_TOO_SMALL);
     CHECK(n_ranges == result.vertex_range_count);
-    CHECK_OK(hedge_render_dirty_vertex_ranges(render, ranges, 16, &n_ranges));
+    CHECK_OK(hedge_render_buffers_dirty_vertex_ranges(render, ranges, 16, &n_ranges));
     CHECK(n_ranges == result.vertex_range_count);
     int covered = 0;
     for (uint32_t r = 0; r < n_source; ++r) {
@@ -196,87 +199,88 @@ void test_render(void) {
         if (r >= ranges[i].first && r < ranges[i].first + ranges[i].count) covered = 1;
     }
     CHECK(covered);
-    CHECK_OK(hedge_render_dirty_index_ranges(render, ranges, 16, &n_ranges));
+    CHECK_OK(hedge_render_buffers_dirty_index_ranges(render, ranges, 16, &n_ranges));
     CHECK(n_ranges == result.index_range_count);
-    CHECK_OK(hedge_render_vertex_data(render, HEDGE_STREAM_VERTICES, &data, &n_data));
+    CHECK_OK(hedge_render_buffers_vertex_data(render, HEDGE_STREAM_VERTICES, &data, &n_data));
     for (uint32_t r = 0; r < n_source; ++r)
       if (source[r] == 1) CHECK(data[r * layout.stride + 2] == 0.5f);
   }
   /* Nothing changed since: an empty sync. */
-  CHECK_OK(hedge_render_sync(render, &result));
+  CHECK_OK(hedge_render_buffers_sync(render, &result));
   CHECK(result.vertex_range_count == 0 && result.index_range_count == 0 && result.full == 0);
 
   /* A transaction: the edits appear at commit. */
-  CHECK_STATUS(hedge_render_commit(render, &result), HEDGE_ERROR_INVALID_ARGUMENT);
-  CHECK_OK(hedge_render_begin(render));
+  CHECK_STATUS(hedge_render_buffers_commit(render, &result), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_OK(hedge_render_buffers_begin(render));
   uint32_t diagonal = 0, mid = 0;
   CHECK_OK(hedge_mesh_find_halfedge(mesh, 0, 2, &diagonal));
   CHECK(diagonal != INVALID);
   CHECK_OK(hedge_split_edge(mesh, diagonal >> 1, 0.5f, 0.5f, 0, &mid));
-  CHECK_OK(hedge_render_sync(render, &result)); /* inside the transaction: nothing */
+  CHECK_OK(hedge_render_buffers_sync(render, &result)); /* inside the transaction: nothing */
   CHECK(result.vertex_range_count == 0 && result.index_range_count == 0);
-  CHECK_OK(hedge_render_commit(render, &result));
+  CHECK_OK(hedge_render_buffers_commit(render, &result));
   CHECK(result.faces_synced >= 4 && result.index_range_count >= 1);
-  CHECK_OK(hedge_render_counts(render, &rc));
+  CHECK_OK(hedge_render_buffers_counts(render, &rc));
   CHECK(rc.triangles == 4);
   CHECK_VALID(mesh);
   check_triangles_match(mesh, render);
 
   /* Remove a face: its triangle becomes a hole until compact(). */
   CHECK_OK(hedge_remove_face(mesh, 0));
-  CHECK_OK(hedge_render_sync(render, NULL));
-  CHECK_OK(hedge_render_counts(render, &rc));
+  CHECK_OK(hedge_render_buffers_sync(render, NULL));
+  CHECK_OK(hedge_render_buffers_counts(render, &rc));
   CHECK(rc.triangles == 3 && rc.index_count == 12);
   CHECK_VALID(mesh);
   check_triangles_match(mesh, render);
   {
     uint32_t vmap[32], tmap[32], nv = 0, nt = 0;
-    CHECK_STATUS(hedge_render_compact(render, vmap, 32, &nv, tmap, 1, &nt), HEDGE_ERROR_BUFFER_TOO_SMALL);
+    CHECK_STATUS(hedge_render_buffers_compact(render, vmap, 32, &nv, tmap, 1, &nt),
+                 HEDGE_ERROR_BUFFER_TOO_SMALL);
     CHECK(nv == rc.vertex_slots && nt == 4);
-    CHECK_OK(hedge_render_compact(render, vmap, 32, &nv, tmap, 32, &nt));
+    CHECK_OK(hedge_render_buffers_compact(render, vmap, 32, &nv, tmap, 32, &nt));
     uint32_t freed = 0;
     for (uint32_t t = 0; t < nt; ++t) freed += tmap[t] == INVALID;
     CHECK(freed == 1);
     hedge_buffer_counts after;
-    CHECK_OK(hedge_render_counts(render, &after));
+    CHECK_OK(hedge_render_buffers_counts(render, &after));
     CHECK(after.index_count == 9 && after.triangles == 3 && after.vertex_slots == after.vertices);
     check_triangles_match(mesh, render);
-    CHECK_OK(hedge_render_compact(render, NULL, 0, NULL, NULL, 0, NULL));
+    CHECK_OK(hedge_render_buffers_compact(render, NULL, 0, NULL, NULL, 0, NULL));
   }
 
   /* Rebuild and garbage collection: full syncs. */
-  CHECK_OK(hedge_render_rebuild(render, &result));
+  CHECK_OK(hedge_render_buffers_rebuild(render, &result));
   CHECK(result.full == 1);
   CHECK_OK(hedge_mesh_garbage_collection(mesh, NULL, 0, NULL, 0, NULL, 0, NULL, 0));
-  CHECK_OK(hedge_render_sync(render, &result));
+  CHECK_OK(hedge_render_buffers_sync(render, &result));
   CHECK(result.full == 1);
   CHECK_VALID(mesh);
   check_triangles_match(mesh, render);
   {
     uint32_t rv = 0, first = 0, count = 0;
-    CHECK_STATUS(hedge_render_corner_vertex(render, 999, &rv), HEDGE_ERROR_BAD_HANDLE);
-    CHECK_STATUS(hedge_render_face_triangles(render, 999, &first, &count), HEDGE_ERROR_BAD_HANDLE);
+    CHECK_STATUS(hedge_render_buffers_corner_vertex(render, 999, &rv), HEDGE_ERROR_BAD_HANDLE);
+    CHECK_STATUS(hedge_render_buffers_face_triangles(render, 999, &first, &count), HEDGE_ERROR_BAD_HANDLE);
   }
 
   /* A second render object: separate streams, x flipped, clockwise. */
-  hedge_render_options separate = options;
+  hedge_render_buffers_options separate = options;
   separate.interleaved = 0;
   separate.flip_x = 1;
   separate.winding = HEDGE_WINDING_CW;
   separate.normals = HEDGE_NORMALS_COMPUTED;
-  hedge_render* render2 = NULL;
-  CHECK_OK(hedge_render_create(mesh, &separate, &render2));
-  CHECK_OK(hedge_render_layout(render2, &layout));
+  hedge_render_buffers* render2 = NULL;
+  CHECK_OK(hedge_render_buffers_create(mesh, &separate, &render2));
+  CHECK_OK(hedge_render_buffers_layout(render2, &layout));
   CHECK(layout.interleaved == 0 && layout.position == 0 && layout.normal == 0 && layout.stride == 12);
   hedge_buffer_counts rc2;
-  CHECK_OK(hedge_render_counts(render2, &rc2));
+  CHECK_OK(hedge_render_buffers_counts(render2, &rc2));
   const float* positions = NULL;
   const float* normals = NULL;
   uint64_t n_positions = 0, n_normals = 0;
-  CHECK_OK(hedge_render_vertex_data(render2, HEDGE_STREAM_VERTICES, &positions, &n_positions));
-  CHECK_OK(hedge_render_vertex_data(render2, HEDGE_STREAM_NORMALS, &normals, &n_normals));
+  CHECK_OK(hedge_render_buffers_vertex_data(render2, HEDGE_STREAM_VERTICES, &positions, &n_positions));
+  CHECK_OK(hedge_render_buffers_vertex_data(render2, HEDGE_STREAM_NORMALS, &normals, &n_normals));
   CHECK(n_positions == 3 * (uint64_t)rc2.vertex_slots && n_normals == 3 * (uint64_t)rc2.vertex_slots);
-  CHECK_OK(hedge_render_vertex_source(render2, source, 16, &n_source));
+  CHECK_OK(hedge_render_buffers_vertex_source(render2, source, 16, &n_source));
   for (uint32_t r = 0; r < n_source; ++r) {
     float p[3];
     get_position(mesh, source[r], p);
@@ -284,82 +288,82 @@ void test_render(void) {
   }
   float texcoords[64], colors[128];
   uint64_t n_tex = 0, n_col = 0;
-  CHECK_OK(hedge_render_copy_vertex_data(render2, HEDGE_STREAM_TEXCOORDS, texcoords, 64, &n_tex));
-  CHECK_OK(hedge_render_copy_vertex_data(render2, HEDGE_STREAM_COLORS, colors, 128, &n_col));
+  CHECK_OK(hedge_render_buffers_copy_vertex_data(render2, HEDGE_STREAM_TEXCOORDS, texcoords, 64, &n_tex));
+  CHECK_OK(hedge_render_buffers_copy_vertex_data(render2, HEDGE_STREAM_COLORS, colors, 128, &n_col));
   CHECK(n_tex == 2 * (uint64_t)rc2.vertex_slots && n_col == 4 * (uint64_t)rc2.vertex_slots);
   CHECK(colors[0] == 1 && colors[1] == 0 && colors[3] == 1);
 
   /* Destroying the mesh destroys its render objects: their handles are then bad. */
-  CHECK_OK(hedge_render_destroy(render2));
+  CHECK_OK(hedge_render_buffers_destroy(render2));
   CHECK_OK(hedge_mesh_destroy(mesh));
-  CHECK_STATUS(hedge_render_sync(render, &result), HEDGE_ERROR_BAD_HANDLE);
-  CHECK_STATUS(hedge_render_counts(render, &rc), HEDGE_ERROR_BAD_HANDLE);
-  CHECK_STATUS(hedge_render_vertex_data(render, HEDGE_STREAM_VERTICES, &data, &n_data),
+  CHECK_STATUS(hedge_render_buffers_sync(render, &result), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_render_buffers_counts(render, &rc), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_render_buffers_vertex_data(render, HEDGE_STREAM_VERTICES, &data, &n_data),
                HEDGE_ERROR_BAD_HANDLE);
-  CHECK_STATUS(hedge_render_begin(render), HEDGE_ERROR_BAD_HANDLE);
-  CHECK_STATUS(hedge_render_destroy(render), HEDGE_ERROR_BAD_HANDLE);
-  CHECK_STATUS(hedge_render_destroy(render2), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_render_buffers_begin(render), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_render_buffers_destroy(render), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_render_buffers_destroy(render2), HEDGE_ERROR_BAD_HANDLE);
 }
 
 /* A render object left open inside a transaction, then its mesh destroyed: no crash, no leak. */
 void test_render_lifetime(void) {
   hedge_mesh* mesh = make_mesh(kPyramidPositions, 5, kPyramidTriangles, 12, NULL, 0);
-  hedge_render* a = NULL;
-  hedge_render* b = NULL;
-  CHECK_OK(hedge_render_create(mesh, NULL, &a));
-  CHECK_OK(hedge_render_create(mesh, NULL, &b));
-  CHECK_OK(hedge_render_begin(a));
+  hedge_render_buffers* a = NULL;
+  hedge_render_buffers* b = NULL;
+  CHECK_OK(hedge_render_buffers_create(mesh, NULL, &a));
+  CHECK_OK(hedge_render_buffers_create(mesh, NULL, &b));
+  CHECK_OK(hedge_render_buffers_begin(a));
   uint32_t v = 0;
   CHECK_OK(hedge_split_face(mesh, 0, 0.5f, 0.25f, 0.3f, &v));
-  CHECK_OK(hedge_render_sync(b, NULL));
+  CHECK_OK(hedge_render_buffers_sync(b, NULL));
   hedge_buffer_counts rc;
-  CHECK_OK(hedge_render_counts(b, &rc));
+  CHECK_OK(hedge_render_buffers_counts(b, &rc));
   CHECK(rc.triangles == 6);
   CHECK_OK(hedge_mesh_destroy(mesh));
-  CHECK_STATUS(hedge_render_commit(a, NULL), HEDGE_ERROR_BAD_HANDLE);
-  CHECK_STATUS(hedge_render_sync(b, NULL), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_render_buffers_commit(a, NULL), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_render_buffers_sync(b, NULL), HEDGE_ERROR_BAD_HANDLE);
   CHECK_STATUS(hedge_split_face(mesh, 0, 0.5f, 0.25f, 0.3f, &v), HEDGE_ERROR_BAD_HANDLE);
 }
 
 /* Every live triangle slot names the face that owns it, after a split, a collapse and compaction. */
-static void check_triangle_faces(const hedge_mesh* mesh, const hedge_render* render) {
+static void check_triangle_faces(const hedge_mesh* mesh, const hedge_render_buffers* render) {
   hedge_buffer_counts bc;
-  CHECK_OK(hedge_render_counts(render, &bc));
+  CHECK_OK(hedge_render_buffers_counts(render, &bc));
   hedge_counts c = counts_of(mesh);
   uint32_t named = 0;
   for (uint32_t t = 0; t < bc.index_count / 3; ++t) {
     uint32_t f = 12345, first = 0, count = 0;
-    CHECK_OK(hedge_render_triangle_face(render, t, &f));
+    CHECK_OK(hedge_render_buffers_triangle_face(render, t, &f));
     if (f == INVALID) continue;
     ++named;
-    CHECK_OK(hedge_render_face_triangles(render, f, &first, &count));
+    CHECK_OK(hedge_render_buffers_face_triangles(render, f, &first, &count));
     CHECK(t >= first && t < first + count);
   }
   CHECK(named == c.faces);
   uint32_t f = 0;
-  CHECK_STATUS(hedge_render_triangle_face(render, bc.index_count / 3, &f), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_render_buffers_triangle_face(render, bc.index_count / 3, &f), HEDGE_ERROR_BAD_HANDLE);
   CHECK_ERROR_HAS("triangle");
-  CHECK_STATUS(hedge_render_triangle_face(render, 0, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_render_buffers_triangle_face(render, 0, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
 }
 
 void test_triangle_faces(void) {
   hedge_mesh* mesh = make_triangle_grid();
-  hedge_render* render = NULL;
-  CHECK_OK(hedge_render_create(mesh, NULL, &render));
+  hedge_render_buffers* render = NULL;
+  CHECK_OK(hedge_render_buffers_create(mesh, NULL, &render));
   check_triangle_faces(mesh, render);
   /* Split the edge 1-4: the new vertex's four faces each own their triangle. */
   uint32_t h = INVALID, e = INVALID, v = INVALID, faces[8], n = 0;
   CHECK_OK(hedge_mesh_find_halfedge(mesh, 1, 4, &h));
   CHECK_OK(hedge_halfedge_edge(mesh, h, &e));
   CHECK_OK(hedge_split_edge(mesh, e, 1, 0.5f, 0, &v));
-  CHECK_OK(hedge_render_sync(render, NULL));
+  CHECK_OK(hedge_render_buffers_sync(render, NULL));
   CHECK_OK(hedge_vertex_faces(mesh, v, faces, 8, &n));
   CHECK(n == 4);
   for (uint32_t i = 0; i < n; ++i) {
     uint32_t first = 0, count = 0, f = INVALID;
-    CHECK_OK(hedge_render_face_triangles(render, faces[i], &first, &count));
+    CHECK_OK(hedge_render_buffers_face_triangles(render, faces[i], &first, &count));
     CHECK(count == 1);
-    CHECK_OK(hedge_render_triangle_face(render, first, &f));
+    CHECK_OK(hedge_render_buffers_triangle_face(render, first, &f));
     CHECK(f == faces[i]);
   }
   check_triangle_faces(mesh, render);
@@ -367,7 +371,7 @@ void test_triangle_faces(void) {
    * face (the buffers still hold them), and after the sync they are free. */
   uint32_t old_first[4], count = 0, f = 0;
   for (uint32_t i = 0; i < 4; ++i)
-    CHECK_OK(hedge_render_face_triangles(render, faces[i], &old_first[i], &count));
+    CHECK_OK(hedge_render_buffers_face_triangles(render, faces[i], &old_first[i], &count));
   uint32_t out_h[8], survivor = INVALID;
   CHECK_OK(hedge_vertex_halfedges(mesh, v, out_h, 8, &n));
   int32_t ok = 0;
@@ -384,14 +388,14 @@ void test_triangle_faces(void) {
     CHECK_OK(hedge_face_is_deleted(mesh, faces[i], &dead));
     if (!dead) continue;
     ++dead_faces;
-    CHECK_OK(hedge_render_triangle_face(render, old_first[i], &f));
+    CHECK_OK(hedge_render_buffers_triangle_face(render, old_first[i], &f));
     CHECK(f == INVALID);
   }
   CHECK(dead_faces == 2);
-  CHECK_OK(hedge_render_sync(render, NULL));
+  CHECK_OK(hedge_render_buffers_sync(render, NULL));
   check_triangle_faces(mesh, render);
   /* Compaction moves the triangles; the map follows. */
-  CHECK_OK(hedge_render_compact(render, NULL, 0, NULL, NULL, 0, NULL));
+  CHECK_OK(hedge_render_buffers_compact(render, NULL, 0, NULL, NULL, 0, NULL));
   check_triangle_faces(mesh, render);
   CHECK_VALID(mesh);
   CHECK_OK(hedge_mesh_destroy(mesh));

@@ -5,23 +5,19 @@
 
 #include <cstdint>
 #include <cstring>
-#include <filesystem>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "hedge/core/export.h"
-#include "hedge/error.h"
-#include "hedge/io/io.h"
-#include "hedge/render/render_sync.h"
+#include "hedge/render/render_buffers.h"
+#include "io/gltf_test_common.h"
 #include "support/io_checks.h"
 #include "test_meshes.h"
 
 namespace hedge {
 namespace {
 
-namespace fs = std::filesystem;
-using json = nlohmann::json;
+using namespace gltf_test;
 using test::data_path;
 
 using test::same_bits;
@@ -67,7 +63,7 @@ TEST(GltfWrite, TheUvSeamsSurviveAFileRoundTrip) {
   SurfaceMesh spot = read_mesh(data_path("spot_triangulated.obj"));
   RenderOptions uv_only;
   uv_only.normals = NormalSource::none;
-  const std::size_t seams = RenderSync(spot, uv_only).seam_splits();
+  const std::size_t seams = RenderBuffers(spot, uv_only).seam_splits();
   ASSERT_GT(seams, 0u);
   for (const char* name : {"spot.glb", "spot.gltf"}) {
     const std::string path = (dir / name).string();
@@ -77,7 +73,7 @@ TEST(GltfWrite, TheUvSeamsSurviveAFileRoundTrip) {
     SurfaceMesh back = read_mesh(path);
     EXPECT_EQ(back.n_vertices(), spot.n_vertices()) << name;
     EXPECT_EQ(back.n_faces(), spot.n_faces()) << name;
-    EXPECT_EQ(RenderSync(back, uv_only).seam_splits(), seams) << name;
+    EXPECT_EQ(RenderBuffers(back, uv_only).seam_splits(), seams) << name;
     EXPECT_TRUE(back.validate().empty());
     expect_same_corners(to_indexed(spot), to_indexed(back));
   }

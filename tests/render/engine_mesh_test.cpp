@@ -9,7 +9,7 @@
 #include "hedge/algorithms/normals.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
-#include "hedge/render/render_sync.h"
+#include "hedge/render/render_buffers.h"
 
 namespace hedge {
 namespace {
@@ -50,7 +50,7 @@ void expect_round_trip(const EngineMesh& e, const EngineImportOptions& io, const
   SurfaceMesh m = from_engine_mesh(e.view(), io, &report);
   EXPECT_TRUE(m.validate().empty());
   EXPECT_EQ(report.repairs(), 0u);
-  RenderSync rs(m, ro);
+  RenderBuffers rs(m, ro);
   const VertexLayout& l = rs.layout();
   ASSERT_EQ(l.texcoord >= 0, !e.texcoords.empty());
   ASSERT_GE(l.color, 0);
@@ -113,7 +113,7 @@ TEST(EngineMesh, UnityDataNeedsNoConversion) {
     EXPECT_EQ(m.position(mv), e.positions[v]) << "vertex " << v << " kept bit for bit";
   }
   for (Face f : m.faces()) EXPECT_EQ(face_normal(m, f), (Vec3{0, 0, -1}));
-  RenderSync rs(m, RenderOptions{.normals = NormalSource::computed});
+  RenderBuffers rs(m, RenderOptions{.normals = NormalSource::computed});
   const VertexLayout& l = rs.layout();
   ASSERT_GE(l.normal, 0);
   ASSERT_EQ(rs.n_triangles(), 2u);

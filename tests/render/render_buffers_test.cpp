@@ -1,4 +1,4 @@
-#include "hedge/render/render_sync.h"
+#include "hedge/render/render_buffers.h"
 
 #include <gtest/gtest.h>
 
@@ -20,7 +20,7 @@ struct Mirror {
   std::vector<float> vertices;
   std::vector<std::uint32_t> indices;
 
-  void apply(const RenderSync& rs, const SyncResult& r) {
+  void apply(const RenderBuffers& rs, const SyncResult& r) {
     const auto v = rs.vertices();
     const auto ix = rs.indices();
     const std::size_t stride = rs.layout().stride;
@@ -37,7 +37,7 @@ struct Mirror {
       std::copy_n(ix.begin() + s.first, s.count, indices.begin() + s.first);
   }
   // Only vertices that some triangle uses must match: a freed slot may hold stale data.
-  void expect_equal(const RenderSync& rs) const {
+  void expect_equal(const RenderBuffers& rs) const {
     const auto ix = rs.indices();
     ASSERT_EQ(indices.size(), ix.size());
     EXPECT_TRUE(std::equal(ix.begin(), ix.end(), indices.begin()));
@@ -53,8 +53,8 @@ struct Mirror {
 };
 
 // Every live triangle as its vertices' floats, rotated to start at the smallest vertex (orientation
-// kept), sorted: equal for two RenderSyncs that draw the same surface with the same attributes.
-std::vector<std::vector<float>> triangle_set(const RenderSync& rs) {
+// kept), sorted: equal for two RenderBuffers that draw the same surface with the same attributes.
+std::vector<std::vector<float>> triangle_set(const RenderBuffers& rs) {
   const auto v = rs.vertices();
   const auto ix = rs.indices();
   const std::size_t stride = rs.layout().stride;
@@ -77,7 +77,7 @@ std::vector<std::vector<float>> triangle_set(const RenderSync& rs) {
 
 // The bookkeeping agrees with the mesh: every live face owns valence - 2 triangles over render
 // vertices of its own corners, and every live render vertex is used.
-void expect_consistent(const RenderSync& rs) {
+void expect_consistent(const RenderBuffers& rs) {
   const SurfaceMesh& m = rs.mesh();
   const auto ix = rs.indices();
   const auto src = rs.render_vertex_source();
@@ -141,8 +141,8 @@ std::string floats_str(const std::vector<float>& v) {
   return s;
 }
 
-void expect_matches_fresh(const RenderSync& rs) {
-  RenderSync fresh(rs.mesh(), rs.options());
+void expect_matches_fresh(const RenderBuffers& rs) {
+  RenderBuffers fresh(rs.mesh(), rs.options());
   EXPECT_EQ(fresh.layout().stride, rs.layout().stride);
   const auto a = triangle_set(rs), b = triangle_set(fresh);
   EXPECT_EQ(a.size(), b.size());
@@ -156,8 +156,8 @@ void expect_matches_fresh(const RenderSync& rs) {
 }
 
 // What every sync must leave: the consumer's mirror equal to the buffers, the buffers consistent
-// with themselves and with a fresh RenderSync of the same mesh.
-void expect_in_sync(const Mirror& mirror, const RenderSync& rs) {
+// with themselves and with a fresh RenderBuffers of the same mesh.
+void expect_in_sync(const Mirror& mirror, const RenderBuffers& rs) {
   mirror.expect_equal(rs);
   expect_consistent(rs);
   expect_matches_fresh(rs);
@@ -188,9 +188,9 @@ SurfaceMesh with_uv_seams(int n = 4) {
   return m;
 }
 
-TEST(RenderSync, FirstSyncMatchesTheMesh) {
+TEST(RenderBuffers, FirstSyncMatchesTheMesh) {
   SurfaceMesh m = build(test::grid(4, false));  // quads
-  RenderSync rs(m);
+  RenderBuffers rs(m);
   EXPECT_EQ(rs.layout().stride, 6u);  // position + computed normal
   EXPECT_EQ(rs.layout().normal, 3);
   EXPECT_EQ(rs.layout().texcoord, -1);
@@ -205,9 +205,9 @@ TEST(RenderSync, FirstSyncMatchesTheMesh) {
   EXPECT_TRUE(rs.sync().empty());
 }
 
-TEST(RenderSync, SeamsSplitRenderVertices) {
+TEST(RenderBuffers, SeamsSplitRenderVertices) {
   SurfaceMesh m = with_uv_seams();
-  RenderSync rs(m);
+  RenderBuffers rs(m);
   EXPECT_EQ(rs.layout().texcoord, 6);
   EXPECT_EQ(rs.layout().stride, 8u);
   // The 5 vertices of the seam column get a second render vertex each.
@@ -216,9 +216,9 @@ TEST(RenderSync, SeamsSplitRenderVertices) {
   expect_consistent(rs);
 }
 
-TEST(RenderSync, FlipRewritesOnlyItsTwoTriangles) {
+TEST(RenderBuffers, FlipRewritesOnlyItsTwoTriangles) {
   SurfaceMesh m = build(test::grid(6, true));
-  RenderSync rs(m, RenderOptions{.normals = NormalSource::none});
+  RenderBuffers rs(m, RenderOptions{.normals = NormalSource::none});
   Mirror mirror;
   mirror.apply(rs, rs.last_result());
   const Edge e = test::first_edge(m, [&](Edge c) { return can_flip(m, c); });
@@ -243,9 +243,9 @@ TEST(RenderSync, FlipRewritesOnlyItsTwoTriangles) {
   EXPECT_TRUE(m.validate().empty());
 }
 
-TEST(RenderSync, MovedVertexRewritesItsRenderVerticesAndNeighbourNormals) {
+TEST(RenderBuffers, MovedVertexRewritesItsRenderVerticesAndNeighbourNormals) {
   SurfaceMesh m = with_uv_seams();
-  RenderSync rs(m);  // computed normals
+  RenderBuffers rs(m);  // computed normals
   Mirror mirror;
   mirror.apply(rs, rs.last_result());
   // A seam vertex inside the grid: two render vertices; lifting it tilts its neighbours' normals.
@@ -273,7 +273,7 @@ TEST(RenderSync, MovedVertexRewritesItsRenderVerticesAndNeighbourNormals) {
 // Random edits of every kind, with a sync after each: the mirror that received only the dirty
 // ranges must equal the buffers, and the buffers must draw what a fresh export draws.
 void random_edit_run(SurfaceMesh m, const RenderOptions& options, std::size_t steps) {
-  RenderSync rs(m, options);
+  RenderBuffers rs(m, options);
   Mirror mirror;
   mirror.apply(rs, rs.last_result());
   std::mt19937 rng(7);
@@ -296,11 +296,11 @@ void random_edit_run(SurfaceMesh m, const RenderOptions& options, std::size_t st
   EXPECT_TRUE(m.validate().empty());
 }
 
-TEST(RenderSync, RandomEditsOnATexturedTriangleMesh) {
+TEST(RenderBuffers, RandomEditsOnATexturedTriangleMesh) {
   random_edit_run(read_mesh(data("spot_triangulated.obj")), {}, 400);
 }
 
-TEST(RenderSync, RandomEditsOnAQuadMeshWithSeparateStreamsAndClockwiseWinding) {
+TEST(RenderBuffers, RandomEditsOnAQuadMeshWithSeparateStreamsAndClockwiseWinding) {
   SurfaceMesh m = read_mesh(data("spot_control_mesh.obj"));
   RenderOptions o;
   o.winding = Winding::cw;
@@ -308,7 +308,7 @@ TEST(RenderSync, RandomEditsOnAQuadMeshWithSeparateStreamsAndClockwiseWinding) {
   random_edit_run(std::move(m), o, 300);
 }
 
-TEST(RenderSync, RandomEditsOnAnOpenMeshWithComputedNormals) {
+TEST(RenderBuffers, RandomEditsOnAnOpenMeshWithComputedNormals) {
   random_edit_run(read_mesh(data("elephant-with-holes.off")), {}, 300);
 }
 
@@ -340,7 +340,7 @@ Vec3 expected_normal(const SurfaceMesh& m, Vertex v, int side = 0) {
   return to_float(normalize(sum));
 }
 
-Vec3 render_normal(const RenderSync& rs, Halfedge corner) {
+Vec3 render_normal(const RenderBuffers& rs, Halfedge corner) {
   const Index rv = rs.render_vertex(corner);
   const float* n = rs.vertices().data() + std::size_t(rv) * rs.layout().stride + rs.layout().normal;
   return {n[0], n[1], n[2]};
@@ -352,9 +352,9 @@ void expect_near(const Vec3& a, const Vec3& b, const char* what) {
   EXPECT_NEAR(a.z, b.z, 1e-6f) << what;
 }
 
-TEST(RenderSync, ImportedNormalsFollowAMovedVertexByDefault) {
+TEST(RenderBuffers, ImportedNormalsFollowAMovedVertexByDefault) {
   SurfaceMesh m = with_imported_normals();
-  RenderSync rs(m);  // automatic
+  RenderBuffers rs(m);  // automatic
   Mirror mirror;
   mirror.apply(rs, rs.last_result());
   const Vertex v(6), far(19);  // (1, 1) inside the left half; (4, 3) on the far right edge
@@ -384,9 +384,9 @@ TEST(RenderSync, ImportedNormalsFollowAMovedVertexByDefault) {
   EXPECT_TRUE(m.validate().empty());
 }
 
-TEST(RenderSync, ACreaseStaysWhenItsVertexMoves) {
+TEST(RenderBuffers, ACreaseStaysWhenItsVertexMoves) {
   SurfaceMesh m = with_imported_normals();
-  RenderSync rs(m);
+  RenderBuffers rs(m);
   const Vertex v(12);  // (2, 2), on the crease
   const std::size_t before = rs.n_vertices();
   m.set_position(v, m.position(v) + Vec3{0, 0, 0.5f});
@@ -401,9 +401,9 @@ TEST(RenderSync, ACreaseStaysWhenItsVertexMoves) {
   EXPECT_TRUE(m.validate().empty());
 }
 
-TEST(RenderSync, KeptImportedNormalsDoNotFollow) {
+TEST(RenderBuffers, KeptImportedNormalsDoNotFollow) {
   SurfaceMesh m = with_imported_normals();
-  RenderSync rs(m, RenderOptions{.normals = NormalSource::attribute});
+  RenderBuffers rs(m, RenderOptions{.normals = NormalSource::attribute});
   const Vertex v(6);
   m.set_position(v, m.position(v) + Vec3{0, 0, 0.5f});
   const SyncResult& r = rs.sync();
@@ -415,13 +415,13 @@ TEST(RenderSync, KeptImportedNormalsDoNotFollow) {
   EXPECT_TRUE(m.validate().empty());
 }
 
-TEST(RenderSync, RandomEditsWithImportedNormalsFollowing) {
+TEST(RenderBuffers, RandomEditsWithImportedNormalsFollowing) {
   random_edit_run(with_imported_normals(), {}, 300);
 }
 
-TEST(RenderSync, TransactionSyncsOnceAtCommit) {
+TEST(RenderBuffers, TransactionSyncsOnceAtCommit) {
   SurfaceMesh m = build(test::grid(8, true));
-  RenderSync rs(m);
+  RenderBuffers rs(m);
   Mirror mirror;
   mirror.apply(rs, rs.last_result());
   rs.begin();
@@ -453,9 +453,9 @@ TEST(RenderSync, TransactionSyncsOnceAtCommit) {
   EXPECT_TRUE(m.validate().empty());
 }
 
-TEST(RenderSync, RemovedFacesFreeSlotsThatNewFacesReuse) {
+TEST(RenderBuffers, RemovedFacesFreeSlotsThatNewFacesReuse) {
   SurfaceMesh m = build(test::grid(4, true));
-  RenderSync rs(m, RenderOptions{.normals = NormalSource::none});
+  RenderBuffers rs(m, RenderOptions{.normals = NormalSource::none});
   const std::size_t slots = rs.index_count();
   const Face f = removable_face(m);
   ASSERT_TRUE(f.is_valid());
@@ -479,9 +479,9 @@ TEST(RenderSync, RemovedFacesFreeSlotsThatNewFacesReuse) {
   EXPECT_TRUE(m.validate().empty());
 }
 
-TEST(RenderSync, CompactRemovesHolesAndReportsTheMaps) {
+TEST(RenderBuffers, CompactRemovesHolesAndReportsTheMaps) {
   SurfaceMesh m = with_uv_seams(8);
-  RenderSync rs(m);
+  RenderBuffers rs(m);
   for (int i = 0; i < 3; ++i) {
     const Face f = removable_face(m);
     ASSERT_TRUE(f.is_valid());
@@ -530,9 +530,9 @@ TEST(RenderSync, CompactRemovesHolesAndReportsTheMaps) {
 
 // An engine's ray hit names a triangle of the uploaded index buffer; triangle_face() must name the
 // face whose triangle that is after splits, collapses and compaction, as the buffers do.
-TEST(RenderSync, TriangleFaceFollowsSplitCollapseAndCompact) {
+TEST(RenderBuffers, TriangleFaceFollowsSplitCollapseAndCompact) {
   SurfaceMesh m = with_uv_seams(6);
-  RenderSync rs(m);
+  RenderBuffers rs(m);
   // The triangle a hit reports, found the way an engine would: by its corners in the index buffer.
   auto triangle_of_corners = [&](Face f) {
     std::vector<Vertex> want;
@@ -590,9 +590,9 @@ TEST(RenderSync, TriangleFaceFollowsSplitCollapseAndCompact) {
   EXPECT_TRUE(m.validate().empty());
 }
 
-TEST(RenderSync, GarbageCollectionRebuilds) {
+TEST(RenderBuffers, GarbageCollectionRebuilds) {
   SurfaceMesh m = build(test::grid(4, true));
-  RenderSync rs(m);
+  RenderBuffers rs(m);
   ASSERT_TRUE(remove_face(m, removable_face(m)));
   m.garbage_collection();
   const SyncResult& r = rs.sync();
@@ -602,12 +602,12 @@ TEST(RenderSync, GarbageCollectionRebuilds) {
   EXPECT_TRUE(m.validate().empty());
 }
 
-TEST(RenderSync, FlipXNegatesTheNormalsToo) {
+TEST(RenderBuffers, FlipXNegatesTheNormalsToo) {
   // A tetrahedron: unlike a flat grid's, some of its normals leave the x = 0 plane, so a missing
   // negation shows.
   SurfaceMesh m = build(test::tetrahedron());
-  const RenderSync plain(m, RenderOptions{.normals = NormalSource::computed});
-  const RenderSync flipped(m, RenderOptions{.normals = NormalSource::computed, .flip_x = true});
+  const RenderBuffers plain(m, RenderOptions{.normals = NormalSource::computed});
+  const RenderBuffers flipped(m, RenderOptions{.normals = NormalSource::computed, .flip_x = true});
   std::size_t off_plane = 0;
   for (Halfedge h : m.halfedges()) {
     if (m.is_boundary(h)) continue;
@@ -621,10 +621,11 @@ TEST(RenderSync, FlipXNegatesTheNormalsToo) {
   EXPECT_TRUE(m.validate().empty());
 }
 
-TEST(RenderSync, WindingAndAxes) {
+TEST(RenderBuffers, WindingAndAxes) {
   SurfaceMesh m = build(test::grid(2, true));
-  RenderSync ccw(m, RenderOptions{.normals = NormalSource::computed});
-  RenderSync cw(m, RenderOptions{.normals = NormalSource::computed, .winding = Winding::cw, .flip_x = true});
+  RenderBuffers ccw(m, RenderOptions{.normals = NormalSource::computed});
+  RenderBuffers cw(m,
+                   RenderOptions{.normals = NormalSource::computed, .winding = Winding::cw, .flip_x = true});
   for (Face f : m.faces()) {
     const SlotRange a = ccw.triangles(f), b = cw.triangles(f);
     const auto i = ccw.indices().subspan(3 * a.first, 3), j = cw.indices().subspan(3 * b.first, 3);
@@ -645,12 +646,12 @@ TEST(RenderSync, WindingAndAxes) {
   }
 }
 
-TEST(RenderSync, SeparateStreamsHoldTheInterleavedData) {
+TEST(RenderBuffers, SeparateStreamsHoldTheInterleavedData) {
   SurfaceMesh m = with_uv_seams();
   auto color = m.add_vertex_property<Color>("v:color");
   for (Vertex v : m.vertices()) color[v] = Color{m.position(v).x / 4, 0.5f, 0.25f, 1};
-  RenderSync a(m);
-  RenderSync b(m, RenderOptions{.interleaved = false});
+  RenderBuffers a(m);
+  RenderBuffers b(m, RenderOptions{.interleaved = false});
   EXPECT_EQ(a.layout().stride, 12u);
   EXPECT_EQ(a.layout().color, 8);
   EXPECT_FALSE(b.layout().interleaved);
@@ -673,9 +674,9 @@ TEST(RenderSync, SeparateStreamsHoldTheInterleavedData) {
   EXPECT_TRUE(m.validate().empty());
 }
 
-TEST(RenderSync, GrowthWithinCapacityIsNotAResize) {
+TEST(RenderBuffers, GrowthWithinCapacityIsNotAResize) {
   SurfaceMesh m = build(test::grid(10, true));
-  RenderSync rs(m);
+  RenderBuffers rs(m);
   std::size_t resizes = 0, syncs = 0;
   for (int i = 0; i < 200; ++i) {
     std::vector<Edge> es;
@@ -696,9 +697,9 @@ TEST(RenderSync, GrowthWithinCapacityIsNotAResize) {
 namespace hedge {
 namespace {
 
-TEST(RenderSync, TwoConsumersOfOneMeshSyncAtTheirOwnPace) {
+TEST(RenderBuffers, TwoConsumersOfOneMeshSyncAtTheirOwnPace) {
   SurfaceMesh m = with_uv_seams(6);
-  RenderSync a(m), b(m, RenderOptions{.winding = Winding::cw});
+  RenderBuffers a(m), b(m, RenderOptions{.winding = Winding::cw});
   Mirror ma, mb;
   ma.apply(a, a.last_result());
   mb.apply(b, b.last_result());
@@ -719,10 +720,10 @@ TEST(RenderSync, TwoConsumersOfOneMeshSyncAtTheirOwnPace) {
   EXPECT_TRUE(m.validate().empty());
 }
 
-// The change log counts each RenderSync's transactions for its consumer: one RenderSync's
+// The change log counts each RenderBuffers' transactions for its consumer: one RenderBuffers'
 // transaction defers neither another's syncs nor those of code that opens its own on the log, and
 // only the log's subscribers wait for every transaction to close.
-TEST(RenderSync, ATransactionBelongsToTheRenderSyncThatOpenedIt) {
+TEST(RenderBuffers, ATransactionBelongsToTheRenderBuffersThatOpenedIt) {
   SurfaceMesh m = with_uv_seams(6);
   ChangeLog& log = m.changes();
   int heard = 0;
@@ -732,7 +733,7 @@ TEST(RenderSync, ATransactionBelongsToTheRenderSyncThatOpenedIt) {
       if (can_flip(m, e)) return flip(m, e).is_valid();
     return false;
   };
-  RenderSync a(m), b(m);
+  RenderBuffers a(m), b(m);
   Mirror ma, mb;
   ma.apply(a, a.last_result());
   mb.apply(b, b.last_result());
@@ -772,9 +773,9 @@ TEST(RenderSync, ATransactionBelongsToTheRenderSyncThatOpenedIt) {
   EXPECT_TRUE(log.commit());
   EXPECT_EQ(heard, 2);
 
-  // A RenderSync destroyed inside its transactions closes them.
+  // A RenderBuffers destroyed inside its transactions closes them.
   {
-    RenderSync c(m);
+    RenderBuffers c(m);
     c.begin();
     c.begin();
     ASSERT_TRUE(flip_one());
@@ -794,3 +795,10 @@ TEST(RenderSync, ATransactionBelongsToTheRenderSyncThatOpenedIt) {
 
 }  // namespace
 }  // namespace hedge
+
+// Deprecated names (kept for one release): RenderSync still names RenderBuffers.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+static_assert(std::is_same_v<hedge::RenderSync, hedge::RenderBuffers>);
+#pragma GCC diagnostic pop
+// End of deprecated names

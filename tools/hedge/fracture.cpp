@@ -139,7 +139,7 @@ int run_fracture(const FractureCommandOptions& o) {
                       {"vertices", s.mesh.n_vertices()},
                       {"centroid", vec(s.centroid)},
                       {"area", s.area},
-                      {"volume", s.volume},
+                      {"volume", s.mass.volume},
                       {"closed", s.closed},
                       {"mass", m},
                       {"hull", {{"vertices", s.hull.mesh.n_vertices()}, {"faces", s.hull.mesh.n_faces()}}}});
@@ -188,19 +188,15 @@ void add_fracture_arguments(CLI::App* app, FractureCommandOptions* o) {
       ->capture_default_str();
   add_seed_option(*app, o->seed, "Seed of the break points");
   app->add_option("-o,--output", o->output, "Output folder (created if missing)")->required();
-  app->add_option("--thickness", o->thickness,
-                  "Extrude each shard into a solid this thick (model units); 0: none")
-      ->capture_default_str()
-      ->transform(real_number(0));
-  app->add_option("--density", o->density, "Mass per unit volume for the mass properties")
-      ->capture_default_str()
-      ->transform(real_number(0, kInf, true));
-  app->add_option(
-         "--tolerance", o->tolerance,
-         "Largest distance from the impact to the surface (model units); 0: 1e-3 of the nearest face's "
-         "longest edge")
-      ->capture_default_str()
-      ->transform(real_number(0));
+  add_real_option(*app, "--thickness", o->thickness,
+                  "Extrude each shard into a solid this thick (model units); 0: none", 0);
+  add_real_option(*app, "--density", o->density, "Mass per unit volume for the mass properties", 0, kInf,
+                  true);
+  add_real_option(
+      *app, "--tolerance", o->tolerance,
+      "Largest distance from the impact to the surface (model units); 0: 1e-3 of the nearest face's "
+      "longest edge",
+      0);
   add_json_flag(*app, o->json, "Print the summary as JSON, with timings");
 }
 

@@ -1,12 +1,13 @@
-// hedge render-buffers FILE: what an engine would get from the mesh through RenderSync (render
+// hedge render-buffers FILE: what an engine would get from the mesh through RenderBuffers (render
 // vertex and index counts, seam splits, layout), then a sample of random local edits with a sync
 // after each, comparing the bytes each sync rewrote with a full upload.
+#include "hedge/render/render_buffers.h"
+
 #include <algorithm>
 #include <iostream>
 
 #include "commands.h"
 #include "edits/random_edits.h"
-#include "hedge/render/render_sync.h"
 #include "load.h"
 #include "memory_budget.h"
 #include "mesh_stats.h"
@@ -42,7 +43,7 @@ int run_render_buffers(const RenderBuffersOptions& options) {
   ro.winding = options.winding == "cw" ? Winding::cw : Winding::ccw;
   ro.flip_x = options.flip_x;
   ro.interleaved = !options.separate;
-  RenderSync rs(mesh, ro);
+  RenderBuffers rs(mesh, ro);
   const VertexLayout layout = rs.layout();
   const std::size_t seams = rs.seam_splits();
   const std::size_t used_vertices = rs.n_vertices() - seams;

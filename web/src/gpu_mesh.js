@@ -1,4 +1,4 @@
-// The three.js side of RenderSync: GPU buffers that mirror hedge's render buffers and are updated
+// The three.js side of RenderBuffers: GPU buffers that mirror hedge's render buffers and are updated
 // range by range after an edit.
 //
 // The vertex buffer is one interleaved buffer (position, normal, ...) shared by the surface and by
@@ -6,7 +6,7 @@
 // buffer derived from it (triangle t's three sides sit at line indices [6t, 6t + 6)), so both follow
 // the same dirty ranges. A polygon's triangles have sides that are no edges of the mesh (its
 // diagonals); an `isEdge(a, b)` test on render vertices, when given, leaves those out of the
-// wireframe (a degenerate line instead). The buffers are allocated at RenderSync's capacity, and only a sync that
+// wireframe (a degenerate line instead). The buffers are allocated at RenderBuffers' capacity, and only a sync that
 // reports `resized` or `full` reallocates and uploads them whole.
 import * as THREE from 'three';
 

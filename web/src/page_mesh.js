@@ -1,4 +1,4 @@
-// One loaded mesh as the page uses it: the hedge mesh in wasm, its RenderSync, and the queries and
+// One loaded mesh as the page uses it: the hedge mesh in wasm, its RenderBuffers, and the queries and
 // edits of the inspect and edit panels. Every failure is thrown as an Error whose message says what
 // and where (hedge's own message, with the file and line for a bad file).
 import { loadHedge as load } from 'hedge';
@@ -17,13 +17,13 @@ export async function loadHedge() {
 }
 
 export class PageMesh {
-  //! `render`: keep render buffers (RenderSync) for drawing; false for a mesh only measured.
+  //! `render`: keep render buffers (RenderBuffers) for drawing; false for a mesh only measured.
   constructor(hedge, mesh, { render = true } = {}) {
     this.hedge = hedge;
     this.mesh = mesh;
     // Computed normals: the same smooth shading for every file, updated around each edit.
     this.render = render
-      ? mesh.createRender({ normals: 'computed', texcoords: false, colors: false })
+      ? mesh.createRenderBuffers({ normals: 'computed', texcoords: false, colors: false })
       : null;
     this.rays = null;
     this.pickFaces = null;

@@ -18,7 +18,7 @@ function showStats() {
   document.body.dataset.valid = problems.length === 0 ? '1' : '0';
 }
 
-//! The last operation and its time; `syncMs`: the RenderSync sync and the buffer copies after it.
+//! The last operation and its time; `syncMs`: the RenderBuffers sync and the buffer copies after it.
 function showOperation(name, opMs, syncMs) {
   $('stat-op').textContent = name;
   $('stat-time').textContent =
@@ -62,7 +62,7 @@ export function adopt(next, name, loadMs) {
   document.body.dataset.mesh = name;
 }
 
-// Runs `edit` (which returns a short description, or throws), syncs RenderSync and uploads the
+// Runs `edit` (which returns a short description, or throws), syncs RenderBuffers and uploads the
 // rewritten ranges. The frame right after the edit is rendered here, with the overlays hidden, so
 // that the upload meter counts this edit's buffers alone.
 export function applyEdit(name, edit) {

@@ -153,7 +153,7 @@ async function dropFile(page, name, text) {
   await page.dispatchEvent('#view', 'drop', { dataTransfer: transfer });
 }
 
-// The page's copies of the buffers (what three.js uploads) against RenderSync's buffers in wasm:
+// The page's copies of the buffers (what three.js uploads) against RenderBuffers' buffers in wasm:
 // after partial updates they must be equal, element for element.
 async function checkGpuCopy(page, what) {
   const mismatch = await page.evaluate(() => {
@@ -170,7 +170,10 @@ async function checkGpuCopy(page, what) {
       return `draw range ${gpu.indexCount} != ${b.indices.length}`;
     return null;
   });
-  check(mismatch === null, `${what}: the GPU copy differs from RenderSync's buffers: ${mismatch}`);
+  check(
+    mismatch === null,
+    `${what}: the GPU copy differs from RenderBuffers' buffers: ${mismatch}`,
+  );
 }
 
 // The partial-upload check shared by the edit tests: some bytes went up through bufferSubData, no

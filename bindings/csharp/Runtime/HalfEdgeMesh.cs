@@ -281,12 +281,12 @@ namespace Hedge
         /// <summary>Live faces.</summary>
         public int FaceCount { get { return (int)Counts.Faces; } }
 
-        public Vec3 GetPosition(Vertex v) { return Status.Checked(Native.hedge_mesh_get_position(id, v.Raw, out Vec3 p), p); }
+        public Vec3 GetPosition(Vertex v) { return Status.Checked(Native.hedge_vertex_position(id, v.Raw, out Vec3 p), p); }
 
         /// <summary>Moves a vertex; render buffers see it at their next sync. Coordinates must be finite.</summary>
         public void SetPosition(Vertex v, float x, float y, float z)
         {
-            Status.Check(Native.hedge_mesh_set_position(id, v.Raw, x, y, z));
+            Status.Check(Native.hedge_set_vertex_position(id, v.Raw, x, y, z));
         }
 
         public void SetPosition(Vertex v, Vec3 p) { SetPosition(v, p.X, p.Y, p.Z); }
@@ -550,7 +550,7 @@ namespace Hedge
         /// <returns>The number of new vertices.</returns>
         public int SplitAllFaces(Vertex[] newVertices = null)
         {
-            return (int)Status.Checked(Native.hedge_split_all_faces(id, newVertices, Status.Capacity(newVertices),
+            return (int)Status.Checked(Native.hedge_mesh_split_all_faces(id, newVertices, Status.Capacity(newVertices),
                                                                      out uint count), count);
         }
 

@@ -25,6 +25,6 @@ namespace Hedge
         internal static extern int hedge_mesh_face_containing_point_2d(IntPtr mesh, float u, float v, int plane,
             out SurfaceHit hit, out int found);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_triangle_face(IntPtr render, int triangle, out Face face);
+        internal static extern int hedge_render_buffers_triangle_face(IntPtr render, int triangle, out Face face);
     }
 }

@@ -51,9 +51,9 @@ namespace Hedge
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_mesh_counts(IntPtr mesh, out MeshCounts counts);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_mesh_get_position(IntPtr mesh, uint vertex, out Vec3 xyz);
+        internal static extern int hedge_vertex_position(IntPtr mesh, uint vertex, out Vec3 xyz);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_mesh_set_position(IntPtr mesh, uint vertex, float x, float y, float z);
+        internal static extern int hedge_set_vertex_position(IntPtr mesh, uint vertex, float x, float y, float z);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_mesh_copy_positions(IntPtr mesh, [Out] float[] buffer, ulong capacity,
             out ulong count);
@@ -198,7 +198,7 @@ namespace Hedge
         internal static extern int hedge_cut_face(IntPtr mesh, uint halfedge0, uint halfedge1,
             out uint halfedge);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_split_all_faces(IntPtr mesh, [Out] Vertex[] buffer, uint capacity,
+        internal static extern int hedge_mesh_split_all_faces(IntPtr mesh, [Out] Vertex[] buffer, uint capacity,
             out uint count);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_can_add_face(IntPtr mesh, [In] Vertex[] vertices, uint count, out int ok);
@@ -260,62 +260,62 @@ namespace Hedge
 
         // ---- Render buffers ----
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_options_default(out RenderOptions options);
+        internal static extern int hedge_render_buffers_options_default(out RenderOptions options);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_create(IntPtr mesh, ref RenderOptions options, out IntPtr render);
+        internal static extern int hedge_render_buffers_create(IntPtr mesh, ref RenderOptions options, out IntPtr render);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_destroy(IntPtr render);
+        internal static extern int hedge_render_buffers_destroy(IntPtr render);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_sync(IntPtr render, out SyncResult result);
+        internal static extern int hedge_render_buffers_sync(IntPtr render, out SyncResult result);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_begin(IntPtr render);
+        internal static extern int hedge_render_buffers_begin(IntPtr render);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_commit(IntPtr render, out SyncResult result);
+        internal static extern int hedge_render_buffers_commit(IntPtr render, out SyncResult result);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_rebuild(IntPtr render, out SyncResult result);
+        internal static extern int hedge_render_buffers_rebuild(IntPtr render, out SyncResult result);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_last_result(IntPtr render, out SyncResult result);
+        internal static extern int hedge_render_buffers_last_result(IntPtr render, out SyncResult result);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_dirty_vertex_ranges(IntPtr render, [Out] SlotRange[] buffer,
+        internal static extern int hedge_render_buffers_dirty_vertex_ranges(IntPtr render, [Out] SlotRange[] buffer,
             uint capacity, out uint count);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_dirty_index_ranges(IntPtr render, [Out] SlotRange[] buffer,
+        internal static extern int hedge_render_buffers_dirty_index_ranges(IntPtr render, [Out] SlotRange[] buffer,
             uint capacity, out uint count);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_compact(IntPtr render, [Out] uint[] vertexMap, uint vertexCapacity,
+        internal static extern int hedge_render_buffers_compact(IntPtr render, [Out] uint[] vertexMap, uint vertexCapacity,
             out uint vertexCount, [Out] uint[] triangleMap, uint triangleCapacity, out uint triangleCount);
         // The same function with int[] maps (freed slots: -1, the same bits as 0xFFFFFFFF).
-        [DllImport(Library, EntryPoint = "hedge_render_compact", CallingConvention = CallingConvention.Cdecl,
+        [DllImport(Library, EntryPoint = "hedge_render_buffers_compact", CallingConvention = CallingConvention.Cdecl,
             ExactSpelling = true)]
-        internal static extern int hedge_render_compact_int(IntPtr render, [Out] int[] vertexMap, uint vertexCapacity,
+        internal static extern int hedge_render_buffers_compact_int(IntPtr render, [Out] int[] vertexMap, uint vertexCapacity,
             out uint vertexCount, [Out] int[] triangleMap, uint triangleCapacity, out uint triangleCount);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_counts(IntPtr render, out BufferCounts counts);
+        internal static extern int hedge_render_buffers_counts(IntPtr render, out BufferCounts counts);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_layout(IntPtr render, out VertexLayout layout);
+        internal static extern int hedge_render_buffers_layout(IntPtr render, out VertexLayout layout);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_vertex_data(IntPtr render, int stream, out IntPtr data,
+        internal static extern int hedge_render_buffers_vertex_data(IntPtr render, int stream, out IntPtr data,
             out ulong count);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_copy_vertex_data(IntPtr render, int stream, [Out] float[] buffer,
+        internal static extern int hedge_render_buffers_copy_vertex_data(IntPtr render, int stream, [Out] float[] buffer,
             ulong capacity, out ulong count);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_index_data(IntPtr render, out IntPtr data, out ulong count);
+        internal static extern int hedge_render_buffers_index_data(IntPtr render, out IntPtr data, out ulong count);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_copy_index_data(IntPtr render, [Out] uint[] buffer, ulong capacity,
+        internal static extern int hedge_render_buffers_copy_index_data(IntPtr render, [Out] uint[] buffer, ulong capacity,
             out ulong count);
         // The same function into an int[] (Unity's Mesh.triangles type): same bits for indices < 2^31.
-        [DllImport(Library, EntryPoint = "hedge_render_copy_index_data", CallingConvention = CallingConvention.Cdecl,
+        [DllImport(Library, EntryPoint = "hedge_render_buffers_copy_index_data", CallingConvention = CallingConvention.Cdecl,
             ExactSpelling = true)]
-        internal static extern int hedge_render_copy_index_data_int(IntPtr render, [Out] int[] buffer,
+        internal static extern int hedge_render_buffers_copy_index_data_int(IntPtr render, [Out] int[] buffer,
             ulong capacity, out ulong count);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_vertex_source(IntPtr render, [Out] Vertex[] buffer, uint capacity,
+        internal static extern int hedge_render_buffers_vertex_source(IntPtr render, [Out] Vertex[] buffer, uint capacity,
             out uint count);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_corner_vertex(IntPtr render, uint halfedge, out uint renderVertex);
+        internal static extern int hedge_render_buffers_corner_vertex(IntPtr render, uint halfedge, out uint renderVertex);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern int hedge_render_face_triangles(IntPtr render, uint face, out uint first,
+        internal static extern int hedge_render_buffers_face_triangles(IntPtr render, uint face, out uint first,
             out uint count);
 
         // ---- Engine meshes ----

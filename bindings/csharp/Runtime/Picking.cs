@@ -156,7 +156,7 @@ namespace Hedge
         {
             if (triangleIndex < 0)
                 throw new ArgumentOutOfRangeException("triangleIndex", triangleIndex, "a triangle index is >= 0");
-            return Status.Checked(Native.hedge_render_triangle_face(id, triangleIndex, out Face face), face);
+            return Status.Checked(Native.hedge_render_buffers_triangle_face(id, triangleIndex, out Face face), face);
         }
 
         /// <summary>The library's own vertex stream, read in place: valid until the next Sync, commit,
@@ -168,7 +168,7 @@ namespace Hedge
         {
             IntPtr data;
             ulong count;
-            Status.Check(Native.hedge_render_vertex_data(id, (int)stream, out data, out count));
+            Status.Check(Native.hedge_render_buffers_vertex_data(id, (int)stream, out data, out count));
             floatCount = checked((int)count);
             return data;
         }
@@ -180,7 +180,7 @@ namespace Hedge
         {
             IntPtr data;
             ulong count;
-            Status.Check(Native.hedge_render_index_data(id, out data, out count));
+            Status.Check(Native.hedge_render_buffers_index_data(id, out data, out count));
             indexCount = checked((int)count);
             return data;
         }

@@ -1,5 +1,5 @@
 // RenderBuffers: engine-ready vertex and index buffers kept in step with a HalfEdgeMesh (the C ABI's
-// hedge_render, hedge/render/render_sync.h).
+// hedge_render_buffers, hedge/render/render_buffers.h).
 //
 // Each face owns fixed triangle slots in the index buffer and each render vertex (a mesh vertex
 // per distinct set of corner attributes: seams split vertices) a fixed vertex slot. Sync() rewrites
@@ -40,12 +40,12 @@ namespace Hedge
         {
             if (mesh == null) throw new ArgumentNullException("mesh");
             IntPtr render;
-            Status.Check(Native.hedge_render_create(mesh.Id, ref options, out render));
+            Status.Check(Native.hedge_render_buffers_create(mesh.Id, ref options, out render));
             id = render;
             handle = new RenderHandle(render, mesh.PendingRenders);
             this.mesh = mesh;
             this.options = options;
-            Status.Check(Native.hedge_render_layout(id, out layout));
+            Status.Check(Native.hedge_render_buffers_layout(id, out layout));
         }
 
         /// <summary>The mesh these buffers follow.</summary>
@@ -70,7 +70,7 @@ namespace Hedge
             get
             {
                 BufferCounts counts;
-                Status.Check(Native.hedge_render_counts(id, out counts));
+                Status.Check(Native.hedge_render_buffers_counts(id, out counts));
                 if (counts.IndexCount < 0 || counts.IndexCapacity < 0) throw Status.TooLarge("index-buffer entries");
                 return counts;
             }
@@ -98,19 +98,19 @@ namespace Hedge
         public SyncResult Sync()
         {
             mesh.PendingRenders.Drain();
-            return Status.Checked(Native.hedge_render_sync(id, out SyncResult result), result);
+            return Status.Checked(Native.hedge_render_buffers_sync(id, out SyncResult result), result);
         }
 
         /// <summary>Opens a transaction of these buffers: edits are gathered until the matching commit
         /// (transactions nest). Other RenderBuffers of the same mesh keep syncing as usual.</summary>
-        public void BeginTransaction() { Status.Check(Native.hedge_render_begin(id)); }
+        public void BeginTransaction() { Status.Check(Native.hedge_render_buffers_begin(id)); }
 
         /// <summary>Closes the transaction; the outermost commit syncs once. Without an open transaction:
         /// HedgeException(InvalidArgument).</summary>
         public SyncResult CommitTransaction()
         {
             mesh.PendingRenders.Drain();
-            return Status.Checked(Native.hedge_render_commit(id, out SyncResult result), result);
+            return Status.Checked(Native.hedge_render_buffers_commit(id, out SyncResult result), result);
         }
 
         /// <summary>Rebuilds every buffer from scratch, a full export (slots restart in face order, so it
@@ -118,13 +118,13 @@ namespace Hedge
         public SyncResult Rebuild()
         {
             mesh.PendingRenders.Drain();
-            return Status.Checked(Native.hedge_render_rebuild(id, out SyncResult result), result);
+            return Status.Checked(Native.hedge_render_buffers_rebuild(id, out SyncResult result), result);
         }
 
         /// <summary>The result of the last sync, commit or rebuild.</summary>
         public SyncResult LastResult
         {
-            get { return Status.Checked(Native.hedge_render_last_result(id, out SyncResult result), result); }
+            get { return Status.Checked(Native.hedge_render_buffers_last_result(id, out SyncResult result), result); }
         }
 
         /// <summary>The render-vertex slot ranges the last sync, commit or rebuild rewrote, sorted, merged and
@@ -132,7 +132,7 @@ namespace Hedge
         public int GetDirtyVertexRanges(SlotRange[] result)
         {
             uint count;
-            int status = Native.hedge_render_dirty_vertex_ranges(id, result, Status.Capacity(result), out count);
+            int status = Native.hedge_render_buffers_dirty_vertex_ranges(id, result, Status.Capacity(result), out count);
             return Status.Filled(status, result == null, count);
         }
 
@@ -141,7 +141,7 @@ namespace Hedge
         public int GetDirtyIndexRanges(SlotRange[] result)
         {
             uint count;
-            int status = Native.hedge_render_dirty_index_ranges(id, result, Status.Capacity(result), out count);
+            int status = Native.hedge_render_buffers_dirty_index_ranges(id, result, Status.Capacity(result), out count);
             return Status.Filled(status, result == null, count);
         }
 
@@ -152,7 +152,7 @@ namespace Hedge
         public void Compact(int[] vertexMap = null, int[] triangleMap = null)
         {
             uint vertexCount, triangleCount;
-            Status.Check(Native.hedge_render_compact_int(id, vertexMap, Status.Capacity(vertexMap), out vertexCount,
+            Status.Check(Native.hedge_render_buffers_compact_int(id, vertexMap, Status.Capacity(vertexMap), out vertexCount,
                                                          triangleMap, Status.Capacity(triangleMap), out triangleCount));
         }
 
@@ -166,7 +166,7 @@ namespace Hedge
         public int CopyStream(VertexStream stream, float[] buffer)
         {
             ulong count;
-            int status = Native.hedge_render_copy_vertex_data(id, (int)stream, buffer,
+            int status = Native.hedge_render_buffers_copy_vertex_data(id, (int)stream, buffer,
                                                               buffer != null ? (ulong)buffer.Length : 0, out count);
             return Status.Filled(status, buffer == null, count);
         }
@@ -179,7 +179,7 @@ namespace Hedge
         public int CopyIndices(int[] buffer)
         {
             ulong count;
-            int status = Native.hedge_render_copy_index_data_int(id, buffer, buffer != null ? (ulong)buffer.Length : 0,
+            int status = Native.hedge_render_buffers_copy_index_data_int(id, buffer, buffer != null ? (ulong)buffer.Length : 0,
                                                                  out count);
             return Status.Filled(status, buffer == null, count);
         }
@@ -321,8 +321,8 @@ namespace Hedge
             {
                 uint count;
                 int status = vertices
-                                 ? Native.hedge_render_dirty_vertex_ranges(id, ranges, (uint)ranges.Length, out count)
-                                 : Native.hedge_render_dirty_index_ranges(id, ranges, (uint)ranges.Length, out count);
+                                 ? Native.hedge_render_buffers_dirty_vertex_ranges(id, ranges, (uint)ranges.Length, out count)
+                                 : Native.hedge_render_buffers_dirty_index_ranges(id, ranges, (uint)ranges.Length, out count);
                 if (status == Status.BufferTooSmall)
                 {
                     ranges = new SlotRange[Math.Max((int)count, 2 * ranges.Length)];
@@ -336,7 +336,7 @@ namespace Hedge
         IntPtr StreamData(VertexStream stream, out ulong floats)
         {
             IntPtr data;
-            Status.Check(Native.hedge_render_vertex_data(id, (int)stream, out data, out floats));
+            Status.Check(Native.hedge_render_buffers_vertex_data(id, (int)stream, out data, out floats));
             if (data == IntPtr.Zero || floats == 0)
                 throw new InvalidOperationException("the " + stream + " stream is empty in this layout");
             return data;
@@ -345,7 +345,7 @@ namespace Hedge
         IntPtr IndexData(out ulong entries)
         {
             IntPtr data;
-            Status.Check(Native.hedge_render_index_data(id, out data, out entries));
+            Status.Check(Native.hedge_render_buffers_index_data(id, out data, out entries));
             return data;
         }
 
@@ -385,7 +385,7 @@ namespace Hedge
         public int CopyVertexSource(Vertex[] result)
         {
             uint count;
-            int status = Native.hedge_render_vertex_source(id, result, Status.Capacity(result), out count);
+            int status = Native.hedge_render_buffers_vertex_source(id, result, Status.Capacity(result), out count);
             return Status.Filled(status, result == null, count);
         }
 
@@ -393,7 +393,7 @@ namespace Hedge
         public int GetRenderVertex(HalfEdge corner)
         {
             uint rv;
-            Status.Check(Native.hedge_render_corner_vertex(id, corner.Raw, out rv));
+            Status.Check(Native.hedge_render_buffers_corner_vertex(id, corner.Raw, out rv));
             return unchecked((int)rv);
         }
 
@@ -402,7 +402,7 @@ namespace Hedge
         public SlotRange GetFaceTriangles(Face f)
         {
             uint first, count;
-            Status.Check(Native.hedge_render_face_triangles(id, f.Raw, out first, out count));
+            Status.Check(Native.hedge_render_buffers_face_triangles(id, f.Raw, out first, out count));
             return new SlotRange((int)first, (int)count);
         }
     }

@@ -30,7 +30,7 @@ namespace Hedge
         }
     }
 
-    /// <summary>Owns a native hedge_render.</summary>
+    /// <summary>Owns a native hedge_render_buffers.</summary>
     /// <remarks>Destroying a render object touches its mesh (it stops following the mesh's changes), and
     /// the C ABI allows one thread at a time per mesh. So only an explicit Dispose() destroys it at once;
     /// when the finalizer releases it (a RenderBuffers nobody disposed), it is queued on its mesh and
@@ -61,7 +61,7 @@ namespace Hedge
             if (disposing)
                 // HEDGE_ERROR_BAD_HANDLE when the mesh was destroyed first (which destroyed this object
                 // too): nothing left to release.
-                Native.hedge_render_destroy(handle);
+                Native.hedge_render_buffers_destroy(handle);
             else
                 pending.Add(handle);
             return true;
@@ -93,7 +93,7 @@ namespace Hedge
             if (count == 0) return;
             lock (gate)
             {
-                foreach (IntPtr id in ids) Native.hedge_render_destroy(id);
+                foreach (IntPtr id in ids) Native.hedge_render_buffers_destroy(id);
                 ids.Clear();
                 count = 0;
             }

@@ -472,7 +472,7 @@ namespace Hedge
         /// x not flipped.</summary>
         public static RenderOptions Default
         {
-            get { return Status.Checked(Native.hedge_render_options_default(out RenderOptions options), options); }
+            get { return Status.Checked(Native.hedge_render_buffers_options_default(out RenderOptions options), options); }
         }
 
         /// <summary>For a Unity Mesh: one stream per attribute (position, normal, texcoord, colour:

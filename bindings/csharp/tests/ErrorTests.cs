@@ -313,7 +313,7 @@ namespace Hedge.Tests
         static bool Alive(IntPtr render)
         {
             BufferCounts counts;
-            return Native.hedge_render_counts(render, out counts) == 0;
+            return Native.hedge_render_buffers_counts(render, out counts) == 0;
         }
 
         [Test]

@@ -329,7 +329,7 @@ namespace Hedge.Tests
             Check.Equal(56, (int)Marshal.OffsetOf(typeof(DecimateOptions), "MaxNormalChangeDegrees"));
             Check.Equal(32, Marshal.SizeOf(typeof(DecimateResult)), "hedge_decimate_result");
             Check.Equal(24, (int)Marshal.OffsetOf(typeof(MeshGeometry), "BoxMin"));
-            Check.Equal(24, Marshal.SizeOf(typeof(RenderOptions)), "hedge_render_options");
+            Check.Equal(24, Marshal.SizeOf(typeof(RenderOptions)), "hedge_render_buffers_options");
             Check.Equal(16, (int)Marshal.OffsetOf(typeof(RenderOptions), "Winding"));
             Check.Equal(24, Marshal.SizeOf(typeof(VertexLayout)), "hedge_vertex_layout");
             Check.Equal(8, Marshal.SizeOf(typeof(SlotRange)), "hedge_range");

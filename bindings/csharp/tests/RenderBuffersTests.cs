@@ -4,7 +4,7 @@ using System;
 
 namespace Hedge.Tests
 {
-    public static class RenderTests
+    public static class RenderBuffersTests
     {
         /// <summary>Every live triangle of the index buffer is a face of the mesh (corners in order, up to
         /// rotation, through the render-vertex source map), and the render vertices carry their mesh

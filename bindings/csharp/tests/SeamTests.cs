@@ -315,7 +315,7 @@ namespace Hedge.Tests
                     Check.Equal(0.5f, uv[2 * r + 1], "v of the survivor");
                 }
                 Check.Equal(1, survivors, "one render vertex for the survivor");
-                RenderTests.CheckBuffersMatchMesh(mesh, buffers);
+                RenderBuffersTests.CheckBuffersMatchMesh(mesh, buffers);
                 Check.Valid(mesh);
             }
         }
@@ -373,7 +373,7 @@ namespace Hedge.Tests
                            "a few edits rewrite a small part of the buffers: " + second.VertexBytes + " of " + total);
                 Check.True(UpdateMirrors(buffers, ref p, ref n, ref uv, ref c, ref indices), "only the dirty ranges");
                 CheckMirrors(buffers, p, n, uv, c, indices);
-                RenderTests.CheckBuffersMatchMesh(mesh, buffers);
+                RenderBuffersTests.CheckBuffersMatchMesh(mesh, buffers);
                 Check.Valid(mesh);
 
                 // Round 3: a face split everywhere outgrows the mirrors: they grow and take everything.
@@ -383,7 +383,7 @@ namespace Hedge.Tests
                 Check.False(UpdateMirrors(buffers, ref p, ref n, ref uv, ref c, ref indices), "copied whole");
                 Check.True(p.Length > oldLength, "grown");
                 CheckMirrors(buffers, p, n, uv, c, indices);
-                RenderTests.CheckBuffersMatchMesh(mesh, buffers);
+                RenderBuffersTests.CheckBuffersMatchMesh(mesh, buffers);
                 Check.Valid(mesh);
             }
         }

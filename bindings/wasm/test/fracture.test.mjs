@@ -166,9 +166,9 @@ test('a strike on a closed sample breaks it and leaves a valid mesh', () => {
   mesh.dispose();
 });
 
-test('the remaining mesh reaches its Render as a partial sync', () => {
+test('the remaining mesh reaches its RenderBuffers as a partial sync', () => {
   const mesh = grid(60);
-  const render = mesh.createRender();
+  const render = mesh.createRenderBuffers();
   render.sync();
   const triangles = render.sizes().triangles;
   const result = mesh.fracture([30.5, 30.25, 0], { seed: 2 });

@@ -9,7 +9,7 @@ const input = gridArrays(20); // 441 vertices, 800 triangles: about 100 KB of he
 function buildAndUse() {
   const mesh = hedge.fromBuffers(input);
   mesh.pick([3.3, 4.1, 1], [0, 0, -1]);
-  const render = mesh.createRender();
+  const render = mesh.createRenderBuffers();
   mesh.splitFace(3);
   render.sync();
   return [mesh, render];

@@ -7,7 +7,7 @@ import { hedge, octahedron } from './support.mjs';
 test('a subdivision past what wasm memory holds throws out-of-memory and changes nothing', () => {
   const mesh = octahedron();
   mesh.subdivide('midpoint', 6); // 32,768 faces
-  const render = mesh.createRender();
+  const render = mesh.createRenderBuffers();
   const counts = mesh.counts();
   const positions = new Float32Array(mesh.positions);
   // Six more steps would make 134 million faces: more than 2 GB.

@@ -1,11 +1,11 @@
-// RenderSync through JS: views into wasm memory and dirty ranges after edits.
+// RenderBuffers through JS: views into wasm memory and dirty ranges after edits.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { hedge, grid, sample } from './support.mjs';
 
 test('the buffers are views into wasm memory holding every triangle of the mesh', () => {
   const mesh = grid(4);
-  const render = mesh.createRender({ normals: 'computed' });
+  const render = mesh.createRenderBuffers({ normals: 'computed' });
   const layout = render.layout;
   assert.equal(layout.interleaved, true);
   assert.equal(layout.stride, 6);
@@ -31,7 +31,7 @@ test('the buffers are views into wasm memory holding every triangle of the mesh'
 
 test('an edit syncs only its dirty ranges, which hold the edit', () => {
   const mesh = grid(8);
-  const render = mesh.createRender();
+  const render = mesh.createRenderBuffers();
   // The buffers are built with the render object: the first sync has nothing to do.
   assert.equal(render.sync().vertexRanges.length, 0);
   const total = render.sizes().bufferBytes;
@@ -85,7 +85,7 @@ test('an edit syncs only its dirty ranges, which hold the edit', () => {
 
 test('a transaction syncs many edits once; compact removes free slots', () => {
   const mesh = grid(4);
-  const render = mesh.createRender({ interleaved: false, normals: 'none' });
+  const render = mesh.createRenderBuffers({ interleaved: false, normals: 'none' });
   assert.equal(render.layout.interleaved, false);
   render.begin();
   mesh.splitFace(0);
@@ -107,7 +107,7 @@ test('a transaction syncs many edits once; compact removes free slots', () => {
 
 test('views go stale when wasm memory grows and are taken again', () => {
   const mesh = grid(2);
-  const render = mesh.createRender();
+  const render = mesh.createRenderBuffers();
   const stale = render.vertices;
   const before = hedge.memoryBytes;
   // Enough to grow memory: a mesh of a few million floats.
@@ -124,7 +124,7 @@ test('views go stale when wasm memory grows and are taken again', () => {
 
 test('a render outlives the disposal of its mesh', () => {
   const mesh = grid(2);
-  const render = mesh.createRender();
+  const render = mesh.createRenderBuffers();
   mesh.dispose();
   assert.equal(render.sizes().triangles, 8);
   assert.equal(render.sync().vertexRanges.length, 0);
@@ -138,7 +138,7 @@ test('a render outlives the disposal of its mesh', () => {
 
 test('an algorithm that renumbers everything makes the next sync full, with the new triangles', () => {
   const mesh = grid(3);
-  const render = mesh.createRender();
+  const render = mesh.createRenderBuffers();
   mesh.subdivide('loop');
   const result = render.sync();
   assert.equal(result.full, true);
@@ -154,7 +154,7 @@ test('an algorithm that renumbers everything makes the next sync full, with the 
 
 test('texture coordinates from a file reach the vertex layout, UV seams as separate render vertices', () => {
   const mesh = hedge.fromFile(sample('spot_triangulated.obj'), 'spot.obj');
-  const render = mesh.createRender({ normals: 'computed' });
+  const render = mesh.createRenderBuffers({ normals: 'computed' });
   const layout = render.layout;
   assert.equal(layout.stride, 8);
   assert.equal(layout.texcoord, 6);

@@ -133,11 +133,10 @@ struct Shard {
   Vec3d centroid;
   //! Area of the broken faces (the front only, also with thickness).
   double area = 0;
-  //! Volume of `mesh` when it is closed, 0 when it is open.
-  double volume = 0;
   //! `mesh` has no boundary.
   bool closed = false;
-  //! Of `mesh` at the options' density when it is closed; all zero when it is open.
+  //! Of `mesh` at the options' density when it is closed (its volume: `mass.volume`); all zero when it is
+  //! open.
   MassProperties mass;
   //! Of `mesh`'s vertices, when options.hulls (else empty). Every vertex is checked to lie inside
   //! within hull.tolerance; should one stick out farther, hull.max_outside_distance says by how

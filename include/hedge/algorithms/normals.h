@@ -2,9 +2,9 @@
 // crease angle, which is what an engine needs to draw hard edges on an otherwise smooth surface.
 //
 // All of them read positions only and work on any polygon mesh; a degenerate face (zero area) has
-// a zero normal and adds nothing. Results are stored as properties, so that RenderSync
+// a zero normal and adds nothing. Results are stored as properties, so that RenderBuffers
 // (NormalSource::attribute), the writers and the C ABI find them: the writes are marked in the
-// change log (vertex data, or face corners), so that a RenderSync watching the mesh updates them.
+// change log (vertex data, or face corners), so that a RenderBuffers watching the mesh updates them.
 #pragma once
 
 #include <string_view>

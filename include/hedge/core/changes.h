@@ -1,4 +1,4 @@
-// Change tracking: edits mark what they touched through the mesh, and consumers (RenderSync, a BVH,
+// Change tracking: edits mark what they touched through the mesh, and consumers (RenderBuffers, a BVH,
 // an engine's own caches) read what changed since they last looked.
 //
 //  - Marks are recorded only while at least one consumer is attached, so a mesh nobody watches

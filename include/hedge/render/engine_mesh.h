@@ -1,6 +1,6 @@
 // Engine meshes: one attribute set per vertex, seams as duplicated vertices. from_engine_mesh()
 // turns such arrays into a SurfaceMesh whose attributes live on the corners, the inverse of what
-// RenderSync (render/render_sync.h) writes.
+// RenderBuffers (render/render_buffers.h) writes.
 #pragma once
 
 #include <cstdint>
@@ -38,7 +38,7 @@ struct EngineImportOptions {
 };
 
 //! Builds a SurfaceMesh from engine arrays, welding positions for topology and keeping normals,
-//! texcoords and colours per corner ("h:normal", "h:texcoord", "h:color"), so that a RenderSync
+//! texcoords and colours per corner ("h:normal", "h:texcoord", "h:color"), so that a RenderBuffers
 //! with the same winding and axes reproduces the engine's triangles and attributes exactly.
 //! \throw InvalidInputError on mismatched stream sizes, indices out of range or non-finite values;
 //!        TopologyError under the strict policy.

@@ -1,4 +1,4 @@
-// RenderSync: engine-ready vertex and index buffers kept in step with a SurfaceMesh.
+// RenderBuffers: engine-ready vertex and index buffers kept in step with a SurfaceMesh.
 //
 //  - Render vertices. A mesh vertex becomes one render vertex per distinct set of corner
 //    attributes around it: corners whose "h:texcoord", "h:normal" or "h:color" differ (a UV seam,
@@ -11,12 +11,12 @@
 //    (core/changes.h); sync() rewrites only the slots of touched faces and vertices and returns the
 //    rewritten ranges, sorted and merged, for a partial GPU upload.
 //  - Transactions. begin() ... edits ... commit() syncs once at the end. A transaction belongs to
-//    the RenderSync that opened it; the mesh's change log counts it for this RenderSync's consumer
-//    (ChangeLog::begin(id)). So another RenderSync of the same mesh, or code that calls
+//    the RenderBuffers that opened it; the mesh's change log counts it for this RenderBuffers' consumer
+//    (ChangeLog::begin(id)). So another RenderBuffers of the same mesh, or code that calls
 //    mesh.changes().begin() itself, does not defer this one's syncs, while every open transaction
 //    defers the notifications of the log's subscribers until it closes.
 //
-// The RenderSync refers to the mesh it was made for: the mesh must outlive it and stay at the same
+// The RenderBuffers refers to the mesh it was made for: the mesh must outlive it and stay at the same
 // address.
 #pragma once
 
@@ -39,7 +39,7 @@ namespace hedge {
 enum class NormalSource {
   none,  //!< no normal stream
   //! "h:normal" corners, else "v:normal" vertices, as they are: never recomputed, so a moved vertex
-  //! keeps its imported normal. None if neither exists. (A RenderSync of the same mesh with
+  //! keeps its imported normal. None if neither exists. (A RenderBuffers of the same mesh with
   //! `automatic` normals rewrites that property, and this one then shows what it wrote.)
   attribute,
   computed,  //!< area-weighted smooth vertex normals, recomputed around every edit
@@ -110,15 +110,15 @@ struct RenderRemap {
   std::vector<Index> triangles;  //!< triangle slot -> new triangle slot
 };
 
-class RenderSync {
+class RenderBuffers {
  public:
   //! Builds the buffers (a full export) and starts following `mesh`'s change log.
-  explicit RenderSync(SurfaceMesh& mesh, const RenderOptions& options = {});
-  //! Stops following the mesh's change log and closes the transactions this RenderSync left open
+  explicit RenderBuffers(SurfaceMesh& mesh, const RenderOptions& options = {});
+  //! Stops following the mesh's change log and closes the transactions this RenderBuffers left open
   //! (closing the last open one notifies the log's subscribers).
-  ~RenderSync();
-  RenderSync(const RenderSync&) = delete;
-  RenderSync& operator=(const RenderSync&) = delete;
+  ~RenderBuffers();
+  RenderBuffers(const RenderBuffers&) = delete;
+  RenderBuffers& operator=(const RenderBuffers&) = delete;
 
   const RenderOptions& options() const { return options_; }
   const VertexLayout& layout() const { return layout_; }
@@ -184,7 +184,7 @@ class RenderSync {
   //! Opens a transaction: changes are gathered, and notifications wait (transactions nest).
   void begin();
   //! Closes the transaction opened by begin(); the outermost commit syncs once. Without an open
-  //! transaction of this RenderSync it does nothing and returns an empty result.
+  //! transaction of this RenderBuffers it does nothing and returns an empty result.
   const SyncResult& commit();
   //! True between begin() and the matching outermost commit(). O(consumers of the mesh).
   bool in_transaction() const { return mesh_->changes().in_transaction(changes_.id()); }
@@ -290,5 +290,9 @@ class RenderSync {
   std::vector<SlotRange> written_indices_;
   SyncResult result_;
 };
+
+// Deprecated names (kept for one release): the previous release's name of RenderBuffers.
+using RenderSync [[deprecated("use RenderBuffers")]] = RenderBuffers;
+// End of deprecated names
 
 }  // namespace hedge
