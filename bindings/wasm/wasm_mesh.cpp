@@ -33,8 +33,6 @@ double distance_to_segment(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
   return norm(p - (a + ab * t));
 }
 
-Vec3d as_double(const Vec3& p) { return {double(p.x), double(p.y), double(p.z)}; }
-
 val report_to_js(const BuildReport& r) {
   val out = val::object();
   out.set("weldedVertices", double(r.welded_vertices));
@@ -247,13 +245,13 @@ double WasmMesh::pick(double ox, double oy, double oz, double dx, double dy, dou
         bvh.first_hit(Vec3{float(ox), float(oy), float(oz)}, Vec3{float(dx), float(dy), float(dz)});
     if (!hit) return -1.0;
     const SurfaceMesh& m = s_->mesh;
-    const Vec3d p = as_double(hit->point);
+    const Vec3d p = to_double(hit->point);
     Halfedge best_h;
     double best_h_d = std::numeric_limits<double>::infinity();
     Vertex best_v;
     double best_v_d = std::numeric_limits<double>::infinity();
     for (const Halfedge h : m.halfedges(hit->face)) {
-      const Vec3d a = as_double(m.position(m.from_vertex(h))), b = as_double(m.position(m.to_vertex(h)));
+      const Vec3d a = to_double(m.position(m.from_vertex(h))), b = to_double(m.position(m.to_vertex(h)));
       const double dh = distance_to_segment(p, a, b);
       if (dh < best_h_d) best_h_d = dh, best_h = h;
       const double dv = norm(p - b);

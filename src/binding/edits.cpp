@@ -41,12 +41,17 @@ H allowed(const SurfaceMesh& m, Edit edit, std::uint32_t index) {
   return h;
 }
 
+// Fails with HEDGE_ERROR_INTERNAL: the edit refused after all, though its refusal allowed it (the
+// refusal and the edit disagree, a bug).
+[[noreturn]] void refused_after_all(const char* edit) {
+  fail(HEDGE_ERROR_INTERNAL, std::string(edit) + " refused an edit its refusal allowed");
+}
+
 // The edit's result, which the refusal promised. \throw BindingError (HEDGE_ERROR_INTERNAL) if the
-// edit refused after all: the refusal and the edit disagree, a bug.
+// edit refused after all.
 template <typename R>
 R done(R result, Edit edit) {
-  if (!result.is_valid())
-    fail(HEDGE_ERROR_INTERNAL, std::string(edit_name(edit)) + " refused an edit its refusal allowed");
+  if (!result.is_valid()) refused_after_all(edit_name(edit));
   return result;
 }
 }  // namespace
@@ -129,7 +134,7 @@ Halfedge require_fill_hole(const SurfaceMesh& m, std::uint32_t halfedge) {
 
 std::vector<Face> fill_hole(SurfaceMesh& m, std::uint32_t halfedge) {
   std::vector<Face> faces = hedge::fill_hole(m, require_fill_hole(m, halfedge));
-  if (faces.empty()) fail(HEDGE_ERROR_INTERNAL, "fill_hole refused an edit its refusal allowed");
+  if (faces.empty()) refused_after_all("fill_hole");
   return faces;
 }
 
@@ -145,22 +150,20 @@ Face add_face(SurfaceMesh& m, std::span<const Vertex> corners) {
   for (const Vertex v : corners) what.append(" ").append(std::to_string(v.idx()));
   require_allowed(add_face_refusal(m, corners), what);
   const Face f = hedge::add_face(m, corners);
-  if (!f.is_valid()) fail(HEDGE_ERROR_INTERNAL, "add_face refused an edit its refusal allowed");
+  if (!f.is_valid()) refused_after_all("add_face");
   return f;
 }
 
 void remove_face(SurfaceMesh& m, std::uint32_t face) {
   const Face f = live_face(m, face);
   require_allowed(remove_face_refusal(m, f), "remove_face of " + element_name("face", face));
-  if (!hedge::remove_face(m, f))
-    fail(HEDGE_ERROR_INTERNAL, "remove_face refused an edit its refusal allowed");
+  if (!hedge::remove_face(m, f)) refused_after_all("remove_face");
 }
 
 void remove_vertex(SurfaceMesh& m, std::uint32_t vertex) {
   const Vertex v = live_vertex(m, vertex);
   require_allowed(remove_vertex_refusal(m, v), "remove_vertex of " + element_name("vertex", vertex));
-  if (!hedge::remove_vertex(m, v))
-    fail(HEDGE_ERROR_INTERNAL, "remove_vertex refused an edit its refusal allowed");
+  if (!hedge::remove_vertex(m, v)) refused_after_all("remove_vertex");
 }
 
 }  // namespace hedge::binding
