@@ -62,6 +62,7 @@ namespace Hedge.Unity
         /// kept per corner) and renders it through this component's MeshFilter.</summary>
         public void Build(Mesh source)
         {
+            UnityMeshes.CheckReadable(source);  // before Release(): an unreadable source changes nothing
             Release();
             Vector3[] v = source.vertices;
             Vector3[] n = source.normals;

@@ -147,5 +147,27 @@ namespace Hedge.Tests
                 Check.Valid(mesh);
             }
         }
+
+        // A model imported without Read/Write gives scripts empty arrays: building from it is an error that
+        // names the fix, not an empty mesh.
+        [Test]
+        static void UnreadableMeshNamesTheFix()
+        {
+            UnityEngine.Mesh source = Grid(2);
+            source.name = "rock";
+            source.isReadable = false;
+            var go = new GameObject();
+            go.AddComponent<MeshFilter>();
+            HalfEdgeMeshBehaviour b = go.AddComponent<HalfEdgeMeshBehaviour>();
+            ArgumentException e = Check.ThrowsType<ArgumentException>(() => b.Build(source));
+            Check.True(e.Message.Contains("rock") && e.Message.Contains("Read/Write"), e.Message);
+            Check.True(b.HalfEdgeMesh == null && b.RenderedMesh == null, "nothing half-built");
+            e = Check.ThrowsType<ArgumentException>(() => UnityMeshes.FromMesh(source));
+            Check.True(e.Message.Contains("Read/Write"), e.Message);
+            // A readable mesh builds.
+            b.Build(Grid(2));
+            Check.Equal(9, b.HalfEdgeMesh.VertexCount);
+            using (HalfEdgeMesh m = UnityMeshes.FromMesh(Grid(2))) Check.Equal(8, m.FaceCount);
+        }
     }
 }
