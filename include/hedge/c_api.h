@@ -657,6 +657,18 @@ typedef enum hedge_subdivision {
 HEDGE_API hedge_status hedge_mesh_subdivide(hedge_mesh* mesh, int32_t scheme, int32_t steps);
 
 /* ============================================================================================ */
+/* Mirroring (hedge/algorithms/mirror.h)                                                        */
+/* ============================================================================================ */
+
+/** Mirrors the mesh in the plane x = 0 and reverses every face, so that faces keep facing out: x
+ *  of positions and normals negated, each face's corners reversed with their attributes (texcoords
+ *  unchanged). The rule of Unity's model importers (OBJ, FBX): a file read and then mirrored is what
+ *  Unity's importer gives; mirrored again before writing, it gives the file's own space back (the
+ *  call is its own inverse, bit for bit). Indices are kept; render objects of the mesh rebuild at
+ *  their next sync. */
+HEDGE_API hedge_status hedge_mesh_mirror_x(hedge_mesh* mesh);
+
+/* ============================================================================================ */
 /* Reordering (hedge/algorithms/reorder.h)                                                      */
 /* ============================================================================================ */
 

@@ -655,6 +655,7 @@ int main(void) {
   test_decimate();
   test_fracture();
   test_subdivide();
+  test_mirror();
   test_picking();
   test_triangle_faces();
   test_every_function_error_path();

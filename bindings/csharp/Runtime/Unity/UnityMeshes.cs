@@ -8,7 +8,7 @@ using UnityEngine;
 namespace Hedge.Unity
 {
     /// <summary>HalfEdgeMesh calls in Unity's types.</summary>
-    public static class UnityMeshes
+    public static partial class UnityMeshes
     {
         /// <summary>Builds a mesh from a Unity Mesh's arrays (mesh.vertices, mesh.triangles, mesh.normals,
         /// mesh.uv, mesh.colors) with <see cref="EngineImportOptions.Unity"/>: positions welded for the
