@@ -656,6 +656,7 @@ int main(void) {
   test_fracture();
   test_subdivide();
   test_mirror();
+  test_engine_sources();
   test_picking();
   test_triangle_faces();
   test_every_function_error_path();
