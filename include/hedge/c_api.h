@@ -657,6 +657,18 @@ typedef enum hedge_subdivision {
 HEDGE_API hedge_status hedge_mesh_subdivide(hedge_mesh* mesh, int32_t scheme, int32_t steps);
 
 /* ============================================================================================ */
+/* Mirroring (hedge/algorithms/mirror.h)                                                        */
+/* ============================================================================================ */
+
+/** Mirrors the mesh in the plane x = 0 and reverses every face, so that faces keep facing out: x
+ *  of positions and normals negated, each face's corners reversed with their attributes (texcoords
+ *  unchanged). The rule of Unity's model importers (OBJ, FBX): a file read and then mirrored is what
+ *  Unity's importer gives; mirrored again before writing, it gives the file's own space back (the
+ *  call is its own inverse, bit for bit). Indices are kept; render objects of the mesh rebuild at
+ *  their next sync. */
+HEDGE_API hedge_status hedge_mesh_mirror_x(hedge_mesh* mesh);
+
+/* ============================================================================================ */
 /* Reordering (hedge/algorithms/reorder.h)                                                      */
 /* ============================================================================================ */
 
@@ -1052,6 +1064,21 @@ HEDGE_API hedge_status hedge_mesh_from_engine_mesh(const float* positions, uint3
                                                    const float* colors,
                                                    const hedge_engine_import_options* options,
                                                    hedge_build_report* out_report, hedge_mesh** out_mesh);
+
+/** The map back to the engine's vertex indices (hedge/render/engine_mesh.h kVertexSource,
+ *  kCornerSource): which engine vertex each vertex and corner of a mesh made by
+ *  hedge_mesh_from_engine_mesh() came from, so that data keyed by the engine's vertex index (a Unity
+ *  mesh's) is found again. Per vertex slot: the first (smallest) engine vertex welded into it (a
+ *  seam welds several). Per half-edge slot: the engine vertex of the corner it enters (that
+ *  vertex in that half-edge's face). -1 for boundary half-edges, deleted elements and what later edits
+ *  made; the values follow their elements through edits and garbage collection.
+ *  \param buffer   optional (NULL asks for the count): vertex_slots (2 x edge_slots) int32 values.
+ *  \param out_count the values needed.
+ *  A mesh not made from engine arrays: HEDGE_ERROR_INVALID_ARGUMENT. */
+HEDGE_API hedge_status hedge_mesh_vertex_source_indices(const hedge_mesh* mesh, int32_t* buffer,
+                                                        uint64_t capacity, uint64_t* out_count);
+HEDGE_API hedge_status hedge_mesh_corner_source_indices(const hedge_mesh* mesh, int32_t* buffer,
+                                                        uint64_t capacity, uint64_t* out_count);
 
 /* ============================================================================================ */
 /* Threads (hedge/core/threads.h)                                                               */

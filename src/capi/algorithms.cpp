@@ -11,6 +11,7 @@
 #include "hedge/algorithms/distance.h"
 #include "hedge/algorithms/fracture.h"
 #include "hedge/algorithms/geometry.h"
+#include "hedge/algorithms/mirror.h"
 #include "hedge/algorithms/normals.h"
 #include "hedge/algorithms/reorder.h"
 #include "hedge/algorithms/smooth.h"
@@ -344,6 +345,10 @@ hedge_status hedge_mesh_subdivide(hedge_mesh* mesh, int32_t scheme, int32_t step
                                                                     : Subdivision::catmull_clark;
     subdivide(object->mesh, s, steps);
   });
+}
+
+hedge_status hedge_mesh_mirror_x(hedge_mesh* mesh) {
+  return guard([&] { mirror_x(find_mesh(mesh)->mesh); });
 }
 
 hedge_status hedge_mesh_reorder(hedge_mesh* mesh, int32_t ordering, uint32_t cache_size, uint32_t* vertex_map,

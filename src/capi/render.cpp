@@ -64,6 +64,14 @@ void copy_ranges(const std::vector<SlotRange>& ranges, hedge_range* buffer, std:
   for (std::size_t i = 0; i < ranges.size(); ++i) buffer[i] = {ranges[i].first, ranges[i].count};
 }
 
+// Copies a source-index property (engine_mesh.h kVertexSource, kCornerSource) into a caller buffer.
+template <typename Property>
+void copy_sources(const Property& p, int32_t* buffer, uint64_t capacity, uint64_t* out_count) {
+  if (!p)
+    fail(HEDGE_ERROR_INVALID_ARGUMENT,
+         "the mesh has no source indices: only a mesh made by hedge_mesh_from_engine_mesh() has them");
+  copy_out(std::span<const std::int32_t>(p.vector()), buffer, capacity, out_count);
+}
 }  // namespace
 
 extern "C" {
@@ -337,6 +345,22 @@ hedge_status hedge_mesh_from_engine_mesh(const float* positions, uint32_t vertex
     object->mesh = from_engine_mesh(view, import, out_report != nullptr ? &report : nullptr);
     if (out_report != nullptr) fill_report(report, out_report);
     *out_mesh = register_mesh(std::move(object));
+  });
+}
+
+hedge_status hedge_mesh_vertex_source_indices(const hedge_mesh* mesh, int32_t* buffer, uint64_t capacity,
+                                              uint64_t* out_count) {
+  return guard([&] {
+    const SurfaceMesh& m = find_mesh(mesh)->mesh;
+    copy_sources(m.get_vertex_property<std::int32_t>(kVertexSource), buffer, capacity, out_count);
+  });
+}
+
+hedge_status hedge_mesh_corner_source_indices(const hedge_mesh* mesh, int32_t* buffer, uint64_t capacity,
+                                              uint64_t* out_count) {
+  return guard([&] {
+    const SurfaceMesh& m = find_mesh(mesh)->mesh;
+    copy_sources(m.get_halfedge_property<std::int32_t>(kCornerSource), buffer, capacity, out_count);
   });
 }
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "hedge/error.h"
 
@@ -28,6 +29,23 @@ void check_finite(std::span<const T> s, const char* name, Finite&& ok) {
     if (!ok(s[i]))
       throw InvalidInputError(std::string("engine mesh: ") + name + " of vertex " + std::to_string(i) +
                               " is not finite");
+}
+// The map back to the engine arrays: "h:source" per corner (its engine vertex), "v:source" per
+// vertex (the first engine vertex welded into it). Elements the edits make later get -1: an
+// interpolated index would name an engine vertex they did not come from.
+void record_sources(SurfaceMesh& mesh, const std::vector<Index>& origin) {
+  auto none = [](const std::int32_t*, const float*, std::size_t) { return std::int32_t{-1}; };
+  auto corner = mesh.add_halfedge_property<std::int32_t>(kCornerSource, -1);
+  auto vertex = mesh.add_vertex_property<std::int32_t>(kVertexSource, -1);
+  corner.set_interpolator(none);
+  vertex.set_interpolator(none);
+  for (Face f : mesh.faces())
+    for (Halfedge h : mesh.halfedges(f)) {
+      const auto s = static_cast<std::int32_t>(origin[h.idx()]);
+      corner[h] = s;
+      std::int32_t& first = vertex[mesh.to_vertex(h)];
+      if (first < 0 || s < first) first = s;
+    }
 }
 }  // namespace
 
@@ -81,6 +99,7 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
         origin[h.idx()] = static_cast<Index>(e.x) | (static_cast<Index>(e.y) << 16);
       }
   mesh.remove_halfedge_property("h:texcoord");
+  record_sources(mesh, origin);
 
   auto fill = [&](auto prop, auto value_of) {
     for (Face f : mesh.faces())

@@ -442,3 +442,35 @@ void test_subdivide(void) {
   CHECK_OK(hedge_mesh_destroy(grid));
   CHECK_OK(hedge_mesh_destroy(tet));
 }
+
+/* The open pyramid mirrored in x: positions negated, faces reversed (the base loop 0-1 is now a
+ * boundary half-edge, 1-0 an inner one), and mirrored again it is back. */
+void test_mirror(void) {
+  hedge_mesh* m = make_mesh(kPyramidPositions, 5, kPyramidTriangles, 12, NULL, 0);
+  uint32_t h01 = 0, h10 = 0;
+  int32_t boundary = 0;
+  CHECK_OK(hedge_mesh_find_halfedge(m, 0, 1, &h01));
+  CHECK_OK(hedge_halfedge_is_boundary(m, h01, &boundary));
+  CHECK(!boundary);
+  CHECK_OK(hedge_mesh_mirror_x(m));
+  float p[3];
+  get_position(m, 1, p);
+  CHECK(p[0] == -1 && p[1] == 0 && p[2] == 0);
+  CHECK_OK(hedge_mesh_find_halfedge(m, 1, 0, &h10));
+  CHECK_OK(hedge_halfedge_is_boundary(m, h10, &boundary));
+  CHECK(!boundary);
+  CHECK_OK(hedge_mesh_find_halfedge(m, 0, 1, &h01));
+  CHECK_OK(hedge_halfedge_is_boundary(m, h01, &boundary));
+  CHECK(boundary);
+  CHECK_VALID(m);
+  CHECK_OK(hedge_mesh_mirror_x(m));
+  get_position(m, 1, p);
+  CHECK(p[0] == 1);
+  CHECK_OK(hedge_mesh_find_halfedge(m, 0, 1, &h01));
+  CHECK_OK(hedge_halfedge_is_boundary(m, h01, &boundary));
+  CHECK(!boundary);
+  CHECK_VALID(m);
+  CHECK_OK(hedge_mesh_destroy(m));
+  CHECK_STATUS(hedge_mesh_mirror_x(m), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_STATUS(hedge_mesh_mirror_x(NULL), HEDGE_ERROR_BAD_HANDLE);
+}

@@ -655,6 +655,8 @@ int main(void) {
   test_decimate();
   test_fracture();
   test_subdivide();
+  test_mirror();
+  test_engine_sources();
   test_picking();
   test_triangle_faces();
   test_every_function_error_path();

@@ -210,6 +210,8 @@ void test_smooth(void);
 void test_decimate(void);
 void test_fracture(void);
 void test_subdivide(void);
+void test_mirror(void);
+void test_engine_sources(void);
 void test_picking(void);
 void test_triangle_faces(void);
 void test_every_function_error_path(void);

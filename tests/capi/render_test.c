@@ -400,3 +400,48 @@ void test_triangle_faces(void) {
   CHECK_VALID(mesh);
   CHECK_OK(hedge_mesh_destroy(mesh));
 }
+
+/* The map back to the engine arrays: the quad's 6 engine vertices weld into 4, each vertex names
+ * the first engine vertex welded into it, each corner its own; a mesh not made from engine arrays
+ * has no map. */
+void test_engine_sources(void) {
+  hedge_mesh* mesh = NULL;
+  CHECK_OK(hedge_mesh_from_engine_mesh(kQuadPositions, 6, kQuadTriangles, 6, NULL, kQuadTexcoords, NULL, NULL,
+                                       NULL, &mesh));
+  uint64_t n = 0;
+  CHECK_STATUS(hedge_mesh_vertex_source_indices(mesh, NULL, 0, &n), HEDGE_ERROR_BUFFER_TOO_SMALL);
+  CHECK(n == counts_of(mesh).vertex_slots);
+  int32_t vs[8], cs[32];
+  CHECK_STATUS(hedge_mesh_vertex_source_indices(mesh, vs, n - 1, &n), HEDGE_ERROR_BUFFER_TOO_SMALL);
+  CHECK_OK(hedge_mesh_vertex_source_indices(mesh, vs, 8, &n));
+  for (uint64_t v = 0; v < n; ++v) {
+    float p[3];
+    get_position(mesh, (uint32_t)v, p);
+    CHECK(vs[v] >= 0 && vs[v] < 6);
+    CHECK(kQuadPositions[3 * vs[v]] == p[0] && kQuadPositions[3 * vs[v] + 1] == p[1]);
+  }
+  CHECK_OK(hedge_mesh_corner_source_indices(mesh, cs, 32, &n));
+  CHECK(n == 2 * counts_of(mesh).edge_slots);
+  uint32_t corners = 0;
+  for (uint64_t h = 0; h < n; ++h) {
+    int32_t boundary = 0;
+    CHECK_OK(hedge_halfedge_is_boundary(mesh, (uint32_t)h, &boundary));
+    if (boundary) {
+      CHECK(cs[h] == -1);
+      continue;
+    }
+    float p[3];
+    get_position(mesh, to_vertex(mesh, (uint32_t)h), p);
+    CHECK(cs[h] >= 0 && cs[h] < 6 && kQuadPositions[3 * cs[h]] == p[0] &&
+          kQuadPositions[3 * cs[h] + 1] == p[1]);
+    ++corners;
+  }
+  CHECK(corners == 6);
+  CHECK_OK(hedge_mesh_destroy(mesh));
+  hedge_mesh* plain = make_mesh(kPyramidPositions, 5, kPyramidTriangles, 12, NULL, 0);
+  CHECK_STATUS(hedge_mesh_vertex_source_indices(plain, vs, 8, &n), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("hedge_mesh_from_engine_mesh");
+  CHECK_STATUS(hedge_mesh_corner_source_indices(plain, cs, 32, &n), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_mesh_corner_source_indices(plain, cs, 32, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_OK(hedge_mesh_destroy(plain));
+}

@@ -7,6 +7,8 @@
 #include <tuple>
 
 #include "hedge/algorithms/normals.h"
+#include "hedge/core/edge_operations.h"
+#include "hedge/core/face_operations.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 #include "hedge/render/render_buffers.h"
@@ -184,6 +186,55 @@ TEST(EngineMesh, BadInputIsRejectedWithAClearMessage) {
   SurfaceMesh m = from_engine_mesh({p, ok});
   EXPECT_EQ(m.n_faces(), 1u);
   EXPECT_TRUE(m.validate().empty());
+}
+
+}  // namespace
+}  // namespace hedge
+
+namespace hedge {
+namespace {
+
+// The map back to the engine arrays: every corner names its engine vertex (the triangle's own
+// index), every vertex the smallest engine vertex welded into it; after a split the new vertex and
+// its corners name none, and the old ones keep theirs through garbage collection.
+TEST(EngineMesh, SourceIndicesMapBackToTheEngineVertices) {
+  const EngineMesh e =
+      engine_mesh_from(read_indexed_file(std::string(HEDGE_DATA_DIR) + "/spot_triangulated.obj"));
+  BuildReport report;
+  SurfaceMesh m = from_engine_mesh(e.view(), {}, &report);
+  auto corner = m.get_halfedge_property<std::int32_t>(kCornerSource);
+  auto vertex = m.get_vertex_property<std::int32_t>(kVertexSource);
+  ASSERT_TRUE(corner && vertex);
+  std::vector<std::int32_t> smallest(m.vertex_slots(), -1);
+  for (std::size_t t = 0; t < e.indices.size() / 3; ++t) {
+    const Face f(report.face_map[t]);
+    for (Halfedge h : m.halfedges(f)) {
+      const std::int32_t s = corner[h];
+      ASSERT_GE(s, 0);
+      EXPECT_TRUE(s == std::int32_t(e.indices[3 * t]) || s == std::int32_t(e.indices[3 * t + 1]) ||
+                  s == std::int32_t(e.indices[3 * t + 2]))
+          << "triangle " << t;
+      EXPECT_EQ(e.positions[s], m.position(m.to_vertex(h)));
+      std::int32_t& low = smallest[m.to_vertex(h).idx()];
+      if (low < 0 || s < low) low = s;
+    }
+  }
+  for (Vertex v : m.vertices()) EXPECT_EQ(vertex[v], smallest[v.idx()]) << "vertex " << v.idx();
+  for (Halfedge h : m.halfedges())
+    if (m.is_boundary(h)) EXPECT_EQ(corner[h], -1);
+
+  const Vertex a = m.from_vertex(m.halfedge(Face(0))), b = m.to_vertex(m.halfedge(Face(0)));
+  const std::int32_t a_source = vertex[a], b_source = vertex[b];
+  const Vertex added = split_edge(m, m.edge(m.halfedge(Face(0))), 0.5f * (m.position(a) + m.position(b)));
+  ASSERT_TRUE(added.is_valid());
+  EXPECT_EQ(vertex[added], -1);
+  for (Halfedge h : m.halfedges(added))
+    if (!m.is_boundary(SurfaceMesh::twin(h))) EXPECT_EQ(corner[SurfaceMesh::twin(h)], -1);
+  ASSERT_TRUE(remove_face(m, Face(5)));
+  const GarbageMaps maps = m.garbage_collection();
+  EXPECT_TRUE(m.validate().empty());
+  EXPECT_EQ(vertex[Vertex(maps.vertices[a.idx()])], a_source);
+  EXPECT_EQ(vertex[Vertex(maps.vertices[b.idx()])], b_source);
 }
 
 }  // namespace

@@ -13,12 +13,14 @@
 // Resized (the new slots are then among the dirty ranges). So allocate your arrays (and GPU
 // buffers) at the capacities; after a Resized or Full result, reallocate and copy everything;
 // otherwise copy the dirty ranges. UpdateVertexMirror and UpdateIndexMirror do exactly that.
-// After Compact(), copy everything.
+// After Compact(), copy everything. A consumer that uploads later than it syncs, or not after every
+// sync, keeps a RenderChangeLog (CreateChangeLog()): every sync merges its ranges into it.
 //
 // Errors follow HalfEdgeMesh: a failed status throws HedgeException; a RenderBuffers whose mesh was
 // disposed throws HedgeException(BadHandle). The partial copies read the library's buffers in place
 // (no copy of the whole buffer, no managed allocation).
 using System;
+using System.Collections.Generic;
 using System.Runtime.InteropServices;
 
 namespace Hedge
@@ -98,7 +100,7 @@ namespace Hedge
         public SyncResult Sync()
         {
             mesh.PendingRenders.Drain();
-            return Status.Checked(Native.hedge_render_buffers_sync(id, out SyncResult result), result);
+            return Record(Status.Checked(Native.hedge_render_buffers_sync(id, out SyncResult result), result));
         }
 
         /// <summary>Opens a transaction of these buffers: edits are gathered until the matching commit
@@ -110,7 +112,7 @@ namespace Hedge
         public SyncResult CommitTransaction()
         {
             mesh.PendingRenders.Drain();
-            return Status.Checked(Native.hedge_render_buffers_commit(id, out SyncResult result), result);
+            return Record(Status.Checked(Native.hedge_render_buffers_commit(id, out SyncResult result), result));
         }
 
         /// <summary>Rebuilds every buffer from scratch, a full export (slots restart in face order, so it
@@ -118,7 +120,7 @@ namespace Hedge
         public SyncResult Rebuild()
         {
             mesh.PendingRenders.Drain();
-            return Status.Checked(Native.hedge_render_buffers_rebuild(id, out SyncResult result), result);
+            return Record(Status.Checked(Native.hedge_render_buffers_rebuild(id, out SyncResult result), result));
         }
 
         /// <summary>The result of the last sync, commit or rebuild.</summary>
@@ -154,6 +156,42 @@ namespace Hedge
             uint vertexCount, triangleCount;
             Status.Check(Native.hedge_render_buffers_compact_int(id, vertexMap, Status.Capacity(vertexMap), out vertexCount,
                                                          triangleMap, Status.Capacity(triangleMap), out triangleCount));
+            for (int i = 0; i < changeLogs.Count; ++i) changeLogs[i].MarkEverything();
+        }
+
+        // =========================================================================================
+        // Change logs: what every sync rewrote, for consumers that upload later (RenderChangeLog.cs)
+        // =========================================================================================
+
+        readonly List<RenderChangeLog> changeLogs = new List<RenderChangeLog>();
+
+        /// <summary>A log of every range the buffers rewrite from now on, by any sync, commit, rebuild or
+        /// compaction, until it is cleared: what an uploader must send, whoever synced. Dispose it to stop
+        /// recording.</summary>
+        public RenderChangeLog CreateChangeLog()
+        {
+            if (IsDisposed) throw new ObjectDisposedException("RenderBuffers");
+            var log = new RenderChangeLog(this);
+            changeLogs.Add(log);
+            return log;
+        }
+
+        internal void RemoveChangeLog(RenderChangeLog log) { changeLogs.Remove(log); }
+
+        // Adds a result's dirty ranges to every change log (or marks them everything).
+        SyncResult Record(SyncResult result)
+        {
+            if (changeLogs.Count == 0 || result.IsEmpty) return result;
+            if (result.Full || result.Resized)
+            {
+                for (int i = 0; i < changeLogs.Count; ++i) changeLogs[i].MarkEverything();
+                return result;
+            }
+            int n = LoadRanges(true);
+            for (int i = 0; i < changeLogs.Count; ++i) changeLogs[i].Record(true, ranges, n);
+            n = LoadRanges(false);
+            for (int i = 0; i < changeLogs.Count; ++i) changeLogs[i].Record(false, ranges, n);
+            return result;
         }
 
         // =========================================================================================

@@ -37,9 +37,18 @@ struct EngineImportOptions {
   bool flip_x = false;
 };
 
+//! The map back to the engine's vertex indices that from_engine_mesh() records (std::int32_t):
+//! per corner, the engine vertex it came from; per vertex, the first (smallest) engine vertex
+//! welded into it (seams weld several). -1 for boundary half-edges and for the vertices and
+//! corners later edits make; the values follow their elements through edits and garbage
+//! collection, so data keyed by the engine's vertex index is found again.
+inline constexpr const char* kCornerSource = "h:source";
+inline constexpr const char* kVertexSource = "v:source";
+
 //! Builds a SurfaceMesh from engine arrays, welding positions for topology and keeping normals,
 //! texcoords and colours per corner ("h:normal", "h:texcoord", "h:color"), so that a RenderBuffers
-//! with the same winding and axes reproduces the engine's triangles and attributes exactly.
+//! with the same winding and axes reproduces the engine's triangles and attributes exactly. It
+//! records the engine vertex of every corner and vertex (kCornerSource, kVertexSource).
 //! \throw InvalidInputError on mismatched stream sizes, indices out of range or non-finite values;
 //!        TopologyError under the strict policy.
 SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptions& options = {},

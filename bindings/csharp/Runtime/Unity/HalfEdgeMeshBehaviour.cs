@@ -3,7 +3,9 @@
 // SetIndexBufferData (start and count). One vertex stream per attribute: 0 positions, then normals,
 // texcoords and colours on the next streams, as present; one submesh with all the source's
 // triangles. The GPU buffers are allocated at the library's capacities, so that growth from edits
-// rarely reallocates them.
+// rarely reallocates them. Uploads follow a change log of the buffers (RenderChangeLog), not the
+// result of the component's own sync, so syncs, commits and rebuilds that scripts make themselves
+// are uploaded too.
 using System;
 using UnityEngine;
 using UnityEngine.Rendering;
@@ -32,7 +34,7 @@ namespace Hedge.Unity
         Mesh mesh;
         float[] positions, normals, texcoords, colors;
         int[] indices;
-        SlotRange[] ranges = new SlotRange[16];
+        RenderChangeLog pending;
         int normalStream = -1, texcoordStream = -1, colorStream = -1;
         int gpuVertices, indexCount;
         Vector3 boundsMin, boundsMax;
@@ -60,6 +62,7 @@ namespace Hedge.Unity
         /// kept per corner) and renders it through this component's MeshFilter.</summary>
         public void Build(Mesh source)
         {
+            UnityMeshes.CheckReadable(source);  // before Release(): an unreadable source changes nothing
             Release();
             Vector3[] v = source.vertices;
             Vector3[] n = source.normals;
@@ -93,6 +96,7 @@ namespace Hedge.Unity
             RenderOptions renderOptions = RenderOptions.Unity;
             if (keepImportedNormals) renderOptions.Normals = NormalSource.Attribute;
             Buffers = HalfEdgeMesh.CreateRenderBuffers(renderOptions);
+            pending = Buffers.CreateChangeLog();
             mesh = new Mesh();
             mesh.name = source.name + " (hedge)";
             mesh.MarkDynamic();
@@ -104,48 +108,54 @@ namespace Hedge.Unity
         public void BeginEdit() { Buffers.BeginTransaction(); }
 
         /// <summary>Closes the transaction and uploads what it changed.</summary>
-        public void EndEdit() { UploadResult(Buffers.CommitTransaction()); }
-
-        /// <summary>Syncs the edits made since the last upload and uploads the rewritten ranges (LateUpdate
-        /// does this every frame). Does nothing inside a transaction.</summary>
-        public void Upload()
+        public void EndEdit()
         {
-            if (Buffers != null) UploadResult(Buffers.Sync());
+            Buffers.CommitTransaction();
+            UploadPending();
         }
 
-        void UploadResult(SyncResult result)
+        /// <summary>Syncs the edits made since the last upload and uploads everything rewritten since then, by
+        /// this sync or by any other sync, commit or rebuild of <see cref="Buffers"/> (LateUpdate does this
+        /// every frame). Inside a transaction it syncs nothing, and uploads what earlier syncs rewrote.</summary>
+        public void Upload()
         {
-            if (result.IsEmpty) return;
+            if (Buffers == null) return;
+            Buffers.Sync();
+            UploadPending();
+        }
+
+        void UploadPending()
+        {
+            if (pending.IsEmpty) return;
             BufferCounts counts = Buffers.Counts;
-            // A result that says everything changed (a rebuild, Compact(), garbage collection) uploads
-            // everything: its ranges may not cover what moved.
-            if (result.Resized || result.Full || counts.VertexSlots > gpuVertices || counts.IndexCount > indices.Length)
+            // Everything changed (a rebuild, Compact(), garbage collection, growth): upload everything, as
+            // ranges may not cover what moved.
+            if (pending.Everything || counts.VertexSlots > gpuVertices || counts.IndexCount > indices.Length)
             {
                 UploadAll();
                 return;
             }
-            if (result.VertexRangeCount > 0)
+            int vertexRanges = pending.VertexRangeCount;
+            if (vertexRanges > 0)
             {
-                int n = LoadRanges(true);
-                UploadStream(VertexStream.Vertices, positions, 0, n);
-                if (normalStream >= 0) UploadStream(VertexStream.Normals, normals, normalStream, n);
-                if (texcoordStream >= 0) UploadStream(VertexStream.Texcoords, texcoords, texcoordStream, n);
-                if (colorStream >= 0) UploadStream(VertexStream.Colors, colors, colorStream, n);
+                UploadStream(VertexStream.Vertices, positions, 0);
+                if (normalStream >= 0) UploadStream(VertexStream.Normals, normals, normalStream);
+                if (texcoordStream >= 0) UploadStream(VertexStream.Texcoords, texcoords, texcoordStream);
+                if (colorStream >= 0) UploadStream(VertexStream.Colors, colors, colorStream);
             }
-            if (result.IndexRangeCount > 0)
+            for (int i = 0, n = pending.IndexRangeCount; i < n; ++i)
             {
-                Buffers.CopyDirtyIndices(indices);
-                int n = LoadRanges(false);
-                for (int i = 0; i < n; ++i)
-                    mesh.SetIndexBufferData(indices, (int)ranges[i].First, (int)ranges[i].First, (int)ranges[i].Count,
-                                            PartialFlags);
-                if ((int)counts.IndexCount != indexCount)
-                {
-                    indexCount = (int)counts.IndexCount;
-                    mesh.SetSubMesh(0, new SubMeshDescriptor(0, indexCount, MeshTopology.Triangles), PartialFlags);
-                }
+                SlotRange r = pending.IndexRange(i);
+                Buffers.CopyIndexRange(r.First, r.Count, indices);
+                mesh.SetIndexBufferData(indices, r.First, r.First, r.Count, PartialFlags);
             }
-            if (recalculateBounds && result.VertexRangeCount > 0) GrowBounds(LoadRanges(true));
+            if ((int)counts.IndexCount != indexCount)
+            {
+                indexCount = (int)counts.IndexCount;
+                mesh.SetSubMesh(0, new SubMeshDescriptor(0, indexCount, MeshTopology.Triangles), PartialFlags);
+            }
+            if (recalculateBounds && vertexRanges > 0) GrowBounds();
+            pending.Clear();
         }
 
         /// <summary>Sets Mesh.bounds to the exact box of the render vertices in use: a pass over all of them.</summary>
@@ -163,12 +173,13 @@ namespace Hedge.Unity
             SetBounds();
         }
 
-        // Grows the bounds by the positions of the first rangeCount dirty vertex ranges (in `ranges`).
-        void GrowBounds(int rangeCount)
+        // Grows the bounds by the positions of the pending vertex ranges.
+        void GrowBounds()
         {
             Vector3 min = boundsMin, max = boundsMax;
-            for (int i = 0; i < rangeCount; ++i)
-                for (int v = ranges[i].First, end = v + ranges[i].Count; v < end; ++v) Encapsulate(v);
+            for (int i = 0, n = pending.VertexRangeCount; i < n; ++i)
+                for (int v = pending.VertexRange(i).First, end = v + pending.VertexRange(i).Count; v < end; ++v)
+                    Encapsulate(v);
             if (min.x != boundsMin.x || min.y != boundsMin.y || min.z != boundsMin.z || max.x != boundsMax.x ||
                 max.y != boundsMax.y || max.z != boundsMax.z)
                 SetBounds();
@@ -192,28 +203,22 @@ namespace Hedge.Unity
             mesh.bounds = b;
         }
 
-        // Copies the dirty ranges of one stream into its array, then uploads each range.
-        void UploadStream(VertexStream stream, float[] data, int unityStream, int rangeCount)
+        // Copies the pending ranges of one stream into its array, then uploads each range.
+        void UploadStream(VertexStream stream, float[] data, int unityStream)
         {
-            Buffers.CopyDirtyVertices(stream, data);
             int k = Buffers.Components(stream);
-            for (int i = 0; i < rangeCount; ++i)
+            for (int i = 0, n = pending.VertexRangeCount; i < n; ++i)
             {
-                int first = (int)ranges[i].First * k;
-                mesh.SetVertexBufferData(data, first, first, (int)ranges[i].Count * k, unityStream, PartialFlags);
+                SlotRange r = pending.VertexRange(i);
+                Buffers.CopyVertexRange(stream, r.First, r.Count, data);
+                mesh.SetVertexBufferData(data, r.First * k, r.First * k, r.Count * k, unityStream, PartialFlags);
             }
-        }
-
-        int LoadRanges(bool vertices)
-        {
-            int n = vertices ? Buffers.GetDirtyVertexRanges(null) : Buffers.GetDirtyIndexRanges(null);
-            if (n > ranges.Length) ranges = new SlotRange[Math.Max(n, 2 * ranges.Length)];
-            return vertices ? Buffers.GetDirtyVertexRanges(ranges) : Buffers.GetDirtyIndexRanges(ranges);
         }
 
         // (Re)allocates the Unity mesh's buffers at the library's capacities and uploads everything.
         void UploadAll()
         {
+            pending.Clear();
             BufferCounts counts = Buffers.Counts;
             VertexLayout layout = Buffers.Layout;
             gpuVertices = (int)Math.Max(counts.VertexCapacity, counts.VertexSlots);
@@ -249,6 +254,8 @@ namespace Hedge.Unity
 
         void Release()
         {
+            if (pending != null) pending.Dispose();
+            pending = null;
             if (Buffers != null) Buffers.Dispose();
             if (HalfEdgeMesh != null) HalfEdgeMesh.Dispose();
             Buffers = null;

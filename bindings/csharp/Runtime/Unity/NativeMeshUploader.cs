@@ -11,6 +11,11 @@
 // NativeArray<ushort> the uploader keeps (native memory, not managed); otherwise the 32-bit native
 // index buffer is uploaded as it is.
 //
+// Never stale: the uploader keeps a change log of the buffers (RenderChangeLog), which every sync,
+// commit, rebuild and compaction fills, whoever calls it. An upload sends what the log gathered since
+// the last upload, from the buffers' current data, so a script that syncs the buffers itself (to
+// map a triangle to its face, say) does not leave the Unity mesh behind.
+//
 // Bounds: a full upload sets them from every position; a partial one grows them by the rewritten
 // vertices only (O(what changed)). They never shrink between full uploads: a conservative box.
 using System;
@@ -30,7 +35,7 @@ namespace Hedge.Unity
 
         readonly RenderBuffers buffers;
         readonly Mesh mesh;
-        SlotRange[] ranges = new SlotRange[16];
+        readonly RenderChangeLog log;
         int normalStream = -1, texcoordStream = -1, colorStream = -1;
         int gpuVertices, gpuIndices, indexCount;
         IndexFormat indexFormat = IndexFormat.UInt32;
@@ -50,6 +55,7 @@ namespace Hedge.Unity
                 throw new ArgumentException("interleaved buffers: use the separate layout (RenderOptions.Unity)", "buffers");
             this.buffers = buffers;
             this.mesh = mesh;
+            log = buffers.CreateChangeLog();
         }
 
         public RenderBuffers Buffers { get { return buffers; } }
@@ -57,38 +63,49 @@ namespace Hedge.Unity
         /// <summary>The index format of the last full upload: UInt16 while the render vertices fit.</summary>
         public IndexFormat IndexFormat { get { return indexFormat; } }
 
-        /// <summary>Uploads what a sync, commit or rebuild rewrote: the dirty ranges, or everything when the
-        /// result says the buffers grew or were rebuilt (Resized, Full: after Compact, garbage collection,
-        /// subdivision).</summary>
+        /// <summary>The ranges rewritten since the last upload, by any sync of the buffers.</summary>
+        public RenderChangeLog Pending { get { return log; } }
+
+        /// <summary>Syncs the buffers, then uploads everything rewritten since the last upload
+        /// (<see cref="Upload(SyncResult)"/>).</summary>
         /// <returns>True if only ranges were uploaded; false if everything was (or nothing changed).</returns>
-        public bool Upload(SyncResult result)
+        public bool Upload()
         {
-            if (result.IsEmpty) return false;
+            buffers.Sync();
+            return UploadPending();
+        }
+
+        /// <summary>Uploads everything the buffers rewrote since the last upload, whoever synced them: the
+        /// gathered dirty ranges, or everything when a sync since then grew or rebuilt the buffers (Resized,
+        /// Full: after Compact, garbage collection, subdivision). The result (of the caller's sync) is not
+        /// needed: every sync, commit and rebuild of the buffers already reached the uploader's change log.</summary>
+        /// <returns>True if only ranges were uploaded; false if everything was (or nothing changed).</returns>
+        public bool Upload(SyncResult result) { return UploadPending(); }
+
+        bool UploadPending()
+        {
+            if (log.IsEmpty) return false;
             BufferCounts counts = buffers.Counts;
-            if (result.Resized || result.Full || counts.VertexSlots > gpuVertices || counts.IndexCount > gpuIndices)
+            if (log.Everything || counts.VertexSlots > gpuVertices || counts.IndexCount > gpuIndices)
             {
                 UploadAll();
                 return false;
             }
-            if (result.VertexRangeCount > 0)
+            if (log.VertexRangeCount > 0)
             {
-                int n = LoadRanges(true);
-                UploadVertexRanges(VertexStream.Vertices, 0, n);
-                if (normalStream >= 0) UploadVertexRanges(VertexStream.Normals, normalStream, n);
-                if (texcoordStream >= 0) UploadVertexRanges(VertexStream.Texcoords, texcoordStream, n);
-                if (colorStream >= 0) UploadVertexRanges(VertexStream.Colors, colorStream, n);
-                GrowBounds(n);
+                UploadVertexRanges(VertexStream.Vertices, 0);
+                if (normalStream >= 0) UploadVertexRanges(VertexStream.Normals, normalStream);
+                if (texcoordStream >= 0) UploadVertexRanges(VertexStream.Texcoords, texcoordStream);
+                if (colorStream >= 0) UploadVertexRanges(VertexStream.Colors, colorStream);
+                GrowBounds();
             }
-            if (result.IndexRangeCount > 0)
+            if (log.IndexRangeCount > 0) UploadIndexRanges();
+            if ((int)counts.IndexCount != indexCount)
             {
-                int n = LoadRanges(false);
-                UploadIndexRanges(n);
-                if ((int)counts.IndexCount != indexCount)
-                {
-                    indexCount = (int)counts.IndexCount;
-                    mesh.SetSubMesh(0, new SubMeshDescriptor(0, indexCount, MeshTopology.Triangles), PartialFlags);
-                }
+                indexCount = (int)counts.IndexCount;
+                mesh.SetSubMesh(0, new SubMeshDescriptor(0, indexCount, MeshTopology.Triangles), PartialFlags);
             }
+            log.Clear();
             return true;
         }
 
@@ -96,6 +113,7 @@ namespace Hedge.Unity
         /// and uploads everything.</summary>
         public void UploadAll()
         {
+            log.Clear();
             BufferCounts counts = buffers.Counts;
             VertexLayout layout = buffers.Layout;
             gpuVertices = (int)Math.Max(counts.VertexCapacity, counts.VertexSlots);
@@ -139,31 +157,35 @@ namespace Hedge.Unity
             mesh.SetVertexBufferData(Wrap<float>(p, floats), 0, 0, floats, unityStream, FullFlags);
         }
 
-        void UploadVertexRanges(VertexStream stream, int unityStream, int rangeCount)
+        void UploadVertexRanges(VertexStream stream, int unityStream)
         {
             int floats;
             IntPtr p = buffers.GetStreamPointer(stream, out floats);
             NativeArray<float> data = Wrap<float>(p, floats);
             int k = buffers.Components(stream);
-            for (int i = 0; i < rangeCount; ++i)
+            for (int i = 0, n = log.VertexRangeCount; i < n; ++i)
             {
-                int first = (int)ranges[i].First * k;
-                mesh.SetVertexBufferData(data, first, first, (int)ranges[i].Count * k, unityStream, PartialFlags);
+                SlotRange r = log.VertexRange(i);
+                mesh.SetVertexBufferData(data, r.First * k, r.First * k, r.Count * k, unityStream, PartialFlags);
             }
         }
 
-        void UploadIndexRanges(int rangeCount)
+        void UploadIndexRanges()
         {
+            int n = log.IndexRangeCount;
             if (indexFormat == IndexFormat.UInt16)
             {
-                for (int i = 0; i < rangeCount; ++i)
-                    UploadIndices16((int)ranges[i].First, (int)ranges[i].Count, PartialFlags);
+                for (int i = 0; i < n; ++i)
+                    UploadIndices16(log.IndexRange(i).First, log.IndexRange(i).Count, PartialFlags);
                 return;
             }
             int count;
             NativeArray<uint> data = Wrap<uint>(buffers.GetIndexPointer(out count), count);
-            for (int i = 0; i < rangeCount; ++i)
-                mesh.SetIndexBufferData(data, (int)ranges[i].First, (int)ranges[i].First, (int)ranges[i].Count, PartialFlags);
+            for (int i = 0; i < n; ++i)
+            {
+                SlotRange r = log.IndexRange(i);
+                mesh.SetIndexBufferData(data, r.First, r.First, r.Count, PartialFlags);
+            }
         }
 
         // Converts indices [first, first + count) to 16 bits in the uploader's native scratch, then
@@ -192,15 +214,17 @@ namespace Hedge.Unity
             mesh.bounds = b;
         }
 
-        unsafe void GrowBounds(int rangeCount)
+        unsafe void GrowBounds()
         {
             int floats;
             float* p = (float*)buffers.GetStreamPointer(VertexStream.Vertices, out floats);
             Bounds b = mesh.bounds;
             Vector3 lo = b.min, hi = b.max;
-            for (int i = 0; i < rangeCount; ++i)
-                for (int v = (int)ranges[i].First; v < (int)(ranges[i].First + ranges[i].Count); ++v)
-                    Include(ref lo, ref hi, p + 3 * v);
+            for (int i = 0, n = log.VertexRangeCount; i < n; ++i)
+            {
+                SlotRange r = log.VertexRange(i);
+                for (int v = r.First; v < r.First + r.Count; ++v) Include(ref lo, ref hi, p + 3 * v);
+            }
             b.SetMinMax(lo, hi);
             mesh.bounds = b;
         }
@@ -222,18 +246,12 @@ namespace Hedge.Unity
             return array;
         }
 
-        int LoadRanges(bool vertices)
-        {
-            int n = vertices ? buffers.GetDirtyVertexRanges(null) : buffers.GetDirtyIndexRanges(null);
-            if (n > ranges.Length) ranges = new SlotRange[Math.Max(n, 2 * ranges.Length)];
-            return vertices ? buffers.GetDirtyVertexRanges(ranges) : buffers.GetDirtyIndexRanges(ranges);
-        }
-
-        /// <summary>Frees the 16-bit index scratch (the Mesh and the buffers stay).</summary>
+        /// <summary>Frees the 16-bit index scratch and stops the change log (the Mesh and the buffers stay).</summary>
         public void Dispose()
         {
             if (disposed) return;
             disposed = true;
+            log.Dispose();
             if (indices16.IsCreated) indices16.Dispose();
 #if ENABLE_UNITY_COLLECTIONS_CHECKS
             AtomicSafetyHandle.Release(safety);

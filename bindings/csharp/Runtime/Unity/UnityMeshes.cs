@@ -8,7 +8,7 @@ using UnityEngine;
 namespace Hedge.Unity
 {
     /// <summary>HalfEdgeMesh calls in Unity's types.</summary>
-    public static class UnityMeshes
+    public static partial class UnityMeshes
     {
         /// <summary>Builds a mesh from a Unity Mesh's arrays (mesh.vertices, mesh.triangles, mesh.normals,
         /// mesh.uv, mesh.colors) with <see cref="EngineImportOptions.Unity"/>: positions welded for the
@@ -38,6 +38,36 @@ namespace Hedge.Unity
             int status = hedge_mesh_from_engine_mesh(vertices, (uint)vertices.Length, triangles, (uint)triangles.Length,
                                                      normals, uv, colors, ref options, out report, out mesh);
             return HalfEdgeMesh.Adopt(status, mesh);
+        }
+
+        /// <summary>Builds a mesh from a Unity Mesh (its vertices, triangles of every submesh, normals, uv and
+        /// colors) with <see cref="EngineImportOptions.Unity"/>, as <see cref="FromUnityMesh(Vector3[], int[],
+        /// Vector3[], Vector2[], Color[])"/>.</summary>
+        /// <exception cref="ArgumentException">The mesh is not readable (its model was imported without
+        /// Read/Write): Unity gives scripts no vertices then.</exception>
+        public static HalfEdgeMesh FromMesh(Mesh source)
+        {
+            BuildReport report;
+            return FromMesh(source, EngineImportOptions.Unity, out report);
+        }
+
+        /// <summary>As above, with the options and the report of what was welded and repaired.</summary>
+        public static HalfEdgeMesh FromMesh(Mesh source, EngineImportOptions options, out BuildReport report)
+        {
+            CheckReadable(source);
+            return FromUnityMesh(source.vertices, source.triangles, source.normals, source.uv, source.colors, options,
+                                 out report);
+        }
+
+        /// <summary>Throws unless a script can read the mesh's arrays.</summary>
+        /// <exception cref="ArgumentException">Read/Write is off in the model's import settings.</exception>
+        public static void CheckReadable(Mesh source)
+        {
+            if (source == null) throw new ArgumentNullException("source");
+            if (!source.isReadable)
+                throw new ArgumentException("mesh '" + source.name + "' is not readable, so Unity gives scripts no " +
+                                            "vertices: enable Read/Write in the model's import settings (Inspector > " +
+                                            "Model > Read/Write) or pass a mesh made by a script", "source");
         }
 
         // Unity returns empty arrays for absent attributes; those mean "none" here.
