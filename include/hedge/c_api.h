@@ -591,8 +591,8 @@ typedef struct hedge_fracture_options {
   int32_t hulls;         /**< 1: compute each shard's convex hull */
   int32_t inner_submesh; /**< with a thickness, the face property "f:submesh" of the faces the solid
                             adds (back, side walls); -1: one more than the mesh's largest, or 1 */
-  double relative_thickness; /**< > 0 (thickness 0): the thickness as this fraction of the break
-                                radius in model units (the rings' spacings summed, at the impact) */
+  double relative_thickness; /**< in [0, 1]; > 0 (thickness 0): the thickness as this fraction of
+                                the break radius in model units (the spacings summed, at the impact) */
 } hedge_fracture_options;
 
 /** One shard. Layout (264 bytes): mesh @0, hull @8 (handles), centroid @16 (3 doubles), area @40,

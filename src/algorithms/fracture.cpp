@@ -89,8 +89,11 @@ std::size_t check_options(const FractureOptions& o) {
     fail(mat + "refine_edge must be finite and positive, is " + number(m.refine_edge));
   if (!std::isfinite(o.thickness) || o.thickness < 0)
     fail("thickness must be finite and >= 0, is " + number(o.thickness));
-  if (!std::isfinite(o.relative_thickness) || o.relative_thickness < 0)
-    fail("relative_thickness must be finite and >= 0, is " + number(o.relative_thickness));
+  if (!std::isfinite(o.relative_thickness) || o.relative_thickness < 0 ||
+      o.relative_thickness > kFractureMaxRelativeThickness)
+    fail("relative_thickness must be in [0, " + number(kFractureMaxRelativeThickness) +
+         "] (kFractureMaxRelativeThickness: a solid at most as thick as the break radius), is " +
+         number(o.relative_thickness));
   if (o.thickness > 0 && o.relative_thickness > 0)
     fail("thickness (" + number(o.thickness) + ") and relative_thickness (" + number(o.relative_thickness) +
          ") are both set; give one of them");
@@ -614,14 +617,13 @@ FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOpt
   if (total_points == 0) return result;
 
   const Frame frame = impact_frame(mesh, hit, o.material);
-  // The solid's thickness in model units (a relative one is known only now, from the frame's unit)
-  // and the inner faces' submesh, both settled before the mesh is edited.
+  // The solid's thickness in model units (a relative one is known only now, from the frame's unit;
+  // check_options() bounded it) and the inner faces' submesh, both settled before the mesh is edited.
   Solid solid;
   if (o.thickness > 0 || o.relative_thickness > 0) {
     solid.thickness = o.thickness > 0
                           ? o.thickness
                           : o.relative_thickness * fracture_material_radius(o.material) * frame.unit;
-    if (o.relative_thickness > 0) check_thickness(mesh, solid.thickness);
     solid.inner_submesh = inner_submesh(mesh, o);
   }
   Vec3 impact_on_surface;

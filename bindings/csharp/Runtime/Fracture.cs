@@ -85,9 +85,9 @@ namespace Hedge
             set { thickness = value; if (value > 0) relativeThickness = 0; }
         }
 
-        /// <summary>Greater than 0: the thickness as this fraction of the strike's break radius in model units (the
-        /// rings' spacings summed, in model units at the impact), so small and large breaks get solids of the same
-        /// proportion. <see cref="Preset"/> sets <see cref="GameRelativeThickness"/>. Setting it above 0 clears
+        /// <summary>In [0, 1]; greater than 0: the thickness as this fraction of the strike's break radius in model
+        /// units (the rings' spacings summed, in model units at the impact), so small and large breaks get solids of
+        /// the same proportion, at a cost that does not grow with the mesh. <see cref="Preset"/> sets <see cref="GameRelativeThickness"/>. Setting it above 0 clears
         /// <see cref="Thickness"/>.</summary>
         public double RelativeThickness
         {

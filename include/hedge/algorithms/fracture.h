@@ -58,10 +58,14 @@ namespace hedge {
 //!  - at most kFractureMaxPoints break points in all rings together (each one is matched against
 //!    every face of the broken area, so the scattering costs points x faces of the area);
 //!  - a thickness of at most kFractureMaxThicknessRatio times the diagonal of the mesh's bounding
-//!    box (a thicker solid folds through itself and only inflates the volumes and masses).
+//!    box (a thicker solid folds through itself and only inflates the volumes and masses);
+//!  - a relative_thickness of at most kFractureMaxRelativeThickness: a solid at most as thick as
+//!    the break radius (checked without a pass over the mesh, so a strike with a relative
+//!    thickness costs the broken area only).
 inline constexpr std::size_t kFractureMaxRings = 1000;
 inline constexpr std::size_t kFractureMaxPoints = 10000;
 inline constexpr double kFractureMaxThicknessRatio = 10;
+inline constexpr double kFractureMaxRelativeThickness = 1;
 
 //! One ring of break points around the impact.
 struct FractureRing {
@@ -128,8 +132,9 @@ struct FractureOptions {
   double thickness = 0;
   //! > 0 (and thickness 0): the thickness is this fraction of the strike's break radius in model
   //! units (fracture_material_radius() of the material at the impact: times the impact face's mean
-  //! edge length unless absolute), so shards of any size get a solid of the same proportion. The
-  //! thickness it gives is held to the same limit. Both thickness and relative_thickness > 0: refused.
+  //! edge length unless absolute), so shards of any size get a solid of the same proportion. At
+  //! most kFractureMaxRelativeThickness; no pass over the mesh checks it against the mesh's size.
+  //! Both thickness and relative_thickness > 0: refused.
   double relative_thickness = 0;
   //! With a thickness, the faces the solid adds (the back copy and the side walls, the shard's new
   //! cut faces) get this value in the face property "f:submesh" (std::int32_t, the face's submesh
@@ -200,7 +205,8 @@ struct FractureResult {
 //!   When the broken area reaches all of a small connected part, that whole part breaks off.
 //! The scattering matches each break point against the faces of the broken area: O(P k) for P break
 //! points (at most kFractureMaxPoints). With thickness > 0, one O(V) pass finds the mesh's bounding
-//! box for the thickness limit.
+//! box for the thickness limit (a relative_thickness needs none). With a thickness of either kind
+//! and inner_submesh -1 on a mesh with "f:submesh", one O(F) pass finds the largest submesh.
 //! \throw InvalidInputError, with the mesh unchanged, for: a non-finite impact; no face within the
 //!   tolerance (giving the distance to the nearest); a mesh with no face, or whose part at the
 //!   impact is a single face (too small to break); an illegal material or option, naming the field
