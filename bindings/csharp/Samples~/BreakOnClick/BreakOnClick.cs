@@ -67,6 +67,9 @@ public sealed class BreakOnClick : MonoBehaviour
         meshCollider.sharedMesh = rendered;
         options = FractureOptions.Preset(material).WithBreakRadiusFraction(halfEdgeMesh, breakRadiusFraction);
         options.Density = density;
+        // The shards' cut faces get the submesh after the object's own, settled once here (left at -1, each
+        // strike would look through every face for the largest).
+        options.InnerSubmesh = NextSubmesh(halfEdgeMesh);
         // Locating a strike uses the mesh's picking tree: build it now rather than at the first click.
         halfEdgeMesh.UpdatePickingTree();
     }
@@ -124,6 +127,16 @@ public sealed class BreakOnClick : MonoBehaviour
         collider.sharedMesh = ToUnityMesh(piece.Hull != null ? piece.Hull : piece.Mesh, go.name + " hull");
         ShardBody.Of(piece).ApplyTo(go.AddComponent<Rigidbody>());
         return go;
+    }
+
+    // One more than the largest submesh of the mesh's faces (1 when it has none).
+    static int NextSubmesh(HalfEdgeMesh mesh)
+    {
+        var submeshes = new int[mesh.CopyFaceSubmeshes(null)];
+        mesh.CopyFaceSubmeshes(submeshes);
+        int largest = 0;
+        foreach (int s in submeshes) largest = s > largest ? s : largest;
+        return largest + 1;
     }
 
     static Mesh ToUnityMesh(HalfEdgeMesh source, string meshName)

@@ -112,6 +112,7 @@ namespace Hedge.Tests
             FractureOptions options = sample.Options;
             Check.True(options.Absolute, "a break radius in model units");
             Check.Near(0.2 * Math.Sqrt(800), options.BreakRadius, 1e-6, "the break radius (of a float box)");
+            Check.Equal(1, options.InnerSubmesh, "the cut faces after the object's one submesh");
             int facesBefore = mesh.FaceCount;
 
             // A twin of the object, struck with the same options and seed: the shards the sample must have made.
