@@ -157,6 +157,9 @@ export interface FractureOptions {
   material?: FracturePreset | FractureMaterial;
   /** A whole number in [0, 2^53]. Default 0. */
   seed?: number;
+  /** > 0: the material scaled so its outer ring lies this far from the impact (model units), so the
+   *  same share of the object breaks at any resolution. Default 0 (the material's own spacings). */
+  breakRadius?: number;
   /** > 0: each shard a closed solid this thick, with mass properties. Default 0 (open shards). */
   thickness?: number;
   /** Mass per unit volume. Default 1. */

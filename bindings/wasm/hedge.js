@@ -474,7 +474,9 @@ export class Mesh extends NativeOwner {
    *  mesh is edited in place (the broken faces leave it) and its RenderBuffers syncs the change as a few
    *  ranges. material: 'glass', 'stone', 'wood', 'ice' or {name, rings: [{points, spacing,
    *  jitter}], grain, grainStretch, refineEdge, absolute} (docs/fracture.md). seed: a whole number
-   *  (the same seed, mesh and impact give the same shards). thickness > 0 makes each shard a
+   *  (the same seed, mesh and impact give the same shards). breakRadius > 0: the material scaled so
+   *  its outer ring lies that far from the impact in model units (the same share of the object
+   *  breaks at any resolution); 0: its own spacings. thickness > 0 makes each shard a
    *  closed solid, with mass properties at `density`. Uses the picking tree (built if missing), so
    *  an impact costs what the broken area does. Returns {shards: [Shard], impactFace, impactPoint,
    *  seconds: {locate, scatter, cut, detach, hulls, fracture (the whole library call), pack (making
@@ -482,7 +484,15 @@ export class Mesh extends NativeOwner {
    *  throws a HedgeError, the mesh unchanged. */
   fracture(
     impact,
-    { material = 'glass', seed = 0, thickness = 0, density = 1, tolerance = 0, hulls = true } = {},
+    {
+      material = 'glass',
+      seed = 0,
+      breakRadius = 0,
+      thickness = 0,
+      density = 1,
+      tolerance = 0,
+      hulls = true,
+    } = {},
   ) {
     const at = point3(impact, 'fracture: the impact');
     let preset = '';
@@ -497,7 +507,13 @@ export class Mesh extends NativeOwner {
     } else {
       custom = customMaterial(material);
     }
-    for (const [name, value] of Object.entries({ seed, thickness, density, tolerance }))
+    for (const [name, value] of Object.entries({
+      seed,
+      breakRadius,
+      thickness,
+      density,
+      tolerance,
+    }))
       if (!isNumber(value))
         throw new HedgeError('invalid-argument', `fracture: ${name} must be a number`);
     const result = this._call(
@@ -506,6 +522,7 @@ export class Mesh extends NativeOwner {
       preset,
       custom,
       seed,
+      breakRadius,
       thickness,
       density,
       tolerance,

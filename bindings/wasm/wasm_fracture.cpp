@@ -41,14 +41,16 @@ constexpr std::size_t kShardScalars = 7 + 6 * 3 + 9;
 
 }  // namespace
 
-val WasmMesh::fracture(val impact, const std::string& preset, val custom, double seed, double thickness,
-                       double density, double tolerance, bool hulls) {
+val WasmMesh::fracture(val impact, const std::string& preset, val custom, double seed, double break_radius,
+                       double thickness, double density, double tolerance, bool hulls) {
   return guarded([&] {
     const Vec3 at = point_from_js(impact, "fracture: the impact");
     if (!(seed >= 0 && seed <= 9007199254740992.0 && std::floor(seed) == seed))
       throw InvalidInputError("fracture: the seed must be a whole number in [0, 2^53]");
     FractureOptions options;
     options.material = preset.empty() ? material_from_js(custom) : fracture_material(preset);
+    // 0: the material's own spacings; anything else is checked (finite, positive) by the scaling.
+    if (break_radius != 0) options.material = fracture_material_at_radius(options.material, break_radius);
     options.seed = std::uint64_t(seed);
     options.thickness = thickness;
     options.density = density;

@@ -91,7 +91,9 @@ class WasmMesh {
   //! picking_tree: built if missing, kept up to date), so the cost is that of the broken area.
   //! `preset`: a preset's name, or "" for the material in `custom`: {name, rings (Float64Array, 3
   //! per ring: points, spacing, jitter), grain ([x, y, z]), grainStretch, refineEdge, absolute},
-  //! whose types the JS layer has checked. Returns {shards: {count, scalars (kShardScalars per
+  //! whose types the JS layer has checked. `break_radius` != 0: the material scaled so its outer
+  //! ring lies that many model units from the impact (fracture_material_at_radius; 0: as it is).
+  //! Returns {shards: {count, scalars (kShardScalars per
   //! shard: faces, area, volume, closed, mass, hull dimension, hull tolerance, centroid, centre of
   //! mass, principal moments, the three principal axes, inertia (9)), meshes (NativeMesh each),
   //! hullPositions, hullIndices (each hull's indices count from its first vertex),
@@ -100,8 +102,8 @@ class WasmMesh {
   //! fracture() checks everything before it edits, so a refusal leaves the mesh as it was. Running
   //! out of wasm memory halfway is not rolled back (a copy of the mesh would cost more than the
   //! strike, whose own allocations are those of the small broken area).
-  val fracture(val impact, const std::string& preset, val custom, double seed, double thickness,
-               double density, double tolerance, bool hulls);
+  val fracture(val impact, const std::string& preset, val custom, double seed, double break_radius,
+               double thickness, double density, double tolerance, bool hulls);
 
  private:
   std::shared_ptr<MeshState> s_;

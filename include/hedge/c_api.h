@@ -571,46 +571,61 @@ typedef struct hedge_fracture_ring {
   uint32_t reserved; /**< 0 */
 } hedge_fracture_ring;
 
-/** Layout (464 bytes): rings @0 (16 x 24), ring_count @384 (uint32_t), absolute @388 (int32_t),
+/** Layout (472 bytes): rings @0 (16 x 24), ring_count @384 (uint32_t), absolute @388 (int32_t),
  *  grain @392 (3 floats), reserved @404 (uint32_t), grain_stretch @408, refine_edge @416 (double),
- *  seed @424 (uint64_t), thickness @432, density @440, tolerance @448 (double), hulls @456
- *  (int32_t), reserved2 @460 (uint32_t). */
+ *  seed @424 (uint64_t), thickness @432, density @440, tolerance @448 (double), hulls @456,
+ *  inner_submesh @460 (int32_t), relative_thickness @464 (double). */
 typedef struct hedge_fracture_options {
   hedge_fracture_ring rings[HEDGE_FRACTURE_MAX_RINGS]; /**< the material's rings, innermost first */
   uint32_t ring_count;                                 /**< rings used, 0..HEDGE_FRACTURE_MAX_RINGS */
-  int32_t absolute;     /**< 1: spacings in model units; 0: in edge lengths of the impact face */
-  float grain[3];       /**< grain direction, nonzero when grain_stretch > 1 */
-  uint32_t reserved;    /**< 0 */
-  double grain_stretch; /**< >= 1: cells this many times longer along the grain */
-  double refine_edge;   /**< longest edge left in the broken area (units of the spacing), > 0 */
-  uint64_t seed;        /**< seed of the break points */
-  double thickness;     /**< > 0: each shard extruded into a closed solid this thick */
-  double density;       /**< mass per unit volume, > 0 */
-  double tolerance;     /**< largest distance from the impact to the surface; 0: 1e-3 of the nearest face's
-                           longest edge */
-  int32_t hulls;        /**< 1: compute each shard's convex hull */
-  uint32_t reserved2;   /**< 0 */
+  int32_t absolute;      /**< 1: spacings in model units; 0: in edge lengths of the impact face */
+  float grain[3];        /**< grain direction, nonzero when grain_stretch > 1 */
+  uint32_t reserved;     /**< 0 */
+  double grain_stretch;  /**< >= 1: cells this many times longer along the grain */
+  double refine_edge;    /**< longest edge left in the broken area (units of the spacing), > 0 */
+  uint64_t seed;         /**< seed of the break points */
+  double thickness;      /**< > 0: each shard extruded into a closed solid this thick */
+  double density;        /**< mass per unit volume, > 0 */
+  double tolerance;      /**< largest distance from the impact to the surface; 0: 1e-3 of the nearest face's
+                            longest edge */
+  int32_t hulls;         /**< 1: compute each shard's convex hull */
+  int32_t inner_submesh; /**< with a thickness, the face property "f:submesh" of the faces the solid
+                            adds (back, side walls); -1: one more than the mesh's largest, or 1 */
+  double relative_thickness; /**< in [0, 1]; > 0 (thickness 0): the thickness as this fraction of
+                                the break radius in model units (the spacings summed, at the impact) */
 } hedge_fracture_options;
 
-/** One shard. Layout (168 bytes): mesh @0, hull @8 (handles), centroid @16 (3 doubles), area @40,
+/** One shard. Layout (264 bytes): mesh @0, hull @8 (handles), centroid @16 (3 doubles), area @40,
  *  volume @48, mass @56 (double), centre_of_mass @64 (3 doubles), inertia @88 (9 doubles,
- *  row-major, about the centre of mass), closed @160, hull_dimension @164 (int32_t). */
+ *  row-major, about the centre of mass), closed @160, hull_dimension @164 (int32_t),
+ *  principal_moments @168 (3 doubles), principal_axes @192 (9 doubles). */
 typedef struct hedge_fracture_shard {
-  hedge_mesh* mesh;         /**< the shard, a new mesh; destroy it with hedge_mesh_destroy() */
-  hedge_mesh* hull;         /**< its convex hull, a new mesh, or NULL (hulls off, or no volume) */
-  double centroid[3];       /**< area-weighted centroid of the broken faces */
-  double area;              /**< area of the broken faces */
-  double volume;            /**< volume when closed, else 0 */
-  double mass;              /**< at the density when closed, else 0 */
-  double centre_of_mass[3]; /**< when closed, else 0 */
-  double inertia[9];        /**< inertia tensor about the centre of mass when closed, else 0 */
-  int32_t closed;           /**< 1: the shard's mesh has no boundary */
-  int32_t hull_dimension;   /**< 0 empty, 1 point, 2 segment, 3 flat (a thin prism), 4 solid */
+  hedge_mesh* mesh;            /**< the shard, a new mesh; destroy it with hedge_mesh_destroy() */
+  hedge_mesh* hull;            /**< its convex hull, a new mesh, or NULL (hulls off, or no volume) */
+  double centroid[3];          /**< area-weighted centroid of the broken faces */
+  double area;                 /**< area of the broken faces */
+  double volume;               /**< volume when closed, else 0 */
+  double mass;                 /**< at the density when closed, else 0 */
+  double centre_of_mass[3];    /**< when closed, else 0 */
+  double inertia[9];           /**< inertia tensor about the centre of mass when closed, else 0 */
+  int32_t closed;              /**< 1: the shard's mesh has no boundary */
+  int32_t hull_dimension;      /**< 0 empty, 1 point, 2 segment, 3 flat (a thin prism), 4 solid */
+  double principal_moments[3]; /**< the eigenvalues of inertia, ascending, when closed, else 0 */
+  double principal_axes[9];    /**< row i: the unit axis of principal_moments[i]; a right-handed frame
+                                  (row 2 = row 0 x row 1), so the matrix whose columns they are is a
+                                  rotation R with inertia = R diag(moments) R^T; 0 when open */
 } hedge_fracture_shard;
 
 /** Fills *out_options with a preset (hedge_fracture_preset), seed 0, no thickness, density 1,
- *  tolerance 0 (automatic) and hulls on. An unknown preset: HEDGE_ERROR_INVALID_ARGUMENT. */
+ *  tolerance 0 (automatic), hulls on and inner_submesh -1 (automatic). An unknown preset:
+ *  HEDGE_ERROR_INVALID_ARGUMENT. */
 HEDGE_API hedge_status hedge_fracture_options_default(int32_t preset, hedge_fracture_options* out_options);
+/** Puts the material of *options into model units with its outer ring radius model units from the
+ *  impact (fracture_material_at_radius): absolute = 1, every used ring's spacing and refine_edge
+ *  scaled by radius / (the spacings summed). So a strike breaks the same share of an object at
+ *  every mesh resolution. A radius that is not finite and positive, no ring, or a spacing that is
+ *  not finite and positive: HEDGE_ERROR_INVALID_ARGUMENT naming it, *options unchanged. */
+HEDGE_API hedge_status hedge_fracture_options_at_radius(hedge_fracture_options* options, double radius);
 /** Breaks the mesh at the impact (x, y, z) into shards (see hedge/algorithms/fracture.h): the
  *  broken faces leave the mesh, each shard is a new mesh with its properties, its area, centroid,
  *  mass properties when closed and its convex hull. The mesh's render objects update at their next
@@ -634,6 +649,12 @@ HEDGE_API hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, f
                                            const hedge_fracture_options* options,
                                            hedge_fracture_shard* out_shards, uint32_t capacity,
                                            uint32_t* out_count);
+/** Copies each face slot's submesh, the face property "f:submesh" (int32_t), deleted slots
+ *  included: 0 for every slot when the mesh has no such property (or one of another type). A
+ *  shard with a thickness has it, its back and side walls at the options' inner_submesh.
+ *  *out_count receives face_slots; a buffer smaller: HEDGE_ERROR_BUFFER_TOO_SMALL. */
+HEDGE_API hedge_status hedge_mesh_copy_face_submeshes(const hedge_mesh* mesh, int32_t* buffer,
+                                                      uint64_t capacity, uint64_t* out_count);
 
 /* ============================================================================================ */
 /* Subdivision (hedge/algorithms/subdivide.h)                                                   */

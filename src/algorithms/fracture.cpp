@@ -29,6 +29,9 @@ namespace {
 
 using detail::number;
 
+//! The face property of a face's submesh (material), std::int32_t.
+constexpr const char* kSubmeshProperty = "f:submesh";
+
 //! A barycentric weight this close to 1 (or to 0) puts the impact on a corner (or an edge).
 constexpr double kSnap = 1e-3;
 constexpr std::size_t kMaxRefineSplits = 20000;  // per round
@@ -86,6 +89,16 @@ std::size_t check_options(const FractureOptions& o) {
     fail(mat + "refine_edge must be finite and positive, is " + number(m.refine_edge));
   if (!std::isfinite(o.thickness) || o.thickness < 0)
     fail("thickness must be finite and >= 0, is " + number(o.thickness));
+  if (!std::isfinite(o.relative_thickness) || o.relative_thickness < 0 ||
+      o.relative_thickness > kFractureMaxRelativeThickness)
+    fail("relative_thickness must be in [0, " + number(kFractureMaxRelativeThickness) +
+         "] (kFractureMaxRelativeThickness: a solid at most as thick as the break radius), is " +
+         number(o.relative_thickness));
+  if (o.thickness > 0 && o.relative_thickness > 0)
+    fail("thickness (" + number(o.thickness) + ") and relative_thickness (" + number(o.relative_thickness) +
+         ") are both set; give one of them");
+  if (o.inner_submesh < -1)
+    fail("inner_submesh must be -1 (automatic) or >= 0, is " + std::to_string(o.inner_submesh));
   if (!std::isfinite(o.density) || o.density <= 0)
     fail("density must be finite and positive, is " + number(o.density));
   if (!std::isfinite(o.tolerance) || o.tolerance < 0)
@@ -225,9 +238,17 @@ Vec3d any_perpendicular(const Vec3d& n) {
   return normalize(cross(n, axis));
 }
 
+//! What makes each shard a solid: its thickness in model units (0: none) and the "f:submesh" of
+//! the faces the solid adds, both resolved for this strike.
+struct Solid {
+  double thickness = 0;
+  std::int32_t inner_submesh = 1;
+};
+
 //! The solid of an open shard: front, back copy `thickness` behind along the vertex normals
-//! (reversed), and two triangles per boundary edge. See Shard::mesh.
-SurfaceMesh extrude(const SurfaceMesh& s, double thickness) {
+//! (reversed), and two triangles per boundary edge; the back and the walls get "f:submesh" =
+//! inner_submesh. See Shard::mesh.
+SurfaceMesh extrude(const SurfaceMesh& s, double thickness, std::int32_t inner_submesh) {
   const std::size_t n = s.vertex_slots();
   std::vector<Vec3d> normal(n);
   Vec3d total{};
@@ -294,10 +315,15 @@ SurfaceMesh extrude(const SurfaceMesh& s, double thickness) {
     out.vertex_properties().copy_element_from(s.vertex_properties(), src % n, v.idx());
     out.position(v) = im.positions[src];
   }
+  // The faces after the front ones (the back and the walls) are new cut faces: an inner submesh.
+  // check_submesh() made sure an "f:submesh" of the mesh is of this type.
+  FaceProperty<std::int32_t> submesh = out.face_property<std::int32_t>(kSubmeshProperty, 0);
+  const std::size_t front = s.n_faces();
   std::size_t c = 0;
   for (std::size_t i = 0; i < face_src.size(); ++i) {
     const Face nf(rep.face_map[i]);
     out.face_properties().copy_element_from(s.face_properties(), face_src[i].idx(), nf.idx());
+    if (i >= front) submesh[nf] = inner_submesh;
     for (Halfedge h : out.halfedges(nf))
       out.halfedge_properties().copy_element_from(s.halfedge_properties(), corner_src[c++].idx(), h.idx());
   }
@@ -316,7 +342,7 @@ double farthest_outside(const ConvexHull& hull, const std::vector<Vec3>& points)
   return worst;
 }
 
-void measure_shard(Shard& shard, const FractureOptions& o) {
+void measure_shard(Shard& shard, const FractureOptions& o, const Solid& solid) {
   const SurfaceMesh& s = shard.mesh;
   double area = 0;
   Vec3d weighted{};
@@ -333,8 +359,8 @@ void measure_shard(Shard& shard, const FractureOptions& o) {
       boundary = true;
       break;
     }
-  if (boundary && o.thickness > 0) {
-    shard.mesh = extrude(s, o.thickness);
+  if (boundary && solid.thickness > 0) {
+    shard.mesh = extrude(s, solid.thickness, solid.inner_submesh);
     boundary = false;
   }
   shard.closed = !boundary;
@@ -369,6 +395,27 @@ void check_input(const SurfaceMesh& mesh, const Vec3& impact, const FractureOpti
   if (bvh && bvh->mesh() != &mesh)
     throw InvalidInputError("fracture: the FaceBvh was built over another mesh");
   check_thickness(mesh, o.thickness);
+  if ((o.thickness > 0 || o.relative_thickness > 0) && mesh.face_properties().find_base(kSubmeshProperty) &&
+      !mesh.get_face_property<std::int32_t>(kSubmeshProperty))
+    throw InvalidInputError(std::string("fracture: the face property \"") + kSubmeshProperty +
+                            "\" is not of type std::int32_t, so the shards' inner faces cannot be given "
+                            "their submesh");
+}
+
+//! The "f:submesh" of the faces a solid adds: options.inner_submesh, or for -1 one more than the
+//! largest of the mesh's live faces (1 when the mesh has no such property). O(F) for -1 with the
+//! property, else O(1).
+std::int32_t inner_submesh(const SurfaceMesh& mesh, const FractureOptions& o) {
+  if (o.inner_submesh >= 0) return o.inner_submesh;
+  const FaceProperty<std::int32_t> submesh = mesh.get_face_property<std::int32_t>(kSubmeshProperty);
+  if (!submesh) return 1;
+  std::int32_t largest = 0;
+  for (Face f : mesh.faces()) largest = std::max(largest, submesh[f]);
+  if (largest == std::numeric_limits<std::int32_t>::max())
+    throw InvalidInputError(
+        "fracture: the mesh's largest \"f:submesh\" is the largest int32; give "
+        "inner_submesh explicitly");
+  return largest + 1;
 }
 
 //! The nearest point of the surface to the impact, by bvh (brought up to date) or a tree of its
@@ -428,9 +475,7 @@ Frame impact_frame(const SurfaceMesh& mesh, const LocateResult& hit, const Fract
     }
   }
   f.t2 = cross(f.normal, f.t1);
-  double outer = 0;
-  for (const FractureRing& r : mat.rings) outer += r.spacing;
-  f.radius = (outer + 0.5 * mat.rings.back().spacing) * f.unit;
+  f.radius = (fracture_material_radius(mat) + 0.5 * mat.rings.back().spacing) * f.unit;
   return f;
 }
 
@@ -548,36 +593,11 @@ std::vector<Shard> detach(SurfaceMesh& mesh, std::vector<std::vector<Face>>& cel
 }
 
 //! Every shard made a solid and measured (measure_shard).
-void solids(std::vector<Shard>& shards, const FractureOptions& o) {
-  for (Shard& shard : shards) measure_shard(shard, o);
+void solids(std::vector<Shard>& shards, const FractureOptions& o, const Solid& solid) {
+  for (Shard& shard : shards) measure_shard(shard, o, solid);
 }
 
 }  // namespace
-
-std::vector<std::string> fracture_material_names() { return {"glass", "stone", "wood", "ice"}; }
-
-FractureMaterial fracture_material(std::string_view preset) {
-  FractureMaterial m;
-  m.name = std::string(preset);
-  if (preset == "glass") {
-    m.rings = {{4, 1.0, 0.4}, {8, 1.6, 0.4}, {12, 2.0, 0.35}, {16, 2.4, 0.3}};
-  } else if (preset == "stone") {
-    m.rings = {{3, 3.0, 0.3}, {4, 4.5, 0.3}};
-    m.refine_edge = 2.0;
-  } else if (preset == "wood") {
-    m.rings = {{4, 1.5, 0.3}, {6, 2.0, 0.3}, {8, 2.5, 0.3}};
-    m.grain = {1, 0, 0};
-    m.grain_stretch = 3;
-  } else if (preset == "ice") {
-    m.rings = {{6, 1.5, 0.5}, {9, 2.0, 0.5}, {11, 2.5, 0.5}};
-  } else {
-    std::string names;
-    for (const std::string& n : fracture_material_names()) names += (names.empty() ? "" : ", ") + n;
-    throw InvalidInputError("fracture: unknown material '" + std::string(preset) +
-                            "'; valid presets: " + names);
-  }
-  return m;
-}
 
 std::size_t fracture_break_points(const FractureOptions& options) { return check_options(options); }
 
@@ -597,6 +617,15 @@ FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOpt
   if (total_points == 0) return result;
 
   const Frame frame = impact_frame(mesh, hit, o.material);
+  // The solid's thickness in model units (a relative one is known only now, from the frame's unit;
+  // check_options() bounded it) and the inner faces' submesh, both settled before the mesh is edited.
+  Solid solid;
+  if (o.thickness > 0 || o.relative_thickness > 0) {
+    solid.thickness = o.thickness > 0
+                          ? o.thickness
+                          : o.relative_thickness * fracture_material_radius(o.material) * frame.unit;
+    solid.inner_submesh = inner_submesh(mesh, o);
+  }
   Vec3 impact_on_surface;
   const Vertex centre = cut_impact(mesh, hit, impact_on_surface);
   result.impact_point = impact_on_surface;
@@ -614,7 +643,7 @@ FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOpt
   if (bvh) bvh->update();
   result.seconds.detach += seconds_since(t);
 
-  solids(result.shards, o);
+  solids(result.shards, o, solid);
   result.seconds.hulls += seconds_since(t);
   return result;
 }

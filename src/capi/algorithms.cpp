@@ -256,6 +256,29 @@ hedge_status hedge_fracture_options_default(int32_t preset, hedge_fracture_optio
     o.density = d.density;
     o.tolerance = d.tolerance;
     o.hulls = d.hulls ? 1 : 0;
+    o.inner_submesh = d.inner_submesh;
+    o.relative_thickness = d.relative_thickness;
+  });
+}
+
+hedge_status hedge_fracture_options_at_radius(hedge_fracture_options* options, double radius) {
+  return guard([&] {
+    hedge_fracture_options& o = need(options, "options");
+    if (o.ring_count > HEDGE_FRACTURE_MAX_RINGS)
+      fail(HEDGE_ERROR_INVALID_ARGUMENT, "ring_count must be at most HEDGE_FRACTURE_MAX_RINGS (" +
+                                             std::to_string(HEDGE_FRACTURE_MAX_RINGS) + "), got " +
+                                             std::to_string(o.ring_count));
+    FractureMaterial m;
+    m.name = "custom";
+    for (std::uint32_t i = 0; i < o.ring_count; ++i)
+      m.rings.push_back({o.rings[i].points, o.rings[i].spacing, o.rings[i].jitter});
+    m.refine_edge = o.refine_edge;
+    // Its InvalidInputError (naming the radius or the ring) becomes HEDGE_ERROR_INVALID_ARGUMENT
+    // before *options is written.
+    const FractureMaterial scaled = fracture_material_at_radius(m, radius);
+    for (std::uint32_t i = 0; i < o.ring_count; ++i) o.rings[i].spacing = scaled.rings[i].spacing;
+    o.refine_edge = scaled.refine_edge;
+    o.absolute = 1;
   });
 }
 
@@ -286,6 +309,8 @@ hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z,
     f.density = o.density;
     f.tolerance = o.tolerance;
     f.hulls = need_bool(o.hulls, "hulls");
+    f.inner_submesh = o.inner_submesh;
+    f.relative_thickness = o.relative_thickness;
     const Vec3 impact = need_point(x, y, z);
     // The library's limits first (rings, break points in all, each field): an illegal material is
     // HEDGE_ERROR_INVALID_ARGUMENT naming the field, before any buffer size is looked at. Within
@@ -320,12 +345,35 @@ hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z,
       out.centre_of_mass[1] = s.mass.centre_of_mass.y;
       out.centre_of_mass[2] = s.mass.centre_of_mass.z;
       std::copy(s.mass.inertia.begin(), s.mass.inertia.end(), out.inertia);
+      if (s.closed) {
+        const Vec3d& m = s.mass.principal_moments;
+        out.principal_moments[0] = m.x, out.principal_moments[1] = m.y, out.principal_moments[2] = m.z;
+        for (int a = 0; a < 3; ++a) {
+          const Vec3d& axis = s.mass.principal_axes[a];
+          out.principal_axes[3 * a] = axis.x, out.principal_axes[3 * a + 1] = axis.y;
+          out.principal_axes[3 * a + 2] = axis.z;
+        }
+      }
       out.closed = s.closed ? 1 : 0;
       out.hull_dimension = static_cast<std::int32_t>(s.hull.dimension);
       out.mesh = register_mesh(std::move(meshes[i]));
       out.hull = hulls[i] ? register_mesh(std::move(hulls[i])) : nullptr;
     }
     count = static_cast<std::uint32_t>(r.shards.size());
+  });
+}
+
+hedge_status hedge_mesh_copy_face_submeshes(const hedge_mesh* mesh, int32_t* buffer, uint64_t capacity,
+                                            uint64_t* out_count) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const SurfaceMesh& m = object->mesh;
+    need(out_count, "out_count");
+    *out_count = m.face_slots();
+    check_capacity(m.face_slots(), buffer, capacity);
+    const FaceProperty<std::int32_t> submesh = m.get_face_property<std::int32_t>("f:submesh");
+    for (std::size_t i = 0; i < m.face_slots(); ++i)
+      buffer[i] = submesh ? submesh[Face(static_cast<Index>(i))] : 0;
   });
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "caught.h"
 #include "edit_checks.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/core/build.h"
@@ -187,6 +188,103 @@ TEST(Fracture, ThicknessMakesClosedSolidsWithMass) {
     EXPECT_NEAR(s.mass.centre_of_mass.z, -0.1, 1e-4);
     EXPECT_EQ(s.hull.dimension, HullDimension::solid);
   }
+}
+
+// With a thickness, the back copy and the side walls are new cut faces: they get an "f:submesh" of
+// their own (one past the mesh's largest by default) while the broken faces keep theirs.
+TEST(Fracture, InnerFacesOfASolidGetASubmeshOfTheirOwn) {
+  struct Case {
+    bool property;
+    std::int32_t inner_option, inner_expected;
+  };
+  for (const Case c : {Case{true, -1, 3}, Case{true, 7, 7}, Case{false, -1, 1}}) {
+    SurfaceMesh mesh = plate(30);
+    if (c.property) {
+      auto submesh = mesh.add_face_property<std::int32_t>("f:submesh", 0);
+      for (Face f : mesh.faces()) submesh[f] = face_centroid(mesh, f).x < 15 ? 0 : 2;
+    }
+    FractureOptions o;
+    o.seed = 4;
+    o.thickness = 0.2;
+    o.inner_submesh = c.inner_option;
+    const FractureResult r = fracture(mesh, {15.2f, 14.9f, 0}, o);
+    EXPECT_TRUE(mesh.validate().empty());
+    ASSERT_FALSE(r.shards.empty());
+    for (const Shard& s : r.shards) {
+      ASSERT_TRUE(s.mesh.validate().empty());
+      const auto submesh = s.mesh.get_face_property<std::int32_t>("f:submesh");
+      ASSERT_TRUE(submesh);
+      std::size_t inner = 0;
+      for (Face f : s.mesh.faces()) {
+        // The front lies at z = 0 with its normal up; the back and the walls lie below or across.
+        const bool front = std::abs(face_centroid(s.mesh, f).z) < 1e-6 && area_vector(s.mesh, f).z > 0;
+        if (front) {
+          const std::int32_t expected = c.property && face_centroid(s.mesh, f).x >= 15 ? 2 : 0;
+          if (std::abs(face_centroid(s.mesh, f).x - 15) > 0.5f) EXPECT_EQ(submesh[f], expected);
+        } else {
+          EXPECT_EQ(submesh[f], c.inner_expected);
+          ++inner;
+        }
+      }
+      EXPECT_GT(inner, s.mesh.n_faces() / 2);  // the back and the walls outnumber the front
+    }
+  }
+  // Without a thickness nothing is added, so no "f:submesh" appears.
+  SurfaceMesh open = plate(30);
+  for (const Shard& s : fracture(open, {15.2f, 14.9f, 0}, {}).shards)
+    EXPECT_FALSE(s.mesh.get_face_property<std::int32_t>("f:submesh"));
+}
+
+// A thickness relative to the break radius: glass reaches 7 mean edge lengths of the impact face.
+TEST(Fracture, RelativeThicknessIsAFractionOfTheBreakRadius) {
+  SurfaceMesh mesh = plate(50);
+  const double area = surface_area(mesh);
+  FractureOptions o;
+  o.relative_thickness = 0.05;
+  o.seed = 5;
+  const double edge = (2 + std::sqrt(2.0)) / 3;  // the mean edge of the plate's triangles
+  const double thickness = 0.05 * fracture_material_radius(o.material) * edge;
+  const FractureResult r = fracture(mesh, {25.1f, 24.7f, 0}, o);
+  expect_sound(mesh, r, area, thickness);
+  for (const Shard& s : r.shards) EXPECT_NEAR(s.mass.volume, s.area * thickness, 1e-4 * s.area);
+  // Both kinds of thickness, or a negative one: refused, naming them, the mesh unchanged.
+  const test::Snapshot before = test::snapshot(mesh);
+  o.thickness = 0.1;
+  std::string what = test::caught<InvalidInputError>(
+                         [&] {
+                           fracture(mesh, {10.1f, 9.7f, 0}, o);
+                         },
+                         InvalidInputError(""))
+                         .what();
+  EXPECT_NE(what.find("relative_thickness (0.05) are both set"), std::string::npos) << what;
+  o.thickness = 0;
+  o.relative_thickness = -1;
+  EXPECT_THROW(fracture(mesh, {10.1f, 9.7f, 0}, o), InvalidInputError);
+  // A relative thickness beyond the break radius: refused, naming the limit.
+  o.relative_thickness = 1.5;
+  what = test::caught<InvalidInputError>(
+             [&] {
+               fracture(mesh, {10.1f, 9.7f, 0}, o);
+             },
+             InvalidInputError(""))
+             .what();
+  EXPECT_NE(what.find("kFractureMaxRelativeThickness"), std::string::npos) << what;
+  o.relative_thickness = 0;
+  o.inner_submesh = -2;
+  EXPECT_THROW(fracture(mesh, {10.1f, 9.7f, 0}, o), InvalidInputError);
+  EXPECT_TRUE(test::snapshot(mesh) == before);
+  // An "f:submesh" of another type cannot take the inner faces' submesh: refused up front.
+  mesh.add_face_property<float>("f:submesh", 0);
+  o = {};
+  o.thickness = 0.1;
+  what = test::caught<InvalidInputError>(
+             [&] {
+               fracture(mesh, {10.1f, 9.7f, 0}, o);
+             },
+             InvalidInputError(""))
+             .what();
+  EXPECT_NE(what.find("not of type std::int32_t"), std::string::npos) << what;
+  EXPECT_TRUE(mesh.validate().empty());
 }
 
 TEST(Fracture, SameSeedSameShardsBitForBitOtherSeedOtherShards) {

@@ -261,8 +261,8 @@ void test_decimate(void) {
 }
 
 void test_fracture(void) {
-  CHECK(sizeof(hedge_fracture_ring) == 24 && sizeof(hedge_fracture_options) == 464 &&
-        sizeof(hedge_fracture_shard) == 168);
+  CHECK(sizeof(hedge_fracture_ring) == 24 && sizeof(hedge_fracture_options) == 472 &&
+        sizeof(hedge_fracture_shard) == 264);
   hedge_fracture_options o;
   CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o));
   CHECK(o.ring_count == 4 && o.rings[0].points == 4 && o.rings[3].points == 16 && o.density == 1 &&
@@ -272,6 +272,14 @@ void test_fracture(void) {
   CHECK_STATUS(hedge_fracture_options_default(7, &o), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_ERROR_HAS("preset");
   CHECK_STATUS(hedge_fracture_options_default(HEDGE_FRACTURE_ICE, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  /* A break radius in model units (tested further in fracture_test.c): glass's rings summed. */
+  CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o));
+  CHECK(o.inner_submesh == -1 && o.relative_thickness == 0);
+  CHECK_OK(hedge_fracture_options_at_radius(&o, 14));
+  CHECK(o.absolute == 1 && fabs(o.rings[0].spacing - 2) < 1e-12 && fabs(o.rings[3].spacing - 4.8) < 1e-12);
+  o.ring_count = 0;
+  CHECK_STATUS(hedge_fracture_options_at_radius(&o, 1), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("no ring");
 
   hedge_mesh* plate = make_plate(30);
   hedge_geometry before;
@@ -346,6 +354,16 @@ void test_fracture(void) {
     CHECK(g.closed == 1 && g.volume >= s->volume * (1 - 1e-6));
   }
   CHECK(fabs(area - before.area) < 1e-5 * before.area);
+  /* The solids' added faces are in the automatic inner submesh, 1 (the plate has none). */
+  int32_t submesh[4096];
+  uint64_t slots = 0;
+  CHECK_OK(hedge_mesh_copy_face_submeshes(shards[0].mesh, submesh, 4096, &slots));
+  CHECK(slots == counts_of(shards[0].mesh).face_slots);
+  uint32_t inner = 0;
+  for (uint64_t f = 0; f < slots; ++f) inner += submesh[f] == 1;
+  CHECK(inner > slots / 2);
+  CHECK_STATUS(hedge_mesh_copy_face_submeshes(shards[0].mesh, submesh, 1, &slots),
+               HEDGE_ERROR_BUFFER_TOO_SMALL);
   CHECK_OK(hedge_mesh_validate(plate, &problems));
   CHECK(problems == 0);
 

@@ -2,7 +2,9 @@
  * picking.cpp), compiled as C11: strikes in a row on one mesh, whose tree each strike keeps up to
  * date, give the same shards as the same strikes on a twin mesh whose tree is freed before each
  * strike (so each strike builds a fresh one); a strike where an earlier one removed the faces finds
- * no surface there. The rest of hedge_mesh_fracture() is tested in c_api_test.c.
+ * no surface there; a break radius in model units, a relative thickness, the inner faces' submesh
+ * and the principal moments and axes. The rest of hedge_mesh_fracture() is tested in
+ * algorithms_test.c.
  * Each CHECK reports file:line and exits non-zero on failure. */
 #include "capi_test.h"
 
@@ -134,8 +136,84 @@ static void test_strikes_in_a_row(void) {
   CHECK_OK(hedge_mesh_destroy(fresh));
 }
 
+/* The break radius in model units, a thickness relative to it, the inner faces' submesh and the
+ * principal frame of each shard's inertia. */
+static void test_radius_thickness_inner_faces_and_principal_frame(void) {
+  hedge_fracture_options o;
+  CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o));
+  const double refine = o.refine_edge;
+  /* Refused radii leave the options as they were. */
+  CHECK_STATUS(hedge_fracture_options_at_radius(&o, 0), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("radius");
+  CHECK_STATUS(hedge_fracture_options_at_radius(&o, NAN), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_fracture_options_at_radius(NULL, 1), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK(o.absolute == 0 && o.rings[0].spacing == 1.0 && o.refine_edge == refine);
+  CHECK(o.inner_submesh == -1 && o.relative_thickness == 0);
+  CHECK_OK(hedge_fracture_options_at_radius(&o, 3.5));
+  double sum = 0;
+  for (uint32_t i = 0; i < o.ring_count; ++i) sum += o.rings[i].spacing;
+  CHECK(o.absolute == 1 && fabs(sum - 3.5) < 1e-12 && fabs(o.refine_edge - refine * 0.5) < 1e-12);
+
+  for (int explicit_inner = 0; explicit_inner < 2; ++explicit_inner) {
+    hedge_mesh* plate = make_plate(30);
+    o.relative_thickness = 0.05;
+    o.inner_submesh = explicit_inner ? 4 : -1;
+    o.seed = 3;
+    hedge_fracture_shard shards[kMaxShards];
+    uint32_t count = 0;
+    CHECK_OK(hedge_mesh_fracture(plate, 15.2f, 14.9f, 0, &o, shards, kMaxShards, &count));
+    CHECK(count >= 20);
+    const int32_t inner = explicit_inner ? 4 : 1;
+    for (uint32_t i = 0; i < count; ++i) {
+      const hedge_fracture_shard* s = &shards[i];
+      /* 5% of the 3.5 radius: the solid of a flat shard is its area that thick. */
+      CHECK(s->closed == 1 && fabs(s->volume - 0.175 * s->area) < 1e-4 * s->area);
+      /* The principal frame: right-handed, and R diag(moments) R^T is the inertia tensor. */
+      const double* a = s->principal_axes;
+      const double det = a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
+                         a[2] * (a[3] * a[7] - a[4] * a[6]);
+      CHECK(fabs(det - 1) < 1e-9);
+      CHECK(s->principal_moments[0] > 0 && s->principal_moments[0] <= s->principal_moments[1] &&
+            s->principal_moments[1] <= s->principal_moments[2]);
+      double largest = 0, worst = 0;
+      for (int r = 0; r < 9; ++r) largest = fmax(largest, fabs(s->inertia[r]));
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+          double t = 0;
+          for (int k = 0; k < 3; ++k) t += s->principal_moments[k] * a[3 * k + r] * a[3 * k + c];
+          worst = fmax(worst, fabs(t - s->inertia[3 * r + c]));
+        }
+      CHECK(worst <= 1e-9 * largest);
+      /* The faces the solid added carry the inner submesh, the broken faces 0. */
+      uint64_t n = 0;
+      CHECK_STATUS(hedge_mesh_copy_face_submeshes(s->mesh, NULL, 0, &n), HEDGE_ERROR_BUFFER_TOO_SMALL);
+      int32_t* submesh = malloc(sizeof(int32_t) * (n + 1));
+      CHECK(submesh != NULL);
+      CHECK_OK(hedge_mesh_copy_face_submeshes(s->mesh, submesh, n, &n));
+      uint64_t front = 0, added = 0;
+      for (uint64_t f = 0; f < n; ++f) {
+        CHECK(submesh[f] == 0 || submesh[f] == inner);
+        front += submesh[f] == 0, added += submesh[f] == inner;
+      }
+      CHECK(front > 0 && added > front);
+      free(submesh);
+      CHECK_VALID(s->mesh);
+      CHECK_OK(hedge_mesh_destroy(s->mesh));
+      CHECK_OK(hedge_mesh_destroy(s->hull));
+    }
+    /* The plate itself has no submesh: every slot reads 0. */
+    uint64_t n = 0;
+    int32_t first[4] = {7, 7, 7, 7};
+    CHECK_STATUS(hedge_mesh_copy_face_submeshes(plate, first, 4, &n), HEDGE_ERROR_BUFFER_TOO_SMALL);
+    CHECK(n == counts_of(plate).face_slots);
+    CHECK_VALID(plate);
+    CHECK_OK(hedge_mesh_destroy(plate));
+  }
+}
+
 int main(void) {
   test_strikes_in_a_row();
+  test_radius_thickness_inner_faces_and_principal_frame();
   printf("fracture_test: %d checks passed\n", g_checks);
   return 0;
 }

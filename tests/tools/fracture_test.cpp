@@ -46,6 +46,28 @@ TEST_F(HedgeCli, FractureWritesShardsAndASummaryThatDescribesThem) {
   EXPECT_EQ(folder(out).size(), n + 2);
 }
 
+// --break-radius puts the material into model units: twice the radius breaks about four times the
+// area; a negative radius is refused.
+TEST_F(HedgeCli, FractureBreakRadiusIsInModelUnits) {
+  double broken[2] = {0, 0};
+  const char* radius[2] = {"0.12", "0.24"};
+  for (int i = 0; i < 2; ++i) {
+    const fs::path out = tmp(std::string("radius_") + radius[i]);
+    const json j =
+        run_json({"fracture", data("spot_triangulated.obj"), "--impact", "0.0,0.0,0.0", "--tolerance", "10",
+                  "--seed", "4", "--break-radius", radius[i], "-o", out.string(), "--json"});
+    ASSERT_TRUE(j.contains("shards")) << j.dump();
+    EXPECT_EQ(j["break_radius"].get<double>(), std::stod(radius[i]));
+    for (const json& s : j["shards"]) broken[i] += s["area"].get<double>();
+  }
+  EXPECT_GT(broken[1], 2.5 * broken[0]);
+  EXPECT_LT(broken[1], 6.0 * broken[0]);
+  const Result r = run({"fracture", data("spot_triangulated.obj"), "--impact", "0,0,0", "--tolerance", "10",
+                        "--break-radius", "-1", "-o", tmp("bad").string()});
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("--break-radius"), std::string::npos) << r.err;
+}
+
 TEST_F(HedgeCli, FractureTwoRunsGiveByteIdenticalFolders) {
   const std::vector<std::string> base = {"fracture",    data("three_peaks.off"),
                                          "--impact",    "0.1,0.2,10",

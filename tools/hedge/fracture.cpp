@@ -1,5 +1,5 @@
-// hedge fracture IN --impact x,y,z --material NAME|FILE.json --seed S -o DIR: break a mesh at an
-// impact and write the remaining mesh, one OBJ per shard and summary.json into DIR.
+// hedge fracture IN --impact x,y,z --material NAME|FILE.json --seed S [--break-radius R] -o DIR:
+// break a mesh at an impact and write the remaining mesh, one OBJ per shard and summary.json into DIR.
 #include "hedge/algorithms/fracture.h"
 
 #include <unistd.h>
@@ -32,7 +32,7 @@ using nlohmann::json;
 struct FractureCommandOptions {
   std::string input, output, material = "glass", impact;
   std::uint64_t seed = 0;
-  double thickness = 0, density = 1, tolerance = 0;
+  double thickness = 0, density = 1, tolerance = 0, break_radius = 0;
   bool json = false;
   LoadOptions load;
 };
@@ -99,6 +99,7 @@ int run_fracture(const FractureCommandOptions& o) {
   const Vec3 impact = parse_impact(o.impact);
   FractureOptions f;
   f.material = material_from(o.material);
+  if (o.break_radius > 0) f.material = fracture_material_at_radius(f.material, o.break_radius);
   f.seed = o.seed;
   f.thickness = o.thickness;
   f.density = o.density;
@@ -119,6 +120,7 @@ int run_fracture(const FractureCommandOptions& o) {
   summary["impact_on_surface"] = vec(to_double(r.impact_point));
   summary["material"] = f.material.name;
   summary["seed"] = o.seed;
+  summary["break_radius"] = o.break_radius;
   summary["thickness"] = o.thickness;
   summary["density"] = o.density;
   summary["remaining"] = {
@@ -187,6 +189,10 @@ void add_fracture_arguments(CLI::App* app, FractureCommandOptions* o) {
                   "glass, stone, wood, ice, or a material file FILE.json (docs/fracture.md)")
       ->capture_default_str();
   add_seed_option(*app, o->seed, "Seed of the break points");
+  add_real_option(*app, "--break-radius", o->break_radius,
+                  "The outer ring this far from the impact (model units), the material scaled to it; 0: the "
+                  "material's own spacings",
+                  0);
   app->add_option("-o,--output", o->output, "Output folder (created if missing)")->required();
   add_real_option(*app, "--thickness", o->thickness,
                   "Extrude each shard into a solid this thick (model units); 0: none", 0);

@@ -349,42 +349,6 @@ namespace Hedge
             return Status.Checked(Native.hedge_mesh_decimate(id, ref options, out DecimateResult result), result);
         }
 
-        /// <summary>Breaks the mesh at the impact into shards (hedge/algorithms/fracture.h): break points in rings
-        /// around the impact, Voronoi-like cells of faces around them on the surface, each cell a new mesh with its
-        /// properties, its hull and mass properties. The broken faces leave this mesh; render buffers see it at their
-        /// next sync. No face within the tolerance, a non-finite impact or options out of range: HedgeException
-        /// (InvalidArgument), and the mesh is unchanged. Dispose the shards (their meshes) when done.</summary>
-        public FractureShard[] Fracture(Vec3 impact, FractureOptions options)
-        {
-            if (options.Rings == null || options.Rings.Length != FractureOptions.MaxRings)
-                throw new ArgumentException("Rings must hold " + FractureOptions.MaxRings + " rings (start from FractureOptions.Preset)",
-                                            "options");
-            pendingRenders.Drain();
-            var native = new NativeFractureShard[Math.Max(1, options.TotalPoints)];
-            uint count;
-            Status.Check(Native.hedge_mesh_fracture(id, impact.X, impact.Y, impact.Z, ref options, native,
-                                                    (uint)options.TotalPoints, out count));
-            var shards = new FractureShard[count];
-            for (int i = 0; i < shards.Length; ++i)
-            {
-                NativeFractureShard n = native[i];
-                shards[i] = new FractureShard
-                {
-                    Mesh = new HalfEdgeMesh(n.Mesh),
-                    Hull = n.Hull != IntPtr.Zero ? new HalfEdgeMesh(n.Hull) : null,
-                    Centroid = n.Centroid,
-                    Area = n.Area,
-                    Volume = n.Volume,
-                    Mass = n.Mass,
-                    CentreOfMass = n.CentreOfMass,
-                    Inertia = n.Inertia,
-                    Closed = n.Closed != 0,
-                    HullDimension = n.HullDimension,
-                };
-            }
-            return shards;
-        }
-
         /// <summary>Smooths the positions of the live vertices; render buffers see the moves at their next sync.</summary>
         /// <param name="options">Method, iterations and steps; see <see cref="SmoothOptions.Default"/>.</param>
         /// <param name="mask">Optional (null): one byte per vertex slot; only vertices with a nonzero byte move.</param>
@@ -613,17 +577,6 @@ namespace Hedge
         // their way. Each forwards to the method named in its summary; docs/names.md maps every name.
         // SplitFace and SplitAllFaces keep the original's names as they are.
         // =========================================================================================
-
-        /// <summary>The original's SimulateBreaking, on any surface and repeatable: <see cref="Fracture"/> with a
-        /// preset material and a seed. Returns the shards, each a mesh ready for engine buffers
-        /// (<see cref="CreateRenderBuffers(RenderOptions)"/>) with its convex hull and mass properties for a rigid
-        /// body.</summary>
-        public FractureShard[] SimulateBreaking(Vec3 impactPoint, FracturePreset material, ulong seed)
-        {
-            FractureOptions o = FractureOptions.Preset(material);
-            o.Seed = seed;
-            return Fracture(impactPoint, o);
-        }
 
         /// <summary>The original's SplitHalfEdge: <see cref="SplitEdge(Edge, Vec3)"/> on the edge of h.</summary>
         public Vertex SplitHalfEdge(HalfEdge h, Vec3 p) { return SplitEdge(h.Edge, p); }

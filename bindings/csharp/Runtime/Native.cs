@@ -82,6 +82,11 @@ namespace Hedge
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int hedge_mesh_fracture(IntPtr mesh, float x, float y, float z, ref FractureOptions options,
                                                        [Out] NativeFractureShard[] shards, uint capacity, out uint count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_fracture_options_at_radius(ref FractureOptions options, double radius);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int hedge_mesh_copy_face_submeshes(IntPtr mesh, [Out] int[] buffer, ulong capacity,
+                                                                  out ulong count);
 
         // ---- Smoothing ----
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]

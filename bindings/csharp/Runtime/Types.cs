@@ -1,8 +1,8 @@
 // Enums and plain structs of the C ABI. Every struct is [StructLayout(LayoutKind.Sequential)] with
 // the field types and order of its C counterpart (int32 booleans stay int fields behind bool
 // properties), so it is blittable and passed by pointer without conversion; FractureOptions and the
-// shard record are the exceptions, their fixed-size arrays (ByValArray) copied by the marshaller once
-// per fracture. The byte sizes are checked against the header's layouts by the tests. Counts and
+// shard record (Fracture.cs) are the exceptions, their fixed-size arrays (ByValArray) copied by the
+// marshaller once per fracture. The byte sizes are checked against the header's layouts by the tests. Counts and
 // slot indices, uint32_t in the C ABI, are int here, the type Unity's APIs take: the same bits for
 // every value up to int.MaxValue, and the binding's Counts properties refuse a mesh beyond that.
 using System;
@@ -279,139 +279,6 @@ namespace Hedge
         {
             get { return Status.Checked(Native.hedge_decimate_options_default(out DecimateOptions o), o); }
         }
-    }
-
-    /// <summary>The fracture presets (hedge_fracture_preset).</summary>
-    public enum FracturePreset
-    {
-        /// <summary>Many small shards (40 break points).</summary>
-        Glass = 0,
-        /// <summary>Few large chunks (7 break points).</summary>
-        Stone = 1,
-        /// <summary>Splinters along the grain, x by default (18 break points).</summary>
-        Wood = 2,
-        /// <summary>26 break points.</summary>
-        Ice = 3,
-    }
-
-    /// <summary>One ring of break points (24 bytes, hedge_fracture_ring).</summary>
-    [StructLayout(LayoutKind.Sequential)]
-    public struct FractureRing
-    {
-        /// <summary>Distance from the previous ring (the first: from the impact), greater than 0; in edge lengths of
-        /// the impact face unless <see cref="FractureOptions.Absolute"/>.</summary>
-        public double Spacing;
-        /// <summary>In [0, 1]: how far points stray from even angles and from the ring's radius.</summary>
-        public double Jitter;
-        /// <summary>Break points on the ring: 0 to 100000, and at most 10000 in all rings.</summary>
-        public int Points;
-        uint reserved;
-    }
-
-    /// <summary>Options of <see cref="HalfEdgeMesh.Fracture"/> (464 bytes, hedge_fracture_options): the material's rings
-    /// and grain, the seed, and what each shard gets. Start from <see cref="Preset"/>.</summary>
-    [StructLayout(LayoutKind.Sequential)]
-    public struct FractureOptions
-    {
-        /// <summary>Most rings (HEDGE_FRACTURE_MAX_RINGS).</summary>
-        public const int MaxRings = 16;
-        /// <summary>The rings, innermost first; the first <see cref="RingCount"/> are used.</summary>
-        [MarshalAs(UnmanagedType.ByValArray, SizeConst = MaxRings)]
-        public FractureRing[] Rings;
-        /// <summary>Rings used, 0 to <see cref="MaxRings"/>.</summary>
-        public int RingCount;
-        int absolute;
-        /// <summary>Grain direction, nonzero when <see cref="GrainStretch"/> is greater than 1.</summary>
-        public Vec3 Grain;
-        uint reserved;
-        /// <summary>1 or more: cells this many times longer along the grain.</summary>
-        public double GrainStretch;
-        /// <summary>Longest edge left in the broken area (units of the spacing).</summary>
-        public double RefineEdge;
-        /// <summary>Seed of the break points: the same seed gives the same shards, bit for bit.</summary>
-        public ulong Seed;
-        /// <summary>Greater than 0: each shard is extruded into a closed solid this thick (model units), at most 10
-        /// times the diagonal of the mesh's bounding box.</summary>
-        public double Thickness;
-        /// <summary>Mass per unit volume.</summary>
-        public double Density;
-        /// <summary>Largest distance from the impact to the surface; 0: 1e-3 of the nearest face's longest edge.</summary>
-        public double Tolerance;
-        int hulls;
-        uint reserved2;
-
-        /// <summary>Spacings in model units rather than in edge lengths of the impact face.</summary>
-        public bool Absolute { get { return absolute != 0; } set { absolute = value ? 1 : 0; } }
-        /// <summary>Compute each shard's convex hull.</summary>
-        public bool Hulls { get { return hulls != 0; } set { hulls = value ? 1 : 0; } }
-
-        /// <summary>The break points of the rings used: the most shards an impact can give.</summary>
-        public int TotalPoints
-        {
-            get
-            {
-                int n = 0;
-                for (int i = 0; Rings != null && i < RingCount && i < Rings.Length; ++i) n += (int)Rings[i].Points;
-                return n;
-            }
-        }
-
-        /// <summary>A preset with seed 0, no thickness, density 1, automatic tolerance and hulls on.</summary>
-        public static FractureOptions Preset(FracturePreset preset)
-        {
-            return Status.Checked(Native.hedge_fracture_options_default((int)preset, out FractureOptions o), o);
-        }
-    }
-
-    /// <summary>One shard of <see cref="HalfEdgeMesh.Fracture"/>: its mesh and hull (each disposed with the shard),
-    /// and what a rigid body needs.</summary>
-    public sealed class FractureShard : IDisposable
-    {
-        /// <summary>The shard's faces with their properties (a closed solid with a thickness).</summary>
-        public HalfEdgeMesh Mesh { get; internal set; }
-        /// <summary>Its convex hull, or null (hulls off, or all its points on one line).</summary>
-        public HalfEdgeMesh Hull { get; internal set; }
-        /// <summary>Area-weighted centroid of the broken faces.</summary>
-        public double[] Centroid { get; internal set; }
-        /// <summary>Area of the broken faces.</summary>
-        public double Area { get; internal set; }
-        /// <summary>Volume when closed, else 0.</summary>
-        public double Volume { get; internal set; }
-        /// <summary>Mass at the density when closed, else 0.</summary>
-        public double Mass { get; internal set; }
-        /// <summary>Centre of mass when closed.</summary>
-        public double[] CentreOfMass { get; internal set; }
-        /// <summary>Inertia tensor about the centre of mass, row-major 3 x 3, when closed.</summary>
-        public double[] Inertia { get; internal set; }
-        /// <summary>The mesh has no boundary.</summary>
-        public bool Closed { get; internal set; }
-        /// <summary>0 empty, 1 point, 2 segment, 3 flat (a thin prism), 4 solid.</summary>
-        public int HullDimension { get; internal set; }
-
-        public void Dispose()
-        {
-            if (Mesh != null) Mesh.Dispose();
-            if (Hull != null) Hull.Dispose();
-        }
-    }
-
-    /// <summary>hedge_fracture_shard as the C ABI lays it out (168 bytes).</summary>
-    [StructLayout(LayoutKind.Sequential)]
-    internal struct NativeFractureShard
-    {
-        public IntPtr Mesh;
-        public IntPtr Hull;
-        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 3)]
-        public double[] Centroid;
-        public double Area;
-        public double Volume;
-        public double Mass;
-        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 3)]
-        public double[] CentreOfMass;
-        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 9)]
-        public double[] Inertia;
-        public int Closed;
-        public int HullDimension;
     }
 
     /// <summary>What <see cref="HalfEdgeMesh.Decimate"/> achieved (32 bytes, hedge_decimate_result).</summary>

@@ -199,13 +199,14 @@ namespace Hedge.Tests
         }
 
         // The original's demo on a 24 x 24 plate: glass breaks into many shards whose areas add up, each a valid mesh
-        // with a hull; with a thickness each is a closed solid with mass; the same seed repeats; a miss is refused.
+        // with a hull and, by default, a closed solid with mass (a plate's open shards had none, so a game could not
+        // use them); with a set thickness each is a solid that thick; the same seed repeats; a miss is refused.
         [Test]
         static void SimulateBreakingGivesShardsForRigidBodies()
         {
-            Check.Equal(464, Marshal.SizeOf(typeof(FractureOptions)), "hedge_fracture_options");
+            Check.Equal(472, Marshal.SizeOf(typeof(FractureOptions)), "hedge_fracture_options");
             Check.Equal(24, Marshal.SizeOf(typeof(FractureRing)), "hedge_fracture_ring");
-            Check.Equal(168, Marshal.SizeOf(typeof(NativeFractureShard)), "hedge_fracture_shard");
+            Check.Equal(264, Marshal.SizeOf(typeof(NativeFractureShard)), "hedge_fracture_shard");
             using (var plate = Meshes.Plate(24))
             using (RenderBuffers buffers = plate.CreateRenderBuffers())
             {
@@ -217,8 +218,9 @@ namespace Hedge.Tests
                 {
                     Check.Valid(s.Mesh, "a shard");
                     area += s.Area;
-                    Check.True(s.Hull != null && s.HullDimension == 3, "a flat shard's hull is a thin prism");
-                    Check.True(!s.Closed && s.Mass == 0, "open without a thickness");
+                    Check.True(s.Hull != null && s.HullDimension == 4, "a solid hull");
+                    Check.True(s.Closed && s.Mass > 0 && s.Volume > 0, "a solid with mass by default");
+                    Check.True(s.PrincipalMoments[0] > 0, "a usable inertia");
                     s.Dispose();
                 }
                 Check.True(Math.Abs(area - before) < 1e-5 * before, "areas add up: " + area + " vs " + before);

@@ -2,7 +2,7 @@
 // of area, refusals, the render sync of the remaining mesh, and memory.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { hedge, HedgeError, grid, sample } from './support.mjs';
+import { hedge, HedgeError, grid, gridArrays, sample } from './support.mjs';
 
 //! Area of a mesh from its triangulated arrays (double precision).
 function area(mesh) {
@@ -183,6 +183,30 @@ test('the remaining mesh reaches its RenderBuffers as a partial sync', () => {
   mesh.dispose();
 });
 
+// A 10 x 10 plate of n x n squares broken at its middle: the share of its area that breaks. A preset
+// in edge lengths breaks a quarter of it each time the resolution doubles; a break radius in model
+// units about the same share at every resolution.
+test('breakRadius breaks the same share of an object at every resolution', () => {
+  const share = (n, options) => {
+    const arrays = gridArrays(n);
+    const mesh = hedge.fromBuffers({
+      positions: arrays.positions.map((x) => (x * 10) / n),
+      indices: arrays.indices,
+    });
+    const result = mesh.fracture([5.03, 4.98, 0], { seed: 2, ...options });
+    const broken = result.shards.reduce((sum, s) => sum + s.area, 0);
+    assert.deepEqual(mesh.validate(), []);
+    disposeAll(result);
+    mesh.dispose();
+    return broken / 100;
+  };
+  assert.ok(share(80, {}) < share(20, {}) / 8);
+  for (const n of [10, 20, 80]) {
+    const s = share(n, { breakRadius: 2 });
+    assert.ok(s > 0.12 && s < 0.24, `share at ${n}: ${s}`);
+  }
+});
+
 test('bad strikes throw a HedgeError and leave the mesh unchanged', () => {
   const mesh = grid(10);
   const before = Array.from(mesh.toArrays().indices);
@@ -200,6 +224,8 @@ test('bad strikes throw a HedgeError and leave the mesh unchanged', () => {
   refused([5, 5, 0], { seed: -1 }, /seed/);
   refused([5, 5, 0], { seed: 1.5 }, /seed/);
   refused([5, 5, 0], { density: 0, thickness: 0.1 }, /density/);
+  refused([5, 5, 0], { breakRadius: -1 }, /radius must be finite and positive/);
+  refused([5, 5, 0], { breakRadius: '2' }, /breakRadius must be a number/);
   refused([5, 5, 0], { material: { rings: [{ points: 4, spacing: -1 }] } }, /rings\[0\]\.spacing/);
   refused([5, 5, 0], { material: { rings: [{ points: 2.5, spacing: 1 }] } }, /rings\[0\]\.points/);
   refused([5, 5, 0], { material: { rings: 'many' } }, /rings must be an array/);

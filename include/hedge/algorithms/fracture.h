@@ -58,10 +58,14 @@ namespace hedge {
 //!  - at most kFractureMaxPoints break points in all rings together (each one is matched against
 //!    every face of the broken area, so the scattering costs points x faces of the area);
 //!  - a thickness of at most kFractureMaxThicknessRatio times the diagonal of the mesh's bounding
-//!    box (a thicker solid folds through itself and only inflates the volumes and masses).
+//!    box (a thicker solid folds through itself and only inflates the volumes and masses);
+//!  - a relative_thickness of at most kFractureMaxRelativeThickness: a solid at most as thick as
+//!    the break radius (checked without a pass over the mesh, so a strike with a relative
+//!    thickness costs the broken area only).
 inline constexpr std::size_t kFractureMaxRings = 1000;
 inline constexpr std::size_t kFractureMaxPoints = 10000;
 inline constexpr double kFractureMaxThicknessRatio = 10;
+inline constexpr double kFractureMaxRelativeThickness = 1;
 
 //! One ring of break points around the impact.
 struct FractureRing {
@@ -92,6 +96,21 @@ struct FractureMaterial {
   bool absolute = false;
 };
 
+//! The radius of the outer ring of `material`: its rings' spacings summed, in its units (edge
+//! lengths of the impact face, or model units when absolute). The break radius of a strike is this
+//! in model units; the broken area reaches half the outer spacing farther. 0 without rings.
+double fracture_material_radius(const FractureMaterial& material);
+
+//! `material` in model units, its outer ring `radius` model units from the impact: absolute, every
+//! spacing and refine_edge scaled by radius / fracture_material_radius(material); points, jitter and
+//! grain kept. So a preset breaks the same share of an object whatever its resolution: a game gives
+//! the break radius in metres (or as a fraction of the object's size). The refinement then splits
+//! faces to the same proportion of the radius, about a hundred splits on a coarse mesh, within the
+//! limit of 20000.
+//! \throw InvalidInputError for a radius that is not finite and positive, or a material without
+//!   rings or with a spacing that is not finite and positive (naming the ring).
+FractureMaterial fracture_material_at_radius(FractureMaterial material, double radius);
+
 //! The names fracture_material() knows: "glass", "stone", "wood", "ice".
 std::vector<std::string> fracture_material_names();
 
@@ -111,6 +130,18 @@ struct FractureOptions {
   //! > 0: every open shard is extruded into a closed solid this thick (model units), see Shard::mesh.
   //! At most kFractureMaxThicknessRatio times the diagonal of the mesh's bounding box.
   double thickness = 0;
+  //! > 0 (and thickness 0): the thickness is this fraction of the strike's break radius in model
+  //! units (fracture_material_radius() of the material at the impact: times the impact face's mean
+  //! edge length unless absolute), so shards of any size get a solid of the same proportion. At
+  //! most kFractureMaxRelativeThickness; no pass over the mesh checks it against the mesh's size.
+  //! Both thickness and relative_thickness > 0: refused.
+  double relative_thickness = 0;
+  //! With a thickness, the faces the solid adds (the back copy and the side walls, the shard's new
+  //! cut faces) get this value in the face property "f:submesh" (std::int32_t, the face's submesh
+  //! or material), so a game can give them an inner material; the broken faces keep theirs (0 when
+  //! the mesh has no "f:submesh"). -1: one more than the largest "f:submesh" of the mesh's faces
+  //! (an O(F) pass), or 1 when the mesh has no such property. Otherwise >= 0.
+  std::int32_t inner_submesh = -1;
   //! Mass per unit volume, for the shards' mass properties. Positive.
   double density = 1;
   //! Largest distance (model units) from the impact to the surface. 0: 1e-3 times the longest edge
@@ -127,7 +158,8 @@ struct Shard {
   //! (front), a copy moved by `thickness` against the vertex normals with reversed faces (back),
   //! and two triangles per boundary edge joining them (side walls). Back vertices and corners copy
   //! the properties of the front ones they were moved from; a wall's vertices and corners copy the
-  //! front vertex's properties and its faces the face property of the front face on that edge.
+  //! front vertex's properties and its faces the face properties of the front face on that edge,
+  //! except "f:submesh", which is options.inner_submesh (resolved) on the back and the walls.
   SurfaceMesh mesh;
   //! Area-weighted centroid of the broken faces (the front).
   Vec3d centroid;
@@ -173,12 +205,14 @@ struct FractureResult {
 //!   When the broken area reaches all of a small connected part, that whole part breaks off.
 //! The scattering matches each break point against the faces of the broken area: O(P k) for P break
 //! points (at most kFractureMaxPoints). With thickness > 0, one O(V) pass finds the mesh's bounding
-//! box for the thickness limit.
+//! box for the thickness limit (a relative_thickness needs none). With a thickness of either kind
+//! and inner_submesh -1 on a mesh with "f:submesh", one O(F) pass finds the largest submesh.
 //! \throw InvalidInputError, with the mesh unchanged, for: a non-finite impact; no face within the
 //!   tolerance (giving the distance to the nearest); a mesh with no face, or whose part at the
 //!   impact is a single face (too small to break); an illegal material or option, naming the field
 //!   (ring index included), such as more rings or break points than the limits above or a thickness
-//!   beyond kFractureMaxThicknessRatio times the mesh's diagonal; a bvh of another mesh.
+//!   beyond kFractureMaxThicknessRatio times the mesh's diagonal; a face property "f:submesh" that
+//!   is not std::int32_t while there is a thickness; a bvh of another mesh.
 FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOptions& options = {},
                         FaceBvh* bvh = nullptr);
 

@@ -63,7 +63,7 @@ namespace UnityEngine
         public static void Destroy(Object obj) { Destroyed.Add(obj); }
     }
 
-    public class GameObject : Object
+    public partial class GameObject : Object
     {
         readonly List<Component> components = new List<Component>();
 

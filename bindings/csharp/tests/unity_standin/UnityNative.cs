@@ -121,7 +121,7 @@ namespace UnityEngine
         public Transform transform { get { return identity; } }
     }
 
-    public class Transform
+    public partial class Transform
     {
         // Identity transforms only.
         public Vector3 InverseTransformPoint(Vector3 p) { return p; }
@@ -145,7 +145,7 @@ namespace UnityEngine
 
     public class Collider : Component { }
 
-    public sealed class MeshCollider : Collider
+    public sealed partial class MeshCollider : Collider
     {
         public static readonly List<MeshCollider> All = new List<MeshCollider>();
         Mesh mesh;

@@ -1,0 +1,191 @@
+// Fracture from C# as a game uses it (Runtime/Fracture.cs): a break radius in model units or as a
+// fraction of the object's size, a thickness by default so that every shard has mass, the shards'
+// inner faces in a submesh of their own, and the principal frame of each shard's inertia.
+using System;
+
+namespace Hedge.Tests
+{
+    public static class FractureTests
+    {
+        // A 10 x 10 plate of n x n unit-free squares (each cut into two triangles).
+        static HalfEdgeMesh Pane(int n)
+        {
+            var positions = new float[3 * (n + 1) * (n + 1)];
+            for (int j = 0; j <= n; ++j)
+                for (int i = 0; i <= n; ++i)
+                {
+                    int v = j * (n + 1) + i;
+                    positions[3 * v] = 10f * i / n;
+                    positions[3 * v + 1] = 10f * j / n;
+                }
+            var triangles = new int[6 * n * n];
+            int k = 0;
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i)
+                {
+                    int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+                    foreach (int v in new[] { a, b, c, a, c, d }) triangles[k++] = v;
+                }
+            return HalfEdgeMesh.FromTriangles(positions, triangles);
+        }
+
+        // The share of the pane's area that one strike breaks off.
+        static double BrokenShare(int n, Func<HalfEdgeMesh, FractureOptions> options)
+        {
+            using (HalfEdgeMesh pane = Pane(n))
+            {
+                double before = pane.Geometry.Area, broken = 0;
+                FractureShard[] shards = pane.Fracture(new Vec3(5.03f, 4.98f, 0), options(pane));
+                foreach (FractureShard s in shards)
+                {
+                    broken += s.Area;
+                    s.Dispose();
+                }
+                Check.Valid(pane);
+                return broken / before;
+            }
+        }
+
+        // A preset in edge lengths broke a quarter of the share each time the resolution doubled (7.4%, 1.6%,
+        // 0.4% at Loop x0, x1, x2); a break radius in model units, or a fraction of the object's size, breaks the
+        // same share at every resolution.
+        [Test]
+        static void ABreakRadiusBreaksTheSameShareAtEveryResolution()
+        {
+            Func<HalfEdgeMesh, FractureOptions> preset = m => FractureOptions.Preset(FracturePreset.Glass);
+            Check.True(BrokenShare(80, preset) < BrokenShare(20, preset) / 8, "a preset's share shrinks with the edges");
+            Func<HalfEdgeMesh, FractureOptions> metres = m => FractureOptions.Preset(FracturePreset.Glass).WithBreakRadius(2);
+            Func<HalfEdgeMesh, FractureOptions> fraction =
+                m => FractureOptions.Preset(FracturePreset.Glass).WithBreakRadiusFraction(m, 2 / Math.Sqrt(200));
+            foreach (int n in new[] { 10, 20, 80 })
+                foreach (Func<HalfEdgeMesh, FractureOptions> o in new[] { metres, fraction })
+                {
+                    double share = BrokenShare(n, o);
+                    // The broken area reaches the outer ring plus half its spacing: about pi (2.34)^2 of 100.
+                    Check.True(share > 0.12 && share < 0.24, "share at " + n + ": " + share);
+                }
+        }
+
+        [Test]
+        static void WithBreakRadiusScalesACopy()
+        {
+            FractureOptions preset = FractureOptions.Preset(FracturePreset.Ice);
+            double refine = preset.RefineEdge, radius = preset.BreakRadius;
+            FractureOptions o = preset.WithBreakRadius(0.75);
+            Check.True(o.Absolute && !preset.Absolute, "model units, the original kept");
+            Check.Near(0.75, o.BreakRadius, 1e-12, "the outer ring at the radius");
+            Check.Near(refine * 0.75 / radius, o.RefineEdge, 1e-12, "the refinement scaled alike");
+            Check.Equal(radius, preset.BreakRadius, "the original's rings are not shared");
+            Check.Equal(preset.TotalPoints, o.TotalPoints);
+            Check.Throws(HedgeStatus.InvalidArgument, () => preset.WithBreakRadius(0));
+            Check.Throws(HedgeStatus.InvalidArgument, () => preset.WithBreakRadius(double.NaN));
+            using (HalfEdgeMesh pane = Pane(4))
+            {
+                Check.ThrowsType<ArgumentOutOfRangeException>(() => preset.WithBreakRadiusFraction(pane, -1));
+                Check.ThrowsType<ArgumentOutOfRangeException>(() => preset.WithBreakRadiusFraction(pane, double.PositiveInfinity));
+                Check.ThrowsType<ArgumentNullException>(() => preset.WithBreakRadiusFraction(null, 0.1));
+                Check.Near(0.1 * Math.Sqrt(200), preset.WithBreakRadiusFraction(pane, 0.1).BreakRadius, 1e-5,
+                           "a tenth of the diagonal");
+            }
+        }
+
+        // A preset gives a thickness relative to the break radius; a thickness in model units replaces it, and the
+        // other way round; both at once cannot be set from C#, and the library refuses both through the C ABI.
+        [Test]
+        static void ThicknessDefaultsToAShareOfTheBreakRadius()
+        {
+            FractureOptions o = FractureOptions.Preset(FracturePreset.Glass).WithBreakRadius(2);
+            Check.Equal(FractureOptions.GameRelativeThickness, o.RelativeThickness);
+            Check.Equal(-1, o.InnerSubmesh, "the automatic inner submesh");
+            using (HalfEdgeMesh pane = Pane(20))
+            {
+                FractureShard[] shards = pane.Fracture(new Vec3(5.03f, 4.98f, 0), o);
+                foreach (FractureShard s in shards)
+                {
+                    Check.True(s.Closed, "a solid");
+                    Check.Near(s.Area * 0.05 * 2, s.Volume, 1e-4 * s.Area, "5% of the 2 m radius thick");
+                    s.Dispose();
+                }
+            }
+            o.Thickness = 0.3;
+            Check.True(o.Thickness == 0.3 && o.RelativeThickness == 0, "a thickness replaces the relative one");
+            o.RelativeThickness = 0.1;
+            Check.True(o.Thickness == 0 && o.RelativeThickness == 0.1, "and the other way round");
+            o.RelativeThickness = -1;
+            using (HalfEdgeMesh pane = Pane(4))
+                Check.Throws(HedgeStatus.InvalidArgument, () => pane.Fracture(new Vec3(5, 5, 0), o));
+        }
+
+        // The faces a solid adds (back and walls) are in the inner submesh, the broken faces keep theirs (0 here).
+        [Test]
+        static void InnerFacesGetASubmeshOfTheirOwn()
+        {
+            foreach (int inner in new[] { -1, 3 })
+                using (HalfEdgeMesh pane = Pane(20))
+                {
+                    FractureOptions o = FractureOptions.Preset(FracturePreset.Stone).WithBreakRadius(3);
+                    o.InnerSubmesh = inner;
+                    FractureShard[] shards = pane.Fracture(new Vec3(5.03f, 4.98f, 0), o);
+                    Check.True(shards.Length > 0, "shards");
+                    int expected = inner < 0 ? 1 : inner;
+                    foreach (FractureShard s in shards)
+                    {
+                        var submesh = new int[s.Mesh.CopyFaceSubmeshes(null)];
+                        s.Mesh.CopyFaceSubmeshes(submesh);
+                        int front = 0, added = 0;
+                        foreach (int m in submesh)
+                        {
+                            Check.True(m == 0 || m == expected, "submesh " + m);
+                            if (m == 0) ++front; else ++added;
+                        }
+                        Check.True(front > 0 && added > front, "front " + front + ", added " + added);
+                        Check.Valid(s.Mesh);
+                        s.Dispose();
+                    }
+                    var rest = new int[pane.CopyFaceSubmeshes(null)];
+                    pane.CopyFaceSubmeshes(rest);
+                    foreach (int m in rest) Check.Equal(0, m, "the pane has no submesh");
+                    Check.Throws(HedgeStatus.BufferTooSmall, () => pane.CopyFaceSubmeshes(new int[1]));
+                    Check.Valid(pane);
+                }
+        }
+
+        // The principal moments and the rotation of the principal axes give back the full tensor: R diag(m) R^T
+        // equals Inertia to 1e-9 relative, R a proper rotation (a unit quaternion).
+        [Test]
+        static void PrincipalFrameReproducesTheTensor()
+        {
+            using (HalfEdgeMesh pane = Pane(20))
+            {
+                FractureOptions o = FractureOptions.Preset(FracturePreset.Wood).WithBreakRadius(3);
+                o.Density = 700;
+                o.Seed = 11;
+                FractureShard[] shards = pane.Fracture(new Vec3(5.03f, 4.98f, 0), o);
+                Check.True(shards.Length >= 8, "wood shards: " + shards.Length);
+                foreach (FractureShard s in shards)
+                {
+                    double[] q = s.PrincipalRotation(), m = s.PrincipalMoments;
+                    double x = q[0], y = q[1], z = q[2], w = q[3];
+                    Check.Near(1, x * x + y * y + z * z + w * w, 1e-12, "a unit quaternion");
+                    var r = new double[]
+                    {
+                        1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w),
+                        2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w),
+                        2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y),
+                    };
+                    double largest = 0;
+                    foreach (double v in s.Inertia) largest = Math.Max(largest, Math.Abs(v));
+                    for (int i = 0; i < 3; ++i)
+                        for (int j = 0; j < 3; ++j)
+                        {
+                            double t = 0;
+                            for (int k = 0; k < 3; ++k) t += r[3 * i + k] * m[k] * r[3 * j + k];
+                            Check.Near(s.Inertia[3 * i + j], t, 1e-9 * largest, "tensor (" + i + ", " + j + ")");
+                        }
+                    Check.True(m[0] > 0 && m[0] <= m[1] && m[1] <= m[2], "ascending positive moments");
+                    s.Dispose();
+                }
+            }
+        }
+    }
+}
