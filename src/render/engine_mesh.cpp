@@ -48,6 +48,14 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
   check_finite(view.normals, "normal", [](const Vec3& v) { return is_finite(v); });
   check_finite(view.texcoords, "texcoord", [](const Vec2& v) { return is_finite(v); });
   check_finite(view.colors, "color", [](const Color& c) { return finite(c); });
+  const std::size_t triangles = view.indices.size() / 3;
+  if (!view.submeshes.empty() && view.submeshes.size() != triangles)
+    throw InvalidInputError("engine mesh: submeshes has " + std::to_string(view.submeshes.size()) +
+                            " entries for " + std::to_string(triangles) + " triangles");
+  for (std::size_t t = 0; t < view.submeshes.size(); ++t)
+    if (view.submeshes[t] < 0 || view.submeshes[t] > 65535)
+      throw InvalidInputError("engine mesh: submesh of triangle " + std::to_string(t) + " is " +
+                              std::to_string(view.submeshes[t]) + ", outside [0, 65535]");
   // Positions are checked by build().
 
   // Each corner carries the index of its engine vertex through the build, encoded exactly in the
@@ -70,7 +78,9 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
   bo.weld = options.weld;
   bo.weld_epsilon = options.weld_epsilon;
   bo.corner_attributes = true;
-  SurfaceMesh mesh = build(in, bo, report);
+  BuildReport local;
+  BuildReport& rep = report ? *report : local;
+  SurfaceMesh mesh = build(in, bo, &rep);
 
   auto origin_prop = mesh.get_halfedge_property<Vec2>("h:texcoord");
   std::vector<Index> origin(mesh.halfedge_slots(), kInvalidIndex);
@@ -96,6 +106,11 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
     });
   if (!view.colors.empty())
     fill(mesh.add_halfedge_property<Color>("h:color"), [&](Index i) { return view.colors[i]; });
+  if (!view.submeshes.empty()) {
+    auto submesh = mesh.add_face_property<std::int32_t>("f:submesh", 0);
+    for (std::size_t t = 0; t < rep.face_map.size(); ++t)
+      if (rep.face_map[t] != kInvalidIndex) submesh[Face(rep.face_map[t])] = view.submeshes[t];
+  }
   return mesh;
 }
 

@@ -286,45 +286,7 @@ void RenderBuffers::unref_vertex(Index rv) {
   free_vertices_.push_back(rv);
 }
 
-// ---- Index slots ----------------------------------------------------------------------------------
-std::uint32_t RenderBuffers::allocate_triangles(std::uint32_t count) {
-  if (count < free_triangles_.size() && !free_triangles_[count].empty()) {
-    const std::uint32_t first = free_triangles_[count].back();
-    free_triangles_[count].pop_back();
-    free_triangle_slots_ -= count;
-    return first;
-  }
-  const std::uint32_t first = static_cast<std::uint32_t>(triangle_slots());
-  const std::size_t n = indices_.size() + 3 * std::size_t(count);
-  grow_capacity(index_capacity_, n);
-  indices_.resize(n, 0);
-  triangle_face_.resize(triangle_slots(), kInvalidIndex);
-  return first;
-}
-
-void RenderBuffers::free_triangles(std::uint32_t first, std::uint32_t count) {
-  // The triangles stay in the buffer as degenerate ones until they are reused or compacted.
-  std::fill_n(indices_.begin() + 3 * std::size_t(first), 3 * std::size_t(count), 0u);
-  std::fill_n(triangle_face_.begin() + first, count, kInvalidIndex);
-  mark_indices_written(3 * first, 3 * count);
-  if (free_triangles_.size() <= count) free_triangles_.resize(count + 1);
-  free_triangles_[count].push_back(first);
-  free_triangle_slots_ += count;
-}
-
-void RenderBuffers::mark_indices_written(std::uint32_t first, std::uint32_t count) {
-  if (!building_ && count > 0) written_indices_.push_back({first, count});
-}
-
-void RenderBuffers::release_face(Face f) {
-  SlotRange& s = face_slots_[f.idx()];
-  if (s.count == 0) return;
-  const std::size_t begin = 3 * std::size_t(s.first), end = begin + 3 * std::size_t(s.count);
-  for (std::size_t i = begin; i < end; ++i) unref_vertex(indices_[i]);
-  free_triangles(s.first, s.count);
-  s = {};
-}
-
+// ---- Faces (index slots: render_buffers_submesh.cpp) ------------------------------------------
 void RenderBuffers::sync_face(Face f) {
   const SurfaceMesh& m = *mesh_;
   corners_.clear();
@@ -362,7 +324,8 @@ void RenderBuffers::sync_face(Face f) {
       new_indices_.insert(new_indices_.end(), {a, c, b});
   }
   SlotRange& s = face_slots_[f.idx()];
-  const bool same_slots = s.count == count;
+  const std::uint32_t region = wanted_region(f);
+  const bool same_slots = s.count == count && face_region_[f.idx()] == region;
   if (same_slots &&
       std::equal(new_indices_.begin(), new_indices_.end(), indices_.begin() + 3 * std::size_t(s.first)))
     return;  // nothing changed (a render vertex made for a corner is then already in use)
@@ -380,8 +343,9 @@ void RenderBuffers::sync_face(Face f) {
     return;
   }
   release_face(f);  // the face's corner count changed (or it is new): slots of the new size
-  s.first = allocate_triangles(count);
+  s.first = allocate_triangles(count, region);
   s.count = count;
+  face_region_[f.idx()] = region;
   std::fill_n(triangle_face_.begin() + s.first, count, f.idx());
   std::copy(new_indices_.begin(), new_indices_.end(), indices_.begin() + 3 * std::size_t(s.first));
   mark_indices_written(3 * s.first, 3 * count);
@@ -469,6 +433,7 @@ void RenderBuffers::grow_element_arrays() {
   if (v_first_rv_.size() < m.vertex_slots()) v_first_rv_.resize(m.vertex_slots(), kInvalidIndex);
   if (corner_rv_.size() < m.halfedge_slots()) corner_rv_.resize(m.halfedge_slots(), kInvalidIndex);
   if (face_slots_.size() < m.face_slots()) face_slots_.resize(m.face_slots());
+  if (face_region_.size() < m.face_slots()) face_region_.resize(m.face_slots(), 0);
   if (computed_normals_ || follow_normals_) {
     if (vertex_normal_.size() < m.vertex_slots()) vertex_normal_.resize(m.vertex_slots());
     if (normal_stamp_.size() < m.vertex_slots()) normal_stamp_.resize(m.vertex_slots(), 0);
@@ -486,18 +451,16 @@ void RenderBuffers::full_build() {
   free_vertices_.clear();
   v_first_rv_.assign(m.vertex_slots(), kInvalidIndex);
   corner_rv_.assign(m.halfedge_slots(), kInvalidIndex);
-  indices_.clear();
-  triangle_face_.clear();
   face_slots_.assign(m.face_slots(), SlotRange{});
-  free_triangles_.clear();
-  free_triangle_slots_ = 0;
+  face_region_.assign(m.face_slots(), 0);
+  layout_regions();  // the index buffer's regions, one per submesh
   vertex_normal_.clear();
   normal_stamp_.clear();
   grow_element_arrays();
   building_ = true;
 
   // Reserve for the common case: about one render vertex per vertex, n - 2 triangles per face.
-  indices_.reserve(3 * m.n_faces());
+  indices_.reserve(indices_.size() + 3 * m.n_faces());
   rv_vertex_.reserve(m.n_vertices());
   for (int s = 0; s < 4; ++s) streams_[s].reserve(m.n_vertices() * stored_width(s));
 
@@ -512,6 +475,7 @@ void RenderBuffers::full_build() {
   }
   for (Face f : m.faces()) sync_face(f);
   building_ = false;
+  measure_regions();
 
   // A little room to grow after a full build; growth beyond it is geometric (grown_capacity).
   vertex_capacity_ = rv_vertex_.size() + rv_vertex_.size() / 16 + 64;
@@ -598,6 +562,11 @@ void RenderBuffers::sync_changes() {
   for (Face f : dirty_faces_)
     if (m.is_live(f)) sync_face(f);
   result_.faces_synced = dirty_faces_.size();
+  if (region_overflow_) {  // a submesh's region ran out of room: lay the regions out again
+    rebuild();
+    return;
+  }
+  grow_regions();
   changes_.consume();
   finish_result();
 }
@@ -664,28 +633,8 @@ RenderRemap RenderBuffers::compact() {
   resize_streams(live);
   free_vertices_.clear();
 
-  // Triangles: pack the faces' ranges in their current order.
-  map.triangles.assign(triangle_slots(), kInvalidIndex);
-  std::vector<std::pair<std::uint32_t, Index>> order;  // (first slot, face)
-  for (std::size_t f = 0; f < face_slots_.size(); ++f)
-    if (face_slots_[f].count > 0) order.push_back({face_slots_[f].first, static_cast<Index>(f)});
-  std::sort(order.begin(), order.end());
-  std::vector<std::uint32_t> packed;
-  packed.reserve(3 * n_triangles());
-  triangle_face_.clear();
-  for (const auto& [first, f] : order) {
-    SlotRange& s = face_slots_[f];
-    const std::uint32_t to = static_cast<std::uint32_t>(packed.size() / 3);
-    for (std::uint32_t t = 0; t < s.count; ++t) {
-      map.triangles[first + t] = to + t;
-      triangle_face_.push_back(f);
-      for (int k = 0; k < 3; ++k) packed.push_back(map.vertices[indices_[3 * std::size_t(first + t) + k]]);
-    }
-    s.first = to;
-  }
-  indices_.swap(packed);
-  free_triangles_.clear();
-  free_triangle_slots_ = 0;
+  pack_triangles(map);  // triangles region by region
+  measure_regions();
   report_full();
   full_pending_ = true;
   return map;

@@ -186,5 +186,44 @@ TEST(EngineMesh, BadInputIsRejectedWithAClearMessage) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+TEST(EngineMesh, SubmeshesBecomeAFacePropertyThatRenderBuffersGroupBy) {
+  // A quad of two materials: triangle 0 in submesh 1, triangle 1 in submesh 0, plus a degenerate
+  // triangle that the build drops (its submesh must not shift the others').
+  std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  std::vector<std::uint32_t> ix = {0, 1, 2, 0, 0, 1, 0, 2, 3};
+  std::vector<std::int32_t> sub = {1, 7, 0};
+  EngineMeshView v{p, ix};
+  v.submeshes = sub;
+  SurfaceMesh m = from_engine_mesh(v);
+  ASSERT_EQ(m.n_faces(), 2u);
+  auto prop = m.get_face_property<std::int32_t>("f:submesh");
+  ASSERT_TRUE(prop);
+  for (Face f : m.faces()) {
+    bool has_v1 = false;
+    for (Vertex w : m.vertices(f)) has_v1 |= m.position(w) == Vec3{1, 0, 0};
+    EXPECT_EQ(prop[f], has_v1 ? 1 : 0) << "face " << f.idx();
+  }
+  RenderBuffers rs(m);
+  ASSERT_EQ(rs.submesh_count(), 2u);
+  EXPECT_EQ(rs.submesh(0).max, (Vec3{1, 1, 0}));
+  EXPECT_EQ(rs.submesh(0).min, (Vec3{0, 0, 0}));
+  EXPECT_EQ(rs.submesh(1).min, (Vec3{0, 0, 0}));
+  EXPECT_TRUE(m.validate().empty());
+
+  auto message = [&](std::vector<std::int32_t> s) -> std::string {
+    EngineMeshView w{p, ix};
+    w.submeshes = s;
+    try {
+      from_engine_mesh(w);
+    } catch (const InvalidInputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(message({0, 1}).find("submeshes has 2 entries for 3 triangles"), std::string::npos);
+  EXPECT_NE(message({0, -1, 0}).find("submesh of triangle 1 is -1"), std::string::npos);
+  EXPECT_FALSE(static_cast<bool>(from_engine_mesh({p, ix}).get_face_property<std::int32_t>("f:submesh")));
+}
+
 }  // namespace
 }  // namespace hedge

@@ -22,6 +22,10 @@ struct EngineMeshView {
   std::span<const Vec3> normals;
   std::span<const Vec2> texcoords;
   std::span<const Color> colors;
+  //! Empty, or one submesh (material) per triangle, each in [0, 65535]: written into the face
+  //! property "f:submesh" (std::int32_t), which RenderBuffers groups the index buffer by. An engine
+  //! mesh of several submeshes passes its triangles submesh after submesh with their ids.
+  std::span<const std::int32_t> submeshes;
 };
 
 struct EngineImportOptions {
@@ -38,9 +42,11 @@ struct EngineImportOptions {
 };
 
 //! Builds a SurfaceMesh from engine arrays, welding positions for topology and keeping normals,
-//! texcoords and colours per corner ("h:normal", "h:texcoord", "h:color"), so that a RenderBuffers
+//! texcoords and colours per corner ("h:normal", "h:texcoord", "h:color") and submeshes per face
+//! ("f:submesh", only when view.submeshes is given), so that a RenderBuffers
 //! with the same winding and axes reproduces the engine's triangles and attributes exactly.
-//! \throw InvalidInputError on mismatched stream sizes, indices out of range or non-finite values;
+//! \throw InvalidInputError on mismatched stream sizes, indices out of range, non-finite values or
+//!        submesh ids outside [0, 65535];
 //!        TopologyError under the strict policy.
 SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptions& options = {},
                              BuildReport* report = nullptr);
