@@ -657,6 +657,7 @@ int main(void) {
   test_subdivide();
   test_picking();
   test_triangle_faces();
+  test_submeshes();
   test_every_function_error_path();
   test_threads();
   test_deprecated_names();

@@ -212,5 +212,6 @@ void test_fracture(void);
 void test_subdivide(void);
 void test_picking(void);
 void test_triangle_faces(void);
+void test_submeshes(void);
 void test_every_function_error_path(void);
 void test_threads(void);
