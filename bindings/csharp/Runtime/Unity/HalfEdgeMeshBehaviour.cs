@@ -1,8 +1,8 @@
 // Unity glue: a component that turns its MeshFilter's mesh into a HalfEdgeMesh, lets scripts edit
 // it, and uploads only the rewritten ranges to a Unity Mesh with SetVertexBufferData /
 // SetIndexBufferData (start and count). One vertex stream per attribute: 0 positions, then normals,
-// texcoords and colours on the next streams, as present; one submesh with all the source's
-// triangles. The GPU buffers are allocated at the library's capacities, so that growth from edits
+// texcoords and colours on the next streams, as present; one submesh per submesh (material) of the
+// source, each a contiguous index range that follows the edits. The GPU buffers are allocated at the library's capacities, so that growth from edits
 // rarely reallocates them.
 using System;
 using UnityEngine;
@@ -87,7 +87,9 @@ namespace Hedge.Unity
                 }
             }
             BuildReport report;
-            HalfEdgeMesh = HalfEdgeMesh.FromEngineMesh(p, source.triangles, fn, fuv, fc, EngineImportOptions.Unity,
+            int[] submeshes;
+            int[] triangles = UnitySubmeshes.ReadTriangles(source, out submeshes);
+            HalfEdgeMesh = HalfEdgeMesh.FromEngineMesh(p, triangles, fn, fuv, fc, submeshes, EngineImportOptions.Unity,
                                                        out report);
             Report = report;
             RenderOptions renderOptions = RenderOptions.Unity;
@@ -139,12 +141,9 @@ namespace Hedge.Unity
                 for (int i = 0; i < n; ++i)
                     mesh.SetIndexBufferData(indices, (int)ranges[i].First, (int)ranges[i].First, (int)ranges[i].Count,
                                             PartialFlags);
-                if ((int)counts.IndexCount != indexCount)
-                {
-                    indexCount = (int)counts.IndexCount;
-                    mesh.SetSubMesh(0, new SubMeshDescriptor(0, indexCount, MeshTopology.Triangles), PartialFlags);
-                }
+                indexCount = (int)counts.IndexCount;
             }
+            UploadSubmeshes(PartialFlags);
             if (recalculateBounds && result.VertexRangeCount > 0) GrowBounds(LoadRanges(true));
         }
 
@@ -235,11 +234,13 @@ namespace Hedge.Unity
             Buffers.CopyIndices(indices);
             mesh.SetIndexBufferParams(gpuIndices, IndexFormat.UInt32);
             mesh.SetIndexBufferData(indices, 0, 0, gpuIndices, MeshUpdateFlags.DontRecalculateBounds);
-            mesh.subMeshCount = 1;
-            mesh.SetSubMesh(0, new SubMeshDescriptor(0, indexCount, MeshTopology.Triangles),
-                            MeshUpdateFlags.DontRecalculateBounds);
+            UploadSubmeshes(MeshUpdateFlags.DontRecalculateBounds);
             if (recalculateBounds) TightenBounds();
         }
+
+        // One SubMeshDescriptor per submesh (material) of the buffers, with the first vertex, vertex count
+        // and bounds that DontRecalculateBounds needs given. O(submeshes).
+        void UploadSubmeshes(MeshUpdateFlags flags) { UnitySubmeshes.SetSubmeshes(mesh, Buffers, flags); }
 
         void UploadWhole(VertexStream stream, float[] data, int unityStream)
         {
