@@ -442,6 +442,7 @@ void RenderBuffers::grow_element_arrays() {
 
 void RenderBuffers::full_build() {
   const SurfaceMesh& m = *mesh_;
+  check_submeshes();  // before anything is reset, so that a refusal leaves the buffers as they were
   attach_sources();
   setup_layout();
   for (auto& s : streams_) s.clear();

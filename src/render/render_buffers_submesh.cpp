@@ -27,15 +27,22 @@ std::uint32_t RenderBuffers::wanted_region(Face f) const {
   return s < 0 ? 0u : static_cast<std::uint32_t>(s);
 }
 
+void RenderBuffers::check_submeshes() const {
+  const SurfaceMesh& m = *mesh_;
+  const auto submesh = m.get_face_property<std::int32_t>("f:submesh");
+  if (!submesh) return;
+  for (Face f : m.faces())
+    if (submesh[f] > kMaxSubmesh)
+      throw InvalidInputError("render buffers: face " + std::to_string(f.idx()) + " has submesh " +
+                              std::to_string(submesh[f]) + ", above the largest allowed, " +
+                              std::to_string(kMaxSubmesh));
+}
+
 void RenderBuffers::layout_regions() {
   const SurfaceMesh& m = *mesh_;
   f_submesh_ = m.get_face_property<std::int32_t>("f:submesh");
   std::vector<std::uint32_t> count(1, 0);
   for (Face f : m.faces()) {
-    if (f_submesh_ && f_submesh_[f] > kMaxSubmesh)
-      throw InvalidInputError("render buffers: face " + std::to_string(f.idx()) + " has submesh " +
-                              std::to_string(f_submesh_[f]) + ", above the largest allowed, " +
-                              std::to_string(kMaxSubmesh));
     const std::uint32_t r = wanted_region(f);
     if (r >= count.size()) count.resize(r + 1, 0);
     count[r] += static_cast<std::uint32_t>(m.valence(f) - 2);

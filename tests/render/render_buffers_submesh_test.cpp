@@ -296,8 +296,20 @@ TEST(RenderBuffersSubmesh, SubdivisionAndDecimationKeepTheSubmeshes) {
 
 TEST(RenderBuffersSubmesh, ASubmeshAboveTheLimitIsRefused) {
   SurfaceMesh m = grid_with_submeshes(2);
-  m.get_face_property<std::int32_t>("f:submesh")[*m.faces().begin()] = 1 << 20;
+  auto s = m.get_face_property<std::int32_t>("f:submesh");
+  const Face f = *m.faces().begin();
+  s[f] = 1 << 20;
   EXPECT_THROW(RenderBuffers rs(m), InvalidInputError);
+  // A sync that meets one refuses too, and the buffers work on once the id is fixed.
+  s[f] = 0;
+  RenderBuffers rs(m);
+  s[f] = 1 << 20;
+  m.changes().mark(f, ChangeEvent::faces_changed);
+  EXPECT_THROW(rs.sync(), InvalidInputError);
+  s[f] = 2;
+  rs.sync();
+  EXPECT_EQ(rs.face_submesh(f), 2u);
+  expect_submeshes(rs);
 }
 
 }  // namespace

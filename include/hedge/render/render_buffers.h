@@ -192,7 +192,10 @@ class RenderBuffers {
   }
   //! Triangle slot -> face index (kInvalidIndex for a free slot), triangle_slots() entries.
   std::span<const Index> triangle_faces() const { return triangle_face_; }
-  //! Submeshes: 1 + the largest "f:submesh" of a face at the last full build (at least 1).
+  //! Submeshes: 1 + the largest "f:submesh" of a face at the last full build (at least 1). A face's
+  //! submesh is at most 65535: the constructor, rebuild() and a sync that must rebuild throw
+  //! InvalidInputError for a larger one (a sync leaves the buffers as its last good state, and the
+  //! edits stay pending until the id is fixed). A negative one counts as 0.
   std::size_t submesh_count() const { return regions_.size(); }
   //! Submesh i's index range, vertex range and bounds, as of the last sync. O(1). The vertex range
   //! and the box are exact after a full build (the first sync, rebuild(), a region's overflow) and
@@ -264,6 +267,8 @@ class RenderBuffers {
   void free_triangles(std::uint32_t first, std::uint32_t count, std::uint32_t r);
   //! The region face f's triangles belong in: its "f:submesh" (negative counts as 0).
   std::uint32_t wanted_region(Face f) const;
+  //! \throw InvalidInputError if a face's submesh is above 65535 (each id costs a region).
+  void check_submeshes() const;
   //! Lays out one region per submesh for a full build, each but the last with spare room.
   void layout_regions();
   //! compact(): packs the triangles of live faces region by region, keeping the spare room.
