@@ -37,6 +37,8 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
   check_stream(view.normals, n, "normals");
   check_stream(view.texcoords, n, "texcoords");
   check_stream(view.colors, n, "colors");
+  check_stream(view.tangents, n, "tangents");
+  check_stream(view.texcoords1, n, "texcoords1");
   if (view.indices.size() % 3 != 0)
     throw InvalidInputError("engine mesh: " + std::to_string(view.indices.size()) +
                             " indices is not a whole number of triangles");
@@ -48,6 +50,8 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
   check_finite(view.normals, "normal", [](const Vec3& v) { return is_finite(v); });
   check_finite(view.texcoords, "texcoord", [](const Vec2& v) { return is_finite(v); });
   check_finite(view.colors, "color", [](const Color& c) { return finite(c); });
+  check_finite(view.tangents, "tangent", [](const Vec4& t) { return is_finite(t); });
+  check_finite(view.texcoords1, "texcoord1", [](const Vec2& v) { return is_finite(v); });
   const std::size_t triangles = view.indices.size() / 3;
   if (!view.submeshes.empty() && view.submeshes.size() != triangles)
     throw InvalidInputError("engine mesh: submeshes has " + std::to_string(view.submeshes.size()) +
@@ -106,6 +110,17 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
     });
   if (!view.colors.empty())
     fill(mesh.add_halfedge_property<Color>("h:color"), [&](Index i) { return view.colors[i]; });
+  if (!view.tangents.empty())
+    fill(mesh.add_halfedge_property<Vec4>("h:tangent"), [&](Index i) {
+      Vec4 t = view.tangents[i];
+      if (options.flip_x) {  // a mirror flips the bitangent's side too
+        t.x = -t.x;
+        t.w = -t.w;
+      }
+      return t;
+    });
+  if (!view.texcoords1.empty())
+    fill(mesh.add_halfedge_property<Vec2>("h:texcoord1"), [&](Index i) { return view.texcoords1[i]; });
   if (!view.submeshes.empty()) {
     auto submesh = mesh.add_face_property<std::int32_t>("f:submesh", 0);
     for (std::size_t t = 0; t < rep.face_map.size(); ++t)

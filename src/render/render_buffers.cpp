@@ -15,8 +15,8 @@
 namespace hedge {
 
 namespace {
-constexpr std::uint32_t kStreamWidth[4] = {3, 3, 2, 4};
-constexpr std::size_t kMaxFloats = 12;
+constexpr std::uint32_t kStreamWidth[6] = {3, 3, 2, 4, 4, 2};
+constexpr std::size_t kMaxFloats = 18;
 using Floats = std::array<float, kMaxFloats>;
 
 // Capacity a buffer of n elements grows to: geometric, so that growth (a GPU reallocation) is rare.
@@ -83,6 +83,8 @@ void RenderBuffers::attach_sources() {
   v_texcoord_ = {};
   h_color_ = {};
   v_color_ = {};
+  h_tangent_ = {};
+  h_texcoord1_ = {};
   computed_normals_ = false;
   follow_normals_ = false;
   const bool has_normal_attr =
@@ -106,16 +108,22 @@ void RenderBuffers::attach_sources() {
     h_color_ = m.get_halfedge_property<Color>("h:color");
     if (!h_color_) v_color_ = m.get_vertex_property<Color>("v:color");
   }
+  if (options_.tangents) h_tangent_ = m.get_halfedge_property<Vec4>("h:tangent");
+  if (options_.texcoords1) h_texcoord1_ = m.get_halfedge_property<Vec2>("h:texcoord1");
 }
 
 void RenderBuffers::setup_layout() {
   VertexLayout l;
   l.interleaved = options_.interleaved;
-  const bool present[4] = {true, h_normal_ || v_normal_ || computed_normals_, h_texcoord_ || v_texcoord_,
-                           h_color_ || v_color_};
-  std::int32_t* offset[4] = {&l.position, &l.normal, &l.texcoord, &l.color};
+  const bool present[kStreams] = {true,
+                                  h_normal_ || v_normal_ || computed_normals_,
+                                  h_texcoord_ || v_texcoord_,
+                                  h_color_ || v_color_,
+                                  static_cast<bool>(h_tangent_),
+                                  static_cast<bool>(h_texcoord1_)};
+  std::int32_t* offset[kStreams] = {&l.position, &l.normal, &l.texcoord, &l.color, &l.tangent, &l.texcoord1};
   std::uint32_t at = 0;
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < kStreams; ++i) {
     if (!present[i]) {
       *offset[i] = -1;
       continue;
@@ -169,6 +177,21 @@ void RenderBuffers::fill_vertex(Vertex v, Halfedge h, float* out) const {
         o[2] = c.b;
         o[3] = c.a;
       });
+  // Corner-only attributes: a vertex value is never asked for (the corner property exists).
+  attribute(
+      layout_.tangent, 4, h_tangent_, [] { return Vec4{}; },
+      [&](const Vec4& t, float* o) {
+        o[0] = sx * t.x;
+        o[1] = t.y;
+        o[2] = t.z;
+        o[3] = sx * t.w;
+      });
+  attribute(
+      layout_.texcoord1, 2, h_texcoord1_, [] { return Vec2{}; },
+      [](const Vec2& t, float* o) {
+        o[0] = t.x;
+        o[1] = t.y;
+      });
 }
 
 void RenderBuffers::read_vertex(Index rv, float* out) const {
@@ -177,7 +200,7 @@ void RenderBuffers::read_vertex(Index rv, float* out) const {
     return;
   }
   std::uint32_t at = 0;
-  for (int s = 0; s < 4; ++s) {
+  for (int s = 0; s < kStreams; ++s) {
     if (!stream_present(s)) continue;
     std::memcpy(out + at, streams_[s].data() + std::size_t(rv) * kStreamWidth[s],
                 kStreamWidth[s] * sizeof(float));
@@ -193,8 +216,12 @@ bool RenderBuffers::stream_present(int s) const {
       return layout_.normal >= 0;
     case 2:
       return layout_.texcoord >= 0;
-    default:
+    case 3:
       return layout_.color >= 0;
+    case 4:
+      return layout_.tangent >= 0;
+    default:
+      return layout_.texcoord1 >= 0;
   }
 }
 
@@ -204,7 +231,7 @@ std::uint32_t RenderBuffers::stored_width(int s) const {
 }
 
 void RenderBuffers::resize_streams(std::size_t n) {
-  for (int s = 0; s < 4; ++s)
+  for (int s = 0; s < kStreams; ++s)
     if (const std::uint32_t w = stored_width(s)) streams_[s].resize(n * w);
 }
 
@@ -219,7 +246,7 @@ void RenderBuffers::store_vertex(Index rv, const float* data) {
     std::memcpy(streams_[0].data() + std::size_t(rv) * layout_.stride, data, layout_.stride * sizeof(float));
   } else {
     std::uint32_t at = 0;
-    for (int s = 0; s < 4; ++s) {
+    for (int s = 0; s < kStreams; ++s) {
       if (!stream_present(s)) continue;
       std::memcpy(streams_[s].data() + std::size_t(rv) * kStreamWidth[s], data + at,
                   kStreamWidth[s] * sizeof(float));
@@ -370,6 +397,11 @@ void RenderBuffers::follow_normal(Vertex w) {
   if (v_normal_) {
     update_normal(w);
     v_normal_[w] = vertex_normal_[w.idx()];
+    if (h_tangent_)  // the corners' tangents follow the vertex's new normal
+      for (Halfedge o : m.halfedges(w)) {
+        const Halfedge c = SurfaceMesh::twin(o);
+        if (!m.is_boundary(c)) h_tangent_[c] = orthogonal_tangent(h_tangent_[c], v_normal_[w]);
+      }
     return;
   }
   // Corners that held one value form a group; each group gets the normalised sum of its faces.
@@ -393,8 +425,9 @@ void RenderBuffers::follow_normal(Vertex w) {
   std::size_t i = 0;
   for (Halfedge o : m.halfedges(w)) {
     const Halfedge c = SurfaceMesh::twin(o);
-    if (!m.is_boundary(c))
-      h_normal_[c] = to_float(normalize(normal_groups_[normal_corner_group_[i++]].second));
+    if (m.is_boundary(c)) continue;
+    h_normal_[c] = to_float(normalize(normal_groups_[normal_corner_group_[i++]].second));
+    if (h_tangent_) h_tangent_[c] = orthogonal_tangent(h_tangent_[c], h_normal_[c]);
   }
 }
 
@@ -463,7 +496,7 @@ void RenderBuffers::full_build() {
   // Reserve for the common case: about one render vertex per vertex, n - 2 triangles per face.
   indices_.reserve(indices_.size() + 3 * m.n_faces());
   rv_vertex_.reserve(m.n_vertices());
-  for (int s = 0; s < 4; ++s) streams_[s].reserve(m.n_vertices() * stored_width(s));
+  for (int s = 0; s < kStreams; ++s) streams_[s].reserve(m.n_vertices() * stored_width(s));
 
   if (computed_normals_) {
     // One Newell normal per face, added to its corners in increasing face order.
@@ -545,9 +578,10 @@ void RenderBuffers::sync_changes() {
     if (m.is_live(v)) rewrite_vertex_data(v);
   // Faces: removed ones free their slots first, so that new faces can reuse them. A polygon's
   // triangulation depends on its corner positions, so polygons about a moved vertex are redone.
-  // Following corner normals changed the corners of every face about a seed.
+  // Following corner normals (and the tangents made perpendicular to them) changed the corners of
+  // every face about a seed.
   dirty_faces_.assign(p.faces.begin(), p.faces.end());
-  if (follow_normals_ && h_normal_)
+  if (follow_normals_ && (h_normal_ || h_tangent_))
     for (Vertex w : normal_seeds_)
       if (m.is_live(w) && !m.is_isolated(w))
         for (Face f : m.faces(w)) dirty_faces_.push_back(f);

@@ -1,8 +1,8 @@
 // RenderBuffers: engine-ready vertex and index buffers kept in step with a SurfaceMesh.
 //
 //  - Render vertices. A mesh vertex becomes one render vertex per distinct set of corner
-//    attributes around it: corners whose "h:texcoord", "h:normal" or "h:color" differ (a UV seam,
-//    a hard edge) get separate render vertices, as engines need.
+//    attributes around it: corners whose "h:texcoord", "h:normal", "h:color", "h:tangent" or
+//    "h:texcoord1" differ (a UV seam, a hard edge) get separate render vertices, as engines need.
 //  - Stable slots. Each face owns fixed triangles in the index buffer ((n - 2) for an n-gon) and
 //    each render vertex a fixed slot in the vertex buffer. Freed slots go to free lists and are
 //    reused; until then a freed triangle is degenerate (three equal indices) and a freed vertex
@@ -37,6 +37,7 @@
 #include "hedge/core/color.h"
 #include "hedge/core/export.h"
 #include "hedge/core/surface_mesh.h"
+#include "hedge/render/tangent.h"
 
 namespace hedge {
 
@@ -64,6 +65,14 @@ struct RenderOptions {
   bool texcoords = true;
   //! Colours from "h:color" corners, else "v:color" vertices (type Color), when present.
   bool colors = true;
+  //! Tangents from "h:tangent" corners (Vec4: xyz, handedness w), when present. They are kept as
+  //! imported, not computed (no MikkTSpace): where normals follow the geometry (NormalSource::
+  //! automatic with imported normals), each corner whose normal a sync recomputes gets its tangent
+  //! made perpendicular to the new normal again (Gram-Schmidt, orthogonal_tangent()), w kept; new
+  //! corners of edits get interpolated tangents. With flip_x, x and w are negated.
+  bool tangents = true;
+  //! A second texcoord channel (lightmaps) from "h:texcoord1" corners, when present.
+  bool texcoords1 = true;
   //! One buffer of whole vertices (position, normal, texcoord, colour) or one buffer per stream.
   bool interleaved = true;
   //! Triangle winding in the index buffer, and whether to negate x of positions and normals: for
@@ -75,14 +84,17 @@ struct RenderOptions {
 };
 
 //! Where each attribute sits in a vertex, in floats. An absent attribute has offset -1.
-//! Interleaved: all in vertices(), `stride` floats per vertex. Separate: each in its own stream,
-//! tightly packed (3, 3, 2 and 4 floats).
+//! Interleaved: all in vertices(), `stride` floats per vertex, in the order position, normal,
+//! texcoord, color, tangent, texcoord1. Separate: each in its own stream, tightly packed (3, 3, 2, 4,
+//! 4 and 2 floats).
 struct VertexLayout {
   std::uint32_t stride = 3;
   std::int32_t position = 0;
   std::int32_t normal = -1;
   std::int32_t texcoord = -1;
   std::int32_t color = -1;
+  std::int32_t tangent = -1;
+  std::int32_t texcoord1 = -1;
   bool interleaved = true;
 };
 
@@ -171,6 +183,8 @@ class RenderBuffers {
   std::span<const float> normals() const { return stream(1); }
   std::span<const float> texcoords() const { return stream(2); }
   std::span<const float> colors() const { return stream(3); }
+  std::span<const float> tangents() const { return stream(4); }
+  std::span<const float> texcoords1() const { return stream(5); }
   std::span<const std::uint32_t> indices() const { return indices_; }
   //! Render vertex -> mesh vertex (invalid for a free slot): the vertex map.
   std::span<const Vertex> render_vertex_source() const { return rv_vertex_; }
@@ -296,6 +310,8 @@ class RenderBuffers {
   VertexProperty<Vec2> v_texcoord_;
   HalfedgeProperty<Color> h_color_;
   VertexProperty<Color> v_color_;
+  HalfedgeProperty<Vec4> h_tangent_;
+  HalfedgeProperty<Vec2> h_texcoord1_;
   bool computed_normals_ = false;
   bool follow_normals_ = false;      // attribute normals, recomputed into the mesh around edits
   std::vector<Vec3> vertex_normal_;  // computed normals, per mesh vertex
@@ -306,8 +322,10 @@ class RenderBuffers {
   std::vector<std::pair<Vec3, Vec3d>> normal_groups_;  // follow_normal: old value, new sum
   std::vector<std::size_t> normal_corner_group_;       // follow_normal: group of each corner
 
-  // Vertex buffer: streams_[0] interleaved (or positions), [1..3] normals, texcoords, colours.
-  std::vector<float> streams_[4];
+  // Vertex buffer: streams_[0] interleaved (or positions), [1..5] normals, texcoords, colours,
+  // tangents, second texcoords.
+  static constexpr int kStreams = 6;
+  std::vector<float> streams_[kStreams];
   std::vector<Vertex> rv_vertex_;       // slot -> mesh vertex
   std::vector<Index> rv_next_;          // next render vertex of the same mesh vertex
   std::vector<std::uint32_t> rv_refs_;  // index-buffer entries using the slot
