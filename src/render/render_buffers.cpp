@@ -509,7 +509,7 @@ void RenderBuffers::full_build() {
   }
   for (Face f : m.faces()) sync_face(f);
   building_ = false;
-  measure_regions();
+  regions_measured_ = false;  // measured by the first submesh()
 
   // A little room to grow after a full build; growth beyond it is geometric (grown_capacity).
   vertex_capacity_ = rv_vertex_.size() + rv_vertex_.size() / 16 + 64;
@@ -668,8 +668,8 @@ RenderRemap RenderBuffers::compact() {
   resize_streams(live);
   free_vertices_.clear();
 
-  pack_triangles(map);  // triangles region by region
-  measure_regions();
+  pack_triangles(map);        // triangles region by region
+  regions_measured_ = false;  // measured by the first submesh()
   report_full();
   full_pending_ = true;
   return map;

@@ -42,11 +42,12 @@ void RenderBuffers::layout_regions() {
   const SurfaceMesh& m = *mesh_;
   f_submesh_ = m.get_face_property<std::int32_t>("f:submesh");
   std::vector<std::uint32_t> count(1, 0);
-  for (Face f : m.faces()) {
-    const std::uint32_t r = wanted_region(f);
-    if (r >= count.size()) count.resize(r + 1, 0);
-    count[r] += static_cast<std::uint32_t>(m.valence(f) - 2);
-  }
+  if (f_submesh_)  // without submeshes, the one region needs no count
+    for (Face f : m.faces()) {
+      const std::uint32_t r = wanted_region(f);
+      if (r >= count.size()) count.resize(r + 1, 0);
+      count[r] += static_cast<std::uint32_t>(m.valence(f) - 2);
+    }
   regions_.assign(count.size(), Region{});
   free_triangles_.assign(count.size(), {});
   std::uint32_t at = 0;
@@ -164,6 +165,10 @@ SubmeshRange RenderBuffers::submesh(std::size_t i) const {
   const Region& g = regions_[i];
   const std::uint32_t slots =
       i + 1 == regions_.size() ? static_cast<std::uint32_t>(triangle_slots()) - g.first : g.capacity;
+  if (!regions_measured_) {
+    measure_regions();
+    regions_measured_ = true;
+  }
   SubmeshRange out;
   out.index_start = 3 * g.first;
   out.index_count = 3 * slots;
@@ -184,7 +189,7 @@ std::uint32_t RenderBuffers::region_of_slot(std::uint32_t t) const {
   return static_cast<std::uint32_t>(after - regions_.begin()) - 1;
 }
 
-void RenderBuffers::include_in_region(Region& g, std::uint32_t rv, bool live) const {
+void RenderBuffers::include_in_region(const Region& g, std::uint32_t rv, bool live) const {
   g.vertex_lo = g.has_vertices ? std::min(g.vertex_lo, rv) : rv;
   g.vertex_hi = g.has_vertices ? std::max(g.vertex_hi, rv) : rv;
   g.has_vertices = true;
@@ -196,9 +201,9 @@ void RenderBuffers::include_in_region(Region& g, std::uint32_t rv, bool live) co
   g.has_box = true;
 }
 
-void RenderBuffers::measure_regions() {
+void RenderBuffers::measure_regions() const {
   for (std::size_t r = 0; r < regions_.size(); ++r) {
-    Region& g = regions_[r];
+    const Region& g = regions_[r];
     g.has_vertices = g.has_box = false;
     const std::size_t end = r + 1 == regions_.size() ? triangle_slots() : g.first + g.capacity;
     for (std::size_t t = g.first; t < end; ++t)
@@ -208,6 +213,7 @@ void RenderBuffers::measure_regions() {
 }
 
 void RenderBuffers::grow_regions() {
+  if (!regions_measured_) return;  // the first submesh() measures them all
   for (const SlotRange& w : written_indices_)
     for (std::uint32_t k = w.first; k < w.first + w.count; ++k) {
       const std::uint32_t t = k / 3;

@@ -211,10 +211,11 @@ class RenderBuffers {
   //! InvalidInputError for a larger one (a sync leaves the buffers as its last good state, and the
   //! edits stay pending until the id is fixed). A negative one counts as 0.
   std::size_t submesh_count() const { return regions_.size(); }
-  //! Submesh i's index range, vertex range and bounds, as of the last sync. O(1). The vertex range
-  //! and the box are exact after a full build (the first sync, rebuild(), a region's overflow) and
-  //! after compact(); a sync only grows them, by what it rewrote (O(what changed)), so after vertices
-  //! move inward they may be larger than the submesh, never smaller: a conservative box for culling.
+  //! Submesh i's index range, vertex range and bounds, as of the last sync. O(1), except the first
+  //! call after a full build (the first sync, rebuild(), a region's overflow) or compact(), which
+  //! measures every submesh exactly: O(buffer). Each sync then grows the ranges and boxes by what it
+  //! rewrote (O(what changed)), so after vertices move inward a box may be larger than its submesh,
+  //! never smaller: a conservative box for culling.
   //! \throw InvalidInputError if i >= submesh_count().
   SubmeshRange submesh(std::size_t i) const;
   //! The submesh whose region holds face f's triangles (0 for a face without any).
@@ -348,24 +349,28 @@ class RenderBuffers {
     std::uint32_t first = 0;
     std::uint32_t capacity = 0;  // slots it spans (the last: those it used so far)
     std::uint32_t used = 0;      // slots [first, first + used) handed out at least once
-    // What submesh() reports: exact after a full build or compact(), grown by each sync since.
-    std::uint32_t vertex_lo = 0, vertex_hi = 0;  // index entries' range, [lo, hi]
-    bool has_vertices = false;
-    Vec3 box_lo{0, 0, 0}, box_hi{0, 0, 0};  // live triangles' positions
-    bool has_box = false;
+    // What submesh() reports: measured by the first submesh() after a full build or compact(),
+    // then grown by each sync (mutable: measuring is a cache of what the buffers hold).
+    mutable std::uint32_t vertex_lo = 0, vertex_hi = 0;  // index entries' range, [lo, hi]
+    mutable bool has_vertices = false;
+    mutable Vec3 box_lo{0, 0, 0}, box_hi{0, 0, 0};  // live triangles' positions
+    mutable bool has_box = false;
   };
   //! The region that holds triangle slot t.
   std::uint32_t region_of_slot(std::uint32_t t) const;
   //! Grows region r's vertex range (and, for a live triangle's entry, its box) by render vertex rv.
-  void include_in_region(Region& g, std::uint32_t rv, bool live) const;
+  void include_in_region(const Region& g, std::uint32_t rv, bool live) const;
   //! Recomputes every region's vertex range and box from the buffers. O(buffer).
-  void measure_regions();
+  void measure_regions() const;
   //! Grows the regions by what this sync wrote. O(what changed).
   void grow_regions();
   FaceProperty<std::int32_t> f_submesh_;
   std::vector<Region> regions_{Region{}};
   std::vector<std::uint32_t> face_region_;  // face -> region of its triangle slots
   bool region_overflow_ = false;            // a region ran out of room: this sync rebuilds
+  // The regions' ranges and boxes are measured (by the first submesh() since a full build or
+  // compact()): until then syncs need not grow them, so buffers nobody asks pay nothing.
+  mutable bool regions_measured_ = false;
 
   // Scratch of sync_face, kept to avoid allocating per face.
   std::vector<Halfedge> corners_;
