@@ -1051,6 +1051,38 @@ HEDGE_API hedge_status hedge_render_buffers_face_triangles(const hedge_render_bu
 HEDGE_API hedge_status hedge_render_buffers_triangle_face(const hedge_render_buffers* render,
                                                           uint32_t triangle, uint32_t* out_face);
 
+/* Submeshes (materials). A face's submesh is its "f:submesh" property (0 without it); the index
+ * buffer holds one contiguous range per submesh, in submesh order, each but the last with spare
+ * room (degenerate triangles) so that edits stay local. */
+
+/** One submesh's part of the buffers (hedge::SubmeshRange), as of the last sync: what an engine's
+ *  submesh descriptor needs. Layout (40 bytes): index_start @0, index_count @4, first_vertex @8,
+ *  vertex_count @12 (uint32_t), min @16, max @28 (3 floats each). */
+typedef struct hedge_submesh_range {
+  uint32_t index_start; /**< first entry of the index buffer */
+  uint32_t index_count; /**< entries, spare and free (degenerate) triangles included */
+  uint32_t
+      first_vertex; /**< every index entry of the range lies in [first_vertex, first_vertex + vertex_count) */
+  uint32_t vertex_count;
+  float min[3]; /**< the box of the positions its live triangles use, as in the vertex buffer */
+  float max[3]; /**< (both 0 without live triangles) */
+} hedge_submesh_range;
+
+/** *out_count receives the number of submeshes: 1 + the largest face submesh at the last full build
+ *  (a sync that meets a larger one rebuilds). At least 1. */
+HEDGE_API hedge_status hedge_render_buffers_submesh_count(const hedge_render_buffers* render,
+                                                          uint32_t* out_count);
+/** Fills *out_range with submesh `submesh`'s index range, vertex range and bounds. O(its index
+ *  entries). A submesh >= the count: HEDGE_ERROR_BAD_HANDLE. */
+HEDGE_API hedge_status hedge_render_buffers_submesh(const hedge_render_buffers* render, uint32_t submesh,
+                                                    hedge_submesh_range* out_range);
+/** *out_submesh receives face `face`'s submesh (0 when the mesh has no "f:submesh"). */
+HEDGE_API hedge_status hedge_face_submesh(const hedge_mesh* mesh, uint32_t face, int32_t* out_submesh);
+/** Sets face `face`'s submesh, in [0, 65535] (else HEDGE_ERROR_INVALID_ARGUMENT, nothing changed),
+ *  adding "f:submesh" (0 for every other face) when the mesh has none. Render buffers move the
+ *  face's triangles into that submesh's range at their next sync. */
+HEDGE_API hedge_status hedge_set_face_submesh(hedge_mesh* mesh, uint32_t face, int32_t submesh);
+
 /* ============================================================================================ */
 /* Engine-mesh import (hedge/render/engine_mesh.h)                                              */
 /* ============================================================================================ */
@@ -1100,6 +1132,15 @@ HEDGE_API hedge_status hedge_mesh_vertex_source_indices(const hedge_mesh* mesh, 
                                                         uint64_t capacity, uint64_t* out_count);
 HEDGE_API hedge_status hedge_mesh_corner_source_indices(const hedge_mesh* mesh, int32_t* buffer,
                                                         uint64_t capacity, uint64_t* out_count);
+
+/** hedge_mesh_from_engine_mesh() with one submesh (material) per triangle: triangle_submeshes holds
+ *  index_count / 3 ids in [0, 65535] (NULL: every face in submesh 0, as hedge_mesh_from_engine_mesh()),
+ *  kept as the face property "f:submesh" through edits, subdivision, decimation and fracture. An
+ *  engine mesh of several submeshes passes its triangles submesh after submesh with their ids. */
+HEDGE_API hedge_status hedge_mesh_from_engine_mesh_with_submeshes(
+    const float* positions, uint32_t vertex_count, const uint32_t* indices, uint32_t index_count,
+    const float* normals, const float* texcoords, const float* colors, const int32_t* triangle_submeshes,
+    const hedge_engine_import_options* options, hedge_build_report* out_report, hedge_mesh** out_mesh);
 
 /* ============================================================================================ */
 /* Threads (hedge/core/threads.h)                                                               */

@@ -307,6 +307,15 @@ hedge_status hedge_mesh_from_engine_mesh(const float* positions, uint32_t vertex
                                          const float* texcoords, const float* colors,
                                          const hedge_engine_import_options* options,
                                          hedge_build_report* out_report, hedge_mesh** out_mesh) {
+  return hedge_mesh_from_engine_mesh_with_submeshes(positions, vertex_count, indices, index_count, normals,
+                                                    texcoords, colors, nullptr, options, out_report,
+                                                    out_mesh);
+}
+
+hedge_status hedge_mesh_from_engine_mesh_with_submeshes(
+    const float* positions, uint32_t vertex_count, const uint32_t* indices, uint32_t index_count,
+    const float* normals, const float* texcoords, const float* colors, const int32_t* triangle_submeshes,
+    const hedge_engine_import_options* options, hedge_build_report* out_report, hedge_mesh** out_mesh) {
   return guard([&] {
     need(out_mesh, "out_mesh");
     need_array(positions, std::uint64_t(vertex_count) * 3, "positions");
@@ -339,6 +348,8 @@ hedge_status hedge_mesh_from_engine_mesh(const float* positions, uint32_t vertex
     view.normals = nrm;
     view.texcoords = uv;
     view.colors = rgba;
+    if (triangle_submeshes != nullptr)
+      view.submeshes = std::span<const std::int32_t>(triangle_submeshes, index_count / 3);
 
     BuildReport report;
     auto object = std::make_shared<MeshObject>();
@@ -361,6 +372,54 @@ hedge_status hedge_mesh_corner_source_indices(const hedge_mesh* mesh, int32_t* b
   return guard([&] {
     const SurfaceMesh& m = find_mesh(mesh)->mesh;
     copy_sources(m.get_halfedge_property<std::int32_t>(kCornerSource), buffer, capacity, out_count);
+  });
+}
+
+// ---- Submeshes ------------------------------------------------------------------------------------
+hedge_status hedge_render_buffers_submesh_count(const hedge_render_buffers* render, uint32_t* out_count) {
+  return guard([&] {
+    auto object = find_render(render);
+    need(out_count, "out_count") = to_u32(object->sync->submesh_count(), "submesh count");
+  });
+}
+
+hedge_status hedge_render_buffers_submesh(const hedge_render_buffers* render, uint32_t submesh,
+                                          hedge_submesh_range* out_range) {
+  return guard([&] {
+    auto object = find_render(render);
+    check_range("submesh", submesh, object->sync->submesh_count());
+    need(out_range, "out_range");
+    const SubmeshRange r = object->sync->submesh(submesh);
+    *out_range = {r.index_start,
+                  r.index_count,
+                  r.first_vertex,
+                  r.vertex_count,
+                  {r.min.x, r.min.y, r.min.z},
+                  {r.max.x, r.max.y, r.max.z}};
+  });
+}
+
+hedge_status hedge_face_submesh(const hedge_mesh* mesh, uint32_t face, int32_t* out_submesh) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    const Face f = live_face(object->mesh, face);
+    auto prop = object->mesh.get_face_property<std::int32_t>("f:submesh");
+    need(out_submesh, "out_submesh") = prop ? prop[f] : 0;
+  });
+}
+
+hedge_status hedge_set_face_submesh(hedge_mesh* mesh, uint32_t face, int32_t submesh) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    SurfaceMesh& m = object->mesh;
+    const Face f = live_face(m, face);
+    if (submesh < 0 || submesh > 65535)
+      fail(HEDGE_ERROR_INVALID_ARGUMENT, "submesh is " + std::to_string(submesh) + ", outside [0, 65535]");
+    auto prop = m.get_face_property<std::int32_t>("f:submesh");
+    if (!prop) prop = m.add_face_property<std::int32_t>("f:submesh", 0);
+    prop[f] = submesh;
+    m.changes().mark(f, ChangeEvent::faces_changed);
+    m.changes().notify();
   });
 }
 

@@ -55,6 +55,8 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
   check_stream(view.normals, n, "normals");
   check_stream(view.texcoords, n, "texcoords");
   check_stream(view.colors, n, "colors");
+  check_stream(view.tangents, n, "tangents");
+  check_stream(view.texcoords1, n, "texcoords1");
   if (view.indices.size() % 3 != 0)
     throw InvalidInputError("engine mesh: " + std::to_string(view.indices.size()) +
                             " indices is not a whole number of triangles");
@@ -66,6 +68,16 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
   check_finite(view.normals, "normal", [](const Vec3& v) { return is_finite(v); });
   check_finite(view.texcoords, "texcoord", [](const Vec2& v) { return is_finite(v); });
   check_finite(view.colors, "color", [](const Color& c) { return finite(c); });
+  check_finite(view.tangents, "tangent", [](const Vec4& t) { return is_finite(t); });
+  check_finite(view.texcoords1, "texcoord1", [](const Vec2& v) { return is_finite(v); });
+  const std::size_t triangles = view.indices.size() / 3;
+  if (!view.submeshes.empty() && view.submeshes.size() != triangles)
+    throw InvalidInputError("engine mesh: submeshes has " + std::to_string(view.submeshes.size()) +
+                            " entries for " + std::to_string(triangles) + " triangles");
+  for (std::size_t t = 0; t < view.submeshes.size(); ++t)
+    if (view.submeshes[t] < 0 || view.submeshes[t] > 65535)
+      throw InvalidInputError("engine mesh: submesh of triangle " + std::to_string(t) + " is " +
+                              std::to_string(view.submeshes[t]) + ", outside [0, 65535]");
   // Positions are checked by build().
 
   // Each corner carries the index of its engine vertex through the build, encoded exactly in the
@@ -88,7 +100,9 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
   bo.weld = options.weld;
   bo.weld_epsilon = options.weld_epsilon;
   bo.corner_attributes = true;
-  SurfaceMesh mesh = build(in, bo, report);
+  BuildReport local;
+  BuildReport& rep = report ? *report : local;
+  SurfaceMesh mesh = build(in, bo, &rep);
 
   auto origin_prop = mesh.get_halfedge_property<Vec2>("h:texcoord");
   std::vector<Index> origin(mesh.halfedge_slots(), kInvalidIndex);
@@ -115,6 +129,22 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
     });
   if (!view.colors.empty())
     fill(mesh.add_halfedge_property<Color>("h:color"), [&](Index i) { return view.colors[i]; });
+  if (!view.tangents.empty())
+    fill(mesh.add_halfedge_property<Vec4>("h:tangent"), [&](Index i) {
+      Vec4 t = view.tangents[i];
+      if (options.flip_x) {  // a mirror flips the bitangent's side too
+        t.x = -t.x;
+        t.w = -t.w;
+      }
+      return t;
+    });
+  if (!view.texcoords1.empty())
+    fill(mesh.add_halfedge_property<Vec2>("h:texcoord1"), [&](Index i) { return view.texcoords1[i]; });
+  if (!view.submeshes.empty()) {
+    auto submesh = mesh.add_face_property<std::int32_t>("f:submesh", 0);
+    for (std::size_t t = 0; t < rep.face_map.size(); ++t)
+      if (rep.face_map[t] != kInvalidIndex) submesh[Face(rep.face_map[t])] = view.submeshes[t];
+  }
   return mesh;
 }
 

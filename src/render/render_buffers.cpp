@@ -15,8 +15,8 @@
 namespace hedge {
 
 namespace {
-constexpr std::uint32_t kStreamWidth[4] = {3, 3, 2, 4};
-constexpr std::size_t kMaxFloats = 12;
+constexpr std::uint32_t kStreamWidth[6] = {3, 3, 2, 4, 4, 2};
+constexpr std::size_t kMaxFloats = 18;
 using Floats = std::array<float, kMaxFloats>;
 
 // Capacity a buffer of n elements grows to: geometric, so that growth (a GPU reallocation) is rare.
@@ -83,6 +83,8 @@ void RenderBuffers::attach_sources() {
   v_texcoord_ = {};
   h_color_ = {};
   v_color_ = {};
+  h_tangent_ = {};
+  h_texcoord1_ = {};
   computed_normals_ = false;
   follow_normals_ = false;
   const bool has_normal_attr =
@@ -106,16 +108,22 @@ void RenderBuffers::attach_sources() {
     h_color_ = m.get_halfedge_property<Color>("h:color");
     if (!h_color_) v_color_ = m.get_vertex_property<Color>("v:color");
   }
+  if (options_.tangents) h_tangent_ = m.get_halfedge_property<Vec4>("h:tangent");
+  if (options_.texcoords1) h_texcoord1_ = m.get_halfedge_property<Vec2>("h:texcoord1");
 }
 
 void RenderBuffers::setup_layout() {
   VertexLayout l;
   l.interleaved = options_.interleaved;
-  const bool present[4] = {true, h_normal_ || v_normal_ || computed_normals_, h_texcoord_ || v_texcoord_,
-                           h_color_ || v_color_};
-  std::int32_t* offset[4] = {&l.position, &l.normal, &l.texcoord, &l.color};
+  const bool present[kStreams] = {true,
+                                  h_normal_ || v_normal_ || computed_normals_,
+                                  h_texcoord_ || v_texcoord_,
+                                  h_color_ || v_color_,
+                                  static_cast<bool>(h_tangent_),
+                                  static_cast<bool>(h_texcoord1_)};
+  std::int32_t* offset[kStreams] = {&l.position, &l.normal, &l.texcoord, &l.color, &l.tangent, &l.texcoord1};
   std::uint32_t at = 0;
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < kStreams; ++i) {
     if (!present[i]) {
       *offset[i] = -1;
       continue;
@@ -169,6 +177,21 @@ void RenderBuffers::fill_vertex(Vertex v, Halfedge h, float* out) const {
         o[2] = c.b;
         o[3] = c.a;
       });
+  // Corner-only attributes: a vertex value is never asked for (the corner property exists).
+  attribute(
+      layout_.tangent, 4, h_tangent_, [] { return Vec4{}; },
+      [&](const Vec4& t, float* o) {
+        o[0] = sx * t.x;
+        o[1] = t.y;
+        o[2] = t.z;
+        o[3] = sx * t.w;
+      });
+  attribute(
+      layout_.texcoord1, 2, h_texcoord1_, [] { return Vec2{}; },
+      [](const Vec2& t, float* o) {
+        o[0] = t.x;
+        o[1] = t.y;
+      });
 }
 
 void RenderBuffers::read_vertex(Index rv, float* out) const {
@@ -177,7 +200,7 @@ void RenderBuffers::read_vertex(Index rv, float* out) const {
     return;
   }
   std::uint32_t at = 0;
-  for (int s = 0; s < 4; ++s) {
+  for (int s = 0; s < kStreams; ++s) {
     if (!stream_present(s)) continue;
     std::memcpy(out + at, streams_[s].data() + std::size_t(rv) * kStreamWidth[s],
                 kStreamWidth[s] * sizeof(float));
@@ -193,8 +216,12 @@ bool RenderBuffers::stream_present(int s) const {
       return layout_.normal >= 0;
     case 2:
       return layout_.texcoord >= 0;
-    default:
+    case 3:
       return layout_.color >= 0;
+    case 4:
+      return layout_.tangent >= 0;
+    default:
+      return layout_.texcoord1 >= 0;
   }
 }
 
@@ -204,7 +231,7 @@ std::uint32_t RenderBuffers::stored_width(int s) const {
 }
 
 void RenderBuffers::resize_streams(std::size_t n) {
-  for (int s = 0; s < 4; ++s)
+  for (int s = 0; s < kStreams; ++s)
     if (const std::uint32_t w = stored_width(s)) streams_[s].resize(n * w);
 }
 
@@ -219,7 +246,7 @@ void RenderBuffers::store_vertex(Index rv, const float* data) {
     std::memcpy(streams_[0].data() + std::size_t(rv) * layout_.stride, data, layout_.stride * sizeof(float));
   } else {
     std::uint32_t at = 0;
-    for (int s = 0; s < 4; ++s) {
+    for (int s = 0; s < kStreams; ++s) {
       if (!stream_present(s)) continue;
       std::memcpy(streams_[s].data() + std::size_t(rv) * kStreamWidth[s], data + at,
                   kStreamWidth[s] * sizeof(float));
@@ -286,45 +313,7 @@ void RenderBuffers::unref_vertex(Index rv) {
   free_vertices_.push_back(rv);
 }
 
-// ---- Index slots ----------------------------------------------------------------------------------
-std::uint32_t RenderBuffers::allocate_triangles(std::uint32_t count) {
-  if (count < free_triangles_.size() && !free_triangles_[count].empty()) {
-    const std::uint32_t first = free_triangles_[count].back();
-    free_triangles_[count].pop_back();
-    free_triangle_slots_ -= count;
-    return first;
-  }
-  const std::uint32_t first = static_cast<std::uint32_t>(triangle_slots());
-  const std::size_t n = indices_.size() + 3 * std::size_t(count);
-  grow_capacity(index_capacity_, n);
-  indices_.resize(n, 0);
-  triangle_face_.resize(triangle_slots(), kInvalidIndex);
-  return first;
-}
-
-void RenderBuffers::free_triangles(std::uint32_t first, std::uint32_t count) {
-  // The triangles stay in the buffer as degenerate ones until they are reused or compacted.
-  std::fill_n(indices_.begin() + 3 * std::size_t(first), 3 * std::size_t(count), 0u);
-  std::fill_n(triangle_face_.begin() + first, count, kInvalidIndex);
-  mark_indices_written(3 * first, 3 * count);
-  if (free_triangles_.size() <= count) free_triangles_.resize(count + 1);
-  free_triangles_[count].push_back(first);
-  free_triangle_slots_ += count;
-}
-
-void RenderBuffers::mark_indices_written(std::uint32_t first, std::uint32_t count) {
-  if (!building_ && count > 0) written_indices_.push_back({first, count});
-}
-
-void RenderBuffers::release_face(Face f) {
-  SlotRange& s = face_slots_[f.idx()];
-  if (s.count == 0) return;
-  const std::size_t begin = 3 * std::size_t(s.first), end = begin + 3 * std::size_t(s.count);
-  for (std::size_t i = begin; i < end; ++i) unref_vertex(indices_[i]);
-  free_triangles(s.first, s.count);
-  s = {};
-}
-
+// ---- Faces (index slots: render_buffers_submesh.cpp) ------------------------------------------
 void RenderBuffers::sync_face(Face f) {
   const SurfaceMesh& m = *mesh_;
   corners_.clear();
@@ -362,7 +351,8 @@ void RenderBuffers::sync_face(Face f) {
       new_indices_.insert(new_indices_.end(), {a, c, b});
   }
   SlotRange& s = face_slots_[f.idx()];
-  const bool same_slots = s.count == count;
+  const std::uint32_t region = wanted_region(f);
+  const bool same_slots = s.count == count && face_region_[f.idx()] == region;
   if (same_slots &&
       std::equal(new_indices_.begin(), new_indices_.end(), indices_.begin() + 3 * std::size_t(s.first)))
     return;  // nothing changed (a render vertex made for a corner is then already in use)
@@ -380,8 +370,9 @@ void RenderBuffers::sync_face(Face f) {
     return;
   }
   release_face(f);  // the face's corner count changed (or it is new): slots of the new size
-  s.first = allocate_triangles(count);
+  s.first = allocate_triangles(count, region);
   s.count = count;
+  face_region_[f.idx()] = region;
   std::fill_n(triangle_face_.begin() + s.first, count, f.idx());
   std::copy(new_indices_.begin(), new_indices_.end(), indices_.begin() + 3 * std::size_t(s.first));
   mark_indices_written(3 * s.first, 3 * count);
@@ -406,6 +397,11 @@ void RenderBuffers::follow_normal(Vertex w) {
   if (v_normal_) {
     update_normal(w);
     v_normal_[w] = vertex_normal_[w.idx()];
+    if (h_tangent_)  // the corners' tangents follow the vertex's new normal
+      for (Halfedge o : m.halfedges(w)) {
+        const Halfedge c = SurfaceMesh::twin(o);
+        if (!m.is_boundary(c)) h_tangent_[c] = orthogonal_tangent(h_tangent_[c], v_normal_[w]);
+      }
     return;
   }
   // Corners that held one value form a group; each group gets the normalised sum of its faces.
@@ -429,8 +425,9 @@ void RenderBuffers::follow_normal(Vertex w) {
   std::size_t i = 0;
   for (Halfedge o : m.halfedges(w)) {
     const Halfedge c = SurfaceMesh::twin(o);
-    if (!m.is_boundary(c))
-      h_normal_[c] = to_float(normalize(normal_groups_[normal_corner_group_[i++]].second));
+    if (m.is_boundary(c)) continue;
+    h_normal_[c] = to_float(normalize(normal_groups_[normal_corner_group_[i++]].second));
+    if (h_tangent_) h_tangent_[c] = orthogonal_tangent(h_tangent_[c], h_normal_[c]);
   }
 }
 
@@ -469,6 +466,7 @@ void RenderBuffers::grow_element_arrays() {
   if (v_first_rv_.size() < m.vertex_slots()) v_first_rv_.resize(m.vertex_slots(), kInvalidIndex);
   if (corner_rv_.size() < m.halfedge_slots()) corner_rv_.resize(m.halfedge_slots(), kInvalidIndex);
   if (face_slots_.size() < m.face_slots()) face_slots_.resize(m.face_slots());
+  if (face_region_.size() < m.face_slots()) face_region_.resize(m.face_slots(), 0);
   if (computed_normals_ || follow_normals_) {
     if (vertex_normal_.size() < m.vertex_slots()) vertex_normal_.resize(m.vertex_slots());
     if (normal_stamp_.size() < m.vertex_slots()) normal_stamp_.resize(m.vertex_slots(), 0);
@@ -477,6 +475,7 @@ void RenderBuffers::grow_element_arrays() {
 
 void RenderBuffers::full_build() {
   const SurfaceMesh& m = *mesh_;
+  check_submeshes();  // before anything is reset, so that a refusal leaves the buffers as they were
   attach_sources();
   setup_layout();
   for (auto& s : streams_) s.clear();
@@ -486,20 +485,18 @@ void RenderBuffers::full_build() {
   free_vertices_.clear();
   v_first_rv_.assign(m.vertex_slots(), kInvalidIndex);
   corner_rv_.assign(m.halfedge_slots(), kInvalidIndex);
-  indices_.clear();
-  triangle_face_.clear();
   face_slots_.assign(m.face_slots(), SlotRange{});
-  free_triangles_.clear();
-  free_triangle_slots_ = 0;
+  face_region_.assign(m.face_slots(), 0);
+  layout_regions();  // the index buffer's regions, one per submesh
   vertex_normal_.clear();
   normal_stamp_.clear();
   grow_element_arrays();
   building_ = true;
 
   // Reserve for the common case: about one render vertex per vertex, n - 2 triangles per face.
-  indices_.reserve(3 * m.n_faces());
+  indices_.reserve(indices_.size() + 3 * m.n_faces());
   rv_vertex_.reserve(m.n_vertices());
-  for (int s = 0; s < 4; ++s) streams_[s].reserve(m.n_vertices() * stored_width(s));
+  for (int s = 0; s < kStreams; ++s) streams_[s].reserve(m.n_vertices() * stored_width(s));
 
   if (computed_normals_) {
     // One Newell normal per face, added to its corners in increasing face order.
@@ -512,6 +509,7 @@ void RenderBuffers::full_build() {
   }
   for (Face f : m.faces()) sync_face(f);
   building_ = false;
+  regions_measured_ = false;  // measured by the first submesh()
 
   // A little room to grow after a full build; growth beyond it is geometric (grown_capacity).
   vertex_capacity_ = rv_vertex_.size() + rv_vertex_.size() / 16 + 64;
@@ -580,9 +578,10 @@ void RenderBuffers::sync_changes() {
     if (m.is_live(v)) rewrite_vertex_data(v);
   // Faces: removed ones free their slots first, so that new faces can reuse them. A polygon's
   // triangulation depends on its corner positions, so polygons about a moved vertex are redone.
-  // Following corner normals changed the corners of every face about a seed.
+  // Following corner normals (and the tangents made perpendicular to them) changed the corners of
+  // every face about a seed.
   dirty_faces_.assign(p.faces.begin(), p.faces.end());
-  if (follow_normals_ && h_normal_)
+  if (follow_normals_ && (h_normal_ || h_tangent_))
     for (Vertex w : normal_seeds_)
       if (m.is_live(w) && !m.is_isolated(w))
         for (Face f : m.faces(w)) dirty_faces_.push_back(f);
@@ -598,6 +597,11 @@ void RenderBuffers::sync_changes() {
   for (Face f : dirty_faces_)
     if (m.is_live(f)) sync_face(f);
   result_.faces_synced = dirty_faces_.size();
+  if (region_overflow_) {  // a submesh's region ran out of room: lay the regions out again
+    rebuild();
+    return;
+  }
+  grow_regions();
   changes_.consume();
   finish_result();
 }
@@ -664,28 +668,8 @@ RenderRemap RenderBuffers::compact() {
   resize_streams(live);
   free_vertices_.clear();
 
-  // Triangles: pack the faces' ranges in their current order.
-  map.triangles.assign(triangle_slots(), kInvalidIndex);
-  std::vector<std::pair<std::uint32_t, Index>> order;  // (first slot, face)
-  for (std::size_t f = 0; f < face_slots_.size(); ++f)
-    if (face_slots_[f].count > 0) order.push_back({face_slots_[f].first, static_cast<Index>(f)});
-  std::sort(order.begin(), order.end());
-  std::vector<std::uint32_t> packed;
-  packed.reserve(3 * n_triangles());
-  triangle_face_.clear();
-  for (const auto& [first, f] : order) {
-    SlotRange& s = face_slots_[f];
-    const std::uint32_t to = static_cast<std::uint32_t>(packed.size() / 3);
-    for (std::uint32_t t = 0; t < s.count; ++t) {
-      map.triangles[first + t] = to + t;
-      triangle_face_.push_back(f);
-      for (int k = 0; k < 3; ++k) packed.push_back(map.vertices[indices_[3 * std::size_t(first + t) + k]]);
-    }
-    s.first = to;
-  }
-  indices_.swap(packed);
-  free_triangles_.clear();
-  free_triangle_slots_ = 0;
+  pack_triangles(map);        // triangles region by region
+  regions_measured_ = false;  // measured by the first submesh()
   report_full();
   full_pending_ = true;
   return map;

@@ -659,6 +659,7 @@ int main(void) {
   test_engine_sources();
   test_picking();
   test_triangle_faces();
+  test_submeshes();
   test_every_function_error_path();
   test_threads();
   test_deprecated_names();

@@ -214,5 +214,6 @@ void test_mirror(void);
 void test_engine_sources(void);
 void test_picking(void);
 void test_triangle_faces(void);
+void test_submeshes(void);
 void test_every_function_error_path(void);
 void test_threads(void);

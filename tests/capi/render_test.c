@@ -445,3 +445,78 @@ void test_engine_sources(void) {
   CHECK_STATUS(hedge_mesh_corner_source_indices(plain, cs, 32, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_OK(hedge_mesh_destroy(plain));
 }
+
+/* Submeshes: an engine quad of two materials keeps one index range per material through a split and
+ * a move of a face to the other material; bad ids are refused with nothing changed. */
+static void check_submeshes(const hedge_mesh* mesh, const hedge_render_buffers* render, uint32_t expected) {
+  uint32_t count = 0;
+  CHECK_OK(hedge_render_buffers_submesh_count(render, &count));
+  CHECK(count == expected);
+  hedge_buffer_counts bc;
+  CHECK_OK(hedge_render_buffers_counts(render, &bc));
+  uint32_t end = 0;
+  for (uint32_t s = 0; s < count; ++s) {
+    hedge_submesh_range r;
+    CHECK_OK(hedge_render_buffers_submesh(render, s, &r));
+    CHECK(r.index_start == end);
+    end = r.index_start + r.index_count;
+    for (uint32_t t = r.index_start / 3; t < end / 3; ++t) {
+      uint32_t f = INVALID;
+      int32_t sub = -1;
+      CHECK_OK(hedge_render_buffers_triangle_face(render, t, &f));
+      if (f == INVALID) continue;
+      CHECK_OK(hedge_face_submesh(mesh, f, &sub));
+      CHECK(sub == (int32_t)s);
+    }
+    CHECK(r.min[0] <= r.max[0] && r.min[1] <= r.max[1]);
+  }
+  CHECK(end == bc.index_count);
+  hedge_submesh_range r;
+  CHECK_STATUS(hedge_render_buffers_submesh(render, count, &r), HEDGE_ERROR_BAD_HANDLE);
+  CHECK_ERROR_HAS("submesh");
+}
+
+void test_submeshes(void) {
+  const int32_t materials[] = {1, 0};
+  hedge_mesh* mesh = NULL;
+  CHECK_OK(hedge_mesh_from_engine_mesh_with_submeshes(kQuadPositions, 6, kQuadTriangles, 6, NULL,
+                                                      kQuadTexcoords, NULL, materials, NULL, NULL, &mesh));
+  int32_t sub = -1;
+  CHECK_OK(hedge_face_submesh(mesh, 0, &sub));
+  CHECK(sub == 1);
+  hedge_render_buffers* render = NULL;
+  CHECK_OK(hedge_render_buffers_create(mesh, NULL, &render));
+  check_submeshes(mesh, render, 2);
+  hedge_submesh_range r;
+  CHECK_OK(hedge_render_buffers_submesh(render, 1, &r));
+  CHECK(r.min[0] == 0 && r.max[0] == 1 && r.max[1] == 1); /* triangle (0,0) (1,0) (1,1) */
+
+  uint32_t v = 0;
+  CHECK_OK(hedge_split_face(mesh, 0, 0.6f, 0.3f, 0, &v));
+  CHECK_OK(hedge_render_buffers_sync(render, NULL));
+  check_submeshes(mesh, render, 2);
+  CHECK_OK(hedge_set_face_submesh(mesh, 1, 1));
+  CHECK_OK(hedge_render_buffers_sync(render, NULL));
+  check_submeshes(mesh, render, 2);
+  CHECK_OK(hedge_set_face_submesh(mesh, 1, 3)); /* beyond the last submesh: the sync rebuilds */
+  hedge_sync_result result;
+  CHECK_OK(hedge_render_buffers_sync(render, &result));
+  CHECK(result.full == 1);
+  check_submeshes(mesh, render, 4);
+
+  CHECK_STATUS(hedge_set_face_submesh(mesh, 1, -1), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("outside [0, 65535]");
+  CHECK_OK(hedge_face_submesh(mesh, 1, &sub));
+  CHECK(sub == 3);
+  CHECK_STATUS(hedge_face_submesh(mesh, 1, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_VALID(mesh);
+  CHECK_OK(hedge_mesh_destroy(mesh));
+
+  const int32_t bad[] = {0, 70000};
+  mesh = NULL;
+  CHECK_STATUS(hedge_mesh_from_engine_mesh_with_submeshes(kQuadPositions, 6, kQuadTriangles, 6, NULL, NULL,
+                                                          NULL, bad, NULL, NULL, &mesh),
+               HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("submesh of triangle 1 is 70000");
+  CHECK(mesh == NULL);
+}

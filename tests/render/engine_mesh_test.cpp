@@ -9,6 +9,7 @@
 #include "hedge/algorithms/normals.h"
 #include "hedge/core/edge_operations.h"
 #include "hedge/core/face_operations.h"
+#include "hedge/core/operations.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 #include "hedge/render/render_buffers.h"
@@ -188,11 +189,165 @@ TEST(EngineMesh, BadInputIsRejectedWithAClearMessage) {
   EXPECT_TRUE(m.validate().empty());
 }
 
-}  // namespace
-}  // namespace hedge
+TEST(EngineMesh, SubmeshesBecomeAFacePropertyThatRenderBuffersGroupBy) {
+  // A quad of two materials: triangle 0 in submesh 1, triangle 1 in submesh 0, plus a degenerate
+  // triangle that the build drops (its submesh must not shift the others').
+  std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  std::vector<std::uint32_t> ix = {0, 1, 2, 0, 0, 1, 0, 2, 3};
+  std::vector<std::int32_t> sub = {1, 7, 0};
+  EngineMeshView v{p, ix};
+  v.submeshes = sub;
+  SurfaceMesh m = from_engine_mesh(v);
+  ASSERT_EQ(m.n_faces(), 2u);
+  auto prop = m.get_face_property<std::int32_t>("f:submesh");
+  ASSERT_TRUE(prop);
+  for (Face f : m.faces()) {
+    bool has_v1 = false;
+    for (Vertex w : m.vertices(f)) has_v1 |= m.position(w) == Vec3{1, 0, 0};
+    EXPECT_EQ(prop[f], has_v1 ? 1 : 0) << "face " << f.idx();
+  }
+  RenderBuffers rs(m);
+  ASSERT_EQ(rs.submesh_count(), 2u);
+  EXPECT_EQ(rs.submesh(0).max, (Vec3{1, 1, 0}));
+  EXPECT_EQ(rs.submesh(0).min, (Vec3{0, 0, 0}));
+  EXPECT_EQ(rs.submesh(1).min, (Vec3{0, 0, 0}));
+  EXPECT_TRUE(m.validate().empty());
 
-namespace hedge {
-namespace {
+  auto message = [&](std::vector<std::int32_t> s) -> std::string {
+    EngineMeshView w{p, ix};
+    w.submeshes = s;
+    try {
+      from_engine_mesh(w);
+    } catch (const InvalidInputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(message({0, 1}).find("submeshes has 2 entries for 3 triangles"), std::string::npos);
+  EXPECT_NE(message({0, -1, 0}).find("submesh of triangle 1 is -1"), std::string::npos);
+  EXPECT_FALSE(static_cast<bool>(from_engine_mesh({p, ix}).get_face_property<std::int32_t>("f:submesh")));
+}
+
+// A flat quad of two triangles at z = 0 with imported normals (0, 0, 1), tangents along x and a
+// second texcoord channel that differs per vertex.
+struct TangentQuad {
+  std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  std::vector<std::uint32_t> ix = {0, 1, 2, 0, 2, 3};
+  std::vector<Vec3> n = std::vector<Vec3>(4, Vec3{0, 0, 1});
+  std::vector<Vec4> t = std::vector<Vec4>(4, Vec4{1, 0, 0, -1});
+  std::vector<Vec2> uv1 = {{0, 0}, {0.5f, 0}, {0.5f, 0.5f}, {0, 0.5f}};
+  EngineMeshView view() const {
+    EngineMeshView v{p, ix, n};
+    v.tangents = t;
+    v.texcoords1 = uv1;
+    return v;
+  }
+};
+
+TEST(EngineMesh, TangentsAndSecondTexcoordsReachTheBuffers) {
+  TangentQuad q;
+  SurfaceMesh m = from_engine_mesh(q.view());
+  ASSERT_TRUE(m.get_halfedge_property<Vec4>("h:tangent"));
+  ASSERT_TRUE(m.get_halfedge_property<Vec2>("h:texcoord1"));
+  for (bool interleaved : {true, false}) {
+    RenderOptions o;
+    o.interleaved = interleaved;
+    RenderBuffers rs(m, o);
+    const VertexLayout& l = rs.layout();
+    ASSERT_GE(l.tangent, 0);
+    ASSERT_GE(l.texcoord1, 0);
+    EXPECT_EQ(l.stride, 3u + 3u + 4u + 2u);
+    for (std::size_t rv = 0; rv < rs.vertex_slots(); ++rv) {
+      const float* tangent =
+          interleaved ? rs.vertices().data() + rv * l.stride + l.tangent : rs.tangents().data() + 4 * rv;
+      const float* uv1 =
+          interleaved ? rs.vertices().data() + rv * l.stride + l.texcoord1 : rs.texcoords1().data() + 2 * rv;
+      const float* pos = rs.vertices().data() + rv * (interleaved ? l.stride : 3);
+      EXPECT_EQ((Vec4{tangent[0], tangent[1], tangent[2], tangent[3]}), (Vec4{1, 0, 0, -1}));
+      EXPECT_EQ(uv1[0], pos[0] / 2);
+      EXPECT_EQ(uv1[1], pos[1] / 2);
+    }
+  }
+  RenderOptions none;
+  none.tangents = none.texcoords1 = false;
+  EXPECT_EQ(RenderBuffers(m, none).layout().tangent, -1);
+  // A mirror negates x and the handedness.
+  EngineImportOptions mirrored;
+  mirrored.flip_x = true;
+  SurfaceMesh f = from_engine_mesh(q.view(), mirrored);
+  EXPECT_EQ(f.get_halfedge_property<Vec4>("h:tangent")[*f.halfedges().begin()], (Vec4{-1, 0, 0, 1}));
+}
+
+// Where normals follow the geometry, the tangents of the corners whose normal changed are made
+// perpendicular to it again, unit length, handedness kept; a split's new corners too.
+TEST(EngineMesh, TangentsStayPerpendicularToNormalsThatFollowEdits) {
+  TangentQuad q;
+  SurfaceMesh m = from_engine_mesh(q.view());
+  RenderBuffers rs(m);
+  auto normal = m.get_halfedge_property<Vec3>("h:normal");
+  auto tangent = m.get_halfedge_property<Vec4>("h:tangent");
+  auto check = [&](const char* what) {
+    for (Face f : m.faces())
+      for (Halfedge h : m.halfedges(f)) {
+        const Vec4 t = tangent[h];
+        const Vec3 t3{t.x, t.y, t.z};
+        EXPECT_NEAR(dot(t3, normal[h]), 0, 1e-6) << what;
+        EXPECT_NEAR(norm(t3), 1, 1e-6) << what;
+        EXPECT_EQ(t.w, -1.f) << what;
+        const std::size_t stride = rs.layout().stride;
+        const float* b = rs.vertices().data() + rs.render_vertex(h) * stride + rs.layout().tangent;
+        EXPECT_EQ((Vec4{b[0], b[1], b[2], b[3]}), t) << what << ": the buffers show the mesh's tangent";
+      }
+  };
+  Vertex v0, v2;
+  for (Vertex v : m.vertices()) {
+    if (m.position(v) == Vec3{0, 0, 0}) v0 = v;
+    if (m.position(v) == Vec3{1, 1, 0}) v2 = v;
+  }
+  m.set_position(v2, Vec3{1, 1, 1});
+  rs.sync();
+  check("after a move");
+  bool tilted = false;
+  for (Halfedge h : m.halfedges()) tilted |= !m.is_boundary(h) && std::abs(tangent[h].z) > 0.1f;
+  EXPECT_TRUE(tilted) << "the tangents followed the tilted normals";
+  const Halfedge d = m.find_halfedge(v0, v2);  // the diagonal
+  ASSERT_TRUE(d.is_valid());
+  split_edge(m, SurfaceMesh::edge(d), (m.position(m.from_vertex(d)) + m.position(v2)) * 0.5f);
+  rs.sync();
+  check("after a split");
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(EngineMesh, BadTangentsAreRejectedWithAClearMessage) {
+  TangentQuad q;
+  auto message = [](const EngineMeshView& v) -> std::string {
+    try {
+      from_engine_mesh(v);
+    } catch (const InvalidInputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EngineMeshView v = q.view();
+  std::vector<Vec4> one(1);
+  v.tangents = one;
+  EXPECT_NE(message(v).find("tangents has 1 entries for 4 vertices"), std::string::npos) << message(v);
+  std::vector<Vec4> nan_t = q.t;
+  nan_t[2].w = NAN;
+  v.tangents = nan_t;
+  EXPECT_NE(message(v).find("tangent of vertex 2"), std::string::npos) << message(v);
+  std::vector<Vec2> short_uv1(3);
+  v = q.view();
+  v.texcoords1 = short_uv1;
+  EXPECT_NE(message(v).find("texcoords1 has 3 entries"), std::string::npos) << message(v);
+}
+
+TEST(EngineMesh, OrthogonalTangent) {
+  const Vec4 t = orthogonal_tangent(Vec4{1, 0, 1, 0.3f}, Vec3{0, 0, 1});
+  EXPECT_EQ(t, (Vec4{1, 0, 0, 1}));
+  EXPECT_EQ(orthogonal_tangent(Vec4{0, 0, 2, -1}, Vec3{0, 0, 1}), (Vec4{0, 0, 1, -1}));  // along n: kept
+}
+
 
 // The map back to the engine arrays: every corner names its engine vertex (the triangle's own
 // index), every vertex the smallest engine vertex welded into it; after a split the new vertex and

@@ -11,6 +11,7 @@
 #include "hedge/core/export.h"
 #include "hedge/core/surface_mesh.h"
 #include "hedge/core/vec.h"
+#include "hedge/render/tangent.h"
 
 namespace hedge {
 
@@ -22,6 +23,15 @@ struct EngineMeshView {
   std::span<const Vec3> normals;
   std::span<const Vec2> texcoords;
   std::span<const Color> colors;
+  //! Empty, or one submesh (material) per triangle, each in [0, 65535]: written into the face
+  //! property "f:submesh" (std::int32_t), which RenderBuffers groups the index buffer by. An engine
+  //! mesh of several submeshes passes its triangles submesh after submesh with their ids.
+  std::span<const std::int32_t> submeshes;
+  //! Optional, one per vertex: tangents (xyz and the handedness w, Unity's Mesh.tangents), kept per
+  //! corner as "h:tangent", and a second texcoord channel (lightmaps, Unity's uv2), kept per corner
+  //! as "h:texcoord1". Edits interpolate both like any corner property.
+  std::span<const Vec4> tangents;
+  std::span<const Vec2> texcoords1;
 };
 
 struct EngineImportOptions {
@@ -46,10 +56,13 @@ inline constexpr const char* kCornerSource = "h:source";
 inline constexpr const char* kVertexSource = "v:source";
 
 //! Builds a SurfaceMesh from engine arrays, welding positions for topology and keeping normals,
-//! texcoords and colours per corner ("h:normal", "h:texcoord", "h:color"), so that a RenderBuffers
-//! with the same winding and axes reproduces the engine's triangles and attributes exactly. It
-//! records the engine vertex of every corner and vertex (kCornerSource, kVertexSource).
-//! \throw InvalidInputError on mismatched stream sizes, indices out of range or non-finite values;
+//! texcoords, colours, tangents and second texcoords per corner ("h:normal", "h:texcoord",
+//! "h:color", "h:tangent", "h:texcoord1") and submeshes per face ("f:submesh"), each only when given,
+//! so that a RenderBuffers with the same winding and axes reproduces the engine's triangles and
+//! attributes exactly. flip_x negates x of tangents and their handedness w too. It records the
+//! engine vertex of every corner and vertex (kCornerSource, kVertexSource).
+//! \throw InvalidInputError on mismatched stream sizes, indices out of range, non-finite values or
+//!        submesh ids outside [0, 65535];
 //!        TopologyError under the strict policy.
 SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptions& options = {},
                              BuildReport* report = nullptr);

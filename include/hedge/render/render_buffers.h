@@ -1,8 +1,8 @@
 // RenderBuffers: engine-ready vertex and index buffers kept in step with a SurfaceMesh.
 //
 //  - Render vertices. A mesh vertex becomes one render vertex per distinct set of corner
-//    attributes around it: corners whose "h:texcoord", "h:normal" or "h:color" differ (a UV seam,
-//    a hard edge) get separate render vertices, as engines need.
+//    attributes around it: corners whose "h:texcoord", "h:normal", "h:color", "h:tangent" or
+//    "h:texcoord1" differ (a UV seam, a hard edge) get separate render vertices, as engines need.
 //  - Stable slots. Each face owns fixed triangles in the index buffer ((n - 2) for an n-gon) and
 //    each render vertex a fixed slot in the vertex buffer. Freed slots go to free lists and are
 //    reused; until then a freed triangle is degenerate (three equal indices) and a freed vertex
@@ -10,6 +10,12 @@
 //  - Incremental updates. Operations mark what they touch in the mesh's change log
 //    (core/changes.h); sync() rewrites only the slots of touched faces and vertices and returns the
 //    rewritten ranges, sorted and merged, for a partial GPU upload.
+//  - Submeshes (materials). A face's submesh is its "f:submesh" face property (std::int32_t), 0
+//    without it. The index buffer holds one region per submesh, in increasing order, so that each
+//    submesh is one contiguous index range (submesh()). Every region but the last has spare room,
+//    free triangle slots kept degenerate, so that edits stay local; a region that overflows (or a
+//    face of a submesh beyond the last one) makes the sync a full rebuild, which lays the regions out
+//    again with new room. A mesh without "f:submesh" has one region: the whole buffer.
 //  - Transactions. begin() ... edits ... commit() syncs once at the end. A transaction belongs to
 //    the RenderBuffers that opened it; the mesh's change log counts it for this RenderBuffers' consumer
 //    (ChangeLog::begin(id)). So another RenderBuffers of the same mesh, or code that calls
@@ -31,6 +37,7 @@
 #include "hedge/core/color.h"
 #include "hedge/core/export.h"
 #include "hedge/core/surface_mesh.h"
+#include "hedge/render/tangent.h"
 
 namespace hedge {
 
@@ -58,6 +65,14 @@ struct RenderOptions {
   bool texcoords = true;
   //! Colours from "h:color" corners, else "v:color" vertices (type Color), when present.
   bool colors = true;
+  //! Tangents from "h:tangent" corners (Vec4: xyz, handedness w), when present. They are kept as
+  //! imported, not computed (no MikkTSpace): where normals follow the geometry (NormalSource::
+  //! automatic with imported normals), each corner whose normal a sync recomputes gets its tangent
+  //! made perpendicular to the new normal again (Gram-Schmidt, orthogonal_tangent()), w kept; new
+  //! corners of edits get interpolated tangents. With flip_x, x and w are negated.
+  bool tangents = true;
+  //! A second texcoord channel (lightmaps) from "h:texcoord1" corners, when present.
+  bool texcoords1 = true;
   //! One buffer of whole vertices (position, normal, texcoord, colour) or one buffer per stream.
   bool interleaved = true;
   //! Triangle winding in the index buffer, and whether to negate x of positions and normals: for
@@ -69,14 +84,17 @@ struct RenderOptions {
 };
 
 //! Where each attribute sits in a vertex, in floats. An absent attribute has offset -1.
-//! Interleaved: all in vertices(), `stride` floats per vertex. Separate: each in its own stream,
-//! tightly packed (3, 3, 2 and 4 floats).
+//! Interleaved: all in vertices(), `stride` floats per vertex, in the order position, normal,
+//! texcoord, color, tangent, texcoord1. Separate: each in its own stream, tightly packed (3, 3, 2, 4,
+//! 4 and 2 floats).
 struct VertexLayout {
   std::uint32_t stride = 3;
   std::int32_t position = 0;
   std::int32_t normal = -1;
   std::int32_t texcoord = -1;
   std::int32_t color = -1;
+  std::int32_t tangent = -1;
+  std::int32_t texcoord1 = -1;
   bool interleaved = true;
 };
 
@@ -102,6 +120,21 @@ struct SyncResult {
   bool resized = false;
   bool full = false;  //!< everything was rebuilt (first sync, reset, garbage collection)
   bool empty() const { return vertex_ranges.empty() && index_ranges.empty(); }
+};
+
+//! One submesh's part of the buffers: what Unity's SubMeshDescriptor (and a draw call) needs.
+struct SubmeshRange {
+  std::uint32_t index_start = 0;  //!< first entry of the index buffer
+  //! Index-buffer entries, spare and free triangles (degenerate) included.
+  std::uint32_t index_count = 0;
+  //! The render vertices its index entries refer to (free slots' entries, which are 0, included) lie
+  //! in [first_vertex, first_vertex + vertex_count); both 0 for an empty range.
+  std::uint32_t first_vertex = 0;
+  std::uint32_t vertex_count = 0;
+  //! The box of the positions its live triangles use, as written in the vertex buffer (x negated
+  //! with flip_x); both (0, 0, 0) without live triangles.
+  Vec3 min{0, 0, 0};
+  Vec3 max{0, 0, 0};
 };
 
 //! Old-to-new slot maps from compact(); freed slots map to kInvalidIndex.
@@ -138,7 +171,8 @@ class RenderBuffers {
   //! without a reallocation; SyncResult::resized says when they grew beyond.
   std::size_t vertex_capacity() const { return vertex_capacity_; }
   std::size_t index_capacity() const { return index_capacity_; }
-  //! Free triangle slots (degenerate triangles) waiting for reuse or compact().
+  //! Free triangle slots (degenerate triangles) waiting for reuse or compact(), the spare room of
+  //! every submesh region but the last included.
   std::size_t free_triangle_slots() const { return free_triangle_slots_; }
   //! Interleaved layout: every vertex, layout().stride floats each. Separate: the positions.
   std::span<const float> vertices() const { return streams_[0]; }
@@ -149,6 +183,8 @@ class RenderBuffers {
   std::span<const float> normals() const { return stream(1); }
   std::span<const float> texcoords() const { return stream(2); }
   std::span<const float> colors() const { return stream(3); }
+  std::span<const float> tangents() const { return stream(4); }
+  std::span<const float> texcoords1() const { return stream(5); }
   std::span<const std::uint32_t> indices() const { return indices_; }
   //! Render vertex -> mesh vertex (invalid for a free slot): the vertex map.
   std::span<const Vertex> render_vertex_source() const { return rv_vertex_; }
@@ -170,6 +206,22 @@ class RenderBuffers {
   }
   //! Triangle slot -> face index (kInvalidIndex for a free slot), triangle_slots() entries.
   std::span<const Index> triangle_faces() const { return triangle_face_; }
+  //! Submeshes: 1 + the largest "f:submesh" of a face at the last full build (at least 1). A face's
+  //! submesh is at most 65535: the constructor, rebuild() and a sync that must rebuild throw
+  //! InvalidInputError for a larger one (a sync leaves the buffers as its last good state, and the
+  //! edits stay pending until the id is fixed). A negative one counts as 0.
+  std::size_t submesh_count() const { return regions_.size(); }
+  //! Submesh i's index range, vertex range and bounds, as of the last sync. O(1), except the first
+  //! call after a full build (the first sync, rebuild(), a region's overflow) or compact(), which
+  //! measures every submesh exactly: O(buffer). Each sync then grows the ranges and boxes by what it
+  //! rewrote (O(what changed)), so after vertices move inward a box may be larger than its submesh,
+  //! never smaller: a conservative box for culling.
+  //! \throw InvalidInputError if i >= submesh_count().
+  SubmeshRange submesh(std::size_t i) const;
+  //! The submesh whose region holds face f's triangles (0 for a face without any).
+  std::uint32_t face_submesh(Face f) const {
+    return f.is_valid() && f.idx() < face_region_.size() ? face_region_[f.idx()] : 0;
+  }
   //! Render vertices beyond one per used mesh vertex: what seams cost.
   std::size_t seam_splits() const;
   //! Bytes of the whole vertex and index buffers (a full upload).
@@ -192,7 +244,8 @@ class RenderBuffers {
   //! face order, so it also compacts.
   const SyncResult& rebuild();
   //! Syncs, then removes free slots by packing live render vertices and face triangles in their
-  //! current order; returns the old-to-new maps. O(buffer). Every slot may have moved, so
+  //! current order, submesh by submesh (each region but the last keeps spare room, as a full build
+  //! leaves it); returns the old-to-new maps. O(buffer). Every slot may have moved, so
   //! last_result() and the result of the next sync() (or commit()) report whole buffers, `full`
   //! and `resized`: a consumer that only follows sync results (an engine component) uploads
   //! everything after a compaction it did not make itself.
@@ -224,8 +277,17 @@ class RenderBuffers {
   Index find_or_add_render_vertex(Halfedge corner);
   Index allocate_vertex();
   void unref_vertex(Index rv);
-  std::uint32_t allocate_triangles(std::uint32_t count);
-  void free_triangles(std::uint32_t first, std::uint32_t count);
+  //! Triangle slots for `count` triangles in region r (the submesh's region).
+  std::uint32_t allocate_triangles(std::uint32_t count, std::uint32_t r);
+  void free_triangles(std::uint32_t first, std::uint32_t count, std::uint32_t r);
+  //! The region face f's triangles belong in: its "f:submesh" (negative counts as 0).
+  std::uint32_t wanted_region(Face f) const;
+  //! \throw InvalidInputError if a face's submesh is above 65535 (each id costs a region).
+  void check_submeshes() const;
+  //! Lays out one region per submesh for a full build, each but the last with spare room.
+  void layout_regions();
+  //! compact(): packs the triangles of live faces region by region, keeping the spare room.
+  void pack_triangles(RenderRemap& map);
   void mark_indices_written(std::uint32_t first, std::uint32_t count);
   void finish_result();
   //! Fills normal_seeds_ with the vertices whose normals the pending changes affect.
@@ -249,6 +311,8 @@ class RenderBuffers {
   VertexProperty<Vec2> v_texcoord_;
   HalfedgeProperty<Color> h_color_;
   VertexProperty<Color> v_color_;
+  HalfedgeProperty<Vec4> h_tangent_;
+  HalfedgeProperty<Vec2> h_texcoord1_;
   bool computed_normals_ = false;
   bool follow_normals_ = false;      // attribute normals, recomputed into the mesh around edits
   std::vector<Vec3> vertex_normal_;  // computed normals, per mesh vertex
@@ -259,8 +323,10 @@ class RenderBuffers {
   std::vector<std::pair<Vec3, Vec3d>> normal_groups_;  // follow_normal: old value, new sum
   std::vector<std::size_t> normal_corner_group_;       // follow_normal: group of each corner
 
-  // Vertex buffer: streams_[0] interleaved (or positions), [1..3] normals, texcoords, colours.
-  std::vector<float> streams_[4];
+  // Vertex buffer: streams_[0] interleaved (or positions), [1..5] normals, texcoords, colours,
+  // tangents, second texcoords.
+  static constexpr int kStreams = 6;
+  std::vector<float> streams_[kStreams];
   std::vector<Vertex> rv_vertex_;       // slot -> mesh vertex
   std::vector<Index> rv_next_;          // next render vertex of the same mesh vertex
   std::vector<std::uint32_t> rv_refs_;  // index-buffer entries using the slot
@@ -273,9 +339,38 @@ class RenderBuffers {
   std::vector<std::uint32_t> indices_;
   std::vector<SlotRange> face_slots_;  // face -> its triangle slots
   std::vector<Index> triangle_face_;   // triangle slot -> its face (the inverse of face_slots_)
-  std::vector<std::vector<std::uint32_t>> free_triangles_;  // by triangle count: first slots
+  // Free triangle slots by region, then by triangle count: first slots.
+  std::vector<std::vector<std::vector<std::uint32_t>>> free_triangles_;
   std::size_t free_triangle_slots_ = 0;
   std::size_t index_capacity_ = 0;
+
+  // Submesh regions of the index buffer, in triangle slots; the last one grows at the buffer's end.
+  struct Region {
+    std::uint32_t first = 0;
+    std::uint32_t capacity = 0;  // slots it spans (the last: those it used so far)
+    std::uint32_t used = 0;      // slots [first, first + used) handed out at least once
+    // What submesh() reports: measured by the first submesh() after a full build or compact(),
+    // then grown by each sync (mutable: measuring is a cache of what the buffers hold).
+    mutable std::uint32_t vertex_lo = 0, vertex_hi = 0;  // index entries' range, [lo, hi]
+    mutable bool has_vertices = false;
+    mutable Vec3 box_lo{0, 0, 0}, box_hi{0, 0, 0};  // live triangles' positions
+    mutable bool has_box = false;
+  };
+  //! The region that holds triangle slot t.
+  std::uint32_t region_of_slot(std::uint32_t t) const;
+  //! Grows region r's vertex range (and, for a live triangle's entry, its box) by render vertex rv.
+  void include_in_region(const Region& g, std::uint32_t rv, bool live) const;
+  //! Recomputes every region's vertex range and box from the buffers. O(buffer).
+  void measure_regions() const;
+  //! Grows the regions by what this sync wrote. O(what changed).
+  void grow_regions();
+  FaceProperty<std::int32_t> f_submesh_;
+  std::vector<Region> regions_{Region{}};
+  std::vector<std::uint32_t> face_region_;  // face -> region of its triangle slots
+  bool region_overflow_ = false;            // a region ran out of room: this sync rebuilds
+  // The regions' ranges and boxes are measured (by the first submesh() since a full build or
+  // compact()): until then syncs need not grow them, so buffers nobody asks pay nothing.
+  mutable bool regions_measured_ = false;
 
   // Scratch of sync_face, kept to avoid allocating per face.
   std::vector<Halfedge> corners_;

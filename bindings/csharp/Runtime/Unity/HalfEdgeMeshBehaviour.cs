@@ -1,11 +1,11 @@
 // Unity glue: a component that turns its MeshFilter's mesh into a HalfEdgeMesh, lets scripts edit
 // it, and uploads only the rewritten ranges to a Unity Mesh with SetVertexBufferData /
 // SetIndexBufferData (start and count). One vertex stream per attribute: 0 positions, then normals,
-// texcoords and colours on the next streams, as present; one submesh with all the source's
-// triangles. The GPU buffers are allocated at the library's capacities, so that growth from edits
-// rarely reallocates them. Uploads follow a change log of the buffers (RenderChangeLog), not the
-// result of the component's own sync, so syncs, commits and rebuilds that scripts make themselves
-// are uploaded too.
+// texcoords and colours on the next streams, as present; one submesh per submesh (material) of the
+// source, each a contiguous index range that follows the edits. The GPU buffers are allocated at
+// the library's capacities, so that growth from edits rarely reallocates them. Uploads follow a
+// change log of the buffers (RenderChangeLog), not the result of the component's own sync, so
+// syncs, commits and rebuilds that scripts make themselves are uploaded too.
 using System;
 using UnityEngine;
 using UnityEngine.Rendering;
@@ -90,7 +90,9 @@ namespace Hedge.Unity
                 }
             }
             BuildReport report;
-            HalfEdgeMesh = HalfEdgeMesh.FromEngineMesh(p, source.triangles, fn, fuv, fc, EngineImportOptions.Unity,
+            int[] submeshes;
+            int[] triangles = UnitySubmeshes.ReadTriangles(source, out submeshes);
+            HalfEdgeMesh = HalfEdgeMesh.FromEngineMesh(p, triangles, fn, fuv, fc, submeshes, EngineImportOptions.Unity,
                                                        out report);
             Report = report;
             RenderOptions renderOptions = RenderOptions.Unity;
@@ -149,11 +151,8 @@ namespace Hedge.Unity
                 Buffers.CopyIndexRange(r.First, r.Count, indices);
                 mesh.SetIndexBufferData(indices, r.First, r.First, r.Count, PartialFlags);
             }
-            if ((int)counts.IndexCount != indexCount)
-            {
-                indexCount = (int)counts.IndexCount;
-                mesh.SetSubMesh(0, new SubMeshDescriptor(0, indexCount, MeshTopology.Triangles), PartialFlags);
-            }
+            indexCount = (int)counts.IndexCount;
+            UploadSubmeshes(PartialFlags);
             if (recalculateBounds && vertexRanges > 0) GrowBounds();
             pending.Clear();
         }
@@ -240,11 +239,13 @@ namespace Hedge.Unity
             Buffers.CopyIndices(indices);
             mesh.SetIndexBufferParams(gpuIndices, IndexFormat.UInt32);
             mesh.SetIndexBufferData(indices, 0, 0, gpuIndices, MeshUpdateFlags.DontRecalculateBounds);
-            mesh.subMeshCount = 1;
-            mesh.SetSubMesh(0, new SubMeshDescriptor(0, indexCount, MeshTopology.Triangles),
-                            MeshUpdateFlags.DontRecalculateBounds);
+            UploadSubmeshes(MeshUpdateFlags.DontRecalculateBounds);
             if (recalculateBounds) TightenBounds();
         }
+
+        // One SubMeshDescriptor per submesh (material) of the buffers, with the first vertex, vertex count
+        // and bounds that DontRecalculateBounds needs given. O(submeshes).
+        void UploadSubmeshes(MeshUpdateFlags flags) { UnitySubmeshes.SetSubmeshes(mesh, Buffers, flags); }
 
         void UploadWhole(VertexStream stream, float[] data, int unityStream)
         {

@@ -6,7 +6,8 @@
 // Layout: the buffers must use the separate layout of RenderOptions.Unity: vertex stream 0 holds the
 // positions, then normals, texcoords and colours each on the next stream, as present (Unity orders
 // attributes inside one stream differently from hedge's interleaved vertex, so interleaved buffers
-// are refused). One submesh covers the live index range. Indices are 16-bit when every render vertex
+// are refused). One submesh per submesh of the buffers, each a contiguous index range with its first
+// vertex, vertex count and bounds (UploadSubmeshes, after every upload). Indices are 16-bit when every render vertex
 // slot the GPU buffer can hold fits (at most 65536 slots): those are converted range by range into a
 // NativeArray<ushort> the uploader keeps (native memory, not managed); otherwise the 32-bit native
 // index buffer is uploaded as it is.
@@ -100,11 +101,8 @@ namespace Hedge.Unity
                 GrowBounds();
             }
             if (log.IndexRangeCount > 0) UploadIndexRanges();
-            if ((int)counts.IndexCount != indexCount)
-            {
-                indexCount = (int)counts.IndexCount;
-                mesh.SetSubMesh(0, new SubMeshDescriptor(0, indexCount, MeshTopology.Triangles), PartialFlags);
-            }
+            indexCount = (int)counts.IndexCount;
+            UploadSubmeshes(PartialFlags);
             log.Clear();
             return true;
         }
@@ -144,10 +142,13 @@ namespace Hedge.Unity
                 NativeArray<uint> data = Wrap<uint>(buffers.GetIndexPointer(out count), count);
                 mesh.SetIndexBufferData(data, 0, 0, indexCount, FullFlags);
             }
-            mesh.subMeshCount = 1;
-            mesh.SetSubMesh(0, new SubMeshDescriptor(0, indexCount, MeshTopology.Triangles), FullFlags);
+            UploadSubmeshes(FullFlags);
             SetBoundsFromAll((int)counts.VertexSlots);
         }
+
+        // One SubMeshDescriptor per submesh of the buffers (materials), with the first vertex, vertex count
+        // and bounds that DontRecalculateBounds needs given. O(submeshes).
+        void UploadSubmeshes(MeshUpdateFlags flags) { UnitySubmeshes.SetSubmeshes(mesh, buffers, flags); }
 
         void UploadWholeStream(VertexStream stream, int unityStream)
         {

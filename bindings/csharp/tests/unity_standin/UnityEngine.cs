@@ -193,10 +193,13 @@ namespace UnityEngine
         public void SetSubMesh(int index, Rendering.SubMeshDescriptor desc,
                                Rendering.MeshUpdateFlags flags = Rendering.MeshUpdateFlags.Default)
         {
-            if (index != 0) throw new NotSupportedException("the stand-in keeps one submesh");
+            if (index < 0 || index >= subMeshCount)
+                throw new IndexOutOfRangeException("Specified sub mesh is out of range. Must be greater or equal to 0 " +
+                                                   "and less than subMeshCount " + subMeshCount);
             if (IndexBuffer == null || desc.indexStart + desc.indexCount > IndexBuffer.Length)
                 throw new ArgumentException("submesh beyond the index buffer");
-            SubMesh = desc;
+            RecordSubMesh(index, desc, flags);
+            if (index == 0) SubMesh = desc;
         }
     }
 }
@@ -250,6 +253,12 @@ namespace UnityEngine.Rendering
         public int indexStart { get; set; }
         public int indexCount { get; set; }
         public MeshTopology topology { get; set; }
+
+        // Submeshes (materials): the fields SetSubMesh takes as they are with DontRecalculateBounds.
+        public int baseVertex { get; set; }
+        public int firstVertex { get; set; }
+        public int vertexCount { get; set; }
+        public Bounds bounds { get; set; }
 
         public SubMeshDescriptor(int indexStart, int indexCount, MeshTopology topology = MeshTopology.Triangles)
             : this()

@@ -187,7 +187,7 @@ namespace UnityEngine
                 Mesh m = c.sharedMesh;
                 if (m == null || m.Streams == null || m.IndexBuffer == null) continue;
                 var p = (float[])m.Streams[0];
-                int count = m.SubMesh.indexCount;
+                int count = m.SubmeshIndexEnd;
                 for (int t = 0; 3 * t + 2 < count; ++t)
                 {
                     Vector3 a = At(p, m, 3 * t), b = At(p, m, 3 * t + 1), d = At(p, m, 3 * t + 2);
