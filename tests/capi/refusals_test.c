@@ -111,12 +111,12 @@ static hedge_status run_edit(hedge_mesh* mesh, const Edit* e) {
 }
 
 static void run_case(char* line) {
-  char* fields[5];
+  char* fields[6];
   char* rest = line;
   int n = 0;
-  for (char* f = next_field(&rest, '|'); f != NULL && n < 5; f = next_field(&rest, '|')) fields[n++] = f;
-  if (n != 5) {
-    fprintf(stderr, "a case needs 5 fields: %s\n", line);
+  for (char* f = next_field(&rest, '|'); f != NULL && n < 6; f = next_field(&rest, '|')) fields[n++] = f;
+  if (n != 6) {
+    fprintf(stderr, "a case needs 6 fields: %s\n", line);
     exit(1);
   }
   ++g_cases;
@@ -137,9 +137,11 @@ static void run_case(char* line) {
   }
   const hedge_status status = run_edit(mesh, &checked);
   const char* text = status == HEDGE_ERROR_REFUSED ? hedge_last_refusal() : hedge_last_error();
-  if (strcmp(hedge_status_string(status), fields[3]) != 0 || strcmp(text, fields[4]) != 0) {
-    fprintf(stderr, "case %s | %s | %s:\n  expected %s \"%s\"\n  got      %s \"%s\"\n", fields[0], fields[1],
-            fields[2], fields[3], fields[4], hedge_status_string(status), text);
+  const char* code = hedge_refusal_name(hedge_last_refusal_code());
+  if (strcmp(hedge_status_string(status), fields[3]) != 0 || strcmp(text, fields[4]) != 0 ||
+      strcmp(code, fields[5]) != 0) {
+    fprintf(stderr, "case %s | %s | %s:\n  expected %s \"%s\" %s\n  got      %s \"%s\" %s\n", fields[0],
+            fields[1], fields[2], fields[3], fields[4], fields[5], hedge_status_string(status), text, code);
     ++g_failures;
   }
   uint32_t problems = 1;
