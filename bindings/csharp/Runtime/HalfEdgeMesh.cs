@@ -478,29 +478,10 @@ namespace Hedge
         }
 
         // =========================================================================================
-        // Edits. A refused edit returns false / an invalid handle / 0 and changes nothing; LastRefusal
-        // then says why. Render buffers of the mesh see every edit at their next sync.
+        // Edits. A refused edit returns false / an invalid handle / 0 and changes nothing;
+        // LastRefusalCode and LastRefusal then say why (Refusals.cs). Render buffers of the mesh see
+        // every edit at their next sync.
         // =========================================================================================
-
-        /// <summary>Why the last edit of this mesh was refused: the library's refusal, as hedge_last_refusal()
-        /// gave it right after the call (e.g. "it would pull a seam vertex off its seam"), the same text as the
-        /// JS API's lastRefusal; or null if the last edit was done. Every edit (split, collapse, flip, cut,
-        /// add, remove, fill) sets it; nothing throws for a refusal, and only a refusal allocates (the
-        /// string).</summary>
-        public string LastRefusal { get; private set; }
-
-        // True if the status says "refused" (then LastRefusal holds the reason); throws for any other failure.
-        bool WasRefused(int status)
-        {
-            if (status == Refused)
-            {
-                LastRefusal = Status.FromUtf8(Native.hedge_last_refusal());
-                return true;
-            }
-            LastRefusal = null;
-            Status.Check(status);
-            return false;
-        }
 
         /// <summary>Inserts a vertex at point p on the edge. Triangles on either side are split in two;
         /// half-edge 2 x e then runs from the edge's first vertex to the new vertex.</summary>
