@@ -464,6 +464,19 @@ HEDGE_API hedge_status hedge_can_add_face(const hedge_mesh* mesh, const uint32_t
 /** Adds the face. \param out_face the new face. */
 HEDGE_API hedge_status hedge_add_face(hedge_mesh* mesh, const uint32_t* vertices, uint32_t count,
                                       uint32_t* out_face);
+/** Adds the face with its attributes: texture coordinates per corner and a submesh (the material
+ *  slot an engine draws it with). Everything is checked before the mesh changes; a bad attribute is
+ *  HEDGE_ERROR_INVALID_ARGUMENT, a refused face HEDGE_ERROR_REFUSED, and either leaves the mesh as
+ *  it was.
+ *  \param texcoords optional (NULL): u, v per corner (2 x count floats, finite), written into the
+ *         corner property "h:texcoord", which is added ((0, 0) at every other corner) when the mesh
+ *         has none. A mesh that keeps texcoords per vertex ("v:texcoord") takes none.
+ *  \param submesh the face's submesh in [0, 65535], written into the face property "f:submesh"
+ *         (added, 0 for every other face, when the mesh has none); -1 leaves the default, 0.
+ *  \param out_face the new face. */
+HEDGE_API hedge_status hedge_add_face_with_attributes(hedge_mesh* mesh, const uint32_t* vertices,
+                                                      uint32_t count, const float* texcoords, int32_t submesh,
+                                                      uint32_t* out_face);
 
 /** True if removing the face leaves every vertex manifold. O(face degree). */
 HEDGE_API hedge_status hedge_can_remove_face(const hedge_mesh* mesh, uint32_t face, int32_t* out_ok);
