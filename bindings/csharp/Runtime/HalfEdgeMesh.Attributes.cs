@@ -9,8 +9,8 @@ namespace Hedge
 {
     public sealed partial class HalfEdgeMesh
     {
-        /// <summary>The largest submesh a face takes.</summary>
-        public const int MaxFaceSubmesh = 65535;
+        // The largest submesh a face takes (the C ABI's limit).
+        internal const int MaxFaceSubmesh = 65535;
 
         /// <summary>Adds a face with the first count corners (counter-clockwise), their texture coordinates and
         /// its submesh. Everything is checked before the mesh changes.</summary>
@@ -19,8 +19,7 @@ namespace Hedge
         /// <param name="texcoords">Optional (null): u, v per corner, in the corners' order (at least 2 x count
         /// floats; the first 2 x count are used). The mesh's corner texcoords are added, (0, 0) at every other
         /// corner, if it has none.</param>
-        /// <param name="submesh">The face's submesh (material slot) in [0, <see cref="MaxFaceSubmesh"/>]; -1 leaves
-        /// the default, 0.</param>
+        /// <param name="submesh">The face's submesh (material slot) in [0, 65535]; -1 leaves the default, 0.</param>
         /// <returns>The new face, or <see cref="Face.Invalid"/> if <see cref="CanAddFace(Vertex[], int)"/> refuses
         /// (<see cref="LastRefusalCode"/> says why).</returns>
         /// <exception cref="ArgumentException">texcoords holds fewer than 2 x count floats; submesh is out of range
