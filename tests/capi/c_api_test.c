@@ -642,59 +642,11 @@ static void test_deprecated_names(void) {
 /* ---------------------------------------------------------------------------------------------- */
 
 static void test_refusal_codes(void) {
-#define NAMED(code) \
-  { code, #code }
-  const struct {
-    hedge_refusal code;
-    const char* name;
-  } named[] = {NAMED(HEDGE_REFUSAL_NONE),
-               NAMED(HEDGE_REFUSAL_EDGE_NOT_LIVE),
-               NAMED(HEDGE_REFUSAL_HALFEDGE_NOT_LIVE),
-               NAMED(HEDGE_REFUSAL_FACE_NOT_LIVE),
-               NAMED(HEDGE_REFUSAL_VERTEX_NOT_LIVE),
-               NAMED(HEDGE_REFUSAL_COLLAPSE_JOINS_SEAM_SIDES),
-               NAMED(HEDGE_REFUSAL_COLLAPSE_PULLS_SEAM_VERTEX),
-               NAMED(HEDGE_REFUSAL_COLLAPSE_SHORTENS_SEAM),
-               NAMED(HEDGE_REFUSAL_COLLAPSE_SAME_FACE_BOTH_SIDES),
-               NAMED(HEDGE_REFUSAL_COLLAPSE_PINCHES_BOUNDARY),
-               NAMED(HEDGE_REFUSAL_COLLAPSE_SECOND_EDGE),
-               NAMED(HEDGE_REFUSAL_COLLAPSE_LINK_CONDITION),
-               NAMED(HEDGE_REFUSAL_COLLAPSE_DANGLING_EDGE),
-               NAMED(HEDGE_REFUSAL_COLLAPSE_TIP_TOO_FEW_EDGES),
-               NAMED(HEDGE_REFUSAL_COLLAPSE_SURVIVOR_TOO_FEW_EDGES),
-               NAMED(HEDGE_REFUSAL_FLIP_TIPS_SHARED),
-               NAMED(HEDGE_REFUSAL_FLIP_VALENCE_THREE),
-               NAMED(HEDGE_REFUSAL_FLIP_TIPS_JOINED),
-               NAMED(HEDGE_REFUSAL_FLIP_BOUNDARY_EDGE),
-               NAMED(HEDGE_REFUSAL_FLIP_NOT_TRIANGLE),
-               NAMED(HEDGE_REFUSAL_CUT_HALFEDGE_NOT_LIVE),
-               NAMED(HEDGE_REFUSAL_CUT_SAME_HALFEDGE),
-               NAMED(HEDGE_REFUSAL_CUT_ON_BOUNDARY),
-               NAMED(HEDGE_REFUSAL_CUT_DIFFERENT_FACES),
-               NAMED(HEDGE_REFUSAL_CUT_NEIGHBOUR_TARGETS),
-               NAMED(HEDGE_REFUSAL_CUT_TARGETS_JOINED),
-               NAMED(HEDGE_REFUSAL_ADD_FACE_TOO_FEW_CORNERS),
-               NAMED(HEDGE_REFUSAL_ADD_FACE_CORNER_NOT_LIVE),
-               NAMED(HEDGE_REFUSAL_ADD_FACE_CORNER_REPEATED),
-               NAMED(HEDGE_REFUSAL_ADD_FACE_EDGE_TAKEN),
-               NAMED(HEDGE_REFUSAL_ADD_FACE_INTERIOR_CORNER),
-               NAMED(HEDGE_REFUSAL_ADD_FACE_SECOND_GAP),
-               NAMED(HEDGE_REFUSAL_REMOVE_FACE_PINCHES),
-               NAMED(HEDGE_REFUSAL_REMOVE_VERTEX_PINCHES),
-               NAMED(HEDGE_REFUSAL_FILL_HOLE_NOT_BOUNDARY),
-               NAMED(HEDGE_REFUSAL_FILL_HOLE_LOOP_DAMAGED),
-               NAMED(HEDGE_REFUSAL_FILL_HOLE_LOOP_TOO_SHORT)};
-#undef NAMED
-  CHECK(sizeof named / sizeof named[0] == HEDGE_REFUSAL_COUNT);
-  for (int32_t i = 0; i < HEDGE_REFUSAL_COUNT; ++i) {
-    CHECK(named[i].code == i); /* the header's constants in order, none missing */
-    CHECK(strcmp(hedge_refusal_name(i), named[i].name) == 0);
-    CHECK((strcmp(hedge_refusal_text(i), "") == 0) == (i == HEDGE_REFUSAL_NONE));
-    for (int32_t j = 0; j < i; ++j) CHECK(strcmp(hedge_refusal_text(i), hedge_refusal_text(j)) != 0);
-  }
+  /* Every code's name and text: refusals_test.c walks the whole table. */
+  CHECK(strcmp(hedge_refusal_name(HEDGE_REFUSAL_FLIP_BOUNDARY_EDGE), "HEDGE_REFUSAL_FLIP_BOUNDARY_EDGE") ==
+        0);
   CHECK(strcmp(hedge_refusal_name(HEDGE_REFUSAL_COUNT), "HEDGE_REFUSAL_UNKNOWN") == 0);
-  CHECK(strcmp(hedge_refusal_name(-1), "HEDGE_REFUSAL_UNKNOWN") == 0);
-  CHECK(strcmp(hedge_refusal_text(HEDGE_REFUSAL_COUNT), "") == 0);
+  CHECK(strcmp(hedge_refusal_text(HEDGE_REFUSAL_NONE), "") == 0);
 
   /* A refused edit sets the code with its text; a call that is not refused clears both. */
   hedge_mesh* tet = make_mesh(kTetPositions, 4, kTetTriangles, 12, NULL, 0);
