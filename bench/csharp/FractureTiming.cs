@@ -9,7 +9,7 @@
 //   mono FractureTiming.exe [n (708: 1,002,528 triangles)] [strikes (200)]
 //
 // Built and run by the fracture_timing_csharp target (bench/csharp/CMakeLists.txt); the plate is
-// Meshes.Plate of the binding's tests (bindings/csharp/tests/Meshes.cs).
+// Meshes.Plate of the binding's tests (bindings/csharp/Tests/Runtime/Meshes.cs).
 using System;
 using System.Collections.Generic;
 using System.Diagnostics;

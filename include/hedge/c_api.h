@@ -2,14 +2,14 @@
  *
  * Conventions
  *  - Every function returns a status code (hedge_status: HEDGE_OK = 0, errors negative), except
- *    hedge_last_error(), hedge_last_refusal() and hedge_status_string(), which cannot fail and
- *    return a string. Results
+ *    hedge_last_error(), hedge_last_refusal(), hedge_last_refusal_code(), hedge_refusal_text(),
+ *    hedge_refusal_name() and hedge_status_string(), which cannot fail. Results
  *    are written through out parameters, which are never NULL unless documented as optional; on an
  *    error the out parameters are left unchanged unless documented otherwise.
  *  - No C++ exception ever crosses this interface. After a call that failed, hedge_last_error()
  *    gives the message on the calling thread (an I/O error names the file and the line or byte
- *    offset). Every other call that succeeds clears the message to the empty string (the three
- *    string functions leave it as it is). The status codes are the one list of error kinds of
+ *    offset). Every other call that succeeds clears the message to the empty string (the six
+ *    functions that cannot fail leave it as it is). The status codes are the one list of error kinds of
  *    every binding: the JS API's HedgeError.kind and the C# binding's HedgeStatus name them one to
  *    one.
  *  - Objects are opaque handles: hedge_mesh* and hedge_render_buffers*. A handle is not an address: it is
@@ -110,6 +110,102 @@ HEDGE_API const char* hedge_last_error(void);
  *  in every binding; hedge_last_error() says more ("flip of edge 3 refused: ...; nothing was
  *  changed"). "" after a call that was not refused. Static storage; never NULL. */
 HEDGE_API const char* hedge_last_refusal(void);
+
+/** A refusal's stable code: why an edit was refused, as a number to check without comparing text
+ *  (the library's one table of refusals, hedge/core/refusal.h). A code keeps its value in every
+ *  later release; new refusals take new values. The C# binding names them RefusalCode. */
+typedef int32_t hedge_refusal;
+
+enum {
+  /** Not refused. */
+  HEDGE_REFUSAL_NONE = 0,
+  /** the edge is not live */
+  HEDGE_REFUSAL_EDGE_NOT_LIVE = 1,
+  /** the half-edge is not live */
+  HEDGE_REFUSAL_HALFEDGE_NOT_LIVE = 2,
+  /** the face is not live */
+  HEDGE_REFUSAL_FACE_NOT_LIVE = 3,
+  /** the vertex is not live */
+  HEDGE_REFUSAL_VERTEX_NOT_LIVE = 4,
+  /** it would join the two sides of a seam at the surviving vertex */
+  HEDGE_REFUSAL_COLLAPSE_JOINS_SEAM_SIDES = 5,
+  /** it would pull a seam vertex off its seam */
+  HEDGE_REFUSAL_COLLAPSE_PULLS_SEAM_VERTEX = 6,
+  /** it would shorten a seam that ends at the merged vertex */
+  HEDGE_REFUSAL_COLLAPSE_SHORTENS_SEAM = 7,
+  /** the edge has the same face on both sides */
+  HEDGE_REFUSAL_COLLAPSE_SAME_FACE_BOTH_SIDES = 8,
+  /** an interior edge joins two boundary vertices (the surface would pinch) */
+  HEDGE_REFUSAL_COLLAPSE_PINCHES_BOUNDARY = 9,
+  /** a second edge joins its ends */
+  HEDGE_REFUSAL_COLLAPSE_SECOND_EDGE = 10,
+  /** its ends share a neighbour besides the tips of its triangles (the link condition) */
+  HEDGE_REFUSAL_COLLAPSE_LINK_CONDITION = 11,
+  /** a triangle on the edge has the boundary on both other sides (an edge would dangle) */
+  HEDGE_REFUSAL_COLLAPSE_DANGLING_EDGE = 12,
+  /** a tip of its triangles would be left with too few edges */
+  HEDGE_REFUSAL_COLLAPSE_TIP_TOO_FEW_EDGES = 13,
+  /** the surviving vertex would be left with too few edges */
+  HEDGE_REFUSAL_COLLAPSE_SURVIVOR_TOO_FEW_EDGES = 14,
+  /** the two triangles on the edge share their tip */
+  HEDGE_REFUSAL_FLIP_TIPS_SHARED = 15,
+  /** an end is an interior vertex of valence 3 (the flip would leave it with 2) */
+  HEDGE_REFUSAL_FLIP_VALENCE_THREE = 16,
+  /** the tips of its triangles are already joined by an edge */
+  HEDGE_REFUSAL_FLIP_TIPS_JOINED = 17,
+  /** the edge is on the boundary (a flip needs a triangle on both sides) */
+  HEDGE_REFUSAL_FLIP_BOUNDARY_EDGE = 18,
+  /** a face on the edge is not a triangle */
+  HEDGE_REFUSAL_FLIP_NOT_TRIANGLE = 19,
+  /** a half-edge is not live */
+  HEDGE_REFUSAL_CUT_HALFEDGE_NOT_LIVE = 20,
+  /** the two half-edges are the same */
+  HEDGE_REFUSAL_CUT_SAME_HALFEDGE = 21,
+  /** the half-edges are on a boundary, not in a face */
+  HEDGE_REFUSAL_CUT_ON_BOUNDARY = 22,
+  /** the half-edges are in different faces */
+  HEDGE_REFUSAL_CUT_DIFFERENT_FACES = 23,
+  /** their targets are neighbours in the face (the cut would double an edge) */
+  HEDGE_REFUSAL_CUT_NEIGHBOUR_TARGETS = 24,
+  /** an edge already joins their targets */
+  HEDGE_REFUSAL_CUT_TARGETS_JOINED = 25,
+  /** a face needs at least 3 corners */
+  HEDGE_REFUSAL_ADD_FACE_TOO_FEW_CORNERS = 26,
+  /** a corner is not a live vertex */
+  HEDGE_REFUSAL_ADD_FACE_CORNER_NOT_LIVE = 27,
+  /** a corner is repeated */
+  HEDGE_REFUSAL_ADD_FACE_CORNER_REPEATED = 28,
+  /** an edge of the face already has a face on that side */
+  HEDGE_REFUSAL_ADD_FACE_EDGE_TAKEN = 29,
+  /** a corner is an interior vertex (its fan of faces is closed) */
+  HEDGE_REFUSAL_ADD_FACE_INTERIOR_CORNER = 30,
+  /** the face would meet a corner's faces at the vertex only (a second gap in its fan) */
+  HEDGE_REFUSAL_ADD_FACE_SECOND_GAP = 31,
+  /** a corner would be left with two gaps in its fan of faces (pinched) */
+  HEDGE_REFUSAL_REMOVE_FACE_PINCHES = 32,
+  /** a corner of its faces would be left with two gaps in its fan of faces (pinched) */
+  HEDGE_REFUSAL_REMOVE_VERTEX_PINCHES = 33,
+  /** the half-edge is not on a boundary (it has a face) */
+  HEDGE_REFUSAL_FILL_HOLE_NOT_BOUNDARY = 34,
+  /** its boundary loop is damaged (it never closes) */
+  HEDGE_REFUSAL_FILL_HOLE_LOOP_DAMAGED = 35,
+  /** its boundary loop has fewer than 3 edges (no room for a face) */
+  HEDGE_REFUSAL_FILL_HOLE_LOOP_TOO_SHORT = 36,
+  /** How many codes there are (one past the largest). */
+  HEDGE_REFUSAL_COUNT = 37
+};
+
+/** The code of hedge_last_refusal(): why the last call on this thread was refused, as a number;
+ *  HEDGE_REFUSAL_NONE after a call that was not refused. Cannot fail; allocates nothing. */
+HEDGE_API hedge_refusal hedge_last_refusal_code(void);
+
+/** A refusal's text, as hedge_last_refusal() gives it ("" for HEDGE_REFUSAL_NONE and for a value
+ *  that is not a code). Static storage; never NULL. */
+HEDGE_API const char* hedge_refusal_text(hedge_refusal code);
+
+/** A refusal's constant name ("HEDGE_REFUSAL_FLIP_BOUNDARY_EDGE"), or "HEDGE_REFUSAL_UNKNOWN" for a
+ *  value that is not a code. Static storage; never NULL. */
+HEDGE_API const char* hedge_refusal_name(hedge_refusal code);
 
 /** A short constant name for a status code ("HEDGE_OK", "HEDGE_ERROR_REFUSED", ...), or
  *  "HEDGE_ERROR_UNKNOWN" for a value that is not a status code. Never NULL; static storage. */
@@ -368,6 +464,19 @@ HEDGE_API hedge_status hedge_can_add_face(const hedge_mesh* mesh, const uint32_t
 /** Adds the face. \param out_face the new face. */
 HEDGE_API hedge_status hedge_add_face(hedge_mesh* mesh, const uint32_t* vertices, uint32_t count,
                                       uint32_t* out_face);
+/** Adds the face with its attributes: texture coordinates per corner and a submesh (the material
+ *  slot an engine draws it with). Everything is checked before the mesh changes; a bad attribute is
+ *  HEDGE_ERROR_INVALID_ARGUMENT, a refused face HEDGE_ERROR_REFUSED, and either leaves the mesh as
+ *  it was.
+ *  \param texcoords optional (NULL): u, v per corner (2 x count floats, finite), written into the
+ *         corner property "h:texcoord", which is added ((0, 0) at every other corner) when the mesh
+ *         has none. A mesh that keeps texcoords per vertex ("v:texcoord") takes none.
+ *  \param submesh the face's submesh in [0, 65535], written into the face property "f:submesh"
+ *         (added, 0 for every other face, when the mesh has none); -1 leaves the default, 0.
+ *  \param out_face the new face. */
+HEDGE_API hedge_status hedge_add_face_with_attributes(hedge_mesh* mesh, const uint32_t* vertices,
+                                                      uint32_t count, const float* texcoords, int32_t submesh,
+                                                      uint32_t* out_face);
 
 /** True if removing the face leaves every vertex manifold. O(face degree). */
 HEDGE_API hedge_status hedge_can_remove_face(const hedge_mesh* mesh, uint32_t face, int32_t* out_ok);

@@ -4,18 +4,19 @@
 #include <cmath>
 
 #include "hedge/core/face_operations.h"
+#include "hedge/core/refusal.h"
 
 namespace hedge {
 
 bool can_fill_hole(const SurfaceMesh& m, Halfedge h) { return fill_hole_refusal(m, h) == nullptr; }
 
 const char* fill_hole_refusal(const SurfaceMesh& m, Halfedge h) {
-  if (!m.is_live(h)) return "the half-edge is not live";
-  if (!m.is_boundary(h)) return "the half-edge is not on a boundary (it has a face)";
+  if (!m.is_live(h)) return refusal_text(Refusal::halfedge_not_live);
+  if (!m.is_boundary(h)) return refusal_text(Refusal::fill_hole_not_boundary);
   std::size_t n = 0;
   for ([[maybe_unused]] Halfedge g : m.loop(h))
-    if (++n > m.halfedge_slots()) return "its boundary loop is damaged (it never closes)";
-  if (n < 3) return "its boundary loop has fewer than 3 edges (no room for a face)";
+    if (++n > m.halfedge_slots()) return refusal_text(Refusal::fill_hole_loop_damaged);
+  if (n < 3) return refusal_text(Refusal::fill_hole_loop_too_short);
   return nullptr;
 }
 

@@ -1,5 +1,7 @@
 #include "binding/errors.h"
 
+#include <cctype>
+#include <cstdio>
 #include <new>
 #include <stdexcept>
 
@@ -69,6 +71,28 @@ const char* status_name(hedge_status status) noexcept {
 const char* kind_name(hedge_status status) noexcept {
   const StatusNames* n = find(status);
   return n != nullptr ? n->js : "internal";
+}
+
+// The C ABI's refusal codes are the library's table (hedge/core/refusal.h), value for value.
+static_assert(HEDGE_REFUSAL_COUNT == kRefusalCount,
+              "c_api.h's HEDGE_REFUSAL_* and hedge/core/refusal.h differ");
+static_assert(HEDGE_REFUSAL_FILL_HOLE_LOOP_TOO_SHORT == static_cast<int>(Refusal::fill_hole_loop_too_short));
+
+const char* refusal_name(Refusal refusal) noexcept {
+  // "HEDGE_REFUSAL_" and the table's name in capitals, made once; every name fits in 64 bytes.
+  struct Names {
+    char text[kRefusalCount][64] = {};
+    Names() {
+      for (std::int32_t i = 0; i < kRefusalCount; ++i) {
+        std::snprintf(text[i], sizeof text[i], "HEDGE_REFUSAL_%s", kRefusals[i].name);
+        for (char* c = text[i]; *c != '\0'; ++c)
+          *c = static_cast<char>(std::toupper(static_cast<unsigned char>(*c)));
+      }
+    }
+  };
+  static const Names names;
+  const auto i = static_cast<std::int32_t>(refusal);
+  return i >= 0 && i < kRefusalCount ? names.text[i] : "HEDGE_REFUSAL_UNKNOWN";
 }
 
 }  // namespace hedge::binding

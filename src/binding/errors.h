@@ -15,6 +15,7 @@
 #include <string>
 
 #include "hedge/c_api.h"
+#include "hedge/core/refusal.h"
 
 namespace hedge::binding {
 
@@ -51,5 +52,9 @@ const char* status_name(hedge_status status) noexcept;
 //! The status's name in the JS API (HedgeError.kind): "invalid-argument", "bad-handle", "refused",
 //! "io", "topology", "out-of-memory", "buffer-too-small", "internal", "busy"; "none" for HEDGE_OK.
 const char* kind_name(hedge_status status) noexcept;
+
+//! The refusal's constant name in the C ABI ("HEDGE_REFUSAL_FLIP_BOUNDARY_EDGE": the table's name in
+//! capitals), "HEDGE_REFUSAL_UNKNOWN" for a value that is none. Static storage.
+const char* refusal_name(Refusal refusal) noexcept;
 
 }  // namespace hedge::binding

@@ -231,6 +231,14 @@ const char* hedge_last_error(void) { return t_static_error != nullptr ? t_static
 
 const char* hedge_last_refusal(void) { return t_refusal; }
 
+hedge_refusal hedge_last_refusal_code(void) { return static_cast<hedge_refusal>(refusal_code(t_refusal)); }
+
+const char* hedge_refusal_text(hedge_refusal code) { return refusal_text(static_cast<Refusal>(code)); }
+
+const char* hedge_refusal_name(hedge_refusal code) {
+  return binding::refusal_name(static_cast<Refusal>(code));
+}
+
 const char* hedge_status_string(hedge_status code) { return binding::status_name(code); }
 
 hedge_status hedge_version(int32_t* out_major, int32_t* out_minor, int32_t* out_patch) {

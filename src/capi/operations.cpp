@@ -5,6 +5,7 @@
 
 #include <unordered_set>
 
+#include "binding/face_attributes.h"
 #include "capi_internal.h"
 #include "hedge/algorithms/detach_faces.h"
 #include "hedge/algorithms/fill_hole.h"
@@ -145,6 +146,24 @@ hedge_status hedge_add_face(hedge_mesh* mesh, const uint32_t* vertices, uint32_t
         binding::live_vertices(object->mesh, std::span<const std::uint32_t>(vertices, count));
     need(out_face, "out_face");
     *out_face = binding::add_face(object->mesh, corners).idx();
+  });
+}
+
+hedge_status hedge_add_face_with_attributes(hedge_mesh* mesh, const uint32_t* vertices, uint32_t count,
+                                            const float* texcoords, int32_t submesh, uint32_t* out_face) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    need_array(vertices, count, "vertices");
+    const std::vector<Vertex> corners =
+        binding::live_vertices(object->mesh, std::span<const std::uint32_t>(vertices, count));
+    need(out_face, "out_face");
+    std::vector<Vec2> uv;
+    if (texcoords != nullptr)
+      for (uint32_t i = 0; i < count; ++i) uv.push_back({texcoords[2 * i], texcoords[2 * i + 1]});
+    binding::FaceAttributes attributes;
+    attributes.texcoords = uv;
+    if (submesh != -1) attributes.submesh = submesh;
+    *out_face = binding::add_face(object->mesh, corners, attributes).idx();
   });
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <utility>
 
+#include "hedge/core/refusal.h"
 #include "operations_internal.h"
 #include "small_vector.h"
 
@@ -219,7 +220,7 @@ void link_triangle_split(Mesh& m, Halfedge into, Halfedge out_of, Halfedge mid, 
 bool can_split_edge(const SurfaceMesh& m, Edge e) { return split_refusal(m, e) == nullptr; }
 
 const char* split_refusal(const SurfaceMesh& m, Edge e) {
-  return m.is_live(e) ? nullptr : "the edge is not live";
+  return m.is_live(e) ? nullptr : refusal_text(Refusal::edge_not_live);
 }
 
 // Both cases are out of line: split_edge itself is the test and a tail call, and neither case's
@@ -305,7 +306,7 @@ const char* CollapseCorners::plan(const Mesh& m, Halfedge h) {
       if (!v1_corner_[r].is_valid())
         v1_corner_[r] = c;
       else if (!same_corner(m, v1_corner_[r], c))
-        return "it would join the two sides of a seam at the surviving vertex";
+        return refusal_text(Refusal::collapse_joins_seam_sides);
     }
     x = m.rotate_cw(x);
   } while (x != t);
@@ -319,11 +320,11 @@ const char* CollapseCorners::plan(const Mesh& m, Halfedge h) {
     const Face f = m.face(c);
     if (f.is_valid()) {
       const std::size_t r = root(slot(f));
-      if (!v1_corner_[r].is_valid()) return "it would pull a seam vertex off its seam";
+      if (!v1_corner_[r].is_valid()) return refusal_text(Refusal::collapse_pulls_seam_vertex);
       if (!v0_corner_[r].is_valid())
         v0_corner_[r] = c;
       else if (!same_corner(m, v0_corner_[r], c))
-        return "it would shorten a seam that ends at the merged vertex";
+        return refusal_text(Refusal::collapse_shortens_seam);
       // A triangle on h vanishes; its corners are taken care of as it goes.
       if (!(f == fl && tri_l) && !(f == fr && tri_r)) copies_.push_back({c, v1_corner_[r]});
     }
@@ -351,13 +352,13 @@ const char* collapse_refusal(const SurfaceMesh& m, Halfedge h) { return check_co
 
 namespace {
 const char* check_collapse(const SurfaceMesh& m, Halfedge h, CollapseCorners* corners) {
-  if (!m.is_live(h)) return "the half-edge is not live";
+  if (!m.is_live(h)) return refusal_text(Refusal::halfedge_not_live);
   const Halfedge t = Mesh::twin(h);
   const Vertex v0 = m.from_vertex(h), v1 = m.to_vertex(h);
   const Face fl = m.face(h), fr = m.face(t);
-  if (fl.is_valid() && fl == fr) return "the edge has the same face on both sides";
+  if (fl.is_valid() && fl == fr) return refusal_text(Refusal::collapse_same_face_both_sides);
   if (!m.is_boundary(Mesh::edge(h)) && m.is_boundary(v0) && m.is_boundary(v1))
-    return "an interior edge joins two boundary vertices (the surface would pinch)";
+    return refusal_text(Refusal::collapse_pinches_boundary);
   const Vertex tl = fl.is_valid() && is_triangle(m, h) ? m.to_vertex(m.next(h)) : Vertex();
   const Vertex tr = fr.is_valid() && is_triangle(m, t) ? m.to_vertex(m.next(t)) : Vertex();
 
@@ -372,14 +373,14 @@ const char* check_collapse(const SurfaceMesh& m, Halfedge h, CollapseCorners* co
     to_v1 += w == v1;
     x = m.rotate_cw(x);
   } while (x != h);
-  if (to_v1 != 1) return "a second edge joins its ends";
+  if (to_v1 != 1) return refusal_text(Refusal::collapse_second_edge);
   std::size_t val1 = 0;
   x = t;
   do {
     const Vertex w = m.to_vertex(x);
     ++val1;
     if (w != v0 && w != tl && w != tr && n0.contains(w))
-      return "its ends share a neighbour besides the tips of its triangles (the link condition)";
+      return refusal_text(Refusal::collapse_link_condition);
     x = m.rotate_cw(x);
   } while (x != t);
   // Tips lose an edge; merged edges must keep a face on one side.
@@ -388,15 +389,15 @@ const char* check_collapse(const SurfaceMesh& m, Halfedge h, CollapseCorners* co
     if (!tip.is_valid()) continue;
     const Halfedge s = side == 0 ? h : t;
     if (m.is_boundary(Mesh::twin(m.next(s))) && m.is_boundary(Mesh::twin(m.next(m.next(s)))))
-      return "a triangle on the edge has the boundary on both other sides (an edge would dangle)";
+      return refusal_text(Refusal::collapse_dangling_edge);
     if (!valence_above(m, tip, m.is_boundary(tip) ? 2u : 3u))
-      return "a tip of its triangles would be left with too few edges";
+      return refusal_text(Refusal::collapse_tip_too_few_edges);
   }
   // The survivor must keep valence 3 if interior.
   const std::size_t tips = (tl.is_valid() ? 1 : 0) + (tr.is_valid() ? 1 : 0);
   const std::size_t val_after = n0.size() + val1 - 2 - tips;
   const bool boundary_after = m.is_boundary(v0) || m.is_boundary(v1);
-  if (val_after < (boundary_after ? 2u : 3u)) return "the surviving vertex would be left with too few edges";
+  if (val_after < (boundary_after ? 2u : 3u)) return refusal_text(Refusal::collapse_survivor_too_few_edges);
   if (!m.halfedge_properties().empty()) [[unlikely]]
     return corners ? corners->plan(m, h) : plan_corners(m, h);
   return nullptr;
@@ -498,21 +499,21 @@ bool joined(const Mesh& m, Halfedge out, Vertex w) {
   const Vertex c = m.to_vertex(h1), d = m.to_vertex(t1);
   // h2 leaves c, h leaves a and t leaves b: the walks start there. The two short fixed walks come
   // first: the loop about c ends on a mispredicted branch, which would restart them.
-  if (c == d) return "the two triangles on the edge share their tip";
+  if (c == d) return refusal_text(Refusal::flip_tips_shared);
   if (!keeps_enough_edges(m, h) || !keeps_enough_edges(m, t))
-    return "an end is an interior vertex of valence 3 (the flip would leave it with 2)";
-  if (joined(m, h2, d)) return "the tips of its triangles are already joined by an edge";
+    return refusal_text(Refusal::flip_valence_three);
+  if (joined(m, h2, d)) return refusal_text(Refusal::flip_tips_joined);
   return nullptr;
 }
 
 // flip_refusal(), inlined into can_flip() too: there each reason folds into "refused", so the hot
 // predicate costs what a yes-or-no test costs.
 [[gnu::always_inline]] inline const char* flip_refusal_of(const Mesh& m, Edge e) {
-  if (!m.is_live(e)) return "the edge is not live";
-  if (m.is_boundary(e)) return "the edge is on the boundary (a flip needs a triangle on both sides)";
+  if (!m.is_live(e)) return refusal_text(Refusal::edge_not_live);
+  if (m.is_boundary(e)) return refusal_text(Refusal::flip_boundary_edge);
   const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
   const Halfedge h1 = m.next(h), h2 = m.next(h1), t1 = m.next(t), t2 = m.next(t1);
-  if (m.next(h2) != h || m.next(t2) != t) return "a face on the edge is not a triangle";
+  if (m.next(h2) != h || m.next(t2) != t) return refusal_text(Refusal::flip_not_triangle);
   return flip_check(m, h, t, h1, h2, t1);
 }
 }  // namespace

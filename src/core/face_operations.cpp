@@ -9,6 +9,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "hedge/core/refusal.h"
 #include "operations_internal.h"
 
 namespace hedge {
@@ -139,7 +140,7 @@ std::array<float, 3> barycentric(const Vec3& a, const Vec3& b, const Vec3& c, co
 bool can_split_face(const SurfaceMesh& m, Face f) { return split_face_refusal(m, f) == nullptr; }
 
 const char* split_face_refusal(const SurfaceMesh& m, Face f) {
-  return m.is_live(f) ? nullptr : "the face is not live";
+  return m.is_live(f) ? nullptr : refusal_text(Refusal::face_not_live);
 }
 
 Vertex split_face(SurfaceMesh& m, Face f, const Vec3& point) {
@@ -195,15 +196,14 @@ bool can_cut_face(const SurfaceMesh& m, Halfedge h0, Halfedge h1) {
 }
 
 const char* cut_face_refusal(const SurfaceMesh& m, Halfedge h0, Halfedge h1) {
-  if (!m.is_live(h0) || !m.is_live(h1)) return "a half-edge is not live";
-  if (h0 == h1) return "the two half-edges are the same";
+  if (!m.is_live(h0) || !m.is_live(h1)) return refusal_text(Refusal::cut_halfedge_not_live);
+  if (h0 == h1) return refusal_text(Refusal::cut_same_halfedge);
   const Face f = m.face(h0);
-  if (!f.is_valid()) return "the half-edges are on a boundary, not in a face";
-  if (m.face(h1) != f) return "the half-edges are in different faces";
-  if (m.next(h0) == h1 || m.next(h1) == h0)
-    return "their targets are neighbours in the face (the cut would double an edge)";
+  if (!f.is_valid()) return refusal_text(Refusal::cut_on_boundary);
+  if (m.face(h1) != f) return refusal_text(Refusal::cut_different_faces);
+  if (m.next(h0) == h1 || m.next(h1) == h0) return refusal_text(Refusal::cut_neighbour_targets);
   if (m.find_halfedge(m.to_vertex(h0), m.to_vertex(h1)).is_valid())
-    return "an edge already joins their targets";
+    return refusal_text(Refusal::cut_targets_joined);
   return nullptr;
 }
 
@@ -259,25 +259,24 @@ struct AddPlan {
 // add_face_refusal(), planning the face's existing edges into `plan` when it is allowed.
 const char* plan_add_face(const Mesh& m, std::span<const Vertex> vs, AddPlan& plan) {
   const std::size_t n = vs.size();
-  if (n < 3) return "a face needs at least 3 corners";
+  if (n < 3) return refusal_text(Refusal::add_face_too_few_corners);
   for (std::size_t i = 0; i < n; ++i) {
-    if (!m.is_live(vs[i])) return "a corner is not a live vertex";
+    if (!m.is_live(vs[i])) return refusal_text(Refusal::add_face_corner_not_live);
     for (std::size_t j = i + 1; j < n; ++j)
-      if (vs[i] == vs[j]) return "a corner is repeated";
+      if (vs[i] == vs[j]) return refusal_text(Refusal::add_face_corner_repeated);
   }
   plan.existing.assign(n, Halfedge());
   for (std::size_t i = 0; i < n; ++i) {
     const Halfedge h = m.find_halfedge(vs[i], vs[(i + 1) % n]);
-    if (h.is_valid() && !m.is_boundary(h)) return "an edge of the face already has a face on that side";
+    if (h.is_valid() && !m.is_boundary(h)) return refusal_text(Refusal::add_face_edge_taken);
     plan.existing[i] = h;
   }
   for (std::size_t i = 0; i < n; ++i) {
     const Vertex v = vs[i];
     if (m.is_isolated(v)) continue;
-    if (!m.is_boundary(v)) return "a corner is an interior vertex (its fan of faces is closed)";
+    if (!m.is_boundary(v)) return refusal_text(Refusal::add_face_interior_corner);
     const Halfedge in = plan.existing[(i + n - 1) % n], out = plan.existing[i];
-    if (!in.is_valid() && !out.is_valid())
-      return "the face would meet a corner's faces at the vertex only (a second gap in its fan)";
+    if (!in.is_valid() && !out.is_valid()) return refusal_text(Refusal::add_face_second_gap);
   }
   return nullptr;
 }
@@ -348,10 +347,10 @@ Face add_face(SurfaceMesh& m, std::span<const Vertex> vs) {
 bool can_remove_face(const SurfaceMesh& m, Face f) { return remove_face_refusal(m, f) == nullptr; }
 
 const char* remove_face_refusal(const SurfaceMesh& m, Face f) {
-  if (!m.is_live(f)) return "the face is not live";
+  if (!m.is_live(f)) return refusal_text(Refusal::face_not_live);
   for (Vertex v : m.vertices(f))
     if (gaps_after(m, v, [&](Face g) { return g == f; }) > 1)
-      return "a corner would be left with two gaps in its fan of faces (pinched)";
+      return refusal_text(Refusal::remove_face_pinches);
   return nullptr;
 }
 
@@ -374,14 +373,13 @@ std::vector<Face> faces_of(const Mesh& m, Vertex v) {
 bool can_remove_vertex(const SurfaceMesh& m, Vertex v) { return remove_vertex_refusal(m, v) == nullptr; }
 
 const char* remove_vertex_refusal(const SurfaceMesh& m, Vertex v) {
-  if (!m.is_live(v)) return "the vertex is not live";
+  if (!m.is_live(v)) return refusal_text(Refusal::vertex_not_live);
   const std::vector<Face> fs = faces_of(m, v);
   auto removed = [&](Face g) { return std::binary_search(fs.begin(), fs.end(), g); };
   // Every corner of the removed faces is affected, not only v's neighbours (polygons).
   for (Face f : fs)
     for (Vertex w : m.vertices(f))
-      if (w != v && gaps_after(m, w, removed) > 1)
-        return "a corner of its faces would be left with two gaps in its fan of faces (pinched)";
+      if (w != v && gaps_after(m, w, removed) > 1) return refusal_text(Refusal::remove_vertex_pinches);
   return nullptr;
 }
 

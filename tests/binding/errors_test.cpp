@@ -73,5 +73,18 @@ TEST(BindingErrors, StatusNamesInCAndJs) {
   }
 }
 
+// The C ABI's refusal names: "HEDGE_REFUSAL_" and the table's name in capitals, for every code.
+TEST(BindingErrors, RefusalNamesInC) {
+  EXPECT_STREQ(refusal_name(Refusal::none), "HEDGE_REFUSAL_NONE");
+  EXPECT_STREQ(refusal_name(Refusal::flip_boundary_edge), "HEDGE_REFUSAL_FLIP_BOUNDARY_EDGE");
+  EXPECT_STREQ(refusal_name(static_cast<Refusal>(kRefusalCount)), "HEDGE_REFUSAL_UNKNOWN");
+  EXPECT_STREQ(refusal_name(static_cast<Refusal>(-1)), "HEDGE_REFUSAL_UNKNOWN");
+  for (const RefusalEntry& r : refusals()) {
+    std::string c = r.name;
+    for (char& ch : c) ch = char(std::toupper(static_cast<unsigned char>(ch)));
+    EXPECT_EQ("HEDGE_REFUSAL_" + c, refusal_name(r.code));
+  }
+}
+
 }  // namespace
 }  // namespace hedge::binding

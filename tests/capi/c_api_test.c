@@ -637,6 +637,37 @@ static void test_deprecated_names(void) {
 }
 /* End of deprecated names */
 
+/* ---------------------------------------------------------------------------------------------- */
+/* Refusal codes: one per refusal of the library's table, each with its name and text             */
+/* ---------------------------------------------------------------------------------------------- */
+
+static void test_refusal_codes(void) {
+  /* Every code's name and text: refusals_test.c walks the whole table. */
+  CHECK(strcmp(hedge_refusal_name(HEDGE_REFUSAL_FLIP_BOUNDARY_EDGE), "HEDGE_REFUSAL_FLIP_BOUNDARY_EDGE") ==
+        0);
+  CHECK(strcmp(hedge_refusal_name(HEDGE_REFUSAL_COUNT), "HEDGE_REFUSAL_UNKNOWN") == 0);
+  CHECK(strcmp(hedge_refusal_text(HEDGE_REFUSAL_NONE), "") == 0);
+
+  /* A refused edit sets the code with its text; a call that is not refused clears both. */
+  hedge_mesh* tet = make_mesh(kTetPositions, 4, kTetTriangles, 12, NULL, 0);
+  CHECK(hedge_last_refusal_code() == HEDGE_REFUSAL_NONE);
+  CHECK_STATUS(hedge_flip(tet, 0), HEDGE_ERROR_REFUSED);
+  CHECK(hedge_last_refusal_code() == HEDGE_REFUSAL_FLIP_VALENCE_THREE);
+  CHECK(strcmp(hedge_refusal_text(hedge_last_refusal_code()), hedge_last_refusal()) == 0);
+  CHECK(hedge_last_refusal_code() == HEDGE_REFUSAL_FLIP_VALENCE_THREE); /* reading it changes nothing */
+  CHECK_STATUS(hedge_flip(tet, 999), HEDGE_ERROR_BAD_HANDLE);
+  CHECK(hedge_last_refusal_code() == HEDGE_REFUSAL_NONE); /* a bad handle is no refusal */
+  CHECK_STATUS(hedge_collapse(tet, 0, &(uint32_t){0}), HEDGE_ERROR_REFUSED);
+  CHECK(hedge_last_refusal_code() != HEDGE_REFUSAL_NONE);
+  CHECK(strcmp(hedge_refusal_text(hedge_last_refusal_code()), hedge_last_refusal()) == 0);
+  CHECK_OK(hedge_can_flip(tet, 0, &(int32_t){0}));
+  CHECK(hedge_last_refusal_code() == HEDGE_REFUSAL_NONE);
+  uint32_t problems = 1;
+  CHECK_OK(hedge_mesh_validate(tet, &problems));
+  CHECK(problems == 0);
+  CHECK_OK(hedge_mesh_destroy(tet));
+}
+
 int main(void) {
   test_basics();
   test_tetrahedron();
@@ -663,6 +694,7 @@ int main(void) {
   test_every_function_error_path();
   test_threads();
   test_deprecated_names();
+  test_refusal_codes();
   printf("c_api_test: %d checks passed\n", g_checks);
   return 0;
 }

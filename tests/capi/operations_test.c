@@ -275,6 +275,58 @@ void test_pyramid_operations(void) {
 /* Polygons: cutting faces, adding faces, detaching faces                                         */
 /* ---------------------------------------------------------------------------------------------- */
 
+/* A face added with texcoords per corner and a submesh: the texcoords reach the render buffers' corners;
+ * bad attributes fail before the mesh changes. */
+static void add_face_with_attributes(void) {
+  hedge_mesh* grid = make_mesh(kGridPositions, 9, kGridQuads, 16, kGridSizes, 4);
+  CHECK_OK(hedge_remove_face(grid, 3)); /* quad 4 5 8 7; vertex 8 goes with it */
+  const uint32_t triangle[] = {4, 5, 7};
+  const float uv[] = {0.25f, 0.5f, 0.75f, 0.5f, 0.25f, 1.0f};
+  const float nan_uv[] = {0, 0, NAN, 0, 1, 1};
+  uint32_t face = 1234;
+  const hedge_counts before = counts_of(grid);
+  CHECK_STATUS(hedge_add_face_with_attributes(grid, triangle, 3, nan_uv, -1, &face),
+               HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("texcoord 1 is not finite");
+  CHECK_STATUS(hedge_add_face_with_attributes(grid, triangle, 3, uv, 65536, &face),
+               HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("submesh 65536 is not in [0, 65535]");
+  const uint32_t reversed[] = {7, 5, 4};
+  CHECK_STATUS(hedge_add_face_with_attributes(grid, reversed, 3, uv, 1, &face), HEDGE_ERROR_REFUSED);
+  CHECK(hedge_last_refusal_code() != HEDGE_REFUSAL_NONE);
+  CHECK_STATUS(hedge_add_face_with_attributes(grid, NULL, 3, uv, 1, &face), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_add_face_with_attributes(grid, triangle, 3, uv, 1, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK(face == 1234);
+  CHECK(same_counts(counts_of(grid), before));
+
+  CHECK_OK(hedge_add_face_with_attributes(grid, triangle, 3, uv, 2, &face));
+  CHECK(face_is(grid, face, triangle, 3));
+  CHECK_VALID(grid);
+  hedge_render_buffers_options options;
+  CHECK_OK(hedge_render_buffers_options_default(&options));
+  options.interleaved = 0;
+  hedge_render_buffers* render = NULL;
+  CHECK_OK(hedge_render_buffers_create(grid, &options, &render));
+  const float* texcoords = NULL;
+  uint64_t floats = 0;
+  CHECK_OK(hedge_render_buffers_vertex_data(render, HEDGE_STREAM_TEXCOORDS, &texcoords, &floats));
+  CHECK(texcoords != NULL);
+  uint32_t loop[3], n = 0;
+  CHECK_OK(hedge_face_halfedges(grid, face, loop, 3, &n));
+  CHECK(n == 3);
+  for (uint32_t i = 0; i < 3; ++i) {
+    uint32_t corner = 0, rv = 0;
+    const uint32_t v = to_vertex(grid, loop[i]);
+    while (triangle[corner] != v) ++corner;
+    CHECK_OK(hedge_render_buffers_corner_vertex(render, loop[i], &rv));
+    CHECK(2 * (uint64_t)rv + 1 < floats);
+    CHECK(texcoords[2 * rv] == uv[2 * corner] && texcoords[2 * rv + 1] == uv[2 * corner + 1]);
+  }
+  CHECK_OK(hedge_render_buffers_destroy(render));
+  CHECK_VALID(grid);
+  CHECK_OK(hedge_mesh_destroy(grid));
+}
+
 void test_grid_operations(void) {
   hedge_mesh* grid = make_mesh(kGridPositions, 9, kGridQuads, 16, kGridSizes, 4);
   hedge_counts c = counts_of(grid);
@@ -370,4 +422,5 @@ void test_grid_operations(void) {
   CHECK_OK(hedge_mesh_destroy(empty));
   CHECK_OK(hedge_mesh_destroy(piece));
   CHECK_OK(hedge_mesh_destroy(grid));
+  add_face_with_attributes();
 }

@@ -1,6 +1,7 @@
 /* The shared table of refused edits and bad handles (tests/cases/refusals.txt, which says its
- * format) run through the C ABI: each case must give the table's status and text, as the JS API's
- * and the C# binding's tests of the same table must. Compiled as C11. */
+ * format) run through the C ABI: each case must give the table's status, text and refusal code, as
+ * the JS API's and the C# binding's tests of the same table must. Then every refusal code of the
+ * header, with its name and text. Compiled as C11. */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -111,12 +112,12 @@ static hedge_status run_edit(hedge_mesh* mesh, const Edit* e) {
 }
 
 static void run_case(char* line) {
-  char* fields[5];
+  char* fields[6];
   char* rest = line;
   int n = 0;
-  for (char* f = next_field(&rest, '|'); f != NULL && n < 5; f = next_field(&rest, '|')) fields[n++] = f;
-  if (n != 5) {
-    fprintf(stderr, "a case needs 5 fields: %s\n", line);
+  for (char* f = next_field(&rest, '|'); f != NULL && n < 6; f = next_field(&rest, '|')) fields[n++] = f;
+  if (n != 6) {
+    fprintf(stderr, "a case needs 6 fields: %s\n", line);
     exit(1);
   }
   ++g_cases;
@@ -137,9 +138,11 @@ static void run_case(char* line) {
   }
   const hedge_status status = run_edit(mesh, &checked);
   const char* text = status == HEDGE_ERROR_REFUSED ? hedge_last_refusal() : hedge_last_error();
-  if (strcmp(hedge_status_string(status), fields[3]) != 0 || strcmp(text, fields[4]) != 0) {
-    fprintf(stderr, "case %s | %s | %s:\n  expected %s \"%s\"\n  got      %s \"%s\"\n", fields[0], fields[1],
-            fields[2], fields[3], fields[4], hedge_status_string(status), text);
+  const char* code = hedge_refusal_name(hedge_last_refusal_code());
+  if (strcmp(hedge_status_string(status), fields[3]) != 0 || strcmp(text, fields[4]) != 0 ||
+      strcmp(code, fields[5]) != 0) {
+    fprintf(stderr, "case %s | %s | %s:\n  expected %s \"%s\" %s\n  got      %s \"%s\" %s\n", fields[0],
+            fields[1], fields[2], fields[3], fields[4], fields[5], hedge_status_string(status), text, code);
     ++g_failures;
   }
   uint32_t problems = 1;
@@ -149,6 +152,73 @@ static void run_case(char* line) {
   }
   hedge_mesh_destroy(mesh);
 }
+
+/* Every refusal code of the header: in order, none missing, each with its name and its own text. */
+#define EXPECT(cond)                                                           \
+  do {                                                                         \
+    if (!(cond)) {                                                             \
+      fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
+      ++g_failures;                                                            \
+    }                                                                          \
+  } while (0)
+
+static void check_every_code(void) {
+#define NAMED(code) \
+  { code, #code }
+  const struct {
+    hedge_refusal code;
+    const char* name;
+  } named[] = {NAMED(HEDGE_REFUSAL_NONE),
+               NAMED(HEDGE_REFUSAL_EDGE_NOT_LIVE),
+               NAMED(HEDGE_REFUSAL_HALFEDGE_NOT_LIVE),
+               NAMED(HEDGE_REFUSAL_FACE_NOT_LIVE),
+               NAMED(HEDGE_REFUSAL_VERTEX_NOT_LIVE),
+               NAMED(HEDGE_REFUSAL_COLLAPSE_JOINS_SEAM_SIDES),
+               NAMED(HEDGE_REFUSAL_COLLAPSE_PULLS_SEAM_VERTEX),
+               NAMED(HEDGE_REFUSAL_COLLAPSE_SHORTENS_SEAM),
+               NAMED(HEDGE_REFUSAL_COLLAPSE_SAME_FACE_BOTH_SIDES),
+               NAMED(HEDGE_REFUSAL_COLLAPSE_PINCHES_BOUNDARY),
+               NAMED(HEDGE_REFUSAL_COLLAPSE_SECOND_EDGE),
+               NAMED(HEDGE_REFUSAL_COLLAPSE_LINK_CONDITION),
+               NAMED(HEDGE_REFUSAL_COLLAPSE_DANGLING_EDGE),
+               NAMED(HEDGE_REFUSAL_COLLAPSE_TIP_TOO_FEW_EDGES),
+               NAMED(HEDGE_REFUSAL_COLLAPSE_SURVIVOR_TOO_FEW_EDGES),
+               NAMED(HEDGE_REFUSAL_FLIP_TIPS_SHARED),
+               NAMED(HEDGE_REFUSAL_FLIP_VALENCE_THREE),
+               NAMED(HEDGE_REFUSAL_FLIP_TIPS_JOINED),
+               NAMED(HEDGE_REFUSAL_FLIP_BOUNDARY_EDGE),
+               NAMED(HEDGE_REFUSAL_FLIP_NOT_TRIANGLE),
+               NAMED(HEDGE_REFUSAL_CUT_HALFEDGE_NOT_LIVE),
+               NAMED(HEDGE_REFUSAL_CUT_SAME_HALFEDGE),
+               NAMED(HEDGE_REFUSAL_CUT_ON_BOUNDARY),
+               NAMED(HEDGE_REFUSAL_CUT_DIFFERENT_FACES),
+               NAMED(HEDGE_REFUSAL_CUT_NEIGHBOUR_TARGETS),
+               NAMED(HEDGE_REFUSAL_CUT_TARGETS_JOINED),
+               NAMED(HEDGE_REFUSAL_ADD_FACE_TOO_FEW_CORNERS),
+               NAMED(HEDGE_REFUSAL_ADD_FACE_CORNER_NOT_LIVE),
+               NAMED(HEDGE_REFUSAL_ADD_FACE_CORNER_REPEATED),
+               NAMED(HEDGE_REFUSAL_ADD_FACE_EDGE_TAKEN),
+               NAMED(HEDGE_REFUSAL_ADD_FACE_INTERIOR_CORNER),
+               NAMED(HEDGE_REFUSAL_ADD_FACE_SECOND_GAP),
+               NAMED(HEDGE_REFUSAL_REMOVE_FACE_PINCHES),
+               NAMED(HEDGE_REFUSAL_REMOVE_VERTEX_PINCHES),
+               NAMED(HEDGE_REFUSAL_FILL_HOLE_NOT_BOUNDARY),
+               NAMED(HEDGE_REFUSAL_FILL_HOLE_LOOP_DAMAGED),
+               NAMED(HEDGE_REFUSAL_FILL_HOLE_LOOP_TOO_SHORT)};
+#undef NAMED
+  const int32_t listed = (int32_t)(sizeof named / sizeof named[0]);
+  EXPECT(listed == HEDGE_REFUSAL_COUNT);
+  for (int32_t i = 0; i < HEDGE_REFUSAL_COUNT && i < listed; ++i) {
+    EXPECT(named[i].code == i); /* the header's constants in order, none missing */
+    EXPECT(strcmp(hedge_refusal_name(i), named[i].name) == 0);
+    EXPECT((strcmp(hedge_refusal_text(i), "") == 0) == (i == HEDGE_REFUSAL_NONE));
+    for (int32_t j = 0; j < i; ++j) EXPECT(strcmp(hedge_refusal_text(i), hedge_refusal_text(j)) != 0);
+  }
+  EXPECT(strcmp(hedge_refusal_name(HEDGE_REFUSAL_COUNT), "HEDGE_REFUSAL_UNKNOWN") == 0);
+  EXPECT(strcmp(hedge_refusal_name(-1), "HEDGE_REFUSAL_UNKNOWN") == 0);
+  EXPECT(strcmp(hedge_refusal_text(HEDGE_REFUSAL_COUNT), "") == 0);
+}
+#undef EXPECT
 
 int main(void) {
   const char* path = HEDGE_CASES_DIR "/refusals.txt";
@@ -172,6 +242,7 @@ int main(void) {
     }
   }
   fclose(in);
+  check_every_code();
   if (g_cases == 0) return fprintf(stderr, "no cases in %s\n", path), 1;
   if (g_failures > 0) return fprintf(stderr, "%d of %d cases failed\n", g_failures, g_cases), 1;
   printf("refusals_test: %d cases passed\n", g_cases);

@@ -348,7 +348,6 @@ TEST(EngineMesh, OrthogonalTangent) {
   EXPECT_EQ(orthogonal_tangent(Vec4{0, 0, 2, -1}, Vec3{0, 0, 1}), (Vec4{0, 0, 1, -1}));  // along n: kept
 }
 
-
 // The map back to the engine arrays: every corner names its engine vertex (the triangle's own
 // index), every vertex the smallest engine vertex welded into it; after a split the new vertex and
 // its corners name none, and the old ones keep theirs through garbage collection.

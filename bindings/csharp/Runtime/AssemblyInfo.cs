@@ -4,6 +4,8 @@ using System;
 using System.Runtime.CompilerServices;
 
 [assembly: InternalsVisibleTo("Hedge.HalfEdge.Unity")]
+// The tests (Tests/Runtime/, assembly Hedge.HalfEdge.Tests in Unity) check internals too.
+[assembly: InternalsVisibleTo("Hedge.HalfEdge.Tests")]
 
 namespace Hedge
 {

@@ -3,8 +3,9 @@
 // Errors. Every call that the library answers with a status other than OK throws a
 // HedgeException carrying that status and the library's message, with one exception: an edit
 // that its predicate refuses (HEDGE_ERROR_REFUSED) is not an error, as in the C++ library. It
-// returns false, an invalid handle or a count of 0, and leaves the mesh exactly as it was. A
-// disposed mesh, or an element index that is out of range or deleted, is HedgeStatus.BadHandle.
+// returns false, an invalid handle or a count of 0, and leaves the mesh exactly as it was. An
+// element index that is out of range or deleted is HedgeStatus.BadHandle; any call on a disposed
+// mesh throws ObjectDisposedException.
 // Arguments the binding can check itself before calling (a null array that is required, an array
 // whose length does not fit the counts) throw ArgumentException, so that the library never reads
 // or writes past the end of a managed array.
@@ -29,7 +30,7 @@ namespace Hedge
         static readonly string[] NoProblems = new string[0];
 
         readonly MeshHandle handle;
-        readonly IntPtr id;
+        readonly IntPtr liveId;
         // Render objects the finalizer released, destroyed on this mesh's thread (see RenderHandle).
         readonly PendingRenders pendingRenders = new PendingRenders();
         // Scratch for the three-corner AddFace overloads.
@@ -37,9 +38,13 @@ namespace Hedge
 
         HalfEdgeMesh(IntPtr id)
         {
-            this.id = id;
+            liveId = id;
             handle = new MeshHandle(id);
         }
+
+        // The native id for a call: every call goes through here, so a disposed mesh throws
+        // ObjectDisposedException (naming the type) before it reaches the library. One field read.
+        IntPtr id { get { return handle.IsClosed ? throw new ObjectDisposedException("HalfEdgeMesh") : liveId; } }
 
         static HalfEdgeMesh Created(int status, IntPtr id)
         {
@@ -53,7 +58,8 @@ namespace Hedge
         /// <summary>The SafeHandle that owns the native mesh.</summary>
         public SafeHandle Handle { get { return handle; } }
 
-        /// <summary>True after <see cref="Dispose"/>; every later call throws HedgeException(BadHandle).</summary>
+        /// <summary>True after <see cref="Dispose"/>; every later call (but Dispose, IsDisposed, Handle and
+        /// ToString) throws ObjectDisposedException.</summary>
         public bool IsDisposed { get { return handle.IsClosed; } }
 
         /// <summary>Destroys the native mesh and every RenderBuffers made for it.</summary>
@@ -436,29 +442,10 @@ namespace Hedge
         }
 
         // =========================================================================================
-        // Edits. A refused edit returns false / an invalid handle / 0 and changes nothing; LastRefusal
-        // then says why. Render buffers of the mesh see every edit at their next sync.
+        // Edits. A refused edit returns false / an invalid handle / 0 and changes nothing;
+        // LastRefusalCode and LastRefusal then say why (Refusals.cs). Render buffers of the mesh see
+        // every edit at their next sync.
         // =========================================================================================
-
-        /// <summary>Why the last edit of this mesh was refused: the library's refusal, as hedge_last_refusal()
-        /// gave it right after the call (e.g. "it would pull a seam vertex off its seam"), the same text as the
-        /// JS API's lastRefusal; or null if the last edit was done. Every edit (split, collapse, flip, cut,
-        /// add, remove, fill) sets it; nothing throws for a refusal, and only a refusal allocates (the
-        /// string).</summary>
-        public string LastRefusal { get; private set; }
-
-        // True if the status says "refused" (then LastRefusal holds the reason); throws for any other failure.
-        bool WasRefused(int status)
-        {
-            if (status == Refused)
-            {
-                LastRefusal = Status.FromUtf8(Native.hedge_last_refusal());
-                return true;
-            }
-            LastRefusal = null;
-            Status.Check(status);
-            return false;
-        }
 
         /// <summary>Inserts a vertex at point p on the edge. Triangles on either side are split in two;
         /// half-edge 2 x e then runs from the edge's first vertex to the new vertex.</summary>

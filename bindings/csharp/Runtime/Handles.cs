@@ -147,6 +147,46 @@ namespace Hedge
         public override int GetHashCode() { return X.GetHashCode() ^ (Y.GetHashCode() * 397) ^ (Z.GetHashCode() * 7919); }
         public static bool operator ==(Vec3 a, Vec3 b) { return a.Equals(b); }
         public static bool operator !=(Vec3 a, Vec3 b) { return !a.Equals(b); }
+
+        // Arithmetic, componentwise in float, as Unity's Vector3 does it. Equality above is exact (bit for
+        // bit but for 0 == -0 and NaN != NaN); compare with a tolerance through (a - b).Length.
+        public static Vec3 operator +(Vec3 a, Vec3 b) { return new Vec3(a.X + b.X, a.Y + b.Y, a.Z + b.Z); }
+        public static Vec3 operator -(Vec3 a, Vec3 b) { return new Vec3(a.X - b.X, a.Y - b.Y, a.Z - b.Z); }
+        public static Vec3 operator -(Vec3 a) { return new Vec3(-a.X, -a.Y, -a.Z); }
+        public static Vec3 operator *(Vec3 a, float s) { return new Vec3(a.X * s, a.Y * s, a.Z * s); }
+        public static Vec3 operator *(float s, Vec3 a) { return new Vec3(a.X * s, a.Y * s, a.Z * s); }
+        public static Vec3 operator /(Vec3 a, float s) { return new Vec3(a.X / s, a.Y / s, a.Z / s); }
+
+        public static readonly Vec3 Zero = new Vec3(0, 0, 0);
+
+        public static float Dot(Vec3 a, Vec3 b) { return a.X * b.X + a.Y * b.Y + a.Z * b.Z; }
+
+        /// <summary>The right-handed cross product: Cross((1, 0, 0), (0, 1, 0)) is (0, 0, 1).</summary>
+        public static Vec3 Cross(Vec3 a, Vec3 b)
+        {
+            return new Vec3(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
+        }
+
+        /// <summary>The Euclidean length, computed in double (no overflow for large floats).</summary>
+        public float Length { get { return (float)Math.Sqrt((double)X * X + (double)Y * Y + (double)Z * Z); } }
+
+        public float SqrLength { get { return X * X + Y * Y + Z * Z; } }
+
+        /// <summary>This direction with length 1, or <see cref="Zero"/> for a zero (or not finite) vector.</summary>
+        public Vec3 Normalized
+        {
+            get
+            {
+                double l = Math.Sqrt((double)X * X + (double)Y * Y + (double)Z * Z);
+                if (!(l > 0) || double.IsInfinity(l)) return Zero;
+                return new Vec3((float)(X / l), (float)(Y / l), (float)(Z / l));
+            }
+        }
+
+        public static float Distance(Vec3 a, Vec3 b) { return (a - b).Length; }
+
+        /// <summary>a + (b - a) t, t not clamped.</summary>
+        public static Vec3 Lerp(Vec3 a, Vec3 b, float t) { return new Vec3(a.X + (b.X - a.X) * t, a.Y + (b.Y - a.Y) * t, a.Z + (b.Z - a.Z) * t); }
         public override string ToString()
         {
             return "(" + X.ToString("R", System.Globalization.CultureInfo.InvariantCulture) + ", " +

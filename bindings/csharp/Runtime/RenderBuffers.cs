@@ -16,8 +16,8 @@
 // After Compact(), copy everything. A consumer that uploads later than it syncs, or not after every
 // sync, keeps a RenderChangeLog (CreateChangeLog()): every sync merges its ranges into it.
 //
-// Errors follow HalfEdgeMesh: a failed status throws HedgeException; a RenderBuffers whose mesh was
-// disposed throws HedgeException(BadHandle). The partial copies read the library's buffers in place
+// Errors follow HalfEdgeMesh: a failed status throws HedgeException; a RenderBuffers that was
+// disposed, or whose mesh was (which disposes them too), throws ObjectDisposedException. The partial copies read the library's buffers in place
 // (no copy of the whole buffer, no managed allocation).
 using System;
 using System.Collections.Generic;
@@ -30,7 +30,7 @@ namespace Hedge
     {
 
         readonly RenderHandle handle;
-        readonly IntPtr id;
+        readonly IntPtr liveId;
         // Keeps the mesh (and so the native render object) alive as long as these buffers are reachable.
         readonly HalfEdgeMesh mesh;
         readonly RenderOptions options;
@@ -43,21 +43,48 @@ namespace Hedge
             if (mesh == null) throw new ArgumentNullException("mesh");
             IntPtr render;
             Status.Check(Native.hedge_render_buffers_create(mesh.Id, ref options, out render));
-            id = render;
+            liveId = render;
             handle = new RenderHandle(render, mesh.PendingRenders);
             this.mesh = mesh;
             this.options = options;
             Status.Check(Native.hedge_render_buffers_layout(id, out layout));
         }
 
+        // The native id for a call: every call goes through here, so buffers disposed themselves or with
+        // their mesh throw ObjectDisposedException (naming the type) before they reach the library.
+        IntPtr id
+        {
+            get
+            {
+                ThrowIfDisposed();
+                return liveId;
+            }
+        }
+
+        void ThrowIfDisposed()
+        {
+            if (handle.IsClosed) throw new ObjectDisposedException("RenderBuffers");
+            if (mesh.IsDisposed)
+                throw new ObjectDisposedException("RenderBuffers", "Their mesh was disposed, which disposed them too.");
+        }
+
         /// <summary>The mesh these buffers follow.</summary>
         public HalfEdgeMesh Mesh { get { return mesh; } }
         public RenderOptions Options { get { return options; } }
         /// <summary>Where each attribute sits in a vertex (fixed for the life of the buffers).</summary>
-        public VertexLayout Layout { get { return layout; } }
+        public VertexLayout Layout
+        {
+            get
+            {
+                ThrowIfDisposed();
+                return layout;
+            }
+        }
         /// <summary>The SafeHandle that owns the native render object.</summary>
         public SafeHandle Handle { get { return handle; } }
-        public bool IsDisposed { get { return handle.IsClosed; } }
+        /// <summary>True after <see cref="Dispose"/> or the mesh's; every later call (but Dispose, IsDisposed,
+        /// Mesh, Options and Handle) throws ObjectDisposedException.</summary>
+        public bool IsDisposed { get { return handle.IsClosed || mesh.IsDisposed; } }
 
         internal IntPtr Id { get { return id; } }
 

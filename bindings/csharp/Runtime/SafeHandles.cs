@@ -4,9 +4,9 @@
 // object on its mesh's thread (see RenderHandle).
 //
 // The handles of the C ABI are ids checked against a registry on every call and never reused, not
-// addresses. The wrappers therefore pass the raw id to the native functions: a call on a disposed
-// object reaches the library with a dead id and comes back as HedgeException(BadHandle) with the
-// library's message, instead of the marshaller's ObjectDisposedException. Disposing a mesh while
+// addresses. The wrappers therefore pass the raw id to the native functions, after checking that
+// the handle is not closed: a call on a disposed object throws ObjectDisposedException naming the
+// wrapper's type (HalfEdgeMesh, RenderBuffers) and never reaches the library. Disposing a mesh while
 // another thread is in a call on it is a misuse the library refuses (HEDGE_ERROR_BUSY): the native
 // mesh then stays until the process ends, rather than being freed under the running call.
 using System;

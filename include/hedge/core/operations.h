@@ -6,7 +6,8 @@
 // Every operation that can be illegal has a public predicate (can_*) and returns an empty result
 // (an invalid handle, false, or an empty list) when refused; a refused operation leaves the mesh
 // exactly as it was. Each such edit also has a refusal (*_refusal): why the edit is refused, in a
-// few words, as a static string, or null if it is allowed. Its can_* is exactly "the refusal is
+// few words, as a static string of the one table of refusals (core/refusal.h, which gives each its
+// stable code), or null if it is allowed. Its can_* is exactly "the refusal is
 // null", so the two cannot disagree; the bindings report the refusal as the reason. Each costs
 // O(1) or O(valence) unless noted.
 // Properties follow the edits:

@@ -72,6 +72,7 @@ namespace Hedge.Unity
         /// <returns>True if only ranges were uploaded; false if everything was (or nothing changed).</returns>
         public bool Upload()
         {
+            ThrowIfDisposed();
             buffers.Sync();
             return UploadPending();
         }
@@ -85,6 +86,7 @@ namespace Hedge.Unity
 
         bool UploadPending()
         {
+            ThrowIfDisposed();
             if (log.IsEmpty) return false;
             BufferCounts counts = buffers.Counts;
             if (log.Everything || counts.VertexSlots > gpuVertices || counts.IndexCount > gpuIndices)
@@ -111,6 +113,7 @@ namespace Hedge.Unity
         /// and uploads everything.</summary>
         public void UploadAll()
         {
+            ThrowIfDisposed();
             log.Clear();
             BufferCounts counts = buffers.Counts;
             VertexLayout layout = buffers.Layout;
@@ -248,6 +251,11 @@ namespace Hedge.Unity
         }
 
         /// <summary>Frees the 16-bit index scratch and stops the change log (the Mesh and the buffers stay).</summary>
+        void ThrowIfDisposed()
+        {
+            if (disposed) throw new ObjectDisposedException("NativeMeshUploader");
+        }
+
         public void Dispose()
         {
             if (disposed) return;

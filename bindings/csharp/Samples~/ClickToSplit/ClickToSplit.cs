@@ -10,6 +10,8 @@
 // buffers map it back to the half-edge face (RenderBuffers.FaceOfTriangle), the edit runs on the
 // half-edge mesh, and NativeMeshUploader uploads only what the edit rewrote, straight from the
 // native buffers. The collider is given the new mesh after each edit, so that the next click sees it.
+// It reads the mouse with either input system, the Input System package or the legacy Input Manager
+// (PointerInput.cs).
 using Hedge;
 using Hedge.Unity;
 using UnityEngine;
@@ -32,6 +34,9 @@ public sealed class ClickToSplit : MonoBehaviour
 
     void Start()
     {
+        if (PointerInput.Source == "none")
+            Debug.LogWarning("hedge: ClickToSplit reads no input: enable the Input Manager or install the Input " +
+                             "System package (Project Settings > Player > Active Input Handling)");
         MeshFilter filter = GetComponent<MeshFilter>();
         Mesh source = filter.sharedMesh;
         halfEdgeMesh = UnityMeshes.FromUnityMesh(source.vertices, source.triangles, source.normals, source.uv,
@@ -49,10 +54,12 @@ public sealed class ClickToSplit : MonoBehaviour
 
     void Update()
     {
-        bool split = Input.GetMouseButtonDown(0), collapse = Input.GetMouseButtonDown(1);
+        Vector3 pointer;
+        bool split = PointerInput.ButtonDown(0, out pointer);
+        bool collapse = !split && PointerInput.ButtonDown(1, out pointer);
         if (!split && !collapse) return;
         RaycastHit hit;
-        if (!Physics.Raycast(Camera.main.ScreenPointToRay(Input.mousePosition), out hit) || hit.collider != meshCollider)
+        if (!Physics.Raycast(Camera.main.ScreenPointToRay(pointer), out hit) || hit.collider != meshCollider)
             return;
         Face face = buffers.FaceOfTriangle(hit.triangleIndex);
         if (!face.IsValid) return; // a triangle of a face deleted since the last upload

@@ -49,27 +49,43 @@ namespace Hedge.Tests
             }
         }
 
+        // Every call on a disposed mesh throws ObjectDisposedException naming the type, before it reaches
+        // the library: queries, edits (not a refusal), picking, files, render buffers.
         [Test]
         static void DisposedMesh()
         {
             HalfEdgeMesh mesh = Meshes.Tet();
+            HalfEdgeMesh other = Meshes.Tet();
             Check.Valid(mesh);
             Check.False(mesh.IsDisposed);
             mesh.Dispose();
             Check.True(mesh.IsDisposed);
-            HedgeException e = Check.Throws(HedgeStatus.BadHandle, () => { var c = mesh.Counts; });
-            Check.Equal("HEDGE_ERROR_BAD_HANDLE", e.StatusName);
-            Check.Contains(e.Message, "not a live mesh", "the library's message");
-            Check.Throws(HedgeStatus.BadHandle, () => mesh.Twin(new HalfEdge(0)));
-            Check.Throws(HedgeStatus.BadHandle, () => mesh.Collapse(new HalfEdge(0)), "bad handle, not refused");
-            Check.Throws(HedgeStatus.BadHandle, () => mesh.GetFaceVertices(new Face(0), new Vertex[3]));
-            Check.Throws(HedgeStatus.BadHandle, () => mesh.Validate());
-            Check.Throws(HedgeStatus.BadHandle, () => mesh.CreateRenderBuffers());
-            Check.Throws(HedgeStatus.BadHandle, () => mesh.Write(Context.Scratch("never.obj")));
+            ObjectDisposedException e = Check.ThrowsType<ObjectDisposedException>(() => { var c = mesh.Counts; });
+            Check.Equal("HalfEdgeMesh", e.ObjectName);
+            Check.ThrowsType<ObjectDisposedException>(() => mesh.Twin(new HalfEdge(0)));
+            Check.ThrowsType<ObjectDisposedException>(() => mesh.Collapse(new HalfEdge(0)), "disposed, not refused");
+            Check.Equal(null, mesh.LastRefusal, "no refusal recorded");
+            Check.ThrowsType<ObjectDisposedException>(() => mesh.CanFlip(new Edge(0)));
+            Check.ThrowsType<ObjectDisposedException>(() => mesh.GetFaceVertices(new Face(0), new Vertex[3]));
+            Check.ThrowsType<ObjectDisposedException>(() => mesh.Validate());
+            Check.ThrowsType<ObjectDisposedException>(() => mesh.CreateRenderBuffers());
+            Check.ThrowsType<ObjectDisposedException>(() => mesh.Write(Context.Scratch("never.obj")));
+            Check.ThrowsType<ObjectDisposedException>(() => mesh.SetPosition(new Vertex(0), 1, 2, 3));
+            Check.ThrowsType<ObjectDisposedException>(() => mesh.GarbageCollection());
+            Check.ThrowsType<ObjectDisposedException>(() => { var g = mesh.Geometry; });
+            SurfaceHit hit;
+            Check.ThrowsType<ObjectDisposedException>(() => mesh.Raycast(new Vec3(0, 0, 5), new Vec3(0, 0, -1), out hit));
+            Check.ThrowsType<ObjectDisposedException>(() => mesh.UpdatePickingTree());
+            double mean;
+            Check.ThrowsType<ObjectDisposedException>(() => other.HausdorffDistance(mesh, out mean), "the other mesh");
+            Check.ThrowsType<ObjectDisposedException>(() => mesh.HausdorffDistance(other, out mean));
             mesh.Dispose(); // a second Dispose is harmless
             Check.Equal("HalfEdgeMesh (disposed)", mesh.ToString());
+            Check.Valid(other);
+            other.Dispose();
         }
 
+        // Render buffers disposed themselves, or with their mesh, throw ObjectDisposedException naming the type.
         [Test]
         static void DisposedRenderBuffers()
         {
@@ -77,15 +93,23 @@ namespace Hedge.Tests
             RenderBuffers a = mesh.CreateRenderBuffers();
             RenderBuffers b = mesh.CreateRenderBuffers();
             a.Dispose();
-            Check.Throws(HedgeStatus.BadHandle, () => a.Sync());
+            Check.True(a.IsDisposed);
+            ObjectDisposedException e = Check.ThrowsType<ObjectDisposedException>(() => a.Sync());
+            Check.Equal("RenderBuffers", e.ObjectName);
+            Check.ThrowsType<ObjectDisposedException>(() => { var l = a.Layout; });
+            Check.ThrowsType<ObjectDisposedException>(() => a.FaceOfTriangle(0));
             Check.Equal(5, b.Counts.VertexSlots, "the other render object lives on");
             b.BeginTransaction();
             Check.True(mesh.SplitFace(new Face(0), 0.5f, 0.2f, 0.5f).IsValid);
             Check.Valid(mesh);
             mesh.Dispose(); // destroys b with the mesh, even inside its transaction
-            Check.Throws(HedgeStatus.BadHandle, () => b.CommitTransaction());
-            Check.Throws(HedgeStatus.BadHandle, () => { var c = b.Counts; });
-            Check.Throws(HedgeStatus.BadHandle, () => b.CopyDirtyVertices(VertexStream.Vertices, new float[64]));
+            Check.True(b.IsDisposed, "disposed with its mesh");
+            e = Check.ThrowsType<ObjectDisposedException>(() => b.CommitTransaction());
+            Check.Equal("RenderBuffers", e.ObjectName);
+            Check.Contains(e.Message, "mesh was disposed");
+            Check.ThrowsType<ObjectDisposedException>(() => { var c = b.Counts; });
+            Check.ThrowsType<ObjectDisposedException>(() => b.CopyDirtyVertices(VertexStream.Vertices, new float[64]));
+            Check.ThrowsType<ObjectDisposedException>(() => { int n; b.GetStreamPointer(VertexStream.Vertices, out n); });
             b.Dispose(); // already gone with its mesh: nothing to release, no exception
             Check.True(b.IsDisposed);
         }

@@ -160,7 +160,7 @@ namespace Hedge.Tests
                 Check.Equal(before, mesh.Counts);
                 Check.Valid(mesh);
                 mesh.Dispose();
-                Check.Throws(HedgeStatus.BadHandle, () => mesh.Raycast(new Vec3(0, 0, 1), new Vec3(0, 0, -1), out hit));
+                Check.ThrowsType<ObjectDisposedException>(() => mesh.Raycast(new Vec3(0, 0, 1), new Vec3(0, 0, -1), out hit));
             }
         }
 

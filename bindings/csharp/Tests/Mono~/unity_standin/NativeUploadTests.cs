@@ -255,16 +255,31 @@ namespace Hedge.Tests
             Click(sample, 0, 7, 7);
             Check.Equal(26, mesh.VertexCount);
 
+            // A button down with no mouse connected (the Input System's Mouse.current is null), or, for the
+            // Input Manager, at the last position, beside the mesh: nothing happens.
+            Input.ButtonsDown[0] = true;
+            Invoke(sample, "Update");
+            Input.ButtonsDown[0] = false;
+            Check.Equal(26, mesh.VertexCount);
+
             Invoke(sample, "OnDestroy");
             Check.True(mesh.IsDisposed);
+            Console.WriteLine("    the sample read the " + PointerInput.Source);
         }
 
+        // One frame with a click, given to both input systems' stand-ins: the sample reads the one its
+        // build enables (PointerInput.cs; the glue is compiled once for each).
         static void Click(ClickToSplit sample, int button, float x, float y)
         {
             Input.mousePosition = new Vector3(x, y, 0);
             Input.ButtonsDown[button] = true;
+            var mouse = new UnityEngine.InputSystem.Mouse();
+            mouse.position.Value = new Vector2(x, y);
+            (button == 0 ? mouse.leftButton : mouse.rightButton).wasPressedThisFrame = true;
+            UnityEngine.InputSystem.Mouse.current = mouse;
             Invoke(sample, "Update");
             Input.ButtonsDown[button] = false;
+            UnityEngine.InputSystem.Mouse.current = null;
         }
 
         static void Invoke(object target, string method)

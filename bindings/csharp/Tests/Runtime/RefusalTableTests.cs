@@ -82,7 +82,7 @@ namespace Hedge.Tests
                     if (f[1] != "-")
                         foreach (string first in f[1].Split(';'))
                             Check.True(Run(mesh, Parse(mesh, first.Trim())), where + ": the edit done first");
-                    string status = "HEDGE_OK", text = "";
+                    string status = "HEDGE_OK", text = "", code = "";
                     try
                     {
                         if (!Run(mesh, checkedEdit))
@@ -96,8 +96,10 @@ namespace Hedge.Tests
                         status = e.StatusName;
                         text = e.Message;
                     }
+                    code = mesh.LastRefusalCode.ToString();
                     Check.Equal(f[3], status, where);
                     Check.Equal(f[4], text, where);
+                    Check.Equal(RefusalCodeTests.PascalCase(f[5]), code, where);
                     Check.Valid(mesh, where);
                 }
             }

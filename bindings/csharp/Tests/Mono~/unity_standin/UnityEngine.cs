@@ -14,6 +14,7 @@ namespace UnityEngine
     {
         public float x, y;
         public Vector2(float x, float y) { this.x = x; this.y = y; }
+        public static implicit operator Vector3(Vector2 v) { return new Vector3(v.x, v.y, 0); }
     }
 
     public partial struct Vector3

@@ -113,6 +113,7 @@ namespace UnityEngine
     {
         public static readonly List<string> Messages = new List<string>();
         public static void Log(object message) { Messages.Add(message.ToString()); }
+        public static void LogWarning(object message) { Messages.Add(message.ToString()); }
     }
 
     public partial class Component

@@ -1,0 +1,16 @@
+#include "hedge/core/refusal.h"
+
+#include <cstring>
+
+namespace hedge {
+
+Refusal refusal_code(const char* text) noexcept {
+  if (text == nullptr || *text == '\0') return Refusal::none;
+  for (const RefusalEntry& r : kRefusals)
+    if (r.text == text) return r.code;
+  for (const RefusalEntry& r : kRefusals)
+    if (std::strcmp(r.text, text) == 0) return r.code;
+  return Refusal::none;
+}
+
+}  // namespace hedge
