@@ -11,6 +11,8 @@
 #   format clang-format 14, for scripts/format (prettier, its JavaScript half, comes from web/'s npm)
 #   csharp Mono's C# compiler and runtime, for the C# binding's tests (bindings/csharp/)
 #   wasm   emscripten (with its node and clang) for the WebAssembly module (bindings/wasm/)
+#   windows MinGW-w64 (posix threads) to cross-build hedge_c.dll and the C ABI tests for Windows
+#          x64, and wine64 to run them (the windows preset, cmake/toolchains/mingw-w64-x86_64.cmake)
 #   web    Debian's chromium (and its driver), for the playground's browser tests (web/); node 20
 #          and npm must be present already (hedge_web_npm checks)
 # Only missing packages are installed; when everything is present nothing is run, so the check is
@@ -30,6 +32,7 @@ hedge_deps_packages() {
       csharp) echo mono-mcs mono-runtime ;;
       wasm) echo emscripten nodejs ;;
       web) echo chromium chromium-driver ;;
+      windows) echo g++-mingw-w64-x86-64-posix gcc-mingw-w64-x86-64-posix wine64 ;;
       *)
         echo "deps.sh: unknown dependency group '$group'" >&2
         return 1

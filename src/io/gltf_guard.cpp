@@ -2,10 +2,6 @@
 
 #include "gltf_guard.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -16,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "fd.h"
+#include "file_system.h"
 #include "hedge/error.h"
 
 namespace hedge::detail {
@@ -301,7 +297,7 @@ std::uint32_t le32(const char* p) {
 
 // The folder part of a path, with its slash ("" for a bare name).
 std::string folder_of(const std::string& path) {
-  const std::size_t slash = path.find_last_of('/');
+  const std::size_t slash = path.find_last_of(kPathSeparators);
   return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
 }
 
@@ -351,11 +347,6 @@ bool has_scheme(const std::string& uri) {
     if (!ok) return false;
   }
   return false;
-}
-
-std::string real_path(const std::string& path) {
-  std::unique_ptr<char, decltype(&std::free)> resolved(::realpath(path.c_str(), nullptr), &std::free);
-  return resolved ? std::string(resolved.get()) : std::string();
 }
 
 }  // namespace
@@ -420,19 +411,19 @@ GltfBufferFiles::GltfBufferFiles(const GltfScan& scan, const std::string& name, 
     // nothing of what exists outside the folder.
     const std::string resolved = real_path(root + "/" + relative);
     const std::string inside = root == "/" ? root : root + "/";
-    struct stat st {};
+    FileIdentity id;
     if (resolved.empty() || resolved.compare(0, inside.size(), inside) != 0 ||
-        ::stat(resolved.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+        !identify_regular_file(resolved, &id))
       throw IoError(name, 0, -1,
                     at + "uri '" + b.uri +
                         "' does not name a regular file inside the .gltf's folder (external buffers are read "
                         "only from there and below)");
-    if (static_cast<std::uint64_t>(st.st_size) != b.byte_length)
+    if (id.size != b.byte_length)
       throw IoError(
           name, 0, -1,
           at + "file '" + b.uri + "' is not the buffer's byteLength of " + str(b.byte_length) + " bytes");
     const std::string key = tinygltf_path(base_dir_, for_tinygltf);
-    files_[key] = File{resolved, st.st_dev, st.st_ino, b.byte_length};
+    files_[key] = File{resolved, id};
     bytes_ += b.byte_length;
   }
 }
@@ -455,19 +446,7 @@ bool GltfBufferFiles::read(std::vector<unsigned char>* out, std::string* err, co
   const File& f = it->second;
   // The file is opened without following a final link and must still be the one checked (a swap
   // in between is refused), and exactly its checked size is read.
-  Fd fd(::open(f.real_path.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW));
-  struct stat st {};
-  if (fd.get() < 0 || ::fstat(fd.get(), &st) != 0 || st.st_dev != f.device || st.st_ino != f.inode ||
-      static_cast<std::uint64_t>(st.st_size) != f.size)
-    return fail("the buffer file changed while it was read");
-  out->resize(static_cast<std::size_t>(f.size));
-  std::size_t used = 0;
-  while (used < out->size()) {
-    const ssize_t n = ::read(fd.get(), out->data() + used, out->size() - used);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return fail("the buffer file could not be read to its end");
-    used += static_cast<std::size_t>(n);
-  }
+  if (!read_if_unchanged(f.real_path, f.id, out)) return fail("the buffer file changed while it was read");
   return true;
 }
 

@@ -5,14 +5,13 @@
 // buffers; and the only files tinygltf may then open are the external buffers this guard approved.
 #pragma once
 
-#include <sys/types.h>
-
 #include <cstdint>
 #include <string>
 #include <string_view>
 #include <unordered_map>
 #include <vector>
 
+#include "file_system.h"
 #include "hedge/io/io.h"
 
 namespace hedge::detail {
@@ -64,9 +63,7 @@ class GltfBufferFiles {
  private:
   struct File {
     std::string real_path;
-    dev_t device = 0;
-    ino_t inode = 0;
-    std::uint64_t size = 0;
+    FileIdentity id;
   };
   std::string base_dir_;
   std::unordered_map<std::string, File> files_;  // by the path tinygltf will ask for

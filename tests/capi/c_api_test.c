@@ -7,7 +7,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <threads.h>
 
 #include "capi_test.h"
 
@@ -258,6 +257,38 @@ void test_files(void) {
   remove(broken);
   remove(ply);
   remove(obj);
+}
+
+/* File names are UTF-8 on every system: a name beyond ASCII is written and read back under that
+ * name (on Windows, as UTF-16: _wfopen finds it), a written file is replaced whole, and on Windows
+ * either slash separates folders. */
+static void test_file_names(void) {
+  hedge_mesh* m = make_mesh(kGridPositions, 9, kGridQuads, 16, kGridSizes, 4);
+  const char* name = HEDGE_TEST_OUTPUT_DIR "/c_api_test_m\xc3\xa9sh_\xe6\xa0\xbc.obj";
+  CHECK_OK(hedge_mesh_write(m, name, 0, 0));
+  CHECK_OK(hedge_mesh_write(m, name, 0, 0)); /* replaces the file just written */
+  hedge_mesh* back = NULL;
+  CHECK_OK(hedge_mesh_read(name, NULL, NULL, &back));
+  CHECK(same_counts(counts_of(back), counts_of(m)));
+  CHECK_OK(hedge_mesh_destroy(back));
+#if defined(_WIN32)
+  const wchar_t* wide = L"" HEDGE_TEST_OUTPUT_DIR "/c_api_test_m\u00e9sh_\u683c.obj";
+  FILE* f = _wfopen(wide, L"rb");
+  CHECK(f != NULL);
+  if (f) fclose(f);
+  char backslashes[512];
+  snprintf(backslashes, sizeof backslashes, "%s", name);
+  for (char* c = backslashes; *c; ++c)
+    if (*c == '/') *c = '\\';
+  CHECK_OK(hedge_mesh_read(backslashes, NULL, NULL, &back));
+  CHECK_OK(hedge_mesh_destroy(back));
+  CHECK_STATUS(hedge_mesh_write(m, HEDGE_TEST_OUTPUT_DIR "\\no_such_folder\\x.obj", 0, 0), HEDGE_ERROR_IO);
+  CHECK_ERROR_HAS("no_such_folder");
+  _wremove(wide); /* remove() would read the name in the ANSI code page */
+#else
+  remove(name);
+#endif
+  CHECK_OK(hedge_mesh_destroy(m));
 }
 
 /* Hostile files: a glTF reads no file outside its folder, deep JSON and huge asks are refused. */
@@ -676,6 +707,7 @@ int main(void) {
   test_pyramid_operations();
   test_grid_operations();
   test_files();
+  test_file_names();
   test_hostile_files();
   test_validation_text();
   test_render();

@@ -14,9 +14,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <threads.h>
 
 #include "hedge/c_api.h"
+#include "test_threads.h"
 
 extern int g_checks; /* counted by CHECK, defined in c_api_test.c */
 

@@ -156,7 +156,8 @@ std::string write_gltf(const IndexedMesh& mesh, const WriteOptions& options = {}
 std::string write_glb(const IndexedMesh& mesh, const WriteOptions& options = {});
 std::string write_indexed(const IndexedMesh& mesh, FileFormat format, const WriteOptions& options = {});
 
-//! Reads a whole file. \throw IoError if it cannot be opened or read.
+//! Reads a whole file. Paths are UTF-8 on every system (on Windows they are converted to UTF-16 and
+//! may use either slash). \throw IoError if it cannot be opened or read.
 std::string read_file(const std::string& path);
 //! Writes `bytes` to `path` atomically: the file holds its old bytes or the new ones, never a mix,
 //! and a write that fails or is killed leaves the old file as it was.
@@ -171,6 +172,9 @@ std::string read_file(const std::string& path);
 //!   link. A dangling link gets the file it points to created.
 //! - A replaced file keeps its permission bits, and its owner and group where this process may
 //!   set them (as root, or a group the process belongs to).
+//! - On Windows the temporary is always named (Windows has no unnamed files), flushed, and moved
+//!   over the target in one step (MoveFileExW); a symbolic link as the target is replaced itself,
+//!   not followed; a file with the read-only attribute is refused; owners are not copied.
 //! \throw IoError naming `path` and the reason, with nothing written and the target untouched, when
 //!        the target (after links) is a directory, a FIFO, a device or a socket; when it has no
 //!        write permission bit at all (mode & 0222 == 0), even for root: a read-only file is not
@@ -206,7 +210,8 @@ void write_mesh(const SurfaceMesh& mesh, const std::string& path, const WriteOpt
 
 namespace detail {
 //! For tests: when on, write_file_atomic() uses named temporary files, as on a file system without
-//! unnamed ones. Returns the previous setting.
+//! unnamed ones. Returns the previous setting (always true on Windows, where every temporary is
+//! named).
 bool force_named_temporary_files(bool on);
 }  // namespace detail
 

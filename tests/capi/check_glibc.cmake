@@ -1,0 +1,52 @@
+# Fails when the Linux library (-DLIB=libhedge_c.so) needs a newer glibc, libstdc++ or C++ ABI than
+# the oldest distribution it is built for (-DMAX_GLIBC=2.31 -DMAX_GLIBCXX=3.4.28
+# -DMAX_CXXABI=1.3.12: Ubuntu 20.04), naming each symbol above the bar, or when it exports anything
+# besides the C ABI's hedge_* functions. Reads the dynamic symbol table with objdump -T (-DOBJDUMP).
+cmake_minimum_required(VERSION 3.25)
+
+execute_process(COMMAND ${OBJDUMP} -T ${LIB} OUTPUT_VARIABLE dump RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "${OBJDUMP} -T ${LIB} failed: ${err}")
+endif()
+string(REPLACE "\n" ";" lines "${dump}")
+set(too_new "")
+set(exported_foreign "")
+set(newest_GLIBC 0)
+set(has_create FALSE)
+foreach(line IN LISTS lines)
+  # "0000000000000000      DF *UND*	0000000000000000 (GLIBC_2.2.5) hypot"
+  if(line MATCHES "\\(?(GLIBC|GLIBCXX|CXXABI)_([0-9.]+)\\)?[ \t]+([^ \t]+)$")
+    set(kind ${CMAKE_MATCH_1})
+    set(version ${CMAKE_MATCH_2})
+    set(symbol ${CMAKE_MATCH_3})
+    if(version VERSION_GREATER MAX_${kind})
+      list(APPEND too_new "${symbol} (${kind}_${version})")
+    endif()
+    if(kind STREQUAL "GLIBC" AND version VERSION_GREATER newest_GLIBC)
+      set(newest_GLIBC ${version})
+    endif()
+  endif()
+  # A defined function or object (not *UND*) exported from the library.
+  if(line MATCHES "^[0-9a-f]+ [ gw]+ +D[FO] +\\.[^ \t]+[ \t]+[0-9a-f]+[ \t]+[^ \t]+[ \t]+([^ \t]+)$")
+    set(symbol ${CMAKE_MATCH_1})
+    if(symbol STREQUAL "hedge_mesh_create")
+      set(has_create TRUE)
+    endif()
+    if(NOT symbol MATCHES "^hedge_")
+      list(APPEND exported_foreign ${symbol})
+    endif()
+  endif()
+endforeach()
+if(NOT has_create)
+  message(FATAL_ERROR "${LIB} does not export hedge_mesh_create: is it the C ABI's library?")
+endif()
+if(too_new)
+  list(JOIN too_new "\n  " listed)
+  message(FATAL_ERROR "${LIB} needs symbols newer than GLIBC_${MAX_GLIBC}, GLIBCXX_${MAX_GLIBCXX}, "
+    "CXXABI_${MAX_CXXABI}, so it would not load on the oldest distribution it is built for:\n  ${listed}\n"
+    "(route them to an older version in src/capi/glibc_compat.c)")
+endif()
+if(exported_foreign)
+  message(FATAL_ERROR "${LIB} exports symbols outside the C ABI: ${exported_foreign} (src/capi/hedge_c.map)")
+endif()
+message(STATUS "${LIB}: needs GLIBC_${newest_GLIBC} at most (bar: ${MAX_GLIBC}); exports only hedge_*")
