@@ -13,7 +13,9 @@
 // computed by the fracture, is the collider's mesh; the remaining object uploads only the ranges the
 // strike rewrote (NativeMeshUploader.Upload). The masses are those of the mesh's own units (an object
 // scaled in its Transform gets the unscaled mesh's values: scale the density by the cube of the
-// scale to match).
+// scale to match). The shards' cut faces (their backs and side walls) are a submesh of their own,
+// drawn with innerMaterial: the renderer gets the object's materials and then that one. Clicks come
+// from either input system (Hedge.Unity.PointerInput).
 using System.Collections.Generic;
 using Hedge;
 using Hedge.Unity;
@@ -29,8 +31,10 @@ public sealed class BreakOnClick : MonoBehaviour
     public float breakRadiusFraction = 0.2f;
     /// <summary>Mass per unit volume of the mesh's units (2500 for glass in kg per cubic metre).</summary>
     public float density = 2500;
-    /// <summary>The shards' material; none: the object's own.</summary>
+    /// <summary>The shards' outer material; none: the object's own.</summary>
     public Material shardMaterial;
+    /// <summary>The material of the shards' cut faces (their inner submesh); none: the outer one.</summary>
+    public Material innerMaterial;
 
     HalfEdgeMesh halfEdgeMesh;
     RenderBuffers buffers;
@@ -76,9 +80,10 @@ public sealed class BreakOnClick : MonoBehaviour
 
     void Update()
     {
-        if (!Input.GetMouseButtonDown(0)) return;
+        Vector3 pointer;
+        if (!PointerInput.ButtonDown(0, out pointer)) return;
         RaycastHit hit;
-        if (!Physics.Raycast(Camera.main.ScreenPointToRay(Input.mousePosition), out hit) || hit.collider != meshCollider)
+        if (!Physics.Raycast(Camera.main.ScreenPointToRay(pointer), out hit) || hit.collider != meshCollider)
             return;
         Break(transform.InverseTransformPoint(hit.point));
     }
@@ -119,14 +124,25 @@ public sealed class BreakOnClick : MonoBehaviour
         go.transform.SetPositionAndRotation(transform.position, transform.rotation);
         go.transform.localScale = transform.lossyScale;
         go.AddComponent<MeshFilter>().sharedMesh = ToUnityMesh(piece.Mesh, go.name);
-        MeshRenderer renderer = go.AddComponent<MeshRenderer>();
-        MeshRenderer own = GetComponent<MeshRenderer>();
-        renderer.sharedMaterial = shardMaterial != null ? shardMaterial : own != null ? own.sharedMaterial : null;
+        go.AddComponent<MeshRenderer>().sharedMaterials = ShardMaterials();
         MeshCollider collider = go.AddComponent<MeshCollider>();
         collider.convex = true; // a moving body's mesh collider must be convex
         collider.sharedMesh = ToUnityMesh(piece.Hull != null ? piece.Hull : piece.Mesh, go.name + " hull");
         ShardBody.Of(piece).ApplyTo(go.AddComponent<Rigidbody>());
         return go;
+    }
+
+    // One material per submesh of a shard: the object's own (or shardMaterial), then innerMaterial for
+    // the cut faces' submesh (options.InnerSubmesh).
+    Material[] ShardMaterials()
+    {
+        MeshRenderer own = GetComponent<MeshRenderer>();
+        Material[] outer = own != null && own.sharedMaterials != null ? own.sharedMaterials : new Material[0];
+        var materials = new Material[options.InnerSubmesh + 1];
+        for (int i = 0; i < options.InnerSubmesh; ++i)
+            materials[i] = shardMaterial != null ? shardMaterial : i < outer.Length ? outer[i] : null;
+        materials[options.InnerSubmesh] = innerMaterial != null ? innerMaterial : materials[0];
+        return materials;
     }
 
     // One more than the largest submesh of the mesh's faces (1 when it has none).

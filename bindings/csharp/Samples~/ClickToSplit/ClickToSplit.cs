@@ -11,7 +11,7 @@
 // half-edge mesh, and NativeMeshUploader uploads only what the edit rewrote, straight from the
 // native buffers. The collider is given the new mesh after each edit, so that the next click sees it.
 // It reads the mouse with either input system, the Input System package or the legacy Input Manager
-// (PointerInput.cs).
+// (Hedge.Unity.PointerInput).
 using Hedge;
 using Hedge.Unity;
 using UnityEngine;

@@ -104,7 +104,9 @@ namespace Hedge.Tests
             UnityEngine.Mesh source = Plate(20);
             filter.sharedMesh = source;
             MeshCollider collider = go.AddComponent<MeshCollider>();
+            go.AddComponent<MeshRenderer>().sharedMaterials = new[] { new Material() };
             BreakOnClick sample = go.AddComponent<BreakOnClick>();
+            sample.innerMaterial = new Material();
             Camera.main = new Camera();
             Invoke(sample, "Start");
             HalfEdgeMesh mesh = sample.HalfEdgeMesh;
@@ -154,8 +156,16 @@ namespace Hedge.Tests
                         Check.Same(positions, (float[])c.sharedMesh.Streams[0], positions.Length, "the hull's positions");
                         Check.Equal((int)hb.Counts.IndexCount, c.sharedMesh.SubMesh.indexCount, "the hull's triangles");
                     }
-                    Check.True(shards[i].GetComponent<MeshFilter>().sharedMesh.SubMesh.indexCount >
-                               c.sharedMesh.SubMesh.indexCount / 2, "the shard renders its own mesh");
+                    UnityEngine.Mesh rendered = shards[i].GetComponent<MeshFilter>().sharedMesh;
+                    Check.True(rendered.SubMesh.indexCount > c.sharedMesh.SubMesh.indexCount / 2,
+                               "the shard renders its own mesh");
+                    // Two submeshes, outer and cut faces, drawn with the object's and the inner material.
+                    Check.Equal(2, rendered.subMeshCount, "outer and inner submeshes");
+                    Check.True(rendered.GetSubMesh(1).indexCount > 0, "the cut faces are the inner submesh");
+                    Material[] materials = shards[i].GetComponent<MeshRenderer>().sharedMaterials;
+                    Check.Equal(2, materials.Length, "one material per submesh");
+                    Check.True(materials[0] == go.GetComponent<MeshRenderer>().sharedMaterials[0], "the object's material outside");
+                    Check.True(materials[1] == sample.innerMaterial, "the inner material on the cut faces");
                     e.Dispose();
                 }
             }
@@ -184,13 +194,7 @@ namespace Hedge.Tests
             Check.True(mesh.IsDisposed);
         }
 
-        static void Click(BreakOnClick sample, float x, float y)
-        {
-            Input.mousePosition = new Vector3(x, y, 0);
-            Input.ButtonsDown[0] = true;
-            Invoke(sample, "Update");
-            Input.ButtonsDown[0] = false;
-        }
+        static void Click(BreakOnClick sample, float x, float y) { NativeUploadTests.Click(sample, 0, x, y); }
 
         static void Invoke(object target, string method)
         {

@@ -269,7 +269,9 @@ namespace Hedge.Tests
 
         // One frame with a click, given to both input systems' stand-ins: the sample reads the one its
         // build enables (PointerInput.cs; the glue is compiled once for each).
-        static void Click(ClickToSplit sample, int button, float x, float y)
+        // A click of a mouse button at a screen point, through both input systems: what a sample's
+        // Update reads (PointerInput), whichever one the build enables.
+        internal static void Click(object sample, int button, float x, float y)
         {
             Input.mousePosition = new Vector3(x, y, 0);
             Input.ButtonsDown[button] = true;

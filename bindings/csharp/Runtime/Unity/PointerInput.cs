@@ -1,15 +1,17 @@
 // The mouse through whichever input system the project uses (Project Settings > Player > Active
 // Input Handling): the Input System package (com.unity.inputsystem) when it is active and installed,
 // else the legacy Input Manager. Unity defines ENABLE_INPUT_SYSTEM and ENABLE_LEGACY_INPUT_MANAGER
-// from that setting; this sample's assembly (Hedge.HalfEdge.Samples.ClickToSplit.asmdef) defines
-// HEDGE_INPUT_SYSTEM when the package is installed, and references it only then. With "Both", the
-// Input System package is read.
+// from that setting; this assembly (Hedge.HalfEdge.Unity.asmdef) defines HEDGE_INPUT_SYSTEM when the
+// package is installed, and references it only then. With "Both", the Input System package is read.
+// The samples (Click to split, Break on click) read their clicks here.
 #if ENABLE_INPUT_SYSTEM && HEDGE_INPUT_SYSTEM
 using UnityEngine.InputSystem;
 #endif
 using UnityEngine;
 
-/// <summary>Mouse clicks for the sample, from either input system.</summary>
+namespace Hedge.Unity
+{
+/// <summary>Mouse clicks from either input system.</summary>
 public static class PointerInput
 {
     /// <summary>The input system this build reads ("Input System package", "Input Manager", or "none").</summary>
@@ -42,4 +44,5 @@ public static class PointerInput
         return false;
 #endif
     }
+}
 }
