@@ -592,6 +592,19 @@ std::vector<Shard> detach(SurfaceMesh& mesh, std::vector<std::vector<Face>>& cel
   return shards;
 }
 
+//! The diagonal of the box of every shard's vertices: the size of what broke off. O(k).
+double span(const std::vector<Shard>& shards) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  Vec3d lo{inf, inf, inf}, hi{-inf, -inf, -inf};
+  for (const Shard& shard : shards)
+    for (Vertex v : shard.mesh.vertices()) {
+      const Vec3d q = to_double(shard.mesh.position(v));
+      lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
+      hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
+    }
+  return shards.empty() ? 0.0 : norm(hi - lo);
+}
+
 //! Every shard made a solid and measured (measure_shard).
 void solids(std::vector<Shard>& shards, const FractureOptions& o, const Solid& solid) {
   for (Shard& shard : shards) measure_shard(shard, o, solid);
@@ -643,6 +656,8 @@ FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOpt
   if (bvh) bvh->update();
   result.seconds.detach += seconds_since(t);
 
+  if (o.relative_thickness > 0)
+    solid.thickness = std::min(solid.thickness, o.relative_thickness * span(result.shards));
   solids(result.shards, o, solid);
   result.seconds.hulls += seconds_since(t);
   return result;

@@ -235,6 +235,27 @@ TEST(Fracture, InnerFacesOfASolidGetASubmeshOfTheirOwn) {
     EXPECT_FALSE(s.mesh.get_face_property<std::int32_t>("f:submesh"));
 }
 
+// A break radius far beyond the object: the whole 4 x 4 plate breaks off, and the relative thickness
+// is a fraction of what broke (the plate's diagonal), not of the radius, so no solid is absurdly
+// thick or heavy.
+TEST(Fracture, RelativeThicknessIsBoundedByWhatBroke) {
+  SurfaceMesh mesh = plate(4);
+  const double area = surface_area(mesh);
+  FractureOptions o;
+  o.material = fracture_material_at_radius(fracture_material("stone"), 1000);
+  o.relative_thickness = 0.05;
+  const double thickness = 0.05 * std::sqrt(32.0);  // the plate's diagonal
+  const FractureResult r = fracture(mesh, {2.1f, 1.9f, 0}, o);
+  ASSERT_FALSE(r.shards.empty());
+  expect_sound(mesh, r, area, thickness);
+  double volume = 0;
+  for (const Shard& s : r.shards) {
+    EXPECT_NEAR(s.mass.volume, s.area * thickness, 1e-3 * s.area);
+    volume += s.mass.volume;
+  }
+  EXPECT_NEAR(volume, area * thickness, 1e-3 * area);  // the whole plate, 0.28 thick (not 50)
+}
+
 // A thickness relative to the break radius: glass reaches 7 mean edge lengths of the impact face.
 TEST(Fracture, RelativeThicknessIsAFractionOfTheBreakRadius) {
   SurfaceMesh mesh = plate(50);

@@ -132,8 +132,11 @@ struct FractureOptions {
   double thickness = 0;
   //! > 0 (and thickness 0): the thickness is this fraction of the strike's break radius in model
   //! units (fracture_material_radius() of the material at the impact: times the impact face's mean
-  //! edge length unless absolute), so shards of any size get a solid of the same proportion. At
-  //! most kFractureMaxRelativeThickness; no pass over the mesh checks it against the mesh's size.
+  //! edge length unless absolute), so shards of any size get a solid of the same proportion. When
+  //! what broke off is smaller than the break radius (a radius beyond the object's size), the
+  //! fraction is of the diagonal of the box of all the shards instead, so a solid is never thicker
+  //! than that fraction of what broke (O(k) for the k shard vertices). At most
+  //! kFractureMaxRelativeThickness; no pass over the mesh checks it against the mesh's size.
   //! Both thickness and relative_thickness > 0: refused.
   double relative_thickness = 0;
   //! With a thickness, the faces the solid adds (the back copy and the side walls, the shard's new

@@ -12,7 +12,9 @@ namespace Hedge.Unity
     {
         /// <summary>Builds a mesh from a Unity Mesh's arrays (mesh.vertices, mesh.triangles, mesh.normals,
         /// mesh.uv, mesh.colors) with <see cref="EngineImportOptions.Unity"/>: positions welded for the
-        /// topology, normals, texcoords and colours kept per corner (seams stay seams).</summary>
+        /// topology, normals, texcoords and colours kept per corner (seams stay seams). Every face is in
+        /// submesh 0: for a mesh of several submeshes (materials), use <see cref="FromMesh(Mesh)"/>, which
+        /// keeps each triangle's.</summary>
         /// <param name="vertices">One position per Unity vertex.</param>
         /// <param name="triangles">Three vertex indices per triangle (the Unity winding).</param>
         /// <param name="normals">Optional (null or empty): one per vertex.</param>
@@ -40,9 +42,10 @@ namespace Hedge.Unity
             return HalfEdgeMesh.Adopt(status, mesh);
         }
 
-        /// <summary>Builds a mesh from a Unity Mesh (its vertices, triangles of every submesh, normals, uv and
-        /// colors) with <see cref="EngineImportOptions.Unity"/>, as <see cref="FromUnityMesh(Vector3[], int[],
-        /// Vector3[], Vector2[], Color[])"/>.</summary>
+        /// <summary>Builds a mesh from a Unity Mesh (its vertices, the triangles of every submesh, normals, uv
+        /// and colors) with <see cref="EngineImportOptions.Unity"/>, as <see cref="FromUnityMesh(Vector3[], int[],
+        /// Vector3[], Vector2[], Color[])"/>, keeping each triangle's submesh (material) as its face's
+        /// ("f:submesh"; <see cref="UnitySubmeshes.ReadTriangles"/>).</summary>
         /// <exception cref="ArgumentException">The mesh is not readable (its model was imported without
         /// Read/Write): Unity gives scripts no vertices then.</exception>
         public static HalfEdgeMesh FromMesh(Mesh source)
@@ -55,7 +58,10 @@ namespace Hedge.Unity
         public static HalfEdgeMesh FromMesh(Mesh source, EngineImportOptions options, out BuildReport report)
         {
             CheckReadable(source);
-            return FromUnityMesh(source.vertices, source.triangles, source.normals, source.uv, source.colors, options,
+            int[] submeshes;
+            int[] triangles = UnitySubmeshes.ReadTriangles(source, out submeshes);
+            if (submeshes != null) return UnitySubmeshes.FromMesh(source, triangles, submeshes, options, out report);
+            return FromUnityMesh(source.vertices, triangles, source.normals, source.uv, source.colors, options,
                                  out report);
         }
 

@@ -42,18 +42,16 @@ namespace Hedge.Unity
             return triangles;
         }
 
-        /// <summary>Builds a HalfEdgeMesh from a Unity mesh with <see cref="EngineImportOptions.Unity"/>:
-        /// positions welded, normals, uv and colours kept per corner, and each triangle's submesh kept as its
-        /// face's submesh.</summary>
-        public static HalfEdgeMesh FromUnityMesh(Mesh source, out BuildReport report)
+        /// <summary>Builds a HalfEdgeMesh from a Unity mesh of several submeshes: positions welded, normals, uv
+        /// and colours kept per corner, and each triangle's submesh kept as its face's submesh
+        /// (<see cref="UnityMeshes.FromMesh(Mesh, EngineImportOptions, out BuildReport)"/> calls it).</summary>
+        internal static HalfEdgeMesh FromMesh(Mesh source, int[] triangles, int[] submeshes, EngineImportOptions options,
+                                              out BuildReport report)
         {
-            if (source == null) throw new ArgumentNullException("source");
-            int[] submeshes;
-            int[] triangles = ReadTriangles(source, out submeshes);
             Vector3[] v = source.vertices;
             return HalfEdgeMesh.FromEngineMesh(Floats(v, v.Length), triangles, Floats(source.normals, v.Length),
                                                Floats(source.uv, v.Length), Floats(source.colors, v.Length), submeshes,
-                                               EngineImportOptions.Unity, out report);
+                                               options, out report);
         }
 
         /// <summary>Sets mesh.subMeshCount to the buffers' submeshes and each SubMeshDescriptor: index start and

@@ -58,8 +58,7 @@ public sealed class BreakOnClick : MonoBehaviour
     {
         MeshFilter filter = GetComponent<MeshFilter>();
         Mesh source = filter.sharedMesh;
-        halfEdgeMesh = UnityMeshes.FromUnityMesh(source.vertices, source.triangles, source.normals, source.uv,
-                                                 source.colors);
+        halfEdgeMesh = UnityMeshes.FromMesh(source); // every submesh (material) kept
         buffers = halfEdgeMesh.CreateRenderBuffers(RenderOptions.Unity);
         rendered = new Mesh();
         rendered.name = source.name + " (hedge)";

@@ -91,7 +91,7 @@ namespace Hedge.Tests
         {
             UnityEngine.Mesh source = TwoMaterialGrid(4);
             BuildReport report;
-            using (HalfEdgeMesh mesh = UnitySubmeshes.FromUnityMesh(source, out report))
+            using (HalfEdgeMesh mesh = UnityMeshes.FromMesh(source, EngineImportOptions.Unity, out report))
             using (RenderBuffers buffers = mesh.CreateRenderBuffers(RenderOptions.Unity))
             {
                 Check.Equal(0, mesh.GetSubmesh(FaceAt(mesh, 0, 6)));
