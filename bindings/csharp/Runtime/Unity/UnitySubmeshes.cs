@@ -43,17 +43,17 @@ namespace Hedge.Unity
         }
 
         /// <summary>Builds a HalfEdgeMesh from a Unity mesh with <see cref="EngineImportOptions.Unity"/>:
-        /// positions welded, normals, uv and colours kept per corner, and each triangle's submesh kept as its
-        /// face's submesh.</summary>
+        /// positions welded; normals, uv, colours, tangents and lightmap UVs (uv2) kept per corner, each
+        /// when present; and each triangle's submesh kept as its face's submesh. Unity's arrays are pinned
+        /// for the call, not copied into floats.</summary>
         public static HalfEdgeMesh FromUnityMesh(Mesh source, out BuildReport report)
         {
             if (source == null) throw new ArgumentNullException("source");
             int[] submeshes;
             int[] triangles = ReadTriangles(source, out submeshes);
-            Vector3[] v = source.vertices;
-            return HalfEdgeMesh.FromEngineMesh(Floats(v, v.Length), triangles, Floats(source.normals, v.Length),
-                                               Floats(source.uv, v.Length), Floats(source.colors, v.Length), submeshes,
-                                               EngineImportOptions.Unity, out report);
+            return UnityMeshes.FromUnityArrays(source.vertices, triangles, source.normals, source.uv, source.colors,
+                                               source.tangents, source.uv2, submeshes, EngineImportOptions.Unity,
+                                               out report);
         }
 
         /// <summary>Sets mesh.subMeshCount to the buffers' submeshes and each SubMeshDescriptor: index start and
@@ -75,34 +75,6 @@ namespace Hedge.Unity
                 d.bounds = b;
                 mesh.SetSubMesh(i, d, flags);
             }
-        }
-
-        // Unity's empty arrays (an absent attribute) and null become null; others become floats.
-        static float[] Floats(Vector3[] a, int n)
-        {
-            if (a == null || a.Length == 0) return null;
-            if (a.Length != n) throw new ArgumentException("length " + a.Length + ", " + n + " expected (one per vertex)");
-            var f = new float[3 * n];
-            for (int i = 0; i < n; ++i) { f[3 * i] = a[i].x; f[3 * i + 1] = a[i].y; f[3 * i + 2] = a[i].z; }
-            return f;
-        }
-
-        static float[] Floats(Vector2[] a, int n)
-        {
-            if (a == null || a.Length == 0) return null;
-            if (a.Length != n) throw new ArgumentException("length " + a.Length + ", " + n + " expected (one per vertex)");
-            var f = new float[2 * n];
-            for (int i = 0; i < n; ++i) { f[2 * i] = a[i].x; f[2 * i + 1] = a[i].y; }
-            return f;
-        }
-
-        static float[] Floats(Color[] a, int n)
-        {
-            if (a == null || a.Length == 0) return null;
-            if (a.Length != n) throw new ArgumentException("length " + a.Length + ", " + n + " expected (one per vertex)");
-            var f = new float[4 * n];
-            for (int i = 0; i < n; ++i) { f[4 * i] = a[i].r; f[4 * i + 1] = a[i].g; f[4 * i + 2] = a[i].b; f[4 * i + 3] = a[i].a; }
-            return f;
         }
     }
 }
