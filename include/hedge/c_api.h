@@ -997,7 +997,10 @@ enum {
   HEDGE_STREAM_VERTICES = 0,
   HEDGE_STREAM_NORMALS = 1,   /**< separate layout only (3 floats a vertex); else empty */
   HEDGE_STREAM_TEXCOORDS = 2, /**< separate layout only (2 floats a vertex); else empty */
-  HEDGE_STREAM_COLORS = 3     /**< separate layout only (4 floats a vertex); else empty */
+  HEDGE_STREAM_COLORS = 3,    /**< separate layout only (4 floats a vertex); else empty */
+  /** separate layout only (4 floats a vertex: xyz and the handedness w); else empty */
+  HEDGE_STREAM_TANGENTS = 4,
+  HEDGE_STREAM_TEXCOORDS1 = 5 /**< separate layout only (2 floats a vertex: lightmap UVs); else empty */
 };
 
 /** Render options (hedge::RenderOptions). Layout (24 bytes): six int32_t in this order. */
@@ -1012,10 +1015,13 @@ typedef struct hedge_render_buffers_options {
 
 /** Where each attribute sits in a vertex, in floats; an absent attribute has offset -1.
  *  Interleaved: all in the HEDGE_STREAM_VERTICES buffer, stride floats a vertex, in the order
- *  position, normal, texcoord, color. Separate: each in its own stream, tightly packed (3, 3, 2 and
- *  4 floats a vertex), a present attribute has offset 0, and stride still counts the floats of one
- *  whole vertex over all streams. Layout (24 bytes): stride @0 (uint32_t), position @4,
- *  normal @8, texcoord @12, color @16, interleaved @20 (int32_t). */
+ *  position, normal, texcoord, color, tangent, texcoord1. Separate: each in its own stream, tightly
+ *  packed (3, 3, 2, 4, 4 and 2 floats a vertex), a present attribute has offset 0, and stride still
+ *  counts the floats of one whole vertex over all streams. Tangents ("h:tangent": xyz and the
+ *  handedness w) and the second texcoord channel ("h:texcoord1", lightmap UVs) are present when the
+ *  mesh has them (hedge_mesh_from_engine_streams()). Layout (32 bytes): stride @0 (uint32_t),
+ *  position @4, normal @8, texcoord @12, color @16, interleaved @20, tangent @24, texcoord1 @28
+ *  (int32_t). */
 typedef struct hedge_vertex_layout {
   uint32_t stride;
   int32_t position;
@@ -1023,6 +1029,8 @@ typedef struct hedge_vertex_layout {
   int32_t texcoord;
   int32_t color;
   int32_t interleaved;
+  int32_t tangent;
+  int32_t texcoord1;
 } hedge_vertex_layout;
 
 /** A run of slots [first, first + count). Layout (8 bytes): first @0, count @4. */
@@ -1250,6 +1258,42 @@ HEDGE_API hedge_status hedge_mesh_from_engine_mesh_with_submeshes(
     const float* positions, uint32_t vertex_count, const uint32_t* indices, uint32_t index_count,
     const float* normals, const float* texcoords, const float* colors, const int32_t* triangle_submeshes,
     const hedge_engine_import_options* options, hedge_build_report* out_report, hedge_mesh** out_mesh);
+
+/** An engine mesh's arrays for hedge_mesh_from_engine_streams(): every stream but positions and
+ *  indices is optional (NULL), so that a new stream adds a field instead of a parameter. Fill it
+ *  with zeros (`hedge_engine_streams s = {0};`), then set what you have. Layout (88 bytes on 64-bit
+ *  systems, 48 on 32-bit ones): vertex_count @0, index_count @4 (uint32_t), then the pointers in
+ *  this order from @8, each one pointer wide. */
+typedef struct hedge_engine_streams {
+  uint32_t vertex_count;   /**< engine vertices: every per-vertex stream has this many entries */
+  uint32_t index_count;    /**< entries of indices, a multiple of 3 */
+  const float* positions;  /**< required: 3 floats a vertex */
+  const uint32_t* indices; /**< required: 3 a triangle, each < vertex_count */
+  const float* normals;    /**< optional: 3 floats a vertex, kept per corner as "h:normal" */
+  const float* texcoords;  /**< optional: 2 floats a vertex ("h:texcoord") */
+  const float* colors;     /**< optional: 4 floats (r, g, b, a) a vertex ("h:color") */
+  /** optional: 4 floats a vertex, xyz and the handedness w (+1 or -1; Unity's Mesh.tangents), kept
+   *  per corner as "h:tangent", imported, not computed: render buffers whose normals follow the
+   *  geometry make each corner's tangent perpendicular to its recomputed normal again, w kept */
+  const float* tangents;
+  /** optional: 2 floats a vertex, a second texcoord channel (lightmap UVs, Unity's uv2), kept per
+   *  corner as "h:texcoord1" */
+  const float* texcoords1;
+  /** optional: index_count / 3 submesh (material) ids in [0, 65535], one a triangle ("f:submesh") */
+  const int32_t* triangle_submeshes;
+} hedge_engine_streams;
+
+/** Builds a mesh from an engine's arrays, as hedge_mesh_from_engine_mesh() does, with every stream
+ *  of `streams` that is not NULL kept per corner (per face for triangle_submeshes). Render buffers
+ *  of the mesh then have tangent and texcoord1 streams (hedge_vertex_layout, HEDGE_STREAM_TANGENTS,
+ *  HEDGE_STREAM_TEXCOORDS1) that follow its edits. A non-finite value, an index out of range or a
+ *  submesh id outside [0, 65535] is HEDGE_ERROR_INVALID_ARGUMENT naming the stream and the entry;
+ *  no mesh is made then.
+ *  \param options   NULL for hedge_engine_import_options_default().
+ *  \param out_report optional (NULL). */
+HEDGE_API hedge_status hedge_mesh_from_engine_streams(const hedge_engine_streams* streams,
+                                                      const hedge_engine_import_options* options,
+                                                      hedge_build_report* out_report, hedge_mesh** out_mesh);
 
 /* ============================================================================================ */
 /* Threads (hedge/core/threads.h)                                                               */

@@ -50,6 +50,10 @@ std::span<const float> stream_of(const RenderBuffers& sync, std::int32_t stream)
       return sync.texcoords();
     case HEDGE_STREAM_COLORS:
       return sync.colors();
+    case HEDGE_STREAM_TANGENTS:
+      return sync.tangents();
+    case HEDGE_STREAM_TEXCOORDS1:
+      return sync.texcoords1();
     default:
       fail(HEDGE_ERROR_INVALID_ARGUMENT,
            "stream is " + std::to_string(stream) + ", not a HEDGE_STREAM_* value");
@@ -71,6 +75,21 @@ void copy_sources(const Property& p, int32_t* buffer, uint64_t capacity, uint64_
     fail(HEDGE_ERROR_INVALID_ARGUMENT,
          "the mesh has no source indices: only a mesh made by hedge_mesh_from_engine_mesh() has them");
   copy_out(std::span<const std::int32_t>(p.vector()), buffer, capacity, out_count);
+}
+
+EngineImportOptions to_engine_import_options(const hedge_engine_import_options* options) {
+  hedge_engine_import_options o{HEDGE_WELD_EXACT, HEDGE_POLICY_REPAIR, 1e-6, HEDGE_WINDING_CCW, 0};
+  if (options != nullptr) o = *options;
+  EngineImportOptions import;
+  import.weld = to_weld(o.weld);
+  import.policy = to_policy(o.policy);
+  if (!std::isfinite(o.weld_epsilon) || o.weld_epsilon < 0)
+    fail(HEDGE_ERROR_INVALID_ARGUMENT,
+         "weld_epsilon is " + std::to_string(o.weld_epsilon) + ", not a finite number >= 0");
+  import.weld_epsilon = o.weld_epsilon;
+  import.winding = to_winding(o.winding);
+  import.flip_x = need_bool(o.flip_x, "flip_x");
+  return import;
 }
 }  // namespace
 
@@ -208,6 +227,8 @@ hedge_status hedge_render_buffers_layout(const hedge_render_buffers* render,
     out.texcoord = l.texcoord;
     out.color = l.color;
     out.interleaved = l.interleaved ? 1 : 0;
+    out.tangent = l.tangent;
+    out.texcoord1 = l.texcoord1;
   });
 }
 
@@ -316,40 +337,53 @@ hedge_status hedge_mesh_from_engine_mesh_with_submeshes(
     const float* positions, uint32_t vertex_count, const uint32_t* indices, uint32_t index_count,
     const float* normals, const float* texcoords, const float* colors, const int32_t* triangle_submeshes,
     const hedge_engine_import_options* options, hedge_build_report* out_report, hedge_mesh** out_mesh) {
-  return guard([&] {
-    need(out_mesh, "out_mesh");
-    need_array(positions, std::uint64_t(vertex_count) * 3, "positions");
-    need_array(indices, index_count, "indices");
-    hedge_engine_import_options o{HEDGE_WELD_EXACT, HEDGE_POLICY_REPAIR, 1e-6, HEDGE_WINDING_CCW, 0};
-    if (options != nullptr) o = *options;
-    EngineImportOptions import;
-    import.weld = to_weld(o.weld);
-    import.policy = to_policy(o.policy);
-    if (!std::isfinite(o.weld_epsilon) || o.weld_epsilon < 0)
-      fail(HEDGE_ERROR_INVALID_ARGUMENT,
-           "weld_epsilon is " + std::to_string(o.weld_epsilon) + ", not a finite number >= 0");
-    import.weld_epsilon = o.weld_epsilon;
-    import.winding = to_winding(o.winding);
-    import.flip_x = need_bool(o.flip_x, "flip_x");
+  hedge_engine_streams streams{};
+  streams.vertex_count = vertex_count;
+  streams.index_count = index_count;
+  streams.positions = positions;
+  streams.indices = indices;
+  streams.normals = normals;
+  streams.texcoords = texcoords;
+  streams.colors = colors;
+  streams.triangle_submeshes = triangle_submeshes;
+  return hedge_mesh_from_engine_streams(&streams, options, out_report, out_mesh);
+}
 
-    const std::size_t n = vertex_count;
-    std::vector<Vec3> p(n), nrm(normals != nullptr ? n : 0);
-    std::vector<Vec2> uv(texcoords != nullptr ? n : 0);
-    std::vector<Color> rgba(colors != nullptr ? n : 0);
-    for (std::size_t i = 0; i < n; ++i) p[i] = {positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]};
+hedge_status hedge_mesh_from_engine_streams(const hedge_engine_streams* streams,
+                                            const hedge_engine_import_options* options,
+                                            hedge_build_report* out_report, hedge_mesh** out_mesh) {
+  return guard([&] {
+    const hedge_engine_streams& s = need(streams, "streams");
+    need(out_mesh, "out_mesh");
+    need_array(s.positions, std::uint64_t(s.vertex_count) * 3, "positions");
+    need_array(s.indices, s.index_count, "indices");
+    const EngineImportOptions import = to_engine_import_options(options);
+
+    const std::size_t n = s.vertex_count;
+    std::vector<Vec3> p(n), nrm(s.normals != nullptr ? n : 0);
+    std::vector<Vec2> uv(s.texcoords != nullptr ? n : 0), uv1(s.texcoords1 != nullptr ? n : 0);
+    std::vector<Color> rgba(s.colors != nullptr ? n : 0);
+    std::vector<Vec4> tan(s.tangents != nullptr ? n : 0);
+    const float* f = s.positions;
+    for (std::size_t i = 0; i < n; ++i) p[i] = {f[3 * i], f[3 * i + 1], f[3 * i + 2]};
     for (std::size_t i = 0; i < nrm.size(); ++i)
-      nrm[i] = {normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]};
-    for (std::size_t i = 0; i < uv.size(); ++i) uv[i] = {texcoords[2 * i], texcoords[2 * i + 1]};
+      nrm[i] = {s.normals[3 * i], s.normals[3 * i + 1], s.normals[3 * i + 2]};
+    for (std::size_t i = 0; i < uv.size(); ++i) uv[i] = {s.texcoords[2 * i], s.texcoords[2 * i + 1]};
     for (std::size_t i = 0; i < rgba.size(); ++i)
-      rgba[i] = {colors[4 * i], colors[4 * i + 1], colors[4 * i + 2], colors[4 * i + 3]};
+      rgba[i] = {s.colors[4 * i], s.colors[4 * i + 1], s.colors[4 * i + 2], s.colors[4 * i + 3]};
+    for (std::size_t i = 0; i < tan.size(); ++i)
+      tan[i] = {s.tangents[4 * i], s.tangents[4 * i + 1], s.tangents[4 * i + 2], s.tangents[4 * i + 3]};
+    for (std::size_t i = 0; i < uv1.size(); ++i) uv1[i] = {s.texcoords1[2 * i], s.texcoords1[2 * i + 1]};
     EngineMeshView view;
     view.positions = p;
-    view.indices = std::span<const std::uint32_t>(indices, index_count);
+    view.indices = std::span<const std::uint32_t>(s.indices, s.index_count);
     view.normals = nrm;
     view.texcoords = uv;
     view.colors = rgba;
-    if (triangle_submeshes != nullptr)
-      view.submeshes = std::span<const std::int32_t>(triangle_submeshes, index_count / 3);
+    view.tangents = tan;
+    view.texcoords1 = uv1;
+    if (s.triangle_submeshes != nullptr)
+      view.submeshes = std::span<const std::int32_t>(s.triangle_submeshes, s.index_count / 3);
 
     BuildReport report;
     auto object = std::make_shared<MeshObject>();

@@ -68,7 +68,8 @@ void test_basics(void) {
   CHECK(sizeof(hedge_build_report) == 36);
   CHECK(sizeof(hedge_counts) == 32);
   CHECK(sizeof(hedge_render_buffers_options) == 24);
-  CHECK(sizeof(hedge_vertex_layout) == 24);
+  CHECK(sizeof(hedge_vertex_layout) == 32);
+  CHECK(sizeof(hedge_engine_streams) == 8 + 8 * sizeof(void*));
   CHECK(sizeof(hedge_range) == 8);
   CHECK(sizeof(hedge_sync_result) == 40);
   CHECK(sizeof(hedge_buffer_counts) == 40);
@@ -723,6 +724,7 @@ int main(void) {
   test_picking();
   test_triangle_faces();
   test_submeshes();
+  test_engine_streams();
   test_every_function_error_path();
   test_threads();
   test_deprecated_names();

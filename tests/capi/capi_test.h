@@ -215,5 +215,6 @@ void test_engine_sources(void);
 void test_picking(void);
 void test_triangle_faces(void);
 void test_submeshes(void);
+void test_engine_streams(void);
 void test_every_function_error_path(void);
 void test_threads(void);

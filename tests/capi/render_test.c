@@ -520,3 +520,177 @@ void test_submeshes(void) {
   CHECK_ERROR_HAS("submesh of triangle 1 is 70000");
   CHECK(mesh == NULL);
 }
+
+/* ---------------------------------------------------------------------------------------------- */
+/* Engine streams: tangents and a second texcoord channel                                         */
+/* ---------------------------------------------------------------------------------------------- */
+
+/* Per engine vertex of the quad: a tangent along +x (handedness -1 on the second triangle) and
+ * lightmap UVs that differ from every other vertex's. */
+static const float kQuadTangents[] = {1, 0, 0, 1,  1, 0, 0, 1,  1, 0, 0, 1,
+                                      1, 0, 0, -1, 1, 0, 0, -1, 1, 0, 0, -1};
+static const float kQuadTexcoords1[] = {0.1f, 0.1f, 0.2f, 0.1f, 0.2f, 0.2f,
+                                        0.3f, 0.1f, 0.3f, 0.3f, 0.1f, 0.3f};
+static const float kQuadNormals[] = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+
+static hedge_engine_streams quad_streams(void) {
+  hedge_engine_streams s;
+  memset(&s, 0, sizeof s);
+  s.vertex_count = 6;
+  s.index_count = 6;
+  s.positions = kQuadPositions;
+  s.indices = kQuadTriangles;
+  s.normals = kQuadNormals;
+  s.texcoords = kQuadTexcoords;
+  s.colors = kQuadColors;
+  s.tangents = kQuadTangents;
+  s.texcoords1 = kQuadTexcoords1;
+  return s;
+}
+
+/* Every render vertex the index buffer uses has a unit tangent perpendicular to its normal, w = +-1
+ * (separate layout: the normal and tangent streams). */
+static void check_tangent_frames(const hedge_render_buffers* render) {
+  const float *normals = NULL, *tangents = NULL;
+  const uint32_t* indices = NULL;
+  uint64_t n_normals = 0, n_tangents = 0, n_indices = 0;
+  CHECK_OK(hedge_render_buffers_vertex_data(render, HEDGE_STREAM_NORMALS, &normals, &n_normals));
+  CHECK_OK(hedge_render_buffers_vertex_data(render, HEDGE_STREAM_TANGENTS, &tangents, &n_tangents));
+  CHECK_OK(hedge_render_buffers_index_data(render, &indices, &n_indices));
+  CHECK(n_normals / 3 == n_tangents / 4);
+  for (uint64_t i = 0; i + 2 < n_indices; i += 3) {
+    if (indices[i] == indices[i + 1]) continue; /* a free slot */
+    for (int k = 0; k < 3; ++k) {
+      const float* n = normals + 3 * indices[i + k];
+      const float* t = tangents + 4 * indices[i + k];
+      CHECK(fabsf(n[0] * t[0] + n[1] * t[1] + n[2] * t[2]) < 1e-5f);
+      CHECK(fabsf(t[0] * t[0] + t[1] * t[1] + t[2] * t[2] - 1) < 1e-4f);
+      CHECK(t[3] == 1 || t[3] == -1);
+    }
+  }
+}
+
+static uint32_t vertex_at(const hedge_mesh* mesh, float x, float y) {
+  hedge_counts c = counts_of(mesh);
+  for (uint32_t v = 0; v < c.vertex_slots; ++v) {
+    float p[3];
+    CHECK_OK(hedge_vertex_position(mesh, v, p));
+    if (p[0] == x && p[1] == y) return v;
+  }
+  CHECK(0);
+  return INVALID;
+}
+
+void test_engine_streams(void) {
+  hedge_engine_streams s = quad_streams();
+  hedge_mesh* mesh = NULL;
+  CHECK_OK(hedge_mesh_from_engine_streams(&s, NULL, NULL, &mesh));
+
+  /* Interleaved: position, normal, texcoord, colour, tangent, texcoord1. */
+  hedge_render_buffers* whole = NULL;
+  CHECK_OK(hedge_render_buffers_create(mesh, NULL, &whole));
+  hedge_vertex_layout layout;
+  CHECK_OK(hedge_render_buffers_layout(whole, &layout));
+  CHECK(layout.interleaved == 1 && layout.stride == 18 && layout.color == 8);
+  CHECK(layout.tangent == 12 && layout.texcoord1 == 16);
+  hedge_buffer_counts bc;
+  CHECK_OK(hedge_render_buffers_counts(whole, &bc));
+  const float* v = NULL;
+  uint64_t n = 0;
+  CHECK_OK(hedge_render_buffers_vertex_data(whole, HEDGE_STREAM_VERTICES, &v, &n));
+  CHECK(n == 18ull * bc.vertex_slots);
+  /* Every engine vertex is one render vertex with its own tangent and lightmap UV. */
+  for (uint32_t e = 0; e < 6; ++e) {
+    int found = 0;
+    for (uint32_t r = 0; r < bc.vertex_slots; ++r) {
+      const float* x = v + 18 * r;
+      if (x[0] == kQuadPositions[3 * e] && x[1] == kQuadPositions[3 * e + 1] &&
+          x[6] == kQuadTexcoords[2 * e] && x[7] == kQuadTexcoords[2 * e + 1] &&
+          x[12] == kQuadTangents[4 * e] && x[15] == kQuadTangents[4 * e + 3] &&
+          x[16] == kQuadTexcoords1[2 * e] && x[17] == kQuadTexcoords1[2 * e + 1])
+        ++found;
+    }
+    CHECK(found == 1);
+  }
+  CHECK_OK(hedge_render_buffers_destroy(whole));
+
+  /* Separate: streams 4 and 5, offset 0, the same dirty ranges as the other streams. */
+  hedge_render_buffers_options options;
+  CHECK_OK(hedge_render_buffers_options_default(&options));
+  options.interleaved = 0;
+  hedge_render_buffers* render = NULL;
+  CHECK_OK(hedge_render_buffers_create(mesh, &options, &render));
+  CHECK_OK(hedge_render_buffers_layout(render, &layout));
+  CHECK(layout.interleaved == 0 && layout.stride == 18 && layout.tangent == 0 && layout.texcoord1 == 0);
+  CHECK_OK(hedge_render_buffers_counts(render, &bc));
+  const float* t = NULL;
+  CHECK_OK(hedge_render_buffers_vertex_data(render, HEDGE_STREAM_TANGENTS, &t, &n));
+  CHECK(t != NULL && n == 4ull * bc.vertex_slots);
+  float copy[256];
+  uint64_t n_copy = 0;
+  CHECK_OK(hedge_render_buffers_copy_vertex_data(render, HEDGE_STREAM_TEXCOORDS1, copy, 256, &n_copy));
+  CHECK(n_copy == 2ull * bc.vertex_slots);
+  check_tangent_frames(render);
+
+  /* Lift a corner: the normals follow, and the tangents about it are made perpendicular again. */
+  const uint32_t lifted = vertex_at(mesh, 1, 1);
+  CHECK_OK(hedge_set_vertex_position(mesh, lifted, 1, 1, 0.5f));
+  hedge_sync_result result;
+  CHECK_OK(hedge_render_buffers_sync(render, &result));
+  CHECK(result.vertex_range_count > 0 && result.full == 0);
+  check_tangent_frames(render);
+  hedge_range ranges[16];
+  uint32_t n_ranges = 0;
+  CHECK_OK(hedge_render_buffers_dirty_vertex_ranges(render, ranges, 16, &n_ranges));
+  CHECK_OK(hedge_render_buffers_vertex_data(render, HEDGE_STREAM_TANGENTS, &t, &n));
+  int tilted = 0;
+  for (uint32_t i = 0; i < n_ranges; ++i)
+    for (uint32_t r = ranges[i].first; r < ranges[i].first + ranges[i].count; ++r)
+      tilted |= t[4 * r + 2] != 0;
+  CHECK(tilted); /* the rewritten range holds the re-orthogonalised tangents */
+
+  /* Split an edge: the new corners get interpolated tangents and lightmap UVs. */
+  uint32_t h = INVALID, e = INVALID, mid = INVALID;
+  CHECK_OK(hedge_mesh_find_halfedge(mesh, vertex_at(mesh, 0, 0), vertex_at(mesh, 1, 0), &h));
+  CHECK_OK(hedge_halfedge_edge(mesh, h, &e));
+  CHECK_OK(hedge_split_edge(mesh, e, 0.5f, 0, 0, &mid));
+  CHECK_OK(hedge_render_buffers_sync(render, &result));
+  check_tangent_frames(render);
+  uint32_t rv = INVALID;
+  CHECK_OK(hedge_mesh_find_halfedge(mesh, vertex_at(mesh, 0, 0), mid, &h));
+  CHECK_OK(hedge_render_buffers_corner_vertex(render, h, &rv));
+  CHECK_OK(hedge_render_buffers_copy_vertex_data(render, HEDGE_STREAM_TEXCOORDS1, copy, 256, &n_copy));
+  CHECK(fabsf(copy[2 * rv] - 0.15f) < 1e-6f && fabsf(copy[2 * rv + 1] - 0.1f) < 1e-6f);
+  CHECK_VALID(mesh);
+  CHECK_OK(hedge_mesh_destroy(mesh));
+
+  /* Without tangents or a second channel (the older import), both are absent. */
+  mesh = NULL;
+  CHECK_OK(hedge_mesh_from_engine_mesh(kQuadPositions, 6, kQuadTriangles, 6, NULL, kQuadTexcoords, NULL, NULL,
+                                       NULL, &mesh));
+  CHECK_OK(hedge_render_buffers_create(mesh, &options, &render));
+  CHECK_OK(hedge_render_buffers_layout(render, &layout));
+  CHECK(layout.tangent == -1 && layout.texcoord1 == -1);
+  CHECK_OK(hedge_render_buffers_vertex_data(render, HEDGE_STREAM_TANGENTS, &t, &n));
+  CHECK(t == NULL && n == 0);
+  CHECK_STATUS(hedge_render_buffers_vertex_data(render, 6, &t, &n), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("not a HEDGE_STREAM_* value");
+  CHECK_OK(hedge_mesh_destroy(mesh));
+
+  /* Bad input: named, and no mesh is made. */
+  float nan_tangents[24];
+  memcpy(nan_tangents, kQuadTangents, sizeof nan_tangents);
+  nan_tangents[4 * 2 + 1] = NAN;
+  s.tangents = nan_tangents;
+  mesh = NULL;
+  CHECK_STATUS(hedge_mesh_from_engine_streams(&s, NULL, NULL, &mesh), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("tangent of vertex 2");
+  CHECK(mesh == NULL);
+  CHECK_STATUS(hedge_mesh_from_engine_streams(NULL, NULL, NULL, &mesh), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("streams");
+  s = quad_streams();
+  s.positions = NULL;
+  CHECK_STATUS(hedge_mesh_from_engine_streams(&s, NULL, NULL, &mesh), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("positions");
+  CHECK(mesh == NULL);
+}

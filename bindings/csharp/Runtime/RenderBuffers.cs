@@ -105,7 +105,7 @@ namespace Hedge
             }
         }
 
-        /// <summary>Floats per vertex in a stream: the stride for interleaved vertices, else 3, 3, 2 or 4.</summary>
+        /// <summary>Floats per vertex in a stream: the stride for interleaved vertices, else 3, 3, 2, 4, 4 or 2.</summary>
         public int Components(VertexStream stream)
         {
             switch (stream)
@@ -114,6 +114,8 @@ namespace Hedge
                 case VertexStream.Normals: return 3;
                 case VertexStream.Texcoords: return 2;
                 case VertexStream.Colors: return 4;
+                case VertexStream.Tangents: return 4;
+                case VertexStream.Texcoords1: return 2;
                 default: throw new ArgumentOutOfRangeException("stream", stream, "not a VertexStream");
             }
         }

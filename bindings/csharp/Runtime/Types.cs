@@ -69,6 +69,12 @@ namespace Hedge
         Texcoords = 2,
         /// <summary>Separate layout only: 4 floats (r, g, b, a) a vertex (empty when interleaved).</summary>
         Colors = 3,
+        /// <summary>Separate layout only: 4 floats a vertex, the tangent xyz and its handedness w (+1
+        /// or -1), as Unity's <c>Mesh.tangents</c> (empty when interleaved or the mesh has none).</summary>
+        Tangents = 4,
+        /// <summary>Separate layout only: 2 floats a vertex, the second texcoord channel (lightmap
+        /// UVs, Unity's <c>uv2</c>; empty when interleaved or the mesh has none).</summary>
+        Texcoords1 = 5,
     }
 
     /// <summary>Options for building a mesh from index buffers or a file (16 bytes).</summary>
@@ -359,9 +365,11 @@ namespace Hedge
     }
 
     /// <summary>Where each attribute sits in a vertex, in floats; an absent attribute has offset -1
-    /// (24 bytes). Interleaved: all in the <see cref="VertexStream.Vertices"/> buffer, Stride floats
-    /// a vertex. Separate: each in its own stream, tightly packed, at offset 0; Stride still counts
-    /// the floats of a whole vertex over all streams.</summary>
+    /// (32 bytes). Interleaved: all in the <see cref="VertexStream.Vertices"/> buffer, Stride floats
+    /// a vertex, in the order position, normal, texcoord, colour, tangent, texcoord1. Separate: each
+    /// in its own stream, tightly packed, at offset 0; Stride still counts the floats of a whole
+    /// vertex over all streams. Tangents and the second texcoord channel are present when the mesh
+    /// has them (<see cref="HalfEdgeMesh.FromEngineMesh(EngineStreams, EngineImportOptions)"/>).</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct VertexLayout
     {
@@ -371,11 +379,17 @@ namespace Hedge
         public int Texcoord;
         public int Color;
         int interleaved;
+        /// <summary>The tangent (4 floats: xyz, handedness w), -1 when absent.</summary>
+        public int Tangent;
+        /// <summary>The second texcoord channel (2 floats: lightmap UVs), -1 when absent.</summary>
+        public int Texcoord1;
 
         public bool Interleaved { get { return interleaved != 0; } }
         public bool HasNormals { get { return Normal >= 0; } }
         public bool HasTexcoords { get { return Texcoord >= 0; } }
         public bool HasColors { get { return Color >= 0; } }
+        public bool HasTangents { get { return Tangent >= 0; } }
+        public bool HasTexcoords1 { get { return Texcoord1 >= 0; } }
     }
 
     /// <summary>A run of slots [First, First + Count) (8 bytes).</summary>

@@ -1,7 +1,9 @@
 // Unity glue: a component that turns its MeshFilter's mesh into a HalfEdgeMesh, lets scripts edit
 // it, and uploads only the rewritten ranges to a Unity Mesh with SetVertexBufferData /
-// SetIndexBufferData (start and count). One vertex stream per attribute: 0 positions, then normals,
-// texcoords and colours on the next streams, as present; one submesh per submesh (material) of the
+// SetIndexBufferData (start and count). Vertex stream 0 holds the positions, then normals, tangents,
+// colours, texcoords and lightmap UVs as present, one stream each, or with normals and tangents, and
+// texcoords and lightmap UVs, sharing a stream when Unity's four would not do (UnityStreams.cs); one
+// submesh per submesh (material) of the
 // source, each a contiguous index range that follows the edits. The GPU buffers are allocated at
 // the library's capacities, so that growth from edits rarely reallocates them. Uploads follow a
 // change log of the buffers (RenderChangeLog), not the result of the component's own sync, so
@@ -32,10 +34,12 @@ namespace Hedge.Unity
                                              MeshUpdateFlags.DontRecalculateBounds;
 
         Mesh mesh;
-        float[] positions, normals, texcoords, colors;
+        float[] positions;
+        // Per Unity stream, its data as uploaded (stream 0 is positions).
+        readonly float[][] streamData = new float[UnityStreams.MaxStreams][];
         int[] indices;
         RenderChangeLog pending;
-        int normalStream = -1, texcoordStream = -1, colorStream = -1;
+        UnityStreams streams;
         int gpuVertices, indexCount;
         Vector3 boundsMin, boundsMax;
 
@@ -58,42 +62,15 @@ namespace Hedge.Unity
 
         void OnDestroy() { Release(); }
 
-        /// <summary>Builds the half-edge mesh from a Unity mesh (positions welded, UV seams, normals and colours
-        /// kept per corner) and renders it through this component's MeshFilter.</summary>
+        /// <summary>Builds the half-edge mesh from a Unity mesh (positions welded; UV seams, normals, colours,
+        /// tangents and lightmap UVs (uv2) kept per corner; one submesh per submesh) and renders it through
+        /// this component's MeshFilter.</summary>
         public void Build(Mesh source)
         {
-            UnityMeshes.CheckReadable(source);  // before Release(): an unreadable source changes nothing
+            BuildReport report;  // built before Release(): a source that cannot be built changes nothing
+            HalfEdgeMesh built = UnityMeshes.FromMesh(source, EngineImportOptions.Unity, out report);
             Release();
-            Vector3[] v = source.vertices;
-            Vector3[] n = source.normals;
-            Vector2[] uv = source.uv;
-            Color[] c = source.colors;
-            var p = new float[3 * v.Length];
-            for (int i = 0; i < v.Length; ++i) { p[3 * i] = v[i].x; p[3 * i + 1] = v[i].y; p[3 * i + 2] = v[i].z; }
-            float[] fn = null, fuv = null, fc = null;
-            if (n != null && n.Length == v.Length)
-            {
-                fn = new float[3 * v.Length];
-                for (int i = 0; i < n.Length; ++i) { fn[3 * i] = n[i].x; fn[3 * i + 1] = n[i].y; fn[3 * i + 2] = n[i].z; }
-            }
-            if (uv != null && uv.Length == v.Length)
-            {
-                fuv = new float[2 * v.Length];
-                for (int i = 0; i < uv.Length; ++i) { fuv[2 * i] = uv[i].x; fuv[2 * i + 1] = uv[i].y; }
-            }
-            if (c != null && c.Length == v.Length)
-            {
-                fc = new float[4 * v.Length];
-                for (int i = 0; i < c.Length; ++i)
-                {
-                    fc[4 * i] = c[i].r; fc[4 * i + 1] = c[i].g; fc[4 * i + 2] = c[i].b; fc[4 * i + 3] = c[i].a;
-                }
-            }
-            BuildReport report;
-            int[] submeshes;
-            int[] triangles = UnitySubmeshes.ReadTriangles(source, out submeshes);
-            HalfEdgeMesh = HalfEdgeMesh.FromEngineMesh(p, triangles, fn, fuv, fc, submeshes, EngineImportOptions.Unity,
-                                                       out report);
+            HalfEdgeMesh = built;
             Report = report;
             RenderOptions renderOptions = RenderOptions.Unity;
             if (keepImportedNormals) renderOptions.Normals = NormalSource.Attribute;
@@ -139,12 +116,7 @@ namespace Hedge.Unity
             }
             int vertexRanges = pending.VertexRangeCount;
             if (vertexRanges > 0)
-            {
-                UploadStream(VertexStream.Vertices, positions, 0);
-                if (normalStream >= 0) UploadStream(VertexStream.Normals, normals, normalStream);
-                if (texcoordStream >= 0) UploadStream(VertexStream.Texcoords, texcoords, texcoordStream);
-                if (colorStream >= 0) UploadStream(VertexStream.Colors, colors, colorStream);
-            }
+                for (int s = 0; s < streams.Count; ++s) UploadStream(s);
             for (int i = 0, n = pending.IndexRangeCount; i < n; ++i)
             {
                 SlotRange r = pending.IndexRange(i);
@@ -202,16 +174,29 @@ namespace Hedge.Unity
             mesh.bounds = b;
         }
 
-        // Copies the pending ranges of one stream into its array, then uploads each range.
-        void UploadStream(VertexStream stream, float[] data, int unityStream)
+        // Copies (or interleaves) the pending ranges of one Unity stream into its array, then uploads each range.
+        void UploadStream(int s)
         {
-            int k = Buffers.Components(stream);
+            int k = streams.Stride(s);
+            float[] data = streamData[s];
             for (int i = 0, n = pending.VertexRangeCount; i < n; ++i)
             {
                 SlotRange r = pending.VertexRange(i);
-                Buffers.CopyVertexRange(stream, r.First, r.Count, data);
-                mesh.SetVertexBufferData(data, r.First * k, r.First * k, r.Count * k, unityStream, PartialFlags);
+                Fill(s, r.First, r.Count);
+                mesh.SetVertexBufferData(data, r.First * k, r.First * k, r.Count * k, s, PartialFlags);
             }
+        }
+
+        // Render vertices [first, first + count) of Unity stream s from the buffers into its array.
+        unsafe void Fill(int s, int first, int count)
+        {
+            float[] data = streamData[s];
+            if (!streams.Staged(s))
+            {
+                Buffers.CopyVertexRange(streams.Members(s)[0], first, count, data);
+                return;
+            }
+            fixed (float* target = data) streams.Interleave(Buffers, s, target, data.Length, first, count);
         }
 
         // (Re)allocates the Unity mesh's buffers at the library's capacities and uploads everything.
@@ -223,19 +208,20 @@ namespace Hedge.Unity
             gpuVertices = (int)Math.Max(counts.VertexCapacity, counts.VertexSlots);
             indexCount = (int)counts.IndexCount;
             int gpuIndices = (int)Math.Max(counts.IndexCapacity, counts.IndexCount);
-            VertexAttributeDescriptor[] attributes = UnityStreams.Describe(layout, out normalStream, out texcoordStream,
-                                                                           out colorStream);
-            positions = new float[3 * gpuVertices];
-            normals = normalStream >= 0 ? new float[3 * gpuVertices] : null;
-            texcoords = texcoordStream >= 0 ? new float[2 * gpuVertices] : null;
-            colors = colorStream >= 0 ? new float[4 * gpuVertices] : null;
+            streams = UnityStreams.Describe(layout);
+            for (int s = 0; s < UnityStreams.MaxStreams; ++s)
+                streamData[s] = s < streams.Count ? new float[streams.Stride(s) * gpuVertices] : null;
+            positions = streamData[0];
             indices = new int[gpuIndices];
 
-            mesh.SetVertexBufferParams(gpuVertices, attributes);
-            UploadWhole(VertexStream.Vertices, positions, 0);
-            if (normals != null) UploadWhole(VertexStream.Normals, normals, normalStream);
-            if (texcoords != null) UploadWhole(VertexStream.Texcoords, texcoords, texcoordStream);
-            if (colors != null) UploadWhole(VertexStream.Colors, colors, colorStream);
+            mesh.SetVertexBufferParams(gpuVertices, streams.Attributes);
+            int slots = (int)counts.VertexSlots;
+            for (int s = 0; s < streams.Count; ++s)
+            {
+                Fill(s, 0, slots);
+                mesh.SetVertexBufferData(streamData[s], 0, 0, slots * streams.Stride(s), s,
+                                         MeshUpdateFlags.DontRecalculateBounds);
+            }
             Buffers.CopyIndices(indices);
             mesh.SetIndexBufferParams(gpuIndices, IndexFormat.UInt32);
             mesh.SetIndexBufferData(indices, 0, 0, gpuIndices, MeshUpdateFlags.DontRecalculateBounds);
@@ -246,12 +232,6 @@ namespace Hedge.Unity
         // One SubMeshDescriptor per submesh (material) of the buffers, with the first vertex, vertex count
         // and bounds that DontRecalculateBounds needs given. O(submeshes).
         void UploadSubmeshes(MeshUpdateFlags flags) { UnitySubmeshes.SetSubmeshes(mesh, Buffers, flags); }
-
-        void UploadWhole(VertexStream stream, float[] data, int unityStream)
-        {
-            int floats = Buffers.CopyStream(stream, data);
-            mesh.SetVertexBufferData(data, 0, 0, floats, unityStream, MeshUpdateFlags.DontRecalculateBounds);
-        }
 
         void Release()
         {

@@ -3,10 +3,13 @@
 // Mesh.SetVertexBufferData and Mesh.SetIndexBufferData range by range. No managed array holds a
 // copy of the mesh, and a partial upload allocates nothing.
 //
-// Layout: the buffers must use the separate layout of RenderOptions.Unity: vertex stream 0 holds the
-// positions, then normals, texcoords and colours each on the next stream, as present (Unity orders
-// attributes inside one stream differently from hedge's interleaved vertex, so interleaved buffers
-// are refused). One submesh per submesh of the buffers, each a contiguous index range with its first
+// Layout: the buffers must use the separate layout of RenderOptions.Unity (Unity orders attributes
+// inside one stream differently from hedge's interleaved vertex, so interleaved buffers are
+// refused). Vertex stream 0 holds the positions, then the other attributes as UnityStreams.cs says:
+// one stream each, or, with tangents and lightmap UVs too, normals with tangents and texcoords with
+// lightmap UVs sharing a stream (Unity takes four). A stream of one attribute is uploaded from the
+// library's memory as it is; a shared one is interleaved, range by range, into a NativeArray the
+// uploader keeps (native memory, not managed), then uploaded. One submesh per submesh of the buffers, each a contiguous index range with its first
 // vertex, vertex count and bounds (UploadSubmeshes, after every upload). Indices are 16-bit when every render vertex
 // slot the GPU buffer can hold fits (at most 65536 slots): those are converted range by range into a
 // NativeArray<ushort> the uploader keeps (native memory, not managed); otherwise the 32-bit native
@@ -37,7 +40,9 @@ namespace Hedge.Unity
         readonly RenderBuffers buffers;
         readonly Mesh mesh;
         readonly RenderChangeLog log;
-        int normalStream = -1, texcoordStream = -1, colorStream = -1;
+        UnityStreams streams;
+        // Per Unity stream that interleaves several attributes: its staging buffer, gpuVertices x stride floats.
+        readonly NativeArray<float>[] staging = new NativeArray<float>[UnityStreams.MaxStreams];
         int gpuVertices, gpuIndices, indexCount;
         IndexFormat indexFormat = IndexFormat.UInt32;
         NativeArray<ushort> indices16;
@@ -96,10 +101,7 @@ namespace Hedge.Unity
             }
             if (log.VertexRangeCount > 0)
             {
-                UploadVertexRanges(VertexStream.Vertices, 0);
-                if (normalStream >= 0) UploadVertexRanges(VertexStream.Normals, normalStream);
-                if (texcoordStream >= 0) UploadVertexRanges(VertexStream.Texcoords, texcoordStream);
-                if (colorStream >= 0) UploadVertexRanges(VertexStream.Colors, colorStream);
+                for (int s = 0; s < streams.Count; ++s) UploadVertexRanges(s);
                 GrowBounds();
             }
             if (log.IndexRangeCount > 0) UploadIndexRanges();
@@ -120,13 +122,9 @@ namespace Hedge.Unity
             gpuVertices = (int)Math.Max(counts.VertexCapacity, counts.VertexSlots);
             gpuIndices = (int)Math.Max(counts.IndexCapacity, counts.IndexCount);
             indexCount = (int)counts.IndexCount;
-            VertexAttributeDescriptor[] attributes = UnityStreams.Describe(layout, out normalStream, out texcoordStream,
-                                                                           out colorStream);
-            mesh.SetVertexBufferParams(gpuVertices, attributes);
-            UploadWholeStream(VertexStream.Vertices, 0);
-            if (normalStream >= 0) UploadWholeStream(VertexStream.Normals, normalStream);
-            if (texcoordStream >= 0) UploadWholeStream(VertexStream.Texcoords, texcoordStream);
-            if (colorStream >= 0) UploadWholeStream(VertexStream.Colors, colorStream);
+            streams = UnityStreams.Describe(layout);
+            mesh.SetVertexBufferParams(gpuVertices, streams.Attributes);
+            for (int s = 0; s < streams.Count; ++s) UploadWholeStream(s, (int)counts.VertexSlots);
 
             indexFormat = gpuVertices <= 65536 ? IndexFormat.UInt16 : IndexFormat.UInt32;
             mesh.SetIndexBufferParams(gpuIndices, indexFormat);
@@ -153,25 +151,54 @@ namespace Hedge.Unity
         // and bounds that DontRecalculateBounds needs given. O(submeshes).
         void UploadSubmeshes(MeshUpdateFlags flags) { UnitySubmeshes.SetSubmeshes(mesh, buffers, flags); }
 
-        void UploadWholeStream(VertexStream stream, int unityStream)
+        void UploadWholeStream(int s, int vertexSlots)
         {
+            if (streams.Staged(s))
+            {
+                int stride = streams.Stride(s);
+                long needed = (long)gpuVertices * stride;
+                if (!staging[s].IsCreated || staging[s].Length < needed)
+                {
+                    if (staging[s].IsCreated) staging[s].Dispose();
+                    staging[s] = new NativeArray<float>(checked((int)needed), Allocator.Persistent,
+                                                        NativeArrayOptions.ClearMemory);
+                }
+                if (vertexSlots == 0) return;
+                Interleave(s, 0, vertexSlots);
+                mesh.SetVertexBufferData(staging[s], 0, 0, vertexSlots * stride, s, FullFlags);
+                return;
+            }
             int floats;
-            IntPtr p = buffers.GetStreamPointer(stream, out floats);
+            IntPtr p = buffers.GetStreamPointer(streams.Members(s)[0], out floats);
             if (floats == 0) return;
-            mesh.SetVertexBufferData(Wrap<float>(p, floats), 0, 0, floats, unityStream, FullFlags);
+            mesh.SetVertexBufferData(Wrap<float>(p, floats), 0, 0, floats, s, FullFlags);
         }
 
-        void UploadVertexRanges(VertexStream stream, int unityStream)
+        void UploadVertexRanges(int s)
         {
-            int floats;
-            IntPtr p = buffers.GetStreamPointer(stream, out floats);
-            NativeArray<float> data = Wrap<float>(p, floats);
-            int k = buffers.Components(stream);
+            int k = streams.Stride(s);
+            NativeArray<float> data;
+            if (streams.Staged(s))
+            {
+                data = staging[s];
+            }
+            else
+            {
+                int floats;
+                data = Wrap<float>(buffers.GetStreamPointer(streams.Members(s)[0], out floats), floats);
+            }
             for (int i = 0, n = log.VertexRangeCount; i < n; ++i)
             {
                 SlotRange r = log.VertexRange(i);
-                mesh.SetVertexBufferData(data, r.First * k, r.First * k, r.Count * k, unityStream, PartialFlags);
+                if (streams.Staged(s)) Interleave(s, r.First, r.Count);
+                mesh.SetVertexBufferData(data, r.First * k, r.First * k, r.Count * k, s, PartialFlags);
             }
+        }
+
+        unsafe void Interleave(int s, int first, int count)
+        {
+            streams.Interleave(buffers, s, (float*)NativeArrayUnsafeUtility.GetUnsafePtr(staging[s]), staging[s].Length,
+                               first, count);
         }
 
         void UploadIndexRanges()
@@ -262,6 +289,8 @@ namespace Hedge.Unity
             disposed = true;
             log.Dispose();
             if (indices16.IsCreated) indices16.Dispose();
+            for (int s = 0; s < staging.Length; ++s)
+                if (staging[s].IsCreated) staging[s].Dispose();
 #if ENABLE_UNITY_COLLECTIONS_CHECKS
             AtomicSafetyHandle.Release(safety);
 #endif

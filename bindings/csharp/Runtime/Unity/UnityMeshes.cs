@@ -31,21 +31,42 @@ namespace Hedge.Unity
         public static HalfEdgeMesh FromUnityMesh(Vector3[] vertices, int[] triangles, Vector3[] normals, Vector2[] uv,
                                                  Color[] colors, EngineImportOptions options, out BuildReport report)
         {
-            if (vertices == null) throw new ArgumentNullException("vertices");
-            if (triangles == null) throw new ArgumentNullException("triangles");
-            normals = Optional(normals, vertices.Length, "normals");
-            uv = Optional(uv, vertices.Length, "uv");
-            colors = Optional(colors, vertices.Length, "colors");
-            IntPtr mesh;
-            int status = hedge_mesh_from_engine_mesh(vertices, (uint)vertices.Length, triangles, (uint)triangles.Length,
-                                                     normals, uv, colors, ref options, out report, out mesh);
-            return HalfEdgeMesh.Adopt(status, mesh);
+            return FromUnityArrays(vertices, triangles, normals, uv, colors, null, null, null, options, out report);
         }
 
-        /// <summary>Builds a mesh from a Unity Mesh (its vertices, the triangles of every submesh, normals, uv
-        /// and colors) with <see cref="EngineImportOptions.Unity"/>, as <see cref="FromUnityMesh(Vector3[], int[],
-        /// Vector3[], Vector2[], Color[])"/>, keeping each triangle's submesh (material) as its face's
-        /// ("f:submesh"; <see cref="UnitySubmeshes.ReadTriangles"/>).</summary>
+        /// <summary>As above, with tangents (mesh.tangents: xyz and the handedness w) and lightmap UVs
+        /// (mesh.uv2), each kept per corner when given (null or empty: none). Render buffers of the mesh then
+        /// have tangent and lightmap-UV streams, which the component and <see cref="NativeMeshUploader"/>
+        /// upload as VertexAttribute.Tangent and TexCoord1. Tangents are kept as imported, not computed:
+        /// where normals follow the geometry, each recomputed normal's tangent is made perpendicular to it
+        /// again.</summary>
+        public static HalfEdgeMesh FromUnityMesh(Vector3[] vertices, int[] triangles, Vector3[] normals, Vector2[] uv,
+                                                 Color[] colors, Vector4[] tangents, Vector2[] uv2,
+                                                 EngineImportOptions options, out BuildReport report)
+        {
+            return FromUnityArrays(vertices, triangles, normals, uv, colors, tangents, uv2, null, options, out report);
+        }
+
+        // Every Unity import goes here: the arrays are pinned as they are (Vector3, Vector2, Vector4 and Color
+        // are blittable floats), absent or empty ones passed as none.
+        internal static HalfEdgeMesh FromUnityArrays(Vector3[] vertices, int[] triangles, Vector3[] normals,
+                                                     Vector2[] uv, Color[] colors, Vector4[] tangents, Vector2[] uv2,
+                                                     int[] triangleSubmeshes, EngineImportOptions options,
+                                                     out BuildReport report)
+        {
+            if (vertices == null) throw new ArgumentNullException("vertices");
+            if (triangles == null) throw new ArgumentNullException("triangles");
+            int n = vertices.Length;
+            return HalfEdgeMesh.FromEngineArrays(n, vertices, triangles, Optional(normals, n, "normals"),
+                                                 Optional(uv, n, "uv"), Optional(colors, n, "colors"),
+                                                 Optional(tangents, n, "tangents"), Optional(uv2, n, "uv2"),
+                                                 triangleSubmeshes, options, out report);
+        }
+
+        /// <summary>Builds a mesh from a Unity Mesh (its vertices, the triangles of every submesh, normals, uv,
+        /// colors, tangents and uv2) with <see cref="EngineImportOptions.Unity"/>, as <see
+        /// cref="FromUnityMesh(Vector3[], int[], Vector3[], Vector2[], Color[])"/>, keeping each triangle's
+        /// submesh (material) as its face's ("f:submesh"; <see cref="UnitySubmeshes.ReadTriangles"/>).</summary>
         /// <exception cref="ArgumentException">The mesh is not readable (its model was imported without
         /// Read/Write): Unity gives scripts no vertices then.</exception>
         public static HalfEdgeMesh FromMesh(Mesh source)
@@ -60,9 +81,8 @@ namespace Hedge.Unity
             CheckReadable(source);
             int[] submeshes;
             int[] triangles = UnitySubmeshes.ReadTriangles(source, out submeshes);
-            if (submeshes != null) return UnitySubmeshes.FromMesh(source, triangles, submeshes, options, out report);
-            return FromUnityMesh(source.vertices, triangles, source.normals, source.uv, source.colors, options,
-                                 out report);
+            return FromUnityArrays(source.vertices, triangles, source.normals, source.uv, source.colors,
+                                   source.tangents, source.uv2, submeshes, options, out report);
         }
 
         /// <summary>Throws unless a script can read the mesh's arrays.</summary>
@@ -132,10 +152,6 @@ namespace Hedge.Unity
             return mesh.TryGetFaceContainingPoint(point.ToVec3(), out face, tolerance);
         }
 
-        [DllImport(Native.Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        static extern int hedge_mesh_from_engine_mesh(Vector3[] positions, uint vertexCount, int[] indices,
-            uint indexCount, Vector3[] normals, Vector2[] texcoords, Color[] colors, ref EngineImportOptions options,
-            out BuildReport report, out IntPtr mesh);
         [DllImport(Native.Library, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         static extern int hedge_mesh_copy_positions(IntPtr mesh, [Out] Vector3[] buffer, ulong capacity, out ulong count);
     }

@@ -42,18 +42,6 @@ namespace Hedge.Unity
             return triangles;
         }
 
-        /// <summary>Builds a HalfEdgeMesh from a Unity mesh of several submeshes: positions welded, normals, uv
-        /// and colours kept per corner, and each triangle's submesh kept as its face's submesh
-        /// (<see cref="UnityMeshes.FromMesh(Mesh, EngineImportOptions, out BuildReport)"/> calls it).</summary>
-        internal static HalfEdgeMesh FromMesh(Mesh source, int[] triangles, int[] submeshes, EngineImportOptions options,
-                                              out BuildReport report)
-        {
-            Vector3[] v = source.vertices;
-            return HalfEdgeMesh.FromEngineMesh(Floats(v, v.Length), triangles, Floats(source.normals, v.Length),
-                                               Floats(source.uv, v.Length), Floats(source.colors, v.Length), submeshes,
-                                               options, out report);
-        }
-
         /// <summary>Sets mesh.subMeshCount to the buffers' submeshes and each SubMeshDescriptor: index start and
         /// count, first vertex, vertex count and bounds, as of the buffers' last sync. O(submeshes).</summary>
         public static void SetSubmeshes(Mesh mesh, RenderBuffers buffers, MeshUpdateFlags flags)
@@ -73,34 +61,6 @@ namespace Hedge.Unity
                 d.bounds = b;
                 mesh.SetSubMesh(i, d, flags);
             }
-        }
-
-        // Unity's empty arrays (an absent attribute) and null become null; others become floats.
-        static float[] Floats(Vector3[] a, int n)
-        {
-            if (a == null || a.Length == 0) return null;
-            if (a.Length != n) throw new ArgumentException("length " + a.Length + ", " + n + " expected (one per vertex)");
-            var f = new float[3 * n];
-            for (int i = 0; i < n; ++i) { f[3 * i] = a[i].x; f[3 * i + 1] = a[i].y; f[3 * i + 2] = a[i].z; }
-            return f;
-        }
-
-        static float[] Floats(Vector2[] a, int n)
-        {
-            if (a == null || a.Length == 0) return null;
-            if (a.Length != n) throw new ArgumentException("length " + a.Length + ", " + n + " expected (one per vertex)");
-            var f = new float[2 * n];
-            for (int i = 0; i < n; ++i) { f[2 * i] = a[i].x; f[2 * i + 1] = a[i].y; }
-            return f;
-        }
-
-        static float[] Floats(Color[] a, int n)
-        {
-            if (a == null || a.Length == 0) return null;
-            if (a.Length != n) throw new ArgumentException("length " + a.Length + ", " + n + " expected (one per vertex)");
-            var f = new float[4 * n];
-            for (int i = 0; i < n; ++i) { f[4 * i] = a[i].r; f[4 * i + 1] = a[i].g; f[4 * i + 2] = a[i].b; f[4 * i + 3] = a[i].a; }
-            return f;
         }
     }
 }

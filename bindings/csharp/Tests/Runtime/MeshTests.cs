@@ -333,7 +333,7 @@ namespace Hedge.Tests
             Check.Equal(24, (int)Marshal.OffsetOf(typeof(MeshGeometry), "BoxMin"));
             Check.Equal(24, Marshal.SizeOf(typeof(RenderOptions)), "hedge_render_buffers_options");
             Check.Equal(16, (int)Marshal.OffsetOf(typeof(RenderOptions), "Winding"));
-            Check.Equal(24, Marshal.SizeOf(typeof(VertexLayout)), "hedge_vertex_layout");
+            Check.Equal(32, Marshal.SizeOf(typeof(VertexLayout)), "hedge_vertex_layout");
             Check.Equal(8, Marshal.SizeOf(typeof(SlotRange)), "hedge_range");
             Check.Equal(40, Marshal.SizeOf(typeof(SyncResult)), "hedge_sync_result");
             Check.Equal(16, (int)Marshal.OffsetOf(typeof(SyncResult), "VertexRangeCount"));

@@ -57,9 +57,10 @@ namespace Hedge.Tests
             UnityEngine.Mesh mesh = b.RenderedMesh;
             RenderBuffers buffers = b.Buffers;
             BufferCounts counts = buffers.Counts;
-            var streams = new[] { VertexStream.Vertices, VertexStream.Normals, VertexStream.Texcoords, VertexStream.Colors };
-            var attributes = new[] { VertexAttribute.Position, VertexAttribute.Normal, VertexAttribute.TexCoord0,
-                                     VertexAttribute.Color };
+            // Streams in VertexAttribute order: Position, Normal, Color, TexCoord0.
+            var streams = new[] { VertexStream.Vertices, VertexStream.Normals, VertexStream.Colors, VertexStream.Texcoords };
+            var attributes = new[] { VertexAttribute.Position, VertexAttribute.Normal, VertexAttribute.Color,
+                                     VertexAttribute.TexCoord0 };
             Check.Equal(4, mesh.Attributes.Length, "four attributes");
             for (int s = 0; s < 4; ++s)
             {

@@ -139,6 +139,7 @@ namespace UnityEngine
 
         public void SetVertexBufferParams(int vertexCount, params Rendering.VertexAttributeDescriptor[] attributes)
         {
+            CheckDescriptors(attributes);
             Attributes = attributes;
             VertexBufferCount = vertexCount;
             var floatsPerStream = new int[4];
@@ -186,8 +187,13 @@ namespace UnityEngine
                 meshBufferStart + count > IndexBuffer.Length)
                 throw new ArgumentOutOfRangeException("Bad start/count arguments (dataStart:" + dataStart +
                                                       " meshBufferStart:" + meshBufferStart + " count:" + count + ")");
-            for (int i = 0; i < count; ++i)
-                IndexBuffer.SetValue(Convert.ToInt32(data[dataStart + i]), meshBufferStart + i);
+            var ints = data as int[];
+            var target = IndexBuffer as int[];
+            if (ints != null && target != null)  // without boxing, so that tests can measure the caller's allocations
+                Array.Copy(ints, dataStart, target, meshBufferStart, count);
+            else
+                for (int i = 0; i < count; ++i)
+                    IndexBuffer.SetValue(Convert.ToInt32(data[dataStart + i]), meshBufferStart + i);
             IndexUploads += count;
         }
 
