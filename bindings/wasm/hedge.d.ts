@@ -263,7 +263,8 @@ export class Mesh {
   oneRing(v: number): OneRing;
   pick(origin: Vec3, direction: Vec3): Pick | null;
   pickMany(rays: Float32Array, out?: Int32Array): Int32Array;
-  /** Why the last refused edit was refused; null after an edit that was done. */
+  /** Why the last refused edit was refused, or why the edit of the last predicate (canFlip, ...)
+   *  that answered false would be; null after an edit that was done or a predicate that answered true. */
   readonly lastRefusal: string | null;
   refusal(op: Operation, ...elements: number[]): string | null;
   /** @deprecated use refusal(op, element). */

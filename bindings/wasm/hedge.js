@@ -351,7 +351,8 @@ export class Mesh extends NativeOwner {
   // until the next edit is done. ----
 
   /** Why the last refused edit on this mesh was refused (the library's reason, as HedgeError's
-   *  refusal); null after an edit that was done, or before any edit. */
+   *  refusal), or after a predicate (canFlip, ...) that answered false, why its edit would be; null
+   *  after an edit that was done or a predicate that answered true, or before any. */
   lastRefusal = null;
 
   /** null if edit ('splitEdge', 'flip', 'collapse', 'splitFace' (one element each), 'cutFace' (two
@@ -367,23 +368,31 @@ export class Mesh extends NativeOwner {
     return this.refusal(op, element);
   }
 
+  // The predicates (canFlip, ...): true if the edit is allowed; each also sets lastRefusal, to why
+  // that edit would be refused or null, so the reason read after a predicate is always its own (as
+  // C's hedge_last_refusal() and C#'s LastRefusal after a predicate).
   canSplitEdge(e) {
-    return this.refusal('splitEdge', e) === null;
+    return this._allowed('splitEdge', e);
   }
   canFlip(e) {
-    return this.refusal('flip', e) === null;
+    return this._allowed('flip', e);
   }
   canCollapse(h) {
-    return this.refusal('collapse', h) === null;
+    return this._allowed('collapse', h);
   }
   canSplitFace(f) {
-    return this.refusal('splitFace', f) === null;
+    return this._allowed('splitFace', f);
   }
   canCutFace(h0, h1) {
-    return this.refusal('cutFace', h0, h1) === null;
+    return this._allowed('cutFace', h0, h1);
   }
   canFillHole(h) {
-    return this.refusal('fillHole', h) === null;
+    return this._allowed('fillHole', h);
+  }
+
+  _allowed(edit, ...elements) {
+    this.lastRefusal = this.refusal(edit, ...elements);
+    return this.lastRefusal === null;
   }
 
   /** Runs an edit, keeping lastRefusal. */

@@ -108,7 +108,8 @@ HEDGE_API const char* hedge_last_error(void);
 /** Why the last call on this thread was refused (HEDGE_ERROR_REFUSED): the library's refusal in a
  *  few words ("the edge is on the boundary (a flip needs a triangle on both sides)"), the same text
  *  in every binding; hedge_last_error() says more ("flip of edge 3 refused: ...; nothing was
- *  changed"). "" after a call that was not refused. Static storage; never NULL. */
+ *  changed"). After a predicate (hedge_can_*) that answered 0: why that edit would be refused.
+ *  "" after any other call. Static storage; never NULL. */
 HEDGE_API const char* hedge_last_refusal(void);
 
 /** A refusal's stable code: why an edit was refused, as a number to check without comparing text
@@ -195,8 +196,9 @@ enum {
   HEDGE_REFUSAL_COUNT = 37
 };
 
-/** The code of hedge_last_refusal(): why the last call on this thread was refused, as a number;
- *  HEDGE_REFUSAL_NONE after a call that was not refused. Cannot fail; allocates nothing. */
+/** The code of hedge_last_refusal(): why the last call on this thread was refused (or why the edit
+ *  a predicate answered 0 for would be), as a number; HEDGE_REFUSAL_NONE after any other call.
+ *  Cannot fail; allocates nothing. */
 HEDGE_API hedge_refusal hedge_last_refusal_code(void);
 
 /** A refusal's text, as hedge_last_refusal() gives it ("" for HEDGE_REFUSAL_NONE and for a value

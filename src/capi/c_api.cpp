@@ -148,6 +148,8 @@ void clear_error() noexcept {
   t_refusal = "";
 }
 
+void set_refusal(const char* refusal) noexcept { t_refusal = refusal != nullptr ? refusal : ""; }
+
 void set_error(const binding::Failure& failure) noexcept {
   t_refusal = failure.refusal;
   try {

@@ -92,6 +92,9 @@ std::shared_ptr<RenderObject> unregister_render(const hedge_render_buffers* hand
 void clear_error() noexcept;
 //! Records a failure for hedge_last_error() and hedge_last_refusal().
 void set_error(const binding::Failure& failure) noexcept;
+//! Records a predicate's answer for hedge_last_refusal(): why the edit it checked would be refused
+//! (a static string of core/refusal.h), or nullptr for "allowed". Not an error: the call succeeds.
+void set_refusal(const char* refusal) noexcept;
 
 //! Runs `body` (returning void) and converts every exception into a status code and a message
 //! (binding/errors.h maps them).

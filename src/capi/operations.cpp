@@ -15,12 +15,19 @@ using namespace hedge;
 using namespace hedge::capi;
 
 namespace {
-// A predicate's entry point: checks the handles, then writes can(mesh, element) to *out_ok as 0 or 1.
+// A predicate's answer: 1 when the edit is allowed, else 0 with its refusal recorded for
+// hedge_last_refusal(), so that a caller asking "why not?" after a predicate gets this edit's reason.
+std::int32_t allowed(const char* refusal) {
+  set_refusal(refusal);
+  return refusal == nullptr ? 1 : 0;
+}
+
+// A predicate's entry point: checks the handles, then writes whether the edit is allowed to *out_ok.
 template <typename H>
 hedge_status predicate(const hedge_mesh* mesh, std::uint32_t index, std::int32_t* out_ok,
-                       bool (*can)(const SurfaceMesh&, H)) {
+                       const char* (*refusal)(const SurfaceMesh&, H)) {
   return element_query<H>(mesh, index, out_ok, "out_ok",
-                          [can](const SurfaceMesh& m, H x) { return can(m, x) ? 1 : 0; });
+                          [refusal](const SurfaceMesh& m, H x) { return allowed(refusal(m, x)); });
 }
 }  // namespace
 
@@ -45,7 +52,7 @@ void hedge::capi::write_maps(const GarbageMaps& maps, const MapBuffers& b) {
 extern "C" {
 
 hedge_status hedge_can_split_edge(const hedge_mesh* mesh, uint32_t edge, int32_t* out_ok) {
-  return predicate<Edge>(mesh, edge, out_ok, can_split_edge);
+  return predicate<Edge>(mesh, edge, out_ok, split_refusal);
 }
 
 hedge_status hedge_split_edge(hedge_mesh* mesh, uint32_t edge, float x, float y, float z,
@@ -58,7 +65,7 @@ hedge_status hedge_split_edge(hedge_mesh* mesh, uint32_t edge, float x, float y,
 }
 
 hedge_status hedge_can_collapse(const hedge_mesh* mesh, uint32_t halfedge, int32_t* out_ok) {
-  return predicate<Halfedge>(mesh, halfedge, out_ok, can_collapse);
+  return predicate<Halfedge>(mesh, halfedge, out_ok, collapse_refusal);
 }
 
 hedge_status hedge_collapse(hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_vertex) {
@@ -70,7 +77,7 @@ hedge_status hedge_collapse(hedge_mesh* mesh, uint32_t halfedge, uint32_t* out_v
 }
 
 hedge_status hedge_can_flip(const hedge_mesh* mesh, uint32_t edge, int32_t* out_ok) {
-  return predicate<Edge>(mesh, edge, out_ok, can_flip);
+  return predicate<Edge>(mesh, edge, out_ok, flip_refusal);
 }
 
 hedge_status hedge_flip(hedge_mesh* mesh, uint32_t edge) {
@@ -78,7 +85,7 @@ hedge_status hedge_flip(hedge_mesh* mesh, uint32_t edge) {
 }
 
 hedge_status hedge_can_split_face(const hedge_mesh* mesh, uint32_t face, int32_t* out_ok) {
-  return predicate<Face>(mesh, face, out_ok, can_split_face);
+  return predicate<Face>(mesh, face, out_ok, split_face_refusal);
 }
 
 hedge_status hedge_split_face(hedge_mesh* mesh, uint32_t face, float x, float y, float z,
@@ -96,7 +103,7 @@ hedge_status hedge_can_cut_face(const hedge_mesh* mesh, uint32_t halfedge0, uint
     auto object = find_mesh(mesh);
     const Halfedge h0 = live_halfedge(object->mesh, halfedge0);
     const Halfedge h1 = live_halfedge(object->mesh, halfedge1);
-    need(out_ok, "out_ok") = can_cut_face(object->mesh, h0, h1) ? 1 : 0;
+    need(out_ok, "out_ok") = allowed(cut_face_refusal(object->mesh, h0, h1));
   });
 }
 
@@ -134,7 +141,7 @@ hedge_status hedge_can_add_face(const hedge_mesh* mesh, const uint32_t* vertices
     need_array(vertices, count, "vertices");
     const std::vector<Vertex> corners =
         binding::live_vertices(object->mesh, std::span<const std::uint32_t>(vertices, count));
-    need(out_ok, "out_ok") = can_add_face(object->mesh, corners) ? 1 : 0;
+    need(out_ok, "out_ok") = allowed(add_face_refusal(object->mesh, corners));
   });
 }
 
@@ -168,7 +175,7 @@ hedge_status hedge_add_face_with_attributes(hedge_mesh* mesh, const uint32_t* ve
 }
 
 hedge_status hedge_can_remove_face(const hedge_mesh* mesh, uint32_t face, int32_t* out_ok) {
-  return predicate<Face>(mesh, face, out_ok, can_remove_face);
+  return predicate<Face>(mesh, face, out_ok, remove_face_refusal);
 }
 
 hedge_status hedge_remove_face(hedge_mesh* mesh, uint32_t face) {
@@ -176,7 +183,7 @@ hedge_status hedge_remove_face(hedge_mesh* mesh, uint32_t face) {
 }
 
 hedge_status hedge_can_remove_vertex(const hedge_mesh* mesh, uint32_t vertex, int32_t* out_ok) {
-  return predicate<Vertex>(mesh, vertex, out_ok, can_remove_vertex);
+  return predicate<Vertex>(mesh, vertex, out_ok, remove_vertex_refusal);
 }
 
 hedge_status hedge_remove_vertex(hedge_mesh* mesh, uint32_t vertex) {
@@ -184,7 +191,7 @@ hedge_status hedge_remove_vertex(hedge_mesh* mesh, uint32_t vertex) {
 }
 
 hedge_status hedge_can_fill_hole(const hedge_mesh* mesh, uint32_t halfedge, int32_t* out_ok) {
-  return predicate<Halfedge>(mesh, halfedge, out_ok, can_fill_hole);
+  return predicate<Halfedge>(mesh, halfedge, out_ok, fill_hole_refusal);
 }
 
 hedge_status hedge_fill_hole(hedge_mesh* mesh, uint32_t halfedge, uint32_t* buffer, uint32_t capacity,

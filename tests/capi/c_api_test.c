@@ -692,7 +692,7 @@ static void test_refusal_codes(void) {
   CHECK_STATUS(hedge_collapse(tet, 0, &(uint32_t){0}), HEDGE_ERROR_REFUSED);
   CHECK(hedge_last_refusal_code() != HEDGE_REFUSAL_NONE);
   CHECK(strcmp(hedge_refusal_text(hedge_last_refusal_code()), hedge_last_refusal()) == 0);
-  CHECK_OK(hedge_can_flip(tet, 0, &(int32_t){0}));
+  CHECK_OK(hedge_can_split_edge(tet, 0, &(int32_t){0}));
   CHECK(hedge_last_refusal_code() == HEDGE_REFUSAL_NONE);
   uint32_t problems = 1;
   CHECK_OK(hedge_mesh_validate(tet, &problems));

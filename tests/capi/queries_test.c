@@ -194,8 +194,12 @@ void test_tetrahedron(void) {
       CHECK(strcmp(hedge_last_refusal(),
                    "an end is an interior vertex of valence 3 (the flip would leave it with 2)") == 0);
     }
-    CHECK_OK(hedge_can_flip(tet, 0, &(int32_t){0}));
+    CHECK_OK(hedge_mesh_validate(tet, &(uint32_t){1}));
     CHECK(strcmp(hedge_last_refusal(), "") == 0); /* cleared by a call that was not refused */
+    CHECK_OK(hedge_can_flip(tet, 0, &(int32_t){1}));
+    CHECK(hedge_last_refusal_code() == HEDGE_REFUSAL_FLIP_VALENCE_THREE); /* a predicate's "no" says why */
+    CHECK_OK(hedge_can_split_edge(tet, 0, &(int32_t){0}));
+    CHECK(hedge_last_refusal_code() == HEDGE_REFUSAL_NONE); /* and its "yes" clears it */
     copy_positions(tet, after, 12);
     CHECK(memcmp(before, after, sizeof before) == 0);
     for (uint32_t f = 0; f < 4; ++f) CHECK(face_is(tet, f, kTetTriangles + 3 * f, 3));

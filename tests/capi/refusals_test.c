@@ -111,6 +111,19 @@ static hedge_status run_edit(hedge_mesh* mesh, const Edit* e) {
   exit(1);
 }
 
+/* The predicate of an edit (hedge_can_*): its status, *ok its answer. */
+static hedge_status run_predicate(hedge_mesh* mesh, const Edit* e, int32_t* ok) {
+  const uint32_t a = e->elements[0], b = e->elements[1];
+  if (strcmp(e->name, "flip") == 0) return hedge_can_flip(mesh, a, ok);
+  if (strcmp(e->name, "collapse") == 0) return hedge_can_collapse(mesh, a, ok);
+  if (strcmp(e->name, "split_edge") == 0) return hedge_can_split_edge(mesh, a, ok);
+  if (strcmp(e->name, "split_face") == 0) return hedge_can_split_face(mesh, a, ok);
+  if (strcmp(e->name, "cut_face") == 0) return hedge_can_cut_face(mesh, a, b, ok);
+  if (strcmp(e->name, "fill_hole") == 0) return hedge_can_fill_hole(mesh, a, ok);
+  fprintf(stderr, "unknown edit %s\n", e->name);
+  exit(1);
+}
+
 static void run_case(char* line) {
   char* fields[6];
   char* rest = line;
@@ -136,7 +149,20 @@ static void run_case(char* line) {
       }
     }
   }
+  /* The predicate first (the edit may change the mesh): it answers 0 exactly when the edit is
+   * refused, and leaves the same refusal code behind. */
+  int32_t ok = -1;
+  const hedge_status asked = run_predicate(mesh, &checked, &ok);
+  const hedge_refusal predicted = hedge_last_refusal_code();
   const hedge_status status = run_edit(mesh, &checked);
+  if (status == HEDGE_OK || status == HEDGE_ERROR_REFUSED) {
+    if (asked != HEDGE_OK || ok != (status == HEDGE_OK) || predicted != hedge_last_refusal_code()) {
+      fprintf(stderr, "case %s | %s: the predicate answered %d with code %s, the edit %s with code %s\n",
+              fields[0], fields[2], (int)ok, hedge_refusal_name(predicted), hedge_status_string(status),
+              hedge_refusal_name(hedge_last_refusal_code()));
+      ++g_failures;
+    }
+  }
   const char* text = status == HEDGE_ERROR_REFUSED ? hedge_last_refusal() : hedge_last_error();
   const char* code = hedge_refusal_name(hedge_last_refusal_code());
   if (strcmp(hedge_status_string(status), fields[3]) != 0 || strcmp(text, fields[4]) != 0 ||

@@ -13,6 +13,15 @@ namespace Hedge
         static Face FaceOf(int status, uint raw) { return new Face(Status.Checked(status, raw)); }
         static Edge EdgeOf(int status, uint raw) { return new Edge(Status.Checked(status, raw)); }
         static bool IsSet(int status, int flag) { return Status.Checked(status, flag) != 0; }
+
+        // A predicate's answer; a "no" also sets LastRefusalCode to why that edit would be refused, a "yes"
+        // clears it, so the reason read after a predicate is always this edit's.
+        bool Allowed(int status, int ok)
+        {
+            Status.Check(status);
+            LastRefusalCode = ok != 0 ? RefusalCode.None : (RefusalCode)Native.hedge_last_refusal_code();
+            return ok != 0;
+        }
         // The count of a copy into a caller array; a null array asks for the count only.
         static int Filled(int status, Array result, ulong count) { return Status.Filled(status, result == null, count); }
 
@@ -133,24 +142,24 @@ namespace Hedge
         // Predicates. True if the edit of the same name would be carried out.
         // =========================================================================================
 
-        public bool CanSplitEdge(Edge e) { return IsSet(Native.hedge_can_split_edge(id, e.Raw, out int ok), ok); }
+        public bool CanSplitEdge(Edge e) { return Allowed(Native.hedge_can_split_edge(id, e.Raw, out int ok), ok); }
 
         /// <summary>True if collapsing h keeps the mesh a valid manifold (link condition, no valence
         /// below 3 left, no tetrahedron collapsed, ...). O(valence).</summary>
-        public bool CanCollapse(HalfEdge h) { return IsSet(Native.hedge_can_collapse(id, h.Raw, out int ok), ok); }
+        public bool CanCollapse(HalfEdge h) { return Allowed(Native.hedge_can_collapse(id, h.Raw, out int ok), ok); }
 
         /// <summary>True if the edge is interior between two triangles and can be turned. O(valence).</summary>
-        public bool CanFlip(Edge e) { return IsSet(Native.hedge_can_flip(id, e.Raw, out int ok), ok); }
+        public bool CanFlip(Edge e) { return Allowed(Native.hedge_can_flip(id, e.Raw, out int ok), ok); }
 
         public bool CanFlip(HalfEdge h) { return CanFlip(h.Edge); }
 
-        public bool CanSplitFace(Face f) { return IsSet(Native.hedge_can_split_face(id, f.Raw, out int ok), ok); }
+        public bool CanSplitFace(Face f) { return Allowed(Native.hedge_can_split_face(id, f.Raw, out int ok), ok); }
 
         /// <summary>True if the face of h0 and h1 can be cut along a new edge from the target of h0 to the
         /// target of h1: both in the same live face, the targets not adjacent in it and not joined yet.</summary>
         public bool CanCutFace(HalfEdge h0, HalfEdge h1)
         {
-            return IsSet(Native.hedge_can_cut_face(id, h0.Raw, h1.Raw, out int ok), ok);
+            return Allowed(Native.hedge_can_cut_face(id, h0.Raw, h1.Raw, out int ok), ok);
         }
 
         /// <summary>True if a face with the first count corners (counter-clockwise) can be added while every
@@ -158,18 +167,18 @@ namespace Hedge
         public bool CanAddFace(Vertex[] corners, int count)
         {
             CheckSpan(corners, count, "corners");
-            return IsSet(Native.hedge_can_add_face(id, corners, (uint)count, out int ok), ok);
+            return Allowed(Native.hedge_can_add_face(id, corners, (uint)count, out int ok), ok);
         }
 
         public bool CanAddFace(Vertex[] corners) { return CanAddFace(corners, LengthOf(corners)); }
 
         public bool CanAddFace(Vertex a, Vertex b, Vertex c) { return CanAddFace(Triangle(a, b, c), 3); }
 
-        public bool CanRemoveFace(Face f) { return IsSet(Native.hedge_can_remove_face(id, f.Raw, out int ok), ok); }
+        public bool CanRemoveFace(Face f) { return Allowed(Native.hedge_can_remove_face(id, f.Raw, out int ok), ok); }
 
-        public bool CanRemoveVertex(Vertex v) { return IsSet(Native.hedge_can_remove_vertex(id, v.Raw, out int ok), ok); }
+        public bool CanRemoveVertex(Vertex v) { return Allowed(Native.hedge_can_remove_vertex(id, v.Raw, out int ok), ok); }
 
         /// <summary>True if h is a boundary half-edge whose loop has at least 3 edges.</summary>
-        public bool CanFillHole(HalfEdge h) { return IsSet(Native.hedge_can_fill_hole(id, h.Raw, out int ok), ok); }
+        public bool CanFillHole(HalfEdge h) { return Allowed(Native.hedge_can_fill_hole(id, h.Raw, out int ok), ok); }
     }
 }

@@ -110,9 +110,20 @@ namespace Hedge
     public sealed partial class HalfEdgeMesh
     {
         /// <summary>Why the last edit of this mesh was refused, as a code; <see cref="RefusalCode.None"/> if the
-        /// last edit was done. Every edit (split, collapse, flip, cut, add, remove, fill) sets it. Reading it, and
-        /// refusing, allocate nothing: check it every frame.</summary>
-        public RefusalCode LastRefusalCode { get; private set; }
+        /// last edit was done. Every edit (split, collapse, flip, cut, add, remove, fill) sets it, and so does
+        /// every predicate (CanFlip, CanCollapse, ...): after one that answered false, it says why that edit
+        /// would be refused. Reading it, and refusing, allocate nothing: check it every frame.</summary>
+        /// <exception cref="ObjectDisposedException">The mesh was disposed.</exception>
+        public RefusalCode LastRefusalCode
+        {
+            get
+            {
+                IntPtr live = id;  // throws for a disposed mesh
+                return lastRefusalCode;
+            }
+            private set { lastRefusalCode = value; }
+        }
+        RefusalCode lastRefusalCode;
 
         /// <summary>Why the last edit of this mesh was refused: the text of <see cref="LastRefusalCode"/>
         /// (e.g. "it would pull a seam vertex off its seam"), as hedge_last_refusal() gave it right after the

@@ -109,3 +109,21 @@ test('lastRefusal is cleared by an edit that is done', () => {
   assert.deepEqual(square.validate(), []);
   square.dispose();
 });
+
+test('a predicate sets lastRefusal to the reason of its own edit', () => {
+  const square = hedge.fromFile(new TextEncoder().encode(meshes.get('square')), 'square.obj');
+  const inner = element(square, 'h:0>1');
+  assert.throws(
+    () => square.fillHole(inner),
+    (e) => e.kind === 'refused',
+  );
+  assert.equal(square.canFlip(square.halfedge(inner).edge), false);
+  assert.equal(square.lastRefusal, square.refusal('flip', square.halfedge(inner).edge));
+  assert.notEqual(square.lastRefusal, 'the half-edge is not on a boundary (it has a face)');
+  assert.equal(square.canSplitEdge(0), true);
+  assert.equal(square.lastRefusal, null);
+  assert.equal(square.canFillHole(inner), false);
+  assert.equal(square.lastRefusal, 'the half-edge is not on a boundary (it has a face)');
+  assert.deepEqual(square.validate(), []);
+  square.dispose();
+});

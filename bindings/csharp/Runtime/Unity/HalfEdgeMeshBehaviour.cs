@@ -84,13 +84,25 @@ namespace Hedge.Unity
         }
 
         /// <summary>Opens a transaction: edits until <see cref="EndEdit"/> are synced and uploaded once.</summary>
-        public void BeginEdit() { Buffers.BeginTransaction(); }
+        /// <exception cref="InvalidOperationException">No mesh is built (before Awake or Build, or after
+        /// OnDestroy).</exception>
+        public void BeginEdit() { Built("BeginEdit").BeginTransaction(); }
 
         /// <summary>Closes the transaction and uploads what it changed.</summary>
+        /// <exception cref="InvalidOperationException">No mesh is built.</exception>
         public void EndEdit()
         {
-            Buffers.CommitTransaction();
+            Built("EndEdit").CommitTransaction();
             UploadPending();
+        }
+
+        // The buffers of the built mesh, for a call that needs one: a clear error instead of a null reference.
+        RenderBuffers Built(string call)
+        {
+            if (Buffers == null)
+                throw new InvalidOperationException(call + ": the component has no mesh (it is built in Awake or by " +
+                                                    "Build(mesh), and released in OnDestroy)");
+            return Buffers;
         }
 
         /// <summary>Syncs the edits made since the last upload and uploads everything rewritten since then, by

@@ -57,6 +57,30 @@ namespace Hedge.Tests
             }
         }
 
+        // A predicate sets the code too: after a refused edit, a predicate that answers false gives its own
+        // edit's reason (not the earlier one), and one that answers true clears it. A disposed mesh has none.
+        [Test]
+        static void PredicatesSetTheCode()
+        {
+            HalfEdgeMesh mesh = Meshes.Pyramid();
+            HalfEdge open = mesh.FindHalfEdge(new Vertex(0), new Vertex(1));
+            Check.Equal(0, mesh.FillHole(open), "a half-edge with a face");
+            Check.Equal(RefusalCode.FillHoleNotBoundary, mesh.LastRefusalCode);
+            Check.False(mesh.CanFlip(open), "a boundary edge");
+            Check.Equal(RefusalCode.FlipBoundaryEdge, mesh.LastRefusalCode, "the flip's reason, not the fill's");
+            Check.Equal(RefusalCode.FlipBoundaryEdge.Text(), mesh.LastRefusal);
+            Check.False(mesh.CanCutFace(open, open));
+            Check.Equal(RefusalCode.CutSameHalfedge, mesh.LastRefusalCode);
+            Check.True(mesh.CanSplitEdge(open.Edge));
+            Check.Equal(RefusalCode.None, mesh.LastRefusalCode, "cleared by a predicate that allows its edit");
+            Check.False(mesh.CanFillHole(open));
+            Check.Equal(RefusalCode.FillHoleNotBoundary, mesh.LastRefusalCode);
+            Check.Valid(mesh);
+            mesh.Dispose();
+            Check.ThrowsType<ObjectDisposedException>(() => { RefusalCode c = mesh.LastRefusalCode; }, "disposed");
+            Check.ThrowsType<ObjectDisposedException>(() => { string t = mesh.LastRefusal; }, "disposed");
+        }
+
         // A game checks refusals every frame: refusing and reading the code allocate nothing, and the text
         // allocates once per code, not per edit.
         [Test]

@@ -123,6 +123,25 @@ namespace Hedge.Tests
             }
         }
 
+        // Edits on a component whose mesh was released (after OnDestroy): a clear error, not a null reference.
+        [Test]
+        static void EditsAfterReleaseAreAClearError()
+        {
+            var go = new GameObject();
+            go.AddComponent<MeshFilter>().sharedMesh = SourceMesh();
+            HalfEdgeMeshBehaviour b = go.AddComponent<HalfEdgeMeshBehaviour>();
+            b.BeginEdit();
+            Check.True(b.HalfEdgeMesh.SplitFace(new Face(0), 0.4f, 0.3f, 0.2f).IsValid);
+            b.EndEdit();
+            Check.Valid(b.HalfEdgeMesh);
+            typeof(HalfEdgeMeshBehaviour).GetMethod("OnDestroy", BindingFlags.Instance | BindingFlags.NonPublic)
+                .Invoke(b, null);
+            var e = Check.ThrowsType<InvalidOperationException>(() => b.BeginEdit(), "after OnDestroy");
+            Check.True(e.Message.Contains("BeginEdit") && e.Message.Contains("no mesh"), e.Message);
+            Check.ThrowsType<InvalidOperationException>(() => b.EndEdit(), "after OnDestroy");
+            b.Upload();  // LateUpdate's call: nothing to upload, no error
+        }
+
         [Test]
         static void BuildEditUpload()
         {
