@@ -58,7 +58,7 @@ double WasmMesh::collapse(std::uint32_t h, val point) {
   return guarded([&] {
     // The point is checked before the collapse, which cannot be undone.
     const std::optional<Vec3> p = optional_vec3_from_js(point, "collapse: the point");
-    if (p) binding::need_point(*p);
+    if (p) binding::need_point(*p, "collapse");
     const Vertex v = binding::collapse(s_->mesh, h);
     if (p) s_->mesh.set_position(v, *p);
     return double(v.idx());

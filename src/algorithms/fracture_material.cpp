@@ -46,8 +46,8 @@ double fracture_material_radius(const FractureMaterial& material) {
 
 FractureMaterial fracture_material_at_radius(FractureMaterial material, double radius) {
   if (!std::isfinite(radius) || radius <= 0)
-    throw InvalidInputError("fracture_material_at_radius: radius must be finite and positive, is " +
-                            number(radius));
+    throw InvalidInputError("the break radius must be finite and positive, is " + number(radius) +
+                            " (fracture_material_at_radius)");
   if (material.rings.empty())
     throw InvalidInputError("fracture_material_at_radius: material '" + material.name +
                             "' has no ring, so no radius to scale");

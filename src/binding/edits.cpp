@@ -90,10 +90,10 @@ const char* refusal(const SurfaceMesh& m, Edit edit, std::span<const std::uint32
   return nullptr;
 }
 
-Vec3 need_point(const Vec3& p) {
+Vec3 need_point(const Vec3& p, const char* what) {
   if (!is_finite(p)) {
-    char text[96];
-    std::snprintf(text, sizeof text, "point (%g, %g, %g) is not finite", double(p.x), double(p.y),
+    char text[160];
+    std::snprintf(text, sizeof text, "%s: point (%g, %g, %g) is not finite", what, double(p.x), double(p.y),
                   double(p.z));
     fail(HEDGE_ERROR_INVALID_ARGUMENT, text);
   }
@@ -102,8 +102,8 @@ Vec3 need_point(const Vec3& p) {
 
 Vertex split_edge(SurfaceMesh& m, std::uint32_t edge, const std::optional<Vec3>& point) {
   const Edge e = allowed<Edge>(m, Edit::split_edge, edge);
-  const Vec3 p =
-      point ? need_point(*point) : (m.position(m.vertex(e, 0)) + m.position(m.vertex(e, 1))) * 0.5f;
+  const Vec3 p = point ? need_point(*point, "split_edge")
+                       : (m.position(m.vertex(e, 0)) + m.position(m.vertex(e, 1))) * 0.5f;
   return done(hedge::split_edge(m, e, p), Edit::split_edge);
 }
 
@@ -117,7 +117,7 @@ Edge flip(SurfaceMesh& m, std::uint32_t edge) {
 
 Vertex split_face(SurfaceMesh& m, std::uint32_t face, const std::optional<Vec3>& point) {
   const Face f = allowed<Face>(m, Edit::split_face, face);
-  const Vec3 p = point ? need_point(*point) : face_centroid(m, f);
+  const Vec3 p = point ? need_point(*point, "split_face") : face_centroid(m, f);
   return done(hedge::split_face(m, f, p), Edit::split_face);
 }
 

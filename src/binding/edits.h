@@ -32,9 +32,9 @@ std::size_t edit_arity(Edit edit) noexcept;
 //! the edit's arity.
 const char* refusal(const SurfaceMesh& m, Edit edit, std::span<const std::uint32_t> elements);
 
-//! A finite point. \throw BindingError (HEDGE_ERROR_INVALID_ARGUMENT) "point (x, y, z) is not
-//! finite" otherwise.
-Vec3 need_point(const Vec3& p);
+//! A finite point, given to the call `what` names. \throw BindingError (HEDGE_ERROR_INVALID_ARGUMENT)
+//! "WHAT: point (x, y, z) is not finite" otherwise.
+Vec3 need_point(const Vec3& p, const char* what);
 
 //! Splits `edge` at `point` (none: its midpoint). \return the new vertex.
 Vertex split_edge(SurfaceMesh& m, std::uint32_t edge, const std::optional<Vec3>& point);

@@ -311,7 +311,7 @@ hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z,
     f.hulls = need_bool(o.hulls, "hulls");
     f.inner_submesh = o.inner_submesh;
     f.relative_thickness = o.relative_thickness;
-    const Vec3 impact = need_point(x, y, z);
+    const Vec3 impact = need_point(x, y, z, "fracture impact");
     // The library's limits first (rings, break points in all, each field): an illegal material is
     // HEDGE_ERROR_INVALID_ARGUMENT naming the field, before any buffer size is looked at. Within
     // the limits the count fits 32 bits.

@@ -160,7 +160,9 @@ void set_error(const binding::Failure& failure) noexcept {
   }
 }
 
-Vec3 need_point(float x, float y, float z) { return binding::need_point(Vec3{x, y, z}); }
+Vec3 need_point(float x, float y, float z, const char* what) {
+  return binding::need_point(Vec3{x, y, z}, what);
+}
 
 bool need_bool(std::int32_t value, const char* name) {
   if (value != 0 && value != 1)
@@ -367,7 +369,7 @@ hedge_status hedge_set_vertex_position(hedge_mesh* mesh, uint32_t vertex, float 
   return guard([&] {
     auto object = find_mesh(mesh);
     const Vertex v = live_vertex(object->mesh, vertex);
-    object->mesh.set_position(v, need_point(x, y, z));
+    object->mesh.set_position(v, need_point(x, y, z, "set_vertex_position"));
   });
 }
 

@@ -124,7 +124,7 @@ void need_array(const T* p, std::uint64_t count, const char* name) {
     fail(HEDGE_ERROR_INVALID_ARGUMENT,
          std::string(name) + " is NULL but its count is " + std::to_string(count));
 }
-Vec3 need_point(float x, float y, float z);
+Vec3 need_point(float x, float y, float z, const char* what);
 bool need_bool(std::int32_t value, const char* name);
 std::uint32_t to_u32(std::size_t n, const char* what);
 

@@ -26,7 +26,10 @@ TEST(BindingEdits, ARefusedEditSaysWhatAndWhyAndChangesNothing) {
   EXPECT_EQ(r.message, "flip of edge " + std::to_string(e) + " refused: " + flip_refusal(m, boundary) +
                            "; nothing was changed");
   EXPECT_EQ(error_of([&] { collapse(m, 999); }).status, HEDGE_ERROR_BAD_HANDLE);
-  EXPECT_EQ(error_of([&] { split_edge(m, e, Vec3{NAN, 0, 0}); }).message, "point (nan, 0, 0) is not finite");
+  EXPECT_EQ(error_of([&] {
+              split_edge(m, e, Vec3{NAN, 0, 0});
+            }).message,
+            "split_edge: point (nan, 0, 0) is not finite");
   EXPECT_EQ(m.n_faces(), 8u);
   EXPECT_TRUE(m.validate().empty());
 }
