@@ -13,26 +13,7 @@ namespace Hedge.Tests
     public static class BreakOnClickTests
     {
         // An n x n plate of unit quads in Unity's winding (front faces toward -z, where the camera is).
-        static UnityEngine.Mesh Plate(int n)
-        {
-            var m = new UnityEngine.Mesh();
-            m.name = "plate";
-            var v = new Vector3[(n + 1) * (n + 1)];
-            for (int y = 0; y <= n; ++y)
-                for (int x = 0; x <= n; ++x) v[y * (n + 1) + x] = new Vector3(x, y, 0);
-            var t = new int[6 * n * n];
-            int k = 0;
-            for (int y = 0; y < n; ++y)
-                for (int x = 0; x < n; ++x)
-                {
-                    int a = y * (n + 1) + x, b = a + 1, c = a + n + 2, d = a + n + 1;
-                    t[k++] = a; t[k++] = c; t[k++] = b;
-                    t[k++] = a; t[k++] = d; t[k++] = c;
-                }
-            m.vertices = v;
-            m.triangles = t;
-            return m;
-        }
+        static UnityEngine.Mesh Plate(int n) { return StandinMeshes.Grid(n, "plate"); }
 
         // R diag(m) R^T from a float quaternion and moments, row-major.
         static double[] Tensor(Quaternion q, Vector3 m)

@@ -17,28 +17,11 @@ namespace Hedge.Tests
         // A flat n x n grid of unit squares at z = 0 as Unity arrays, with texcoords.
         static UnityEngine.Mesh Grid(int n)
         {
-            var m = new UnityEngine.Mesh();
-            m.name = "grid";
-            var v = new Vector3[(n + 1) * (n + 1)];
+            UnityEngine.Mesh m = StandinMeshes.Grid(n, "grid");
+            Vector3[] v = m.vertices;
             var uv = new Vector2[v.Length];
-            for (int y = 0; y <= n; ++y)
-                for (int x = 0; x <= n; ++x)
-                {
-                    v[y * (n + 1) + x] = new Vector3(x, y, 0);
-                    uv[y * (n + 1) + x] = new Vector2((float)x / n, (float)y / n);
-                }
-            var t = new int[6 * n * n];
-            int k = 0;
-            for (int y = 0; y < n; ++y)
-                for (int x = 0; x < n; ++x)
-                {
-                    int a = y * (n + 1) + x, b = a + 1, c = a + n + 2, d = a + n + 1;
-                    t[k++] = a; t[k++] = c; t[k++] = b; // Unity's clockwise winding seen from -z
-                    t[k++] = a; t[k++] = d; t[k++] = c;
-                }
-            m.vertices = v;
+            for (int i = 0; i < v.Length; ++i) uv[i] = new Vector2(v[i].x / n, v[i].y / n);
             m.uv = uv;
-            m.triangles = t;
             return m;
         }
 

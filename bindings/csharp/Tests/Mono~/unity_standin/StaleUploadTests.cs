@@ -12,26 +12,7 @@ namespace Hedge.Tests
     public static class StaleUploadTests
     {
         // A flat n x n grid of unit squares at z = 0, in Unity's winding.
-        static UnityEngine.Mesh Grid(int n)
-        {
-            var m = new UnityEngine.Mesh();
-            m.name = "grid";
-            var v = new Vector3[(n + 1) * (n + 1)];
-            for (int y = 0; y <= n; ++y)
-                for (int x = 0; x <= n; ++x) v[y * (n + 1) + x] = new Vector3(x, y, 0);
-            var t = new int[6 * n * n];
-            int k = 0;
-            for (int y = 0; y < n; ++y)
-                for (int x = 0; x < n; ++x)
-                {
-                    int a = y * (n + 1) + x, b = a + 1, c = a + n + 2, d = a + n + 1;
-                    t[k++] = a; t[k++] = c; t[k++] = b;
-                    t[k++] = a; t[k++] = d; t[k++] = c;
-                }
-            m.vertices = v;
-            m.triangles = t;
-            return m;
-        }
+        static UnityEngine.Mesh Grid(int n) { return StandinMeshes.Grid(n, "grid"); }
 
         // The stand-in mesh holds the positions and indices of the render buffers.
         static void CheckCurrent(RenderBuffers buffers, UnityEngine.Mesh mesh, string what)

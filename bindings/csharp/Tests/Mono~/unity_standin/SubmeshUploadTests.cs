@@ -18,18 +18,12 @@ namespace Hedge.Tests
         {
             var m = new UnityEngine.Mesh();
             m.name = "two materials";
-            var v = new Vector3[(n + 1) * (n + 1)];
-            for (int y = 0; y <= n; ++y)
-                for (int x = 0; x <= n; ++x) v[y * (n + 1) + x] = new Vector3(x, y, 0);
+            Vector3[] v = StandinMeshes.GridPositions(n);
             var left = new System.Collections.Generic.List<int>();
             var right = new System.Collections.Generic.List<int>();
             for (int y = 0; y < n; ++y)
                 for (int x = 0; x < n; ++x)
-                {
-                    int a = y * (n + 1) + x, b = a + 1, c = a + n + 2, d = a + n + 1;
-                    var t = 2 * x < n ? left : right;
-                    t.AddRange(new[] { a, c, b, a, d, c });
-                }
+                    (2 * x < n ? left : right).AddRange(StandinMeshes.SquareTriangles(n, x, y));
             m.vertices = v;
             m.subMeshCount = 2;
             m.SetTriangles(left.ToArray(), 0);

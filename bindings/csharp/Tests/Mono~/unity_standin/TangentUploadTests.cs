@@ -37,15 +37,7 @@ namespace Hedge.Tests
                     tangents[i] = new Vector4(1, 0, 0, -1);
                     c[i] = new Color(x / (float)n, 0, 1, 1);
                 }
-            var t = new int[6 * n * n];
-            int k = 0;
-            for (int y = 0; y < n; ++y)
-                for (int x = 0; x < n; ++x)
-                {
-                    int a = y * (n + 1) + x, b = a + 1, cc = a + n + 2, d = a + n + 1;
-                    t[k++] = a; t[k++] = cc; t[k++] = b;
-                    t[k++] = a; t[k++] = d; t[k++] = cc;
-                }
+            int[] t = StandinMeshes.GridTriangles(n);
             m.vertices = v;
             m.normals = normals;
             m.uv = uv;
