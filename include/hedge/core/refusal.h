@@ -144,10 +144,10 @@ constexpr bool refusals_in_code_order() {
 static_assert(detail::refusals_in_code_order(), "kRefusals: entry i must have code i");
 
 //! The refusal's text (static storage), what the *_refusal() functions return for it; "" for none.
-constexpr const char* refusal_text(Refusal r) noexcept {
-  const auto i = static_cast<std::int32_t>(r);
-  return i >= 0 && i < kRefusalCount ? kRefusals[i].text : "";
-}
+//! Defined out of line on purpose: every text pointer then comes from the one table object, so a
+//! text can be told by its address in every build (string literals are not merged across
+//! translation units under AddressSanitizer, nor promised to be by the language).
+const char* refusal_text(Refusal r) noexcept;
 
 //! The code of a text a *_refusal() function returned: Refusal::none for null or "". O(table) with
 //! no allocation (the texts are compared as pointers first, then as strings).
