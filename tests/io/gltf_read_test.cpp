@@ -256,6 +256,12 @@ TEST(GltfRead, MalformedFilesSayWhatAndWhere) {
                  "mesh 0 primitive 0 indices: accessor 1: index 9 (element 1) is out of range (POSITION has "
                  "3 vertices)");
   }
+  for (const int first : {5, 9}) {
+    Triangle t;  // two indices out of range: the first is named
+    t.buffer[38] = static_cast<unsigned char>(first);
+    t.buffer[40] = static_cast<unsigned char>(14 - first);
+    expect_error(t.text(), "index " + std::to_string(first) + " (element 1) is out of range");
+  }
   {
     Triangle t;
     t.doc["meshes"][0]["primitives"][0]["attributes"] = {{"NORMAL", 0}};
