@@ -46,10 +46,11 @@ struct ForwardRef {
   std::uint64_t face = 0;
 };
 
-// The sizes of the pools (vertices, texture coordinates, normals) once the whole file is read;
-// kUnchecked for an attribute that is dropped (see the top of the file).
+// An index this large is out of range of any pool (they are indexed by 32 bits).
 constexpr std::uint64_t kMaxIndex = std::numeric_limits<std::uint32_t>::max();
 
+// The sizes of the pools (vertices, texture coordinates, normals) once the whole file is read;
+// kUnchecked for an attribute that is dropped (see the top of the file).
 struct PoolSizes {
   static constexpr std::uint64_t kUnchecked = std::numeric_limits<std::uint64_t>::max();
   std::uint64_t positions = kUnchecked, texcoords = kUnchecked, normals = kUnchecked;
@@ -289,7 +290,10 @@ class ObjReader {
       if (f.line == 0 || (f.index < pool.count && f.index < kMaxIndex)) continue;
       // The second reading stops at the first index out of range (see ObjReader); should it not,
       // the largest index is out of range all the same.
-      if (final_ == nullptr) ObjReader(data_, name_, &sizes).read();
+      if (final_ == nullptr) {
+        mesh_ = IndexedMesh{};  // freed before the second reading allocates its own
+        ObjReader(data_, name_, &sizes).read();
+      }
       fail_at(f.line, out_of_range(f.face, pool.what, f.index, pool.count));
     }
     if (sizes.texcoords == PoolSizes::kUnchecked) {
