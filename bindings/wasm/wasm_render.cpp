@@ -143,6 +143,28 @@ class WasmRenderBuffers {
     });
   }
 
+  //! Each submesh's part of the buffers as of the last sync (RenderBuffers::submesh), in submesh
+  //! order: [{indexStart, indexCount, firstVertex, vertexCount, empty}] (index ranges include spare
+  //! room; empty: no live triangle since the last full build, or only ones at the origin).
+  val submeshes() const {
+    return guarded([&] {
+      const RenderBuffers& r = sync();
+      val out = val::array();
+      for (std::size_t i = 0; i < r.submesh_count(); ++i) {
+        const SubmeshRange range = r.submesh(i);
+        val s = val::object();
+        s.set("indexStart", double(range.index_start));
+        s.set("indexCount", double(range.index_count));
+        s.set("firstVertex", double(range.first_vertex));
+        s.set("vertexCount", double(range.vertex_count));
+        // No live triangle since the last full build: the box of its triangles stayed empty.
+        s.set("empty", range.min == Vec3{0, 0, 0} && range.max == Vec3{0, 0, 0});
+        out.set(i, s);
+      }
+      return out;
+    });
+  }
+
   val do_sync() {
     return guarded([&] { return sync_result_to_js(sync().sync()); });
   }
@@ -185,6 +207,7 @@ EMSCRIPTEN_BINDINGS(hedge_render_buffers) {
       .function("indicesView", &WasmRenderBuffers::indices_view)
       .function("vertexSourceView", &WasmRenderBuffers::vertex_source_view)
       .function("faceTriangles", &WasmRenderBuffers::face_triangles)
+      .function("submeshes", &WasmRenderBuffers::submeshes)
       .function("sync", &WasmRenderBuffers::do_sync)
       .function("rebuild", &WasmRenderBuffers::rebuild)
       .function("compact", &WasmRenderBuffers::compact)
