@@ -162,6 +162,10 @@ const ARGUMENTS = {
   },
   RenderBuffers: {
     faceTriangles: [e('f')],
+    pickTriangles: [
+      ['origin', VEC3],
+      ['direction', VEC3],
+    ],
     dirtyViews: [['result', { ...OBJECT, fields: { vertexRanges: ARRAY, indexRanges: ARRAY } }]],
   },
 };

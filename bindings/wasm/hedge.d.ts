@@ -392,6 +392,18 @@ export class RenderBuffers {
   faceTriangles(f: number): [number, number];
   /** As of the last sync, in submesh order. */
   submeshes(): SubmeshRange[];
+  /** The first face along a ray and its triangle slots [first, first + count) as of the last sync;
+   *  null for a miss. */
+  pickTriangles(
+    origin: Vec3,
+    direction: Vec3,
+  ): {
+    face: number;
+    t: number;
+    point: [number, number, number];
+    first: number;
+    count: number;
+  } | null;
   sync(): SyncResult;
   dirtyViews(result: SyncResult): { vertices: Float32Array[]; indices: Uint32Array[] };
   rebuild(): SyncResult;

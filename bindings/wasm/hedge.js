@@ -663,6 +663,33 @@ export class RenderBuffers extends NativeOwner {
     return this._call('faceTriangles', f);
   }
 
+  /** The first face along a ray (through the mesh's picking tree, as Mesh.pick) and the triangle
+   *  slots it owns in these buffers as of the last sync: null if the ray misses, else {face, t,
+   *  point, first, count} (triangles [first, first + count) of the index buffer; count 0 for a face
+   *  made since the last sync). One call per ray: what a raycast against the uploaded triangles
+   *  needs (the three.js adapter's hedgeRaycast). */
+  pickTriangles(origin, direction) {
+    const face = this._n().pickTriangles(
+      +origin[0],
+      +origin[1],
+      +origin[2],
+      +direction[0],
+      +direction[1],
+      +direction[2],
+    );
+    this.hedge._check(face);
+    if (face < 0) return null;
+    const f = this.hedge.module.HEAPF64;
+    const k = this.hedge._pick;
+    return {
+      face,
+      t: f[k + 1],
+      point: [f[k + 2], f[k + 3], f[k + 4]],
+      first: f[k + 5],
+      count: f[k + 6],
+    };
+  }
+
   /** Each submesh's (material's) part of the buffers as of the last sync, in submesh order:
    *  [{indexStart, indexCount, firstVertex, vertexCount, empty}]. A submesh's triangles lie in
    *  index entries [indexStart, indexStart + indexCount) (spare slots included, kept degenerate):

@@ -364,19 +364,14 @@ function materialOf(object, geometry, t) {
   return { material: undefined, materialIndex: 0 };
 }
 
-// The nearest hit of the local ray on face f's triangles in the geometry, as three.js's own
-// raycast computes it (its culling by the material's side included): {t, distance} or null.
-function hitFace(object, geometry, link, f, raycaster) {
-  let triangles;
-  try {
-    triangles = link.render.faceTriangles(f);
-  } catch {
-    return null; // a face the last sync has not seen
-  }
+// The nearest hit of the local ray on triangle slots [first, first + count) of the geometry, as
+// three.js's own raycast computes it (its culling by the material's side included):
+// {t, distance, materialIndex} with the point in _best, or null.
+function hitSlots(object, geometry, first, count, raycaster) {
   const index = geometry.index.array;
   const position = geometry.getAttribute('position');
   let best = null;
-  for (let t = triangles[0]; t < triangles[0] + triangles[1]; ++t) {
+  for (let t = first; t < first + count; ++t) {
     const { material, materialIndex } = materialOf(object, geometry, t);
     if (!material) continue;
     _a.fromBufferAttribute(position, index[3 * t]);
@@ -398,18 +393,23 @@ function hitFace(object, geometry, link, f, raycaster) {
   return best;
 }
 
-// The nearest hit (as hitFace) on the faces around the corner and across the edge nearest `hit`.
-function hitNeighbours(object, geometry, link, hit, raycaster) {
+// The nearest hit (as hitSlots) on the faces around the corner and across the edge nearest to
+// where the picking tree hit face `face`: a ray through an edge or a corner may pass three.js's
+// test on a neighbour of the face hedge found, not on that face.
+function hitNeighbours(object, geometry, link, face, raycaster) {
+  const hit = link.mesh.pick(_origin, _direction);
+  if (hit === null || hit.face !== face) return null;
   const faces = new Set([
     ...link.mesh.oneRing(hit.vertex).faces,
     ...link.mesh.edge(hit.edge).faces,
   ]);
-  faces.delete(hit.face);
+  faces.delete(face);
   faces.delete(-1);
   let best = null;
   let point = null;
   for (const f of faces) {
-    const h = hitFace(object, geometry, link, f, raycaster);
+    const [first, count] = link.render.faceTriangles(f);
+    const h = hitSlots(object, geometry, first, count, raycaster);
     if (h !== null && (best === null || h.distance < best.distance)) {
       best = h;
       point = _best.clone();
@@ -472,11 +472,10 @@ export function hedgeRaycast(raycaster, intersects) {
   // side) or it lies before `near`, the ray goes on from just past it.
   const scale = Math.max(geometry.boundingSphere?.radius ?? 1, 1e-30);
   for (let step = 0; step < 64; ++step) {
-    const hit = link.mesh.pick(_origin, _direction);
+    const hit = link.render.pickTriangles(_origin, _direction);
     if (hit === null) return;
-    let best = hitFace(this, geometry, link, hit.face, raycaster);
-    // A ray through an edge or a corner may pass three.js's test on a neighbour of the face hit.
-    if (best === null) best = hitNeighbours(this, geometry, link, hit, raycaster);
+    let best = hitSlots(this, geometry, hit.first, hit.count, raycaster);
+    if (best === null) best = hitNeighbours(this, geometry, link, hit.face, raycaster);
     if (best !== null) {
       intersects.push(intersection(this, geometry, best));
       return;

@@ -119,6 +119,26 @@ const hedgeCases = [
 ];
 const renderCases = [
   E('faceTriangles', [0], 0, 'f'),
+  [
+    'pickTriangles',
+    [
+      [0, 0, 1],
+      [0, 0, -1],
+    ],
+    0,
+    'origin',
+    NOT_POINT,
+  ],
+  [
+    'pickTriangles',
+    [
+      [0, 0, 1],
+      [0, 0, -1],
+    ],
+    1,
+    'direction',
+    NOT_POINT,
+  ],
   ['dirtyViews', [{}], 0, 'result', [null, undefined, 3]],
   ['dirtyViews', [{}], 0, 'result.vertexRanges', [{ indexRanges: [] }]],
 ];
