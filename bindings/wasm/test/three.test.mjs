@@ -9,7 +9,8 @@ import { HedgeError, hedge, sample, threeAdapter } from './support.mjs';
 const loaded = await threeAdapter();
 const skip = loaded ? false : 'three.js is not installed (npm ci in web/)';
 const { THREE, adapter } = loaded ?? {};
-const { fromBufferGeometry, toBufferGeometry, syncBufferGeometry, hedgeRaycast } = adapter ?? {};
+const { fromBufferGeometry, toBufferGeometry, syncBufferGeometry, hedgeRaycast, isHedgeGeometry } =
+  adapter ?? {};
 
 // The drawn triangles of a geometry, each as a canonical string of its material and its corners'
 // position, uv, normal and colour (rounded), sorted: what a renderer shows, whatever the vertex
@@ -329,6 +330,8 @@ test('hedgeRaycast hits what three.js hits, on every side, moved and after edits
     assert.equal(raycaster.intersectObject(object, false).length, 0);
     const plain = new THREE.Mesh(new THREE.BoxGeometry(), new THREE.MeshBasicMaterial());
     plain.raycast = hedgeRaycast;
+    assert.equal(isHedgeGeometry(plain.geometry), false);
+    assert.equal(isHedgeGeometry(geometry), true);
     plain.updateMatrixWorld(true);
     assert.equal(
       new THREE.Raycaster(new THREE.Vector3(0, 0, 5), new THREE.Vector3(0, 0, -1)).intersectObject(
@@ -338,6 +341,12 @@ test('hedgeRaycast hits what three.js hits, on every side, moved and after edits
     );
     assert.deepEqual(mesh.validate(), []);
     render.dispose();
+    // Without its RenderBuffers the geometry is three.js's again.
+    assert.equal(isHedgeGeometry(geometry), false);
+    assert.equal(raycaster.intersectObject(object, false).length, 0);
+    raycaster.far = Infinity;
+    object.material.side = THREE.DoubleSide;
+    assert.ok(raycaster.intersectObject(object, false).length >= 2, "three.js's raycast, all hits");
     mesh.dispose();
   }
 });
