@@ -236,6 +236,25 @@ export class Hedge {
     policy?: 'repair' | 'strict';
     weld?: 'none' | 'exact' | 'epsilon';
   }): Mesh;
+  /** An engine's arrays (a three.js BufferGeometry's): positions welded into vertices, the other
+   *  streams kept per corner, one submesh id in [0, 65535] per triangle ("f:submesh"). */
+  fromEngineStreams(streams: {
+    /** 3 floats a vertex. */
+    positions: Float32Array | number[];
+    /** 3 a triangle. */
+    indices: Uint32Array | number[];
+    /** 3 floats a vertex. */
+    normals?: Float32Array | number[] | null;
+    /** 2 floats a vertex. */
+    texcoords?: Float32Array | number[] | null;
+    /** 4 floats a vertex: r, g, b, a. */
+    colors?: Float32Array | number[] | null;
+    /** One per triangle. */
+    submeshes?: Int32Array | Uint32Array | number[] | null;
+    policy?: 'repair' | 'strict';
+    /** Default 'exact'. */
+    weld?: 'none' | 'exact' | 'epsilon';
+  }): Mesh;
   fromFile(bytes: Uint8Array | ArrayBuffer, name: string): Mesh;
   /** The thread setting; the module is single-threaded, so it changes nothing (n: integer >= 0). */
   setMaxThreads(n: number): void;
@@ -346,6 +365,18 @@ export interface SyncResult {
   full: boolean;
 }
 
+/** One submesh's (material's) part of the render buffers. */
+export interface SubmeshRange {
+  /** Its index entries [indexStart, indexStart + indexCount), spare (degenerate) slots included. */
+  indexStart: number;
+  indexCount: number;
+  /** The render vertices its entries refer to. */
+  firstVertex: number;
+  vertexCount: number;
+  /** No live triangle since the last full build (or only ones with every corner at the origin). */
+  empty: boolean;
+}
+
 export class RenderBuffers {
   readonly hedge: Hedge;
   dispose(): void;
@@ -359,6 +390,20 @@ export class RenderBuffers {
   readonly indices: Uint32Array;
   readonly vertexSource: Uint32Array;
   faceTriangles(f: number): [number, number];
+  /** As of the last sync, in submesh order. */
+  submeshes(): SubmeshRange[];
+  /** The first face along a ray and its triangle slots [first, first + count) as of the last sync;
+   *  null for a miss. */
+  pickTriangles(
+    origin: Vec3,
+    direction: Vec3,
+  ): {
+    face: number;
+    t: number;
+    point: [number, number, number];
+    first: number;
+    count: number;
+  } | null;
   sync(): SyncResult;
   dirtyViews(result: SyncResult): { vertices: Float32Array[]; indices: Uint32Array[] };
   rebuild(): SyncResult;

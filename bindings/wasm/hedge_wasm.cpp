@@ -5,6 +5,7 @@
 //   wasm_edits.cpp   NativeMesh: local edits and whole-mesh algorithms
 //   wasm_fracture.cpp NativeMesh: fracture
 //   wasm_render.cpp  NativeRenderBuffers
+//   wasm_engine.cpp  meshFromEngineStreams (engine arrays with their attributes and submeshes)
 //   hedge_wasm.cpp   module-level functions and NativeMesh's registration
 // The binding sits on the binding core (src/binding/), as the C ABI does.
 #include <malloc.h>
