@@ -16,7 +16,9 @@ const compare = (a, b) => {
 
 /** Whether version (x.y.z) satisfies one comparator: >=1.2.3, <2, ^1.2, ~1.2.3, 1.x, 18, *. */
 function satisfiesComparator(version, comparator) {
-  const m = /^(>=|<=|>|<|=|\^|~)?\s*v?(\d+|[x*])(?:\.(\d+|[x*]))?(?:\.(\d+|[x*]))?$/i.exec(comparator);
+  const m = /^(>=|<=|>|<|=|\^|~)?\s*v?(\d+|[x*])(?:\.(\d+|[x*]))?(?:\.(\d+|[x*]))?$/i.exec(
+    comparator,
+  );
   if (!m) throw new Error(`cannot read the version comparator '${comparator}'`);
   const [, op = '', ...parts] = m;
   const given = parts.filter((p) => p !== undefined);
@@ -44,7 +46,10 @@ function satisfiesComparator(version, comparator) {
       return compare(v, low) >= 0 && compare(v, nextUp(Math.min(precise, 2) || 1)) < 0;
     default:
       if (precise === 0) return true;
-      return compare(v, low) >= 0 && (precise === 3 ? compare(v, low) === 0 : compare(v, nextUp(precise)) < 0);
+      return (
+        compare(v, low) >= 0 &&
+        (precise === 3 ? compare(v, low) === 0 : compare(v, nextUp(precise)) < 0)
+      );
   }
 }
 
@@ -83,19 +88,28 @@ test('the range reader reads npm ranges as npm does', () => {
     ['*', true],
   ];
   for (const [range, admits] of cases) assert.equal(satisfies('18.20.4', range), admits, range);
-  assert.throws(() => satisfies('18.20.4', 'latest'), /cannot read the version comparator 'latest'/);
+  assert.throws(
+    () => satisfies('18.20.4', 'latest'),
+    /cannot read the version comparator 'latest'/,
+  );
 });
 
 function lockEngines(path) {
   const lock = JSON.parse(readFileSync(new URL(path, root), 'utf8'));
   return Object.entries(lock.packages)
     .filter(([, info]) => info.engines?.node)
-    .map(([name, info]) => [`${path}: ${name || '(the project)'} ${info.version}`, info.engines.node]);
+    .map(([name, info]) => [
+      `${path}: ${name || '(the project)'} ${info.version}`,
+      info.engines.node,
+    ]);
 }
 
 test(`every npm package the project installs, and the package, admit node ${DEBIAN_NODE}`, () => {
   const pkg = JSON.parse(readFileSync(new URL('bindings/wasm/package.json', root), 'utf8'));
-  const entries = [['bindings/wasm/package.json', pkg.engines.node], ...lockEngines('web/package-lock.json')];
+  const entries = [
+    ['bindings/wasm/package.json', pkg.engines.node],
+    ...lockEngines('web/package-lock.json'),
+  ];
   const consumer = 'bindings/wasm/test/consumer/package-lock.json';
   if (existsSync(new URL(consumer, root))) entries.push(...lockEngines(consumer));
   const refused = entries.filter(([, range]) => !satisfies(DEBIAN_NODE, range));

@@ -1,0 +1,53 @@
+// The vite build (dist/) in headless chromium: serves it with vite's preview server, opens both
+// pages and compares what each computed; the single-file page must fetch no .wasm, the other must.
+// playwright-core comes from the playground's packages: HEDGE_REPO/web/node_modules. CHROMIUM
+// (default /usr/bin/chromium) is the browser.
+import assert from 'node:assert/strict';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { preview } from 'vite';
+
+const repo = process.env.HEDGE_REPO;
+assert.ok(repo, 'HEDGE_REPO must name the hedge checkout');
+const expected = JSON.parse(process.argv[2]);
+const { chromium } = await import(
+  pathToFileURL(join(repo, 'web/node_modules/playwright-core/index.mjs')).href
+);
+
+const server = await preview({ logLevel: 'warn', preview: { port: 0, host: '127.0.0.1' } });
+const base = server.resolvedUrls.local[0];
+const browser = await chromium.launch({
+  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+  headless: true,
+  args: ['--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking'],
+});
+try {
+  for (const [page_, wantsWasm] of [
+    ['index.html', true],
+    ['single.html', false],
+  ]) {
+    const page = await browser.newPage();
+    const problems = [];
+    const wasm = [];
+    page.on('console', (m) => m.type() === 'error' && problems.push(m.text()));
+    page.on('pageerror', (e) => problems.push(`uncaught: ${e.message}`));
+    page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
+    page.on('request', (r) => r.url().endsWith('.wasm') && wasm.push(r.url()));
+    page.on('response', (r) => r.status() >= 400 && problems.push(`${r.status()}: ${r.url()}`));
+    await page.goto(new URL(page_, base).href);
+    const text = await page.waitForFunction(
+      () => document.querySelector('#result').textContent || null,
+      null,
+      { timeout: 30000 },
+    );
+    const result = JSON.parse(await text.jsonValue());
+    assert.deepEqual(problems, [], `${page_}: console errors`);
+    assert.deepEqual(result, expected, `${page_}: what the page computed`);
+    assert.equal(wasm.length > 0, wantsWasm, `${page_}: .wasm requests: ${wasm.join(', ')}`);
+    console.log(`chromium: ${page_}: ${JSON.stringify(result)}; wasm fetched: ${wasm.length}`);
+    await page.close();
+  }
+} finally {
+  await browser.close();
+  await server.close();
+}

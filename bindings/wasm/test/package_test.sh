@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# The package as a web developer gets it: packs it (bindings/wasm/pack), installs the tarball into
+# a fresh project (consumer/, vite pinned by its lock file, from the npm registry), imports it under
+# node (ES module), bundles two pages with vite (hedge-mesh, and hedge-mesh/single with the wasm
+# embedded) and loads, picks and edits a mesh in each in headless chromium (playwright-core from
+# web/node_modules). Run by ./test after the WebAssembly node tests.
+# HEDGE_WASM_SKIP_BUILD=1 packs the module already built.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+root=$(cd "$here/../../.." && pwd)
+work=$(mktemp -d "${TMPDIR:-/tmp}/hedge-package-test.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+HEDGE_NPM_OUT=$work/npm "$root/bindings/wasm/pack" >/dev/null
+tarball=$(echo "$work"/npm/hedge-mesh-*.tgz)
+echo "packed: $(basename "$tarball") ($(wc -c <"$tarball") bytes)"
+
+mkdir "$work/project"
+cp "$here"/consumer/* "$work/project/"
+cd "$work/project"
+npm ci --no-audit --no-fund --loglevel=error
+npm install --no-save --no-audit --no-fund --loglevel=error "$tarball"
+
+# What scenario.js must compute everywhere: two triangles, one split into two more.
+version=$(node -p 'require("./node_modules/hedge-mesh/package.json").version')
+expected='{"version":"'$version'","hitFace":0,"faces":4,"problems":[],"partialSync":true,"globals":["undefined","undefined"]}'
+node node_check.mjs "$expected"
+npx vite build --logLevel warn
+ls dist/assets | grep -q '\.wasm$' || {
+  echo "package_test: vite emitted no .wasm asset" >&2
+  exit 1
+}
+HEDGE_REPO=$root node browser_check.mjs "$expected"
+echo "package test: passed"
