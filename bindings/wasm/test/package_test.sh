@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The package as a web developer gets it: packs it (bindings/wasm/pack), installs the tarball into
 # a fresh project (consumer/, vite pinned by its lock file, from the npm registry), imports it under
-# node (ES module), bundles two pages with vite (hedge-mesh, and hedge-mesh/single with the wasm
-# embedded) and loads, picks and edits a mesh in each in headless chromium (playwright-core from
+# node (ES module), type-checks it with TypeScript as browser code and as node code, bundles three
+# pages with vite (hedge-mesh; hedge-mesh/single, the wasm embedded; hedge-mesh in a module worker)
+# and loads, picks and edits a mesh in each in headless chromium (playwright-core from
 # web/node_modules). Run by ./test after the WebAssembly node tests.
 # HEDGE_WASM_SKIP_BUILD=1 packs the module already built.
 set -euo pipefail
@@ -25,6 +26,9 @@ npm install --no-save --no-audit --no-fund --loglevel=error "$tarball"
 version=$(node -p 'require("./node_modules/hedge-mesh/package.json").version')
 expected='{"version":"'$version'","hitFace":0,"faces":4,"problems":[],"partialSync":true,"globals":["undefined","undefined"]}'
 node node_check.mjs "$expected"
+# The types: a browser build sees hedge.d.ts (no loadHedgeNode), node code sees node.d.ts.
+npx tsc -p tsconfig.bundler.json
+npx tsc -p tsconfig.node.json
 npx vite build --logLevel warn
 ls dist/assets | grep -q '\.wasm$' || {
   echo "package_test: vite emitted no .wasm asset" >&2

@@ -1,5 +1,6 @@
-// The vite build (dist/) in headless chromium: serves it with vite's preview server, opens both
-// pages and compares what each computed; the single-file page must fetch no .wasm, the other must.
+// The vite build (dist/) in headless chromium: serves it with vite's preview server, opens the
+// three pages and compares what each computed; the single-file page must fetch no .wasm, the
+// others must.
 // playwright-core comes from the playground's packages: HEDGE_REPO/web/node_modules. CHROMIUM
 // (default /usr/bin/chromium) is the browser.
 import assert from 'node:assert/strict';
@@ -25,6 +26,7 @@ try {
   for (const [page_, wantsWasm] of [
     ['index.html', true],
     ['single.html', false],
+    ['worker.html', true],
   ]) {
     const page = await browser.newPage();
     const problems = [];
