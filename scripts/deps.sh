@@ -79,7 +79,8 @@ hedge_web_npm() {
   root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
   web=$root/web
   if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
-    echo "deps.sh: node (18 or newer) and npm are needed for web/; install them first (Debian 12: apt-get install nodejs npm)" >&2
+    echo "deps.sh: node (18 or newer) and npm are needed for web/; install them first" \
+      "(Debian 12: apt-get install nodejs npm)" >&2
     return 1
   fi
   local major
