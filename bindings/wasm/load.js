@@ -32,7 +32,8 @@ export async function instantiate(factory, options = {}) {
   if (!isNode() || factory.wasmEmbedded || options.wasmBinary || options.instantiateWasm)
     return factory(options);
   const located = options.locateFile ? options.locateFile(WASM_FILE, '') : WASM_FILE;
-  const url = new URL(located, import.meta.url);
+  // webpackIgnore: webpack would otherwise bundle every file of this folder for this URL.
+  const url = new URL(/* webpackIgnore: true */ located, import.meta.url);
   const { readFile } = await import(/* webpackIgnore: true */ /* @vite-ignore */ FS_MODULE);
   let wasmBinary;
   try {

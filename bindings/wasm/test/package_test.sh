@@ -3,8 +3,8 @@
 # a fresh project (consumer/, vite pinned by its lock file, from the npm registry), imports it under
 # node (ES module), type-checks it with TypeScript as browser code and as node code, bundles three
 # pages with vite (hedge-mesh; hedge-mesh/single, the wasm embedded; hedge-mesh in a module worker)
-# and loads, picks and edits a mesh in each in headless chromium (playwright-core from
-# web/node_modules). Run by ./test after the WebAssembly node tests.
+# and the first once more with webpack, and loads, picks and edits a mesh in each in headless
+# chromium (playwright-core from web/node_modules). Run by ./test after the WebAssembly node tests.
 # HEDGE_WASM_SKIP_BUILD=1 packs the module already built.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -34,5 +34,15 @@ ls dist/assets | grep -q '\.wasm$' || {
   echo "package_test: vite emitted no .wasm asset" >&2
   exit 1
 }
+npx webpack --stats errors-warnings >webpack.log 2>&1 || {
+  cat webpack.log >&2
+  exit 1
+}
+if grep -q 'WARNING' webpack.log; then
+  cat webpack.log >&2
+  echo "package_test: webpack warned" >&2
+  exit 1
+fi
+cp index.html dist/webpack/index.html
 HEDGE_REPO=$root node browser_check.mjs "$expected"
 echo "package test: passed"

@@ -1,6 +1,6 @@
-// The vite build (dist/) in headless chromium: serves it with vite's preview server, opens the
-// three pages and compares what each computed; the single-file page must fetch no .wasm, the
-// others must.
+// The vite build (dist/) and the webpack build (dist/webpack/) in headless chromium: serves them
+// with vite's preview server, opens the four pages and compares what each computed; the
+// single-file page must fetch no .wasm, the others must.
 // playwright-core comes from the playground's packages: HEDGE_REPO/web/node_modules. CHROMIUM
 // (default /usr/bin/chromium) is the browser.
 import assert from 'node:assert/strict';
@@ -27,6 +27,7 @@ try {
     ['index.html', true],
     ['single.html', false],
     ['worker.html', true],
+    ['webpack/index.html', true],
   ]) {
     const page = await browser.newPage();
     const problems = [];
