@@ -4,8 +4,9 @@
 // hedge.mjs is built for the web and workers only (ENVIRONMENT=web,worker in CMakeLists.txt): its
 // node code reads the CommonJS globals require and __dirname, which an ES module under node does not
 // have. In browsers and workers the module fetches hedge.wasm itself, from new URL('hedge.wasm',
-// import.meta.url): the form vite, webpack and esbuild recognise and emit as an asset. Under node,
-// which cannot fetch a file: URL, the bytes are read here with node:fs and passed as wasmBinary.
+// import.meta.url): the form vite and webpack recognise and emit as an asset (esbuild leaves it
+// as it is). Under node, which cannot fetch a file: URL, the bytes are read here with node:fs and
+// passed as wasmBinary.
 // node:fs is imported dynamically through a name held in a variable, with the comments that tell
 // webpack and vite to leave the import alone, so a browser bundle never tries to include it.
 
