@@ -1,4 +1,5 @@
-// Types of the hedge JS API (hedge.js). Element indices are numbers; -1 means "none".
+// Types of the hedge JS API (hedge.js, and hedge.single.js: the same API). Element indices are
+// numbers; -1 means "none". The node entry's types (node.d.ts) add loadHedgeNode.
 
 /** The C ABI's status codes (hedge_status), one to one. */
 export type ErrorKind =
@@ -32,13 +33,16 @@ export type FracturePreset = 'glass' | 'stone' | 'wood' | 'ice';
 export const fractureMaterials: readonly FracturePreset[];
 
 export interface LoadOptions {
-  /** The bytes of hedge.wasm, when they are at hand (node, tests). */
+  /** The bytes of hedge.wasm, when they are at hand. */
   wasmBinary?: ArrayBuffer | Uint8Array;
-  /** Where to fetch hedge.wasm from (a bundler's asset URL). */
+  /** Where to fetch hedge.wasm from (a bundler's asset URL); under node, a path or a file: URL to
+   *  read it from. Without it the wasm beside hedge.mjs is used. */
   locateFile?: (name: string, prefix: string) => string;
   [option: string]: unknown;
 }
 
+/** Loads the module: in node (ES module), a browser page, a module worker or a bundle; sets no
+ *  globals. The same in the single-file variant (the package's "./single"), whose wasm is embedded. */
 export function loadHedge(options?: LoadOptions): Promise<Hedge>;
 
 export interface BuildReport {
@@ -411,9 +415,6 @@ export class RenderBuffers {
   begin(): void;
   commit(): SyncResult;
 }
-
-/** node only (node.js): loadHedge with the wasm read from disk. */
-export function loadHedgeNode(options?: LoadOptions): Promise<Hedge>;
 
 // ---- Deprecated names (kept for one release) ----------------------------------------------------
 // The names of the previous release; the next release removes them.

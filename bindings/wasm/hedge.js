@@ -19,6 +19,7 @@
 // have length 0). Take views right before use; taking one costs no copy.
 import createHedge from './hedge.mjs';
 
+import { instantiate } from './load.js';
 import { customMaterial, installArgumentChecks, point3 } from './arguments.js';
 
 /** An error raised by hedge. kind names the C ABI's status (hedge_status), one to one:
@@ -45,10 +46,11 @@ const MATERIALS = ['glass', 'stone', 'wood', 'ice'];
 /** The fracture presets, for menus. */
 export const fractureMaterials = Object.freeze([...MATERIALS]);
 
-/** Loads the module. options go to the emscripten factory: wasmBinary (the bytes of hedge.wasm)
- *  or locateFile(name) (where to fetch it from), as a bundler or a page needs. */
+/** Loads the module, in node, a browser page, a module worker or a bundle (load.js); sets no
+ *  globals. options go to the emscripten factory: wasmBinary (the bytes of hedge.wasm) or
+ *  locateFile(name) (where to fetch it from; under node, a path or a file: URL to read). */
 export async function loadHedge(options = {}) {
-  const module = await createHedge(options);
+  const module = await instantiate(createHedge, options);
   return new Hedge(module);
 }
 

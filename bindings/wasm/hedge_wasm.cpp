@@ -31,7 +31,8 @@ double heap_bytes_in_use() {
   return double(info.uordblks);
 }
 
-std::string version() { return "0.1.0"; }
+// The project version (CMakeLists.txt), which the npm package shares (package.json).
+std::string version() { return HEDGE_VERSION_STRING; }
 
 }  // namespace
 }  // namespace hedge::wasm

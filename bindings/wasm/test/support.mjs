@@ -7,9 +7,11 @@ const dist = process.env.HEDGE_WASM_DIST
   ? new URL(`file://${process.env.HEDGE_WASM_DIST.replace(/\/?$/, '/')}`)
   : new URL('build/wasm/dist/', root);
 
+/** The folder of the built package (HEDGE_WASM_DIST, or build/wasm/dist). */
+export { dist };
 const api = await import(new URL('node.js', dist).href);
-export const { HedgeError, loadHedgeNode } = api;
-export const hedge = await loadHedgeNode();
+export const { HedgeError, loadHedge } = api;
+export const hedge = await loadHedge();
 
 /** hedge's three.js adapter (three.js of the build) and three.js itself, from the playground's npm
  *  packages (web/node_modules, installed by `npm ci` in web/): {THREE, adapter}, or null when three
