@@ -329,6 +329,10 @@ export class Mesh {
     targetVertices?: number;
     maxError?: number;
   }): DecimateResult;
+  /** Corner normals ("h:normal"), hard where faces meet at more than creaseDegrees (0..180,
+   *  default 45), smooth elsewhere. A RenderBuffers made afterwards with normals 'auto' draws them
+   *  and keeps them up around edits; an existing one shows them after rebuild(). */
+  computeCornerNormals(creaseDegrees?: number): void;
   /** Breaks the mesh at impact; the broken faces leave it as shards (see FractureOptions). */
   fracture(impact: Vec3, options?: FractureOptions): FractureResult;
   toArrays(options?: { triangulate?: boolean }): Arrays;

@@ -494,6 +494,14 @@ export class Mesh extends NativeOwner {
     this._call('smooth', method, iterations, lambda, mu, fixBoundary);
   }
 
+  /** Corner normals (the half-edge property "h:normal"): smooth across edges where the faces meet
+   *  at less than creaseDegrees (0..180; 0 flat, 180 smooth), hard edges elsewhere, as CAD models
+   *  need. A RenderBuffers made afterwards with normals 'auto' draws them and keeps them up around
+   *  each edit (an existing one shows them after rebuild()). */
+  computeCornerNormals(creaseDegrees = 45) {
+    this._call('computeCornerNormals', creaseDegrees);
+  }
+
   /** Quadric edge-collapse decimation of a triangle mesh. ratio: the fraction of faces to keep
    *  (or targetFaces / targetVertices as counts); maxError: stop before a collapse moving the
    *  surface further than this. Renumbers elements. Returns {vertices, faces, collapses, maxError}. */
