@@ -83,6 +83,14 @@ export class PageMesh {
     return [...(notes.length ? [`repairs: ${notes.join(', ')}`] : []), ...shown].join('; ');
   }
 
+  //! A triangle mesh of the same vertices: each polygon cut along its diagonals (ear clipping, so
+  //! concave faces stay inside their outline), built anew. For the edits that need triangles
+  //! (Loop, sqrt(3), decimate). The caller disposes this one.
+  triangulated() {
+    const { positions, indices } = this.mesh.toArrays({ triangulate: true });
+    return PageMesh.fromBuffers(this.hedge, { positions, indices, weld: 'none' });
+  }
+
   counts() {
     return this.mesh.counts();
   }

@@ -2,6 +2,14 @@
 // rewrote, and the stats panel (counts, validity, the last operation and upload).
 import { $, fmt, ms, state, clearError } from './page.js';
 
+// The file the mesh on screen came from.
+const file = { name: '' };
+
+//! The name the mesh on screen was loaded under.
+export function meshName() {
+  return file.name;
+}
+
 function showStats() {
   const s = state.current;
   if (!s) return;
@@ -40,16 +48,21 @@ function showUpload(upload) {
   });
 }
 
-// Replaces the current mesh by `next` (already loaded) and uploads it whole.
-export function adopt(next, name, loadMs) {
+// Replaces the current mesh by `next` (already loaded) and uploads it whole. `operation`: what made
+// it, for the stats ('load NAME' by default); `sameFile`: it is a rebuild of the current mesh
+// (triangulated), which keeps the file's name and warnings.
+export function adopt(next, name, loadMs, { operation = `load ${name}`, sameFile = false } = {}) {
   const old = state.current;
   state.current = next;
   if (old) old.dispose();
   state.hover = null;
   state.viewer.clearOverlay();
   $('records').textContent = 'Hover the mesh.';
+  if (!sameFile) {
+    file.name = name;
+    $('mesh-notes').textContent = next.loadNotes();
+  }
   $('mesh-name').textContent = name;
-  $('mesh-notes').textContent = next.loadNotes();
   const before = state.viewer.meter.snapshot();
   const isEdge = next.edgeTest();
   const bytes = state.viewer.mesh.rebuild(next.mesh, next.render, isEdge);
@@ -57,7 +70,7 @@ export function adopt(next, name, loadMs) {
   state.viewer.render();
   state.lastUpload = { bytes, full: true, ranges: 1, gl: state.viewer.meter.since(before) };
   showUpload(state.lastUpload);
-  showOperation(`load ${name}`, loadMs);
+  showOperation(operation, loadMs);
   showStats();
   document.body.dataset.mesh = name;
 }

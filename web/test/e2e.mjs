@@ -486,6 +486,49 @@ test('a malformed file shows an error and the page keeps working', async ({ page
   check(await page.isHidden('#error'), 'the error stays after a good file');
 });
 
+// A refusal of a control below the fold is shown where the user looks, and offers the way out.
+test('a refusal below the fold shows in view and offers to triangulate', async ({ page }) => {
+  await page.setViewportSize({ width: 1280, height: 800 });
+  await loadSample(page, 'spot_control_mesh.obj');
+  const polygons = await counts(page);
+  // Down to the Break and Picking controls, as a user does, then Loop (still in sight).
+  await page.locator('#pick-bench').scrollIntoViewIfNeeded();
+  const scrolled = await page.evaluate(() => document.getElementById('panel').scrollTop);
+  check(scrolled > 200, `the panel did not scroll at 1280x800 (scrollTop ${scrolled})`);
+  await page.click('#subdivide-loop');
+  await page.waitForSelector('#error', { state: 'visible', timeout: 5000 });
+  const refusal = await page.textContent('#error-text');
+  check(refusal.includes('triangulate first'), `the Loop refusal says why: ${refusal}`);
+  const box = await page.locator('#error').boundingBox();
+  check(
+    box.y >= 0 && box.y + box.height <= 800 && box.x >= 0 && box.x + box.width <= 1280,
+    `the refusal is outside the 1280x800 viewport: ${JSON.stringify(box)}`,
+  );
+  await page.screenshot({ path: join(outDir, 'refusal_in_view.png') });
+  const offer = page.locator('#error-action');
+  check(await offer.isVisible(), 'the refusal offers no way out');
+  checkEqual((await offer.textContent()).trim(), 'Triangulate', 'the way out offered');
+  await offer.click();
+  await page.waitForFunction(() => Number(document.body.dataset.edits || 0) >= 1);
+  check(await page.isHidden('#error'), 'the refusal stays after triangulating');
+  const triangles = await counts(page);
+  checkEqual(triangles.vertices, polygons.vertices, 'triangulating keeps the vertices');
+  check(
+    await page.evaluate(() => window.playground.state.current.mesh.isTriangleMesh()),
+    'the mesh is not a triangle mesh after triangulating',
+  );
+  checkEqual(triangles.faces, 2 * triangles.vertices - 4, 'triangles of a closed genus-0 mesh');
+  checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity after triangulating');
+  await page.click('#subdivide-loop');
+  await page.waitForFunction(() => Number(document.body.dataset.edits || 0) >= 2);
+  check(
+    await page.isHidden('#error'),
+    `Loop after triangulating: ${await page.textContent('#error-text')}`,
+  );
+  checkEqual((await counts(page)).faces, 4 * triangles.faces, 'faces after Loop');
+  checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity after Loop');
+});
+
 test('picking: 500 rays per frame on 93,696 triangles', async ({ page, log }) => {
   await page.selectOption('#pick-size', '2');
   await page.click('#pick-bench');
