@@ -60,27 +60,32 @@ export class PageMesh {
     this.mesh = null;
   }
 
-  //! What loading repaired and the reader's warnings, in a line ('' when there is nothing to say).
-  loadNotes() {
+  //! What loading found wrong with the file and what it only noted: {warnings, notes}, lists of
+  //! lines. Warnings: the reader's own (a face dropped, the file may be truncated, ...) and the
+  //! repairs that mean the file was not a clean surface (faces dropped or reoriented, vertices and
+  //! edges split). Notes: welding and isolated vertices, which well-formed files have too (an STL
+  //! file's corners are welded into vertices).
+  fileReport() {
     const report = this.mesh.buildReport();
-    const notes = [];
-    const labels = {
-      weldedVertices: 'welded vertices',
+    const warningLabels = {
       degenerateFaces: 'degenerate faces dropped',
-      repeatedCorners: 'repeated corners',
+      repeatedCorners: 'repeated corners removed',
       reorientedFaces: 'faces reoriented',
       nonManifoldEdges: 'non-manifold edges split',
       nonManifoldVertices: 'non-manifold vertices split',
       duplicatedVertices: 'vertices duplicated',
-      isolatedVertices: 'isolated vertices',
     };
-    for (const [key, label] of Object.entries(labels))
-      if (report[key]) notes.push(`${report[key]} ${label}`);
-    const warnings = report.warnings || [];
-    const shown = warnings.slice(0, 3);
-    if (warnings.length > shown.length)
-      shown.push(`and ${warnings.length - shown.length} more warnings`);
-    return [...(notes.length ? [`repairs: ${notes.join(', ')}`] : []), ...shown].join('; ');
+    const noteLabels = { weldedVertices: 'welded vertices', isolatedVertices: 'isolated vertices' };
+    const listed = (labels) =>
+      Object.entries(labels)
+        .filter(([key]) => report[key])
+        .map(([key, label]) => `${report[key].toLocaleString('en-US')} ${label}`);
+    const repairs = listed(warningLabels);
+    const warnings = [...(report.warnings || [])];
+    if (warnings.length > 3) warnings.splice(3, warnings.length, `and ${warnings.length - 3} more`);
+    if (repairs.length) warnings.push(`repaired: ${repairs.join(', ')}`);
+    const notes = listed(noteLabels);
+    return { warnings, notes: notes.length ? [`repairs: ${notes.join(', ')}`] : [] };
   }
 
   //! A triangle mesh of the same vertices: each polygon cut along its diagonals (ear clipping, so

@@ -1,9 +1,10 @@
 // The mesh on screen: adopting a loaded mesh, applying an edit and uploading the ranges it
-// rewrote, and the stats panel (counts, validity, the last operation and upload).
+// rewrote, and the stats panel (counts, validity, the last operation and upload), and what the
+// file's reader warned about.
 import { $, fmt, ms, state, clearError } from './page.js';
 
-// The file the mesh on screen came from.
-const file = { name: '' };
+// The file the mesh on screen came from: {name, warnings, notes} (PageMesh.fileReport()).
+const file = { name: '', warnings: [], notes: [] };
 
 //! The name the mesh on screen was loaded under.
 export function meshName() {
@@ -17,11 +18,21 @@ function showStats() {
   $('stat-v').textContent = fmt(c.vertices);
   $('stat-e').textContent = fmt(c.edges);
   $('stat-f').textContent = fmt(c.faces);
+  // validate() checks the half-edge structure, which loading makes consistent whatever the file
+  // held: the file's warnings say what it had wrong, so a consistent structure built from a file
+  // with warnings is not shown as plainly fine.
   const problems = s.problems();
   const valid = $('stat-valid');
-  valid.textContent =
-    problems.length === 0 ? 'valid' : `${problems.length} problem(s): ${problems[0]}`;
-  valid.className = problems.length === 0 ? 'ok' : 'bad';
+  const warned = file.warnings.length > 0;
+  if (problems.length > 0) {
+    valid.textContent = `${problems.length} problem(s): ${problems[0]}`;
+    valid.className = 'bad';
+  } else {
+    valid.textContent = warned
+      ? 'half-edge structure valid; the file was not (see its warnings)'
+      : 'half-edge structure valid';
+    valid.className = warned ? 'warn' : 'ok';
+  }
   document.body.dataset.counts = `${c.vertices},${c.edges},${c.faces}`;
   document.body.dataset.valid = problems.length === 0 ? '1' : '0';
 }
@@ -48,6 +59,21 @@ function showUpload(upload) {
   });
 }
 
+// The file's warnings next to its name, in the warning colour; its notes below in grey.
+function showFileReport() {
+  const list = $('mesh-warnings');
+  list.replaceChildren(
+    ...file.warnings.map((text) => {
+      const item = document.createElement('li');
+      item.textContent = text;
+      return item;
+    }),
+  );
+  list.hidden = file.warnings.length === 0;
+  $('mesh-notes').textContent = file.notes.join('; ');
+  document.body.dataset.fileWarnings = String(file.warnings.length);
+}
+
 // Replaces the current mesh by `next` (already loaded) and uploads it whole. `operation`: what made
 // it, for the stats ('load NAME' by default); `sameFile`: it is a rebuild of the current mesh
 // (triangulated), which keeps the file's name and warnings.
@@ -58,11 +84,9 @@ export function adopt(next, name, loadMs, { operation = `load ${name}`, sameFile
   state.hover = null;
   state.viewer.clearOverlay();
   $('records').textContent = 'Hover the mesh.';
-  if (!sameFile) {
-    file.name = name;
-    $('mesh-notes').textContent = next.loadNotes();
-  }
+  if (!sameFile) Object.assign(file, { name, ...next.fileReport() });
   $('mesh-name').textContent = name;
+  showFileReport();
   const before = state.viewer.meter.snapshot();
   const isEdge = next.edgeTest();
   const bytes = state.viewer.mesh.rebuild(next.mesh, next.render, isEdge);

@@ -8,7 +8,7 @@
 // HEDGE_WASM_DIR (default build/wasm/dist), HEDGE_E2E_OUT (default build/output/web-e2e),
 // CHROMIUM (default /usr/bin/chromium).
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -459,7 +459,7 @@ test('a malformed file shows an error and the page keeps working', async ({ page
     timeout: 5000,
   });
   checkEqual((await counts(page)).faces, 1, 'faces of short.obj');
-  const notes = await page.textContent('#mesh-notes');
+  const notes = await page.textContent('#mesh-warnings');
   check(notes.includes('short.obj:6'), `the warning does not name line 6: ${notes}`);
   await loadSample(page, 'spot_triangulated.obj');
 
@@ -527,6 +527,46 @@ test('a refusal below the fold shows in view and offers to triangulate', async (
   );
   checkEqual((await counts(page)).faces, 4 * triangles.faces, 'faces after Loop');
   checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity after Loop');
+});
+
+// A file cut short loads what it holds, and the page says the file was not fine.
+test('a truncated file shows its warnings as warnings', async ({ page }) => {
+  checkEqual(
+    (await page.textContent('#stat-valid')).trim(),
+    'half-edge structure valid',
+    'a clean sample',
+  );
+  checkEqual(await page.getAttribute('#stat-valid', 'class'), 'ok', 'class of a clean sample');
+  check(await page.isHidden('#mesh-warnings'), 'a clean sample shows warnings');
+  const text = readFileSync(join(repoDir, 'data', 'spot_triangulated.obj'), 'utf8');
+  await dropFile(page, 'spot_cut.obj', text.slice(0, Math.floor(text.length * 0.6)));
+  await page.waitForFunction(() => document.body.dataset.mesh === 'spot_cut.obj', null, {
+    timeout: 5000,
+  });
+  const warnings = page.locator('#mesh-warnings');
+  check(await warnings.isVisible(), 'the truncated file shows no warnings');
+  const shown = await warnings.textContent();
+  check(/may be truncated/.test(shown), `the warnings do not say truncated: ${shown}`);
+  check(
+    /non-manifold vertices split/.test(shown),
+    `the warnings omit the split vertices: ${shown}`,
+  );
+  const colour = await warnings.evaluate((e) => getComputedStyle(e).backgroundColor);
+  checkEqual(colour, 'rgb(255, 244, 214)', 'background of the warnings');
+  const validity = (await page.textContent('#stat-valid')).trim();
+  check(
+    validity.startsWith('half-edge structure valid') && validity !== 'half-edge structure valid',
+    `the structure line does not say the file was not valid: ${validity}`,
+  );
+  checkEqual(
+    await page.getAttribute('#stat-valid', 'class'),
+    'warn',
+    'class of the structure line',
+  );
+  await page.screenshot({ path: join(outDir, 'truncated_file_warnings.png') });
+  await loadSample(page, 'anchor.off');
+  check(await page.isHidden('#mesh-warnings'), 'the warnings stay after a clean sample');
+  checkEqual(await page.getAttribute('#stat-valid', 'class'), 'ok', 'class after a clean sample');
 });
 
 test('picking: 500 rays per frame on 93,696 triangles', async ({ page, log }) => {
@@ -617,7 +657,11 @@ test('break: a strike on the plate makes shards that fall and settle on the grou
     '1',
     'the plate after the strike is valid',
   );
-  check((await page.textContent('#stat-valid')) === 'valid', 'the stats panel says valid');
+  checkEqual(
+    await page.textContent('#stat-valid'),
+    'half-edge structure valid',
+    'the stats panel after the strike',
+  );
   checkPartialUpload(await lastUpload(page), 'strike');
   await checkGpuCopy(page, 'strike');
   checkEqual(
