@@ -755,6 +755,20 @@ test('break: a strike on a 3D object', async ({ page }) => {
   }
 });
 
+test('break: a strike on the loaded mesh', async ({ page }) => {
+  await loadSample(page, 'bob_small.ply');
+  const before = await counts(page);
+  await setupBreak(page, 'current');
+  checkEqual(await page.getAttribute('body', 'data-mesh'), 'bob_small.ply', 'the mesh broken');
+  checkEqual(JSON.stringify(await counts(page)), JSON.stringify(before), 'the copy set up');
+  const centre = await page.evaluate(() => window.playground.visibleFaceCentre({ largest: true }));
+  check(centre !== null, 'no visible face of bob');
+  const stats = await strikeAtPixel(page, centre.x, centre.y);
+  check(stats.shards >= 2, `${stats.shards} shards`);
+  check((await counts(page)).faces < before.faces, 'the strike broke no face off');
+  checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'bob after the strike is valid');
+});
+
 test('break: 25 glass strikes on the 100k-triangle plate, timed', async ({ page, log }) => {
   await setupBreak(page, 'plate');
   await page.selectOption('#break-material', 'glass');
