@@ -151,6 +151,7 @@ function wireInput() {
   $('error-close').addEventListener('click', clearError);
   $('load-sample').addEventListener('click', () => {
     const name = $('sample').value;
+    if (!name) return; // the entry naming a loaded file
     guard(`loading ${name}`, () => loadSample(name));
   });
   $('show-wire').addEventListener('change', (e) => viewer.setWireframe(e.target.checked));

@@ -74,6 +74,27 @@ function showFileReport() {
   document.body.dataset.fileWarnings = String(file.warnings.length);
 }
 
+// The sample menu shows what is loaded: its sample, else a disabled entry naming the mesh.
+function showInSampleMenu(name) {
+  const menu = $('sample');
+  let fileEntry = menu.querySelector('option[data-file]');
+  const sample = [...menu.options].find((o) => !o.dataset.file && o.value === name);
+  if (sample) {
+    if (fileEntry) fileEntry.remove();
+    menu.value = sample.value;
+    return;
+  }
+  if (!fileEntry) {
+    fileEntry = document.createElement('option');
+    fileEntry.dataset.file = '1';
+    fileEntry.disabled = true;
+    fileEntry.value = '';
+    menu.prepend(fileEntry);
+  }
+  fileEntry.textContent = `loaded: ${name}`;
+  menu.value = '';
+}
+
 // Replaces the current mesh by `next` (already loaded) and uploads it whole. `operation`: what made
 // it, for the stats ('load NAME' by default); `sameFile`: it is a rebuild of the current mesh
 // (triangulated), which keeps the file's name and warnings.
@@ -87,6 +108,10 @@ export function adopt(next, name, loadMs, { operation = `load ${name}`, sameFile
   if (!sameFile) Object.assign(file, { name, ...next.fileReport() });
   $('mesh-name').textContent = name;
   showFileReport();
+  showInSampleMenu(name);
+  // A picking measurement was of the mesh before.
+  $('stat-pick').textContent = '-';
+  delete document.body.dataset.pick;
   const before = state.viewer.meter.snapshot();
   const isEdge = next.edgeTest();
   const bytes = state.viewer.mesh.rebuild(next.mesh, next.render, isEdge);

@@ -569,6 +569,35 @@ test('a truncated file shows its warnings as warnings', async ({ page }) => {
   checkEqual(await page.getAttribute('#stat-valid', 'class'), 'ok', 'class after a clean sample');
 });
 
+test('the page follows the loaded mesh: sample menu, picking result, drop hint', async ({
+  page,
+}) => {
+  check(/glTF/.test(await page.textContent('#panel')), 'the drop hint omits glTF');
+  await loadSample(page, 'anchor.off');
+  checkEqual(await page.inputValue('#sample'), 'anchor.off', 'sample menu after loading anchor');
+  await page.selectOption('#pick-size', '0');
+  await page.click('#pick-bench');
+  await page.waitForFunction(() => document.body.dataset.pick, null, { timeout: 60000 });
+  check((await page.textContent('#stat-pick')).trim() !== '-', 'no picking result shown');
+  await dropFile(
+    page,
+    'tet.off',
+    'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n',
+  );
+  await page.waitForFunction(() => document.body.dataset.mesh === 'tet.off', null, {
+    timeout: 5000,
+  });
+  checkEqual((await page.textContent('#stat-pick')).trim(), '-', 'picking result after a new mesh');
+  check(!(await page.getAttribute('body', 'data-pick')), 'data-pick after a new mesh');
+  const menu = await page.evaluate(() => {
+    const s = document.getElementById('sample');
+    return s.options[s.selectedIndex].textContent;
+  });
+  check(menu.includes('tet.off'), `the sample menu does not name the dropped file: ${menu}`);
+  await loadSample(page, 'bob_small.ply');
+  checkEqual(await page.inputValue('#sample'), 'bob_small.ply', 'sample menu after bob');
+});
+
 test('picking: 500 rays per frame on 93,696 triangles', async ({ page, log }) => {
   await page.selectOption('#pick-size', '2');
   await page.click('#pick-bench');
