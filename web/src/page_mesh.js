@@ -11,6 +11,9 @@ export const SUBDIVISION_SCHEMES = [
   { id: 'split-faces', label: 'Split faces' },
 ];
 
+//! The angle (degrees) between faces above which their shared edge is drawn hard.
+export const CREASE_DEGREES = 40;
+
 //! Instantiates the WebAssembly module (hedge.wasm is fetched next to hedge.mjs).
 export async function loadHedge() {
   return load();
@@ -21,9 +24,12 @@ export class PageMesh {
   constructor(hedge, mesh, { render = true } = {}) {
     this.hedge = hedge;
     this.mesh = mesh;
-    // Computed normals: the same smooth shading for every file, updated around each edit.
+    // Corner normals, the same for every file: smooth where faces meet at less than CREASE_DEGREES,
+    // hard edges elsewhere (smooth vertex normals streak the flat sides of CAD models); 'auto'
+    // keeps them up around each edit, creases included.
+    if (render) mesh.computeCornerNormals(CREASE_DEGREES);
     this.render = render
-      ? mesh.createRenderBuffers({ normals: 'computed', texcoords: false, colors: false })
+      ? mesh.createRenderBuffers({ normals: 'auto', texcoords: false, colors: false })
       : null;
     this.rays = null;
     this.pickFaces = null;

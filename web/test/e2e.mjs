@@ -529,6 +529,22 @@ test('a refusal below the fold shows in view and offers to triangulate', async (
   checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity after Loop');
 });
 
+test('a CAD model is drawn with hard edges: corner normals with a crease angle', async ({
+  page,
+}) => {
+  await loadSample(page, 'fandisk_quads.off');
+  const { vertices, renderVertices } = await page.evaluate(() => {
+    const s = window.playground.state.current;
+    return { vertices: s.counts().vertices, renderVertices: s.render.sizes().vertices };
+  });
+  // Smooth vertex normals would give one render vertex per vertex; a crease splits its vertices.
+  check(
+    renderVertices > vertices * 1.1,
+    `${renderVertices} render vertices for ${vertices} vertices: no hard edges`,
+  );
+  await page.screenshot({ path: join(outDir, 'fandisk_corner_normals.png') });
+});
+
 // A file cut short loads what it holds, and the page says the file was not fine.
 test('a truncated file shows its warnings as warnings', async ({ page }) => {
   checkEqual(
