@@ -156,6 +156,7 @@ const ARGUMENTS = {
         }),
       ],
     ],
+    computeCornerNormals: [['creaseDegrees', optional(NUMBER)]],
     toArrays: [['options', options({})]],
     toFile: [['name', STRING]],
     createRenderBuffers: [['options', options({ normals: STRING })]],

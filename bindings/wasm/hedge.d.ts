@@ -233,6 +233,9 @@ export interface FractureResult {
 
 export class Hedge {
   readonly module: unknown;
+  /** Log console warnings of misuse that costs memory (Mesh.dispose() under a live RenderBuffers).
+   *  Default: on unless process.env.NODE_ENV is 'production' (a bundler's production build). */
+  warnings: boolean;
   fromBuffers(input: {
     positions: Float32Array | number[];
     indices: Uint32Array | number[];
@@ -271,6 +274,10 @@ export class Hedge {
 
 export class Mesh {
   readonly hedge: Hedge;
+  /** Frees the mesh's wasm memory now (else the garbage collector does). Lifetime rule: a
+   *  RenderBuffers made from the mesh shares it, so while one is live dispose() frees nothing
+   *  (the memory goes with the last RenderBuffers), and with hedge.warnings on a console warning
+   *  says so. Dispose the RenderBuffers first, or together with the mesh. Idempotent. */
   dispose(): void;
   readonly disposed: boolean;
   clone(): Mesh;
@@ -322,11 +329,17 @@ export class Mesh {
     targetVertices?: number;
     maxError?: number;
   }): DecimateResult;
+  /** Corner normals ("h:normal"), hard where faces meet at more than creaseDegrees (0..180,
+   *  default 45), smooth elsewhere. A RenderBuffers made afterwards with normals 'auto' draws them
+   *  and keeps them up around edits; an existing one shows them after rebuild(). */
+  computeCornerNormals(creaseDegrees?: number): void;
   /** Breaks the mesh at impact; the broken faces leave it as shards (see FractureOptions). */
   fracture(impact: Vec3, options?: FractureOptions): FractureResult;
   toArrays(options?: { triangulate?: boolean }): Arrays;
   toFile(name: string): Uint8Array;
   memoryBytes(): number;
+  /** Buffers kept in step with the mesh. They share the mesh: its memory stays until the mesh and
+   *  every RenderBuffers made from it are disposed (see dispose()). */
   createRenderBuffers(options?: {
     normals?: 'auto' | 'computed' | 'attribute' | 'none';
     interleaved?: boolean;
@@ -383,6 +396,8 @@ export interface SubmeshRange {
 
 export class RenderBuffers {
   readonly hedge: Hedge;
+  /** Frees the buffers, and the mesh's memory too if the mesh was disposed already and no other
+   *  RenderBuffers of it is live. Idempotent. */
   dispose(): void;
   readonly disposed: boolean;
   readonly layout: Layout;

@@ -11,7 +11,10 @@
 // naming the call and the argument, before the call runs (arguments.js).
 //
 // Memory: a Mesh or RenderBuffers frees its wasm memory when it is garbage-collected, and dispose() frees
-// it at once (calling it again does nothing; any other call on a disposed object throws).
+// it at once (calling it again does nothing; any other call on a disposed object throws). A
+// RenderBuffers shares its mesh: the mesh's memory is freed when the mesh and every RenderBuffers
+// made from it are disposed (or collected). Disposing a mesh first frees nothing yet; with
+// hedge.warnings on (the default unless NODE_ENV is 'production') it logs a console warning then.
 //
 // Views: positions, render buffers and the like are typed arrays over wasm memory, not copies. A
 // view stays valid until the next call that edits the mesh or syncs its RenderBuffers (which may move the
@@ -59,11 +62,25 @@ const registry = new FinalizationRegistry((native) => {
   if (!native.isDeleted()) native.delete();
 });
 
+// Development builds: NODE_ENV is not 'production' (bundlers write it into the code; a page
+// without a bundler has no process, and counts as development).
+function developmentBuild() {
+  try {
+    // eslint-disable-next-line no-undef
+    return process.env.NODE_ENV !== 'production';
+  } catch {
+    return true;
+  }
+}
+
 /** The loaded module: makes meshes and reports memory. */
 export class Hedge {
   /** @param module the emscripten module (from createHedge). */
   constructor(module) {
     this.module = module;
+    /** Log console warnings of misuse that costs memory (a mesh disposed under a live
+     *  RenderBuffers). On by default in development builds; set false to silence them. */
+    this.warnings = developmentBuild();
     this._errorSlot = module.errorSlotAddress() >> 2;
     this._pick = module.pickScratchAddress() >> 3;
   }
@@ -214,11 +231,33 @@ class NativeOwner {
   }
 }
 
-/** A half-edge mesh in wasm memory. dispose() frees it now; a RenderBuffers made from it keeps working
- *  (it shares the mesh). */
+/** A half-edge mesh in wasm memory. dispose() frees it now, unless a RenderBuffers made from it is
+ *  live: that one shares the mesh and keeps working, and the mesh's memory is freed with the last
+ *  of them (hedge.warnings: a console warning says so). */
 export class Mesh extends NativeOwner {
   constructor(hedge, native) {
     super(hedge, native, 'mesh');
+    // The RenderBuffers made from this mesh, held weakly: they may be collected before it.
+    this._renders = [];
+  }
+
+  /** Frees the mesh now; while a RenderBuffers made from it is live, only this handle (the memory
+   *  goes with the last RenderBuffers). Idempotent. */
+  dispose() {
+    if (!this.disposed && this.hedge.warnings) {
+      const live = this._renders.filter((ref) => {
+        const render = ref.deref();
+        return render !== undefined && !render.disposed;
+      }).length;
+      if (live > 0)
+        console.warn(
+          `hedge: Mesh.dispose() with ${live} live RenderBuffers made from it frees none of the ` +
+            "mesh's memory: the RenderBuffers share the mesh, which is freed with the last of " +
+            'them. Dispose the RenderBuffers too (first, or together with the mesh).',
+        );
+    }
+    this._renders = [];
+    super.dispose();
   }
 
   /** An independent copy. */
@@ -455,6 +494,14 @@ export class Mesh extends NativeOwner {
     this._call('smooth', method, iterations, lambda, mu, fixBoundary);
   }
 
+  /** Corner normals (the half-edge property "h:normal"): smooth across edges where the faces meet
+   *  at less than creaseDegrees (0..180; 0 flat, 180 smooth), hard edges elsewhere, as CAD models
+   *  need. A RenderBuffers made afterwards with normals 'auto' draws them and keeps them up around
+   *  each edit (an existing one shows them after rebuild()). */
+  computeCornerNormals(creaseDegrees = 45) {
+    this._call('computeCornerNormals', creaseDegrees);
+  }
+
   /** Quadric edge-collapse decimation of a triangle mesh. ratio: the fraction of faces to keep
    *  (or targetFaces / targetVertices as counts); maxError: stop before a collapse moving the
    *  surface further than this. Renumbers elements. Returns {vertices, faces, collapses, maxError}. */
@@ -569,7 +616,8 @@ export class Mesh extends NativeOwner {
   }
 
   /** Engine-ready buffers kept in step with this mesh (RenderBuffers). options: normals ('auto',
-   *  'computed', 'attribute', 'none'), interleaved (true), texcoords (true), colors (true). */
+   *  'computed', 'attribute', 'none'), interleaved (true), texcoords (true), colors (true). The
+   *  RenderBuffers shares the mesh: the mesh's memory stays until both are disposed. */
   createRenderBuffers({
     normals = 'auto',
     interleaved = true,
@@ -585,7 +633,10 @@ export class Mesh extends NativeOwner {
         colors,
       ),
     );
-    return new RenderBuffers(this.hedge, native);
+    const render = new RenderBuffers(this.hedge, native);
+    this._renders = this._renders.filter((ref) => ref.deref() !== undefined);
+    this._renders.push(new WeakRef(render));
+    return render;
   }
 }
 

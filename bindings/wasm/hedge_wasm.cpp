@@ -78,6 +78,7 @@ EMSCRIPTEN_BINDINGS(hedge) {
       .function("subdivide", &WasmMesh::subdivide)
       .function("smooth", &WasmMesh::smooth)
       .function("decimate", &WasmMesh::decimate)
+      .function("computeCornerNormals", &WasmMesh::compute_corner_normals)
       .function("fracture", &WasmMesh::fracture)
       .function("toArrays", &WasmMesh::to_arrays)
       .function("toFile", &WasmMesh::to_file)

@@ -1,11 +1,13 @@
 // NativeMesh: local edits and whole-mesh algorithms (the JS API's Mesh, see wasm_mesh.h). Every
 // edit goes through the binding core (binding/edits.h): handles checked, then the library's
 // refusal, then the edit, exactly as the C ABI does it.
+#include <string>
 #include <vector>
 
 #include "binding/edits.h"
 #include "binding/names.h"
 #include "hedge/algorithms/decimate.h"
+#include "hedge/algorithms/normals.h"
 #include "hedge/algorithms/smooth.h"
 #include "hedge/algorithms/subdivide.h"
 #include "hedge/error.h"
@@ -99,6 +101,15 @@ void WasmMesh::smooth(const std::string& method, int iterations, double lambda, 
     options.mu = mu;
     options.fix_boundary = fix_boundary;
     hedge::smooth(s_->mesh, options);
+  });
+}
+
+void WasmMesh::compute_corner_normals(double crease_degrees) {
+  guarded([&] {
+    if (!(crease_degrees >= 0 && crease_degrees <= 180))
+      throw InvalidInputError("computeCornerNormals: the crease angle must be in 0..180 degrees, got " +
+                              std::to_string(crease_degrees));
+    hedge::compute_corner_normals(s_->mesh, crease_degrees);
   });
 }
 

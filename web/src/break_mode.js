@@ -1,10 +1,10 @@
-// The break scene: a plate or a sample above a ground plane; a click strikes the mesh, fracture()
-// breaks it in wasm, the rest is synced to the GPU by dirty ranges and the shards fall in the
-// physics world (break_scene.js). Also times strikes, as the benchmark does.
+// The break scene: a plate, a sample or the loaded mesh above a ground plane; a click strikes the
+// mesh, fracture() breaks it in wasm, the rest is synced to the GPU by dirty ranges and the shards
+// fall in the physics world (break_scene.js). Also times strikes, as the benchmark does.
 import { PageMesh } from './page_mesh.js';
 import { BreakWorld, STEP, median, plateArrays } from './break_scene.js';
 import { $, fmt, ms, state, clearError, guard } from './page.js';
-import { adopt, applyEdit } from './scene.js';
+import { adopt, applyEdit, meshName } from './scene.js';
 
 // Mass per unit volume (kg/m^3) of each material, for the shards' mass properties.
 const DENSITY = { glass: 2500, stone: 2600, wood: 600, ice: 917 };
@@ -42,8 +42,8 @@ export function leaveBreak() {
   $('stat-shards').textContent = '-';
 }
 
-//! Sets up a break scene: 'plate' (a plate of 224 x 224 squares, 100,352 triangles, made here) or
-//! 'spot' (a sample), above a ground plane.
+//! Sets up a break scene: 'plate' (a plate of 224 x 224 squares, 100,352 triangles, made here),
+//! 'spot' (a sample) or 'current' (a copy of the loaded mesh), above a ground plane.
 async function setupBreak(name) {
   let bytes = null;
   if (name === 'spot') {
@@ -52,16 +52,34 @@ async function setupBreak(name) {
       throw new Error(`could not fetch spot_triangulated.obj (HTTP ${response.status})`);
     bytes = new Uint8Array(await response.arrayBuffer());
   }
+  if (name === 'current' && !state.current) throw new Error('no mesh loaded');
+  const label = {
+    plate: 'plate, 224 x 224 squares',
+    spot: 'spot_triangulated.obj',
+    current: meshName(),
+  }[name];
+  // The copy is taken before leaving a break scene, so that 'current' in one breaks what is shown.
+  const copy = name === 'current' ? state.current.mesh.clone() : null;
   leaveBreak();
   const t0 = performance.now();
-  const next =
-    name === 'plate'
-      ? PageMesh.fromBuffers(state.hedge, plateArrays(224, 3, 1))
-      : PageMesh.load(state.hedge, bytes, 'spot_triangulated.obj');
+  let next;
+  if (name === 'plate') next = PageMesh.fromBuffers(state.hedge, plateArrays(224, 3, 1));
+  else if (name === 'spot') next = PageMesh.load(state.hedge, bytes, label);
+  else {
+    try {
+      next = new PageMesh(state.hedge, copy);
+    } catch (error) {
+      copy.dispose();
+      throw error;
+    }
+  }
   next.buildPicking(); // strikes go through the picking tree, as in a game
   const loadMs = performance.now() - t0;
   clearError();
-  adopt(next, name === 'plate' ? 'plate, 224 x 224 squares' : 'spot_triangulated.obj', loadMs);
+  adopt(next, label, loadMs, {
+    operation: `set up the break scene: ${label}`,
+    sameFile: name === 'current',
+  });
   const box = next.boundingBox();
   const diagonal = Math.hypot(...[0, 1, 2].map((i) => box.max[i] - box.min[i]));
   // The plate lies at height 1 above the ground; the object stands just above it.

@@ -5,8 +5,8 @@
 import { Viewer } from './viewer.js';
 import { loadHedge, PageMesh, SUBDIVISION_SCHEMES } from './page_mesh.js';
 import { measurePicking } from './picking_bench.js';
-import { $, fmt, state, showError, clearError, messageOf, guard } from './page.js';
-import { adopt, applyEdit } from './scene.js';
+import { $, fmt, state, showError, clearError, messageOf, guard, offerRemedy } from './page.js';
+import { adopt, applyEdit, meshName } from './scene.js';
 import { elementAt, faceCentre, drawHover, setHover } from './inspect.js';
 import {
   createBreakWorld,
@@ -63,6 +63,30 @@ function clickEdit(el) {
     else s.collapse(h);
     return `${mode} edge e${e}`;
   });
+}
+
+// Replaces a polygon mesh by its triangulation (PageMesh.triangulated()): the way out of the
+// refusals of Loop, sqrt(3) and decimate, which need triangles.
+function triangulate() {
+  const s = state.current;
+  if (!s) throw new Error('no mesh loaded');
+  const name = meshName();
+  if (s.mesh.isTriangleMesh()) {
+    $('stat-op').textContent = 'triangulate: the mesh has triangles only already';
+    return;
+  }
+  leaveBreak();
+  const before = s.counts().faces;
+  const t0 = performance.now();
+  const next = s.triangulated();
+  const opMs = performance.now() - t0;
+  clearError();
+  const after = next.counts().faces;
+  adopt(next, name, opMs, {
+    operation: `triangulate: ${fmt(before)} faces into ${fmt(after)} triangles`,
+    sameFile: true,
+  });
+  document.body.dataset.edits = String(Number(document.body.dataset.edits || 0) + 1);
 }
 
 // ---- wiring -------------------------------------------------------------------------------------
@@ -127,6 +151,7 @@ function wireInput() {
   $('error-close').addEventListener('click', clearError);
   $('load-sample').addEventListener('click', () => {
     const name = $('sample').value;
+    if (!name) return; // the entry naming a loaded file
     guard(`loading ${name}`, () => loadSample(name));
   });
   $('show-wire').addEventListener('change', (e) => viewer.setWireframe(e.target.checked));
@@ -149,6 +174,12 @@ function wireInput() {
     );
     buttons.appendChild(button);
   }
+  $('triangulate').addEventListener('click', () => guard('triangulate', triangulate));
+  offerRemedy((message) =>
+    /triangulate first/.test(message) && state.current && !state.current.mesh.isTriangleMesh()
+      ? { label: 'Triangulate', run: () => guard('triangulate', triangulate) }
+      : null,
+  );
   $('smooth').addEventListener('click', () =>
     guard('smooth', () =>
       applyEdit('smooth', (s) => {

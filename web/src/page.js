@@ -1,5 +1,7 @@
 // What every part of the playground shares: the page state, element lookup, number formats and
-// error reporting.
+// error reporting. Errors show over the top of the view (index.html), which does not scroll, so a
+// message is in sight whichever control below the fold caused it; a message may offer a way out
+// (a button next to it), found by the remedies registered with offerRemedy().
 
 export const $ = (id) => document.getElementById(id);
 export const fmt = (n) => n.toLocaleString('en-US');
@@ -15,14 +17,29 @@ export const state = {
   mode: 'edit', // 'break' in a break scene: a click strikes
 };
 
+// Functions (message) => {label, run} or null, asked in order for a way out of an error.
+const remedies = [];
+
+//! Registers `find(message)`: a {label, run} offered next to an error it recognises, else null.
+export function offerRemedy(find) {
+  remedies.push(find);
+}
+
 export function showError(message) {
   $('error-text').textContent = message;
+  let offer = null;
+  for (const find of remedies) if ((offer = find(message))) break;
+  const button = $('error-action');
+  button.hidden = !offer;
+  button.textContent = offer ? offer.label : '';
+  button.onclick = offer ? () => offer.run() : null;
   $('error').hidden = false;
   document.body.dataset.error = message;
 }
 
 export function clearError() {
   $('error').hidden = true;
+  $('error-action').onclick = null;
   delete document.body.dataset.error;
 }
 

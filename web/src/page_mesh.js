@@ -11,6 +11,9 @@ export const SUBDIVISION_SCHEMES = [
   { id: 'split-faces', label: 'Split faces' },
 ];
 
+//! The angle (degrees) between faces above which their shared edge is drawn hard.
+export const CREASE_DEGREES = 40;
+
 //! Instantiates the WebAssembly module (hedge.wasm is fetched next to hedge.mjs).
 export async function loadHedge() {
   return load();
@@ -21,9 +24,12 @@ export class PageMesh {
   constructor(hedge, mesh, { render = true } = {}) {
     this.hedge = hedge;
     this.mesh = mesh;
-    // Computed normals: the same smooth shading for every file, updated around each edit.
+    // Corner normals, the same for every file: smooth where faces meet at less than CREASE_DEGREES,
+    // hard edges elsewhere (smooth vertex normals streak the flat sides of CAD models); 'auto'
+    // keeps them up around each edit, creases included.
+    if (render) mesh.computeCornerNormals(CREASE_DEGREES);
     this.render = render
-      ? mesh.createRenderBuffers({ normals: 'computed', texcoords: false, colors: false })
+      ? mesh.createRenderBuffers({ normals: 'auto', texcoords: false, colors: false })
       : null;
     this.rays = null;
     this.pickFaces = null;
@@ -60,27 +66,40 @@ export class PageMesh {
     this.mesh = null;
   }
 
-  //! What loading repaired and the reader's warnings, in a line ('' when there is nothing to say).
-  loadNotes() {
+  //! What loading found wrong with the file and what it only noted: {warnings, notes}, lists of
+  //! lines. Warnings: the reader's own (a face dropped, the file may be truncated, ...) and the
+  //! repairs that mean the file was not a clean surface (faces dropped or reoriented, vertices and
+  //! edges split). Notes: welding and isolated vertices, which well-formed files have too (an STL
+  //! file's corners are welded into vertices).
+  fileReport() {
     const report = this.mesh.buildReport();
-    const notes = [];
-    const labels = {
-      weldedVertices: 'welded vertices',
+    const warningLabels = {
       degenerateFaces: 'degenerate faces dropped',
-      repeatedCorners: 'repeated corners',
+      repeatedCorners: 'repeated corners removed',
       reorientedFaces: 'faces reoriented',
       nonManifoldEdges: 'non-manifold edges split',
       nonManifoldVertices: 'non-manifold vertices split',
       duplicatedVertices: 'vertices duplicated',
-      isolatedVertices: 'isolated vertices',
     };
-    for (const [key, label] of Object.entries(labels))
-      if (report[key]) notes.push(`${report[key]} ${label}`);
-    const warnings = report.warnings || [];
-    const shown = warnings.slice(0, 3);
-    if (warnings.length > shown.length)
-      shown.push(`and ${warnings.length - shown.length} more warnings`);
-    return [...(notes.length ? [`repairs: ${notes.join(', ')}`] : []), ...shown].join('; ');
+    const noteLabels = { weldedVertices: 'welded vertices', isolatedVertices: 'isolated vertices' };
+    const listed = (labels) =>
+      Object.entries(labels)
+        .filter(([key]) => report[key])
+        .map(([key, label]) => `${report[key].toLocaleString('en-US')} ${label}`);
+    const repairs = listed(warningLabels);
+    const warnings = [...(report.warnings || [])];
+    if (warnings.length > 3) warnings.splice(3, warnings.length, `and ${warnings.length - 3} more`);
+    if (repairs.length) warnings.push(`repaired: ${repairs.join(', ')}`);
+    const notes = listed(noteLabels);
+    return { warnings, notes: notes.length ? [`repairs: ${notes.join(', ')}`] : [] };
+  }
+
+  //! A triangle mesh of the same vertices: each polygon cut along its diagonals (ear clipping, so
+  //! concave faces stay inside their outline), built anew. For the edits that need triangles
+  //! (Loop, sqrt(3), decimate). The caller disposes this one.
+  triangulated() {
+    const { positions, indices } = this.mesh.toArrays({ triangulate: true });
+    return PageMesh.fromBuffers(this.hedge, { positions, indices, weld: 'none' });
   }
 
   counts() {

@@ -1,6 +1,15 @@
 // The mesh on screen: adopting a loaded mesh, applying an edit and uploading the ranges it
-// rewrote, and the stats panel (counts, validity, the last operation and upload).
+// rewrote, and the stats panel (counts, validity, the last operation and upload), and what the
+// file's reader warned about.
 import { $, fmt, ms, state, clearError } from './page.js';
+
+// The file the mesh on screen came from: {name, warnings, notes} (PageMesh.fileReport()).
+const file = { name: '', warnings: [], notes: [] };
+
+//! The name the mesh on screen was loaded under.
+export function meshName() {
+  return file.name;
+}
 
 function showStats() {
   const s = state.current;
@@ -9,11 +18,21 @@ function showStats() {
   $('stat-v').textContent = fmt(c.vertices);
   $('stat-e').textContent = fmt(c.edges);
   $('stat-f').textContent = fmt(c.faces);
+  // validate() checks the half-edge structure, which loading makes consistent whatever the file
+  // held: the file's warnings say what it had wrong, so a consistent structure built from a file
+  // with warnings is not shown as plainly fine.
   const problems = s.problems();
   const valid = $('stat-valid');
-  valid.textContent =
-    problems.length === 0 ? 'valid' : `${problems.length} problem(s): ${problems[0]}`;
-  valid.className = problems.length === 0 ? 'ok' : 'bad';
+  const warned = file.warnings.length > 0;
+  if (problems.length > 0) {
+    valid.textContent = `${problems.length} problem(s): ${problems[0]}`;
+    valid.className = 'bad';
+  } else {
+    valid.textContent = warned
+      ? 'half-edge structure valid; the file was not (see its warnings)'
+      : 'half-edge structure valid';
+    valid.className = warned ? 'warn' : 'ok';
+  }
   document.body.dataset.counts = `${c.vertices},${c.edges},${c.faces}`;
   document.body.dataset.valid = problems.length === 0 ? '1' : '0';
 }
@@ -40,16 +59,59 @@ function showUpload(upload) {
   });
 }
 
-// Replaces the current mesh by `next` (already loaded) and uploads it whole.
-export function adopt(next, name, loadMs) {
+// The file's warnings next to its name, in the warning colour; its notes below in grey.
+function showFileReport() {
+  const list = $('mesh-warnings');
+  list.replaceChildren(
+    ...file.warnings.map((text) => {
+      const item = document.createElement('li');
+      item.textContent = text;
+      return item;
+    }),
+  );
+  list.hidden = file.warnings.length === 0;
+  $('mesh-notes').textContent = file.notes.join('; ');
+  document.body.dataset.fileWarnings = String(file.warnings.length);
+}
+
+// The sample menu shows what is loaded: its sample, else a disabled entry naming the mesh.
+function showInSampleMenu(name) {
+  const menu = $('sample');
+  let fileEntry = menu.querySelector('option[data-file]');
+  const sample = [...menu.options].find((o) => !o.dataset.file && o.value === name);
+  if (sample) {
+    if (fileEntry) fileEntry.remove();
+    menu.value = sample.value;
+    return;
+  }
+  if (!fileEntry) {
+    fileEntry = document.createElement('option');
+    fileEntry.dataset.file = '1';
+    fileEntry.disabled = true;
+    fileEntry.value = '';
+    menu.prepend(fileEntry);
+  }
+  fileEntry.textContent = `loaded: ${name}`;
+  menu.value = '';
+}
+
+// Replaces the current mesh by `next` (already loaded) and uploads it whole. `operation`: what made
+// it, for the stats ('load NAME' by default); `sameFile`: it is a rebuild of the current mesh
+// (triangulated), which keeps the file's name and warnings.
+export function adopt(next, name, loadMs, { operation = `load ${name}`, sameFile = false } = {}) {
   const old = state.current;
   state.current = next;
   if (old) old.dispose();
   state.hover = null;
   state.viewer.clearOverlay();
   $('records').textContent = 'Hover the mesh.';
+  if (!sameFile) Object.assign(file, { name, ...next.fileReport() });
   $('mesh-name').textContent = name;
-  $('mesh-notes').textContent = next.loadNotes();
+  showFileReport();
+  showInSampleMenu(name);
+  // A picking measurement was of the mesh before.
+  $('stat-pick').textContent = '-';
+  delete document.body.dataset.pick;
   const before = state.viewer.meter.snapshot();
   const isEdge = next.edgeTest();
   const bytes = state.viewer.mesh.rebuild(next.mesh, next.render, isEdge);
@@ -57,7 +119,7 @@ export function adopt(next, name, loadMs) {
   state.viewer.render();
   state.lastUpload = { bytes, full: true, ranges: 1, gl: state.viewer.meter.since(before) };
   showUpload(state.lastUpload);
-  showOperation(`load ${name}`, loadMs);
+  showOperation(operation, loadMs);
   showStats();
   document.body.dataset.mesh = name;
 }

@@ -15,7 +15,10 @@ test('Render is RenderBuffers, and createRender() makes one', () => {
   const mesh = grid(2);
   const render = mesh.createRender({ normals: 'none' });
   assert.ok(render instanceof api.RenderBuffers);
-  assert.equal(render.indices.length, mesh.createRenderBuffers().indices.length);
+  const second = mesh.createRenderBuffers();
+  assert.equal(render.indices.length, second.indices.length);
+  render.dispose();
+  second.dispose();
   mesh.dispose();
 });
 test('loadHedgeNode() is loadHedge() under node', async () => {

@@ -17,13 +17,14 @@ function buildAndUse() {
 
 test('1,000 meshes built and disposed leave the heap as it was', () => {
   // Warm up: the allocator's own structures, embind's type tables.
-  for (let i = 0; i < 10; ++i) for (const o of buildAndUse()) o.dispose();
+  // The render first: disposing the mesh under it would warn (see the last test).
+  for (let i = 0; i < 10; ++i) for (const o of buildAndUse().reverse()) o.dispose();
   const inUse = hedge.heapBytesInUse();
   const memory = hedge.memoryBytes;
   const perMesh = (() => {
     const objects = buildAndUse();
     const bytes = hedge.heapBytesInUse() - inUse;
-    for (const o of objects) o.dispose();
+    for (const o of objects.reverse()) o.dispose();
     return bytes;
   })();
   assert.ok(perMesh > 50_000, `a mesh holds ${perMesh} bytes`);
@@ -65,3 +66,41 @@ test(
     assert.ok(after - inUse < 200_000, `the heap is back to ${after} bytes from ${inUse}`);
   },
 );
+
+// The lifetime rule: a RenderBuffers shares its mesh, so Mesh.dispose() under a live one frees
+// nothing, and says so (hedge.warnings) instead of leaving the memory held in silence.
+test('disposing a mesh under a live RenderBuffers warns and frees nothing until the render goes', (t) => {
+  const warned = [];
+  t.mock.method(console, 'warn', (message) => warned.push(String(message)));
+  const inUse = hedge.heapBytesInUse();
+  const mesh = hedge.fromBuffers(input);
+  const render = mesh.createRenderBuffers();
+  render.sync();
+  const held = hedge.heapBytesInUse();
+  mesh.dispose();
+  assert.equal(warned.length, 1, 'one warning');
+  assert.match(warned[0], /Mesh\.dispose\(\) with 1 live RenderBuffers/);
+  // Only the handle's few bytes came back, not the mesh's.
+  const freed = held - hedge.heapBytesInUse();
+  assert.ok(freed < (held - inUse) / 20, `the dispose freed ${freed} of ${held - inUse} bytes`);
+  assert.equal(render.sync().full, false, 'the RenderBuffers still works');
+  render.dispose();
+  assert.equal(hedge.heapBytesInUse(), inUse, 'freed with the RenderBuffers');
+
+  // The right order, a disposed render, and hedge.warnings = false: no warning.
+  const second = hedge.fromBuffers(input);
+  second.createRenderBuffers().dispose();
+  second.dispose();
+  const third = hedge.fromBuffers(input);
+  const thirdRender = third.createRenderBuffers();
+  hedge.warnings = false;
+  try {
+    third.dispose();
+  } finally {
+    hedge.warnings = true;
+    thirdRender.dispose();
+  }
+  assert.equal(warned.length, 1, `warnings: ${warned.join(' | ')}`);
+  assert.equal(hedge.heapBytesInUse(), inUse, 'every byte came back');
+  assert.equal(mesh.disposed && second.disposed && third.disposed, true);
+});

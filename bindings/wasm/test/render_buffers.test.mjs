@@ -1,7 +1,7 @@
 // RenderBuffers through JS: views into wasm memory and dirty ranges after edits.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { hedge, grid, sample } from './support.mjs';
+import { hedge, grid, sample, cube } from './support.mjs';
 
 test('the buffers are views into wasm memory holding every triangle of the mesh', () => {
   const mesh = grid(4);
@@ -125,7 +125,12 @@ test('views go stale when wasm memory grows and are taken again', () => {
 test('a render outlives the disposal of its mesh', () => {
   const mesh = grid(2);
   const render = mesh.createRenderBuffers();
-  mesh.dispose();
+  mesh.hedge.warnings = false; // disposing the mesh first is what this test does
+  try {
+    mesh.dispose();
+  } finally {
+    mesh.hedge.warnings = true;
+  }
   assert.equal(render.sizes().triangles, 8);
   assert.equal(render.sync().vertexRanges.length, 0);
   render.dispose();
@@ -218,5 +223,34 @@ test('pickTriangles finds the face under a ray and its triangle slots as of the 
   assert.deepEqual([synced.first, synced.count], render.faceTriangles(synced.face));
   assert.deepEqual(mesh.validate(), []);
   render.dispose();
+  mesh.dispose();
+});
+
+test('corner normals with a crease angle give a cube hard edges that edits keep', () => {
+  const mesh = cube();
+  mesh.computeCornerNormals(45);
+  const render = mesh.createRenderBuffers({ normals: 'auto', interleaved: false });
+  // Three faces meet at each corner at 90 degrees: a render vertex per corner and face side.
+  assert.equal(render.sizes().vertices, 24);
+  const normals = render.normals;
+  for (let v = 0; v < 24; ++v) {
+    const n = [...normals.subarray(3 * v, 3 * v + 3)].map(Math.abs).sort();
+    assert.deepEqual(n, [0, 0, 1], `render vertex ${v} has the normal of its face side`);
+  }
+  mesh.splitFace(0);
+  render.sync();
+  assert.equal(render.sizes().vertices, 25, 'the split adds one vertex inside a side');
+  render.dispose();
+  // 180 degrees: no crease, one smooth normal per vertex.
+  mesh.computeCornerNormals(180);
+  const smooth = mesh.createRenderBuffers({ normals: 'auto' });
+  assert.equal(smooth.sizes().vertices, 9);
+  smooth.dispose();
+  for (const bad of [-1, 181, NaN])
+    assert.throws(
+      () => mesh.computeCornerNormals(bad),
+      (e) => e.kind === 'invalid-argument' && /crease angle must be in 0\.\.180/.test(e.message),
+    );
+  assert.deepEqual(mesh.validate(), []);
   mesh.dispose();
 });
