@@ -1,0 +1,201 @@
+// The refusable edits of the Python Mesh and their can_* predicates. Every edit goes through the
+// binding core (binding/edits.h): handles checked (BadHandleError), then the library's refusal,
+// then the edit, as the C ABI and the WebAssembly module do it. A refusal is no exception here:
+// the edit returns None (False for remove_face) and keeps the reason in Mesh.last_refusal.
+#include <pybind11/stl.h>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "binding/edits.h"
+#include "binding/errors.h"
+#include "hedge/core/operations.h"
+#include "py_support.h"
+
+namespace hedge::python {
+
+namespace {
+
+using Point = std::optional<std::array<float, 3>>;
+
+std::optional<Vec3> vec3(const Point& p) {
+  if (!p) return std::nullopt;
+  return Vec3{(*p)[0], (*p)[1], (*p)[2]};
+}
+
+//! A Python int as an element index: a negative one is out of range (BadHandleError), as a too
+//! large one is for the core's checks.
+std::uint32_t index(std::int64_t i, const char* kind) {
+  if (i < 0 || i > 0xfffffffeLL)
+    binding::fail(HEDGE_ERROR_BAD_HANDLE, std::string(kind) + " " + std::to_string(i) + " is out of range");
+  return static_cast<std::uint32_t>(i);
+}
+
+//! Runs an edit: its result, or none if the library refused it (the reason goes to last_refusal;
+//! the mesh is unchanged). `grows`: the edit adds elements, so it needs the views released first.
+template <typename Body>
+auto edit(const Mesh& self, const std::string& what, bool grows, Body&& body)
+    -> std::optional<decltype(body(std::declval<SurfaceMesh&>()))> {
+  const auto use = self.use();
+  if (grows) require_no_views(*use, what);
+  try {
+    auto result = body(use->mesh);
+    use->last_refusal.clear();
+    return result;
+  } catch (const binding::BindingError& e) {
+    if (e.status != HEDGE_ERROR_REFUSED) throw;
+    use->last_refusal = e.refusal != nullptr ? e.refusal : e.message;
+    return std::nullopt;
+  }
+}
+
+//! Whether the edit is allowed on these elements: the core's refusal, none for a bad handle too.
+bool can(const Mesh& self, binding::Edit e, std::vector<std::int64_t> elements) {
+  const auto use = self.use();
+  std::vector<std::uint32_t> ids;
+  for (const std::int64_t i : elements) {
+    if (i < 0 || i > 0xfffffffeLL) return false;
+    ids.push_back(static_cast<std::uint32_t>(i));
+  }
+  return binding::refusal(use->mesh, e, ids) == nullptr;
+}
+
+std::optional<std::string> refusal_of(const Mesh& self, const std::string& name,
+                                      std::vector<std::int64_t> elements) {
+  const auto use = self.use();
+  const binding::Edit e = binding::parse_edit(name);
+  std::vector<std::uint32_t> ids;
+  for (const std::int64_t i : elements) ids.push_back(index(i, "element"));
+  const char* why = binding::refusal(use->mesh, e, ids);
+  if (why == nullptr) return std::nullopt;
+  return std::string(why);
+}
+
+}  // namespace
+
+void bind_edits(py::class_<Mesh>& mesh) {
+  using binding::Edit;
+  mesh.def(
+          "can_split_edge", [](const Mesh& self, std::int64_t e) { return can(self, Edit::split_edge, {e}); },
+          py::arg("edge"), "True if split_edge(edge) is allowed (False for a dead or out-of-range edge too).")
+      .def(
+          "split_edge",
+          [](const Mesh& self, std::int64_t e, const Point& point) {
+            return edit(self, "split_edge", true, [&](SurfaceMesh& m) {
+              return binding::split_edge(m, index(e, "edge"), vec3(point)).idx();
+            });
+          },
+          py::arg("edge"), py::arg("point") = py::none(),
+          "Splits the edge at point (default: its midpoint). Returns the new vertex, or None if the "
+          "library refuses (the reason is in last_refusal). Raises BadHandleError for a dead or "
+          "out-of-range edge, InvalidArgumentError for a point that is not finite.")
+      .def(
+          "can_collapse", [](const Mesh& self, std::int64_t h) { return can(self, Edit::collapse, {h}); },
+          py::arg("halfedge"), "True if collapse(halfedge) is allowed.")
+      .def(
+          "collapse",
+          [](const Mesh& self, std::int64_t h, const Point& point) {
+            return edit(self, "collapse", false, [&](SurfaceMesh& m) {
+              // The point is checked before the collapse, which cannot be undone.
+              const std::optional<Vec3> p = vec3(point);
+              if (p) binding::need_point(*p, "collapse");
+              const Vertex v = binding::collapse(m, index(h, "halfedge"));
+              if (p) m.set_position(v, *p);
+              return v.idx();
+            });
+          },
+          py::arg("halfedge"), py::arg("point") = py::none(),
+          "Merges the half-edge's origin into its target, which moves to point if given. Returns the "
+          "surviving vertex, or None if refused (reason in last_refusal).")
+      .def(
+          "can_flip", [](const Mesh& self, std::int64_t e) { return can(self, Edit::flip, {e}); },
+          py::arg("edge"), "True if flip(edge) is allowed.")
+      .def(
+          "flip",
+          [](const Mesh& self, std::int64_t e) {
+            return edit(self, "flip", false,
+                        [&](SurfaceMesh& m) { return binding::flip(m, index(e, "edge")).idx(); });
+          },
+          py::arg("edge"), "Flips the edge between two triangles. Returns the edge, or None if refused.")
+      .def(
+          "can_split_face", [](const Mesh& self, std::int64_t f) { return can(self, Edit::split_face, {f}); },
+          py::arg("face"), "True if split_face(face) is allowed.")
+      .def(
+          "split_face",
+          [](const Mesh& self, std::int64_t f, const Point& point) {
+            return edit(self, "split_face", true, [&](SurfaceMesh& m) {
+              return binding::split_face(m, index(f, "face"), vec3(point)).idx();
+            });
+          },
+          py::arg("face"), py::arg("point") = py::none(),
+          "Splits the face into a fan around a new vertex at point (default: the centroid). Returns "
+          "the new vertex, or None if refused.")
+      .def(
+          "can_cut_face",
+          [](const Mesh& self, std::int64_t h0, std::int64_t h1) {
+            return can(self, Edit::cut_face, {h0, h1});
+          },
+          py::arg("halfedge0"), py::arg("halfedge1"), "True if cut_face(halfedge0, halfedge1) is allowed.")
+      .def(
+          "cut_face",
+          [](const Mesh& self, std::int64_t h0, std::int64_t h1) {
+            return edit(self, "cut_face", true, [&](SurfaceMesh& m) {
+              return binding::cut_face(m, index(h0, "halfedge"), index(h1, "halfedge")).idx();
+            });
+          },
+          py::arg("halfedge0"), py::arg("halfedge1"),
+          "Cuts the face of both half-edges from the target of halfedge0 to the target of halfedge1. "
+          "Returns the new half-edge, or None if refused.")
+      .def(
+          "can_fill_hole", [](const Mesh& self, std::int64_t h) { return can(self, Edit::fill_hole, {h}); },
+          py::arg("halfedge"), "True if fill_hole(halfedge) is allowed.")
+      .def(
+          "fill_hole",
+          [](const Mesh& self, std::int64_t h) {
+            return edit(self, "fill_hole", true, [&](SurfaceMesh& m) {
+              std::vector<std::int64_t> faces;
+              for (const Face f : binding::fill_hole(m, index(h, "halfedge"))) faces.push_back(f.idx());
+              return faces;
+            });
+          },
+          py::arg("halfedge"),
+          "Fills the hole whose boundary loop holds the half-edge. Returns the new faces, or None if "
+          "refused.")
+      .def(
+          "can_remove_face",
+          [](const Mesh& self, std::int64_t f) {
+            const auto use = self.use();
+            if (f < 0 || static_cast<std::uint64_t>(f) >= use->mesh.face_slots()) return false;
+            return can_remove_face(use->mesh, Face(static_cast<Index>(f)));
+          },
+          py::arg("face"), "True if remove_face(face) is allowed.")
+      .def(
+          "remove_face",
+          [](const Mesh& self, std::int64_t f) {
+            return edit(self, "remove_face", false,
+                        [&](SurfaceMesh& m) {
+                          binding::remove_face(m, index(f, "face"));
+                          return true;
+                        })
+                .has_value();
+          },
+          py::arg("face"),
+          "Removes the face, and the edges and vertices it leaves unused. Returns False if refused "
+          "(reason in last_refusal).")
+      .def("refusal", &refusal_of, py::arg("edit"), py::arg("elements"),
+           "Why the edit ('split_edge', 'collapse', 'flip', 'split_face', 'cut_face', 'fill_hole') "
+           "of these elements is refused, or None if it is allowed.")
+      .def_property_readonly(
+          "last_refusal",
+          [](const Mesh& self) -> std::optional<std::string> {
+            const auto use = self.use();
+            if (use->last_refusal.empty()) return std::nullopt;
+            return use->last_refusal;
+          },
+          "The library's reason for the last refused edit on this mesh, None if the last edit was done.");
+}
+
+}  // namespace hedge::python

@@ -1,0 +1,152 @@
+// The numpy views of a mesh's arrays, without copies (see py_support.h for their guard), and
+// positions_changed(), which tells the change log about writes through mesh.positions.
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "binding/errors.h"
+#include "binding/handles.h"
+#include "hedge/error.h"
+#include "py_support.h"
+
+namespace hedge::python {
+
+namespace {
+
+static_assert(sizeof(Vertex) == sizeof(std::int32_t) && sizeof(Halfedge) == sizeof(std::int32_t) &&
+                  sizeof(Face) == sizeof(std::int32_t),
+              "handles are viewed as int32");
+
+//! The base of every view: keeps the mesh state alive and counts as an exported view while it
+//! lives (State::views; created and destroyed with the GIL held).
+class ViewOwner {
+ public:
+  explicit ViewOwner(std::shared_ptr<State> state) : state_(std::move(state)) { ++state_->views; }
+  ViewOwner(const ViewOwner&) = delete;
+  ViewOwner& operator=(const ViewOwner&) = delete;
+  ~ViewOwner() { --state_->views; }
+
+ private:
+  std::shared_ptr<State> state_;
+};
+
+py::object owner(const Mesh& self) {
+  return py::cast(new ViewOwner(self.state()), py::return_value_policy::take_ownership);
+}
+
+//! A read-only int32 view of the handle array that get(mesh) returns (kInvalidIndex reads as -1).
+template <typename Get>
+py::array index_view(const Mesh& self, Get get) {
+  const auto use = self.use();
+  const auto& handles = get(std::as_const(use->mesh));
+  static_assert(sizeof(handles[0]) == sizeof(std::int32_t), "handles are viewed as int32");
+  py::array a = py::array_t<std::int32_t>({static_cast<py::ssize_t>(handles.size())},
+                                          reinterpret_cast<const std::int32_t*>(handles.data()), owner(self));
+  py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return a;
+}
+
+py::array positions_view(const Mesh& self) {
+  const auto use = self.use();
+  auto& p = use->mesh.positions().vector();
+  const auto n = static_cast<py::ssize_t>(p.size());
+  return py::array_t<float>({n, py::ssize_t(3)}, {py::ssize_t(sizeof(Vec3)), py::ssize_t(sizeof(float))},
+                            reinterpret_cast<float*>(p.data()), owner(self));
+}
+
+//! Checks that v's position is finite, naming v otherwise.
+void need_finite(const SurfaceMesh& m, Vertex v) {
+  const Vec3& p = m.position(v);
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    throw InvalidInputError("positions_changed: vertex " + std::to_string(v.idx()) +
+                            " has a position that is not finite (" + std::to_string(p.x) + ", " +
+                            std::to_string(p.y) + ", " + std::to_string(p.z) + ")");
+}
+
+void positions_changed(const Mesh& self,
+                       const std::optional<py::array_t<std::int64_t, py::array::forcecast>>& vertices) {
+  const auto use = self.use();
+  SurfaceMesh& m = use->mesh;
+  std::vector<Vertex> moved;
+  if (vertices) {
+    if (vertices->ndim() != 1)
+      throw InvalidInputError("positions_changed: vertices must be a 1-D array of indices");
+    const auto r = vertices->unchecked<1>();
+    for (py::ssize_t i = 0; i < r.shape(0); ++i) {
+      const std::int64_t v = r(i);
+      if (v < 0 || v > 0xfffffffeLL)
+        binding::fail(HEDGE_ERROR_BAD_HANDLE,
+                      "positions_changed: vertex " + std::to_string(v) + " is out of range");
+      moved.push_back(binding::live_vertex(m, static_cast<std::uint32_t>(v)));
+    }
+  } else {
+    for (const Vertex v : m.vertices()) moved.push_back(v);
+  }
+  // Every position is checked before any is marked, so a bad one leaves the log as it was.
+  for (const Vertex v : moved) need_finite(m, v);
+  for (const Vertex v : moved) m.mark_changed(v, ChangeEvent::vertices_moved);
+  m.changes().notify();
+}
+
+}  // namespace
+
+void bind_views(py::module_& m, py::class_<Mesh>& mesh) {
+  py::class_<ViewOwner>(m, "_ViewOwner",
+                        "The base of a numpy view of a mesh's array: keeps the mesh alive while the view "
+                        "lives, and blocks edits that add elements meanwhile.");
+  mesh.def_property_readonly("positions", &positions_view,
+                             "The positions as a writable (vertex_slots, 3) float32 numpy array over the "
+                             "mesh's own memory (no copy; deleted slots included). After writing through it, "
+                             "call positions_changed() so that the change log, and what follows it (the "
+                             "picking tree), sees the move. While the array (or a slice of it) lives, edits "
+                             "that add elements raise ViewsExportedError.")
+      .def("positions_changed", &positions_changed, py::arg("vertices") = py::none(),
+           "Tells the mesh that positions were written through mesh.positions: the given vertices "
+           "(an array of indices), or every live vertex if None. Each is checked to be live and "
+           "finite first; on an error nothing is marked.")
+      .def_property_readonly(
+          "halfedge_vertex",
+          [](const Mesh& self) {
+            return index_view(
+                self, [](const SurfaceMesh& m) -> const auto& { return m.halfedge_vertex_array(); });
+          },
+          "Each half-edge's target vertex: a read-only int32 view (halfedge_slots,), no copy. The twin "
+          "of half-edge h is h ^ 1 and its edge h >> 1; no array is stored for them.")
+      .def_property_readonly(
+          "halfedge_next",
+          [](const Mesh& self) {
+            return index_view(
+                self, [](const SurfaceMesh& m) -> const auto& { return m.halfedge_next_array(); });
+          },
+          "Each half-edge's next half-edge in its face or boundary loop: a read-only int32 view, no copy.")
+      .def_property_readonly(
+          "halfedge_face",
+          [](const Mesh& self) {
+            return index_view(
+                self, [](const SurfaceMesh& m) -> const auto& { return m.halfedge_face_array(); });
+          },
+          "Each half-edge's face, -1 on a boundary half-edge: a read-only int32 view, no copy.")
+      .def_property_readonly(
+          "vertex_halfedge",
+          [](const Mesh& self) {
+            return index_view(
+                self, [](const SurfaceMesh& m) -> const auto& { return m.vertex_halfedge_array(); });
+          },
+          "Each vertex's outgoing half-edge (a boundary one on a boundary vertex, -1 for an isolated "
+          "vertex): a read-only int32 view (vertex_slots,), no copy.")
+      .def_property_readonly(
+          "face_halfedge",
+          [](const Mesh& self) {
+            return index_view(
+                self, [](const SurfaceMesh& m) -> const auto& { return m.face_halfedge_array(); });
+          },
+          "Each face's half-edge (the face's corners start at its target): a read-only int32 view "
+          "(face_slots,), no copy.");
+}
+
+}  // namespace hedge::python

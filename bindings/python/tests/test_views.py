@@ -1,0 +1,131 @@
+"""The numpy views: zero-copy, writable positions, read-only connectivity, the view guard
+(src/py_views.cpp)."""
+
+import gc
+
+import numpy as np
+import pytest
+from conftest import assert_valid, grid_arrays
+
+import hedge
+
+
+def test_positions_is_a_writable_view_of_the_mesh(grid):
+    P = grid.positions
+    assert P.shape == (grid.vertex_slots, 3) and P.dtype == np.float32
+    assert not P.flags.owndata and P.flags.writeable
+    assert np.shares_memory(P, grid.positions)
+    P[3] = (7, 8, 9)
+    grid.positions_changed([3])
+    del P
+    np.testing.assert_array_equal(grid.to_arrays()[0][3], [7, 8, 9])
+    assert_valid(grid)
+
+
+def test_connectivity_views_share_memory_and_are_read_only(grid):
+    for name in ("halfedge_vertex", "halfedge_next", "halfedge_face", "vertex_halfedge", "face_halfedge"):
+        view = getattr(grid, name)
+        assert view.dtype == np.int32 and not view.flags.owndata, name
+        assert np.shares_memory(view, getattr(grid, name)), name
+        with pytest.raises(ValueError):
+            view[0] = 1
+    assert len(grid.halfedge_vertex) == grid.halfedge_slots
+    assert len(grid.vertex_halfedge) == grid.vertex_slots
+    assert len(grid.face_halfedge) == grid.face_slots
+
+
+def test_connectivity_views_agree_with_the_faces(grid):
+    V, F = grid.to_arrays()
+    to, nxt, face = grid.halfedge_vertex, grid.halfedge_next, grid.halfedge_face
+    fh = grid.face_halfedge
+    for f in range(grid.n_faces):
+        # A face's corners start at the target of its half-edge.
+        h, corners = fh[f], []
+        for _ in range(3):
+            assert face[h] == f
+            corners.append(to[h])
+            h = nxt[h]
+        assert h == fh[f]
+        assert corners == list(F[f])
+    # Twin is h ^ 1: a half-edge's origin is its twin's target.
+    h = np.arange(grid.halfedge_slots)
+    origin = to[h ^ 1]
+    assert np.all(to[nxt[h]] != origin[nxt[h]])
+    assert np.all(origin[nxt[h]] == to[h])
+    # Boundary half-edges have no face.
+    assert np.count_nonzero(face == -1) == 16
+
+
+def test_one_ring_through_the_views(grid):
+    # The numpy fast path of the docs: the outgoing half-edges of v are found by rotating through
+    # next(twin(h)); here compared with the edges of the face list.
+    to, nxt, vh = grid.halfedge_vertex, grid.halfedge_next, grid.vertex_halfedge
+    center = 12  # the middle vertex of the 4 x 4 grid
+    ring, h = [], vh[center]
+    while True:
+        ring.append(int(to[h]))
+        h = nxt[h ^ 1]
+        if h == vh[center]:
+            break
+    _, F = grid.to_arrays()
+    expected = {int(x) for f in F if center in f for x in f} - {center}
+    assert sorted(ring) == sorted(expected) and len(ring) == len(expected)
+
+
+def test_a_view_keeps_the_mesh_alive():
+    V, F = grid_arrays(2)
+    mesh = hedge.Mesh.from_arrays(V, F)
+    P, nxt = mesh.positions, mesh.halfedge_next
+    expected = P.copy()
+    del mesh
+    gc.collect()
+    np.testing.assert_array_equal(P, expected)
+    assert len(nxt) > 0 and nxt[0] >= 0
+
+
+def test_views_block_edits_that_add_elements(grid):
+    P = grid.positions
+    before = grid.to_arrays()
+    with pytest.raises(hedge.ViewsExportedError) as caught:
+        grid.split_edge(0)
+    assert isinstance(caught.value, BufferError)
+    with pytest.raises(hedge.ViewsExportedError):
+        grid.split_face(0)
+    # A slice keeps the view alive through its base.
+    row = P[1:2]
+    del P
+    with pytest.raises(hedge.ViewsExportedError):
+        grid.split_face(0)
+    del row
+    np.testing.assert_array_equal(grid.to_arrays()[1], before[1])
+    # Edits that add nothing move nothing: they are allowed with views alive.
+    nxt = grid.halfedge_next
+    interior = next(e for e in range(grid.n_edges) if grid.can_flip(e))
+    assert grid.flip(interior) == interior
+    del nxt
+    assert grid.split_face(0) is not None
+    assert_valid(grid)
+
+
+def test_positions_changed_checks_before_marking(grid):
+    P = grid.positions
+    P[2, 0] = np.inf
+    with pytest.raises(hedge.InvalidArgumentError) as caught:
+        grid.positions_changed()
+    assert "vertex 2" in str(caught.value)
+    P[2, 0] = 2.0
+    grid.positions_changed()
+    with pytest.raises(hedge.BadHandleError):
+        grid.positions_changed([grid.vertex_slots])
+    with pytest.raises(hedge.BadHandleError):
+        grid.positions_changed([-1])
+    with pytest.raises(hedge.InvalidArgumentError):
+        grid.positions_changed(np.zeros((2, 2), dtype=np.int64))
+    assert_valid(grid)
+
+
+def test_to_arrays_adopts_its_buffers(grid):
+    V, F = grid.to_arrays()
+    # The exported vectors are the arrays' memory (a capsule owns them): no copy after the export.
+    assert not V.flags.owndata and not F.flags.owndata
+    assert not np.shares_memory(V, grid.positions)
