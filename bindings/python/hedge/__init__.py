@@ -10,7 +10,8 @@
     mesh.write("out.ply")
 
 Half-edge h's twin is ``h ^ 1`` and its edge ``h >> 1``; the connectivity views
-(``halfedge_vertex``, ``halfedge_next``, ``halfedge_face``, ``vertex_halfedge``, ``face_halfedge``)
+(``halfedge_vertex_array``, ``halfedge_next_array``, ``halfedge_face_array``,
+``vertex_halfedge_array``, ``face_halfedge_array``)
 are read-only int32 arrays over the mesh's memory, -1 meaning "none".
 """
 

@@ -26,14 +26,6 @@ std::optional<Vec3> vec3(const Point& p) {
   return Vec3{(*p)[0], (*p)[1], (*p)[2]};
 }
 
-//! A Python int as an element index: a negative one is out of range (BadHandleError), as a too
-//! large one is for the core's checks.
-std::uint32_t index(std::int64_t i, const char* kind) {
-  if (i < 0 || i > 0xfffffffeLL)
-    binding::fail(HEDGE_ERROR_BAD_HANDLE, std::string(kind) + " " + std::to_string(i) + " is out of range");
-  return static_cast<std::uint32_t>(i);
-}
-
 //! Runs an edit: its result, or none if the library refused it (the reason goes to last_refusal;
 //! the mesh is unchanged). `grows`: the edit adds elements, so it needs the views released first.
 template <typename Body>
@@ -68,7 +60,7 @@ std::optional<std::string> refusal_of(const Mesh& self, const std::string& name,
   const auto use = self.use();
   const binding::Edit e = binding::parse_edit(name);
   std::vector<std::uint32_t> ids;
-  for (const std::int64_t i : elements) ids.push_back(index(i, "element"));
+  for (const std::int64_t i : elements) ids.push_back(element_index(i, "element"));
   const char* why = binding::refusal(use->mesh, e, ids);
   if (why == nullptr) return std::nullopt;
   return std::string(why);
@@ -85,7 +77,7 @@ void bind_edits(py::class_<Mesh>& mesh) {
           "split_edge",
           [](const Mesh& self, std::int64_t e, const Point& point) {
             return edit(self, "split_edge", true, [&](SurfaceMesh& m) {
-              return binding::split_edge(m, index(e, "edge"), vec3(point)).idx();
+              return binding::split_edge(m, element_index(e, "edge"), vec3(point)).idx();
             });
           },
           py::arg("edge"), py::arg("point") = py::none(),
@@ -102,7 +94,7 @@ void bind_edits(py::class_<Mesh>& mesh) {
               // The point is checked before the collapse, which cannot be undone.
               const std::optional<Vec3> p = vec3(point);
               if (p) binding::need_point(*p, "collapse");
-              const Vertex v = binding::collapse(m, index(h, "halfedge"));
+              const Vertex v = binding::collapse(m, element_index(h, "halfedge"));
               if (p) m.set_position(v, *p);
               return v.idx();
             });
@@ -117,7 +109,7 @@ void bind_edits(py::class_<Mesh>& mesh) {
           "flip",
           [](const Mesh& self, std::int64_t e) {
             return edit(self, "flip", false,
-                        [&](SurfaceMesh& m) { return binding::flip(m, index(e, "edge")).idx(); });
+                        [&](SurfaceMesh& m) { return binding::flip(m, element_index(e, "edge")).idx(); });
           },
           py::arg("edge"), "Flips the edge between two triangles. Returns the edge, or None if refused.")
       .def(
@@ -127,7 +119,7 @@ void bind_edits(py::class_<Mesh>& mesh) {
           "split_face",
           [](const Mesh& self, std::int64_t f, const Point& point) {
             return edit(self, "split_face", true, [&](SurfaceMesh& m) {
-              return binding::split_face(m, index(f, "face"), vec3(point)).idx();
+              return binding::split_face(m, element_index(f, "face"), vec3(point)).idx();
             });
           },
           py::arg("face"), py::arg("point") = py::none(),
@@ -143,7 +135,7 @@ void bind_edits(py::class_<Mesh>& mesh) {
           "cut_face",
           [](const Mesh& self, std::int64_t h0, std::int64_t h1) {
             return edit(self, "cut_face", true, [&](SurfaceMesh& m) {
-              return binding::cut_face(m, index(h0, "halfedge"), index(h1, "halfedge")).idx();
+              return binding::cut_face(m, element_index(h0, "halfedge"), element_index(h1, "halfedge")).idx();
             });
           },
           py::arg("halfedge0"), py::arg("halfedge1"),
@@ -157,7 +149,8 @@ void bind_edits(py::class_<Mesh>& mesh) {
           [](const Mesh& self, std::int64_t h) {
             return edit(self, "fill_hole", true, [&](SurfaceMesh& m) {
               std::vector<std::int64_t> faces;
-              for (const Face f : binding::fill_hole(m, index(h, "halfedge"))) faces.push_back(f.idx());
+              for (const Face f : binding::fill_hole(m, element_index(h, "halfedge")))
+                faces.push_back(f.idx());
               return faces;
             });
           },
@@ -177,7 +170,7 @@ void bind_edits(py::class_<Mesh>& mesh) {
           [](const Mesh& self, std::int64_t f) {
             return edit(self, "remove_face", false,
                         [&](SurfaceMesh& m) {
-                          binding::remove_face(m, index(f, "face"));
+                          binding::remove_face(m, element_index(f, "face"));
                           return true;
                         })
                 .has_value();

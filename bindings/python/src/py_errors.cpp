@@ -56,6 +56,12 @@ void require_no_views(const State& state, const std::string& what) {
                         "arrays under them; delete the views first (nothing was changed)"};
 }
 
+std::uint32_t element_index(std::int64_t i, const char* kind) {
+  if (i < 0 || i > 0xfffffffeLL)
+    binding::fail(HEDGE_ERROR_BAD_HANDLE, std::string(kind) + " " + std::to_string(i) + " is out of range");
+  return static_cast<std::uint32_t>(i);
+}
+
 void register_errors() { py::register_exception_translator(translate); }
 
 }  // namespace hedge::python

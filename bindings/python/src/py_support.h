@@ -16,6 +16,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
@@ -57,6 +58,10 @@ struct ViewsExported {
 //! \throw ViewsExported if numpy views of the mesh's arrays are alive; `what` names the call.
 void require_no_views(const State& state, const std::string& what);
 
+//! A Python int as an element index of the core's checks: a negative one (or one past 32 bits) is
+//! out of range. \throw BindingError (HEDGE_ERROR_BAD_HANDLE) "<kind> -1 is out of range".
+std::uint32_t element_index(std::int64_t i, const char* kind);
+
 //! Installs the translator of hedge's exceptions into the hedge._errors classes.
 void register_errors();
 
@@ -66,5 +71,7 @@ void bind_mesh(py::module_& m, py::class_<Mesh>& mesh);
 void bind_views(py::module_& m, py::class_<Mesh>& mesh);
 //! The edits and their can_* predicates (py_edits.cpp).
 void bind_edits(py::class_<Mesh>& mesh);
+//! The scalar queries of one element and the one-ring (py_queries.cpp).
+void bind_queries(py::class_<Mesh>& mesh);
 
 }  // namespace hedge::python

@@ -78,11 +78,7 @@ void positions_changed(const Mesh& self,
       throw InvalidInputError("positions_changed: vertices must be a 1-D array of indices");
     const auto r = vertices->unchecked<1>();
     for (py::ssize_t i = 0; i < r.shape(0); ++i) {
-      const std::int64_t v = r(i);
-      if (v < 0 || v > 0xfffffffeLL)
-        binding::fail(HEDGE_ERROR_BAD_HANDLE,
-                      "positions_changed: vertex " + std::to_string(v) + " is out of range");
-      moved.push_back(binding::live_vertex(m, static_cast<std::uint32_t>(v)));
+      moved.push_back(binding::live_vertex(m, element_index(r(i), "vertex")));
     }
   } else {
     for (const Vertex v : m.vertices()) moved.push_back(v);
@@ -110,7 +106,7 @@ void bind_views(py::module_& m, py::class_<Mesh>& mesh) {
            "(an array of indices), or every live vertex if None. Each is checked to be live and "
            "finite first; on an error nothing is marked.")
       .def_property_readonly(
-          "halfedge_vertex",
+          "halfedge_vertex_array",
           [](const Mesh& self) {
             return index_view(
                 self, [](const SurfaceMesh& m) -> const auto& { return m.halfedge_vertex_array(); });
@@ -118,21 +114,21 @@ void bind_views(py::module_& m, py::class_<Mesh>& mesh) {
           "Each half-edge's target vertex: a read-only int32 view (halfedge_slots,), no copy. The twin "
           "of half-edge h is h ^ 1 and its edge h >> 1; no array is stored for them.")
       .def_property_readonly(
-          "halfedge_next",
+          "halfedge_next_array",
           [](const Mesh& self) {
             return index_view(
                 self, [](const SurfaceMesh& m) -> const auto& { return m.halfedge_next_array(); });
           },
           "Each half-edge's next half-edge in its face or boundary loop: a read-only int32 view, no copy.")
       .def_property_readonly(
-          "halfedge_face",
+          "halfedge_face_array",
           [](const Mesh& self) {
             return index_view(
                 self, [](const SurfaceMesh& m) -> const auto& { return m.halfedge_face_array(); });
           },
           "Each half-edge's face, -1 on a boundary half-edge: a read-only int32 view, no copy.")
       .def_property_readonly(
-          "vertex_halfedge",
+          "vertex_halfedge_array",
           [](const Mesh& self) {
             return index_view(
                 self, [](const SurfaceMesh& m) -> const auto& { return m.vertex_halfedge_array(); });
@@ -140,7 +136,7 @@ void bind_views(py::module_& m, py::class_<Mesh>& mesh) {
           "Each vertex's outgoing half-edge (a boundary one on a boundary vertex, -1 for an isolated "
           "vertex): a read-only int32 view (vertex_slots,), no copy.")
       .def_property_readonly(
-          "face_halfedge",
+          "face_halfedge_array",
           [](const Mesh& self) {
             return index_view(
                 self, [](const SurfaceMesh& m) -> const auto& { return m.face_halfedge_array(); });

@@ -12,7 +12,7 @@ def interior_edge(mesh):
 
 
 def boundary_halfedge(mesh):
-    return int(np.flatnonzero(mesh.halfedge_face == -1)[0])
+    return int(np.flatnonzero(mesh.halfedge_face_array == -1)[0])
 
 
 def test_split_edge(grid):
@@ -51,7 +51,7 @@ def test_collapse(grid):
     # An interior half-edge: its origin merges into its target, which can move.
     h = 2 * interior_edge(grid)
     assert grid.can_collapse(h)
-    target = int(grid.halfedge_vertex[h])
+    target = int(grid.halfedge_vertex_array[h])
     v = grid.collapse(h, point=(1.5, 1.5, 0.5))
     assert v == target and grid.n_vertices == 24
     np.testing.assert_array_equal(grid.positions[v], [1.5, 1.5, 0.5])
@@ -61,8 +61,8 @@ def test_collapse(grid):
 def test_split_face_and_cut_face():
     V = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], dtype=np.float32)
     mesh = hedge.Mesh.from_arrays(V, [[0, 1, 2, 3]])
-    h0 = int(mesh.face_halfedge[0])
-    h2 = int(mesh.halfedge_next[mesh.halfedge_next[h0]])
+    h0 = int(mesh.face_halfedge_array[0])
+    h2 = int(mesh.halfedge_next_array[mesh.halfedge_next_array[h0]])
     assert mesh.can_cut_face(h0, h2)
     assert not mesh.can_cut_face(h0, h0)
     assert mesh.cut_face(h0, h0) is None and mesh.last_refusal
@@ -76,15 +76,15 @@ def test_split_face_and_cut_face():
 
 def test_remove_face_then_fill_hole(grid):
     def interior(f):
-        h = grid.face_halfedge[f]
-        hs = [h, grid.halfedge_next[h], grid.halfedge_next[grid.halfedge_next[h]]]
-        return all(grid.halfedge_face[x ^ 1] != -1 for x in hs)
+        h = grid.face_halfedge_array[f]
+        hs = [h, grid.halfedge_next_array[h], grid.halfedge_next_array[grid.halfedge_next_array[h]]]
+        return all(grid.halfedge_face_array[x ^ 1] != -1 for x in hs)
 
     f = next(f for f in range(grid.n_faces) if interior(f) and grid.can_remove_face(f))
-    h = int(grid.face_halfedge[f])
+    h = int(grid.face_halfedge_array[f])
     assert grid.can_remove_face(f)
     assert grid.remove_face(f) is True and grid.last_refusal is None
-    assert grid.n_faces == 31 and grid.halfedge_face[h] == -1
+    assert grid.n_faces == 31 and grid.halfedge_face_array[h] == -1
     assert not grid.can_remove_face(f)
     with pytest.raises(hedge.BadHandleError):
         grid.remove_face(f)

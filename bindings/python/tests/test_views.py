@@ -23,21 +23,21 @@ def test_positions_is_a_writable_view_of_the_mesh(grid):
 
 
 def test_connectivity_views_share_memory_and_are_read_only(grid):
-    for name in ("halfedge_vertex", "halfedge_next", "halfedge_face", "vertex_halfedge", "face_halfedge"):
+    for name in ("halfedge_vertex_array", "halfedge_next_array", "halfedge_face_array", "vertex_halfedge_array", "face_halfedge_array"):
         view = getattr(grid, name)
         assert view.dtype == np.int32 and not view.flags.owndata, name
         assert np.shares_memory(view, getattr(grid, name)), name
         with pytest.raises(ValueError):
             view[0] = 1
-    assert len(grid.halfedge_vertex) == grid.halfedge_slots
-    assert len(grid.vertex_halfedge) == grid.vertex_slots
-    assert len(grid.face_halfedge) == grid.face_slots
+    assert len(grid.halfedge_vertex_array) == grid.halfedge_slots
+    assert len(grid.vertex_halfedge_array) == grid.vertex_slots
+    assert len(grid.face_halfedge_array) == grid.face_slots
 
 
 def test_connectivity_views_agree_with_the_faces(grid):
     V, F = grid.to_arrays()
-    to, nxt, face = grid.halfedge_vertex, grid.halfedge_next, grid.halfedge_face
-    fh = grid.face_halfedge
+    to, nxt, face = grid.halfedge_vertex_array, grid.halfedge_next_array, grid.halfedge_face_array
+    fh = grid.face_halfedge_array
     for f in range(grid.n_faces):
         # A face's corners start at the target of its half-edge.
         h, corners = fh[f], []
@@ -59,7 +59,7 @@ def test_connectivity_views_agree_with_the_faces(grid):
 def test_one_ring_through_the_views(grid):
     # The numpy fast path of the docs: the outgoing half-edges of v are found by rotating through
     # next(twin(h)); here compared with the edges of the face list.
-    to, nxt, vh = grid.halfedge_vertex, grid.halfedge_next, grid.vertex_halfedge
+    to, nxt, vh = grid.halfedge_vertex_array, grid.halfedge_next_array, grid.vertex_halfedge_array
     center = 12  # the middle vertex of the 4 x 4 grid
     ring, h = [], vh[center]
     while True:
@@ -75,7 +75,7 @@ def test_one_ring_through_the_views(grid):
 def test_a_view_keeps_the_mesh_alive():
     V, F = grid_arrays(2)
     mesh = hedge.Mesh.from_arrays(V, F)
-    P, nxt = mesh.positions, mesh.halfedge_next
+    P, nxt = mesh.positions, mesh.halfedge_next_array
     expected = P.copy()
     del mesh
     gc.collect()
@@ -99,7 +99,7 @@ def test_views_block_edits_that_add_elements(grid):
     del row
     np.testing.assert_array_equal(grid.to_arrays()[1], before[1])
     # Edits that add nothing move nothing: they are allowed with views alive.
-    nxt = grid.halfedge_next
+    nxt = grid.halfedge_next_array
     interior = next(e for e in range(grid.n_edges) if grid.can_flip(e))
     assert grid.flip(interior) == interior
     del nxt

@@ -1,0 +1,103 @@
+// The scalar queries of one element (next, twin, to_vertex, ...) and the one-ring of a vertex, as
+// the C ABI's hedge_halfedge_* and hedge_vertex_* queries give them: every index checked first
+// (BadHandleError), -1 for "none". For many elements at once, the array views are the fast path.
+#include <cstdint>
+#include <vector>
+
+#include "binding/handles.h"
+#include "py_support.h"
+
+namespace hedge::python {
+
+namespace {
+
+std::int64_t index_or_none(Index i) { return i == kInvalidIndex ? -1 : static_cast<std::int64_t>(i); }
+
+//! Binds `name` as a query of one live half-edge: get(mesh, h) gives the answer's index.
+template <typename Get>
+void halfedge_query(py::class_<Mesh>& mesh, const char* name, Get get, const char* doc) {
+  mesh.def(
+      name,
+      [get](const Mesh& self, std::int64_t h) {
+        const auto use = self.use();
+        const SurfaceMesh& m = use->mesh;
+        return index_or_none(get(m, binding::live_halfedge(m, element_index(h, "halfedge"))));
+      },
+      py::arg("halfedge"), doc);
+}
+
+//! The elements get(mesh, h) of v's outgoing half-edges, clockwise, as an int32 array.
+template <typename Get>
+py::array_t<std::int32_t> around(const Mesh& self, std::int64_t v, Get get) {
+  const auto use = self.use();
+  const SurfaceMesh& m = use->mesh;
+  const Vertex vh = binding::live_vertex(m, element_index(v, "vertex"));
+  std::vector<std::int32_t> out;
+  for (const Halfedge h : m.halfedges(vh)) {
+    const Index i = get(m, h);
+    if (i != kInvalidIndex) out.push_back(static_cast<std::int32_t>(i));
+  }
+  py::array_t<std::int32_t> a(static_cast<py::ssize_t>(out.size()));
+  std::copy(out.begin(), out.end(), a.mutable_data());
+  return a;
+}
+
+}  // namespace
+
+void bind_queries(py::class_<Mesh>& mesh) {
+  halfedge_query(
+      mesh, "next", [](const SurfaceMesh& m, Halfedge h) { return m.next(h).idx(); },
+      "The next half-edge in the face (or boundary loop) of the half-edge.");
+  halfedge_query(
+      mesh, "prev", [](const SurfaceMesh& m, Halfedge h) { return m.prev(h).idx(); },
+      "The previous half-edge in the face (or boundary loop); O(face degree), as prev is not stored.");
+  halfedge_query(
+      mesh, "twin", [](const SurfaceMesh&, Halfedge h) { return SurfaceMesh::twin(h).idx(); },
+      "The opposite half-edge: h ^ 1.");
+  halfedge_query(
+      mesh, "to_vertex", [](const SurfaceMesh& m, Halfedge h) { return m.to_vertex(h).idx(); },
+      "The vertex the half-edge points to.");
+  halfedge_query(
+      mesh, "from_vertex", [](const SurfaceMesh& m, Halfedge h) { return m.from_vertex(h).idx(); },
+      "The vertex the half-edge leaves: its twin's target.");
+  halfedge_query(
+      mesh, "face", [](const SurfaceMesh& m, Halfedge h) { return m.face(h).idx(); },
+      "The face of the half-edge, -1 on the boundary.");
+  halfedge_query(
+      mesh, "edge", [](const SurfaceMesh&, Halfedge h) { return SurfaceMesh::edge(h).idx(); },
+      "The edge of the half-edge: h >> 1.");
+  mesh.def(
+          "vertex_halfedge",
+          [](const Mesh& self, std::int64_t v) {
+            const auto use = self.use();
+            const SurfaceMesh& m = use->mesh;
+            return index_or_none(m.halfedge(binding::live_vertex(m, element_index(v, "vertex"))).idx());
+          },
+          py::arg("vertex"),
+          "The vertex's outgoing half-edge (a boundary one on a boundary vertex), -1 if isolated.")
+      .def(
+          "face_halfedge",
+          [](const Mesh& self, std::int64_t f) {
+            const auto use = self.use();
+            const SurfaceMesh& m = use->mesh;
+            return index_or_none(m.halfedge(binding::live_face(m, element_index(f, "face"))).idx());
+          },
+          py::arg("face"), "The face's half-edge: its corners start at this half-edge's target.")
+      .def(
+          "one_ring",
+          [](const Mesh& self, std::int64_t v) {
+            return around(self, v, [](const SurfaceMesh& m, Halfedge h) { return m.to_vertex(h).idx(); });
+          },
+          py::arg("vertex"),
+          "The vertex's neighbours, clockwise, from the target of vertex_halfedge(vertex): an int32 array.")
+      .def(
+          "vertex_faces",
+          [](const Mesh& self, std::int64_t v) {
+            return around(self, v, [](const SurfaceMesh& m, Halfedge h) { return m.face(h).idx(); });
+          },
+          py::arg("vertex"),
+          "The faces around the vertex, clockwise (the face of each outgoing half-edge; a boundary gap "
+          "has none): an int32 array.");
+}
+
+}  // namespace hedge::python

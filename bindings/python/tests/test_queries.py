@@ -1,0 +1,54 @@
+"""The scalar queries and the one-ring (src/py_queries.cpp), checked against the array views."""
+
+import numpy as np
+import pytest
+
+import hedge
+
+
+def test_halfedge_queries_match_the_views(grid):
+    to, nxt, face = grid.halfedge_vertex_array, grid.halfedge_next_array, grid.halfedge_face_array
+    for h in range(grid.halfedge_slots):
+        assert grid.next(h) == nxt[h]
+        assert grid.to_vertex(h) == to[h]
+        assert grid.from_vertex(h) == to[h ^ 1]
+        assert grid.face(h) == face[h]
+        assert grid.twin(h) == h ^ 1 and grid.edge(h) == h >> 1
+        assert grid.next(grid.prev(h)) == h
+
+
+def test_vertex_and_face_halfedges(grid):
+    for v in range(grid.vertex_slots):
+        assert grid.vertex_halfedge(v) == grid.vertex_halfedge_array[v]
+        assert grid.from_vertex(grid.vertex_halfedge(v)) == v
+    for f in range(grid.face_slots):
+        assert grid.face(grid.face_halfedge(f)) == f
+
+
+def test_one_ring_and_vertex_faces(grid):
+    # Vertex 12 is the centre of the 4 x 4 grid, vertex 0 a corner.
+    _, F = grid.to_arrays()
+    for v in (12, 0, 2):
+        ring = grid.one_ring(v)
+        assert ring.dtype == np.int32
+        assert sorted(ring) == sorted({int(x) for f in F if v in f for x in f} - {v})
+        assert sorted(grid.vertex_faces(v)) == [i for i, f in enumerate(F) if v in f]
+    assert len(grid.one_ring(12)) == 6 and len(grid.vertex_faces(0)) == 2
+
+
+def test_queries_check_their_handles(grid):
+    for call in (grid.next, grid.prev, grid.twin, grid.to_vertex, grid.face):
+        with pytest.raises(hedge.BadHandleError):
+            call(grid.halfedge_slots)
+        with pytest.raises(hedge.BadHandleError):
+            call(-1)
+    with pytest.raises(hedge.BadHandleError):
+        grid.one_ring(10**6)
+    with pytest.raises(hedge.BadHandleError):
+        grid.face_halfedge(grid.face_slots)
+    f = next(f for f in range(grid.n_faces) if grid.can_remove_face(f))
+    grid.remove_face(f)
+    with pytest.raises(hedge.BadHandleError) as caught:
+        grid.face_halfedge(f)
+    assert "deleted" in str(caught.value)
+    assert grid.validate() == []
