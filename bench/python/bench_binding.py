@@ -1,0 +1,107 @@
+"""What the Python binding costs over the library: one-run ratios with medians of a few runs.
+
+    PYTHONPATH=build/release/bindings/python/package /usr/bin/python3 bench/python/bench_binding.py \
+        build/release/bindings/python/build_reference
+
+(the second argument: the build_reference program, built with -DHEDGE_BUILD_PYTHON=ON). Prints:
+ - Mesh.from_arrays on a 1,002,528-triangle grid beside C++ build_triangles on the same arrays;
+ - the per-call time of a scalar query (mesh.next(h));
+ - a one-ring circulation over every vertex through the array views in numpy, beside the same in a
+   Python loop over mesh.next / mesh.twin.
+"""
+
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+import hedge
+
+
+def plate(n):
+    """An n x n grid of squares cut into triangles: 2 n^2 triangles."""
+    xs, ys = np.meshgrid(np.arange(n + 1, dtype=np.float32), np.arange(n + 1, dtype=np.float32))
+    V = np.column_stack([xs.ravel(), ys.ravel(), np.zeros(xs.size, dtype=np.float32)])
+    j, i = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
+    a = (j * (n + 1) + i).ravel()
+    b, c, d = a + 1, a + n + 2, a + n + 1
+    F = np.empty((2 * a.size, 3), dtype=np.uint32)
+    F[0::2] = np.column_stack([a, b, c])
+    F[1::2] = np.column_stack([a, c, d])
+    return V, F
+
+
+def median_seconds(fn, runs):
+    times = []
+    for _ in range(runs):
+        t0 = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
+
+
+def main():
+    reference = sys.argv[1] if len(sys.argv) > 1 else None
+    V, F = plate(708)
+    runs = 7
+    py_ms = 1e3 * median_seconds(lambda: hedge.Mesh.from_arrays(V, F), runs)
+    print(f"from_arrays, {len(F):,} triangles: {py_ms:.1f} ms (median of {runs})")
+    if reference:
+        with tempfile.TemporaryDirectory() as tmp:
+            vp, fp = os.path.join(tmp, "v.f32"), os.path.join(tmp, "f.u32")
+            V.tofile(vp)
+            F.tofile(fp)
+            out = subprocess.run([reference, vp, fp, str(runs)], capture_output=True, text=True, check=True)
+        cpp_ms = float(out.stdout)
+        print(f"C++ build_triangles, same arrays: {cpp_ms:.1f} ms; ratio {py_ms / cpp_ms:.2f}x")
+
+    mesh = hedge.Mesh.from_arrays(*plate(100))
+    n = 200_000
+    nxt = mesh.next
+
+    def calls():
+        h = 0
+        for _ in range(n):
+            h = nxt(h)
+
+    def empty_loop():
+        h = 0
+        for _ in range(n):
+            h = h
+
+    per_call = (median_seconds(calls, 5) - median_seconds(empty_loop, 5)) / n
+    print(f"mesh.next(h): {1e9 * per_call:.0f} ns a call (loop overhead subtracted)")
+
+    def ring_sizes_numpy():
+        # The fast path: the valence of every vertex from the views, with no Python loop.
+        to = mesh.halfedge_vertex_array
+        return np.bincount(to[to >= 0], minlength=mesh.vertex_slots)
+
+    def ring_sizes_loop():
+        sizes = []
+        for v in range(mesh.vertex_slots):
+            h0 = h = mesh.vertex_halfedge(v)
+            k = 0
+            while True:
+                k += 1
+                h = mesh.next(h ^ 1)
+                if h == h0:
+                    break
+            sizes.append(k)
+        return sizes
+
+    assert list(ring_sizes_numpy()) == ring_sizes_loop()
+    t_np = median_seconds(ring_sizes_numpy, 5)
+    t_loop = median_seconds(ring_sizes_loop, 3)
+    print(
+        f"valence of all {mesh.vertex_slots:,} vertices: numpy over the views {1e3 * t_np:.2f} ms, "
+        f"Python loop over next/twin {1e3 * t_loop:.1f} ms ({t_loop / t_np:.0f}x)"
+    )
+
+
+if __name__ == "__main__":
+    main()
