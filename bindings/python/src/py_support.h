@@ -73,5 +73,7 @@ void bind_views(py::module_& m, py::class_<Mesh>& mesh);
 void bind_edits(py::class_<Mesh>& mesh);
 //! The scalar queries of one element and the one-ring (py_queries.cpp).
 void bind_queries(py::class_<Mesh>& mesh);
+//! ray_cast and closest_point over arrays (py_picking.cpp).
+void bind_picking(py::class_<Mesh>& mesh);
 
 }  // namespace hedge::python
