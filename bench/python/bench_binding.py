@@ -5,6 +5,7 @@
 
 (the second argument: the build_reference program, built with -DHEDGE_BUILD_PYTHON=ON). Prints:
  - Mesh.from_arrays on a 1,002,528-triangle grid beside C++ build_triangles on the same arrays;
+ - Mesh.ray_cast of 100,000 rays on that mesh beside FaceBvh::first_hit on the same rays;
  - the per-call time of a scalar query (mesh.next(h));
  - a one-ring circulation over every vertex through the array views in numpy, beside the same in a
    Python loop over mesh.next / mesh.twin.
@@ -50,14 +51,24 @@ def main():
     runs = 7
     py_ms = 1e3 * median_seconds(lambda: hedge.Mesh.from_arrays(V, F), runs)
     print(f"from_arrays, {len(F):,} triangles: {py_ms:.1f} ms (median of {runs})")
+    rng = np.random.default_rng(1)
+    n_rays = 100_000
+    origins = np.column_stack([rng.uniform(0, 708, (n_rays, 2)), np.full(n_rays, 10.0)]).astype(np.float32)
+    directions = np.column_stack([rng.uniform(-0.3, 0.3, (n_rays, 2)), -np.ones(n_rays)]).astype(np.float32)
+    big = hedge.Mesh.from_arrays(V, F)
+    big.ray_cast(origins[:1], directions[:1])  # builds the picking tree
+    ray_ms = 1e3 * median_seconds(lambda: big.ray_cast(origins, directions), runs)
+    print(f"ray_cast, {n_rays:,} rays: {ray_ms:.1f} ms")
     if reference:
         with tempfile.TemporaryDirectory() as tmp:
-            vp, fp = os.path.join(tmp, "v.f32"), os.path.join(tmp, "f.u32")
+            vp, fp, rp = (os.path.join(tmp, name) for name in ("v.f32", "f.u32", "r.f32"))
             V.tofile(vp)
             F.tofile(fp)
-            out = subprocess.run([reference, vp, fp, str(runs)], capture_output=True, text=True, check=True)
-        cpp_ms = float(out.stdout)
+            np.column_stack([origins, directions]).astype(np.float32).tofile(rp)
+            out = subprocess.run([reference, vp, fp, str(runs), rp], capture_output=True, text=True, check=True)
+        cpp_ms, cpp_ray_ms = (float(x) for x in out.stdout.split())
         print(f"C++ build_triangles, same arrays: {cpp_ms:.1f} ms; ratio {py_ms / cpp_ms:.2f}x")
+        print(f"C++ first_hit, same rays: {cpp_ray_ms:.1f} ms; ratio {ray_ms / cpp_ray_ms:.2f}x")
 
     mesh = hedge.Mesh.from_arrays(*plate(100))
     n = 200_000

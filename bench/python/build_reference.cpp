@@ -1,8 +1,10 @@
 // The C++ side of bench/python/bench_binding.py: times build_triangles on the arrays the script
 // wrote (raw float32 positions and uint32 triangles), so that Mesh.from_arrays can be compared with
-// the library on the same input in the same build.
-//   build_reference POSITIONS.f32 TRIANGLES.u32 RUNS
-// Prints the median time in milliseconds.
+// the library on the same input in the same build; with a third file of rays (6 float32 each:
+// origin, direction), also times FaceBvh::first_hit over all of them on the built mesh, as
+// Mesh.ray_cast walks them.
+//   build_reference POSITIONS.f32 TRIANGLES.u32 RUNS [RAYS.f32]
+// Prints the median times in milliseconds: the build, then the rays.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -11,6 +13,7 @@
 #include <iterator>
 #include <vector>
 
+#include "hedge/algorithms/locate.h"
 #include "hedge/core/build.h"
 
 namespace {
@@ -25,11 +28,16 @@ std::vector<T> read_raw(const char* path) {
   return out;
 }
 
+double median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: build_reference POSITIONS.f32 TRIANGLES.u32 RUNS\n");
+  if (argc != 4 && argc != 5) {
+    std::fprintf(stderr, "usage: build_reference POSITIONS.f32 TRIANGLES.u32 RUNS [RAYS.f32]\n");
     return 2;
   }
   const std::vector<hedge::Vec3> positions = read_raw<hedge::Vec3>(argv[1]);
@@ -46,7 +54,24 @@ int main(int argc, char** argv) {
     if (mesh.n_faces() != triangles.size() / 3) return 1;
     ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
   }
-  std::nth_element(ms.begin(), ms.begin() + static_cast<std::ptrdiff_t>(ms.size() / 2), ms.end());
-  std::printf("%.3f\n", ms[ms.size() / 2]);
+  std::printf("%.3f\n", median(ms));
+  if (argc == 5) {
+    const std::vector<float> rays = read_raw<float>(argv[4]);
+    const hedge::SurfaceMesh mesh = hedge::build_triangles(positions, triangles, options);
+    const hedge::FaceBvh bvh(mesh);
+    std::vector<std::int32_t> faces(rays.size() / 6);
+    ms.clear();
+    for (int i = 0; i < runs; ++i) {
+      const auto t0 = std::chrono::steady_clock::now();
+      for (std::size_t r = 0; r < faces.size(); ++r) {
+        const float* q = &rays[6 * r];
+        const auto hit = bvh.first_hit(hedge::Vec3{q[0], q[1], q[2]}, hedge::Vec3{q[3], q[4], q[5]});
+        faces[r] = hit ? static_cast<std::int32_t>(hit->face.idx()) : -1;
+      }
+      const auto t1 = std::chrono::steady_clock::now();
+      ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+    }
+    std::printf("%.3f\n", median(ms));
+  }
   return 0;
 }

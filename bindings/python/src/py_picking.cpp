@@ -32,7 +32,8 @@ Vec3 row(const Points& p, py::ssize_t i) {
 }
 
 py::tuple ray_cast(const Mesh& self, const py::object& origins, const py::object& directions) {
-  const Points o = rows_of_3(origins, "ray_cast", "origins"), d = rows_of_3(directions, "ray_cast", "directions");
+  const Points o = rows_of_3(origins, "ray_cast", "origins"),
+               d = rows_of_3(directions, "ray_cast", "directions");
   if (o.shape(0) != d.shape(0))
     throw InvalidInputError("ray_cast: " + std::to_string(o.shape(0)) + " origins but " +
                             std::to_string(d.shape(0)) + " directions");
