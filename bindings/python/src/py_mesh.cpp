@@ -149,14 +149,23 @@ Mesh from_arrays(const py::object& V, const py::object& F, bool repair) {
   return Mesh(std::move(state));
 }
 
-Mesh read(const std::string& path) {
+//! A path given as str or os.PathLike (pathlib.Path), as the file functions of Python take it.
+std::string fspath(const py::object& path) {
+  const py::object p = py::module_::import("os").attr("fspath")(path);
+  if (!py::isinstance<py::str>(p)) throw InvalidInputError("a path must be a str or an os.PathLike of str, not bytes");
+  return p.cast<std::string>();
+}
+
+Mesh read(const py::object& path_like) {
+  const std::string path = fspath(path_like);
   auto state = std::make_shared<State>();
   py::gil_scoped_release unlocked;
   state->mesh = read_mesh(path, &state->report);
   return Mesh(std::move(state));
 }
 
-void write(const Mesh& self, const std::string& path) {
+void write(const Mesh& self, const py::object& path_like) {
+  const std::string path = fspath(path_like);
   const auto use = self.use();
   py::gil_scoped_release unlocked;
   write_mesh(use->mesh, path);

@@ -101,6 +101,16 @@ def test_write_and_read(tmp_path, grid):
     assert_valid(back)
 
 
+def test_paths_may_be_path_objects(tmp_path, grid):
+    path = tmp_path / "grid.off"
+    grid.write(path)
+    assert hedge.read(path).n_faces == grid.n_faces
+    with pytest.raises(hedge.InvalidArgumentError):
+        hedge.read(b"/bytes/path.obj")
+    with pytest.raises(TypeError):
+        hedge.read(3)
+
+
 def test_file_errors_are_os_errors(tmp_path, grid):
     with pytest.raises(hedge.IoError) as caught:
         hedge.read(str(tmp_path / "missing.obj"))
