@@ -152,7 +152,8 @@ Mesh from_arrays(const py::object& V, const py::object& F, bool repair) {
 //! A path given as str or os.PathLike (pathlib.Path), as the file functions of Python take it.
 std::string fspath(const py::object& path) {
   const py::object p = py::module_::import("os").attr("fspath")(path);
-  if (!py::isinstance<py::str>(p)) throw InvalidInputError("a path must be a str or an os.PathLike of str, not bytes");
+  if (!py::isinstance<py::str>(p))
+    throw InvalidInputError("a path must be a str or an os.PathLike of str, not bytes");
   return p.cast<std::string>();
 }
 
@@ -169,6 +170,15 @@ void write(const Mesh& self, const py::object& path_like) {
   const auto use = self.use();
   py::gil_scoped_release unlocked;
   write_mesh(use->mesh, path);
+}
+
+//! A deep copy: the mesh and its build report; no picking tree (the copy builds its own on use).
+Mesh clone(const Mesh& self) {
+  const auto use = self.use();
+  auto state = std::make_shared<State>();
+  state->mesh = use->mesh;
+  state->report = use->report;
+  return Mesh(std::move(state));
 }
 
 py::tuple to_arrays(const Mesh& self) {
@@ -207,6 +217,12 @@ void bind_mesh(py::module_& m, py::class_<Mesh>& mesh) {
       .def("write", &write, py::arg("path"),
            "Writes the mesh in the format of the path's extension, atomically (a failed write leaves "
            "no partial file). Raises IoError.")
+      .def("clone", &clone,
+           "A deep copy of the mesh (with its build report), independent of this one; copy.copy() and "
+           "copy.deepcopy() give the same.")
+      .def("__copy__", &clone)
+      .def(
+          "__deepcopy__", [](const Mesh& self, const py::object&) { return clone(self); }, py::arg("memo"))
       .def("to_arrays", &to_arrays,
            "The live mesh as (V, F): V an (n, 3) float32 array, F an (m, 3) int32 array for a "
            "triangle mesh or a list of int32 arrays, one per polygon. Deleted elements are skipped, "

@@ -126,6 +126,23 @@ def test_file_errors_are_os_errors(tmp_path, grid):
         grid.write(str(tmp_path / "unknown.format"))
 
 
+def test_clone_is_independent(grid):
+    import copy
+
+    for twin in (grid.clone(), copy.copy(grid), copy.deepcopy(grid)):
+        assert not np.shares_memory(twin.positions, grid.positions)
+        assert twin.build_report == grid.build_report
+        P = twin.positions
+        P[0] = (5, 5, 5)
+        twin.positions_changed([0])
+        del P
+        assert twin.split_face(0) is not None
+        assert (twin.n_faces, grid.n_faces) == (34, 32)
+        assert grid.positions[0].tolist() == [0, 0, 0]
+        assert_valid(twin)
+    assert_valid(grid)
+
+
 def test_empty_mesh():
     mesh = hedge.Mesh()
     assert (mesh.n_vertices, mesh.n_faces) == (0, 0)
