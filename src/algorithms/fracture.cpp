@@ -29,9 +29,6 @@ namespace {
 
 using detail::number;
 
-//! The face property of a face's submesh (material), std::int32_t.
-constexpr const char* kSubmeshProperty = "f:submesh";
-
 //! A barycentric weight this close to 1 (or to 0) puts the impact on a corner (or an edge).
 constexpr double kSnap = 1e-3;
 constexpr std::size_t kMaxRefineSplits = 20000;  // per round
@@ -594,15 +591,17 @@ std::vector<Shard> detach(SurfaceMesh& mesh, std::vector<std::vector<Face>>& cel
 
 //! The diagonal of the box of every shard's vertices: the size of what broke off. O(k).
 double span(const std::vector<Shard>& shards) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  Vec3d lo{inf, inf, inf}, hi{-inf, -inf, -inf};
-  for (const Shard& shard : shards)
-    for (Vertex v : shard.mesh.vertices()) {
-      const Vec3d q = to_double(shard.mesh.position(v));
-      lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
-      hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
+  BoundingBox all;
+  for (const Shard& shard : shards) {
+    const BoundingBox box = bounding_box(shard.mesh);
+    if (box.empty) continue;
+    for (int a = 0; a < 3; ++a) {
+      all.min[a] = all.empty ? box.min[a] : std::min(all.min[a], box.min[a]);
+      all.max[a] = all.empty ? box.max[a] : std::max(all.max[a], box.max[a]);
     }
-  return shards.empty() ? 0.0 : norm(hi - lo);
+    all.empty = false;
+  }
+  return norm(to_double(all.size()));
 }
 
 //! Every shard made a solid and measured (measure_shard).

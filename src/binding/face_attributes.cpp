@@ -10,7 +10,6 @@ namespace hedge::binding {
 
 namespace {
 constexpr const char* kTexcoord = "h:texcoord";
-constexpr const char* kSubmesh = "f:submesh";
 
 // Fails unless the property `name` is absent or of type T.
 template <typename T>
@@ -40,7 +39,7 @@ void check(const SurfaceMesh& m, std::size_t corners, const FaceAttributes& a) {
     if (*a.submesh < 0 || *a.submesh > kMaxSubmesh)
       fail(HEDGE_ERROR_INVALID_ARGUMENT, "add_face: submesh " + std::to_string(*a.submesh) +
                                              " is not in [0, " + std::to_string(kMaxSubmesh) + "]");
-    need_type<std::int32_t>(m.face_properties(), kSubmesh, "int32");
+    need_type<std::int32_t>(m.face_properties(), kSubmeshProperty, "int32");
   }
 }
 }  // namespace
@@ -55,7 +54,7 @@ Face add_face(SurfaceMesh& m, std::span<const Vertex> corners, const FaceAttribu
       for (std::size_t i = 0; i < corners.size(); ++i)
         if (corners[i] == m.to_vertex(h)) texcoord[h] = attributes.texcoords[i];
   }
-  if (attributes.submesh) m.face_property<std::int32_t>(kSubmesh)[f] = *attributes.submesh;
+  if (attributes.submesh) m.face_property<std::int32_t>(kSubmeshProperty)[f] = *attributes.submesh;
   m.mark_changed(f);
   return f;
 }

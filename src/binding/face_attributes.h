@@ -13,9 +13,6 @@
 
 namespace hedge::binding {
 
-//! The largest submesh a face takes (an engine's submesh index; Unity's meshes allow far fewer).
-inline constexpr std::int32_t kMaxSubmesh = 65535;
-
 //! What a new face carries besides its corners.
 struct FaceAttributes {
   //! One per corner, in the corners' order, written into "h:texcoord" (added, (0, 0) at every other

@@ -371,7 +371,7 @@ hedge_status hedge_mesh_copy_face_submeshes(const hedge_mesh* mesh, int32_t* buf
     need(out_count, "out_count");
     *out_count = m.face_slots();
     check_capacity(m.face_slots(), buffer, capacity);
-    const FaceProperty<std::int32_t> submesh = m.get_face_property<std::int32_t>("f:submesh");
+    const FaceProperty<std::int32_t> submesh = m.get_face_property<std::int32_t>(kSubmeshProperty);
     for (std::size_t i = 0; i < m.face_slots(); ++i)
       buffer[i] = submesh ? submesh[Face(static_cast<Index>(i))] : 0;
   });

@@ -437,7 +437,7 @@ hedge_status hedge_face_submesh(const hedge_mesh* mesh, uint32_t face, int32_t* 
   return guard([&] {
     auto object = find_mesh(mesh);
     const Face f = live_face(object->mesh, face);
-    auto prop = object->mesh.get_face_property<std::int32_t>("f:submesh");
+    auto prop = object->mesh.get_face_property<std::int32_t>(kSubmeshProperty);
     need(out_submesh, "out_submesh") = prop ? prop[f] : 0;
   });
 }
@@ -447,10 +447,11 @@ hedge_status hedge_set_face_submesh(hedge_mesh* mesh, uint32_t face, int32_t sub
     auto object = find_mesh(mesh);
     SurfaceMesh& m = object->mesh;
     const Face f = live_face(m, face);
-    if (submesh < 0 || submesh > 65535)
-      fail(HEDGE_ERROR_INVALID_ARGUMENT, "submesh is " + std::to_string(submesh) + ", outside [0, 65535]");
-    auto prop = m.get_face_property<std::int32_t>("f:submesh");
-    if (!prop) prop = m.add_face_property<std::int32_t>("f:submesh", 0);
+    if (submesh < 0 || submesh > kMaxSubmesh)
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "submesh is " + std::to_string(submesh) + ", outside [0, " + std::to_string(kMaxSubmesh) + "]");
+    auto prop = m.get_face_property<std::int32_t>(kSubmeshProperty);
+    if (!prop) prop = m.add_face_property<std::int32_t>(kSubmeshProperty, 0);
     prop[f] = submesh;
     m.changes().mark(f, ChangeEvent::faces_changed);
     m.changes().notify();

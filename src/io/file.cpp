@@ -26,6 +26,10 @@ std::string lower(std::string s) {
 }  // namespace
 
 FileFormat format_from_path(const std::string& path) {
+  if (path.empty())
+    throw IoError(
+        path, 0, -1,
+        "no file name: the path is empty (expected one ending in .obj, .off, .ply, .stl, .gltf or .glb)");
   const std::size_t slash = path.find_last_of(detail::kPathSeparators);
   const std::size_t dot = path.find_last_of('.');
   if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) {

@@ -75,9 +75,10 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
     throw InvalidInputError("engine mesh: submeshes has " + std::to_string(view.submeshes.size()) +
                             " entries for " + std::to_string(triangles) + " triangles");
   for (std::size_t t = 0; t < view.submeshes.size(); ++t)
-    if (view.submeshes[t] < 0 || view.submeshes[t] > 65535)
+    if (view.submeshes[t] < 0 || view.submeshes[t] > kMaxSubmesh)
       throw InvalidInputError("engine mesh: submesh of triangle " + std::to_string(t) + " is " +
-                              std::to_string(view.submeshes[t]) + ", outside [0, 65535]");
+                              std::to_string(view.submeshes[t]) + ", outside [0, " +
+                              std::to_string(kMaxSubmesh) + "]");
   // Positions are checked by build().
 
   // Each corner carries the index of its engine vertex through the build, encoded exactly in the
@@ -141,7 +142,7 @@ SurfaceMesh from_engine_mesh(const EngineMeshView& view, const EngineImportOptio
   if (!view.texcoords1.empty())
     fill(mesh.add_halfedge_property<Vec2>("h:texcoord1"), [&](Index i) { return view.texcoords1[i]; });
   if (!view.submeshes.empty()) {
-    auto submesh = mesh.add_face_property<std::int32_t>("f:submesh", 0);
+    auto submesh = mesh.add_face_property<std::int32_t>(kSubmeshProperty, 0);
     for (std::size_t t = 0; t < rep.face_map.size(); ++t)
       if (rep.face_map[t] != kInvalidIndex) submesh[Face(rep.face_map[t])] = view.submeshes[t];
   }

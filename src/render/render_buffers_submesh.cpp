@@ -14,9 +14,6 @@
 namespace hedge {
 
 namespace {
-// Submesh ids above this are refused: each id costs a region, even an empty one.
-constexpr std::int32_t kMaxSubmesh = 65535;
-
 // Spare triangle slots a region of n triangles gets at a full build.
 std::uint32_t spare_room(std::uint32_t n) { return n / 16 + 16; }
 }  // namespace
@@ -29,7 +26,7 @@ std::uint32_t RenderBuffers::wanted_region(Face f) const {
 
 void RenderBuffers::check_submeshes() const {
   const SurfaceMesh& m = *mesh_;
-  const auto submesh = m.get_face_property<std::int32_t>("f:submesh");
+  const auto submesh = m.get_face_property<std::int32_t>(kSubmeshProperty);
   if (!submesh) return;
   for (Face f : m.faces())
     if (submesh[f] > kMaxSubmesh)
@@ -40,7 +37,7 @@ void RenderBuffers::check_submeshes() const {
 
 void RenderBuffers::layout_regions() {
   const SurfaceMesh& m = *mesh_;
-  f_submesh_ = m.get_face_property<std::int32_t>("f:submesh");
+  f_submesh_ = m.get_face_property<std::int32_t>(kSubmeshProperty);
   std::vector<std::uint32_t> count(1, 0);
   if (f_submesh_)  // without submeshes, the one region needs no count
     for (Face f : m.faces()) {

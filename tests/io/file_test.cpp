@@ -43,6 +43,14 @@ TEST(FormatFromPath, ExtensionsAreCaseInsensitive) {
   EXPECT_THROW(format_from_path("mesh.fbx"), IoError);
   EXPECT_THROW(format_from_path("dir.obj/mesh"), IoError);
   EXPECT_THROW(format_from_path("obj"), IoError);
+  // An empty path says so, rather than blaming an extension.
+  try {
+    format_from_path("");
+    ADD_FAILURE() << "an empty path was accepted";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("the path is empty"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("unknown file extension"), std::string::npos) << e.what();
+  }
   try {
     format_from_path("model.3ds");
   } catch (const IoError& e) {

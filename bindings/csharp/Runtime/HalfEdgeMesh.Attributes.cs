@@ -10,7 +10,6 @@ namespace Hedge
     public sealed partial class HalfEdgeMesh
     {
         // The largest submesh a face takes (the C ABI's limit).
-        internal const int MaxFaceSubmesh = 65535;
 
         /// <summary>Adds a face with the first count corners (counter-clockwise), their texture coordinates and
         /// its submesh. Everything is checked before the mesh changes.</summary>
@@ -50,9 +49,9 @@ namespace Hedge
 
         internal static void CheckSubmesh(int submesh)
         {
-            if (submesh < -1 || submesh > MaxFaceSubmesh)
+            if (submesh < -1 || submesh > MaxSubmesh)
                 throw new ArgumentOutOfRangeException("submesh", submesh,
-                                                      "a face's submesh is in [0, " + MaxFaceSubmesh + "] (-1: the default)");
+                                                      "a face's submesh is in [0, " + MaxSubmesh + "] (-1: the default)");
         }
     }
 

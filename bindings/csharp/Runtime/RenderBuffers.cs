@@ -199,7 +199,7 @@ namespace Hedge
         /// recording.</summary>
         public RenderChangeLog CreateChangeLog()
         {
-            if (IsDisposed) throw new ObjectDisposedException("RenderBuffers");
+            ThrowIfDisposed();
             var log = new RenderChangeLog(this);
             changeLogs.Add(log);
             return log;

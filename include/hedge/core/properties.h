@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <concepts>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -18,6 +19,14 @@
 #include "hedge/error.h"
 
 namespace hedge {
+
+//! The face property of a face's submesh (its material slot in an engine), std::int32_t in
+//! [0, kMaxSubmesh]; the faces of a mesh without it are in submesh 0. Face properties follow their
+//! faces through edits, subdivision, decimation, detach and fracture, so the submesh does too.
+inline constexpr const char* kSubmeshProperty = "f:submesh";
+//! The largest submesh a face takes: render buffers give every id up to the largest one a region
+//! of the index buffer, even an empty one (engines allow far fewer materials).
+inline constexpr std::int32_t kMaxSubmesh = 65535;
 
 class BasePropertyArray {
  public:

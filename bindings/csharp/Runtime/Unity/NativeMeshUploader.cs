@@ -277,11 +277,12 @@ namespace Hedge.Unity
             return array;
         }
 
-        /// <summary>Frees the 16-bit index scratch and stops the change log (the Mesh and the buffers stay).</summary>
         void ThrowIfDisposed()
         {
             if (disposed) throw new ObjectDisposedException("NativeMeshUploader");
         }
+
+        /// <summary>Frees the 16-bit index scratch and stops the change log (the Mesh and the buffers stay).</summary>
 
         public void Dispose()
         {

@@ -103,7 +103,7 @@ public sealed class BreakOnClick : MonoBehaviour
             Debug.Log("hedge: no break at " + localPoint + ": " + e.Message);
             return made;
         }
-        uploader.Upload(buffers.Sync());
+        uploader.Upload(); // syncs, then uploads what changed
         meshCollider.sharedMesh = null; // let the collider take in the hole
         meshCollider.sharedMesh = rendered;
         foreach (FractureShard piece in pieces)

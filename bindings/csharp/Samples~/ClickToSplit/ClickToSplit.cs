@@ -83,7 +83,7 @@ public sealed class ClickToSplit : MonoBehaviour
                 return;
             }
         }
-        uploader.Upload(buffers.Sync());
+        uploader.Upload(); // syncs, then uploads what changed
         meshCollider.sharedMesh = null; // let the collider take in the new triangles
         meshCollider.sharedMesh = rendered;
     }
