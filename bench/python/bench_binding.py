@@ -6,6 +6,7 @@
 (the second argument: the build_reference program, built with -DHEDGE_BUILD_PYTHON=ON). Prints:
  - Mesh.from_arrays on a 1,002,528-triangle grid beside C++ build_triangles on the same arrays;
  - Mesh.ray_cast of 100,000 rays on that mesh beside FaceBvh::first_hit on the same rays;
+ - Mesh.one_rings() of every vertex of that mesh beside the same gathering in C++;
  - the per-call time of a scalar query (mesh.next(h));
  - a one-ring circulation over every vertex through the array views in numpy, beside the same in a
    Python loop over mesh.next / mesh.twin.
@@ -59,6 +60,8 @@ def main():
     big.ray_cast(origins[:1], directions[:1])  # builds the picking tree
     ray_ms = 1e3 * median_seconds(lambda: big.ray_cast(origins, directions), runs)
     print(f"ray_cast, {n_rays:,} rays: {ray_ms:.1f} ms")
+    ring_ms = 1e3 * median_seconds(big.one_rings, runs)
+    print(f"one_rings, all {big.n_vertices:,} vertices: {ring_ms:.1f} ms")
     if reference:
         with tempfile.TemporaryDirectory() as tmp:
             vp, fp, rp = (os.path.join(tmp, name) for name in ("v.f32", "f.u32", "r.f32"))
@@ -66,8 +69,9 @@ def main():
             F.tofile(fp)
             np.column_stack([origins, directions]).astype(np.float32).tofile(rp)
             out = subprocess.run([reference, vp, fp, str(runs), rp], capture_output=True, text=True, check=True)
-        cpp_ms, cpp_ray_ms = (float(x) for x in out.stdout.split())
+        cpp_ms, cpp_ring_ms, cpp_ray_ms = (float(x) for x in out.stdout.split())
         print(f"C++ build_triangles, same arrays: {cpp_ms:.1f} ms; ratio {py_ms / cpp_ms:.2f}x")
+        print(f"C++ one-rings, same mesh: {cpp_ring_ms:.1f} ms; ratio {ring_ms / cpp_ring_ms:.2f}x")
         print(f"C++ first_hit, same rays: {cpp_ray_ms:.1f} ms; ratio {ray_ms / cpp_ray_ms:.2f}x")
 
     mesh = hedge.Mesh.from_arrays(*plate(100))
@@ -87,32 +91,49 @@ def main():
     per_call = (median_seconds(calls, 5) - median_seconds(empty_loop, 5)) / n
     print(f"mesh.next(h): {1e9 * per_call:.0f} ns a call (loop overhead subtracted)")
 
-    def ring_sizes_numpy():
-        # The fast path: the valence of every vertex from the views, with no Python loop.
-        to = mesh.halfedge_vertex_array
-        return np.bincount(to[to >= 0], minlength=mesh.vertex_slots)
+    def rings_numpy():
+        # The fast path without a native call: every vertex circulated at once, one numpy step per
+        # ring position; a stable sort by vertex keeps each ring in its clockwise order.
+        to, nxt = mesh.halfedge_vertex_array, mesh.halfedge_next_array
+        start = mesh.vertex_halfedge_array.astype(np.int64)
+        vertices = np.flatnonzero(start >= 0)
+        h, first = start[vertices], start[vertices]
+        owners, neighbours = [], []
+        while vertices.size:
+            owners.append(vertices)
+            neighbours.append(to[h])
+            h = nxt[h ^ 1]
+            going = h != first
+            vertices, h, first = vertices[going], h[going], first[going]
+        owners, neighbours = np.concatenate(owners), np.concatenate(neighbours)
+        order = np.argsort(owners, kind="stable")
+        offsets = np.zeros(mesh.vertex_slots + 1, dtype=np.int64)
+        np.cumsum(np.bincount(owners, minlength=mesh.vertex_slots), out=offsets[1:])
+        return offsets, neighbours[order]
 
-    def ring_sizes_loop():
-        sizes = []
+    def rings_loop():
+        offsets, neighbours = [0], []
         for v in range(mesh.vertex_slots):
             h0 = h = mesh.vertex_halfedge(v)
-            k = 0
             while True:
-                k += 1
+                neighbours.append(mesh.to_vertex(h))
                 h = mesh.next(h ^ 1)
                 if h == h0:
                     break
-            sizes.append(k)
-        return sizes
+            offsets.append(len(neighbours))
+        return offsets, neighbours
 
-    assert list(ring_sizes_numpy()) == ring_sizes_loop()
-    t_np = median_seconds(ring_sizes_numpy, 5)
-    t_loop = median_seconds(ring_sizes_loop, 3)
+    native = mesh.one_rings()
+    for offsets, neighbours in (rings_numpy(), rings_loop()):
+        assert list(offsets) == list(native[0]) and list(neighbours) == list(native[1])
+    t_native = median_seconds(mesh.one_rings, 7)
+    t_np = median_seconds(rings_numpy, 5)
+    t_loop = median_seconds(rings_loop, 3)
     print(
-        f"valence of all {mesh.vertex_slots:,} vertices: numpy over the views {1e3 * t_np:.2f} ms, "
-        f"Python loop over next/twin {1e3 * t_loop:.1f} ms ({t_loop / t_np:.0f}x)"
+        f"one-rings of all {mesh.vertex_slots:,} vertices: mesh.one_rings() {1e3 * t_native:.2f} ms, "
+        f"numpy over the views {1e3 * t_np:.2f} ms, Python loop over next/twin {1e3 * t_loop:.1f} ms "
+        f"({t_loop / t_np:.0f}x numpy)"
     )
-
 
 if __name__ == "__main__":
     main()

@@ -2,9 +2,10 @@
 // wrote (raw float32 positions and uint32 triangles), so that Mesh.from_arrays can be compared with
 // the library on the same input in the same build; with a third file of rays (6 float32 each:
 // origin, direction), also times FaceBvh::first_hit over all of them on the built mesh, as
-// Mesh.ray_cast walks them.
+// Mesh.ray_cast walks them. It also times the one-rings of every vertex gathered into offsets and
+// neighbours, as Mesh.one_rings() returns them.
 //   build_reference POSITIONS.f32 TRIANGLES.u32 RUNS [RAYS.f32]
-// Prints the median times in milliseconds: the build, then the rays.
+// Prints the median times in milliseconds: the build, the one-rings, then the rays.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -55,9 +56,27 @@ int main(int argc, char** argv) {
     ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
   }
   std::printf("%.3f\n", median(ms));
+  const hedge::SurfaceMesh mesh = hedge::build_triangles(positions, triangles, options);
+  ms.clear();
+  for (int i = 0; i < runs; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<std::int64_t> offsets(mesh.vertex_slots() + 1, 0);
+    for (const hedge::Vertex v : mesh.vertices())
+      for ([[maybe_unused]] const hedge::Halfedge h : mesh.halfedges(v)) ++offsets[v.idx() + 1];
+    for (std::size_t v = 0; v < mesh.vertex_slots(); ++v) offsets[v + 1] += offsets[v];
+    std::vector<std::int32_t> neighbours(static_cast<std::size_t>(offsets.back()));
+    for (const hedge::Vertex v : mesh.vertices()) {
+      std::int64_t k = offsets[v.idx()];
+      for (const hedge::Halfedge h : mesh.halfedges(v))
+        neighbours[static_cast<std::size_t>(k++)] = static_cast<std::int32_t>(mesh.to_vertex(h).idx());
+    }
+    const auto t1 = std::chrono::steady_clock::now();
+    if (neighbours.size() != 2 * mesh.n_edges()) return 1;
+    ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+  }
+  std::printf("%.3f\n", median(ms));
   if (argc == 5) {
     const std::vector<float> rays = read_raw<float>(argv[4]);
-    const hedge::SurfaceMesh mesh = hedge::build_triangles(positions, triangles, options);
     const hedge::FaceBvh bvh(mesh);
     std::vector<std::int32_t> faces(rays.size() / 6);
     ms.clear();

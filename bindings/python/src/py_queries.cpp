@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "binding/handles.h"
+#include "hedge/error.h"
 #include "py_support.h"
 
 namespace hedge::python {
@@ -40,6 +41,52 @@ py::array_t<std::int32_t> around(const Mesh& self, std::int64_t v, Get get) {
   py::array_t<std::int32_t> a(static_cast<py::ssize_t>(out.size()));
   std::copy(out.begin(), out.end(), a.mutable_data());
   return a;
+}
+
+//! The one-rings of `vertices` (every vertex slot if None) as (offsets, neighbours): vertex i's
+//! ring is neighbours[offsets[i]:offsets[i + 1]], clockwise as one_ring() gives it; a deleted or
+//! isolated vertex has an empty ring. Two passes over the rings, with the GIL released.
+py::tuple one_rings(const Mesh& self, const py::object& vertices) {
+  const auto use = self.use();
+  const SurfaceMesh& m = use->mesh;
+  std::vector<Vertex> list;
+  if (vertices.is_none()) {
+    list.reserve(m.vertex_slots());
+    for (Index v = 0; v < m.vertex_slots(); ++v) list.push_back(Vertex(v));
+  } else {
+    if (py::isinstance<py::array>(vertices) &&
+        py::reinterpret_borrow<py::array>(vertices).dtype().kind() != 'i' &&
+        py::reinterpret_borrow<py::array>(vertices).dtype().kind() != 'u')
+      throw InvalidInputError("one_rings: vertices must hold integers");
+    const auto a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(vertices);
+    if (!a || a.ndim() != 1)
+      throw InvalidInputError("one_rings: vertices must be a 1-d array of vertex indices");
+    list.reserve(static_cast<std::size_t>(a.size()));
+    for (py::ssize_t i = 0; i < a.size(); ++i)
+      list.push_back(binding::live_vertex(m, element_index(a.data()[i], "vertex")));
+  }
+  py::array_t<std::int64_t> offsets(static_cast<py::ssize_t>(list.size() + 1));
+  std::int64_t* off = offsets.mutable_data();
+  std::size_t total = 0;
+  {
+    py::gil_scoped_release unlocked;
+    off[0] = 0;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      if (!m.is_deleted(list[i]) && !m.is_isolated(list[i]))
+        for ([[maybe_unused]] const Halfedge h : m.halfedges(list[i])) ++total;
+      off[i + 1] = static_cast<std::int64_t>(total);
+    }
+  }
+  py::array_t<std::int32_t> neighbours(static_cast<py::ssize_t>(total));
+  std::int32_t* out = neighbours.mutable_data();
+  {
+    py::gil_scoped_release unlocked;
+    for (const Vertex v : list) {
+      if (m.is_deleted(v) || m.is_isolated(v)) continue;
+      for (const Halfedge h : m.halfedges(v)) *out++ = static_cast<std::int32_t>(m.to_vertex(h).idx());
+    }
+  }
+  return py::make_tuple(offsets, neighbours);
 }
 
 }  // namespace
@@ -97,7 +144,12 @@ void bind_queries(py::class_<Mesh>& mesh) {
           },
           py::arg("vertex"),
           "The faces around the vertex, clockwise (the face of each outgoing half-edge; a boundary gap "
-          "has none): an int32 array.");
+          "has none): an int32 array.")
+      .def("one_rings", &one_rings, py::arg("vertices") = py::none(),
+           "The one-rings of many vertices in one call (every vertex slot if vertices is None): "
+           "(offsets, neighbours), int64 and int32 arrays; vertex i's ring, clockwise as one_ring() "
+           "gives it, is neighbours[offsets[i]:offsets[i + 1]]. A deleted or isolated vertex slot has "
+           "an empty ring; a listed vertex must be live (BadHandleError).");
 }
 
 }  // namespace hedge::python

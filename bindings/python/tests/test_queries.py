@@ -52,3 +52,37 @@ def test_queries_check_their_handles(grid):
         grid.face_halfedge(f)
     assert "deleted" in str(caught.value)
     assert grid.validate() == []
+
+
+def test_one_rings_of_many_vertices_match_one_ring(grid):
+    offsets, neighbours = grid.one_rings()
+    assert offsets.dtype == np.int64 and neighbours.dtype == np.int32
+    assert len(offsets) == grid.vertex_slots + 1 and offsets[-1] == len(neighbours)
+    for v in range(grid.vertex_slots):
+        assert list(neighbours[offsets[v] : offsets[v + 1]]) == list(grid.one_ring(v))
+    # A chosen list, in its order, repeats allowed.
+    chosen = np.array([12, 0, 12], dtype=np.uint16)
+    offsets, neighbours = grid.one_rings(chosen)
+    rings = [list(neighbours[offsets[i] : offsets[i + 1]]) for i in range(3)]
+    assert rings == [list(grid.one_ring(12)), list(grid.one_ring(0)), list(grid.one_ring(12))]
+
+
+def test_one_rings_skip_deleted_vertices_and_check_listed_ones(grid):
+    # Vertex 4, the corner at (4, 0), is in face 6 only: removing that face deletes it.
+    assert sorted(grid.vertex_faces(4)) == [6]
+    assert grid.remove_face(6)
+    offsets, neighbours = grid.one_rings()
+    sizes = np.diff(offsets)
+    assert sizes[4] == 0
+    for v in range(grid.vertex_slots):
+        if v != 4:
+            assert list(neighbours[offsets[v] : offsets[v + 1]]) == list(grid.one_ring(v))
+    with pytest.raises(hedge.BadHandleError):
+        grid.one_rings([4])
+    with pytest.raises(hedge.BadHandleError):
+        grid.one_rings([grid.vertex_slots])
+    with pytest.raises(hedge.InvalidArgumentError):
+        grid.one_rings(np.array([0.5]))
+    with pytest.raises(hedge.InvalidArgumentError):
+        grid.one_rings(np.zeros((2, 2), dtype=np.int32))
+    assert grid.validate() == []
