@@ -28,11 +28,12 @@ from ._errors import (
     TopologyError,
     ViewsExportedError,
 )
-from ._hedge import Mesh, read
+from ._hedge import Mesh, read, render
 
 __all__ = [
     "Mesh",
     "read",
+    "render",
     "HedgeError",
     "InvalidArgumentError",
     "BadHandleError",

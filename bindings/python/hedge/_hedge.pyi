@@ -93,3 +93,24 @@ class Mesh:
     def refusal(self, edit: str, elements: Sequence[int]) -> Optional[str]: ...
     @property
     def last_refusal(self) -> Optional[str]: ...
+    # Pictures (py_render.cpp)
+    def _repr_png_(self) -> Optional[bytes]: ...
+
+def render(
+    mesh: Mesh,
+    width: int = 800,
+    height: int = 600,
+    *,
+    view: str = "iso",
+    eye: _Point = None,
+    target: _Point = None,
+    up: _Point = None,
+    fov: float = 30.0,
+    shading: str = "smooth",
+    color_by: str = "none",
+    wireframe: bool = False,
+    feature_angle: float = 60.0,
+    supersample: int = 2,
+    threads: int = 0,
+    path: Optional[Union[str, os.PathLike[str]]] = None,
+) -> Optional[npt.NDArray[np.uint8]]: ...
