@@ -28,10 +28,11 @@ from ._errors import (
     TopologyError,
     ViewsExportedError,
 )
-from ._hedge import Mesh, read, render
+from ._hedge import Mesh, Shard, read, render
 
 __all__ = [
     "Mesh",
+    "Shard",
     "read",
     "render",
     "HedgeError",
