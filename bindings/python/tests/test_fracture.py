@@ -3,6 +3,7 @@
 import json
 import os
 import subprocess
+import threading
 
 import numpy as np
 import pytest
@@ -222,4 +223,30 @@ def test_the_picking_tree_follows_the_fracture():
     mesh.fracture(IMPACT, seed=3)
     faces, _, _ = mesh.ray_cast([[10.3, 10.4, 1], [0.5, 0.5, 1]], [[0, 0, -1], [0, 0, -1]])
     assert faces[0] == -1 and faces[1] >= 0  # a hole where it broke, the plate elsewhere
+    assert_valid(mesh)
+
+
+def test_fracture_releases_the_gil():
+    n = 300  # the first strike builds the picking tree over 180,000 triangles
+    xs, ys = np.meshgrid(np.arange(n + 1.0), np.arange(n + 1.0))
+    V = np.column_stack([xs.ravel(), ys.ravel(), np.zeros(xs.size)])
+    a = (np.arange(n)[None, :] + (n + 1) * np.arange(n)[:, None]).ravel()
+    F = np.concatenate([np.column_stack([a, a + 1, a + n + 2]), np.column_stack([a, a + n + 2, a + n + 1])])
+    mesh = hedge.Mesh.from_arrays(V, F)
+    ticks = []
+    done = threading.Event()
+
+    def tick():
+        while not done.is_set():
+            ticks.append(1)
+            done.wait(0.0005)
+
+    thread = threading.Thread(target=tick)
+    thread.start()
+    try:
+        shards = mesh.fracture((150.3, 150.4, 0), seed=1)
+    finally:
+        done.set()
+        thread.join()
+    assert shards and len(ticks) > 10  # about 2 while the GIL is held
     assert_valid(mesh)
