@@ -28,11 +28,13 @@ from ._errors import (
     TopologyError,
     ViewsExportedError,
 )
-from ._hedge import Mesh, read
+from ._hedge import Mesh, Shard, read, render
 
 __all__ = [
     "Mesh",
+    "Shard",
     "read",
+    "render",
     "HedgeError",
     "InvalidArgumentError",
     "BadHandleError",

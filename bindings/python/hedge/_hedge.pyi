@@ -1,7 +1,7 @@
 # Type stubs of hedge's native module (src/*.cpp), written by hand: keep them in step with the
 # bindings. Indices are Python ints; -1 means "none".
 import os
-from typing import Optional, Sequence, Union
+from typing import Any, Optional, Sequence, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -96,3 +96,56 @@ class Mesh:
     def refusal(self, edit: str, elements: Sequence[int]) -> Optional[str]: ...
     @property
     def last_refusal(self) -> Optional[str]: ...
+    # Pictures (py_render.cpp)
+    def _repr_png_(self) -> Optional[bytes]: ...
+    # Fracture (py_fracture.cpp): the shards leave this mesh; a material is a preset or a dict
+    # {name, rings: [{points, spacing, jitter}], grain, grain_stretch, refine_edge, absolute}
+    def fracture(
+        self,
+        point: Sequence[float],
+        material: Union[str, dict[str, Any]] = "glass",
+        *,
+        seed: int = 0,
+        break_radius: float = 0.0,
+        thickness: float = 0.0,
+        relative_thickness: float = 0.0,
+        inner_submesh: int = -1,
+        density: float = 1.0,
+        tolerance: float = 0.0,
+        hulls: bool = True,
+    ) -> list[Shard]: ...
+
+def render(
+    mesh: Mesh,
+    width: int = 800,
+    height: int = 600,
+    *,
+    view: str = "iso",
+    eye: _Point = None,
+    target: _Point = None,
+    up: _Point = None,
+    fov: float = 30.0,
+    shading: str = "smooth",
+    color_by: str = "none",
+    wireframe: bool = False,
+    feature_angle: float = 60.0,
+    supersample: int = 2,
+    threads: int = 0,
+    path: Optional[Union[str, os.PathLike[str]]] = None,
+) -> Optional[npt.NDArray[np.uint8]]: ...
+
+class Shard(Mesh):
+    @property
+    def centroid(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def area(self) -> float: ...
+    @property
+    def closed(self) -> bool: ...
+    @property
+    def mass_properties(self) -> dict[str, Union[float, npt.NDArray[np.float64]]]: ...
+    @property
+    def hull(self) -> Optional[Mesh]: ...
+    @property
+    def hull_dimension(self) -> str: ...
+    @property
+    def hull_tolerance(self) -> float: ...

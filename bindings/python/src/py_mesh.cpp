@@ -9,9 +9,17 @@
 #include "hedge/core/export.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "py_args.h"
 #include "py_support.h"
 
 namespace hedge::python {
+
+std::string fspath(const py::object& path) {
+  const py::object p = py::module_::import("os").attr("fspath")(path);
+  if (!py::isinstance<py::str>(p))
+    throw InvalidInputError("a path must be a str or an os.PathLike of str, not bytes");
+  return p.cast<std::string>();
+}
 
 namespace {
 
@@ -147,14 +155,6 @@ Mesh from_arrays(const py::object& V, const py::object& F, bool repair) {
     }
   }
   return Mesh(std::move(state));
-}
-
-//! A path given as str or os.PathLike (pathlib.Path), as the file functions of Python take it.
-std::string fspath(const py::object& path) {
-  const py::object p = py::module_::import("os").attr("fspath")(path);
-  if (!py::isinstance<py::str>(p))
-    throw InvalidInputError("a path must be a str or an os.PathLike of str, not bytes");
-  return p.cast<std::string>();
 }
 
 Mesh read(const py::object& path_like) {

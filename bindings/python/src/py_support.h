@@ -75,5 +75,9 @@ void bind_edits(py::class_<Mesh>& mesh);
 void bind_queries(py::class_<Mesh>& mesh);
 //! ray_cast and closest_point over arrays (py_picking.cpp).
 void bind_picking(py::class_<Mesh>& mesh);
+//! hedge.render() and Mesh._repr_png_ (py_render.cpp).
+void bind_render(py::module_& m, py::class_<Mesh>& mesh);
+//! Mesh.fracture and hedge.Shard (py_fracture.cpp).
+void bind_fracture(py::module_& m, py::class_<Mesh>& mesh);
 
 }  // namespace hedge::python
