@@ -97,7 +97,30 @@ void bind_queries(py::class_<Mesh>& mesh) {
           },
           py::arg("vertex"),
           "The faces around the vertex, clockwise (the face of each outgoing half-edge; a boundary gap "
-          "has none): an int32 array.");
+          "has none): an int32 array.")
+      .def(
+          "is_boundary",
+          [](const Mesh& self, std::int64_t v) {
+            const auto use = self.use();
+            const SurfaceMesh& m = use->mesh;
+            return m.is_boundary(binding::live_vertex(m, element_index(v, "vertex")));
+          },
+          py::arg("vertex"), "True if the vertex is on a boundary, or isolated (it has no face all around).")
+      .def(
+          "boundary_vertices",
+          [](const Mesh& self) {
+            const auto use = self.use();
+            const SurfaceMesh& m = use->mesh;
+            py::array_t<bool> out(static_cast<py::ssize_t>(m.vertex_slots()));
+            bool* p = out.mutable_data();
+            for (std::size_t i = 0; i < m.vertex_slots(); ++i) {
+              const Vertex v(static_cast<Index>(i));
+              p[i] = !m.is_deleted(v) && m.is_boundary(v);
+            }
+            return out;
+          },
+          "is_boundary() of every vertex slot at once: a bool array (vertex_slots,), False for deleted "
+          "slots. np.flatnonzero() of it lists the boundary vertices.");
 }
 
 }  // namespace hedge::python
