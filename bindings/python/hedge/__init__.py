@@ -28,11 +28,12 @@ from ._errors import (
     TopologyError,
     ViewsExportedError,
 )
-from ._hedge import Mesh, read
+from ._hedge import Mesh, hausdorff_distance, read
 
 __all__ = [
     "Mesh",
     "read",
+    "hausdorff_distance",
     "HedgeError",
     "InvalidArgumentError",
     "BadHandleError",

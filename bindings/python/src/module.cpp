@@ -1,6 +1,6 @@
 // hedge._hedge: the native half of the Python package `hedge` (bindings/python/hedge/). The pieces
 // are bound in py_mesh.cpp, py_views.cpp, py_edits.cpp,
-// py_queries.cpp and py_picking.cpp; py_support.h describes the whole.
+// py_queries.cpp, py_picking.cpp and py_algorithms.cpp; py_support.h describes the whole.
 #include "py_support.h"
 
 PYBIND11_MODULE(_hedge, m) {
@@ -15,4 +15,5 @@ PYBIND11_MODULE(_hedge, m) {
   bind_edits(mesh);
   bind_queries(mesh);
   bind_picking(mesh);
+  bind_algorithms(mesh, m);
 }

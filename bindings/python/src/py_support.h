@@ -75,5 +75,7 @@ void bind_edits(py::class_<Mesh>& mesh);
 void bind_queries(py::class_<Mesh>& mesh);
 //! ray_cast and closest_point over arrays (py_picking.cpp).
 void bind_picking(py::class_<Mesh>& mesh);
+//! The whole-mesh algorithms and hedge.hausdorff_distance (py_algorithms.cpp).
+void bind_algorithms(py::class_<Mesh>& mesh, py::module_& m);
 
 }  // namespace hedge::python
