@@ -95,7 +95,8 @@ void smooth(const Mesh& self, const std::string& method, int iterations, double 
   o.fix_boundary = fix_boundary;
   std::vector<std::uint8_t> chosen;
   if (mask) {
-    if (mask->ndim() != 1) throw InvalidInputError("smooth: mask must be a 1-D array, one entry per vertex slot");
+    if (mask->ndim() != 1)
+      throw InvalidInputError("smooth: mask must be a 1-D array, one entry per vertex slot");
     chosen.assign(mask->data(), mask->data() + mask->shape(0));
     // The library wants a mask of vertex_slots entries; an empty one would mean "every vertex".
     if (chosen.empty()) chosen.push_back(0);
@@ -176,7 +177,8 @@ py::dict reorder(const Mesh& self, const std::string& ordering, std::int64_t cac
   GarbageMaps maps;
   {
     py::gil_scoped_release unlocked;
-    maps = binding::with_rollback(m, [&] { return hedge::reorder(m, o, static_cast<std::size_t>(cache_size)); });
+    maps =
+        binding::with_rollback(m, [&] { return hedge::reorder(m, o, static_cast<std::size_t>(cache_size)); });
   }
   return maps_dict(maps);
 }
@@ -284,14 +286,14 @@ py::dict one_sided(const OneSidedDistance& d) {
   return out;
 }
 
-py::dict hausdorff(const Mesh& a, const Mesh& b, std::int64_t samples, std::uint64_t seed, std::int64_t threads) {
+py::dict hausdorff(const Mesh& a, const Mesh& b, std::int64_t samples, std::uint64_t seed,
+                   std::int64_t threads) {
   if (samples < 0)
     throw InvalidInputError("hausdorff_distance: samples must be 0 or more, got " + std::to_string(samples));
   if (threads < 1 || threads > 1024)
     throw InvalidInputError("hausdorff_distance: threads must be in 1..1024, got " + std::to_string(threads));
-  const DistanceOptions o{.samples = static_cast<std::size_t>(samples),
-                          .seed = seed,
-                          .threads = static_cast<unsigned>(threads)};
+  const DistanceOptions o{
+      .samples = static_cast<std::size_t>(samples), .seed = seed, .threads = static_cast<unsigned>(threads)};
   // A mesh measured against itself is one use: a second would be refused as busy.
   const auto use_a = a.use();
   std::optional<binding::MeshUse<State>> use_b;
@@ -353,6 +355,20 @@ void bind_algorithms(py::class_<Mesh>& mesh, py::module_& m) {
            "by first use); garbage is collected too. Returns the old-to-new maps as "
            "garbage_collection() does. Raises ViewsExportedError while views are alive. Releases "
            "the GIL.")
+      .def(
+          "cache_miss_ratio",
+          [](const Mesh& self, std::int64_t cache_size) {
+            if (cache_size < 1 || cache_size > 1024)
+              throw InvalidInputError("cache_miss_ratio: cache_size must be in 1..1024, got " +
+                                      std::to_string(cache_size));
+            const auto use = self.use();
+            py::gil_scoped_release unlocked;
+            return average_cache_miss_ratio(use->mesh, static_cast<std::size_t>(cache_size));
+          },
+          py::arg("cache_size") = 16,
+          "The average cache miss ratio of drawing the faces in index order (each face a fan of "
+          "triangles) through a first-in first-out vertex cache of cache_size entries: vertex loads "
+          "per triangle, 3 at worst. reorder('vertex-cache') lowers it. Releases the GIL.")
       .def("face_normals", &face_normals,
            "Unit face normals (Newell's method; zero for a degenerate face) as a fresh (face_slots, 3) "
            "float32 array, NaN rows for deleted slots, like positions one row per slot. Also stored "
@@ -362,7 +378,8 @@ void bind_algorithms(py::class_<Mesh>& mesh, py::module_& m) {
            "'uniform', as a fresh (vertex_slots, 3) float32 array, NaN rows for deleted slots; zero "
            "for an isolated vertex. Also stored in the vertex property 'v:normal' (which write() "
            "exports). Releases the GIL.")
-      .def("corner_normals", &corner_normals, py::arg("crease_degrees") = 180.0, py::arg("weighting") = "angle",
+      .def("corner_normals", &corner_normals, py::arg("crease_degrees") = 180.0,
+           py::arg("weighting") = "angle",
            "Normals of face corners (the corner of face(h) at to_vertex(h)), smooth within wedges "
            "split at edges sharper than crease_degrees (0: flat, 180: smooth), as a fresh "
            "(halfedge_slots, 3) float32 array; zero on boundary half-edges, NaN for deleted slots. "

@@ -196,6 +196,38 @@ def test_reorder_renumbers_and_keeps_the_surface(ico):
     assert_valid(ico)
 
 
+def fifo_cache_misses(mesh, cache_size):
+    """Vertex loads per triangle of drawing the mesh's triangles in face order, each from the
+    target of its face's half-edge on, through a FIFO cache; the corners come from the views."""
+    to, nxt = mesh.halfedge_vertex_array, mesh.halfedge_next_array
+    first = mesh.face_halfedge_array
+    F = np.column_stack([to[first], to[nxt[first]], to[nxt[nxt[first]]]])
+    cache, misses = [], 0
+    for tri in F:
+        for v in tri:
+            if v not in cache:
+                misses += 1
+                cache.append(v)
+                if len(cache) > cache_size:
+                    cache.pop(0)
+    return misses / len(F)
+
+
+def test_vertex_cache_order_lowers_the_cache_miss_ratio():
+    rng = np.random.default_rng(5)
+    V, F = grid_arrays(12)
+    mesh = hedge.Mesh.from_arrays(V, F[rng.permutation(len(F))])  # faces in a shuffled order
+    shuffled = mesh.cache_miss_ratio(16)
+    assert shuffled == pytest.approx(fifo_cache_misses(mesh, 16))
+    mesh.reorder("vertex-cache", cache_size=16)
+    ordered = mesh.cache_miss_ratio(16)
+    assert ordered == pytest.approx(fifo_cache_misses(mesh, 16))
+    assert ordered < 0.6 * shuffled
+    with pytest.raises(hedge.InvalidArgumentError):
+        mesh.cache_miss_ratio(0)
+    assert_valid(mesh)
+
+
 # ---- normals and geometry ----
 
 
