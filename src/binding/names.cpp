@@ -35,6 +35,16 @@ constexpr Spelling<NormalSource> kNormalSource[] = {
     {"computed", NormalSource::computed, false},  {"auto", NormalSource::automatic, false},
     {"automatic", NormalSource::automatic, true},
 };
+constexpr Spelling<NormalWeighting> kNormalWeighting[] = {
+    {"area", NormalWeighting::area, false},
+    {"angle", NormalWeighting::angle, false},
+    {"uniform", NormalWeighting::uniform, false},
+};
+constexpr Spelling<Ordering> kOrdering[] = {
+    {"spatial", Ordering::spatial, false},
+    {"vertex-cache", Ordering::vertex_cache, false},
+    {"vertex_cache", Ordering::vertex_cache, true},
+};
 
 template <typename E>
 E parse(std::span<const Spelling<E>> table, std::string_view text, const char* what) {
@@ -71,10 +81,16 @@ SmoothMethod parse_smooth_method(std::string_view text) {
 NormalSource parse_normal_source(std::string_view text) {
   return parse<NormalSource>(kNormalSource, text, "normal source");
 }
+NormalWeighting parse_normal_weighting(std::string_view text) {
+  return parse<NormalWeighting>(kNormalWeighting, text, "normal weighting");
+}
+Ordering parse_ordering(std::string_view text) { return parse<Ordering>(kOrdering, text, "ordering"); }
 
 const char* name(Subdivision value) { return name_in<Subdivision>(kSubdivision, value); }
 const char* name(SmoothMethod value) { return name_in<SmoothMethod>(kSmoothMethod, value); }
 const char* name(NormalSource value) { return name_in<NormalSource>(kNormalSource, value); }
+const char* name(NormalWeighting value) { return name_in<NormalWeighting>(kNormalWeighting, value); }
+const char* name(Ordering value) { return name_in<Ordering>(kOrdering, value); }
 
 std::vector<std::string> subdivision_spellings() { return spellings<Subdivision>(kSubdivision); }
 std::vector<std::string> smooth_method_spellings() { return spellings<SmoothMethod>(kSmoothMethod); }

@@ -20,6 +20,12 @@ TEST(BindingNames, OneSpellingEachAndItsAliases) {
   EXPECT_STREQ(name(Subdivision::split_faces), "split-faces");
   EXPECT_EQ(parse_normal_source("auto"), NormalSource::automatic);
   EXPECT_STREQ(name(NormalSource::automatic), "auto");
+  EXPECT_EQ(parse_normal_weighting("angle"), NormalWeighting::angle);
+  EXPECT_STREQ(name(NormalWeighting::uniform), "uniform");
+  EXPECT_EQ(parse_ordering("vertex-cache"), Ordering::vertex_cache);
+  EXPECT_EQ(parse_ordering("vertex_cache"), Ordering::vertex_cache);
+  EXPECT_STREQ(name(Ordering::vertex_cache), "vertex-cache");
+  EXPECT_THROW(parse_normal_weighting("cotangent"), InvalidInputError);
   for (const std::string& s : smooth_method_spellings()) EXPECT_NO_THROW(parse_smooth_method(s)) << s;
   for (const std::string& s : subdivision_spellings()) EXPECT_NO_THROW(parse_subdivision(s)) << s;
   const auto methods = smooth_method_spellings();

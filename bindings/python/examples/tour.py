@@ -76,7 +76,7 @@ centre = (lo + hi) / 2
 faces, _, points = mesh.ray_cast([centre + [0, 0, 2 * (hi[2] - lo[2])]], [[0, 0, -1]])
 shards = mesh.fracture(points[0], material="glass", seed=7)
 stage("broken", mesh, time.perf_counter() - t0)
-print(f"  {len(shards)} shards; the first weighs {shards[0].mass_properties['mass']:.3g} at unit density")
+print(f"  {len(shards)} shards; the first weighs {shards[0].mass['mass']:.3g} at unit density")
 
 # %% Render: an array for numpy, a PNG for people
 picture = hedge.render(mesh, width=320, height=240)

@@ -28,13 +28,14 @@ from ._errors import (
     TopologyError,
     ViewsExportedError,
 )
-from ._hedge import Mesh, Shard, read, render
+from ._hedge import Mesh, Shard, hausdorff_distance, read, render
 
 __all__ = [
     "Mesh",
     "Shard",
     "read",
     "render",
+    "hausdorff_distance",
     "HedgeError",
     "InvalidArgumentError",
     "BadHandleError",

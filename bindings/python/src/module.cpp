@@ -1,6 +1,7 @@
 // hedge._hedge: the native half of the Python package `hedge` (bindings/python/hedge/). The pieces
 // are bound in py_mesh.cpp, py_views.cpp, py_edits.cpp,
-// py_queries.cpp, py_picking.cpp, py_render.cpp and py_fracture.cpp; py_support.h describes the whole.
+// py_queries.cpp, py_picking.cpp, py_algorithms.cpp, py_render.cpp and py_fracture.cpp; py_support.h
+// describes the whole.
 #include "py_support.h"
 
 PYBIND11_MODULE(_hedge, m) {
@@ -17,4 +18,5 @@ PYBIND11_MODULE(_hedge, m) {
   bind_picking(mesh);
   bind_render(m, mesh);
   bind_fracture(m, mesh);
+  bind_algorithms(mesh, m);
 }

@@ -12,7 +12,10 @@
 
 #include "binding/edits.h"
 #include "binding/errors.h"
+#include "binding/handles.h"
+#include "hedge/core/face_operations.h"
 #include "hedge/core/operations.h"
+#include "hedge/error.h"
 #include "py_support.h"
 
 namespace hedge::python {
@@ -64,6 +67,23 @@ std::optional<std::string> refusal_of(const Mesh& self, const std::string& name,
   const char* why = binding::refusal(use->mesh, e, ids);
   if (why == nullptr) return std::nullopt;
   return std::string(why);
+}
+
+std::size_t remove_faces_of(const Mesh& self, const py::array_t<std::int64_t, py::array::forcecast>& faces) {
+  if (faces.ndim() != 1) throw InvalidInputError("remove_faces: faces must be a 1-D array of face indices");
+  const auto r = faces.unchecked<1>();
+  const auto use = self.use();
+  require_no_views(*use, "remove_faces");
+  SurfaceMesh& m = use->mesh;
+  // Every face is checked before any is removed, so a bad one leaves the mesh as it was.
+  std::vector<Face> chosen;
+  chosen.reserve(static_cast<std::size_t>(r.shape(0)));
+  for (py::ssize_t i = 0; i < r.shape(0); ++i)
+    chosen.push_back(binding::live_face(m, element_index(r(i), "face")));
+  const std::size_t before = m.n_faces();
+  remove_faces(m, chosen);
+  use->last_refusal.clear();
+  return before - m.n_faces();
 }
 
 }  // namespace
@@ -178,6 +198,12 @@ void bind_edits(py::class_<Mesh>& mesh) {
           py::arg("face"),
           "Removes the face, and the edges and vertices it leaves unused. Returns False if refused "
           "(reason in last_refusal).")
+      .def("remove_faces", &remove_faces_of, py::arg("faces"),
+           "Removes several faces at once (an array of indices; repeats are fine), and the edges and "
+           "vertices they leave unused. Never refused: a vertex the removal would leave pinched is "
+           "split, one copy per fan, so the mesh stays manifold (which adds vertices, so it raises "
+           "ViewsExportedError while views are alive). Returns how many faces were removed. Raises "
+           "BadHandleError, before removing any, for a deleted or out-of-range face.")
       .def("refusal", &refusal_of, py::arg("edit"), py::arg("elements"),
            "Why the edit ('split_edge', 'collapse', 'flip', 'split_face', 'cut_face', 'fill_hole') "
            "of these elements is refused, or None if it is allowed.")

@@ -1,6 +1,6 @@
 // Mesh.fracture(): an impact breaks the mesh into shards, located through the mesh's one picking
 // tree (binding::picking_tree), as the C ABI and the WebAssembly module do. Each shard is a
-// hedge.Shard, a hedge.Mesh of its own with what the library reports of it (centroid, area, mass
+// hedge.Shard, a hedge.Mesh of its own with what the library reports of it (front centroid and area, mass
 // properties, convex hull); the remaining mesh is the mesh itself, edited in place. A custom
 // material is a dict in the schema of the CLI's material files (docs/fracture.md), parsed by the
 // same parser (tools/hedge/material_json.cpp), so both take the same fields with the same checks.
@@ -51,19 +51,6 @@ struct Broken {
   FractureResult result;
   std::vector<std::shared_ptr<State>> meshes, hulls;
 };
-
-py::array_t<double> vec3_array(const Vec3d& v) {
-  py::array_t<double> a(3);
-  double* p = a.mutable_data();
-  p[0] = v.x, p[1] = v.y, p[2] = v.z;
-  return a;
-}
-
-py::array_t<double> matrix3(const std::array<double, 9>& m) {
-  py::array_t<double> a({py::ssize_t(3), py::ssize_t(3)});
-  std::copy(m.begin(), m.end(), a.mutable_data());
-  return a;
-}
 
 const char* dimension_name(HullDimension d) {
   static const char* const kNames[] = {"empty", "point", "segment", "flat", "solid"};
@@ -162,20 +149,6 @@ py::list fracture(const Mesh& self, const py::object& point, const py::object& m
   return shards;
 }
 
-py::dict mass_properties(const Shard& s) {
-  py::dict d;
-  d["volume"] = s.mass.volume;
-  d["mass"] = s.mass.mass;
-  d["centre_of_mass"] = vec3_array(s.mass.centre_of_mass);
-  d["inertia"] = matrix3(s.mass.inertia);
-  d["principal_moments"] = vec3_array(s.mass.principal_moments);
-  std::array<double, 9> axes{};
-  for (int a = 0; a < 3; ++a)
-    for (int c = 0; c < 3; ++c) axes[std::size_t(3 * a + c)] = s.mass.principal_axes[std::size_t(a)][c];
-  d["principal_axes"] = matrix3(axes);
-  return d;
-}
-
 }  // namespace
 
 void bind_fracture(py::module_& m, py::class_<Mesh>& mesh) {
@@ -183,18 +156,22 @@ void bind_fracture(py::module_& m, py::class_<Mesh>& mesh) {
                           "A piece broken off by Mesh.fracture(): a Mesh of its own (every Mesh method "
                           "works on it), with what the library reports of it.")
       .def_property_readonly(
-          "centroid", [](const Shard& s) { return vec3_array(s.centroid); },
-          "Area-weighted centroid of the broken faces (the front), a (3,) float64 array.")
+          "front_centroid", [](const Shard& s) { return vec3_array(s.centroid); },
+          "Area-weighted centroid of the broken faces (the front), a (3,) float64 array (the C++ "
+          "Shard::centroid; centroid is not a Mesh method's name).")
       .def_property_readonly(
-          "area", [](const Shard& s) { return s.area; }, "Area of the broken faces (the front only).")
+          "front_area", [](const Shard& s) { return s.area; },
+          "Area of the broken faces (the front only; Mesh.area() is the whole shard's area).")
       .def_property_readonly(
           "closed", [](const Shard& s) { return s.closed; },
           "True when the shard has no boundary (it was given a thickness): a solid with mass.")
-      .def_property_readonly("mass_properties", &mass_properties,
-                             "Of the closed solid at the fracture's density: a dict of volume, mass, "
-                             "centre_of_mass (3,), inertia (3, 3) about the centre of mass, "
-                             "principal_moments (3,) ascending and principal_axes (3, 3), one unit axis "
-                             "a row, a right-handed frame. All zero for an open shard.")
+      .def_property_readonly(
+          "mass", [](const Shard& s) { return mass_properties_dict(s.mass); },
+          "The mass properties of the closed solid at the fracture's density (the C++ "
+          "Shard::mass; Mesh.mass_properties(density) computes them afresh): a dict of volume, mass, "
+          "centre_of_mass (3,), inertia (3, 3) about the centre of mass, "
+          "principal_moments (3,) ascending and principal_axes (3, 3), one unit axis "
+          "a row, a right-handed frame. All zero for an open shard.")
       .def_property_readonly(
           "hull",
           [](const Shard& s) -> py::object {
@@ -215,8 +192,8 @@ void bind_fracture(py::module_& m, py::class_<Mesh>& mesh) {
            py::arg("relative_thickness") = 0.0, py::arg("inner_submesh") = -1, py::arg("density") = 1.0,
            py::arg("tolerance") = 0.0, py::arg("hulls") = true,
            "Breaks the mesh at point (3 numbers, within tolerance of the surface) into shards and "
-           "returns them as a list of Shard (each a Mesh, with centroid, area, closed, "
-           "mass_properties and hull), in the order of their break points. The broken faces leave "
+           "returns them as a list of Shard (each a Mesh, with front_centroid, front_area, closed, "
+           "mass and hull), in the order of their break points. The broken faces leave "
            "this mesh, which is edited in place. material: 'glass', 'stone', 'wood', 'ice', or a dict "
            "{name, rings: [{points, spacing, jitter}], grain, grain_stretch, refine_edge, absolute} "
            "as the CLI's material files (docs/fracture.md). seed: a whole number; the same mesh, "

@@ -14,13 +14,6 @@
 
 namespace hedge::python {
 
-std::string fspath(const py::object& path) {
-  const py::object p = py::module_::import("os").attr("fspath")(path);
-  if (!py::isinstance<py::str>(p))
-    throw InvalidInputError("a path must be a str or an os.PathLike of str, not bytes");
-  return p.cast<std::string>();
-}
-
 namespace {
 
 static_assert(sizeof(Vec3) == 3 * sizeof(float), "positions are read as 3 packed floats");

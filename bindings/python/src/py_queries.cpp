@@ -149,7 +149,30 @@ void bind_queries(py::class_<Mesh>& mesh) {
            "The one-rings of many vertices in one call (every vertex slot if vertices is None): "
            "(offsets, neighbours), int64 and int32 arrays; vertex i's ring, clockwise as one_ring() "
            "gives it, is neighbours[offsets[i]:offsets[i + 1]]. A deleted or isolated vertex slot has "
-           "an empty ring; a listed vertex must be live (BadHandleError).");
+           "an empty ring; a listed vertex must be live (BadHandleError).")
+      .def(
+          "is_boundary",
+          [](const Mesh& self, std::int64_t v) {
+            const auto use = self.use();
+            const SurfaceMesh& m = use->mesh;
+            return m.is_boundary(binding::live_vertex(m, element_index(v, "vertex")));
+          },
+          py::arg("vertex"), "True if the vertex is on a boundary, or isolated (it has no face all around).")
+      .def(
+          "boundary_vertices",
+          [](const Mesh& self) {
+            const auto use = self.use();
+            const SurfaceMesh& m = use->mesh;
+            py::array_t<bool> out(static_cast<py::ssize_t>(m.vertex_slots()));
+            bool* p = out.mutable_data();
+            for (std::size_t i = 0; i < m.vertex_slots(); ++i) {
+              const Vertex v(static_cast<Index>(i));
+              p[i] = !m.is_deleted(v) && m.is_boundary(v);
+            }
+            return out;
+          },
+          "is_boundary() of every vertex slot at once: a bool array (vertex_slots,), False for deleted "
+          "slots. np.flatnonzero() of it lists the boundary vertices.");
 }
 
 }  // namespace hedge::python

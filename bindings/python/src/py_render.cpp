@@ -23,34 +23,6 @@ namespace hedge::python {
 using picture::Image;
 using picture::ShadedOptions;
 
-Vec3d point3d(const py::handle& p, const char* call, const char* what) {
-  const std::string name = std::string(call) + ": " + what;
-  const auto bad = [&] {
-    binding::fail(HEDGE_ERROR_INVALID_ARGUMENT,
-                  name + " must be 3 numbers x, y, z, got " + std::string(py::repr(p)));
-  };
-  if (py::isinstance<py::str>(p) || py::isinstance<py::bytes>(p)) bad();
-  py::array_t<double, py::array::c_style | py::array::forcecast> a;
-  try {
-    a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(p);
-  } catch (const py::error_already_set&) {
-  }
-  if (!a || a.ndim() != 1 || a.shape(0) != 3) bad();
-  const double* q = a.data();
-  const Vec3d v{q[0], q[1], q[2]};
-  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-    binding::fail(HEDGE_ERROR_INVALID_ARGUMENT, name + " (" + std::to_string(v.x) + ", " +
-                                                    std::to_string(v.y) + ", " + std::to_string(v.z) +
-                                                    ") is not finite");
-  return v;
-}
-
-Vec3 point3(const py::handle& p, const char* call, const char* what) {
-  const Vec3d v = point3d(p, call, what);
-  return binding::need_point(Vec3{float(v.x), float(v.y), float(v.z)},
-                             (std::string(call) + ": " + what).c_str());
-}
-
 namespace {
 
 //! The camera and picture options of hedge.render(), as the CLI's `hedge render` takes them.

@@ -11,7 +11,9 @@
 
 #include "binding/errors.h"
 #include "binding/handles.h"
+#include "hedge/core/color.h"
 #include "hedge/error.h"
+#include "hedge/render/tangent.h"
 #include "py_support.h"
 
 namespace hedge::python {
@@ -89,6 +91,82 @@ void positions_changed(const Mesh& self,
   m.changes().notify();
 }
 
+//! The arrays of the four kinds of element, in the order property_names() lists them.
+struct Kind {
+  const char* name;
+  const PropertyContainer& (SurfaceMesh::*container)() const;
+};
+constexpr Kind kKinds[] = {{"vertex", &SurfaceMesh::vertex_properties},
+                           {"halfedge", &SurfaceMesh::halfedge_properties},
+                           {"edge", &SurfaceMesh::edge_properties},
+                           {"face", &SurfaceMesh::face_properties}};
+
+//! The property `name` of the given kind (any kind if none), or an error that says what exists.
+BasePropertyArray* find_property(const SurfaceMesh& m, const std::string& name,
+                                 const std::optional<std::string>& kind) {
+  BasePropertyArray* found = nullptr;
+  std::string kinds;
+  bool known_kind = !kind;
+  for (const Kind& k : kKinds) {
+    if (kind && *kind != k.name) continue;
+    known_kind = true;
+    if (BasePropertyArray* a = (m.*k.container)().find_base(name)) {
+      if (found)
+        throw InvalidInputError("property: '" + name + "' is a property of " + kinds + " and " + k.name +
+                                " elements; pass kind= to choose");
+      found = a;
+      kinds = k.name;
+    }
+  }
+  if (!known_kind)
+    throw InvalidInputError("property: kind must be 'vertex', 'halfedge', 'edge' or 'face', not '" + *kind +
+                            "'");
+  if (!found)
+    throw InvalidInputError("property: the mesh has no " + (kind ? *kind + " " : std::string()) +
+                            "property named '" + name + "' (see property_names())");
+  return found;
+}
+
+//! A view of `a` if its values are T, made of `columns` scalars S each; none otherwise.
+template <typename T, typename S>
+std::optional<py::array> view_as(const Mesh& self, BasePropertyArray* a, int columns) {
+  if (a->type() != typeid(T)) return std::nullopt;
+  static_assert(sizeof(T) % sizeof(S) == 0, "a value is a row of scalars");
+  auto& values = static_cast<PropertyArray<T>*>(a)->vector();
+  S* data = reinterpret_cast<S*>(values.data());
+  const auto n = static_cast<py::ssize_t>(values.size());
+  if (columns == 1) return py::array_t<S>({n}, {py::ssize_t(sizeof(T))}, data, owner(self));
+  return py::array_t<S>({n, py::ssize_t(columns)}, {py::ssize_t(sizeof(T)), py::ssize_t(sizeof(S))}, data,
+                        owner(self));
+}
+
+py::array property_view(const Mesh& self, const std::string& name, const std::optional<std::string>& kind) {
+  const auto use = self.use();
+  BasePropertyArray* a = find_property(use->mesh, name, kind);
+  std::optional<py::array> v;
+  if (!v) v = view_as<std::int32_t, std::int32_t>(self, a, 1);
+  if (!v) v = view_as<std::uint32_t, std::uint32_t>(self, a, 1);
+  if (!v) v = view_as<std::uint8_t, std::uint8_t>(self, a, 1);
+  if (!v) v = view_as<float, float>(self, a, 1);
+  if (!v) v = view_as<double, double>(self, a, 1);
+  if (!v) v = view_as<Vec2, float>(self, a, 2);
+  if (!v) v = view_as<Vec3, float>(self, a, 3);
+  if (!v) v = view_as<Vec3d, double>(self, a, 3);
+  if (!v) v = view_as<Vec4, float>(self, a, 4);
+  if (!v) v = view_as<Color, float>(self, a, 4);
+  if (!v)
+    throw InvalidInputError("property: '" + name + "' holds values numpy cannot view (" + a->type().name() +
+                            "); viewable are int32, uint32, uint8, float, double and 2, 3 or 4 floats");
+  return *v;
+}
+
+py::dict property_names(const Mesh& self) {
+  const auto use = self.use();
+  py::dict d;
+  for (const Kind& k : kKinds) d[k.name] = (use->mesh.*k.container)().names();
+  return d;
+}
+
 }  // namespace
 
 void bind_views(py::module_& m, py::class_<Mesh>& mesh) {
@@ -142,7 +220,17 @@ void bind_views(py::module_& m, py::class_<Mesh>& mesh) {
                 self, [](const SurfaceMesh& m) -> const auto& { return m.face_halfedge_array(); });
           },
           "Each face's half-edge (the face's corners start at its target): a read-only int32 view "
-          "(face_slots,), no copy.");
+          "(face_slots,), no copy.")
+      .def("property", &property_view, py::arg("name"), py::arg("kind") = py::none(),
+           "The property `name` (e.g. 'f:submesh', 'h:texcoord', 'v:normal') as a writable numpy view "
+           "over the mesh's memory, no copy: one row per slot of its kind, (n,) for a scalar, (n, k) "
+           "for k floats (Vec2, Vec3, Vec4, Color). kind ('vertex', 'halfedge', 'edge', 'face') "
+           "chooses when the name exists on several kinds. It counts as a view: edits that add "
+           "elements raise ViewsExportedError while it lives. Writes are not marked in the change "
+           "log. Raises InvalidArgumentError for an unknown name or a type numpy cannot view.")
+      .def("property_names", &property_names,
+           "The names of the mesh's properties: a dict from kind ('vertex', 'halfedge', 'edge', "
+           "'face') to a list of names.");
 }
 
 }  // namespace hedge::python

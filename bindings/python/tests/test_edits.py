@@ -108,3 +108,61 @@ def test_bad_handles_raise_and_can_says_false(grid):
     with pytest.raises(hedge.InvalidArgumentError):
         grid.refusal("cut_face", [0])
     assert_valid(grid)
+
+
+def test_remove_faces_removes_several_at_once(grid):
+    assert grid.remove_faces([0, 1, 1, 2]) == 3  # a repeat counts once
+    assert grid.n_faces == 29
+    assert grid.last_refusal is None
+    # Faces 8..15 are the grid's second row: removing it leaves two strips, the mesh still manifold.
+    assert grid.remove_faces(np.arange(8, 16)) == 8
+    assert grid.n_faces == 21
+    assert_valid(grid)
+
+
+def fans(F):
+    """How many fans (faces joined through edges at the vertex) each vertex of the faces F has."""
+    count = {}
+    for v in np.unique(F):
+        faces = [set(f) for f in F if v in f]
+        groups = []
+        for f in faces:
+            joined = [g for g in groups if any(len(f & h) == 2 for h in g)]
+            merged = [f] + [h for g in joined for h in g]
+            groups = [g for g in groups if g not in joined] + [merged]
+        count[int(v)] = len(groups)
+    return count
+
+
+def test_remove_faces_splits_pinched_vertices(grid):
+    # Keep two opposite faces around vertex 6: they share the vertex and no edge.
+    _, F = grid.to_arrays()
+    around = grid.vertex_faces(6)
+    assert len(around) == 6
+    gone = [f for f in around if f not in (around[0], around[3])]
+    assert grid.remove_faces(gone) == 4
+    expected = fans(np.delete(F, gone, axis=0))
+    assert expected[6] == 2
+    assert grid.n_vertices == sum(expected.values())  # one vertex per fan: pinched ones were split
+    assert all(n == 1 for n in fans(grid.to_arrays()[1]).values())
+    assert_valid(grid)
+
+
+def test_remove_faces_checks_every_face_first(grid):
+    with pytest.raises(hedge.BadHandleError):
+        grid.remove_faces([0, 1, 99])
+    with pytest.raises(hedge.BadHandleError):
+        grid.remove_faces([-1])
+    assert grid.n_faces == 32  # nothing removed
+    assert grid.remove_face(0)
+    with pytest.raises(hedge.BadHandleError):
+        grid.remove_faces([1, 0])
+    assert grid.n_faces == 31
+    P = grid.positions
+    with pytest.raises(hedge.ViewsExportedError):
+        grid.remove_faces([4])
+    del P
+    with pytest.raises(hedge.InvalidArgumentError):
+        grid.remove_faces([[1, 2]])
+    assert grid.n_faces == 31
+    assert_valid(grid)

@@ -59,7 +59,7 @@ def test_shards_are_meshes_and_the_rest_stays_in_the_mesh():
     # The broken faces left the mesh; refining them only adds faces, and no area is lost or made.
     assert mesh.n_faces < before_faces
     assert mesh.n_faces + sum(s.n_faces for s in shards) >= before_faces
-    assert surface_area(mesh) + sum(s.area for s in shards) == pytest.approx(before_area, rel=1e-6)
+    assert surface_area(mesh) + sum(s.front_area for s in shards) == pytest.approx(before_area, rel=1e-6)
     assert_valid(mesh)
 
 
@@ -77,9 +77,9 @@ def test_an_open_shard_reports_the_area_and_centroid_of_its_faces():
     for s in plate().fracture(IMPACT, "ice", seed=1):
         t = triangles(s)
         areas = 0.5 * np.linalg.norm(np.cross(t[:, 1] - t[:, 0], t[:, 2] - t[:, 0]), axis=1)
-        assert s.area == pytest.approx(areas.sum(), rel=1e-6)
-        np.testing.assert_allclose(s.centroid, (areas[:, None] * t.mean(axis=1)).sum(axis=0) / areas.sum(), rtol=1e-6)
-        mp = s.mass_properties
+        assert s.front_area == pytest.approx(areas.sum(), rel=1e-6)
+        np.testing.assert_allclose(s.front_centroid, (areas[:, None] * t.mean(axis=1)).sum(axis=0) / areas.sum(), rtol=1e-6)
+        mp = s.mass
         assert mp["mass"] == 0 and mp["volume"] == 0 and not mp["inertia"].any()
 
 
@@ -91,7 +91,7 @@ def test_a_solid_shard_has_the_mass_properties_numpy_computes():
         assert s.closed
         assert_valid(s)
         volume, centre, inertia = solid_properties(s, 2.5)
-        mp = s.mass_properties
+        mp = s.mass
         assert mp["volume"] == pytest.approx(volume, rel=1e-6)
         assert mp["mass"] == pytest.approx(2.5 * volume, rel=1e-6)
         np.testing.assert_allclose(mp["centre_of_mass"], centre, rtol=1e-6, atol=1e-6)
@@ -103,7 +103,7 @@ def test_a_solid_shard_has_the_mass_properties_numpy_computes():
         for a in range(3):
             np.testing.assert_allclose(mp["inertia"] @ axes[a], moments[a] * axes[a], atol=1e-6 * moments.max())
         # The solid is the front (the broken faces) thickened against its normals: here, down z.
-        assert s.area == pytest.approx(volume / 0.25, rel=1e-3)
+        assert s.front_area == pytest.approx(volume / 0.25, rel=1e-3)
     assert_valid(mesh)
 
 
@@ -121,8 +121,8 @@ def test_hulls_are_meshes_and_can_be_left_out():
 
 
 def test_a_break_radius_breaks_that_far_and_a_custom_material_its_rings():
-    small = sum(s.area for s in plate().fracture(IMPACT, "stone", break_radius=2))
-    large = sum(s.area for s in plate().fracture(IMPACT, "stone", break_radius=5))
+    small = sum(s.front_area for s in plate().fracture(IMPACT, "stone", break_radius=2))
+    large = sum(s.front_area for s in plate().fracture(IMPACT, "stone", break_radius=5))
     assert 0 < small < large
     material = {"rings": [{"points": np.int64(3), "spacing": 2.0}, {"points": 5, "spacing": 2, "jitter": 0.5}]}
     mesh = plate()
@@ -165,9 +165,9 @@ def test_the_same_shards_as_the_cli(tmp_path, material, thickness):
     assert mesh.n_faces == summary["remaining"]["faces"]
     for s, c in zip(shards, summary["shards"]):
         assert (s.n_faces, s.n_vertices, s.closed) == (c["faces"], c["vertices"], c["closed"])
-        np.testing.assert_allclose(s.centroid, c["centroid"], rtol=1e-12)
-        assert s.area == pytest.approx(c["area"], rel=1e-12)
-        mp = s.mass_properties
+        np.testing.assert_allclose(s.front_centroid, c["centroid"], rtol=1e-12)
+        assert s.front_area == pytest.approx(c["area"], rel=1e-12)
+        mp = s.mass
         assert mp["volume"] == pytest.approx(c["volume"], rel=1e-12)
         assert mp["mass"] == pytest.approx(c["mass"]["mass"], rel=1e-12)
         np.testing.assert_allclose(mp["principal_moments"], c["mass"]["principal_moments"], rtol=1e-12)
@@ -249,4 +249,19 @@ def test_fracture_releases_the_gil():
         done.set()
         thread.join()
     assert shards and len(ticks) > 10  # about 2 while the GIL is held
+    assert_valid(mesh)
+
+
+def test_a_shard_keeps_every_mesh_method():
+    # Shard's own attributes must not hide Mesh's methods: area() and mass_properties() of a shard
+    # agree with what the fracture reported of it.
+    mesh = plate()
+    shards = mesh.fracture(IMPACT, "stone", seed=3, thickness=0.25, density=2.0)
+    for s in shards:
+        assert callable(s.area) and callable(s.mass_properties)
+        assert s.area() > s.front_area > 0  # the solid adds a back and walls to the front
+        again = s.mass_properties(density=2.0)
+        assert again["mass"] == pytest.approx(s.mass["mass"], rel=1e-9)
+        np.testing.assert_allclose(again["centre_of_mass"], s.mass["centre_of_mass"], rtol=1e-9, atol=1e-12)
+        assert_valid(s)
     assert_valid(mesh)

@@ -85,4 +85,24 @@ def test_one_rings_skip_deleted_vertices_and_check_listed_ones(grid):
         grid.one_rings(np.array([0.5]))
     with pytest.raises(hedge.InvalidArgumentError):
         grid.one_rings(np.zeros((2, 2), dtype=np.int32))
+def test_is_boundary_and_boundary_vertices(grid):
+    # The 4 x 4 grid's boundary is its outer ring of 16 vertices; numpy finds them from the
+    # boundary half-edges (no face) of the views.
+    to, face = grid.halfedge_vertex_array, grid.halfedge_face_array
+    expected = np.zeros(grid.vertex_slots, dtype=bool)
+    expected[to[face == -1]] = True
+    assert expected.sum() == 16
+    np.testing.assert_array_equal(grid.boundary_vertices(), expected)
+    assert [grid.is_boundary(v) for v in range(grid.vertex_slots)] == list(expected)
+    assert not grid.is_boundary(12) and grid.is_boundary(0)
+    with pytest.raises(hedge.BadHandleError):
+        grid.is_boundary(25)
+    assert grid.remove_face(0)  # the face (0, 1, 6): its edges 1-6 and 6-0 join the boundary
+    b = grid.boundary_vertices()
+    assert b.dtype == np.bool_ and b.shape == (grid.vertex_slots,)
+    assert b[6]  # the removed face opened the hole up to the interior vertex 6
+    assert grid.remove_face(1)  # (0, 6, 5), the last face of vertex 0, which goes with it
+    assert not grid.boundary_vertices()[0]  # a deleted slot is no boundary vertex
+    with pytest.raises(hedge.BadHandleError):
+        grid.is_boundary(0)
     assert grid.validate() == []

@@ -2,6 +2,7 @@
 (src/py_views.cpp)."""
 
 import gc
+import os
 
 import numpy as np
 import pytest
@@ -9,6 +10,7 @@ from conftest import assert_valid, grid_arrays
 
 import hedge
 
+DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "data")
 
 def test_positions_is_a_writable_view_of_the_mesh(grid):
     P = grid.positions
@@ -129,3 +131,42 @@ def test_to_arrays_adopts_its_buffers(grid):
     # The exported vectors are the arrays' memory (a capsule owns them): no copy after the export.
     assert not V.flags.owndata and not F.flags.owndata
     assert not np.shares_memory(V, grid.positions)
+
+
+def test_properties_by_name_are_views(grid):
+    names = grid.property_names()
+    assert set(names) == {"vertex", "halfedge", "edge", "face"}
+    assert "v:position" in names["vertex"]
+    P = grid.property("v:position")
+    assert P.shape == (grid.vertex_slots, 3) and P.dtype == np.float32
+    assert np.shares_memory(P, grid.positions)
+    view = grid.property("v:position", kind="vertex")
+    view[0] = (1, 2, 3)  # writable, and the mesh's own memory
+    np.testing.assert_array_equal(grid.positions[0], [1, 2, 3])
+    # A property view counts as a view: edits that add elements wait for it.
+    with pytest.raises(hedge.ViewsExportedError):
+        grid.split_face(0)
+    del P, view
+    assert grid.split_face(0) is not None
+    assert_valid(grid)
+
+
+def test_face_and_corner_properties_of_a_file():
+    mesh = hedge.read(os.path.join(DATA, "two_quads.gltf"))
+    names = mesh.property_names()
+    assert "h:texcoord" in names["halfedge"], names
+    uv = mesh.property("h:texcoord")
+    assert uv.shape == (mesh.halfedge_slots, 2) and uv.dtype == np.float32
+    if "f:submesh" in names["face"]:
+        sub = mesh.property("f:submesh")
+        assert sub.shape == (mesh.face_slots,) and sub.dtype == np.int32
+    assert mesh.validate() == []
+
+
+def test_unknown_property_names_raise(grid):
+    with pytest.raises(hedge.InvalidArgumentError, match="no property named 'v:colour'"):
+        grid.property("v:colour")
+    with pytest.raises(hedge.InvalidArgumentError, match="kind must be"):
+        grid.property("v:position", kind="corner")
+    with pytest.raises(hedge.InvalidArgumentError, match="no face property"):
+        grid.property("v:position", kind="face")
