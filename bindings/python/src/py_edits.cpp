@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "binding/edits.h"
+#include "binding/rollback.h"
 #include "binding/errors.h"
 #include "binding/handles.h"
 #include "hedge/core/face_operations.h"
@@ -81,7 +82,9 @@ std::size_t remove_faces_of(const Mesh& self, const py::array_t<std::int64_t, py
   for (py::ssize_t i = 0; i < r.shape(0); ++i)
     chosen.push_back(binding::live_face(m, element_index(r(i), "face")));
   const std::size_t before = m.n_faces();
-  remove_faces(m, chosen);
+  // The library's remove_faces() gives no strong guarantee: memory running out after some faces
+  // went would leave them gone. The binding core's rollback puts the mesh back (a copy per call).
+  binding::with_rollback(m, [&] { remove_faces(m, chosen); });
   use->last_refusal.clear();
   return before - m.n_faces();
 }
