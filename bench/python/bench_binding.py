@@ -1,4 +1,4 @@
-"""What the Python binding costs over the library: one-run ratios with medians of a few runs.
+"""What the Python binding costs over the library: same-run ratios, Python and C++ taking turns.
 
     PYTHONPATH=build/release/bindings/python/package /usr/bin/python3 bench/python/bench_binding.py \
         build/release/bindings/python/build_reference
@@ -49,30 +49,51 @@ def median_seconds(fn, runs):
 def main():
     reference = sys.argv[1] if len(sys.argv) > 1 else None
     V, F = plate(708)
-    runs = 7
-    py_ms = 1e3 * median_seconds(lambda: hedge.Mesh.from_arrays(V, F), runs)
-    print(f"from_arrays, {len(F):,} triangles: {py_ms:.1f} ms (median of {runs})")
+    rounds = 7
     rng = np.random.default_rng(1)
     n_rays = 100_000
     origins = np.column_stack([rng.uniform(0, 708, (n_rays, 2)), np.full(n_rays, 10.0)]).astype(np.float32)
     directions = np.column_stack([rng.uniform(-0.3, 0.3, (n_rays, 2)), -np.ones(n_rays)]).astype(np.float32)
     big = hedge.Mesh.from_arrays(V, F)
     big.ray_cast(origins[:1], directions[:1])  # builds the picking tree
-    ray_ms = 1e3 * median_seconds(lambda: big.ray_cast(origins, directions), runs)
-    print(f"ray_cast, {n_rays:,} rays: {ray_ms:.1f} ms")
-    ring_ms = 1e3 * median_seconds(big.one_rings, runs)
-    print(f"one_rings, all {big.n_vertices:,} vertices: {ring_ms:.1f} ms")
-    if reference:
-        with tempfile.TemporaryDirectory() as tmp:
-            vp, fp, rp = (os.path.join(tmp, name) for name in ("v.f32", "f.u32", "r.f32"))
-            V.tofile(vp)
-            F.tofile(fp)
-            np.column_stack([origins, directions]).astype(np.float32).tofile(rp)
-            out = subprocess.run([reference, vp, fp, str(runs), rp], capture_output=True, text=True, check=True)
-        cpp_ms, cpp_ring_ms, cpp_ray_ms = (float(x) for x in out.stdout.split())
-        print(f"C++ build_triangles, same arrays: {cpp_ms:.1f} ms; ratio {py_ms / cpp_ms:.2f}x")
-        print(f"C++ one-rings, same mesh: {cpp_ring_ms:.1f} ms; ratio {ring_ms / cpp_ring_ms:.2f}x")
-        print(f"C++ first_hit, same rays: {cpp_ray_ms:.1f} ms; ratio {ray_ms / cpp_ray_ms:.2f}x")
+
+    per_round = 3  # timings of each measure a round, on each side; a round reports their median
+
+    def python_round():
+        """The median of per_round timings of each measure through the binding, in ms."""
+        return (
+            1e3 * median_seconds(lambda: hedge.Mesh.from_arrays(V, F), per_round),
+            1e3 * median_seconds(big.one_rings, per_round),
+            1e3 * median_seconds(lambda: big.ray_cast(origins, directions), per_round),
+        )
+
+    names = [
+        f"build {len(F):,} triangles (`from_arrays` / `build_triangles`, repair on)",
+        f"one-rings of all {big.n_vertices:,} vertices (`one_rings()` / the same gathering in C++)",
+        f"{n_rays:,} rays on that mesh (`ray_cast` / `FaceBvh::first_hit`)",
+    ]
+    py_rounds, cpp_rounds = [], []
+    with tempfile.TemporaryDirectory() as tmp:
+        vp, fp, rp = (os.path.join(tmp, name) for name in ("v.f32", "f.u32", "r.f32"))
+        V.tofile(vp)
+        F.tofile(fp)
+        np.column_stack([origins, directions]).astype(np.float32).tofile(rp)
+        # Python and C++ take turns, one timing each a round, so that a change of load on a shared
+        # machine reaches both sides of a ratio; the ratio reported is the median of the rounds'.
+        for _ in range(rounds):
+            py_rounds.append(python_round())
+            if reference:
+                out = subprocess.run([reference, vp, fp, str(per_round), rp], capture_output=True, text=True, check=True)
+                cpp_rounds.append(tuple(float(x) for x in out.stdout.split()))
+    print(f"median of {rounds} rounds, Python and C++ in turn:")
+    for k, name in enumerate(names):
+        py_ms = statistics.median(r[k] for r in py_rounds)
+        if cpp_rounds:
+            cpp_ms = statistics.median(r[k] for r in cpp_rounds)
+            ratio = statistics.median(p[k] / c[k] for p, c in zip(py_rounds, cpp_rounds))
+            print(f"| {name} | {py_ms:.1f} ms | {cpp_ms:.1f} ms | {ratio:.2f}x |")
+        else:
+            print(f"| {name} | {py_ms:.1f} ms | | |")
 
     mesh = hedge.Mesh.from_arrays(*plate(100))
     n = 200_000
