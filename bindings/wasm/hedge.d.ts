@@ -12,6 +12,9 @@ export type ErrorKind =
   | 'internal'
   | 'busy';
 
+/** Every failure. A wrong argument (null, undefined, a wrong type, an array of the wrong length)
+ *  throws one of kind 'invalid-argument' before the call runs, its message naming the call and the
+ *  argument ("pick: origin must be [x, y, z] (...), got null"). */
 export class HedgeError extends Error {
   readonly kind: ErrorKind;
   /** A refused edit's reason (the library's refusal); null for other errors. */

@@ -6,7 +6,9 @@
 //
 // Elements are numbers: vertex, half-edge, edge and face indices; -1 means "none". Half-edge h
 // belongs to edge h >> 1 and its twin is h ^ 1. Every failure throws a HedgeError whose message is
-// hedge's own (the file and line of a malformed file, why an operation was refused).
+// hedge's own (the file and line of a malformed file, why an operation was refused). Wrong
+// arguments (null, a wrong type, an array of the wrong length) throw one of kind 'invalid-argument'
+// naming the call and the argument, before the call runs (arguments.js).
 //
 // Memory: a Mesh or RenderBuffers frees its wasm memory when it is garbage-collected, and dispose() frees
 // it at once (calling it again does nothing; any other call on a disposed object throws).
@@ -17,14 +19,7 @@
 // have length 0). Take views right before use; taking one costs no copy.
 import createHedge from './hedge.mjs';
 
-// Arguments are checked or converted here, before the call: a JS exception raised inside the
-// module (converting a bad value) would unwind wasm frames without their destructors.
-const isArrayLike = (x) => ArrayBuffer.isView(x) || Array.isArray(x);
-const point3 = (p, what) => {
-  if (!isArrayLike(p) || p.length !== 3)
-    throw new HedgeError('invalid-argument', `${what}: expected [x, y, z]`);
-  return Array.from(p, Number);
-};
+import { customMaterial, installArgumentChecks, point3 } from './arguments.js';
 
 /** An error raised by hedge. kind names the C ABI's status (hedge_status), one to one:
  *  'invalid-argument', 'bad-handle' (a disposed object, an element out of range or deleted),
@@ -49,43 +44,6 @@ export const smoothingMethods = Object.freeze([...METHODS]);
 const MATERIALS = ['glass', 'stone', 'wood', 'ice'];
 /** The fracture presets, for menus. */
 export const fractureMaterials = Object.freeze([...MATERIALS]);
-
-const isNumber = (x) => typeof x === 'number';
-
-// A custom fracture material as the module takes it: every field typed, the rings flattened.
-// The values themselves (ranges, a zero grain with a stretch) are checked by fracture().
-function customMaterial(m) {
-  const bad = (what) => new HedgeError('invalid-argument', `fracture: material.${what}`);
-  if (m === null || typeof m !== 'object') throw bad(' must be a preset name or an object');
-  const {
-    name = 'custom',
-    rings,
-    grain = [0, 0, 0],
-    grainStretch = 1,
-    refineEdge = 1.5,
-    absolute = false,
-  } = m;
-  if (!Array.isArray(rings)) throw bad('rings must be an array of {points, spacing, jitter}');
-  const flat = new Float64Array(rings.length * 3);
-  rings.forEach((ring, i) => {
-    const { points, spacing, jitter = 0 } = ring ?? {};
-    if (!isNumber(points) || !isNumber(spacing) || !isNumber(jitter))
-      throw bad(`rings[${i}] must have numbers points, spacing and jitter`);
-    flat.set([points, spacing, jitter], i * 3);
-  });
-  if (!isArrayLike(grain) || grain.length !== 3 || !Array.from(grain).every(isNumber))
-    throw bad('grain must be [x, y, z]');
-  if (!isNumber(grainStretch)) throw bad('grainStretch must be a number');
-  if (!isNumber(refineEdge)) throw bad('refineEdge must be a number');
-  return {
-    name: String(name),
-    rings: flat,
-    grain: Array.from(grain),
-    grainStretch,
-    refineEdge,
-    absolute: Boolean(absolute),
-  };
-}
 
 /** Loads the module. options go to the emscripten factory: wasmBinary (the bytes of hedge.wasm)
  *  or locateFile(name) (where to fetch it from), as a bundler or a page needs. */
@@ -133,12 +91,6 @@ export class Hedge {
       throw new HedgeError('invalid-argument', `unknown policy '${policy}' (strict, repair)`);
     if (w === undefined)
       throw new HedgeError('invalid-argument', `unknown weld '${weld}' (none, exact, epsilon)`);
-    if (!isArrayLike(positions))
-      throw new HedgeError('invalid-argument', 'positions: expected a Float32Array');
-    if (!isArrayLike(indices))
-      throw new HedgeError('invalid-argument', 'indices: expected a Uint32Array');
-    if (faceSizes != null && !isArrayLike(faceSizes))
-      throw new HedgeError('invalid-argument', 'faceSizes: expected a Uint32Array or nothing');
     const native = this._check(
       this.module.NativeMesh.fromBuffers(positions, indices, faceSizes, p, w),
     );
@@ -151,22 +103,16 @@ export class Hedge {
    *  HedgeError of kind 'io' naming the file and the line (or byte offset). */
   fromFile(bytes, name) {
     const data = bytes instanceof ArrayBuffer ? new Uint8Array(bytes) : bytes;
-    if (!(data instanceof Uint8Array))
-      throw new HedgeError('invalid-argument', 'fromFile: expected a Uint8Array or ArrayBuffer');
-    const native = this._check(this.module.NativeMesh.fromFile(data, String(name)));
+    const native = this._check(this.module.NativeMesh.fromFile(data, name));
     return new Mesh(this, native);
   }
 
   /** The library's thread setting (hedge::set_max_threads). The WebAssembly module is built
    *  without threads: every call runs on the calling thread, whatever is set. setMaxThreads accepts
    *  any whole number >= 0 (0: every core) and maxThreads() reports 1. */
-  setMaxThreads(n) {
-    if (!Number.isInteger(n) || n < 0)
-      throw new HedgeError(
-        'invalid-argument',
-        `setMaxThreads: expected a whole number >= 0, got ${n}`,
-      );
-  }
+  // n is checked by the argument check (ARGUMENTS below); there is nothing else to do.
+  // eslint-disable-next-line no-unused-vars
+  setMaxThreads(n) {}
 
   maxThreads() {
     return 1;
@@ -269,7 +215,7 @@ export class Mesh extends NativeOwner {
   }
 
   setPosition(v, point) {
-    this._call('setPosition', v, point3(point, 'setPosition'));
+    this._call('setPosition', v, point3(point));
   }
 
   /** The records of half-edge h: {halfedge, origin, target, twin, face, next, prev, edge, boundary}
@@ -305,8 +251,7 @@ export class Mesh extends NativeOwner {
    *  vertexDistance, corners (of the fan triangle hit), barycentric}. A bounding volume hierarchy
    *  is built on the first call and kept up to date with edits. */
   pick(origin, direction) {
-    // The hot path of hovering: no argument arrays are made (a missing or non-numeric coordinate
-    // becomes NaN, and a ray with a NaN finds nothing).
+    // The hot path of hovering: no argument arrays are made (a NaN coordinate finds nothing).
     const native = this._n();
     const face = native.pick(
       +origin[0],
@@ -336,11 +281,7 @@ export class Mesh extends NativeOwner {
 
   /** Casts many rays at once. rays: Float32Array of 6 per ray (origin, direction). Returns an
    *  Int32Array of the face hit by each ray, -1 for a miss (written into `out` if given). */
-  pickMany(rays, out = new Int32Array(Math.floor(rays.length / 6))) {
-    if (!isArrayLike(rays))
-      throw new HedgeError('invalid-argument', 'pickMany: rays must be a Float32Array');
-    if (!(out instanceof Int32Array))
-      throw new HedgeError('invalid-argument', 'pickMany: out must be an Int32Array');
+  pickMany(rays, out = new Int32Array(rays.length / 6)) {
     this._call('pickMany', rays, out);
     return out;
   }
@@ -359,7 +300,7 @@ export class Mesh extends NativeOwner {
    *  half-edges), 'fillHole' (a half-edge)) is allowed on the elements, else the library's refusal
    *  in words ("the edge is on the boundary (...)", "the edge is not live", ...). */
   refusal(edit, ...elements) {
-    const reason = this._call('refusal', String(edit), elements);
+    const reason = this._call('refusal', edit, elements);
     return reason === '' ? null : reason;
   }
 
@@ -410,7 +351,7 @@ export class Mesh extends NativeOwner {
   /** Inserts a vertex on edge e at point (default: the midpoint); triangles beside it are split in
    *  two. Returns the new vertex. */
   splitEdge(e, point) {
-    return this._edit('splitEdge', e, point === undefined ? undefined : point3(point, 'splitEdge'));
+    return this._edit('splitEdge', e, point === undefined ? undefined : point3(point));
   }
 
   /** Turns edge e between its two triangles. Returns e. */
@@ -421,13 +362,13 @@ export class Mesh extends NativeOwner {
   /** Merges the origin of half-edge h into its target, which survives and moves to point if given
    *  (e.g. the midpoint). Returns the surviving vertex. */
   collapse(h, point) {
-    return this._edit('collapse', h, point === undefined ? undefined : point3(point, 'collapse'));
+    return this._edit('collapse', h, point === undefined ? undefined : point3(point));
   }
 
   /** Inserts a vertex into face f at point (default: its centroid), fanning the face into
    *  triangles. Returns the new vertex. */
   splitFace(f, point) {
-    return this._edit('splitFace', f, point === undefined ? undefined : point3(point, 'splitFace'));
+    return this._edit('splitFace', f, point === undefined ? undefined : point3(point));
   }
 
   /** Cuts the face of half-edges h0 and h1 in two along a new edge from the target of h0 to the
@@ -451,7 +392,7 @@ export class Mesh extends NativeOwner {
 
   /** scheme: 'loop', 'midpoint', 'catmull-clark', 'sqrt3' or 'split-faces'. Renumbers elements. */
   subdivide(scheme = 'loop', steps = 1) {
-    this._call('subdivide', String(scheme), steps);
+    this._call('subdivide', scheme, steps);
   }
 
   /** method: 'uniform', 'taubin', 'cotangent' or 'implicit'. */
@@ -462,7 +403,7 @@ export class Mesh extends NativeOwner {
     mu = -0.53,
     fixBoundary = true,
   } = {}) {
-    this._call('smooth', String(method), iterations, lambda, mu, fixBoundary);
+    this._call('smooth', method, iterations, lambda, mu, fixBoundary);
   }
 
   /** Quadric edge-collapse decimation of a triangle mesh. ratio: the fraction of faces to keep
@@ -503,7 +444,7 @@ export class Mesh extends NativeOwner {
       hulls = true,
     } = {},
   ) {
-    const at = point3(impact, 'fracture: the impact');
+    const at = point3(impact);
     let preset = '';
     let custom = null;
     if (typeof material === 'string') {
@@ -516,15 +457,6 @@ export class Mesh extends NativeOwner {
     } else {
       custom = customMaterial(material);
     }
-    for (const [name, value] of Object.entries({
-      seed,
-      breakRadius,
-      thickness,
-      density,
-      tolerance,
-    }))
-      if (!isNumber(value))
-        throw new HedgeError('invalid-argument', `fracture: ${name} must be a number`);
     const result = this._call(
       'fracture',
       at,
@@ -579,7 +511,7 @@ export class Mesh extends NativeOwner {
   /** The mesh as the bytes of a file in the format of name's extension (.obj, .off, .ply, .stl),
    *  as hedge writes files: PLY and STL binary, STL fanned into triangles. A Uint8Array copy. */
   toFile(name) {
-    return this._call('toFile', String(name));
+    return this._call('toFile', name);
   }
 
   /** Heap bytes held by the mesh and its picking tree. */
@@ -732,6 +664,8 @@ export class RenderBuffers extends NativeOwner {
     return this._call('commit');
   }
 }
+
+installArgumentChecks({ Hedge, Mesh, RenderBuffers });
 
 // ---- Deprecated names (kept for one release) ----------------------------------------------------
 // The names of the previous release; the next release removes them.

@@ -293,6 +293,51 @@ std::uint32_t le32(const char* p) {
          static_cast<std::uint32_t>(b[2]) << 16 | static_cast<std::uint32_t>(b[3]) << 24;
 }
 
+// --- the GLB container ---------------------------------------------------------------------------
+
+// A GLB is a 12-byte header (magic, version, total length) and chunks, each an 8-byte header
+// (data length, type) and its data: JSON first, then BIN unless the JSON chunk ends the file. Every
+// length is checked against the file and against the declared total before tinygltf sees the
+// bytes, so that a truncated or inconsistent file says where it goes wrong: which chunk, its
+// declared length and where it would end, and the declared against the actual file length.
+// Returns the JSON chunk's text.
+std::string_view frame_glb(std::string_view data, const std::string& name) {
+  const std::uint64_t size = data.size();
+  auto fail = [&](std::uint64_t at, const std::string& why) {
+    throw IoError(name, 0, static_cast<std::int64_t>(at), "malformed glTF binary: " + why);
+  };
+  if (size < 12)
+    fail(size, "truncated: the file ends at byte " + str(size) + ", inside the 12-byte GLB header");
+  const std::uint64_t version = le32(data.data() + 4);
+  if (version != 2) fail(4, "version " + str(version) + ", expected 2");
+  const std::uint64_t declared = le32(data.data() + 8);
+  const std::string lengths = "the header declares " + str(declared) + " bytes, the file has " + str(size);
+  // A chunk of `length` bytes of data whose 8-byte header is at byte `at`, named `what`.
+  auto check_chunk = [&](std::uint64_t at, const char* what, std::uint32_t type, const char* type_name) {
+    if (at + 8 > size)
+      fail(size, "truncated: the file ends at byte " + str(size) + ", inside the " + what +
+                     " chunk's 8-byte header at byte " + str(at) + " (" + lengths + ")");
+    if (at + 8 > declared)
+      fail(8, "the header declares " + str(declared) + " bytes, too few for the " + what +
+                  " chunk's 8-byte header at byte " + str(at));
+    if (le32(data.data() + at + 4) != type)
+      fail(at + 4, std::string("the chunk at byte ") + str(at) + " is not " + type_name);
+    const std::uint64_t length = le32(data.data() + at);
+    if (length == 0) fail(at, std::string("the ") + what + " chunk at byte " + str(at) + " is empty");
+    const std::uint64_t end = at + 8 + length;
+    const std::string chunk = std::string("the ") + what + " chunk at byte " + str(at) + " declares " +
+                              str(length) + " bytes of data, to end at byte " + str(end);
+    if (end > size) fail(at, "truncated: " + chunk + ", past the end of the file (" + lengths + ")");
+    if (end > declared) fail(at, chunk + ", past the " + str(declared) + " bytes the header declares");
+    return end;
+  };
+  const std::uint64_t json_end = check_chunk(12, "JSON", 0x4E4F534Au, "JSON");
+  // tinygltf's rule: a BIN chunk follows unless the declared total ends with the JSON chunk.
+  if (declared > json_end) check_chunk(json_end, "BIN", 0x004E4942u, "BIN");
+  if (declared > size) fail(8, "truncated: " + lengths);
+  return data.substr(20, static_cast<std::size_t>(json_end - 20));
+}
+
 // --- external buffers ----------------------------------------------------------------------------
 
 // The folder part of a path, with its slash ("" for a bare name).
@@ -362,18 +407,8 @@ GltfScan scan_gltf(std::string_view data, const std::string& name) {
   GltfScan scan;
   scan.json = data;
   if (data.size() >= 4 && data.substr(0, 4) == "glTF") {
-    // The GLB header and the JSON chunk's header; tinygltf checks the rest of the framing.
     scan.binary = true;
-    if (data.size() < 20)
-      throw IoError(name, 0, -1, "malformed glTF binary: shorter than its 20-byte header");
-    const std::uint64_t json_length = le32(data.data() + 12);
-    if (le32(data.data() + 16) != 0x4E4F534Au)
-      throw IoError(name, 0, 16, "malformed glTF binary: the first chunk is not JSON");
-    if (json_length == 0 || 20 + json_length > data.size())
-      throw IoError(name, 0, 12,
-                    "malformed glTF binary: the JSON chunk's length " + str(json_length) +
-                        " does not fit in the file's " + str(data.size()) + " bytes");
-    scan.json = data.substr(20, static_cast<std::size_t>(json_length));
+    scan.json = frame_glb(data, name);
   }
   Scanner scanner(name, scan);
   const char* first = scan.json.data();

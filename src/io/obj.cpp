@@ -7,7 +7,9 @@
 // corner of every face names one. A file where some corners have vt and others do not gets no
 // texture coordinates at all, without an error: a partial attribute cannot be carried per corner.
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -36,18 +38,31 @@ bool is_ignored_keyword(std::string_view k) {
   return false;
 }
 
-// The largest 1-based index a face used before the pool it points into was complete (OBJ lets a
-// face name a vertex defined further down); checked once the whole file is read.
+// The largest index a face used before the pool it points into was complete (OBJ lets a face name
+// a vertex defined further down); checked once the whole file is read.
 struct ForwardRef {
   std::uint64_t index = 0;  // 0-based; meaningful when line != 0
   std::uint64_t line = 0;
   std::uint64_t face = 0;
 };
 
+// An index this large is out of range of any pool (they are indexed by 32 bits).
+constexpr std::uint64_t kMaxIndex = std::numeric_limits<std::uint32_t>::max();
+
+// The sizes of the pools (vertices, texture coordinates, normals) once the whole file is read;
+// kUnchecked for an attribute that is dropped (see the top of the file).
+struct PoolSizes {
+  static constexpr std::uint64_t kUnchecked = std::numeric_limits<std::uint64_t>::max();
+  std::uint64_t positions = kUnchecked, texcoords = kUnchecked, normals = kUnchecked;
+};
+
+// Reads the file in one pass. An index past its pool can only be judged at the end (the pool may
+// grow further down); when one is, the file is read again knowing the final pool sizes, so that
+// the error names the first face that goes out of range, not the one with the largest index.
 class ObjReader {
  public:
-  ObjReader(std::string_view data, const std::string& name)
-      : p_(data.data()), end_(data.data() + data.size()), name_(name) {}
+  ObjReader(std::string_view data, const std::string& name, const PoolSizes* final_sizes = nullptr)
+      : data_(data), p_(data.data()), end_(data.data() + data.size()), name_(name), final_(final_sizes) {}
 
   IndexedMesh read() {
     while (p_ < end_) {
@@ -179,16 +194,18 @@ class ObjReader {
     skip_line();
   }
 
-  // Resolves a 1-based or negative OBJ index against a pool holding `count` entries so far.
-  std::uint32_t resolve(std::int64_t raw, std::size_t count, ForwardRef& forward, const char* what) {
+  // Resolves a 1-based or negative OBJ index against a pool holding `count` entries so far and
+  // `final_count` at the end of the file (kUnchecked in the first pass, where it is not known yet).
+  std::uint32_t resolve(std::int64_t raw, std::size_t count, std::uint64_t final_count, ForwardRef& forward,
+                        const char* what) {
     const std::uint64_t face = mesh_.face_sizes.size();
     if (raw > 0) {
       const auto index = static_cast<std::uint64_t>(raw - 1);
-      if (index >= std::numeric_limits<std::uint32_t>::max())
-        fail("face " + std::to_string(face) + ": " + what + " index " + std::to_string(raw) +
-             " is too large");
+      if (final_ != nullptr && (index >= final_count || index >= kMaxIndex))
+        fail(out_of_range(face, what, index, final_count));
+      // An index too large for any pool waits as well, so that errors come in file order.
       if (index >= count && (forward.line == 0 || index > forward.index)) forward = {index, line_, face};
-      return static_cast<std::uint32_t>(index);
+      return static_cast<std::uint32_t>(std::min(index, kMaxIndex));
     }
     if (raw == 0)
       fail("face " + std::to_string(face) + ": " + what + " index 0 is invalid (OBJ indices start at 1)");
@@ -206,7 +223,8 @@ class ObjReader {
       const char* q = detail::parse_int(p_, end_, raw);
       if (q == nullptr) fail("expected a vertex index after 'f', got " + describe_token(p_, end_));
       p_ = q;
-      mesh_.indices.push_back(resolve(raw, mesh_.positions.size(), forward_v_, "vertex"));
+      mesh_.indices.push_back(
+          resolve(raw, mesh_.positions.size(), final_sizes().positions, forward_v_, "vertex"));
       if (p_ < end_ && *p_ == '/') {
         ++p_;
         if (p_ < end_ && *p_ != '/') {
@@ -214,15 +232,16 @@ class ObjReader {
           if (q == nullptr)
             fail("expected a texture coordinate index after '/', got " + describe_token(p_, end_));
           p_ = q;
-          mesh_.texcoord_indices.push_back(
-              resolve(raw, mesh_.texcoords.size(), forward_vt_, "texture coordinate"));
+          mesh_.texcoord_indices.push_back(resolve(raw, mesh_.texcoords.size(), final_sizes().texcoords,
+                                                   forward_vt_, "texture coordinate"));
         }
         if (p_ < end_ && *p_ == '/') {
           ++p_;
           q = detail::parse_int(p_, end_, raw);
           if (q == nullptr) fail("expected a normal index after '/', got " + describe_token(p_, end_));
           p_ = q;
-          mesh_.normal_indices.push_back(resolve(raw, mesh_.normals.size(), forward_vn_, "normal"));
+          mesh_.normal_indices.push_back(
+              resolve(raw, mesh_.normals.size(), final_sizes().normals, forward_vn_, "normal"));
         }
       }
       if (!at_token_end(p_, end_) && *p_ != '#' && *p_ != '\\')
@@ -239,38 +258,63 @@ class ObjReader {
     skip_line();
   }
 
-  void check_forward(const ForwardRef& f, std::size_t count, const char* what) const {
-    if (f.line != 0 && f.index >= count)
-      fail_at(f.line, "face " + std::to_string(f.face) + ": " + what + " index " +
-                          std::to_string(f.index + 1) + " is out of range (the file defines " +
-                          std::to_string(count) + ")");
+  static std::string out_of_range(std::uint64_t face, const char* what, std::uint64_t index,
+                                  std::uint64_t count) {
+    const std::string head =
+        "face " + std::to_string(face) + ": " + what + " index " + std::to_string(index + 1);
+    if (index >= kMaxIndex) return head + " is too large";
+    return head + " is out of range (the file defines " + std::to_string(count) + ")";
+  }
+
+  const PoolSizes& final_sizes() const {
+    static const PoolSizes kUnknown;
+    return final_ != nullptr ? *final_ : kUnknown;
   }
 
   IndexedMesh finish() {
-    check_forward(forward_v_, mesh_.positions.size(), "vertex");
     // Attributes named by only some corners cannot be expressed per corner: drop them (see top).
     const std::size_t corners = mesh_.indices.size();
-    if (corners == 0 || mesh_.texcoord_indices.size() != corners) {
+    PoolSizes sizes;
+    sizes.positions = mesh_.positions.size();
+    if (corners != 0 && mesh_.texcoord_indices.size() == corners) sizes.texcoords = mesh_.texcoords.size();
+    if (corners != 0 && mesh_.normal_indices.size() == corners) sizes.normals = mesh_.normals.size();
+    const struct {
+      const ForwardRef& ref;
+      std::uint64_t count;
+      const char* what;
+    } pools[] = {{forward_v_, sizes.positions, "vertex"},
+                 {forward_vt_, sizes.texcoords, "texture coordinate"},
+                 {forward_vn_, sizes.normals, "normal"}};
+    for (const auto& pool : pools) {
+      const ForwardRef& f = pool.ref;
+      if (f.line == 0 || (f.index < pool.count && f.index < kMaxIndex)) continue;
+      // The second reading stops at the first index out of range (see ObjReader); should it not,
+      // the largest index is out of range all the same.
+      if (final_ == nullptr) {
+        mesh_ = IndexedMesh{};  // freed before the second reading allocates its own
+        ObjReader(data_, name_, &sizes).read();
+      }
+      fail_at(f.line, out_of_range(f.face, pool.what, f.index, pool.count));
+    }
+    if (sizes.texcoords == PoolSizes::kUnchecked) {
       mesh_.texcoords.clear();
       mesh_.texcoord_indices.clear();
-    } else {
-      check_forward(forward_vt_, mesh_.texcoords.size(), "texture coordinate");
     }
-    if (corners == 0 || mesh_.normal_indices.size() != corners) {
+    if (sizes.normals == PoolSizes::kUnchecked) {
       mesh_.normals.clear();
       mesh_.normal_indices.clear();
-    } else {
-      check_forward(forward_vn_, mesh_.normals.size(), "normal");
     }
     detail::compact_face_sizes(mesh_);
     return std::move(mesh_);
   }
 
+  std::string_view data_;
   const char* p_;
   const char* end_;
   const std::string& name_;
   std::uint64_t line_ = 1;
   IndexedMesh mesh_;
+  const PoolSizes* final_;
   ForwardRef forward_v_, forward_vt_, forward_vn_;
 };
 

@@ -288,18 +288,14 @@ std::optional<int> vertex_slot(std::string_view n) {
   return std::nullopt;
 }
 
-// The largest vertex index met before the vertex element (rare: PLY allows any element order).
-struct PendingIndex {
-  std::uint64_t index = 0;
-  std::uint64_t face = 0;
-  Location at;
-  bool set = false;
-};
-
 template <typename Source>
 class BodyReader {
  public:
-  BodyReader(Source& src, IndexedMesh& mesh) : src_(src), mesh_(mesh) {}
+  // vertex_count: the header's count of the 'vertex' element (0 without one). Faces are checked
+  // against it as they are read, so the first index out of range is the one reported, even in a
+  // file that puts its faces before its vertices (PLY allows any element order).
+  BodyReader(Source& src, IndexedMesh& mesh, std::uint64_t vertex_count)
+      : src_(src), mesh_(mesh), vertex_count_(vertex_count) {}
 
   void read(const Element& e) {
     std::uint64_t min_record = 0;
@@ -328,10 +324,6 @@ class BodyReader {
   }
 
   void finish() {
-    if (pending_.set && pending_.index >= mesh_.positions.size())
-      src_.fail("face " + std::to_string(pending_.face) + ": vertex index " + std::to_string(pending_.index) +
-                    " is out of range (" + std::to_string(mesh_.positions.size()) + " vertices)",
-                pending_.at);
     const bool corners = !mesh_.indices.empty();
     if (has_normals_ && corners) {
       mesh_.normal_indices = mesh_.indices;
@@ -422,12 +414,10 @@ class BodyReader {
   // Checks one vertex index of face `face` read at `at`; returns it as a 32-bit index.
   std::uint32_t check_index(std::int64_t index, std::uint64_t face, Location at) {
     if (index < 0 || index >= std::numeric_limits<std::uint32_t>::max() ||
-        (vertices_read_ && static_cast<std::uint64_t>(index) >= mesh_.positions.size()))
+        static_cast<std::uint64_t>(index) >= vertex_count_)
       src_.fail("face " + std::to_string(face) + ": vertex index " + std::to_string(index) +
-                    " is out of range (" + std::to_string(mesh_.positions.size()) + " vertices)",
+                    " is out of range (" + std::to_string(vertex_count_) + " vertices)",
                 at);
-    if (!vertices_read_ && (!pending_.set || static_cast<std::uint64_t>(index) > pending_.index))
-      pending_ = {static_cast<std::uint64_t>(index), face, at, true};
     return static_cast<std::uint32_t>(index);
   }
 
@@ -523,13 +513,19 @@ class BodyReader {
   bool has_normals_ = false;
   bool has_texcoords_ = false;
   std::uint64_t face_number_ = 0;
-  PendingIndex pending_;
+  std::uint64_t vertex_count_;
 };
 
 template <typename Source>
 IndexedMesh read_body(Source& src, const Header& h) {
   IndexedMesh mesh;
-  BodyReader<Source> reader(src, mesh);
+  std::uint64_t vertex_count = 0;
+  for (const Element& e : h.elements)
+    if (e.name == "vertex") {
+      vertex_count = e.count;
+      break;
+    }
+  BodyReader<Source> reader(src, mesh, vertex_count);
   for (const Element& e : h.elements) reader.read(e);
   reader.finish();
   return mesh;

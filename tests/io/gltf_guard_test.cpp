@@ -13,6 +13,7 @@
 #include "io/base64.h"
 #include "io/gltf_test_common.h"
 #include "io/io_errors.h"
+#include "test_meshes.h"
 
 namespace hedge {
 namespace {
@@ -119,6 +120,99 @@ TEST(GltfGuard, NestingUpToTheLimitIsRead) {
   EXPECT_EQ(read_gltf(doc.dump(), "m.gltf").face_count(), 1u);
   doc["extras"] = json::array({extras});
   EXPECT_HAS(message(doc.dump()), "nested deeper than 64");
+}
+
+// --- the GLB container ---------------------------------------------------------------------------
+
+// data/two_quads.glb: the 12-byte header (length 1096), the JSON chunk's header at byte 12 and its
+// 788 bytes of data from byte 20 to 808, the BIN chunk's header at byte 808 and its 280 bytes to 1096.
+class GlbFraming : public ::testing::Test {
+ protected:
+  const std::string glb = read_file(test::data_path("two_quads.glb"));
+
+  // The error of reading `bytes`, which must be hedge's and say where.
+  IoError error(const std::string& bytes) const {
+    const IoError e = catch_io_error([&] { read_gltf(bytes, "q.glb"); });
+    const std::string what = e.what();
+    EXPECT_EQ(what.find("Invalid glTF binary"), std::string::npos) << what;  // not tinygltf's
+    EXPECT_NE(what.find("malformed glTF binary: "), std::string::npos) << what;
+    return e;
+  }
+  std::string with_u32(std::size_t at, std::uint32_t v) const {
+    std::string out = glb;
+    for (int k = 0; k < 4; ++k)
+      out[at + static_cast<std::size_t>(k)] = static_cast<char>(v >> (8 * k) & 0xFF);
+    return out;
+  }
+};
+
+TEST_F(GlbFraming, TheWholeFileReads) {
+  ASSERT_EQ(glb.size(), 1096u);
+  EXPECT_GT(read_gltf(glb, "q.glb").face_count(), 0u);
+}
+
+TEST_F(GlbFraming, ACutInTheHeaderSaysWhere) {
+  IoError e = error(glb.substr(0, 10));
+  EXPECT_HAS(e.what(), "truncated: the file ends at byte 10, inside the 12-byte GLB header");
+  EXPECT_EQ(e.byte_offset(), 10);
+  e = error(glb.substr(0, 16));
+  EXPECT_HAS(
+      e.what(),
+      "the file ends at byte 16, inside the JSON chunk's 8-byte header at byte 12 (the header declares "
+      "1096 bytes, the file has 16)");
+  EXPECT_EQ(e.byte_offset(), 16);
+}
+
+TEST_F(GlbFraming, ACutInTheJsonChunkNamesTheChunkAndTheLengths) {
+  for (std::size_t cut : {20u, 400u, 807u}) {
+    const IoError e = error(glb.substr(0, cut));
+    EXPECT_HAS(e.what(),
+               "q.glb (byte 12): malformed glTF binary: truncated: the JSON chunk at byte 12 declares "
+               "788 bytes of data, to end at byte 808, past the end of the file (the header "
+               "declares 1096 bytes, the file has " +
+                   std::to_string(cut) + ")");
+    EXPECT_EQ(e.byte_offset(), 12);
+  }
+}
+
+TEST_F(GlbFraming, ACutInTheBinChunkNamesTheChunkAndTheLengths) {
+  IoError e = error(glb.substr(0, 812));
+  EXPECT_HAS(e.what(),
+             "the file ends at byte 812, inside the BIN chunk's 8-byte header at byte 808 (the "
+             "header declares 1096 bytes, the file has 812)");
+  EXPECT_EQ(e.byte_offset(), 812);
+  for (std::size_t cut : {808u, 816u, 1000u, 1095u}) {
+    e = error(glb.substr(0, cut));
+    if (cut == 808) {
+      EXPECT_HAS(e.what(), "inside the BIN chunk's 8-byte header at byte 808");
+      continue;
+    }
+    EXPECT_HAS(e.what(),
+               "truncated: the BIN chunk at byte 808 declares 280 bytes of data, to end at byte 1096, "
+               "past the end of the file (the header declares 1096 bytes, the file has " +
+                   std::to_string(cut) + ")");
+    EXPECT_EQ(e.byte_offset(), 808);
+  }
+}
+
+TEST_F(GlbFraming, LengthsThatDisagreeSayWhich) {
+  IoError e = error(with_u32(8, 1200));
+  EXPECT_HAS(e.what(), "truncated: the header declares 1200 bytes, the file has 1096");
+  EXPECT_EQ(e.byte_offset(), 8);
+  e = error(with_u32(8, 900));
+  EXPECT_HAS(e.what(),
+             "the BIN chunk at byte 808 declares 280 bytes of data, to end at byte 1096, past the 900 "
+             "bytes the header declares");
+  e = error(with_u32(8, 700));
+  EXPECT_HAS(e.what(),
+             "the JSON chunk at byte 12 declares 788 bytes of data, to end at byte 808, past the 700 "
+             "bytes the header declares");
+  e = error(with_u32(812, 0x12345678));
+  EXPECT_HAS(e.what(), "the chunk at byte 808 is not BIN");
+  EXPECT_EQ(e.byte_offset(), 812);
+  EXPECT_HAS(error(with_u32(16, 0x12345678)).what(), "the chunk at byte 12 is not JSON");
+  EXPECT_HAS(error(with_u32(12, 0)).what(), "the JSON chunk at byte 12 is empty");
+  EXPECT_HAS(error(with_u32(4, 1)).what(), "version 1, expected 2");
 }
 
 // --- negative numbers ----------------------------------------------------------------------------

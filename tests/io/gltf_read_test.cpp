@@ -237,7 +237,11 @@ TEST(GltfRead, ExternalBuffersAreReadBesideTheFile) {
 
 TEST(GltfRead, MalformedFilesSayWhatAndWhere) {
   expect_error("{\"asset\": {\"version\": \"2.0\"", "malformed glTF");
-  expect_error("glTF\x02\0\0\0garbage", "malformed glTF binary");
+  // A GLB's framing errors say the byte (the GLB cases are in gltf_guard_test.cpp).
+  EXPECT_NE(std::string(
+                catch_io_error([&] { read_gltf(std::string("glTF\x02\0\0\0garbage", 15), "m.glb"); }).what())
+                .find("m.glb (byte 15): malformed glTF binary: truncated: the file ends at byte 15"),
+            std::string::npos);
   {
     Triangle t;  // more elements than the view holds
     t.doc["accessors"][0]["count"] = 4;
@@ -255,6 +259,12 @@ TEST(GltfRead, MalformedFilesSayWhatAndWhere) {
     expect_error(t.text(),
                  "mesh 0 primitive 0 indices: accessor 1: index 9 (element 1) is out of range (POSITION has "
                  "3 vertices)");
+  }
+  for (const int first : {5, 9}) {
+    Triangle t;  // two indices out of range: the first is named
+    t.buffer[38] = static_cast<unsigned char>(first);
+    t.buffer[40] = static_cast<unsigned char>(14 - first);
+    expect_error(t.text(), "index " + std::to_string(first) + " (element 1) is out of range");
   }
   {
     Triangle t;

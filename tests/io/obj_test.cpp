@@ -215,6 +215,25 @@ TEST(ObjRead, IndicesOutOfRangeNameTheFaceAndLine) {
   expect_obj_error("v 0 0 0\nf 1 1 9999999999\n", "too large", 2);
 }
 
+// An index past its pool can only be judged at the end of the file; the error still names the first
+// face that goes out of range, not the last one or the one with the largest index.
+TEST(ObjRead, TheFirstIndexOutOfRangeIsReported) {
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  expect_obj_error(triangle + "f 1 2 7\nf 1 2 3\nf 1 2 9\n", "face 0: vertex index 7 is out of range", 4);
+  expect_obj_error(triangle + "f 1 2 9\nf 1 2 3\nf 1 2 7\n", "face 0: vertex index 9 is out of range", 4);
+  // Bad indices of different pools, and one too large for any pool, in file order.
+  expect_obj_error(triangle + "vt 0 0\nf 1/1 2/1 3/4\nf 1/1 2/1 8/1\n",
+                   "face 0: texture coordinate index 4 is out of range (the file defines 1)", 5);
+  expect_obj_error(triangle + "vt 0 0\nf 1/1 2/1 8/1\nf 1/1 2/1 3/4\n",
+                   "face 0: vertex index 8 is out of range (the file defines 3)", 5);
+  expect_obj_error(triangle + "f 1 2 5\nf 1 2 9999999999\n", "face 0: vertex index 5 is out of range", 4);
+  expect_obj_error(triangle + "vn 0 0 1\nf 1//1 2//1 3//1\nf 1//1 2//9999999999 3//1\nf 1//3 2//1 3//1\n",
+                   "face 1: normal index 9999999999 is too large", 6);
+  // A face naming vertices defined further down is fine until one of them never comes.
+  expect_obj_error("f 1 2 3\nf 1 2 6\nf 4 2 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n",
+                   "face 1: vertex index 6 is out of range (the file defines 4)", 2);
+}
+
 TEST(ObjRead, NonFiniteCoordinatesNameTheVertexAndLine) {
   expect_obj_error("v 0 0 0\nv 1 nan 0\n", "vertex 1 has a non-finite coordinate", 2);
   expect_obj_error("v 0 0 0\n\nv 1 0 inf\n", "vertex 1 has a non-finite coordinate", 3);

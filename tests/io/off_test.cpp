@@ -109,6 +109,12 @@ TEST(OffRead, IndicesOutOfRangeNameTheFaceAndLine) {
                    6);
 }
 
+TEST(OffRead, TheFirstBadIndexIsReported) {
+  const std::string triangle = "OFF\n3 3 0\n0 0 0\n1 0 0\n0 1 0\n";
+  expect_off_error(triangle + "3 0 1 5\n3 0 1 2\n3 0 1 9\n", "face 0: vertex index 5 is out of range", 6);
+  expect_off_error(triangle + "3 0 1 2\n3 0 9 5\n3 0 1 4\n", "face 1: vertex index 9 is out of range", 7);
+}
+
 TEST(OffRead, NonFiniteCoordinatesNameTheVertexAndLine) {
   expect_off_error("OFF\n3 1 0\n0 0 0\n\n1 nan 0\n0 1 0\n3 0 1 2\n", "vertex 1 has a non-finite coordinate",
                    5);

@@ -393,6 +393,34 @@ TEST(PlyRead, BadIndicesNameTheFace) {
   EXPECT_EQ(a.line(), 10u);
 }
 
+// PLY allows faces before vertices: their indices are checked against the header's vertex count,
+// so the first bad index is the one reported, not the largest.
+TEST(PlyRead, TheFirstBadIndexIsReportedWhenFacesComeFirst) {
+  const std::string faces_first =
+      "element face 2\nproperty list uchar int vertex_indices\n"
+      "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+  auto body = [](double first_bad, double second_bad) {
+    return std::vector<Val>{{'B', 3}, {'i', 0},          {'i', 1}, {'i', first_bad}, {'B', 3}, {'i', 0},
+                            {'i', 1}, {'i', second_bad}, {'f', 0}, {'f', 0},         {'f', 0}, {'f', 1},
+                            {'f', 0}, {'f', 0},          {'f', 0}, {'f', 1},         {'f', 0}};
+  };
+  for (const char* format : kFormats) {
+    SCOPED_TRACE(format);
+    expect_ply_error(ply(format, faces_first, body(5, 9)),
+                     "face 0: vertex index 5 is out of range (3 vertices)");
+    expect_ply_error(ply(format, faces_first, body(9, 5)),
+                     "face 0: vertex index 9 is out of range (3 vertices)");
+    expect_ply_error(ply(format, faces_first, body(2, 4)),
+                     "face 1: vertex index 4 is out of range (3 vertices)");
+  }
+  // Where: the byte of the first bad index, after the header and the first face's count and two indices.
+  const std::string binary = ply("binary_little_endian", faces_first, body(5, 9));
+  const std::size_t header = binary.find("end_header\n") + 11;
+  EXPECT_EQ(catch_io_error([&] { read_ply(binary); }).byte_offset(), static_cast<std::int64_t>(header + 9));
+  const IndexedMesh m = read_ply(ply("ascii", faces_first, body(2, 1)));
+  EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 1, 1}));
+}
+
 TEST(PlyRead, NonFiniteValuesNameTheVertex) {
   for (const char* format : kFormats) {
     SCOPED_TRACE(format);

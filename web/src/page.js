@@ -39,7 +39,10 @@ export async function guard(what, action) {
   try {
     return await action();
   } catch (error) {
-    showError(`${what}: ${messageOf(error)}`);
+    // hedge's messages name their call already ("decimate: face 0 has 4 corners ..."): the label
+    // is added only to a message that does not start with it.
+    const message = messageOf(error);
+    showError(message.startsWith(`${what}:`) ? message : `${what}: ${message}`);
     return undefined;
   } finally {
     state.busy = false;

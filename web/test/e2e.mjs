@@ -420,6 +420,13 @@ test('subdivide, smooth and decimate', async ({ page }) => {
     'vertices after Catmull-Clark',
   );
   checkEqual(await page.getAttribute('body', 'data-valid'), '1', 'validity after Catmull-Clark');
+
+  // Decimating the quads is refused, and the refusal names its call once.
+  await page.click('#decimate');
+  await page.waitForSelector('#error', { state: 'visible', timeout: 5000 });
+  const refusal = await page.textContent('#error-text');
+  check(refusal.includes('triangulate first'), `the decimate refusal says why: ${refusal}`);
+  check(!/^(\w+): \1:/.test(refusal.trim()), `the decimate refusal repeats its prefix: ${refusal}`);
 });
 
 test('a malformed file shows an error and the page keeps working', async ({ page }) => {

@@ -219,7 +219,7 @@ test('bad strikes throw a HedgeError and leave the mesh unchanged', () => {
   refused([NaN, 1, 0], {}, /impact.*not finite/);
   refused([1, Infinity, 0], {}, /not finite/);
   refused([5, 5, 3], {}, /from the nearest face/);
-  refused([5, 5], {}, /expected \[x, y, z\]/);
+  refused([5, 5], {}, /^fracture: impact must be \[x, y, z\]/);
   refused([5, 5, 0], { material: 'glas' }, /unknown material 'glas'/);
   refused([5, 5, 0], { seed: -1 }, /seed/);
   refused([5, 5, 0], { seed: 1.5 }, /seed/);

@@ -281,13 +281,21 @@ test('arguments of the wrong type are refused before they reach the module', () 
   );
   assert.throws(
     () => mesh.setPosition(0, ['a', 0, 0]),
+    (e) => e.kind === 'invalid-argument' && /^setPosition: point must be/.test(e.message),
+  );
+  assert.throws(
+    () => mesh.setPosition(0, [NaN, 0, 0]),
     (e) => e.kind === 'invalid-argument' && /finite/.test(e.message),
   );
   assert.throws(
     () => mesh.setPosition(0, [1, 2]),
     (e) => e.kind === 'invalid-argument',
   );
-  assert.equal(mesh.pick(['x', 0, 1], [0, 0, -1]), null, 'a NaN origin finds nothing');
+  assert.equal(mesh.pick([NaN, 0, 1], [0, 0, -1]), null, 'a NaN origin finds nothing');
+  assert.throws(
+    () => mesh.pick(['x', 0, 1], [0, 0, -1]),
+    (e) => e.kind === 'invalid-argument' && /^pick: origin must be/.test(e.message),
+  );
   assert.throws(
     () => mesh.pickMany(new Float32Array(6), [0]),
     (e) => e.kind === 'invalid-argument',
