@@ -1,6 +1,6 @@
 """hedge in Python, stage by stage: load, inspect, edit, subdivide, decimate, fracture, render.
 
-    python tour.py [MESH] [--out DIR]      (MESH: data/spot_control_mesh.obj by default)
+    python tour.py [MESH] [--out DIR]      (MESH: the repository's data/spot_control_mesh.obj)
 
 Each `# %%` starts a cell: the file opens as a notebook in editors that read such cells, and runs
 as a plain script. Pictures go to DIR (out/ by default) as python_tour_<stage>.png; in a notebook a
@@ -17,7 +17,8 @@ import numpy as np
 import hedge
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-parser.add_argument("mesh", nargs="?", default="data/spot_control_mesh.obj")
+SAMPLE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "data", "spot_control_mesh.obj")
+parser.add_argument("mesh", nargs="?", default=os.path.normpath(SAMPLE))
 parser.add_argument("--out", default="out")
 args, _ = parser.parse_known_args()
 os.makedirs(args.out, exist_ok=True)
