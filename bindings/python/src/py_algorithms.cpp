@@ -78,22 +78,20 @@ void subdivide(const Mesh& self, const std::string& scheme, int steps) {
 }
 
 void smooth(const Mesh& self, const std::string& method, int iterations, double lambda, double mu,
-            bool fix_boundary, const std::optional<py::array_t<std::uint8_t, py::array::forcecast>>& mask) {
+            bool fix_boundary, const py::object& mask) {
   SmoothOptions o;
   o.method = binding::parse_smooth_method(method);
   o.iterations = iterations;
   o.lambda = lambda;
   o.mu = mu;
   o.fix_boundary = fix_boundary;
-  std::vector<std::uint8_t> chosen;
-  if (mask) {
-    if (mask->ndim() != 1)
-      throw InvalidInputError("smooth: mask must be a 1-D array, one entry per vertex slot");
-    chosen.assign(mask->data(), mask->data() + mask->shape(0));
-    // The library wants a mask of vertex_slots entries; an empty one would mean "every vertex".
-    if (chosen.empty()) chosen.push_back(0);
-  }
   const auto use = self.use();
+  std::vector<std::uint8_t> chosen;
+  if (!mask.is_none()) {
+    chosen = slot_mask(mask, use->mesh.vertex_slots(), "smooth", "mask");
+    // The library reads an empty mask as "every vertex": a mesh of no slots has nothing to move.
+    if (chosen.empty()) return;
+  }
   o.mask = chosen;
   py::gil_scoped_release unlocked;
   hedge::smooth(use->mesh, o);  // positions only: the views stay valid and see the result

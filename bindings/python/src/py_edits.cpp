@@ -17,6 +17,7 @@
 #include "hedge/core/face_operations.h"
 #include "hedge/core/operations.h"
 #include "hedge/error.h"
+#include "py_args.h"
 #include "py_support.h"
 
 namespace hedge::python {
@@ -73,17 +74,15 @@ std::optional<std::string> refusal_of(const Mesh& self, const std::string& name,
   return std::string(why);
 }
 
-std::size_t remove_faces_of(const Mesh& self, const py::array_t<std::int64_t, py::array::forcecast>& faces) {
-  if (faces.ndim() != 1) throw InvalidInputError("remove_faces: faces must be a 1-D array of face indices");
-  const auto r = faces.unchecked<1>();
+std::size_t remove_faces_of(const Mesh& self, const py::object& faces) {
   const auto use = self.use();
-  require_no_views(*use, "remove_faces");
   SurfaceMesh& m = use->mesh;
+  const std::vector<std::int64_t> list = index_list(faces, "remove_faces", "faces", m.face_slots());
+  require_no_views(*use, "remove_faces");
   // Every face is checked before any is removed, so a bad one leaves the mesh as it was.
   std::vector<Face> chosen;
-  chosen.reserve(static_cast<std::size_t>(r.shape(0)));
-  for (py::ssize_t i = 0; i < r.shape(0); ++i)
-    chosen.push_back(binding::live_face(m, element_index(r(i), "face")));
+  chosen.reserve(list.size());
+  for (const std::int64_t f : list) chosen.push_back(binding::live_face(m, element_index(f, "face")));
   const std::size_t before = m.n_faces();
   // The library's remove_faces() gives no strong guarantee: memory running out after some faces
   // went would leave them gone. The binding core's rollback puts the mesh back (a copy per call).
@@ -201,7 +200,8 @@ void bind_edits(py::class_<Mesh>& mesh) {
           "Removes the face, and the edges and vertices it leaves unused. Returns False if refused "
           "(reason in last_refusal).")
       .def("remove_faces", &remove_faces_of, py::arg("faces"),
-           "Removes several faces at once (an array of indices; repeats are fine), and the edges and "
+           "Removes several faces at once (an array of integer indices, repeats are fine, or a bool mask "
+           "of face_slots entries), and the edges and "
            "vertices they leave unused. Never refused: a vertex the removal would leave pinched is "
            "split, one copy per fan, so the mesh stays manifold (which adds vertices, so it raises "
            "ViewsExportedError while views are alive). Returns how many faces were removed. Raises "

@@ -46,22 +46,8 @@ bool in_range(std::int64_t v, std::size_t n) { return v >= 0 && static_cast<std:
 //! for triangles), checked against n vertices.
 void face_indices(const py::object& F, std::size_t n, std::vector<std::uint32_t>& indices,
                   std::vector<std::uint32_t>& sizes) {
-  if (py::isinstance<py::array>(F)) {
-    const auto kind = py::reinterpret_borrow<py::array>(F).dtype().kind();
-    if (kind != 'i' && kind != 'u')
-      throw InvalidInputError(std::string("from_arrays: F must hold integers, not numpy dtype kind '") +
-                              kind + "'");
-  }
   // A rectangular F converts to an (m, k) array; a list of polygons of several sizes does not.
-  py::array_t<std::int64_t, py::array::c_style> a;
-  if (py::isinstance<py::array>(F)) {
-    a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(F);
-  } else {
-    try {
-      a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(F);
-    } catch (const py::error_already_set&) {
-    }
-  }
+  const py::array_t<std::int64_t, py::array::c_style> a = integer_array(F, "from_arrays", "F");
   if (a && a.ndim() == 2) {
     const auto m = static_cast<std::size_t>(a.shape(0)), k = static_cast<std::size_t>(a.shape(1));
     if (k < 3)
@@ -85,15 +71,11 @@ void face_indices(const py::object& F, std::size_t n, std::vector<std::uint32_t>
     if (!py::isinstance<py::sequence>(row))
       throw InvalidInputError("from_arrays: F[" + std::to_string(i) +
                               "] is not a sequence of vertex indices");
-    const auto corners = py::reinterpret_borrow<py::sequence>(row);
+    const std::string name = "F[" + std::to_string(i) + "]";
+    const std::vector<std::int64_t> corners = index_list(row, "from_arrays", name.c_str());
     for (std::size_t j = 0; j < corners.size(); ++j) {
-      const std::string where = "F[" + std::to_string(i) + "][" + std::to_string(j) + "]";
-      const py::object c = corners[j];
-      if (!py::isinstance<py::int_>(c) && !py::hasattr(c, "__index__"))
-        throw InvalidInputError("from_arrays: " + where + " is not an integer");
-      const auto v = py::cast<std::int64_t>(py::int_(c));
-      if (!in_range(v, n)) bad_index(v, n, where);
-      indices.push_back(static_cast<std::uint32_t>(v));
+      if (!in_range(corners[j], n)) bad_index(corners[j], n, name + "[" + std::to_string(j) + "]");
+      indices.push_back(static_cast<std::uint32_t>(corners[j]));
     }
     sizes.push_back(static_cast<std::uint32_t>(corners.size()));
     triangles = triangles && corners.size() == 3;

@@ -14,6 +14,7 @@
 #include "hedge/core/color.h"
 #include "hedge/error.h"
 #include "hedge/render/tangent.h"
+#include "py_args.h"
 #include "py_support.h"
 
 namespace hedge::python {
@@ -70,18 +71,13 @@ void need_finite(const SurfaceMesh& m, Vertex v) {
                             std::to_string(p.y) + ", " + std::to_string(p.z) + ")");
 }
 
-void positions_changed(const Mesh& self,
-                       const std::optional<py::array_t<std::int64_t, py::array::forcecast>>& vertices) {
+void positions_changed(const Mesh& self, const py::object& vertices) {
   const auto use = self.use();
   SurfaceMesh& m = use->mesh;
   std::vector<Vertex> moved;
-  if (vertices) {
-    if (vertices->ndim() != 1)
-      throw InvalidInputError("positions_changed: vertices must be a 1-D array of indices");
-    const auto r = vertices->unchecked<1>();
-    for (py::ssize_t i = 0; i < r.shape(0); ++i) {
-      moved.push_back(binding::live_vertex(m, element_index(r(i), "vertex")));
-    }
+  if (!vertices.is_none()) {
+    for (const std::int64_t v : index_list(vertices, "positions_changed", "vertices", m.vertex_slots()))
+      moved.push_back(binding::live_vertex(m, element_index(v, "vertex")));
   } else {
     for (const Vertex v : m.vertices()) moved.push_back(v);
   }
@@ -181,7 +177,8 @@ void bind_views(py::module_& m, py::class_<Mesh>& mesh) {
                              "that add elements raise ViewsExportedError.")
       .def("positions_changed", &positions_changed, py::arg("vertices") = py::none(),
            "Tells the mesh that positions were written through mesh.positions: the given vertices "
-           "(an array of indices), or every live vertex if None. Each is checked to be live and "
+           "(an array of integer indices, or a bool mask of vertex_slots entries), or every live vertex if "
+           "None. Each is checked to be live and "
            "finite first; on an error nothing is marked.")
       .def_property_readonly(
           "halfedge_vertex_array",

@@ -51,11 +51,12 @@ def test_quads_as_an_array():
         (np.zeros((3, 3)), [[0, 1, 3]], "F[0, 2] = 3 is not a vertex index"),
         (np.zeros((3, 3)), [[0, -1, 2]], "F[0, 1] = -1"),
         (np.zeros((3, 3)), np.array([[0.0, 1.0, 2.0]]), "integers"),
-        (np.zeros((3, 3)), [[0, 1, 2], [[0], 1, 2]], "F[1][0] is not an integer"),
+        (np.zeros((3, 3)), [[0, 1, 2], [[0], 1, 2]], "F[1] must be a 1-D array of integer indices"),
         (np.zeros((3, 3)), [[0, 1, 2], 5], "F[1] is not a sequence"),
         (np.zeros((3, 3)), np.array([[0, 1], [1, 2]]), "at least 3 columns"),
-        (np.zeros((3, 3)), [[0, 1, 2], [0, 1, "x"]], "F[1][2] is not an integer"),
-        (np.zeros((3, 3)), "abc", "list of polygons"),
+        (np.zeros((3, 3)), [[0, 1, 2], [0, 1, "x"]], "from_arrays: F must hold integers, not <U"),
+        (np.zeros((3, 3)), [[0, 1, 2], [0, 1, 2, 2.5]], "F[1] must hold integers, not float64"),
+        (np.zeros((3, 3)), "abc", "F must be an array of integers, not a string"),
     ],
 )
 def test_malformed_arrays_raise_value_errors(V, F, message):
