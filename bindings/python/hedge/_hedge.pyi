@@ -120,10 +120,10 @@ class Mesh:
     def decimate(
         self,
         *,
-        target_faces: int = 0,
-        target_vertices: int = 0,
+        target_faces: Optional[int] = None,
+        target_vertices: Optional[int] = None,
         ratio: Optional[float] = None,
-        max_error: float = ...,
+        max_error: Optional[float] = None,
         boundary_weight: float = 1.0,
         feature_angle_degrees: float = 60.0,
         feature_weight: float = 1.0,

@@ -97,10 +97,18 @@ void smooth(const Mesh& self, const std::string& method, int iterations, double 
   hedge::smooth(use->mesh, o);  // positions only: the views stay valid and see the result
 }
 
-py::dict decimate(const Mesh& self, std::int64_t target_faces, std::int64_t target_vertices,
-                  std::optional<double> ratio, double max_error, double boundary_weight,
-                  double feature_angle_degrees, double feature_weight, bool keep_boundary, bool keep_seams,
-                  double attribute_weight, double max_normal_change_degrees) {
+py::dict decimate(const Mesh& self, std::optional<std::int64_t> target_faces_arg,
+                  std::optional<std::int64_t> target_vertices_arg, std::optional<double> ratio,
+                  std::optional<double> max_error, double boundary_weight, double feature_angle_degrees,
+                  double feature_weight, bool keep_boundary, bool keep_seams, double attribute_weight,
+                  double max_normal_change_degrees) {
+  // With no target the library would collapse all it can: a mesh of thousands of faces to four.
+  if (!target_faces_arg && !target_vertices_arg && !ratio && !max_error)
+    throw InvalidInputError("decimate: give a target: target_faces, target_vertices, ratio or max_error");
+  if (ratio && target_faces_arg)
+    throw InvalidInputError("decimate: ratio and target_faces both set the count of faces; give one of them");
+  const std::int64_t target_faces = target_faces_arg.value_or(0),
+                     target_vertices = target_vertices_arg.value_or(0);
   if (target_faces < 0 || target_vertices < 0)
     throw InvalidInputError("decimate: target_faces and target_vertices must be counts (0 or more), got " +
                             std::to_string(target_faces) + " and " + std::to_string(target_vertices));
@@ -109,7 +117,7 @@ py::dict decimate(const Mesh& self, std::int64_t target_faces, std::int64_t targ
   DecimateOptions o;
   o.target_faces = static_cast<std::size_t>(target_faces);
   o.target_vertices = static_cast<std::size_t>(target_vertices);
-  o.max_error = max_error;
+  o.max_error = max_error.value_or(std::numeric_limits<double>::infinity());
   o.boundary_weight = boundary_weight;
   o.feature_angle_degrees = feature_angle_degrees;
   o.feature_weight = feature_weight;
@@ -305,19 +313,22 @@ void bind_algorithms(py::class_<Mesh>& mesh, py::module_& m) {
            "otherwise they slide along the boundary. mask: one entry per vertex slot, only nonzero "
            "ones move. Only positions change, so views stay valid. Illegal options raise "
            "InvalidArgumentError with the mesh unchanged. Releases the GIL.")
-      .def("decimate", &decimate, py::kw_only(), py::arg("target_faces") = 0, py::arg("target_vertices") = 0,
-           py::arg("ratio") = py::none(), py::arg("max_error") = std::numeric_limits<double>::infinity(),
-           py::arg("boundary_weight") = 1.0, py::arg("feature_angle_degrees") = 60.0,
-           py::arg("feature_weight") = 1.0, py::arg("keep_boundary") = false, py::arg("keep_seams") = true,
-           py::arg("attribute_weight") = 0.0, py::arg("max_normal_change_degrees") = 60.0,
+      .def("decimate", &decimate, py::kw_only(), py::arg("target_faces") = py::none(),
+           py::arg("target_vertices") = py::none(), py::arg("ratio") = py::none(),
+           py::arg("max_error") = py::none(), py::arg("boundary_weight") = 1.0,
+           py::arg("feature_angle_degrees") = 60.0, py::arg("feature_weight") = 1.0,
+           py::arg("keep_boundary") = false, py::arg("keep_seams") = true, py::arg("attribute_weight") = 0.0,
+           py::arg("max_normal_change_degrees") = 60.0,
            "Decimates a triangle mesh by quadric-ranked edge collapses until it has at most "
-           "target_faces faces and target_vertices vertices (each when nonzero; ratio sets "
-           "target_faces to that share of the faces), or the next collapse would move the surface "
+           "target_faces faces and target_vertices vertices (each when given; ratio, instead of "
+           "target_faces, sets it to that share of the faces), or the next collapse would move the surface "
            "by more than max_error, or no legal collapse is left. Garbage is collected at the end "
            "(indices change). Returns a dict: vertices, faces (left), collapses, max_error (the "
            "largest error of a collapse done), removed_faces, removed_vertices and target_reached "
            "(a target was given and met; the library does not say more about why it stopped). On "
-           "any error the mesh is unchanged. Raises ViewsExportedError while views are alive. "
+           "any error the mesh is unchanged. Raises InvalidArgumentError if none of target_faces, "
+           "target_vertices, ratio and max_error is given, or ratio with target_faces; "
+           "ViewsExportedError while views are alive. "
            "Releases the GIL.")
       .def("garbage_collection", &garbage_collection,
            "Removes deleted elements and compacts every array; indices change. Returns the "

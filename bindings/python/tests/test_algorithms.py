@@ -166,6 +166,18 @@ def test_decimate_errors_leave_the_mesh_unchanged(ico):
     assert_valid(ico)
 
 
+def test_decimate_wants_one_target_and_not_two_face_counts(ico):
+    faces = ico.n_faces
+    with pytest.raises(hedge.InvalidArgumentError) as caught:
+        ico.decimate()
+    assert str(caught.value) == "decimate: give a target: target_faces, target_vertices, ratio or max_error"
+    with pytest.raises(hedge.InvalidArgumentError, match="ratio and target_faces"):
+        ico.decimate(ratio=0.5, target_faces=100)
+    assert ico.n_faces == faces
+    assert ico.decimate(target_vertices=8)["vertices"] == 8
+    assert_valid(ico)
+
+
 def test_garbage_collection_returns_the_maps(grid):
     V0, _ = grid.to_arrays()
     assert grid.remove_faces([0, 1]) == 2  # the two faces of corner vertex 0, which goes with them
