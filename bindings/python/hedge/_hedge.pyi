@@ -6,6 +6,8 @@ from typing import Any, Optional, Sequence, Union
 import numpy as np
 import numpy.typing as npt
 
+__version__: str
+
 _Point = Optional[Sequence[float]]
 _Faces = Union[npt.ArrayLike, Sequence[Sequence[int]]]
 
@@ -191,7 +193,7 @@ class Shard(Mesh):
     @property
     def closed(self) -> bool: ...
     @property
-    def mass(self) -> dict[str, Union[float, npt.NDArray[np.float64]]]: ...
+    def mass(self) -> Optional[dict[str, Union[float, npt.NDArray[np.float64]]]]: ...
     @property
     def hull(self) -> Optional[Mesh]: ...
     @property

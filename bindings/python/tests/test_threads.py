@@ -56,3 +56,28 @@ def test_different_meshes_build_in_parallel_threads():
     for mesh in results:
         assert mesh.n_faces == 7200
         assert_valid(mesh)
+
+
+def test_repr_of_a_busy_mesh_says_so_instead_of_raising(tmp_path):
+    mesh = hedge.Mesh.from_arrays(*grid_arrays(300))
+    path = str(tmp_path / "big.obj")
+    done = threading.Event()
+    seen = set()
+
+    def writer():
+        try:
+            for _ in range(20):
+                mesh.write(path)
+                if "busy" in " ".join(seen):
+                    break
+        finally:
+            done.set()
+
+    thread = threading.Thread(target=writer)
+    thread.start()
+    while not done.is_set():
+        seen.add(repr(mesh))  # never raises
+    thread.join()
+    assert "<hedge.Mesh: busy, another thread is in a call on it>" in seen, seen
+    assert repr(mesh) == "<hedge.Mesh: 90601 vertices, 180000 faces>"
+    assert_valid(mesh)

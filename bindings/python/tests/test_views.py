@@ -91,6 +91,7 @@ def test_views_block_edits_that_add_elements(grid):
     with pytest.raises(hedge.ViewsExportedError) as caught:
         grid.split_edge(0)
     assert isinstance(caught.value, BufferError)
+    assert "REPL's `_` or a notebook's Out[]" in str(caught.value) and "gc.collect()" in str(caught.value)
     with pytest.raises(hedge.ViewsExportedError):
         grid.split_face(0)
     # A slice keeps the view alive through its base.
