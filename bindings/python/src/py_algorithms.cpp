@@ -273,10 +273,13 @@ py::dict hausdorff(const Mesh& a, const Mesh& b, std::int64_t samples, std::uint
                    std::int64_t threads) {
   if (samples < 0)
     throw InvalidInputError("hausdorff_distance: samples must be 0 or more, got " + std::to_string(samples));
-  if (threads < 1 || threads > 1024)
-    throw InvalidInputError("hausdorff_distance: threads must be in 1..1024, got " + std::to_string(threads));
-  const DistanceOptions o{
-      .samples = static_cast<std::size_t>(samples), .seed = seed, .threads = static_cast<unsigned>(threads)};
+  if (static_cast<std::uint64_t>(samples) > kMaxDistanceSamples)
+    throw InvalidInputError("hausdorff_distance: samples must be at most " +
+                            std::to_string(kMaxDistanceSamples) + ", got " + std::to_string(samples) +
+                            "; draw fewer");
+  const DistanceOptions o{.samples = static_cast<std::size_t>(samples),
+                          .seed = seed,
+                          .threads = binding::thread_count(threads, "hausdorff_distance: threads")};
   // A mesh measured against itself is one use: a second would be refused as busy.
   const auto use_a = a.use();
   std::optional<binding::MeshUse<State>> use_b;
@@ -407,8 +410,8 @@ void bind_algorithms(py::class_<Mesh>& mesh, py::module_& m) {
         "The symmetric sampled Hausdorff distance between meshes a and b: each mesh's vertices and "
         "`samples` seeded points on its faces are measured against the other surface. Returns a "
         "dict: distance (the larger one-sided maximum), mean, and a_to_b, b_to_a (dicts of max, "
-        "mean, farthest point, points). Raises InvalidArgumentError for a mesh without faces. "
-        "Releases the GIL.");
+        "mean, farthest point, points). samples at most 100,000,000; threads 0 (every core) to 1024, "
+        "as render takes them. Raises InvalidArgumentError for a mesh without faces. Releases the GIL.");
 }
 
 }  // namespace hedge::python

@@ -336,8 +336,16 @@ def test_hausdorff_of_a_mesh_with_itself_and_a_shifted_copy(ico):
     assert d["distance"] == max(d["a_to_b"]["max"], d["b_to_a"]["max"])
     with pytest.raises(hedge.InvalidArgumentError):
         hedge.hausdorff_distance(ico, hedge.Mesh())
-    with pytest.raises(hedge.InvalidArgumentError):
-        hedge.hausdorff_distance(ico, shifted, threads=0)
+    # threads as render takes them: 0 is every core, and gives the same distances.
+    every_core = hedge.hausdorff_distance(ico, shifted, samples=2000, seed=7, threads=0)
+    assert (every_core["distance"], every_core["mean"]) == (d["distance"], d["mean"])
+    for threads in (-1, 10**6):
+        with pytest.raises(hedge.InvalidArgumentError) as caught:
+            hedge.hausdorff_distance(ico, shifted, threads=threads)
+        assert str(caught.value) == f"hausdorff_distance: threads must be 0 (every core) to 1024, got {threads}"
+    with pytest.raises(hedge.InvalidArgumentError) as caught:
+        hedge.hausdorff_distance(ico, shifted, samples=10**9)
+    assert str(caught.value) == "hausdorff_distance: samples must be at most 100000000, got 1000000000; draw fewer"
 
 
 @needs_cli
