@@ -65,11 +65,11 @@ bool can(const Mesh& self, binding::Edit e, const std::vector<std::int64_t>& ele
   return binding::refusal(use->mesh, e, query_indices(elements)) == nullptr;
 }
 
-std::optional<std::string> refusal_of(const Mesh& self, const std::string& name,
-                                      const std::vector<std::int64_t>& elements) {
+std::optional<std::string> refusal_of(const Mesh& self, const std::string& name, const py::object& elements) {
   const binding::Edit e = binding::parse_edit(name, binding::EditNaming::snake_case);
+  const std::vector<std::int64_t> list = index_list(elements, "refusal", "elements");
   const auto use = self.use();
-  const char* why = binding::refusal(use->mesh, e, query_indices(elements));
+  const char* why = binding::refusal(use->mesh, e, query_indices(list));
   if (why == nullptr) return std::nullopt;
   return std::string(why);
 }

@@ -112,3 +112,10 @@ def test_smooth_mask_moves_the_nonzero_vertices():
         with pytest.raises(hedge.InvalidArgumentError) as caught:
             before.smooth(mask=bad)
         assert message in str(caught.value)
+
+
+def test_refusal_takes_its_elements_through_the_same_converter(grid):
+    assert grid.refusal("flip", np.array([5], dtype=np.uint8)) == grid.refusal("flip", [5])
+    with pytest.raises(hedge.InvalidArgumentError) as caught:
+        grid.refusal("flip", [1.5])
+    assert str(caught.value) == "refusal: elements must hold integers, not float64"
