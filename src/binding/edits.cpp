@@ -65,8 +65,11 @@ Edit parse_edit(std::string_view name, EditNaming naming) {
   const auto spelling = [naming](const EditNames& n) {
     return naming == EditNaming::snake_case ? n.name : n.js_name;
   };
+  // The JS API took the library's names as well from the start; it keeps them.
   for (const EditNames& n : kEdits)
-    if (spelling(n) != nullptr && name == spelling(n)) return n.edit;
+    if ((spelling(n) != nullptr && name == spelling(n)) ||
+        (naming == EditNaming::camel_case && name == n.name))
+      return n.edit;
   std::string known;
   for (const EditNames& n : kEdits)
     if (spelling(n) != nullptr) known += std::string(known.empty() ? "" : ", ") + spelling(n);

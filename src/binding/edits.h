@@ -25,8 +25,9 @@ enum class EditNaming { snake_case, camel_case };
 const char* edit_name(Edit edit) noexcept;
 //! The edit that `name` names in the caller's spelling: snake_case, the library function's name
 //! ("split_edge", as Python has it), or camel_case, the JS API's method name ("splitEdge"; remove_face
-//! has none, as the JS API has no such edit). \throw BindingError (HEDGE_ERROR_INVALID_ARGUMENT)
-//! "unknown edit 'x' (...)" for another, listing the edits in that spelling.
+//! has none, as the JS API has no such edit), which also takes the library's names as it always did. \throw
+//! BindingError (HEDGE_ERROR_INVALID_ARGUMENT) "unknown edit 'x' (...)" for another, listing the edits in
+//! that spelling.
 Edit parse_edit(std::string_view name, EditNaming naming);
 //! How many elements the edit takes (cut_face: 2 half-edges; the others: 1).
 std::size_t edit_arity(Edit edit) noexcept;
