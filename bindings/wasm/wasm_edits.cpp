@@ -19,7 +19,8 @@ std::string WasmMesh::refusal(const std::string& edit, val elements) const {
   return guarded([&]() -> std::string {
     std::vector<std::uint32_t> indices;
     copy_from_js(elements, indices, js_length(elements, "elements"));
-    const char* why = binding::refusal(s_->mesh, binding::parse_edit(edit), indices);
+    const char* why =
+        binding::refusal(s_->mesh, binding::parse_edit(edit, binding::EditNaming::camel_case), indices);
     return why != nullptr ? why : "";
   });
 }

@@ -3,6 +3,7 @@
 #include <span>
 
 #include "binding/errors.h"
+#include "hedge/core/threads.h"
 #include "hedge/error.h"
 
 namespace hedge::binding {
@@ -117,6 +118,14 @@ Winding to_winding(std::int32_t winding) {
   static constexpr Constant<Winding> kWindings[] = {{HEDGE_WINDING_CCW, Winding::ccw},
                                                     {HEDGE_WINDING_CW, Winding::cw}};
   return from_constant(kWindings, winding, "winding", "HEDGE_WINDING_*");
+}
+
+unsigned thread_count(std::int64_t threads, const char* what) {
+  if (threads < 0 || threads > kMaxThreadsAsked)
+    fail(HEDGE_ERROR_INVALID_ARGUMENT, std::string(what) + " must be 0 (every core) to " +
+                                           std::to_string(kMaxThreadsAsked) + ", got " +
+                                           std::to_string(threads));
+  return threads == 0 ? max_threads() : static_cast<unsigned>(threads);
 }
 
 }  // namespace hedge::binding

@@ -69,4 +69,11 @@ Weld to_weld(std::int32_t weld);
 TopologyPolicy to_policy(std::int32_t policy);
 Winding to_winding(std::int32_t winding);
 
+//! The most threads a binding's caller may ask a call for.
+inline constexpr std::int64_t kMaxThreadsAsked = 1024;
+//! A count of threads as every binding takes it: 0 means every core (max_threads(),
+//! hedge/core/threads.h), 1 to kMaxThreadsAsked that many. \throw BindingError
+//! (HEDGE_ERROR_INVALID_ARGUMENT) "WHAT must be 0 (every core) to 1024, got N" for another.
+unsigned thread_count(std::int64_t threads, const char* what);
+
 }  // namespace hedge::binding

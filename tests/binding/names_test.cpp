@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "binding/errors.h"
+#include "hedge/core/threads.h"
 #include "hedge/error.h"
 
 namespace hedge::binding {
@@ -48,6 +49,21 @@ TEST(BindingNames, TheCAbisConstants) {
   } catch (const BindingError& e) {
     EXPECT_EQ(e.status, HEDGE_ERROR_INVALID_ARGUMENT);
     EXPECT_EQ(e.message, "weld is 7, not a HEDGE_WELD_* value");
+  }
+}
+
+TEST(BindingNames, ThreadCounts) {
+  EXPECT_EQ(thread_count(0, "threads"), max_threads());  // 0: every core
+  EXPECT_EQ(thread_count(3, "threads"), 3u);
+  EXPECT_EQ(thread_count(kMaxThreadsAsked, "threads"), 1024u);
+  for (const std::int64_t bad : {std::int64_t(-1), kMaxThreadsAsked + 1, std::int64_t(1) << 40}) {
+    try {
+      thread_count(bad, "render: threads");
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const BindingError& e) {
+      EXPECT_EQ(e.status, HEDGE_ERROR_INVALID_ARGUMENT);
+      EXPECT_EQ(e.message, "render: threads must be 0 (every core) to 1024, got " + std::to_string(bad));
+    }
   }
 }
 

@@ -41,7 +41,8 @@ print("  repairs and warnings:", {k: v for k, v in mesh.build_report.items() if 
 
 # %% Inspect: numpy over the mesh's own arrays, no copies
 to = mesh.halfedge_vertex_array
-valence = np.bincount(to[to >= 0], minlength=mesh.vertex_slots)
+# Deleted elements keep stale entries until garbage_collection(): the live masks leave them out.
+valence = np.bincount(to[mesh.live_halfedges()], minlength=mesh.vertex_slots)[mesh.live_vertices()]
 print("  valence histogram:", dict(zip(*np.unique(valence, return_counts=True))))
 lo, hi = mesh.bounding_box()
 print(f"  box {np.round(lo, 3)} .. {np.round(hi, 3)}, area {mesh.area():.4f}, volume {mesh.volume():.4f}")

@@ -28,9 +28,10 @@ from ._errors import (
     TopologyError,
     ViewsExportedError,
 )
-from ._hedge import Mesh, Shard, hausdorff_distance, read, render
+from ._hedge import Mesh, Shard, __version__, hausdorff_distance, read, render
 
 __all__ = [
+    "__version__",
     "Mesh",
     "Shard",
     "read",

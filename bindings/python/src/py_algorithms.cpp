@@ -78,31 +78,37 @@ void subdivide(const Mesh& self, const std::string& scheme, int steps) {
 }
 
 void smooth(const Mesh& self, const std::string& method, int iterations, double lambda, double mu,
-            bool fix_boundary, const std::optional<py::array_t<std::uint8_t, py::array::forcecast>>& mask) {
+            bool fix_boundary, const py::object& mask) {
   SmoothOptions o;
   o.method = binding::parse_smooth_method(method);
   o.iterations = iterations;
   o.lambda = lambda;
   o.mu = mu;
   o.fix_boundary = fix_boundary;
-  std::vector<std::uint8_t> chosen;
-  if (mask) {
-    if (mask->ndim() != 1)
-      throw InvalidInputError("smooth: mask must be a 1-D array, one entry per vertex slot");
-    chosen.assign(mask->data(), mask->data() + mask->shape(0));
-    // The library wants a mask of vertex_slots entries; an empty one would mean "every vertex".
-    if (chosen.empty()) chosen.push_back(0);
-  }
   const auto use = self.use();
+  std::vector<std::uint8_t> chosen;
+  if (!mask.is_none()) {
+    chosen = slot_mask(mask, use->mesh.vertex_slots(), "smooth", "mask");
+    // The library reads an empty mask as "every vertex": a mesh of no slots has nothing to move.
+    if (chosen.empty()) return;
+  }
   o.mask = chosen;
   py::gil_scoped_release unlocked;
   hedge::smooth(use->mesh, o);  // positions only: the views stay valid and see the result
 }
 
-py::dict decimate(const Mesh& self, std::int64_t target_faces, std::int64_t target_vertices,
-                  std::optional<double> ratio, double max_error, double boundary_weight,
-                  double feature_angle_degrees, double feature_weight, bool keep_boundary, bool keep_seams,
-                  double attribute_weight, double max_normal_change_degrees) {
+py::dict decimate(const Mesh& self, std::optional<std::int64_t> target_faces_arg,
+                  std::optional<std::int64_t> target_vertices_arg, std::optional<double> ratio,
+                  std::optional<double> max_error, double boundary_weight, double feature_angle_degrees,
+                  double feature_weight, bool keep_boundary, bool keep_seams, double attribute_weight,
+                  double max_normal_change_degrees) {
+  // With no target the library would collapse all it can: a mesh of thousands of faces to four.
+  if (!target_faces_arg && !target_vertices_arg && !ratio && !max_error)
+    throw InvalidInputError("decimate: give a target: target_faces, target_vertices, ratio or max_error");
+  if (ratio && target_faces_arg)
+    throw InvalidInputError("decimate: ratio and target_faces both set the count of faces; give one of them");
+  const std::int64_t target_faces = target_faces_arg.value_or(0),
+                     target_vertices = target_vertices_arg.value_or(0);
   if (target_faces < 0 || target_vertices < 0)
     throw InvalidInputError("decimate: target_faces and target_vertices must be counts (0 or more), got " +
                             std::to_string(target_faces) + " and " + std::to_string(target_vertices));
@@ -111,7 +117,7 @@ py::dict decimate(const Mesh& self, std::int64_t target_faces, std::int64_t targ
   DecimateOptions o;
   o.target_faces = static_cast<std::size_t>(target_faces);
   o.target_vertices = static_cast<std::size_t>(target_vertices);
-  o.max_error = max_error;
+  o.max_error = max_error.value_or(std::numeric_limits<double>::infinity());
   o.boundary_weight = boundary_weight;
   o.feature_angle_degrees = feature_angle_degrees;
   o.feature_weight = feature_weight;
@@ -267,10 +273,13 @@ py::dict hausdorff(const Mesh& a, const Mesh& b, std::int64_t samples, std::uint
                    std::int64_t threads) {
   if (samples < 0)
     throw InvalidInputError("hausdorff_distance: samples must be 0 or more, got " + std::to_string(samples));
-  if (threads < 1 || threads > 1024)
-    throw InvalidInputError("hausdorff_distance: threads must be in 1..1024, got " + std::to_string(threads));
-  const DistanceOptions o{
-      .samples = static_cast<std::size_t>(samples), .seed = seed, .threads = static_cast<unsigned>(threads)};
+  if (static_cast<std::uint64_t>(samples) > kMaxDistanceSamples)
+    throw InvalidInputError("hausdorff_distance: samples must be at most " +
+                            std::to_string(kMaxDistanceSamples) + ", got " + std::to_string(samples) +
+                            "; draw fewer");
+  const DistanceOptions o{.samples = static_cast<std::size_t>(samples),
+                          .seed = seed,
+                          .threads = binding::thread_count(threads, "hausdorff_distance: threads")};
   // A mesh measured against itself is one use: a second would be refused as busy.
   const auto use_a = a.use();
   std::optional<binding::MeshUse<State>> use_b;
@@ -307,19 +316,22 @@ void bind_algorithms(py::class_<Mesh>& mesh, py::module_& m) {
            "otherwise they slide along the boundary. mask: one entry per vertex slot, only nonzero "
            "ones move. Only positions change, so views stay valid. Illegal options raise "
            "InvalidArgumentError with the mesh unchanged. Releases the GIL.")
-      .def("decimate", &decimate, py::kw_only(), py::arg("target_faces") = 0, py::arg("target_vertices") = 0,
-           py::arg("ratio") = py::none(), py::arg("max_error") = std::numeric_limits<double>::infinity(),
-           py::arg("boundary_weight") = 1.0, py::arg("feature_angle_degrees") = 60.0,
-           py::arg("feature_weight") = 1.0, py::arg("keep_boundary") = false, py::arg("keep_seams") = true,
-           py::arg("attribute_weight") = 0.0, py::arg("max_normal_change_degrees") = 60.0,
+      .def("decimate", &decimate, py::kw_only(), py::arg("target_faces") = py::none(),
+           py::arg("target_vertices") = py::none(), py::arg("ratio") = py::none(),
+           py::arg("max_error") = py::none(), py::arg("boundary_weight") = 1.0,
+           py::arg("feature_angle_degrees") = 60.0, py::arg("feature_weight") = 1.0,
+           py::arg("keep_boundary") = false, py::arg("keep_seams") = true, py::arg("attribute_weight") = 0.0,
+           py::arg("max_normal_change_degrees") = 60.0,
            "Decimates a triangle mesh by quadric-ranked edge collapses until it has at most "
-           "target_faces faces and target_vertices vertices (each when nonzero; ratio sets "
-           "target_faces to that share of the faces), or the next collapse would move the surface "
+           "target_faces faces and target_vertices vertices (each when given; ratio, instead of "
+           "target_faces, sets it to that share of the faces), or the next collapse would move the surface "
            "by more than max_error, or no legal collapse is left. Garbage is collected at the end "
            "(indices change). Returns a dict: vertices, faces (left), collapses, max_error (the "
            "largest error of a collapse done), removed_faces, removed_vertices and target_reached "
            "(a target was given and met; the library does not say more about why it stopped). On "
-           "any error the mesh is unchanged. Raises ViewsExportedError while views are alive. "
+           "any error the mesh is unchanged. Raises InvalidArgumentError if none of target_faces, "
+           "target_vertices, ratio and max_error is given, or ratio with target_faces; "
+           "ViewsExportedError while views are alive. "
            "Releases the GIL.")
       .def("garbage_collection", &garbage_collection,
            "Removes deleted elements and compacts every array; indices change. Returns the "
@@ -398,8 +410,8 @@ void bind_algorithms(py::class_<Mesh>& mesh, py::module_& m) {
         "The symmetric sampled Hausdorff distance between meshes a and b: each mesh's vertices and "
         "`samples` seeded points on its faces are measured against the other surface. Returns a "
         "dict: distance (the larger one-sided maximum), mean, and a_to_b, b_to_a (dicts of max, "
-        "mean, farthest point, points). Raises InvalidArgumentError for a mesh without faces. "
-        "Releases the GIL.");
+        "mean, farthest point, points). samples at most 100,000,000; threads 0 (every core) to 1024, "
+        "as render takes them. Raises InvalidArgumentError for a mesh without faces. Releases the GIL.");
 }
 
 }  // namespace hedge::python

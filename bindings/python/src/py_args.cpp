@@ -3,7 +3,9 @@
 #include "py_args.h"
 
 #include <cmath>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "binding/edits.h"
 #include "binding/errors.h"
@@ -37,6 +39,103 @@ Vec3 point3(const py::handle& p, const char* call, const char* what) {
   const Vec3d v = point3d(p, call, what);
   return binding::need_point(Vec3{float(v.x), float(v.y), float(v.z)},
                              (std::string(call) + ": " + what).c_str());
+}
+
+namespace {
+
+[[noreturn]] void bad_argument(const char* call, const char* what, const std::string& text) {
+  binding::fail(HEDGE_ERROR_INVALID_ARGUMENT, std::string(call) + ": " + what + " " + text);
+}
+
+//! `x` as numpy sees it (np.asarray), or none if numpy cannot make an array of it (a ragged list).
+//! Strings and bytes are refused: numpy would take them as 0-D arrays of characters.
+py::object as_numpy(const py::handle& x, const char* call, const char* what, const char* wanted) {
+  if (py::isinstance<py::str>(x) || py::isinstance<py::bytes>(x))
+    bad_argument(call, what, std::string("must be ") + wanted + ", not a string");
+  try {
+    return py::module_::import("numpy").attr("asarray")(x);
+  } catch (const py::error_already_set& e) {
+    if (!e.matches(PyExc_ValueError) && !e.matches(PyExc_TypeError)) throw;
+    return py::none();
+  }
+}
+
+std::string dtype_text(const py::array& a) { return py::str(a.dtype()).cast<std::string>(); }
+
+//! An integer array (of any integer dtype) as int64, saturating the uint64 values past int64's
+//! range so that they stay out of range instead of turning negative.
+py::array_t<std::int64_t, py::array::c_style> to_int64(const py::array& a) {
+  if (a.dtype().kind() == 'u' && a.dtype().itemsize() == 8) {
+    const auto u = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(a);
+    py::array_t<std::int64_t, py::array::c_style> out(
+        std::vector<py::ssize_t>(u.shape(), u.shape() + u.ndim()));
+    for (py::ssize_t i = 0; i < u.size(); ++i)
+      out.mutable_data()[i] = u.data()[i] > 0x7fffffffffffffffull ? INT64_MAX : std::int64_t(u.data()[i]);
+    return out;
+  }
+  return py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
+}
+
+}  // namespace
+
+py::array_t<std::int64_t, py::array::c_style> integer_array(const py::handle& x, const char* call,
+                                                            const char* what) {
+  const py::object o = as_numpy(x, call, what, "an array of integers");
+  if (o.is_none()) return {};
+  const auto a = py::reinterpret_borrow<py::array>(o);
+  const char kind = a.dtype().kind();
+  // An older numpy makes a ragged list an array of objects rather than refusing it.
+  if (kind == 'O' && !py::isinstance<py::array>(x)) return {};
+  // An empty list has numpy's default dtype, float64: it holds no float all the same.
+  const bool empty_list = a.size() == 0 && !py::isinstance<py::array>(x);
+  if (kind != 'i' && kind != 'u' && !empty_list)
+    bad_argument(call, what, "must hold integers, not " + dtype_text(a));
+  return to_int64(a);
+}
+
+std::vector<std::int64_t> index_list(const py::handle& x, const char* call, const char* what,
+                                     std::optional<std::size_t> slots) {
+  const py::object o = as_numpy(x, call, what, "a 1-D array of integer indices");
+  if (o.is_none()) bad_argument(call, what, "must be a 1-D array of integer indices");
+  const auto a = py::reinterpret_borrow<py::array>(o);
+  if (a.ndim() != 1)
+    bad_argument(
+        call, what,
+        "must be a 1-D array of integer indices, not of " + std::to_string(a.ndim()) + " dimensions");
+  std::vector<std::int64_t> out;
+  if (a.dtype().kind() == 'b') {
+    const auto n = static_cast<std::size_t>(a.shape(0));
+    if (!slots) bad_argument(call, what, "must hold integer indices, not bool");
+    if (n != *slots)
+      bad_argument(call, what,
+                   "as a bool mask must have one entry per slot (" + std::to_string(*slots) + "), not " +
+                       std::to_string(n));
+    const auto b = py::array_t<bool, py::array::c_style | py::array::forcecast>::ensure(a);
+    for (std::size_t i = 0; i < n; ++i)
+      if (b.data()[i]) out.push_back(static_cast<std::int64_t>(i));
+    return out;
+  }
+  const auto i64 =
+      integer_array(a.size() == 0 && !py::isinstance<py::array>(x) ? x : py::handle(a), call, what);
+  out.assign(i64.data(), i64.data() + i64.size());
+  return out;
+}
+
+std::vector<std::uint8_t> slot_mask(const py::handle& x, std::size_t slots, const char* call,
+                                    const char* what) {
+  const py::object o = as_numpy(x, call, what, "a 1-D array of numbers or bools");
+  const char kind = o.is_none() ? 'O' : py::reinterpret_borrow<py::array>(o).dtype().kind();
+  if (kind != 'b' && kind != 'i' && kind != 'u' && kind != 'f')
+    bad_argument(call, what, "must be a 1-D array of numbers or bools, one entry per slot");
+  const auto a = py::reinterpret_borrow<py::array>(o);
+  if (a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != slots)
+    bad_argument(call, what,
+                 "must have one entry per slot (" + std::to_string(slots) + "), not shape " +
+                     py::str(a.attr("shape")).cast<std::string>());
+  // Nonzero as numpy has it: NaN counts as nonzero, -0.0 does not.
+  const auto nonzero =
+      py::array_t<bool, py::array::c_style | py::array::forcecast>::ensure(a.attr("astype")("bool"));
+  return std::vector<std::uint8_t>(nonzero.data(), nonzero.data() + nonzero.size());
 }
 
 std::string fspath(const py::object& path) {

@@ -11,12 +11,13 @@
 #include <vector>
 
 #include "binding/edits.h"
-#include "binding/rollback.h"
 #include "binding/errors.h"
 #include "binding/handles.h"
+#include "binding/rollback.h"
 #include "hedge/core/face_operations.h"
 #include "hedge/core/operations.h"
 #include "hedge/error.h"
+#include "py_args.h"
 #include "py_support.h"
 
 namespace hedge::python {
@@ -48,39 +49,40 @@ auto edit(const Mesh& self, const std::string& what, bool grows, Body&& body)
   }
 }
 
-//! Whether the edit is allowed on these elements: the core's refusal, none for a bad handle too.
-bool can(const Mesh& self, binding::Edit e, std::vector<std::int64_t> elements) {
-  const auto use = self.use();
+//! An index in a refusal query, as the C ABI and the JS API see it: one out of 32-bit range
+//! (-1, 10**12) names no slot, like any index past the slots, so the core refuses it as "not live"
+//! instead of raising.
+std::vector<std::uint32_t> query_indices(const std::vector<std::int64_t>& elements) {
   std::vector<std::uint32_t> ids;
-  for (const std::int64_t i : elements) {
-    if (i < 0 || i > 0xfffffffeLL) return false;
-    ids.push_back(static_cast<std::uint32_t>(i));
-  }
-  return binding::refusal(use->mesh, e, ids) == nullptr;
+  for (const std::int64_t i : elements)
+    ids.push_back(i < 0 || i > 0xffffffffLL ? 0xffffffffu : static_cast<std::uint32_t>(i));
+  return ids;
 }
 
-std::optional<std::string> refusal_of(const Mesh& self, const std::string& name,
-                                      std::vector<std::int64_t> elements) {
+//! Whether the edit is allowed on these elements: the core's refusal, none for a bad handle too.
+bool can(const Mesh& self, binding::Edit e, const std::vector<std::int64_t>& elements) {
   const auto use = self.use();
-  const binding::Edit e = binding::parse_edit(name);
-  std::vector<std::uint32_t> ids;
-  for (const std::int64_t i : elements) ids.push_back(element_index(i, "element"));
-  const char* why = binding::refusal(use->mesh, e, ids);
+  return binding::refusal(use->mesh, e, query_indices(elements)) == nullptr;
+}
+
+std::optional<std::string> refusal_of(const Mesh& self, const std::string& name, const py::object& elements) {
+  const binding::Edit e = binding::parse_edit(name, binding::EditNaming::snake_case);
+  const std::vector<std::int64_t> list = index_list(elements, "refusal", "elements");
+  const auto use = self.use();
+  const char* why = binding::refusal(use->mesh, e, query_indices(list));
   if (why == nullptr) return std::nullopt;
   return std::string(why);
 }
 
-std::size_t remove_faces_of(const Mesh& self, const py::array_t<std::int64_t, py::array::forcecast>& faces) {
-  if (faces.ndim() != 1) throw InvalidInputError("remove_faces: faces must be a 1-D array of face indices");
-  const auto r = faces.unchecked<1>();
+std::size_t remove_faces_of(const Mesh& self, const py::object& faces) {
   const auto use = self.use();
-  require_no_views(*use, "remove_faces");
   SurfaceMesh& m = use->mesh;
+  const std::vector<std::int64_t> list = index_list(faces, "remove_faces", "faces", m.face_slots());
+  require_no_views(*use, "remove_faces");
   // Every face is checked before any is removed, so a bad one leaves the mesh as it was.
   std::vector<Face> chosen;
-  chosen.reserve(static_cast<std::size_t>(r.shape(0)));
-  for (py::ssize_t i = 0; i < r.shape(0); ++i)
-    chosen.push_back(binding::live_face(m, element_index(r(i), "face")));
+  chosen.reserve(list.size());
+  for (const std::int64_t f : list) chosen.push_back(binding::live_face(m, element_index(f, "face")));
   const std::size_t before = m.n_faces();
   // The library's remove_faces() gives no strong guarantee: memory running out after some faces
   // went would leave them gone. The binding core's rollback puts the mesh back (a copy per call).
@@ -182,12 +184,8 @@ void bind_edits(py::class_<Mesh>& mesh) {
           "refused.")
       .def(
           "can_remove_face",
-          [](const Mesh& self, std::int64_t f) {
-            const auto use = self.use();
-            if (f < 0 || static_cast<std::uint64_t>(f) >= use->mesh.face_slots()) return false;
-            return can_remove_face(use->mesh, Face(static_cast<Index>(f)));
-          },
-          py::arg("face"), "True if remove_face(face) is allowed.")
+          [](const Mesh& self, std::int64_t f) { return can(self, Edit::remove_face, {f}); }, py::arg("face"),
+          "True if remove_face(face) is allowed.")
       .def(
           "remove_face",
           [](const Mesh& self, std::int64_t f) {
@@ -202,14 +200,17 @@ void bind_edits(py::class_<Mesh>& mesh) {
           "Removes the face, and the edges and vertices it leaves unused. Returns False if refused "
           "(reason in last_refusal).")
       .def("remove_faces", &remove_faces_of, py::arg("faces"),
-           "Removes several faces at once (an array of indices; repeats are fine), and the edges and "
+           "Removes several faces at once (an array of integer indices, repeats are fine, or a bool mask "
+           "of face_slots entries), and the edges and "
            "vertices they leave unused. Never refused: a vertex the removal would leave pinched is "
            "split, one copy per fan, so the mesh stays manifold (which adds vertices, so it raises "
            "ViewsExportedError while views are alive). Returns how many faces were removed. Raises "
            "BadHandleError, before removing any, for a deleted or out-of-range face.")
       .def("refusal", &refusal_of, py::arg("edit"), py::arg("elements"),
-           "Why the edit ('split_edge', 'collapse', 'flip', 'split_face', 'cut_face', 'fill_hole') "
-           "of these elements is refused, or None if it is allowed.")
+           "Why the edit ('split_edge', 'collapse', 'flip', 'split_face', 'cut_face', 'fill_hole', "
+           "'remove_face') of these elements is refused, or None if it is allowed. An index that "
+           "names no live element (deleted, past the slots, negative) is refused as not live, as "
+           "in the C ABI and the JS API; an unknown edit raises InvalidArgumentError.")
       .def_property_readonly(
           "last_refusal",
           [](const Mesh& self) -> std::optional<std::string> {

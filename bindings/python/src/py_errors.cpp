@@ -51,9 +51,11 @@ void translate(std::exception_ptr p) {
 
 void require_no_views(const State& state, const std::string& what) {
   if (state.views > 0)
-    throw ViewsExported{what + ": " + std::to_string(state.views) +
-                        " numpy view(s) of the mesh's arrays are alive, and adding elements may move the "
-                        "arrays under them; delete the views first (nothing was changed)"};
+    throw ViewsExported{
+        what + ": " + std::to_string(state.views) +
+        " numpy view(s) of the mesh's arrays are alive, and adding elements may move the "
+        "arrays under them; delete the views first (nothing was changed). A view may also be kept "
+        "alive by the REPL's `_` or a notebook's Out[]: `del` it, or call gc.collect()"};
 }
 
 std::uint32_t element_index(std::int64_t i, const char* kind) {

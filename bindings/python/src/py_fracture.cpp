@@ -166,12 +166,16 @@ void bind_fracture(py::module_& m, py::class_<Mesh>& mesh) {
           "closed", [](const Shard& s) { return s.closed; },
           "True when the shard has no boundary (it was given a thickness): a solid with mass.")
       .def_property_readonly(
-          "mass", [](const Shard& s) { return mass_properties_dict(s.mass); },
+          "mass",
+          [](const Shard& s) -> py::object {
+            if (!s.closed) return py::none();  // an open shard encloses no volume: no mass to give
+            return mass_properties_dict(s.mass);
+          },
           "The mass properties of the closed solid at the fracture's density (the C++ "
           "Shard::mass; Mesh.mass_properties(density) computes them afresh): a dict of volume, mass, "
           "centre_of_mass (3,), inertia (3, 3) about the centre of mass, "
           "principal_moments (3,) ascending and principal_axes (3, 3), one unit axis "
-          "a row, a right-handed frame. All zero for an open shard.")
+          "a row, a right-handed frame. None for an open shard (closed is False): it encloses no volume.")
       .def_property_readonly(
           "hull",
           [](const Shard& s) -> py::object {

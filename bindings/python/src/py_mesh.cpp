@@ -1,6 +1,7 @@
 // Mesh construction, files, arrays, counts and validate (the Python Mesh, see py_support.h).
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -46,22 +47,8 @@ bool in_range(std::int64_t v, std::size_t n) { return v >= 0 && static_cast<std:
 //! for triangles), checked against n vertices.
 void face_indices(const py::object& F, std::size_t n, std::vector<std::uint32_t>& indices,
                   std::vector<std::uint32_t>& sizes) {
-  if (py::isinstance<py::array>(F)) {
-    const auto kind = py::reinterpret_borrow<py::array>(F).dtype().kind();
-    if (kind != 'i' && kind != 'u')
-      throw InvalidInputError(std::string("from_arrays: F must hold integers, not numpy dtype kind '") +
-                              kind + "'");
-  }
   // A rectangular F converts to an (m, k) array; a list of polygons of several sizes does not.
-  py::array_t<std::int64_t, py::array::c_style> a;
-  if (py::isinstance<py::array>(F)) {
-    a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(F);
-  } else {
-    try {
-      a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(F);
-    } catch (const py::error_already_set&) {
-    }
-  }
+  const py::array_t<std::int64_t, py::array::c_style> a = integer_array(F, "from_arrays", "F");
   if (a && a.ndim() == 2) {
     const auto m = static_cast<std::size_t>(a.shape(0)), k = static_cast<std::size_t>(a.shape(1));
     if (k < 3)
@@ -85,15 +72,11 @@ void face_indices(const py::object& F, std::size_t n, std::vector<std::uint32_t>
     if (!py::isinstance<py::sequence>(row))
       throw InvalidInputError("from_arrays: F[" + std::to_string(i) +
                               "] is not a sequence of vertex indices");
-    const auto corners = py::reinterpret_borrow<py::sequence>(row);
+    const std::string name = "F[" + std::to_string(i) + "]";
+    const std::vector<std::int64_t> corners = index_list(row, "from_arrays", name.c_str());
     for (std::size_t j = 0; j < corners.size(); ++j) {
-      const std::string where = "F[" + std::to_string(i) + "][" + std::to_string(j) + "]";
-      const py::object c = corners[j];
-      if (!py::isinstance<py::int_>(c) && !py::hasattr(c, "__index__"))
-        throw InvalidInputError("from_arrays: " + where + " is not an integer");
-      const auto v = py::cast<std::int64_t>(py::int_(c));
-      if (!in_range(v, n)) bad_index(v, n, where);
-      indices.push_back(static_cast<std::uint32_t>(v));
+      if (!in_range(corners[j], n)) bad_index(corners[j], n, name + "[" + std::to_string(j) + "]");
+      indices.push_back(static_cast<std::uint32_t>(corners[j]));
     }
     sizes.push_back(static_cast<std::uint32_t>(corners.size()));
     triangles = triangles && corners.size() == 3;
@@ -179,9 +162,11 @@ py::tuple to_arrays(const Mesh& self) {
   IndexedMesh out = to_indexed(use->mesh, ExportOptions{.corner_attributes = false});
   const auto nv = static_cast<py::ssize_t>(out.positions.size());
   py::array V = adopt<float>(std::move(out.positions), {nv, 3});
-  if (out.face_sizes.empty()) {
-    const auto nf = static_cast<py::ssize_t>(out.indices.size() / 3);
-    return py::make_tuple(V, adopt<std::int32_t>(std::move(out.indices), {nf, 3}));
+  // Faces of one degree k (triangles: no sizes) make an (m, k) array; a list only for mixed degrees.
+  const std::uint32_t k0 = out.face_sizes.empty() ? 3 : out.face_sizes.front();
+  if (std::all_of(out.face_sizes.begin(), out.face_sizes.end(), [k0](std::uint32_t k) { return k == k0; })) {
+    const auto nf = static_cast<py::ssize_t>(out.indices.size() / k0);
+    return py::make_tuple(V, adopt<std::int32_t>(std::move(out.indices), {nf, py::ssize_t(k0)}));
   }
   py::list polygons;
   std::size_t at = 0;
@@ -217,8 +202,9 @@ void bind_mesh(py::module_& m, py::class_<Mesh>& mesh) {
       .def(
           "__deepcopy__", [](const Mesh& self, const py::object&) { return clone(self); }, py::arg("memo"))
       .def("to_arrays", &to_arrays,
-           "The live mesh as (V, F): V an (n, 3) float32 array, F an (m, 3) int32 array for a "
-           "triangle mesh or a list of int32 arrays, one per polygon. Deleted elements are skipped, "
+           "The live mesh as (V, F): V an (n, 3) float32 array, F an (m, k) int32 array when every "
+           "face has k corners (k = 3 for a triangle mesh), a list of int32 arrays, one per polygon, "
+           "only when the degrees differ. Deleted elements are skipped, "
            "so indices are compacted. Fresh arrays that own their memory.")
       .def_property_readonly(
           "build_report", [](const Mesh& self) { return report_dict(self.use()->report); },
@@ -248,11 +234,18 @@ void bind_mesh(py::module_& m, py::class_<Mesh>& mesh) {
           "validate", [](const Mesh& self) { return self.use()->mesh.validate(); },
           "Every broken invariant of the half-edge structure, one line each; an empty list means "
           "the mesh is valid.")
-      .def("__repr__", [](const Mesh& self) {
-        const auto use = self.use();
-        return "<hedge.Mesh: " + std::to_string(use->mesh.n_vertices()) + " vertices, " +
-               std::to_string(use->mesh.n_faces()) + " faces>";
+      .def("__repr__", [](const Mesh& self) -> std::string {
+        // repr never raises: a debugger or a REPL may ask while another thread is in a call.
+        try {
+          const auto use = self.use();
+          return "<hedge.Mesh: " + std::to_string(use->mesh.n_vertices()) + " vertices, " +
+                 std::to_string(use->mesh.n_faces()) + " faces>";
+        } catch (const binding::BindingError& e) {
+          if (e.status != HEDGE_ERROR_BUSY) throw;
+          return "<hedge.Mesh: busy, another thread is in a call on it>";
+        }
       });
+  m.attr("__version__") = HEDGE_VERSION;
 }
 
 }  // namespace hedge::python

@@ -6,6 +6,7 @@
 
 #include "binding/handles.h"
 #include "hedge/error.h"
+#include "py_args.h"
 #include "py_support.h"
 
 namespace hedge::python {
@@ -54,16 +55,8 @@ py::tuple one_rings(const Mesh& self, const py::object& vertices) {
     list.reserve(m.vertex_slots());
     for (Index v = 0; v < m.vertex_slots(); ++v) list.push_back(Vertex(v));
   } else {
-    if (py::isinstance<py::array>(vertices) &&
-        py::reinterpret_borrow<py::array>(vertices).dtype().kind() != 'i' &&
-        py::reinterpret_borrow<py::array>(vertices).dtype().kind() != 'u')
-      throw InvalidInputError("one_rings: vertices must hold integers");
-    const auto a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(vertices);
-    if (!a || a.ndim() != 1)
-      throw InvalidInputError("one_rings: vertices must be a 1-d array of vertex indices");
-    list.reserve(static_cast<std::size_t>(a.size()));
-    for (py::ssize_t i = 0; i < a.size(); ++i)
-      list.push_back(binding::live_vertex(m, element_index(a.data()[i], "vertex")));
+    for (const std::int64_t v : index_list(vertices, "one_rings", "vertices", m.vertex_slots()))
+      list.push_back(binding::live_vertex(m, element_index(v, "vertex")));
   }
   py::array_t<std::int64_t> offsets(static_cast<py::ssize_t>(list.size() + 1));
   std::int64_t* off = offsets.mutable_data();

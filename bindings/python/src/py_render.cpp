@@ -13,6 +13,7 @@
 
 #include "binding/edits.h"
 #include "binding/errors.h"
+#include "binding/names.h"
 #include "hedge/error.h"
 #include "picture/shaded.h"
 #include "py_args.h"
@@ -35,11 +36,21 @@ struct RenderArgs {
   bool wireframe = false;
   double feature_angle = 60;
   int supersample = 2;
-  int threads = 0;
+  std::int64_t threads = 0;
 };
 
 [[noreturn]] void invalid(const std::string& message) {
   binding::fail(HEDGE_ERROR_INVALID_ARGUMENT, message);
+}
+
+//! The value of a picture's name parser, its error prefixed with the call ("render: view 'x' ...").
+template <typename Parse>
+auto prefixed(Parse&& parse) {
+  try {
+    return parse();
+  } catch (const InvalidInputError& e) {
+    invalid(std::string("render: ") + e.what());
+  }
 }
 
 //! The options checked as the CLI checks its command line; names and sizes are checked again by
@@ -48,9 +59,9 @@ ShadedOptions shaded_options(const RenderArgs& a) {
   ShadedOptions s;
   s.width = a.width;
   s.height = a.height;
-  s.view = picture::view_named(a.view);
-  s.shading = picture::shading_named(a.shading);
-  s.color_by = picture::color_by_named(a.color_by);
+  s.view = prefixed([&] { return picture::view_named(a.view); });
+  s.shading = prefixed([&] { return picture::shading_named(a.shading); });
+  s.color_by = prefixed([&] { return picture::color_by_named(a.color_by); });
   s.wireframe = a.wireframe;
   if (!(a.feature_angle >= 0 && a.feature_angle <= 180))
     invalid("render: feature_angle must be in [0, 180] degrees, got " + std::to_string(a.feature_angle));
@@ -58,13 +69,12 @@ ShadedOptions shaded_options(const RenderArgs& a) {
   if (a.supersample < 1 || a.supersample > 4)
     invalid("render: supersample must be from 1 to 4, got " + std::to_string(a.supersample));
   s.supersample = a.supersample;
-  if (a.threads < 0)
-    invalid("render: threads must be 0 (every core) or more, got " + std::to_string(a.threads));
-  s.threads = unsigned(a.threads);
+  s.threads = binding::thread_count(a.threads, "render: threads");
+  // Checked whatever the view, so that a bad fov is never taken quietly.
+  if (!(a.fov >= 0 && a.fov <= 179))
+    invalid("render: fov must be in [0, 179] degrees (0: orthographic), got " + std::to_string(a.fov));
   if (a.eye.is_none() != a.target.is_none()) invalid("render: eye and target go together");
   if (!a.eye.is_none()) {
-    if (!(a.fov >= 0 && a.fov <= 179))
-      invalid("render: fov must be in [0, 179] degrees (0: orthographic), got " + std::to_string(a.fov));
     picture::Camera c;
     c.eye = point3d(a.eye, "render", "eye");
     c.target = point3d(a.target, "render", "target");
@@ -118,8 +128,8 @@ void bind_render(py::module_& m, py::class_<Mesh>& mesh) {
       "render",
       [](const Mesh& mesh, int width, int height, const std::string& view, const py::object& eye,
          const py::object& target, const py::object& up, double fov, const std::string& shading,
-         const std::string& color_by, bool wireframe, double feature_angle, int supersample, int threads,
-         const py::object& path) {
+         const std::string& color_by, bool wireframe, double feature_angle, int supersample,
+         std::int64_t threads, const py::object& path) {
         const RenderArgs a{width,   height,   view,      eye,           target,      up,     fov,
                            shading, color_by, wireframe, feature_angle, supersample, threads};
         return render(mesh, a, path);

@@ -14,6 +14,7 @@
 #include "hedge/core/color.h"
 #include "hedge/error.h"
 #include "hedge/render/tangent.h"
+#include "py_args.h"
 #include "py_support.h"
 
 namespace hedge::python {
@@ -70,18 +71,13 @@ void need_finite(const SurfaceMesh& m, Vertex v) {
                             std::to_string(p.y) + ", " + std::to_string(p.z) + ")");
 }
 
-void positions_changed(const Mesh& self,
-                       const std::optional<py::array_t<std::int64_t, py::array::forcecast>>& vertices) {
+void positions_changed(const Mesh& self, const py::object& vertices) {
   const auto use = self.use();
   SurfaceMesh& m = use->mesh;
   std::vector<Vertex> moved;
-  if (vertices) {
-    if (vertices->ndim() != 1)
-      throw InvalidInputError("positions_changed: vertices must be a 1-D array of indices");
-    const auto r = vertices->unchecked<1>();
-    for (py::ssize_t i = 0; i < r.shape(0); ++i) {
-      moved.push_back(binding::live_vertex(m, element_index(r(i), "vertex")));
-    }
+  if (!vertices.is_none()) {
+    for (const std::int64_t v : index_list(vertices, "positions_changed", "vertices", m.vertex_slots()))
+      moved.push_back(binding::live_vertex(m, element_index(v, "vertex")));
   } else {
     for (const Vertex v : m.vertices()) moved.push_back(v);
   }
@@ -160,6 +156,17 @@ py::array property_view(const Mesh& self, const std::string& name, const std::op
   return *v;
 }
 
+//! A fresh bool array, one entry per slot of the kind H: true for a live one.
+template <typename H>
+py::array_t<bool> live_mask(const Mesh& self, std::size_t (SurfaceMesh::*slots)() const) {
+  const auto use = self.use();
+  const SurfaceMesh& m = use->mesh;
+  py::array_t<bool> out(static_cast<py::ssize_t>((m.*slots)()));
+  bool* p = out.mutable_data();
+  for (std::size_t i = 0; i < (m.*slots)(); ++i) p[i] = !m.is_deleted(H(static_cast<Index>(i)));
+  return out;
+}
+
 py::dict property_names(const Mesh& self) {
   const auto use = self.use();
   py::dict d;
@@ -181,7 +188,8 @@ void bind_views(py::module_& m, py::class_<Mesh>& mesh) {
                              "that add elements raise ViewsExportedError.")
       .def("positions_changed", &positions_changed, py::arg("vertices") = py::none(),
            "Tells the mesh that positions were written through mesh.positions: the given vertices "
-           "(an array of indices), or every live vertex if None. Each is checked to be live and "
+           "(an array of integer indices, or a bool mask of vertex_slots entries), or every live vertex if "
+           "None. Each is checked to be live and "
            "finite first; on an error nothing is marked.")
       .def_property_readonly(
           "halfedge_vertex_array",
@@ -228,6 +236,22 @@ void bind_views(py::module_& m, py::class_<Mesh>& mesh) {
            "chooses when the name exists on several kinds. It counts as a view: edits that add "
            "elements raise ViewsExportedError while it lives. Writes are not marked in the change "
            "log. Raises InvalidArgumentError for an unknown name or a type numpy cannot view.")
+      .def(
+          "live_vertices",
+          [](const Mesh& self) { return live_mask<Vertex>(self, &SurfaceMesh::vertex_slots); },
+          "Which vertex slots hold a live vertex: a fresh bool array (vertex_slots,). The views keep "
+          "stale entries for deleted elements until garbage_collection(); index them with this mask.")
+      .def(
+          "live_halfedges",
+          [](const Mesh& self) { return live_mask<Halfedge>(self, &SurfaceMesh::halfedge_slots); },
+          "Which half-edge slots hold a live half-edge: a fresh bool array (halfedge_slots,).")
+      .def(
+          "live_edges", [](const Mesh& self) { return live_mask<Edge>(self, &SurfaceMesh::edge_slots); },
+          "Which edge slots hold a live edge: a fresh bool array (edge_slots,); edge e has the "
+          "half-edges 2e and 2e + 1.")
+      .def(
+          "live_faces", [](const Mesh& self) { return live_mask<Face>(self, &SurfaceMesh::face_slots); },
+          "Which face slots hold a live face: a fresh bool array (face_slots,).")
       .def("property_names", &property_names,
            "The names of the mesh's properties: a dict from kind ('vertex', 'halfedge', 'edge', "
            "'face') to a list of names.");

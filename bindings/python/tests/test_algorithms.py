@@ -166,6 +166,18 @@ def test_decimate_errors_leave_the_mesh_unchanged(ico):
     assert_valid(ico)
 
 
+def test_decimate_wants_one_target_and_not_two_face_counts(ico):
+    faces = ico.n_faces
+    with pytest.raises(hedge.InvalidArgumentError) as caught:
+        ico.decimate()
+    assert str(caught.value) == "decimate: give a target: target_faces, target_vertices, ratio or max_error"
+    with pytest.raises(hedge.InvalidArgumentError, match="ratio and target_faces"):
+        ico.decimate(ratio=0.5, target_faces=100)
+    assert ico.n_faces == faces
+    assert ico.decimate(target_vertices=8)["vertices"] == 8
+    assert_valid(ico)
+
+
 def test_garbage_collection_returns_the_maps(grid):
     V0, _ = grid.to_arrays()
     assert grid.remove_faces([0, 1]) == 2  # the two faces of corner vertex 0, which goes with them
@@ -324,8 +336,16 @@ def test_hausdorff_of_a_mesh_with_itself_and_a_shifted_copy(ico):
     assert d["distance"] == max(d["a_to_b"]["max"], d["b_to_a"]["max"])
     with pytest.raises(hedge.InvalidArgumentError):
         hedge.hausdorff_distance(ico, hedge.Mesh())
-    with pytest.raises(hedge.InvalidArgumentError):
-        hedge.hausdorff_distance(ico, shifted, threads=0)
+    # threads as render takes them: 0 is every core, and gives the same distances.
+    every_core = hedge.hausdorff_distance(ico, shifted, samples=2000, seed=7, threads=0)
+    assert (every_core["distance"], every_core["mean"]) == (d["distance"], d["mean"])
+    for threads in (-1, 10**6):
+        with pytest.raises(hedge.InvalidArgumentError) as caught:
+            hedge.hausdorff_distance(ico, shifted, threads=threads)
+        assert str(caught.value) == f"hausdorff_distance: threads must be 0 (every core) to 1024, got {threads}"
+    with pytest.raises(hedge.InvalidArgumentError) as caught:
+        hedge.hausdorff_distance(ico, shifted, samples=10**9)
+    assert str(caught.value) == "hausdorff_distance: samples must be at most 100000000, got 1000000000; draw fewer"
 
 
 @needs_cli

@@ -110,6 +110,38 @@ def test_bad_handles_raise_and_can_says_false(grid):
     assert_valid(grid)
 
 
+def test_refusal_takes_every_python_edit_name(grid):
+    # Each refusable edit by its Python name, agreeing with its can_* predicate.
+    calls = {
+        "split_edge": ([0], grid.can_split_edge),
+        "collapse": ([0], grid.can_collapse),
+        "flip": ([0], grid.can_flip),
+        "split_face": ([0], grid.can_split_face),
+        "cut_face": ([0, 1], grid.can_cut_face),
+        "fill_hole": ([0], grid.can_fill_hole),
+        "remove_face": ([0], grid.can_remove_face),
+    }
+    for name, (elements, can) in calls.items():
+        assert (grid.refusal(name, elements) is None) == can(*elements), name
+    assert grid.refusal("remove_face", [0]) is None
+    with pytest.raises(hedge.InvalidArgumentError) as caught:
+        grid.refusal("splitEdge", [0])
+    assert str(caught.value) == (
+        "unknown edit 'splitEdge' (split_edge, collapse, flip, split_face, cut_face, fill_hole, remove_face)"
+    )
+    assert_valid(grid)
+
+
+def test_refusal_of_an_index_out_of_range_is_not_live_as_in_the_c_abi(grid):
+    # The C ABI and the JS API take 32-bit indices: -1 is past every slot, so "not live".
+    for e in (-1, 10**6, 2**40):
+        assert grid.refusal("flip", [e]) == "the edge is not live"
+        assert not grid.can_flip(e)
+    assert grid.refusal("remove_face", [-1]) == "the face is not live"
+    assert grid.refusal("cut_face", [-1, 0]) == grid.refusal("cut_face", [10**6, 0])
+    assert_valid(grid)
+
+
 def test_remove_faces_removes_several_at_once(grid):
     assert grid.remove_faces([0, 1, 1, 2]) == 3  # a repeat counts once
     assert grid.n_faces == 29

@@ -1,5 +1,8 @@
 """Building from arrays, files, to_arrays, counts and validate (src/py_mesh.cpp)."""
 
+import os
+import re
+
 import numpy as np
 import pytest
 from conftest import assert_valid, grid_arrays
@@ -51,11 +54,12 @@ def test_quads_as_an_array():
         (np.zeros((3, 3)), [[0, 1, 3]], "F[0, 2] = 3 is not a vertex index"),
         (np.zeros((3, 3)), [[0, -1, 2]], "F[0, 1] = -1"),
         (np.zeros((3, 3)), np.array([[0.0, 1.0, 2.0]]), "integers"),
-        (np.zeros((3, 3)), [[0, 1, 2], [[0], 1, 2]], "F[1][0] is not an integer"),
+        (np.zeros((3, 3)), [[0, 1, 2], [[0], 1, 2]], "F[1] must be a 1-D array of integer indices"),
         (np.zeros((3, 3)), [[0, 1, 2], 5], "F[1] is not a sequence"),
         (np.zeros((3, 3)), np.array([[0, 1], [1, 2]]), "at least 3 columns"),
-        (np.zeros((3, 3)), [[0, 1, 2], [0, 1, "x"]], "F[1][2] is not an integer"),
-        (np.zeros((3, 3)), "abc", "list of polygons"),
+        (np.zeros((3, 3)), [[0, 1, 2], [0, 1, "x"]], "from_arrays: F must hold integers, not <U"),
+        (np.zeros((3, 3)), [[0, 1, 2], [0, 1, 2, 2.5]], "F[1] must hold integers, not float64"),
+        (np.zeros((3, 3)), "abc", "F must be an array of integers, not a string"),
     ],
 )
 def test_malformed_arrays_raise_value_errors(V, F, message):
@@ -148,3 +152,23 @@ def test_empty_mesh():
     assert (mesh.n_vertices, mesh.n_faces) == (0, 0)
     assert mesh.positions.shape == (0, 3)
     assert repr(mesh) == "<hedge.Mesh: 0 vertices, 0 faces>"
+
+
+def test_to_arrays_gives_an_array_for_faces_of_one_degree():
+    V = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [2, 0, 0], [2, 1, 0]], dtype=np.float64)
+    quads = hedge.Mesh.from_arrays(V, [[0, 1, 2, 3], [1, 4, 5, 2]])
+    _, F = quads.to_arrays()
+    assert isinstance(F, np.ndarray) and F.shape == (2, 4) and F.dtype == np.int32
+    assert sorted(map(sorted, F.tolist())) == [[0, 1, 2, 3], [1, 2, 4, 5]]
+    mixed = hedge.Mesh.from_arrays(V, [[0, 1, 2, 3], [1, 4, 5], [1, 5, 2]])
+    _, F = mixed.to_arrays()
+    assert isinstance(F, list) and sorted(len(f) for f in F) == [3, 3, 4]
+    assert_valid(quads)
+    assert_valid(mixed)
+
+
+def test_version_is_the_projects():
+    root = os.path.join(os.path.dirname(__file__), "..", "..", "..")
+    with open(os.path.join(root, "CMakeLists.txt"), encoding="utf-8") as f:
+        version = re.search(r"project\(hedge VERSION ([0-9.]+)", f.read()).group(1)
+    assert hedge.__version__ == version

@@ -175,9 +175,11 @@ def test_the_same_picture_as_the_cli(tmp_path, cli_args, options):
 @pytest.mark.parametrize(
     "options,message",
     [
-        (dict(view="side"), "view 'side' is not one of"),
-        (dict(shading="gouraud"), "shading 'gouraud' is not one of flat, smooth"),
-        (dict(color_by="colour"), "color_by 'colour' is not one of"),
+        (dict(view="side"), "render: view 'side' is not one of"),
+        (dict(shading="gouraud"), "render: shading 'gouraud' is not one of flat, smooth"),
+        (dict(color_by="colour"), "render: color_by 'colour' is not one of"),
+        (dict(fov=-1), "render: fov must be in [0, 179] degrees"),  # with the default view too
+        (dict(fov=float("nan")), "render: fov must be in [0, 179] degrees"),
         (dict(eye=(0, 0, 5)), "eye and target go together"),
         (dict(eye=(0, 0, 5), target=(0, 0, float("nan"))), "render: target (0.000000, 0.000000, nan) is not finite"),
         (dict(eye=(0, 0), target=(0, 0, 0)), "render: eye must be 3 numbers"),
@@ -185,7 +187,8 @@ def test_the_same_picture_as_the_cli(tmp_path, cli_args, options):
         (dict(up=(0, 0, 1)), "up is for the camera of eye and target"),
         (dict(supersample=5), "supersample must be from 1 to 4"),
         (dict(feature_angle=-1), "feature_angle must be in [0, 180]"),
-        (dict(threads=-1), "threads must be 0"),
+        (dict(threads=-1), "render: threads must be 0 (every core) to 1024, got -1"),
+        (dict(threads=10**6), "render: threads must be 0 (every core) to 1024, got 1000000"),
         (dict(width=0), "render: the picture"),
         (dict(path="grid.jpg"), "the path must end in .png"),
     ],

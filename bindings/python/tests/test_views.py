@@ -91,6 +91,7 @@ def test_views_block_edits_that_add_elements(grid):
     with pytest.raises(hedge.ViewsExportedError) as caught:
         grid.split_edge(0)
     assert isinstance(caught.value, BufferError)
+    assert "REPL's `_` or a notebook's Out[]" in str(caught.value) and "gc.collect()" in str(caught.value)
     with pytest.raises(hedge.ViewsExportedError):
         grid.split_face(0)
     # A slice keeps the view alive through its base.
@@ -170,3 +171,25 @@ def test_unknown_property_names_raise(grid):
         grid.property("v:position", kind="corner")
     with pytest.raises(hedge.InvalidArgumentError, match="no face property"):
         grid.property("v:position", kind="face")
+
+
+def test_live_masks_leave_out_the_slots_edits_deleted(grid):
+    for h in (grid.vertex_halfedge(6), grid.vertex_halfedge(18)):
+        assert grid.collapse(h) is not None
+    live_v, live_h = grid.live_vertices(), grid.live_halfedges()
+    live_e, live_f = grid.live_edges(), grid.live_faces()
+    assert live_v.dtype == bool and live_v.shape == (grid.vertex_slots,)
+    assert (live_v.sum(), live_h.sum(), live_e.sum(), live_f.sum()) == (
+        grid.n_vertices, grid.n_halfedges, grid.n_edges, grid.n_faces)
+    assert np.array_equal(live_h, np.repeat(live_e, 2))
+    # The valence of every vertex through the views and the masks, against the one-rings.
+    to = grid.halfedge_vertex_array
+    valence = np.bincount(to[live_h], minlength=grid.vertex_slots)
+    offsets, _ = grid.one_rings()
+    assert np.array_equal(valence, np.diff(offsets))
+    assert not np.array_equal(np.bincount(to[to >= 0], minlength=grid.vertex_slots), np.diff(offsets))
+    assert not live_v[6] and not live_v[18]
+    dead_faces = {f for f in range(grid.face_slots) if grid.refusal("split_face", [f]) == "the face is not live"}
+    assert set(np.flatnonzero(~live_f)) == dead_faces
+    del to
+    assert_valid(grid)
