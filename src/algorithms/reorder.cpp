@@ -67,6 +67,7 @@ std::vector<Index> edges_by_faces(const SurfaceMesh& m, const std::vector<Face>&
 }
 
 GarbageMaps reorder_spatial(SurfaceMesh& m) {
+  require_finite_positions(m, "reorder");
   const Morton code(bounding_box(m));
   std::vector<std::pair<std::uint64_t, Index>> keyed;
   keyed.reserve(m.n_vertices());

@@ -1,10 +1,10 @@
 #include "binding/edits.h"
 
-#include <cstdio>
 #include <string>
 
 #include "binding/errors.h"
 #include "binding/handles.h"
+#include "binding/picking.h"
 #include "hedge/algorithms/fill_hole.h"
 #include "hedge/core/face_operations.h"
 #include "hedge/core/operations.h"
@@ -101,15 +101,7 @@ const char* refusal(const SurfaceMesh& m, Edit edit, std::span<const std::uint32
   return nullptr;
 }
 
-Vec3 need_point(const Vec3& p, const char* what) {
-  if (!is_finite(p)) {
-    char text[160];
-    std::snprintf(text, sizeof text, "%s: point (%g, %g, %g) is not finite", what, double(p.x), double(p.y),
-                  double(p.z));
-    fail(HEDGE_ERROR_INVALID_ARGUMENT, text);
-  }
-  return p;
-}
+Vec3 need_point(const Vec3& p, const char* what) { return need_finite(p, std::string(what) + ": point"); }
 
 Vertex split_edge(SurfaceMesh& m, std::uint32_t edge, const std::optional<Vec3>& point) {
   const Edge e = allowed<Edge>(m, Edit::split_edge, edge);

@@ -13,6 +13,7 @@
 #include "hedge/core/face_operations.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "non_finite.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -209,6 +210,11 @@ TEST(Reorder, CacheMissRatioCountsFifoLoads) {
   // A quad draws as a fan of two triangles: 4 loads.
   SurfaceMesh quad = build(test::grid(1, false));
   EXPECT_DOUBLE_EQ(average_cache_miss_ratio(quad, 16), 2.0);
+}
+
+TEST(Reorder, SpatialOrderRefusesANonFinitePosition) {
+  SurfaceMesh m = build(test::grid(6, true));
+  test::expect_refuses_non_finite(m, Vertex(9), "reorder", [&] { reorder(m, Ordering::spatial); });
 }
 
 }  // namespace

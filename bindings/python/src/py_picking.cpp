@@ -1,13 +1,15 @@
 // Picking over many rays or points in one call: ray_cast and closest_point, through the mesh's one
 // picking tree (binding::picking_tree), which follows the change log, so edits and
-// positions_changed() keep it up to date at the cost of what changed. The GIL is released while
-// the tree is walked.
+// positions_changed() keep it up to date at the cost of what changed. Every row is checked first
+// (binding/picking.h): a NaN, an infinity or a zero direction is an error naming the row, not a
+// miss. The GIL is released while the rows are checked and the tree is walked.
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
 
 #include "binding/mesh_state.h"
+#include "binding/picking.h"
 #include "hedge/algorithms/locate.h"
 #include "hedge/error.h"
 #include "py_support.h"
@@ -31,6 +33,11 @@ Vec3 row(const Points& p, py::ssize_t i) {
   return Vec3{q[0], q[1], q[2]};
 }
 
+//! "CALL: WHAT[i]", the name of a row in an error.
+std::string row_name(const char* call, const char* what, py::ssize_t i) {
+  return std::string(call) + ": " + what + "[" + std::to_string(i) + "]";
+}
+
 py::tuple ray_cast(const Mesh& self, const py::object& origins, const py::object& directions) {
   const Points o = rows_of_3(origins, "ray_cast", "origins"),
                d = rows_of_3(directions, "ray_cast", "directions");
@@ -47,6 +54,10 @@ py::tuple ray_cast(const Mesh& self, const py::object& origins, const py::object
   const auto use = self.use();
   {
     py::gil_scoped_release unlocked;
+    for (py::ssize_t i = 0; i < n; ++i) {
+      binding::need_finite(row(o, i), row_name("ray_cast", "origins", i));
+      binding::need_direction(row(d, i), row_name("ray_cast", "directions", i));
+    }
     const FaceBvh& bvh = binding::picking_tree(*use);
     for (py::ssize_t i = 0; i < n; ++i) {
       const auto hit = bvh.first_hit(row(o, i), row(d, i));
@@ -71,6 +82,8 @@ py::tuple closest_point(const Mesh& self, const py::object& queries) {
   const auto use = self.use();
   {
     py::gil_scoped_release unlocked;
+    for (py::ssize_t i = 0; i < n; ++i)
+      binding::need_finite(row(q, i), row_name("closest_point", "points", i));
     const FaceBvh& bvh = binding::picking_tree(*use);
     for (py::ssize_t i = 0; i < n; ++i) {
       const auto near = bvh.closest_point(row(q, i));
@@ -89,12 +102,14 @@ void bind_picking(py::class_<Mesh>& mesh) {
   mesh.def("ray_cast", &ray_cast, py::arg("origins"), py::arg("directions"),
            "Casts n rays, given as (n, 3) arrays of origins and directions, against the faces. Returns "
            "(faces, t, points): the first face each ray hits (-1 for none), the ray parameter of the "
-           "hit (point = origin + t * direction; NaN for none) and the (n, 3) hit points. Uses the "
+           "hit (point = origin + t * direction; NaN for none) and the (n, 3) hit points. A row that "
+           "is not finite, or a zero direction, raises InvalidArgumentError naming it. Uses the "
            "mesh's picking tree, built on first use and kept up to date through the change log "
            "(call positions_changed() after writing positions). Releases the GIL.")
       .def("closest_point", &closest_point, py::arg("points"),
            "The nearest surface point to each of n query points (an (n, 3) array). Returns (faces, "
-           "points, distances); -1 and NaN where the mesh has no face. Releases the GIL.");
+           "points, distances); -1 and NaN where the mesh has no face. A point that is not finite "
+           "raises InvalidArgumentError naming its row. Releases the GIL.");
 }
 
 }  // namespace hedge::python

@@ -62,3 +62,35 @@ def test_bad_arrays(grid):
         grid.ray_cast(np.zeros((2, 2)), np.zeros((2, 2)))
     with pytest.raises(hedge.InvalidArgumentError):
         grid.closest_point(np.zeros(3))
+
+
+@pytest.mark.parametrize(
+    "row, origin, direction, message",
+    [
+        (1, (np.nan, 0, 5), (0, 0, -1), "ray_cast: origins[1] (nan, 0, 5) is not finite"),
+        (0, (0, 0, 5), (0, np.inf, -1), "ray_cast: directions[0] (0, inf, -1) is not finite"),
+        (2, (0, 0, 5), (0, 0, 0), "ray_cast: directions[2] has zero length"),
+    ],
+)
+def test_ray_cast_names_a_bad_row(grid, row, origin, direction, message):
+    origins, directions = down_rays([[0.25, 0.75], [0.5, 0.5], [1.5, 1.5]])
+    origins[row], directions[row] = origin, direction
+    with pytest.raises(hedge.InvalidArgumentError) as caught:
+        grid.ray_cast(origins, directions)
+    assert str(caught.value) == message
+    assert isinstance(caught.value, ValueError)
+    # The good rows still work once the bad one is gone.
+    keep = [i for i in range(3) if i != row]
+    assert (grid.ray_cast(origins[keep], directions[keep])[0] >= 0).all()
+    assert_valid(grid)
+
+
+def test_closest_point_names_a_bad_row(grid):
+    points = np.array([[0.25, 0.75, 2.0], [0, 0, 0], [1, -np.inf, 0]])
+    with pytest.raises(hedge.InvalidArgumentError) as caught:
+        grid.closest_point(points)
+    assert str(caught.value) == "closest_point: points[2] (1, -inf, 0) is not finite"
+    points[1, 2] = np.nan
+    with pytest.raises(hedge.InvalidArgumentError, match=r"points\[1\] \(0, 0, nan\)"):
+        grid.closest_point(points)
+    assert_valid(grid)
