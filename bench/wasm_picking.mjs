@@ -22,8 +22,8 @@ const option = (name, fallback) => {
 const dist = process.env.HEDGE_WASM_DIST
   ? new URL(`file://${process.env.HEDGE_WASM_DIST.replace(/\/?$/, '/')}`)
   : new URL('build/wasm/dist/', root);
-const { loadHedgeNode } = await import(new URL('node.js', dist).href);
-const hedge = await loadHedgeNode();
+const { loadHedge } = await import(new URL('hedge.js', dist).href);
+const hedge = await loadHedge();
 
 const shared = fileURLToPath(new URL('../shared/meshes/armadillo.obj', root));
 let path = option('--mesh', existsSync(shared) ? shared : null);

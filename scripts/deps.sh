@@ -16,8 +16,8 @@
 #   wasm   emscripten (with its node and clang) for the WebAssembly module (bindings/wasm/)
 #   windows MinGW-w64 (posix threads) to cross-build hedge_c.dll and the C ABI tests for Windows
 #          x64, and wine64 to run them (the windows preset, cmake/toolchains/mingw-w64-x86_64.cmake)
-#   web    Debian's chromium (and its driver), for the playground's browser tests (web/); node 20
-#          and npm must be present already (hedge_web_npm checks)
+#   web    Debian's chromium (and its driver), for the playground's browser tests (web/); node 18
+#          or newer (Debian 12's nodejs) and npm must be present already (hedge_web_npm checks)
 # Only missing packages are installed; when everything is present nothing is run, so the check is
 # fast on a machine that is already set up. Debian 12 (apt-get) is assumed.
 
@@ -84,13 +84,16 @@ hedge_web_npm() {
   root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
   web=$root/web
   if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
-    echo "deps.sh: node (20 or newer) and npm are needed for web/; install them first" >&2
+    echo "deps.sh: node (18 or newer) and npm are needed for web/; install them first" \
+      "(Debian 12: apt-get install nodejs npm)" >&2
     return 1
   fi
   local major
   major=$(node -p 'process.versions.node.split(".")[0]')
-  if [ "$major" -lt 20 ]; then
-    echo "deps.sh: web/ needs node 20 or newer, found $(node --version)" >&2
+  # 18: Debian 12's nodejs. bindings/wasm/test/engines.test.mjs checks that every npm package of
+  # web/package-lock.json (and of the package's tests) admits it.
+  if [ "$major" -lt 18 ]; then
+    echo "deps.sh: web/ needs node 18 or newer, found $(node --version)" >&2
     return 1
   fi
   if [ -f "$web/node_modules/.package-lock.json" ] &&

@@ -73,6 +73,24 @@ const ARGUMENTS = {
         },
       ],
     ],
+    fromEngineStreams: [
+      [
+        'streams',
+        {
+          ...OBJECT,
+          fields: {
+            positions: ARRAY,
+            indices: ARRAY,
+            normals: NOTHING_OR_ARRAY,
+            texcoords: NOTHING_OR_ARRAY,
+            colors: NOTHING_OR_ARRAY,
+            submeshes: NOTHING_OR_ARRAY,
+            policy: optional(STRING),
+            weld: optional(STRING),
+          },
+        },
+      ],
+    ],
     fromFile: [
       ['bytes', BYTES],
       ['name', STRING],
@@ -144,6 +162,10 @@ const ARGUMENTS = {
   },
   RenderBuffers: {
     faceTriangles: [e('f')],
+    pickTriangles: [
+      ['origin', VEC3],
+      ['direction', VEC3],
+    ],
     dirtyViews: [['result', { ...OBJECT, fields: { vertexRanges: ARRAY, indexRanges: ARRAY } }]],
   },
 };

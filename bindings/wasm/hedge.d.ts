@@ -1,4 +1,5 @@
-// Types of the hedge JS API (hedge.js). Element indices are numbers; -1 means "none".
+// Types of the hedge JS API (hedge.js, and hedge.single.js: the same API). Element indices are
+// numbers; -1 means "none". The node entry's types (node.d.ts) add loadHedgeNode.
 
 /** The C ABI's status codes (hedge_status), one to one. */
 export type ErrorKind =
@@ -32,13 +33,16 @@ export type FracturePreset = 'glass' | 'stone' | 'wood' | 'ice';
 export const fractureMaterials: readonly FracturePreset[];
 
 export interface LoadOptions {
-  /** The bytes of hedge.wasm, when they are at hand (node, tests). */
+  /** The bytes of hedge.wasm, when they are at hand. */
   wasmBinary?: ArrayBuffer | Uint8Array;
-  /** Where to fetch hedge.wasm from (a bundler's asset URL). */
+  /** Where to fetch hedge.wasm from (a bundler's asset URL); under node, a path or a file: URL to
+   *  read it from. Without it the wasm beside hedge.mjs is used. */
   locateFile?: (name: string, prefix: string) => string;
   [option: string]: unknown;
 }
 
+/** Loads the module: in node (ES module), a browser page, a module worker or a bundle; sets no
+ *  globals. The same in the single-file variant (the package's "./single"), whose wasm is embedded. */
 export function loadHedge(options?: LoadOptions): Promise<Hedge>;
 
 export interface BuildReport {
@@ -236,6 +240,25 @@ export class Hedge {
     policy?: 'repair' | 'strict';
     weld?: 'none' | 'exact' | 'epsilon';
   }): Mesh;
+  /** An engine's arrays (a three.js BufferGeometry's): positions welded into vertices, the other
+   *  streams kept per corner, one submesh id in [0, 65535] per triangle ("f:submesh"). */
+  fromEngineStreams(streams: {
+    /** 3 floats a vertex. */
+    positions: Float32Array | number[];
+    /** 3 a triangle. */
+    indices: Uint32Array | number[];
+    /** 3 floats a vertex. */
+    normals?: Float32Array | number[] | null;
+    /** 2 floats a vertex. */
+    texcoords?: Float32Array | number[] | null;
+    /** 4 floats a vertex: r, g, b, a. */
+    colors?: Float32Array | number[] | null;
+    /** One per triangle. */
+    submeshes?: Int32Array | Uint32Array | number[] | null;
+    policy?: 'repair' | 'strict';
+    /** Default 'exact'. */
+    weld?: 'none' | 'exact' | 'epsilon';
+  }): Mesh;
   fromFile(bytes: Uint8Array | ArrayBuffer, name: string): Mesh;
   /** The thread setting; the module is single-threaded, so it changes nothing (n: integer >= 0). */
   setMaxThreads(n: number): void;
@@ -346,6 +369,18 @@ export interface SyncResult {
   full: boolean;
 }
 
+/** One submesh's (material's) part of the render buffers. */
+export interface SubmeshRange {
+  /** Its index entries [indexStart, indexStart + indexCount), spare (degenerate) slots included. */
+  indexStart: number;
+  indexCount: number;
+  /** The render vertices its entries refer to. */
+  firstVertex: number;
+  vertexCount: number;
+  /** No live triangle since the last full build (or only ones with every corner at the origin). */
+  empty: boolean;
+}
+
 export class RenderBuffers {
   readonly hedge: Hedge;
   dispose(): void;
@@ -359,6 +394,20 @@ export class RenderBuffers {
   readonly indices: Uint32Array;
   readonly vertexSource: Uint32Array;
   faceTriangles(f: number): [number, number];
+  /** As of the last sync, in submesh order. */
+  submeshes(): SubmeshRange[];
+  /** The first face along a ray and its triangle slots [first, first + count) as of the last sync;
+   *  null for a miss. */
+  pickTriangles(
+    origin: Vec3,
+    direction: Vec3,
+  ): {
+    face: number;
+    t: number;
+    point: [number, number, number];
+    first: number;
+    count: number;
+  } | null;
   sync(): SyncResult;
   dirtyViews(result: SyncResult): { vertices: Float32Array[]; indices: Uint32Array[] };
   rebuild(): SyncResult;
@@ -366,9 +415,6 @@ export class RenderBuffers {
   begin(): void;
   commit(): SyncResult;
 }
-
-/** node only (node.js): loadHedge with the wasm read from disk. */
-export function loadHedgeNode(options?: LoadOptions): Promise<Hedge>;
 
 // ---- Deprecated names (kept for one release) ----------------------------------------------------
 // The names of the previous release; the next release removes them.

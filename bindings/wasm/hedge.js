@@ -19,6 +19,7 @@
 // have length 0). Take views right before use; taking one costs no copy.
 import createHedge from './hedge.mjs';
 
+import { instantiate } from './load.js';
 import { customMaterial, installArgumentChecks, point3 } from './arguments.js';
 
 /** An error raised by hedge. kind names the C ABI's status (hedge_status), one to one:
@@ -45,10 +46,11 @@ const MATERIALS = ['glass', 'stone', 'wood', 'ice'];
 /** The fracture presets, for menus. */
 export const fractureMaterials = Object.freeze([...MATERIALS]);
 
-/** Loads the module. options go to the emscripten factory: wasmBinary (the bytes of hedge.wasm)
- *  or locateFile(name) (where to fetch it from), as a bundler or a page needs. */
+/** Loads the module, in node, a browser page, a module worker or a bundle (load.js); sets no
+ *  globals. options go to the emscripten factory: wasmBinary (the bytes of hedge.wasm) or
+ *  locateFile(name) (where to fetch it from; under node, a path or a file: URL to read). */
 export async function loadHedge(options = {}) {
-  const module = await createHedge(options);
+  const module = await instantiate(createHedge, options);
   return new Hedge(module);
 }
 
@@ -93,6 +95,53 @@ export class Hedge {
       throw new HedgeError('invalid-argument', `unknown weld '${weld}' (none, exact, epsilon)`);
     const native = this._check(
       this.module.NativeMesh.fromBuffers(positions, indices, faceSizes, p, w),
+    );
+    return new Mesh(this, native);
+  }
+
+  /** Builds a mesh from an engine's arrays, one attribute set per vertex (a three.js
+   *  BufferGeometry, a glTF primitive): positions are welded into topological vertices (weld:
+   *  'exact' by default, 'epsilon' or 'none') while normals, texcoords and colours stay per corner,
+   *  so seams and hard edges survive, and the RenderBuffers of the mesh gives them back.
+   *  positions: Float32Array, 3 per vertex. indices: Uint32Array, 3 per triangle. Optional, one
+   *  entry per vertex: normals (3 floats), texcoords (2), colors (4: r, g, b, a). submeshes:
+   *  optional, one id in [0, 65535] per triangle (a material; the face property "f:submesh", which
+   *  edits keep and RenderBuffers groups the index buffer by). policy as for fromBuffers. A bad
+   *  stream (wrong length, a non-finite value, an index out of range, a submesh id out of range)
+   *  throws a HedgeError naming the stream and the entry; no mesh is made then. */
+  fromEngineStreams({
+    positions,
+    indices,
+    normals,
+    texcoords,
+    colors,
+    submeshes,
+    policy = 'repair',
+    weld = 'exact',
+  }) {
+    const p = { strict: 0, repair: 1 }[policy];
+    const w = { none: 0, exact: 1, epsilon: 2 }[weld];
+    if (p === undefined)
+      throw new HedgeError(
+        'invalid-argument',
+        `fromEngineStreams: unknown policy '${policy}' (strict, repair)`,
+      );
+    if (w === undefined)
+      throw new HedgeError(
+        'invalid-argument',
+        `fromEngineStreams: unknown weld '${weld}' (none, exact, epsilon)`,
+      );
+    const native = this._check(
+      this.module.meshFromEngineStreams(
+        positions,
+        indices,
+        normals,
+        texcoords,
+        colors,
+        submeshes,
+        p,
+        w,
+      ),
     );
     return new Mesh(this, native);
   }
@@ -614,6 +663,44 @@ export class RenderBuffers extends NativeOwner {
   /** [first triangle slot, count] of face f. */
   faceTriangles(f) {
     return this._call('faceTriangles', f);
+  }
+
+  /** The first face along a ray (through the mesh's picking tree, as Mesh.pick) and the triangle
+   *  slots it owns in these buffers as of the last sync: null if the ray misses, else {face, t,
+   *  point, first, count} (triangles [first, first + count) of the index buffer; count 0 for a face
+   *  made since the last sync). One call per ray: what a raycast against the uploaded triangles
+   *  needs (the three.js adapter's hedgeRaycast). */
+  pickTriangles(origin, direction) {
+    const face = this._n().pickTriangles(
+      +origin[0],
+      +origin[1],
+      +origin[2],
+      +direction[0],
+      +direction[1],
+      +direction[2],
+    );
+    this.hedge._check(face);
+    if (face < 0) return null;
+    const f = this.hedge.module.HEAPF64;
+    const k = this.hedge._pick;
+    return {
+      face,
+      t: f[k + 1],
+      point: [f[k + 2], f[k + 3], f[k + 4]],
+      first: f[k + 5],
+      count: f[k + 6],
+    };
+  }
+
+  /** Each submesh's (material's) part of the buffers as of the last sync, in submesh order:
+   *  [{indexStart, indexCount, firstVertex, vertexCount, empty}]. A submesh's triangles lie in
+   *  index entries [indexStart, indexStart + indexCount) (spare slots included, kept degenerate):
+   *  one draw call or three.js group each; their render vertices in [firstVertex, firstVertex +
+   *  vertexCount). empty: no live triangle since the last full build (or only triangles whose
+   *  corners are all at the origin, which draw nothing), e.g. the ids between used ones. A mesh
+   *  without submeshes has one, the whole buffer. */
+  submeshes() {
+    return this._call('submeshes');
   }
 
   /** Brings the buffers in step with the mesh's edits since the last sync and says what was

@@ -5,6 +5,7 @@
 //   wasm_edits.cpp   NativeMesh: local edits and whole-mesh algorithms
 //   wasm_fracture.cpp NativeMesh: fracture
 //   wasm_render.cpp  NativeRenderBuffers
+//   wasm_engine.cpp  meshFromEngineStreams (engine arrays with their attributes and submeshes)
 //   hedge_wasm.cpp   module-level functions and NativeMesh's registration
 // The binding sits on the binding core (src/binding/), as the C ABI does.
 #include <malloc.h>
@@ -30,7 +31,8 @@ double heap_bytes_in_use() {
   return double(info.uordblks);
 }
 
-std::string version() { return "0.1.0"; }
+// The project version (CMakeLists.txt), which the npm package shares (package.json).
+std::string version() { return HEDGE_VERSION_STRING; }
 
 }  // namespace
 }  // namespace hedge::wasm

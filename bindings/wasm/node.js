@@ -1,18 +1,11 @@
-// Loading hedge under node: the emscripten ES module (built for web and node) expects the CommonJS
-// globals require and __dirname under node, and reads hedge.wasm from disk itself only through
-// them; this supplies both and passes the wasm bytes directly. Browsers and bundlers use hedge.js.
-import { createRequire } from 'node:module';
-import { readFileSync } from 'node:fs';
-import { dirname } from 'node:path';
-import { fileURLToPath } from 'node:url';
+// The package's entry under node (the "node" condition of package.json's exports): the JS API of
+// hedge.js, whose loadHedge() works under node as it does in a browser (load.js), and the name the
+// previous release had for it.
 import { loadHedge } from './hedge.js';
 
 export * from './hedge.js';
 
-/** loadHedge() for node: options as for loadHedge. */
-export async function loadHedgeNode(options = {}) {
-  globalThis.require ??= createRequire(import.meta.url);
-  globalThis.__dirname ??= dirname(fileURLToPath(import.meta.url));
-  const wasmBinary = readFileSync(new URL('./hedge.wasm', import.meta.url));
-  return loadHedge({ wasmBinary, ...options });
+/** @deprecated loadHedge() works under node; this alias of it goes in the next release. */
+export function loadHedgeNode(options = {}) {
+  return loadHedge(options);
 }

@@ -1,12 +1,15 @@
 // NativeRenderBuffers, the native half of the JS API's RenderBuffers (hedge.js): a RenderBuffers of a mesh,
 // sharing the mesh's state (wasm_support.h).
+#include <algorithm>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "binding/handles.h"
 #include "binding/names.h"
+#include "hedge/algorithms/locate.h"
 #include "hedge/error.h"
 #include "hedge/render/render_buffers.h"
 #include "wasm_mesh.h"
@@ -143,6 +146,48 @@ class WasmRenderBuffers {
     });
   }
 
+  //! The first face along a ray, through the mesh's picking tree (binding::picking_tree, as
+  //! NativeMesh.pick), and its triangle slots as of the last sync: returns the face or -1 and
+  //! writes [face, t, px, py, pz, first slot, slot count] into g_pick (count 0 for a face the last
+  //! sync has not seen). One call per ray and no JS object: what a raycast per pointer move needs.
+  double pick_triangles(double ox, double oy, double oz, double dx, double dy, double dz) {
+    return guarded([&]() -> double {
+      const RenderBuffers& r = sync();
+      const std::optional<RayHit> hit = binding::picking_tree(*s_).first_hit(
+          Vec3{float(ox), float(oy), float(oz)}, Vec3{float(dx), float(dy), float(dz)});
+      if (!hit) return -1.0;
+      const SlotRange slots = r.triangles(hit->face);
+      const double values[7] = {double(hit->face.idx()), hit->t,
+                                double(hit->point.x),    double(hit->point.y),
+                                double(hit->point.z),    double(slots.first),
+                                double(slots.count)};
+      std::copy(values, values + 7, g_pick);
+      return values[0];
+    });
+  }
+
+  //! Each submesh's part of the buffers as of the last sync (RenderBuffers::submesh), in submesh
+  //! order: [{indexStart, indexCount, firstVertex, vertexCount, empty}] (index ranges include spare
+  //! room; empty: no live triangle since the last full build, or only ones at the origin).
+  val submeshes() const {
+    return guarded([&] {
+      const RenderBuffers& r = sync();
+      val out = val::array();
+      for (std::size_t i = 0; i < r.submesh_count(); ++i) {
+        const SubmeshRange range = r.submesh(i);
+        val s = val::object();
+        s.set("indexStart", double(range.index_start));
+        s.set("indexCount", double(range.index_count));
+        s.set("firstVertex", double(range.first_vertex));
+        s.set("vertexCount", double(range.vertex_count));
+        // No live triangle since the last full build: the box of its triangles stayed empty.
+        s.set("empty", range.min == Vec3{0, 0, 0} && range.max == Vec3{0, 0, 0});
+        out.set(i, s);
+      }
+      return out;
+    });
+  }
+
   val do_sync() {
     return guarded([&] { return sync_result_to_js(sync().sync()); });
   }
@@ -185,6 +230,8 @@ EMSCRIPTEN_BINDINGS(hedge_render_buffers) {
       .function("indicesView", &WasmRenderBuffers::indices_view)
       .function("vertexSourceView", &WasmRenderBuffers::vertex_source_view)
       .function("faceTriangles", &WasmRenderBuffers::face_triangles)
+      .function("submeshes", &WasmRenderBuffers::submeshes)
+      .function("pickTriangles", &WasmRenderBuffers::pick_triangles)
       .function("sync", &WasmRenderBuffers::do_sync)
       .function("rebuild", &WasmRenderBuffers::rebuild)
       .function("compact", &WasmRenderBuffers::compact)

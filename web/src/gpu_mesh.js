@@ -1,21 +1,14 @@
-// The three.js side of RenderBuffers: GPU buffers that mirror hedge's render buffers and are updated
-// range by range after an edit.
+// The three.js side of RenderBuffers: the mesh's geometry made and kept in step by hedge's three.js
+// adapter (toBufferGeometry, syncBufferGeometry: only the ranges an edit rewrote are uploaded), and
+// the wireframe drawn over it.
 //
-// The vertex buffer is one interleaved buffer (position, normal, ...) shared by the surface and by
-// the wireframe; the surface draws the triangle index buffer, the wireframe draws a line index
-// buffer derived from it (triangle t's three sides sit at line indices [6t, 6t + 6)), so both follow
-// the same dirty ranges. A polygon's triangles have sides that are no edges of the mesh (its
+// The wireframe shares the surface's vertex buffer and draws a line index buffer derived from the
+// triangle indices (triangle t's three sides sit at line indices [6t, 6t + 6)), so it follows the
+// same dirty ranges. A polygon's triangles have sides that are no edges of the mesh (its
 // diagonals); an `isEdge(a, b)` test on render vertices, when given, leaves those out of the
-// wireframe (a degenerate line instead). The buffers are allocated at RenderBuffers' capacity, and only a sync that
-// reports `resized` or `full` reallocates and uploads them whole.
+// wireframe (a degenerate line instead).
 import * as THREE from 'three';
-
-// Copies [first, first + count) elements of `width` numbers each from `from` into `to`.
-function copyRange(to, from, first, count, width) {
-  const begin = first * width;
-  const end = (first + count) * width;
-  to.set(from.subarray(begin, end), begin);
-}
+import { syncBufferGeometry, toBufferGeometry } from 'hedge/three';
 
 export class GpuMesh {
   //! `material` draws the surface and `lineMaterial` the wireframe.
@@ -28,116 +21,77 @@ export class GpuMesh {
     this.wireframe.frustumCulled = false;
     this.group = new THREE.Group();
     this.group.add(this.surface, this.wireframe);
-    this.vertexArray = null;
-    this.indexArray = null;
     this.lineArray = null;
-    this.stride = 0;
+  }
+
+  //! The geometry's copies of the vertex and index buffers (what three.js uploads).
+  get vertexArray() {
+    const position = this.geometry.getAttribute('position');
+    return position
+      ? (position.isInterleavedBufferAttribute ? position.data : position).array
+      : null;
+  }
+  get indexArray() {
+    return this.geometry.getIndex()?.array ?? null;
+  }
+  //! Index-buffer entries in use (the draw range).
+  get indexCount() {
+    return this.geometry.drawRange.count;
   }
 
   //! Bytes of the GPU buffers as allocated (vertices, triangle indices and line indices).
   get allocatedBytes() {
-    if (!this.vertexArray) return 0;
+    if (!this.lineArray) return 0;
     return this.vertexArray.byteLength + this.indexArray.byteLength + this.lineArray.byteLength;
   }
 
-  //! Reallocates every buffer from `buffers` and uploads it whole.
-  //! buffers: { vertices: Float32Array, indices: Uint32Array, layout: {stride, position, normal},
-  //!            vertexCapacity, indexCapacity } (capacities in render vertices and in indices).
-  //! isEdge: null (every side is an edge: a triangle mesh) or (a, b) => whether render vertices a
-  //! and b are joined by an edge of the mesh.
-  rebuild(buffers, isEdge = null) {
-    const { layout } = buffers;
-    const vertexCapacity = Math.max(
-      buffers.vertexCapacity,
-      buffers.vertices.length / layout.stride,
-      1,
-    );
-    const indexCapacity = Math.max(buffers.indexCapacity, buffers.indices.length, 3);
-    this.stride = layout.stride;
-    this.vertexArray = new Float32Array(vertexCapacity * layout.stride);
-    this.vertexArray.set(buffers.vertices);
-    this.indexArray = new Uint32Array(indexCapacity);
-    this.indexArray.set(buffers.indices);
-    this.lineArray = new Uint32Array(indexCapacity * 2);
-    const indexCount = buffers.indices.length;
-    // The views into wasm memory are used up: isEdge may call into the module and move them.
-    this.writeLines(0, indexCount, isEdge);
-
-    const interleaved = new THREE.InterleavedBuffer(this.vertexArray, layout.stride);
-    interleaved.setUsage(THREE.DynamicDrawUsage);
-    const position = new THREE.InterleavedBufferAttribute(interleaved, 3, layout.position);
-    const index = new THREE.BufferAttribute(this.indexArray, 1).setUsage(THREE.DynamicDrawUsage);
-    const lines = new THREE.BufferAttribute(this.lineArray, 1).setUsage(THREE.DynamicDrawUsage);
-
-    // New geometries, so three.js allocates new GPU buffers of the new size.
+  //! Makes the geometry of `mesh` from its RenderBuffers `render` and uploads it whole; returns the
+  //! bytes allocated. isEdge: null (every side is an edge: a triangle mesh) or (a, b) => whether
+  //! render vertices a and b are joined by an edge of the mesh.
+  rebuild(mesh, render, isEdge = null) {
     this.geometry.dispose();
-    this.lineGeometry.dispose();
-    this.geometry = new THREE.BufferGeometry();
-    this.lineGeometry = new THREE.BufferGeometry();
-    this.geometry.setAttribute('position', position);
-    if (layout.normal >= 0)
-      this.geometry.setAttribute(
-        'normal',
-        new THREE.InterleavedBufferAttribute(interleaved, 3, layout.normal),
-      );
-    this.geometry.setIndex(index);
-    this.lineGeometry.setAttribute('position', position);
-    this.lineGeometry.setIndex(lines);
+    this.geometry = toBufferGeometry(mesh, { renderBuffers: render });
     this.surface.geometry = this.geometry;
-    this.wireframe.geometry = this.lineGeometry;
-    this.indexCount = indexCount;
-    this.geometry.setDrawRange(0, this.indexCount);
-    this.lineGeometry.setDrawRange(0, this.indexCount * 2);
-    this.geometry.computeBoundingSphere();
+    this.rebuildLines(isEdge);
     return this.allocatedBytes;
   }
 
-  //! Copies the rewritten ranges of `result` from `buffers` and asks three.js to upload only them.
-  //! Falls back to rebuild() when the sync resized or rebuilt the buffers, or they outgrew ours.
-  //! Returns the bytes queued for upload.
-  update(buffers, result, isEdge = null) {
-    const stride = buffers.layout.stride;
-    if (
-      result.resized ||
-      result.full ||
-      !this.vertexArray ||
-      stride !== this.stride ||
-      buffers.vertices.length > this.vertexArray.length ||
-      buffers.indices.length > this.indexArray.length
-    )
-      return { bytes: this.rebuild(buffers, isEdge), full: true, ranges: 1 };
-    const indexCount = buffers.indices.length;
-
-    const position = this.geometry.getAttribute('position');
-    const interleaved = position.data;
-    const index = this.geometry.getIndex();
+  //! Uploads what the sync `result` of `render` rewrote (a whole upload when it was full or
+  //! resized). Returns {bytes (queued), full, ranges}.
+  update(render, result, isEdge = null) {
+    const upload = syncBufferGeometry(this.geometry, render, result);
+    if (upload.full) {
+      this.rebuildLines(isEdge);
+      return { bytes: this.allocatedBytes, full: true, ranges: 1 };
+    }
     const lines = this.lineGeometry.getIndex();
-    let bytes = 0;
-    for (const { first, count } of result.vertexRanges) {
-      if (count === 0) continue;
-      copyRange(this.vertexArray, buffers.vertices, first, count, stride);
-      interleaved.addUpdateRange(first * stride, count * stride);
-      bytes += count * stride * 4;
-    }
-    for (const { first, count } of result.indexRanges) {
-      if (count === 0) continue;
-      copyRange(this.indexArray, buffers.indices, first, count, 1);
-      index.addUpdateRange(first, count);
-      lines.addUpdateRange(first * 2, count * 2);
-      bytes += count * 4 * 3;
-    }
-    // After every copy: isEdge may call into the module, which can move the views.
+    const ranges = result.indexRanges;
     // Index ranges cover whole triangles, so they map onto whole line triples.
-    for (const { first, count } of result.indexRanges) this.writeLines(first, count, isEdge);
-    if (result.vertexRanges.length) interleaved.needsUpdate = true;
-    if (result.indexRanges.length) {
-      index.needsUpdate = true;
-      lines.needsUpdate = true;
+    for (let k = 0; k < ranges.length; k += 2) {
+      if (ranges[k + 1] === 0) continue;
+      this.writeLines(ranges[k], ranges[k + 1], isEdge);
+      lines.addUpdateRange(ranges[k] * 2, ranges[k + 1] * 2);
     }
-    this.indexCount = indexCount;
-    this.geometry.setDrawRange(0, this.indexCount);
+    if (ranges.length) lines.needsUpdate = true;
     this.lineGeometry.setDrawRange(0, this.indexCount * 2);
-    return { bytes, full: false, ranges: result.vertexRanges.length + result.indexRanges.length };
+    return {
+      bytes: upload.bytes + upload.result.indexBytes * 2,
+      full: false,
+      ranges: upload.ranges,
+    };
+  }
+
+  // A new line geometry over the surface's vertex buffer, its indices written whole.
+  rebuildLines(isEdge) {
+    this.lineArray = new Uint32Array(this.indexArray.length * 2);
+    this.writeLines(0, this.indexCount, isEdge);
+    this.lineGeometry.dispose();
+    this.lineGeometry = new THREE.BufferGeometry();
+    this.lineGeometry.setAttribute('position', this.geometry.getAttribute('position'));
+    const lines = new THREE.BufferAttribute(this.lineArray, 1).setUsage(THREE.DynamicDrawUsage);
+    this.lineGeometry.setIndex(lines);
+    this.lineGeometry.setDrawRange(0, this.indexCount * 2);
+    this.wireframe.geometry = this.lineGeometry;
   }
 
   // Line indices for index-buffer entries [first, first + count), whole triangles; a side that

@@ -143,15 +143,10 @@ export class PageMesh {
     };
   }
 
-  //! Syncs the render buffers with the mesh: { vertexRanges, indexRanges: [{first, count}], resized, full }.
+  //! Syncs the render buffers with the mesh: RenderBuffers.sync()'s result ({vertexRanges,
+  //! indexRanges: Uint32Array pairs [first, count], resized, full, ...}).
   sync() {
-    const r = this.render.sync();
-    const ranges = (flat) => {
-      const out = [];
-      for (let i = 0; i < flat.length; i += 2) out.push({ first: flat[i], count: flat[i + 1] });
-      return out;
-    };
-    return { ...r, vertexRanges: ranges(r.vertexRanges), indexRanges: ranges(r.indexRanges) };
+    return this.render.sync();
   }
 
   //! The first face hit by a ray: { face, point, ... } or null.

@@ -52,7 +52,7 @@ export function adopt(next, name, loadMs) {
   $('mesh-notes').textContent = next.loadNotes();
   const before = state.viewer.meter.snapshot();
   const isEdge = next.edgeTest();
-  const bytes = state.viewer.mesh.rebuild(next.buffers(), isEdge);
+  const bytes = state.viewer.mesh.rebuild(next.mesh, next.render, isEdge);
   state.viewer.frame(next.boundingBox());
   state.viewer.render();
   state.lastUpload = { bytes, full: true, ranges: 1, gl: state.viewer.meter.since(before) };
@@ -77,7 +77,7 @@ export function applyEdit(name, edit) {
   viewer.clearOverlay();
   const before = viewer.meter.snapshot();
   const isEdge = s.edgeTest();
-  const upload = viewer.mesh.update(s.buffers(), result, isEdge);
+  const upload = viewer.mesh.update(s.render, result, isEdge);
   viewer.render();
   const t2 = performance.now();
   state.lastUpload = { ...upload, gl: viewer.meter.since(before) };

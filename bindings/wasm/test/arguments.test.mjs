@@ -96,12 +96,49 @@ const hedgeCases = [
   ],
   ['fromBuffers', [{}], 0, 'arrays.indices', [{ positions: [0, 0, 0] }]],
   ['fromBuffers', [{}], 0, 'arrays.faceSizes', [{ positions: [], indices: [], faceSizes: 3 }]],
+  ['fromEngineStreams', [{}], 0, 'streams', [null, undefined, 'grid', [1]]],
+  ['fromEngineStreams', [{}], 0, 'streams.positions', [{ indices: [0, 1, 2] }]],
+  ['fromEngineStreams', [{}], 0, 'streams.indices', [{ positions: [0, 0, 0] }]],
+  [
+    'fromEngineStreams',
+    [{}],
+    0,
+    'streams.texcoords',
+    [{ positions: [], indices: [], texcoords: 2 }],
+  ],
+  [
+    'fromEngineStreams',
+    [{}],
+    0,
+    'streams.submeshes',
+    [{ positions: [], indices: [], submeshes: 'a' }],
+  ],
   ['fromFile', [sample('tet.obj'), 'tet.obj'], 0, 'bytes', [null, undefined, 'v 0 0 0', [118]]],
   ['fromFile', [sample('tet.obj'), 'tet.obj'], 1, 'name', NOT_STRING],
   ['setMaxThreads', [1], 0, 'n', [null, undefined, -1, 1.5, '2']],
 ];
 const renderCases = [
   E('faceTriangles', [0], 0, 'f'),
+  [
+    'pickTriangles',
+    [
+      [0, 0, 1],
+      [0, 0, -1],
+    ],
+    0,
+    'origin',
+    NOT_POINT,
+  ],
+  [
+    'pickTriangles',
+    [
+      [0, 0, 1],
+      [0, 0, -1],
+    ],
+    1,
+    'direction',
+    NOT_POINT,
+  ],
   ['dirtyViews', [{}], 0, 'result', [null, undefined, 3]],
   ['dirtyViews', [{}], 0, 'result.vertexRanges', [{ indexRanges: [] }]],
 ];
@@ -170,6 +207,7 @@ test('every public call with arguments is checked', () => {
     'maxThreads',
     'heapBytesInUse',
     'sizes',
+    'submeshes',
     'sync',
     'rebuild',
     'compact',

@@ -1,5 +1,6 @@
 // Deprecated names (kept for one release): Render and mesh.createRender() still work, as aliases of
-// RenderBuffers and mesh.createRenderBuffers(); the next release removes them and this test.
+// RenderBuffers and mesh.createRenderBuffers(), and loadHedgeNode() of loadHedge() under node; the
+// next release removes them and this test.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { grid } from './support.mjs';
@@ -15,6 +16,16 @@ test('Render is RenderBuffers, and createRender() makes one', () => {
   const render = mesh.createRender({ normals: 'none' });
   assert.ok(render instanceof api.RenderBuffers);
   assert.equal(render.indices.length, mesh.createRenderBuffers().indices.length);
+  mesh.dispose();
+});
+test('loadHedgeNode() is loadHedge() under node', async () => {
+  const loaded = await api.loadHedgeNode();
+  assert.ok(loaded instanceof api.Hedge);
+  const mesh = loaded.fromBuffers({
+    positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0]),
+    indices: new Uint32Array([0, 1, 2]),
+  });
+  assert.deepEqual(mesh.validate(), []);
   mesh.dispose();
 });
 // End of deprecated names

@@ -310,3 +310,44 @@ test('arguments of the wrong type are refused before they reach the module', () 
   assert.deepEqual(mesh.validate(), []);
   mesh.dispose();
 });
+
+test('engine streams: welded positions, attributes per corner and one submesh per triangle', () => {
+  // Two triangles of a square whose shared edge is a seam: its vertices come twice, with other uvs.
+  const streams = {
+    positions: new Float32Array([0, 0, 0, 1, 0, 0, 1, 1, 0, 1, 1, 0, 0, 1, 0, 0, 0, 0]),
+    indices: new Uint32Array([0, 1, 2, 3, 4, 5]),
+    texcoords: new Float32Array([0, 0, 1, 0, 1, 1, 0.5, 0.5, 0, 1, 0, 0.5]),
+    colors: new Float32Array(24).fill(0.5),
+    submeshes: new Int32Array([0, 2]),
+  };
+  const mesh = hedge.fromEngineStreams(streams);
+  assert.deepEqual([mesh.counts().vertices, mesh.counts().faces], [4, 2]);
+  const render = mesh.createRenderBuffers();
+  assert.equal(render.sizes().vertices, 6, 'the seam keeps both sets of uvs');
+  const submeshes = render.submeshes();
+  assert.deepEqual(
+    submeshes.map((s) => s.empty),
+    [false, true, false],
+  );
+  assert.deepEqual(
+    submeshes.map((s) => s.indexStart <= s.indexStart + s.indexCount),
+    [true, true, true],
+  );
+  assert.equal(submeshes[2].indexStart + submeshes[2].indexCount, render.sizes().indexCount);
+  assert.deepEqual(mesh.validate(), []);
+  render.dispose();
+  mesh.dispose();
+
+  const refused = (change, message) =>
+    assert.throws(
+      () => hedge.fromEngineStreams({ ...streams, ...change }),
+      (e) => e instanceof HedgeError && e.kind === 'invalid-argument' && message.test(e.message),
+      String(message),
+    );
+  refused({ texcoords: new Float32Array(11) }, /^texcoords: 11 floats is not 2 per vertex for 6/);
+  refused({ colors: new Float32Array(18) }, /^colors: 18 floats is not 4 per vertex for 6/);
+  refused({ submeshes: new Int32Array([0]) }, /^submeshes: 1 ids is not one per triangle for 2/);
+  refused({ submeshes: new Int32Array([0, 70000]) }, /70000/);
+  refused({ indices: new Uint32Array([0, 1]) }, /^indices: 2 entries is not 3 per triangle/);
+  refused({ weld: 'loose' }, /^fromEngineStreams: unknown weld 'loose'/);
+});

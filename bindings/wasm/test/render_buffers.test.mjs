@@ -181,3 +181,42 @@ test('texture coordinates from a file reach the vertex layout, UV seams as separ
   render.dispose();
   mesh.dispose();
 });
+
+test('pickTriangles finds the face under a ray and its triangle slots as of the last sync', () => {
+  const mesh = grid(4);
+  const render = mesh.createRenderBuffers();
+  render.sync();
+  const hit = render.pickTriangles([1.25, 2.6, 1], [0, 0, -1]);
+  const pick = mesh.pick([1.25, 2.6, 1], [0, 0, -1]);
+  assert.equal(hit.face, pick.face);
+  assert.ok(Math.abs(hit.t - 1) < 1e-6);
+  assert.deepEqual(
+    hit.point.map((x) => Math.round(x * 1e6) / 1e6),
+    [1.25, 2.6, 0],
+  );
+  assert.deepEqual([hit.first, hit.count], render.faceTriangles(hit.face));
+  assert.equal(render.pickTriangles([1.25, 2.6, 1], [0, 0, 1]), null);
+  // A face made after the last sync has no slots yet.
+  mesh.splitFace(hit.face, [1.25, 2.6, 0]);
+  let fresh = 0;
+  for (const [dx, dy] of [
+    [0.2, 0],
+    [-0.2, 0],
+    [0, 0.2],
+    [0, -0.2],
+  ]) {
+    const h = render.pickTriangles([1.25, 2.6, 1], [dx, dy, -1]);
+    if (h.face >= 32) {
+      assert.equal(h.count, 0, `face ${h.face} is newer than the last sync`);
+      fresh += 1;
+    }
+  }
+  assert.ok(fresh > 0);
+  render.sync();
+  const synced = render.pickTriangles([1.25, 2.6, 1], [0.01, 0.2, -1]);
+  assert.equal(synced.count, 1);
+  assert.deepEqual([synced.first, synced.count], render.faceTriangles(synced.face));
+  assert.deepEqual(mesh.validate(), []);
+  render.dispose();
+  mesh.dispose();
+});

@@ -1,5 +1,5 @@
 // Shared by the node tests: the module, the sample meshes and small mesh generators.
-import { readFileSync } from 'node:fs';
+import { existsSync, readFileSync, symlinkSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 
 const root = new URL('../../../', import.meta.url);
@@ -7,9 +7,29 @@ const dist = process.env.HEDGE_WASM_DIST
   ? new URL(`file://${process.env.HEDGE_WASM_DIST.replace(/\/?$/, '/')}`)
   : new URL('build/wasm/dist/', root);
 
+/** The folder of the built package (HEDGE_WASM_DIST, or build/wasm/dist). */
+export { dist };
 const api = await import(new URL('node.js', dist).href);
-export const { HedgeError, loadHedgeNode } = api;
-export const hedge = await loadHedgeNode();
+export const { HedgeError, loadHedge } = api;
+export const hedge = await loadHedge();
+
+/** hedge's three.js adapter (three.js of the build) and three.js itself, from the playground's npm
+ *  packages (web/node_modules, installed by `npm ci` in web/): {THREE, adapter}, or null when three
+ *  is not installed. The adapter imports 'three' as a peer dependency, which node looks for in a
+ *  node_modules folder above the build's: a link to web/node_modules is made beside it. */
+export async function threeAdapter() {
+  const modules = new URL('web/node_modules/', root);
+  if (!existsSync(new URL('three/package.json', modules))) return null;
+  const link = new URL('../node_modules', dist);
+  try {
+    symlinkSync(fileURLToPath(modules), fileURLToPath(link));
+  } catch (e) {
+    if (e.code !== 'EEXIST') throw e;
+  }
+  const THREE = await import(new URL('three/build/three.module.js', modules).href);
+  const adapter = await import(new URL('three.js', dist).href);
+  return { THREE, adapter };
+}
 
 /** The bytes of a file of data/. */
 export function sample(name) {

@@ -1,0 +1,15 @@
+// Four pages: index.html imports hedge-mesh (the module and its wasm as two files), single.html
+// imports hedge-mesh/single (one file), worker.html runs hedge-mesh in a module worker, three.html
+// draws, raycasts and edits a mesh through hedge-mesh/three. The dev server must not pre-bundle the
+// package, which would separate hedge.mjs from hedge.wasm; the build needs nothing.
+import { defineConfig } from 'vite';
+
+export default defineConfig({
+  optimizeDeps: { exclude: ['hedge-mesh'] },
+  worker: { format: 'es' },
+  build: {
+    rollupOptions: { input: ['index.html', 'single.html', 'worker.html', 'three.html'] },
+    // The single-file module is 2 MB: the wasm is in it. Say so only above that.
+    chunkSizeWarningLimit: 2500,
+  },
+});
