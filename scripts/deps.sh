@@ -10,6 +10,9 @@
 #   fuzz   the libFuzzer targets
 #   format clang-format 14, for scripts/format (prettier, its JavaScript half, comes from web/'s npm)
 #   csharp Mono's C# compiler and runtime, for the C# binding's tests (bindings/csharp/)
+#   python Debian's Python 3 with pybind11, numpy, pytest, venv, setuptools and wheel, and stb (for
+#          hedge.render), for the Python binding (bindings/python/; its CMake build wants
+#          -DPython_EXECUTABLE=/usr/bin/python3)
 #   wasm   emscripten (with its node and clang) for the WebAssembly module (bindings/wasm/)
 #   windows MinGW-w64 (posix threads) to cross-build hedge_c.dll and the C ABI tests for Windows
 #          x64, and wine64 to run them (the windows preset, cmake/toolchains/mingw-w64-x86_64.cmake)
@@ -30,6 +33,8 @@ hedge_deps_packages() {
       fuzz) echo clang libclang-rt-14-dev ;;
       format) echo clang-format-14 ;;
       csharp) echo mono-mcs mono-runtime ;;
+      python) echo python3 python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-venv \
+        python3-setuptools python3-wheel libstb-dev pkg-config ;;
       wasm) echo emscripten nodejs ;;
       web) echo chromium chromium-driver ;;
       windows) echo g++-mingw-w64-x86-64-posix gcc-mingw-w64-x86-64-posix wine64 ;;

@@ -1,11 +1,13 @@
 // NativeMesh: local edits and whole-mesh algorithms (the JS API's Mesh, see wasm_mesh.h). Every
 // edit goes through the binding core (binding/edits.h): handles checked, then the library's
-// refusal, then the edit, exactly as the C ABI does it.
+// refusal, then the edit, exactly as the C ABI does it. decimate() and garbage_collection() run
+// under binding::with_rollback(), so that running out of wasm memory halfway leaves the mesh as it was.
 #include <string>
 #include <vector>
 
 #include "binding/edits.h"
 #include "binding/names.h"
+#include "binding/rollback.h"
 #include "hedge/algorithms/decimate.h"
 #include "hedge/algorithms/normals.h"
 #include "hedge/algorithms/smooth.h"
@@ -15,32 +17,12 @@
 
 namespace hedge::wasm {
 
-namespace {
-
-//! Runs body(), which rewrites the whole mesh, so that it either succeeds or leaves the mesh as it
-//! was: a copy is kept and put back if body() throws. Only for the algorithms that do not give that
-//! (strong) guarantee themselves, where running out of wasm memory halfway would leave a partial
-//! result: decimate() (a run of collapses cut short) and garbage_collection() (compacted arrays
-//! next to ones not yet compacted). subdivide() gives it itself (subdivide.h). Costs a copy of the
-//! mesh, small next to what these algorithms allocate.
-template <typename Body>
-auto with_rollback(SurfaceMesh& mesh, Body&& body) -> decltype(body()) {
-  SurfaceMesh backup = mesh;  // throws before anything changed if memory is short already
-  try {
-    return body();
-  } catch (...) {
-    mesh = std::move(backup);  // noexcept; the change log records a reset for its consumers
-    throw;
-  }
-}
-
-}  // namespace
-
 std::string WasmMesh::refusal(const std::string& edit, val elements) const {
   return guarded([&]() -> std::string {
     std::vector<std::uint32_t> indices;
     copy_from_js(elements, indices, js_length(elements, "elements"));
-    const char* why = binding::refusal(s_->mesh, binding::parse_edit(edit), indices);
+    const char* why =
+        binding::refusal(s_->mesh, binding::parse_edit(edit, binding::EditNaming::camel_case), indices);
     return why != nullptr ? why : "";
   });
 }
@@ -83,7 +65,7 @@ val WasmMesh::fill_hole(std::uint32_t h) {
 }
 
 void WasmMesh::garbage_collection() {
-  guarded([&] { with_rollback(s_->mesh, [&] { s_->mesh.garbage_collection(); }); });
+  guarded([&] { binding::with_rollback(s_->mesh, [&] { s_->mesh.garbage_collection(); }); });
 }
 
 void WasmMesh::subdivide(const std::string& scheme, int steps) {
@@ -121,7 +103,8 @@ val WasmMesh::decimate(double target_faces, double target_vertices, double max_e
     options.target_faces = std::size_t(target_faces);
     options.target_vertices = std::size_t(target_vertices);
     if (max_error >= 0) options.max_error = max_error;
-    const DecimateResult r = with_rollback(s_->mesh, [&] { return hedge::decimate(s_->mesh, options); });
+    const DecimateResult r =
+        binding::with_rollback(s_->mesh, [&] { return hedge::decimate(s_->mesh, options); });
     val out = val::object();
     out.set("vertices", double(r.vertices));
     out.set("faces", double(r.faces));

@@ -520,7 +520,8 @@ HEDGE_API hedge_status hedge_detach_faces(hedge_mesh* mesh, const uint32_t* face
  *  optional (NULL) and receives old index -> new index (HEDGE_INVALID_INDEX for a removed element);
  *  its capacity must be at least the slot count of its kind before the call (hedge_mesh_counts():
  *  vertex_slots, halfedge_slots, edge_slots, face_slots), else HEDGE_ERROR_BUFFER_TOO_SMALL and
- *  nothing is changed. Render objects of the mesh rebuild at their next sync. O(#elements). */
+ *  nothing is changed; after HEDGE_ERROR_OUT_OF_MEMORY too. Render objects of the mesh rebuild at
+ *  their next sync. O(#elements). */
 HEDGE_API hedge_status hedge_mesh_garbage_collection(hedge_mesh* mesh, uint32_t* vertex_map,
                                                      uint32_t vertex_capacity, uint32_t* halfedge_map,
                                                      uint32_t halfedge_capacity, uint32_t* edge_map,
@@ -655,7 +656,8 @@ HEDGE_API hedge_status hedge_decimate_options_default(hedge_decimate_options* ou
  *  \param options NULL for the defaults (which have no target: as much as the error limit allows).
  *  \param out_result optional (NULL).
  *  A face that is not a triangle, a position that is not finite, a non-manifold vertex, or options
- *  out of range: HEDGE_ERROR_INVALID_ARGUMENT, and the mesh is unchanged. */
+ *  out of range: HEDGE_ERROR_INVALID_ARGUMENT, and the mesh is unchanged; so it is after
+ *  HEDGE_ERROR_OUT_OF_MEMORY, however far the collapses had gone. */
 HEDGE_API hedge_status hedge_mesh_decimate(hedge_mesh* mesh, const hedge_decimate_options* options,
                                            hedge_decimate_result* out_result);
 
@@ -814,7 +816,7 @@ typedef enum hedge_ordering {
  *  vertex cache's size for HEDGE_ORDERING_VERTEX_CACHE (16 to 32; 0 means 16). The old-to-new maps
  *  are written as by hedge_mesh_garbage_collection() (each map optional, NULL). Render objects of
  *  the mesh rebuild at their next sync. An unknown ordering: HEDGE_ERROR_INVALID_ARGUMENT, and the
- *  mesh is unchanged. */
+ *  mesh is unchanged; so it is after HEDGE_ERROR_OUT_OF_MEMORY. */
 HEDGE_API hedge_status hedge_mesh_reorder(hedge_mesh* mesh, int32_t ordering, uint32_t cache_size,
                                           uint32_t* vertex_map, uint32_t vertex_capacity,
                                           uint32_t* halfedge_map, uint32_t halfedge_capacity,

@@ -29,6 +29,7 @@ void for_each_fan_triangle(const SurfaceMesh& m, Fn&& fn) {
 }  // namespace
 
 std::vector<double> mean_curvature(const SurfaceMesh& m) {
+  require_finite_positions(m, "mean_curvature");
   // The cotangent Laplacian sum_j (cot a + cot b) / 2 (p_j - p_i), gathered per fan triangle.
   std::vector<Vec3d> lap(m.vertex_slots(), Vec3d{0, 0, 0});
   for_each_fan_triangle(m, [&](const std::array<Vertex, 3>& c, const std::array<Vec3d, 3>& p) {
@@ -55,6 +56,7 @@ std::vector<double> mean_curvature(const SurfaceMesh& m) {
 }
 
 std::vector<double> gaussian_curvature(const SurfaceMesh& m) {
+  require_finite_positions(m, "gaussian_curvature");
   std::vector<double> angle(m.vertex_slots(), 0);
   for_each_fan_triangle(m, [&](const std::array<Vertex, 3>& c, const std::array<Vec3d, 3>& p) {
     for (int k = 0; k < 3; ++k) angle[c[k].idx()] += corner_angle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);

@@ -110,9 +110,8 @@ void check(const Mesh& m, const DecimateOptions& o) {
       throw InvalidInputError("decimate: face " + std::to_string(f.idx()) + " has " +
                               std::to_string(m.valence(f)) +
                               " corners; decimation needs triangles (triangulate first)");
+  require_finite_positions(m, "decimate");
   for (Vertex v : m.vertices()) {
-    if (!is_finite(m.position(v)))
-      throw InvalidInputError("decimate: " + vertex_name(v) + " has a position that is not finite");
     if (!m.is_manifold(v))
       throw InvalidInputError("decimate: " + vertex_name(v) +
                               " is not manifold (its faces form more than one fan)");

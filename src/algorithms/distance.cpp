@@ -72,10 +72,7 @@ void check_mesh(const SurfaceMesh& m, const char* function, const char* name) {
   if (m.n_faces() == 0)
     throw InvalidInputError(std::string(function) + ": mesh " + name +
                             " has no faces, so it has no surface to measure");
-  for (Vertex v : m.vertices())
-    if (!is_finite(m.position(v)))
-      throw InvalidInputError(std::string(function) + ": vertex " + std::to_string(v.idx()) + " of mesh " +
-                              name + " has a non-finite position");
+  require_finite_positions(m, (std::string(function) + " (mesh " + name + ")").c_str());
 }
 
 OneSidedDistance measure(const SurfaceMesh& from, const SurfaceMesh& to, const DistanceOptions& options) {

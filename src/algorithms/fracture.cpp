@@ -389,6 +389,7 @@ void check_input(const SurfaceMesh& mesh, const Vec3& impact, const FractureOpti
     throw InvalidInputError("fracture: the impact (" + number(impact.x) + ", " + number(impact.y) + ", " +
                             number(impact.z) + ") is not finite");
   if (mesh.n_faces() == 0) throw InvalidInputError("fracture: the mesh has no face");
+  require_finite_positions(mesh, "fracture");
   if (bvh && bvh->mesh() != &mesh)
     throw InvalidInputError("fracture: the FaceBvh was built over another mesh");
   check_thickness(mesh, o.thickness);

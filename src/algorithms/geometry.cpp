@@ -20,8 +20,9 @@ void check_positions(const SurfaceMesh& m, std::span<const Vec3d> p, const char*
                             std::to_string(m.vertex_slots()) + " vertex slots");
 }
 
-//! The mesh's positions per vertex slot, in double.
-std::vector<Vec3d> positions_of(const SurfaceMesh& m) {
+//! The mesh's positions per vertex slot, in double, for the call `function` names.
+std::vector<Vec3d> positions_of(const SurfaceMesh& m, const char* function) {
+  require_finite_positions(m, function);
   std::vector<Vec3d> p(m.vertex_slots(), Vec3d{0, 0, 0});
   for (Vertex v : m.vertices()) p[v.idx()] = at(m, v);
   return p;
@@ -84,7 +85,9 @@ std::vector<double> cotangent_weights(const SurfaceMesh& m, std::span<const Vec3
   return w;
 }
 
-std::vector<double> cotangent_weights(const SurfaceMesh& m) { return cotangent_weights(m, positions_of(m)); }
+std::vector<double> cotangent_weights(const SurfaceMesh& m) {
+  return cotangent_weights(m, positions_of(m, "cotangent_weights"));
+}
 
 std::vector<double> vertex_areas(const SurfaceMesh& m, std::span<const Vec3d> p) {
   check_positions(m, p, "vertex_areas");
@@ -103,7 +106,9 @@ std::vector<double> vertex_areas(const SurfaceMesh& m, std::span<const Vec3d> p)
   return area;
 }
 
-std::vector<double> vertex_areas(const SurfaceMesh& m) { return vertex_areas(m, positions_of(m)); }
+std::vector<double> vertex_areas(const SurfaceMesh& m) {
+  return vertex_areas(m, positions_of(m, "vertex_areas"));
+}
 
 Vec3d area_vector(const SurfaceMesh& m, Face f) {
   Vec3d n{0, 0, 0};
@@ -117,12 +122,14 @@ double face_area(const SurfaceMesh& mesh, Face f) {
 }
 
 double surface_area(const SurfaceMesh& mesh) {
+  require_finite_positions(mesh, "surface_area");
   double sum = 0;
   for (Face f : mesh.faces()) sum += face_area(mesh, f);
   return sum;
 }
 
 BoundingBox bounding_box(const SurfaceMesh& mesh) {
+  require_finite_positions(mesh, "bounding_box");
   BoundingBox box;
   for (Vertex v : mesh.vertices()) {
     const Vec3& p = mesh.position(v);
@@ -145,6 +152,7 @@ double volume(const SurfaceMesh& mesh) {
   if (open > 0)
     throw InvalidInputError("volume: the surface is open (" + std::to_string(open) +
                             " boundary half-edges), so it encloses no volume");
+  require_finite_positions(mesh, "volume");
   // About the box centre, which keeps the terms small and the cancellation mild.
   const Vec3d c = to_double(bounding_box(mesh).centre());
   double six_v = 0;

@@ -217,6 +217,7 @@ void FaceBvh::build(const SurfaceMesh& mesh, const BvhOptions& options) {
                             std::to_string(options.max_leaf_size));
   if (!(options.rebuild_fraction > 0 && options.rebuild_fraction <= 1))
     throw InvalidInputError("FaceBvh: rebuild_fraction must be in (0, 1]");
+  require_finite_positions(mesh, "FaceBvh");
   if (mesh_ != &mesh || !changes_.attached()) changes_ = ChangeConsumer(mesh.watch_changes());
   changes_.consume();  // the new tree holds every edit so far
   mesh_ = &mesh;

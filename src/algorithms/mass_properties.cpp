@@ -27,6 +27,7 @@ void check_input(const SurfaceMesh& mesh, double density) {
     if (mesh.valence(f) != 3)
       throw InvalidInputError("mass_properties: face " + std::to_string(f.idx()) + " has " +
                               std::to_string(mesh.valence(f)) + " corners, not 3 (triangulate first)");
+  require_finite_positions(mesh, "mass_properties");
 }
 
 Vec3d reference_point(const SurfaceMesh& mesh) {

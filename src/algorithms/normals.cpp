@@ -51,6 +51,7 @@ Vec3d weighted(const SurfaceMesh& m, const FaceNormals& n, Face f, Halfedge out,
 Vec3 face_normal(const SurfaceMesh& mesh, Face f) { return to_float(unit_or_zero(area_vector(mesh, f))); }
 
 FaceProperty<Vec3> compute_face_normals(SurfaceMesh& mesh, std::string_view name) {
+  require_finite_positions(mesh, "compute_face_normals");
   FaceProperty<Vec3> prop = mesh.face_property<Vec3>(name);
   for (Face f : mesh.faces()) {
     prop[f] = face_normal(mesh, f);
@@ -62,6 +63,7 @@ FaceProperty<Vec3> compute_face_normals(SurfaceMesh& mesh, std::string_view name
 
 VertexProperty<Vec3> compute_vertex_normals(SurfaceMesh& mesh, NormalWeighting weighting,
                                             std::string_view name) {
+  require_finite_positions(mesh, "compute_vertex_normals");
   const FaceNormals n = all_face_normals(mesh);
   VertexProperty<Vec3> prop = mesh.vertex_property<Vec3>(name);
   for (Vertex v : mesh.vertices()) {
@@ -91,6 +93,7 @@ HalfedgeProperty<Vec3> compute_corner_normals(SurfaceMesh& mesh, double crease_d
   if (!(crease_degrees >= 0 && crease_degrees <= 180))
     throw InvalidInputError("compute_corner_normals: the crease angle must be in [0, 180] degrees, got " +
                             std::to_string(crease_degrees));
+  require_finite_positions(mesh, "compute_corner_normals");
   const FaceNormals n = all_face_normals(mesh);
   const double cos_crease = std::cos(crease_degrees * std::numbers::pi / 180);
   HalfedgeProperty<Vec3> prop = mesh.halfedge_property<Vec3>(name);

@@ -67,6 +67,7 @@ std::vector<Index> edges_by_faces(const SurfaceMesh& m, const std::vector<Face>&
 }
 
 GarbageMaps reorder_spatial(SurfaceMesh& m) {
+  require_finite_positions(m, "reorder");
   const Morton code(bounding_box(m));
   std::vector<std::pair<std::uint64_t, Index>> keyed;
   keyed.reserve(m.n_vertices());
@@ -88,7 +89,8 @@ GarbageMaps reorder_spatial(SurfaceMesh& m) {
 }
 
 // The vertex-cache order. A FIFO cache is modelled by time stamps: `clock` counts the vertices
-// that entered the cache, and vertex v is still in it while clock - entered[v] < cache_size.
+// that entered the cache, and vertex v is still in it while clock - entered[v] <= cache_size (it
+// and fewer than cache_size vertices after it entered).
 // Faces are emitted in fans: all the faces left around the current vertex, in rotational order;
 // the next fan centre is, among the corners just emitted that still have faces left, the one that
 // entered the cache longest ago yet will still be in it after its own fan (its fan adds at most
@@ -125,7 +127,7 @@ GarbageMaps reorder_vertex_cache(SurfaceMesh& m, std::size_t cache_size) {
         --left[w.idx()];
         dead_ends.push_back(w);
         corners.push_back(w);
-        if (clock - entered[w.idx()] >= k) entered[w.idx()] = clock++;
+        if (clock - entered[w.idx()] > k) entered[w.idx()] = clock++;
       }
     }
     // The next centre.
@@ -172,7 +174,8 @@ double average_cache_miss_ratio(const SurfaceMesh& mesh, std::size_t cache_size)
   std::int64_t misses = 0;
   std::size_t triangles = 0;
   auto load = [&](Vertex v) {
-    if (misses - entered[v.idx()] >= k) entered[v.idx()] = misses++;
+    // In the cache while fewer than k vertices entered after it.
+    if (misses - entered[v.idx()] > k) entered[v.idx()] = misses++;
   };
   for (Face f : mesh.faces()) {
     const Halfedge first = mesh.halfedge(f);

@@ -112,6 +112,7 @@ void smooth_implicit(const SurfaceMesh& m, const SmoothOptions& o, const std::ve
 
 void smooth(SurfaceMesh& m, const SmoothOptions& o) {
   check(m, o);
+  require_finite_positions(m, "smooth");
   if (o.iterations == 0 || m.n_vertices() == 0) return;
   const std::size_t nv = m.vertex_slots();
   std::vector<Vec3d> p(nv), next(nv);

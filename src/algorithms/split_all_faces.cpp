@@ -7,6 +7,7 @@
 namespace hedge {
 
 std::vector<Vertex> split_all_faces(SurfaceMesh& m) {
+  require_finite_positions(m, "split_all_faces");
   std::vector<Vertex> out;
   out.reserve(m.n_faces());
   if (!m.has_garbage()) {

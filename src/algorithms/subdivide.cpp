@@ -303,6 +303,7 @@ std::size_t subdivide_memory(const SurfaceMesh& mesh, Subdivision scheme, int st
 void subdivide(SurfaceMesh& mesh, Subdivision scheme, int steps, const Progress& progress,
                std::size_t max_memory) {
   check(mesh, scheme, steps);
+  require_finite_positions(mesh, "subdivide");
   check_memory(mesh, scheme, steps, max_memory);
   report_progress(progress, 0);
   if (steps == 0) return;

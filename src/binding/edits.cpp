@@ -1,11 +1,12 @@
 #include "binding/edits.h"
 
-#include <cstdio>
 #include <string>
 
 #include "binding/errors.h"
 #include "binding/handles.h"
+#include "binding/picking.h"
 #include "hedge/algorithms/fill_hole.h"
+#include "hedge/core/face_operations.h"
 #include "hedge/core/operations.h"
 
 namespace hedge::binding {
@@ -14,7 +15,7 @@ namespace {
 struct EditNames {
   Edit edit;
   const char* name;     // the library's
-  const char* js_name;  // the JS API's method
+  const char* js_name;  // the JS API's method (null: the JS API has no such edit)
   std::size_t arity;
 };
 constexpr EditNames kEdits[] = {
@@ -24,6 +25,7 @@ constexpr EditNames kEdits[] = {
     {Edit::split_face, "split_face", "splitFace", 1},
     {Edit::cut_face, "cut_face", "cutFace", 2},
     {Edit::fill_hole, "fill_hole", "fillHole", 1},
+    {Edit::remove_face, "remove_face", nullptr, 1},
 };
 const EditNames& names(Edit edit) { return kEdits[static_cast<int>(edit)]; }
 
@@ -59,11 +61,18 @@ R done(R result, Edit edit) {
 const char* edit_name(Edit edit) noexcept { return names(edit).name; }
 std::size_t edit_arity(Edit edit) noexcept { return names(edit).arity; }
 
-Edit parse_edit(std::string_view name) {
+Edit parse_edit(std::string_view name, EditNaming naming) {
+  const auto spelling = [naming](const EditNames& n) {
+    return naming == EditNaming::snake_case ? n.name : n.js_name;
+  };
+  // The JS API took the library's names as well from the start; it keeps them.
   for (const EditNames& n : kEdits)
-    if (name == n.name || name == n.js_name) return n.edit;
+    if ((spelling(n) != nullptr && name == spelling(n)) ||
+        (naming == EditNaming::camel_case && name == n.name))
+      return n.edit;
   std::string known;
-  for (const EditNames& n : kEdits) known += std::string(known.empty() ? "" : ", ") + n.js_name;
+  for (const EditNames& n : kEdits)
+    if (spelling(n) != nullptr) known += std::string(known.empty() ? "" : ", ") + spelling(n);
   fail(HEDGE_ERROR_INVALID_ARGUMENT, "unknown edit '" + std::string(name) + "' (" + known + ")");
 }
 
@@ -86,19 +95,13 @@ const char* refusal(const SurfaceMesh& m, Edit edit, std::span<const std::uint32
       return cut_face_refusal(m, Halfedge(a), Halfedge(elements[1]));
     case Edit::fill_hole:
       return fill_hole_refusal(m, Halfedge(a));
+    case Edit::remove_face:
+      return remove_face_refusal(m, Face(a));
   }
   return nullptr;
 }
 
-Vec3 need_point(const Vec3& p, const char* what) {
-  if (!is_finite(p)) {
-    char text[160];
-    std::snprintf(text, sizeof text, "%s: point (%g, %g, %g) is not finite", what, double(p.x), double(p.y),
-                  double(p.z));
-    fail(HEDGE_ERROR_INVALID_ARGUMENT, text);
-  }
-  return p;
-}
+Vec3 need_point(const Vec3& p, const char* what) { return need_finite(p, std::string(what) + ": point"); }
 
 Vertex split_edge(SurfaceMesh& m, std::uint32_t edge, const std::optional<Vec3>& point) {
   const Edge e = allowed<Edge>(m, Edit::split_edge, edge);

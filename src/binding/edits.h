@@ -17,12 +17,18 @@
 namespace hedge::binding {
 
 //! The refusable edits. Their names in messages are the library's ("split_edge", "collapse", ...).
-enum class Edit { split_edge, collapse, flip, split_face, cut_face, fill_hole };
+enum class Edit { split_edge, collapse, flip, split_face, cut_face, fill_hole, remove_face };
+//! The spelling of edit names a binding's callers use: the library's and Python's snake_case
+//! ("split_edge"), or the JS API's camelCase method names ("splitEdge").
+enum class EditNaming { snake_case, camel_case };
 //! The edit's name in messages: the library function's ("split_edge", ...).
 const char* edit_name(Edit edit) noexcept;
-//! The edit that `name` names: the library function's name ("split_edge") or the JS API's method
-//! name ("splitEdge"). \throw BindingError (HEDGE_ERROR_INVALID_ARGUMENT) for another.
-Edit parse_edit(std::string_view name);
+//! The edit that `name` names in the caller's spelling: snake_case, the library function's name
+//! ("split_edge", as Python has it), or camel_case, the JS API's method name ("splitEdge"; remove_face
+//! has none, as the JS API has no such edit), which also takes the library's names as it always did. \throw
+//! BindingError (HEDGE_ERROR_INVALID_ARGUMENT) "unknown edit 'x' (...)" for another, listing the edits in
+//! that spelling.
+Edit parse_edit(std::string_view name, EditNaming naming);
 //! How many elements the edit takes (cut_face: 2 half-edges; the others: 1).
 std::size_t edit_arity(Edit edit) noexcept;
 

@@ -25,8 +25,8 @@ void claim(MeshState& state) {
     ++state.depth;  // a nested use on the same thread
   } else {
     fail(HEDGE_ERROR_BUSY,
-         "the mesh is in a call on another thread; a mesh and its render objects take calls from one thread "
-         "at a time");
+         "the mesh is in a call on another thread; a mesh, and what belongs to it, takes calls from one "
+         "thread at a time");
   }
 }
 

@@ -3,6 +3,7 @@
 #include <span>
 
 #include "binding/errors.h"
+#include "hedge/core/threads.h"
 #include "hedge/error.h"
 
 namespace hedge::binding {
@@ -34,6 +35,16 @@ constexpr Spelling<NormalSource> kNormalSource[] = {
     {"none", NormalSource::none, false},          {"attribute", NormalSource::attribute, false},
     {"computed", NormalSource::computed, false},  {"auto", NormalSource::automatic, false},
     {"automatic", NormalSource::automatic, true},
+};
+constexpr Spelling<NormalWeighting> kNormalWeighting[] = {
+    {"area", NormalWeighting::area, false},
+    {"angle", NormalWeighting::angle, false},
+    {"uniform", NormalWeighting::uniform, false},
+};
+constexpr Spelling<Ordering> kOrdering[] = {
+    {"spatial", Ordering::spatial, false},
+    {"vertex-cache", Ordering::vertex_cache, false},
+    {"vertex_cache", Ordering::vertex_cache, true},
 };
 
 template <typename E>
@@ -71,10 +82,16 @@ SmoothMethod parse_smooth_method(std::string_view text) {
 NormalSource parse_normal_source(std::string_view text) {
   return parse<NormalSource>(kNormalSource, text, "normal source");
 }
+NormalWeighting parse_normal_weighting(std::string_view text) {
+  return parse<NormalWeighting>(kNormalWeighting, text, "normal weighting");
+}
+Ordering parse_ordering(std::string_view text) { return parse<Ordering>(kOrdering, text, "ordering"); }
 
 const char* name(Subdivision value) { return name_in<Subdivision>(kSubdivision, value); }
 const char* name(SmoothMethod value) { return name_in<SmoothMethod>(kSmoothMethod, value); }
 const char* name(NormalSource value) { return name_in<NormalSource>(kNormalSource, value); }
+const char* name(NormalWeighting value) { return name_in<NormalWeighting>(kNormalWeighting, value); }
+const char* name(Ordering value) { return name_in<Ordering>(kOrdering, value); }
 
 std::vector<std::string> subdivision_spellings() { return spellings<Subdivision>(kSubdivision); }
 std::vector<std::string> smooth_method_spellings() { return spellings<SmoothMethod>(kSmoothMethod); }
@@ -101,6 +118,14 @@ Winding to_winding(std::int32_t winding) {
   static constexpr Constant<Winding> kWindings[] = {{HEDGE_WINDING_CCW, Winding::ccw},
                                                     {HEDGE_WINDING_CW, Winding::cw}};
   return from_constant(kWindings, winding, "winding", "HEDGE_WINDING_*");
+}
+
+unsigned thread_count(std::int64_t threads, const char* what) {
+  if (threads < 0 || threads > kMaxThreadsAsked)
+    fail(HEDGE_ERROR_INVALID_ARGUMENT, std::string(what) + " must be 0 (every core) to " +
+                                           std::to_string(kMaxThreadsAsked) + ", got " +
+                                           std::to_string(threads));
+  return threads == 0 ? max_threads() : static_cast<unsigned>(threads);
 }
 
 }  // namespace hedge::binding

@@ -3,6 +3,8 @@
 //   Subdivision   loop, midpoint, catmull-clark, sqrt3, split-faces (also catmull_clark, split_faces)
 //   SmoothMethod  uniform, taubin, cotangent, implicit (also cotan)
 //   NormalSource  none, attribute, computed, auto (also automatic)
+//   NormalWeighting  area, angle, uniform
+//   Ordering      spatial, vertex-cache (also vertex_cache)
 // The spellings in parentheses are accepted aliases; name() gives the first. Below them, the build
 // options' enums from the C ABI's integers (HEDGE_WELD_*, ...), which the JS API passes too.
 #pragma once
@@ -12,6 +14,8 @@
 #include <string_view>
 #include <vector>
 
+#include "hedge/algorithms/normals.h"
+#include "hedge/algorithms/reorder.h"
 #include "hedge/algorithms/smooth.h"
 #include "hedge/algorithms/subdivide.h"
 #include "hedge/core/build.h"
@@ -25,11 +29,15 @@ namespace hedge::binding {
 Subdivision parse_subdivision(std::string_view text);
 SmoothMethod parse_smooth_method(std::string_view text);
 NormalSource parse_normal_source(std::string_view text);
+NormalWeighting parse_normal_weighting(std::string_view text);
+Ordering parse_ordering(std::string_view text);
 
 //! The value's name.
 const char* name(Subdivision value);
 const char* name(SmoothMethod value);
 const char* name(NormalSource value);
+const char* name(NormalWeighting value);
+const char* name(Ordering value);
 
 //! Every accepted spelling (names first, then aliases), for a command line's list of choices.
 std::vector<std::string> subdivision_spellings();
@@ -60,5 +68,12 @@ E from_constant(const Constant<E> (&table)[N], std::int32_t constant, const char
 Weld to_weld(std::int32_t weld);
 TopologyPolicy to_policy(std::int32_t policy);
 Winding to_winding(std::int32_t winding);
+
+//! The most threads a binding's caller may ask a call for.
+inline constexpr std::int64_t kMaxThreadsAsked = 1024;
+//! A count of threads as every binding takes it: 0 means every core (max_threads(),
+//! hedge/core/threads.h), 1 to kMaxThreadsAsked that many. \throw BindingError
+//! (HEDGE_ERROR_INVALID_ARGUMENT) "WHAT must be 0 (every core) to 1024, got N" for another.
+unsigned thread_count(std::int64_t threads, const char* what);
 
 }  // namespace hedge::binding

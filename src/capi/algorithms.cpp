@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "binding/rollback.h"
 #include "capi_internal.h"
 #include "hedge/algorithms/decimate.h"
 #include "hedge/algorithms/distance.h"
@@ -228,8 +229,10 @@ hedge_status hedge_mesh_decimate(hedge_mesh* mesh, const hedge_decimate_options*
     d.max_normal_change_degrees = o.max_normal_change_degrees;
     d.keep_boundary = need_bool(o.keep_boundary, "keep_boundary");
     d.keep_seams = need_bool(o.keep_seams, "keep_seams");
-    // Its InvalidInputError becomes HEDGE_ERROR_INVALID_ARGUMENT, the mesh unchanged.
-    const DecimateResult r = decimate(object->mesh, d);
+    // Its InvalidInputError becomes HEDGE_ERROR_INVALID_ARGUMENT, the mesh unchanged. A failure
+    // halfway (memory) would leave a run of collapses cut short: the rollback puts the mesh back.
+    SurfaceMesh& m = object->mesh;
+    const DecimateResult r = binding::with_rollback(m, [&] { return decimate(m, d); });
     if (out_result != nullptr) *out_result = {r.vertices, r.faces, r.collapses, r.max_error};
   });
 }
@@ -412,7 +415,10 @@ hedge_status hedge_mesh_reorder(hedge_mesh* mesh, int32_t ordering, uint32_t cac
                        edge_map,   edge_capacity,   face_map,     face_capacity};
     check_map_buffers(object->mesh, b);
     const Ordering o = ordering == HEDGE_ORDERING_VERTEX_CACHE ? Ordering::vertex_cache : Ordering::spatial;
-    write_maps(reorder(object->mesh, o, cache_size == 0 ? 16 : cache_size), b);
+    // reorder() compacts array after array: a failure halfway is rolled back.
+    SurfaceMesh& m = object->mesh;
+    write_maps(binding::with_rollback(m, [&] { return reorder(m, o, cache_size == 0 ? 16 : cache_size); }),
+               b);
   });
 }
 

@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "binding/face_attributes.h"
+#include "binding/rollback.h"
 #include "capi_internal.h"
 #include "hedge/algorithms/detach_faces.h"
 #include "hedge/algorithms/fill_hole.h"
@@ -261,7 +262,9 @@ hedge_status hedge_mesh_garbage_collection(hedge_mesh* mesh, uint32_t* vertex_ma
     const MapBuffers b{vertex_map, vertex_capacity, halfedge_map, halfedge_capacity,
                        edge_map,   edge_capacity,   face_map,     face_capacity};
     check_map_buffers(object->mesh, b);
-    write_maps(object->mesh.garbage_collection(), b);
+    // garbage_collection() compacts array after array: a failure halfway is rolled back.
+    SurfaceMesh& m = object->mesh;
+    write_maps(binding::with_rollback(m, [&] { return m.garbage_collection(); }), b);
   });
 }
 

@@ -1,6 +1,8 @@
 // The C ABI: picking (hedge/algorithms/locate.h) through the mesh's picking tree, built by the first
 // query and updated from the mesh's change log by each later one (binding::picking_tree);
 // hedge_mesh_fracture (algorithms.cpp) locates its impacts through the same tree.
+#include "binding/picking.h"
+
 #include <cstdio>
 #include <limits>
 
@@ -13,14 +15,7 @@ namespace {
 
 Vec3 need_vector(const float* xyz, const char* name) {
   need(xyz, name);
-  const Vec3 p{xyz[0], xyz[1], xyz[2]};
-  if (!is_finite(p)) {
-    char text[128];
-    std::snprintf(text, sizeof text, "%s (%g, %g, %g) is not finite", name, double(p.x), double(p.y),
-                  double(p.z));
-    fail(HEDGE_ERROR_INVALID_ARGUMENT, text);
-  }
-  return p;
+  return binding::need_finite(Vec3{xyz[0], xyz[1], xyz[2]}, name);
 }
 
 //! A limit that may be +infinity but not NaN or negative.
@@ -79,8 +74,8 @@ hedge_status hedge_mesh_raycast(hedge_mesh* mesh, const float* origin, const flo
                                 hedge_surface_hit* out_hit, int32_t* out_found) {
   return pick(mesh, out_hit, out_found, [&](MeshObject& object, hedge_surface_hit& hit) {
     const Vec3 o = need_vector(origin, "origin");
-    const Vec3 d = need_vector(direction, "direction");
-    if (d.x == 0 && d.y == 0 && d.z == 0) fail(HEDGE_ERROR_INVALID_ARGUMENT, "direction is zero");
+    need(direction, "direction");
+    const Vec3 d = binding::need_direction(Vec3{direction[0], direction[1], direction[2]}, "direction");
     const double limit = need_limit(t_max, "t_max", true);
     const auto found = picking_tree(object).first_hit(o, d, limit);
     if (!found) return false;

@@ -1,10 +1,12 @@
 // SurfaceMesh::validate(): checks every invariant of docs/design.md and names what is broken.
 #include <algorithm>
+#include <cstdio>
 #include <numeric>
 #include <string>
 #include <vector>
 
 #include "hedge/core/surface_mesh.h"
+#include "hedge/error.h"
 
 namespace hedge {
 
@@ -24,11 +26,15 @@ class Report {
     if (dropped_ > 0) lines_.push_back("... and " + std::to_string(dropped_) + " more problems");
     return std::move(lines_);
   }
-  bool empty() const { return lines_.empty(); }
+  //! Whether a problem was added since mark() (since the start without one).
+  bool empty() const { return lines_.size() + dropped_ == marked_; }
+  //! Problems added so far no longer count for empty(): for problems that do not stop later checks.
+  void mark() { marked_ = lines_.size() + dropped_; }
 
  private:
   std::vector<std::string> lines_;
   std::size_t dropped_ = 0;
+  std::size_t marked_ = 0;
 };
 
 std::string str(Vertex v) { return "vertex " + (v.is_valid() ? std::to_string(v.idx()) : "<invalid>"); }
@@ -45,7 +51,20 @@ struct DisjointSets {
   std::vector<Index> parent;
 };
 
+std::string non_finite_position(Vertex v, const Vec3& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, " has a non-finite position (%g, %g, %g)", double(p.x), double(p.y),
+                double(p.z));
+  return str(v) + text;
+}
+
 }  // namespace
+
+void require_finite_positions(const SurfaceMesh& m, const char* what) {
+  for (Vertex v : m.vertices())
+    if (!is_finite(m.position(v)))
+      throw InvalidInputError(std::string(what) + ": " + non_finite_position(v, m.position(v)));
+}
 
 std::vector<std::string> SurfaceMesh::validate() const {
   Report r;
@@ -59,6 +78,12 @@ std::vector<std::string> SurfaceMesh::validate() const {
   if (v_deleted_.size() < nv || f_deleted_.size() < nf)
     r.add("deletion flags and element arrays have inconsistent sizes");
   if (!r.empty()) return r.finish();
+
+  // Positions: every live vertex's is finite. A bad position does not stop the connectivity checks.
+  for (Vertex v : vertices())
+    if (!is_finite(position(v))) r.add(non_finite_position(v, position(v)));
+  r.mark();
+
   auto count_set = [](const std::vector<bool>& b) {
     return static_cast<std::size_t>(std::count(b.begin(), b.end(), true));
   };

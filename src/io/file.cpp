@@ -2,7 +2,10 @@
 // the operating system, are in file_posix.cpp and file_windows.cpp (file_system.h).
 
 #include <charconv>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <initializer_list>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -127,6 +130,8 @@ void write_mesh(const SurfaceMesh& mesh, const std::string& path, const WriteOpt
   // glTF stores triangles only; ear clipping keeps concave polygons inside their outline.
   if (format == FileFormat::gltf || format == FileFormat::glb)
     export_options.triangulation = Triangulation::ear;
+  // The export renumbers vertices when the mesh has garbage: name the mesh's own vertex.
+  require_finite_positions(mesh, "write_mesh");
   write_file_atomic(path, write_indexed(to_indexed(mesh, export_options), format, options));
 }
 
@@ -186,6 +191,34 @@ void check_writable(const IndexedMesh& mesh) {
   check(mesh.texcoord_indices, mesh.texcoords.size(), "texture coordinate", true);
   check(mesh.normal_indices, mesh.normals.size(), "normal", true);
   check(mesh.color_indices, mesh.colors.size(), "color", true);
+  auto finite = [](std::initializer_list<float> values, const char* what, std::size_t i) {
+    for (float x : values)
+      if (!std::isfinite(x)) {
+        std::string text = std::string("indexed mesh: ") + what + " " + std::to_string(i) + " (";
+        char number[32];
+        const char* separator = "";
+        for (float v : values) {
+          std::snprintf(number, sizeof number, "%s%g", separator, double(v));
+          text += number;
+          separator = ", ";
+        }
+        throw InvalidInputError(text + ") is not finite");
+      }
+  };
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    const Vec3& p = mesh.positions[i];
+    finite({p.x, p.y, p.z}, "position", i);
+  }
+  for (std::size_t i = 0; i < mesh.texcoords.size(); ++i)
+    finite({mesh.texcoords[i].x, mesh.texcoords[i].y}, "texture coordinate", i);
+  for (std::size_t i = 0; i < mesh.normals.size(); ++i) {
+    const Vec3& n = mesh.normals[i];
+    finite({n.x, n.y, n.z}, "normal", i);
+  }
+  for (std::size_t i = 0; i < mesh.colors.size(); ++i) {
+    const Color& c = mesh.colors[i];
+    finite({c.r, c.g, c.b, c.a}, "color", i);
+  }
 }
 
 }  // namespace detail

@@ -360,7 +360,9 @@ inline void append_vec3_line(std::string& out, const Vec3& v, int precision) {
 namespace hedge::detail {
 
 //! Checks what the writers rely on: face sizes adding up to the index count, indices within the
-//! pools, attribute index arrays of the right length. \throw InvalidInputError naming the problem.
+//! pools, attribute index arrays of the right length, and finite positions, texture coordinates,
+//! normals and colours (the readers refuse a NaN or an infinity, so a file holding one could not be
+//! read back). \throw InvalidInputError naming the problem, before anything is written.
 void check_writable(const IndexedMesh& mesh);
 
 //! Calls f(first_corner, corner_count) for each face of `mesh` in order.

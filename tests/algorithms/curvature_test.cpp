@@ -10,6 +10,7 @@
 #include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/subdivide.h"
 #include "hedge/core/build.h"
+#include "non_finite.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -118,6 +119,12 @@ TEST(Curvature, TheEmptyMeshHasNoValues) {
   const SurfaceMesh m;
   EXPECT_TRUE(mean_curvature(m).empty());
   EXPECT_TRUE(gaussian_curvature(m).empty());
+}
+
+TEST(Curvature, RefusesANonFinitePosition) {
+  SurfaceMesh m = build(test::grid(4, true));
+  test::expect_refuses_non_finite(m, Vertex(6), "mean_curvature", [&] { mean_curvature(m); });
+  test::expect_refuses_non_finite(m, Vertex(6), "gaussian_curvature", [&] { gaussian_curvature(m); });
 }
 
 }  // namespace

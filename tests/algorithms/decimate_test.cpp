@@ -16,6 +16,7 @@
 #include "hedge/core/build.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "non_finite.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -360,6 +361,11 @@ TEST(Decimate, ReportsProgressUpToOne) {
   EXPECT_EQ(seen.back(), 1.0);
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
   EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Decimate, RefusesANonFinitePositionByTheSharedCheck) {
+  SurfaceMesh m = build(test::grid(6, true));
+  test::expect_refuses_non_finite(m, Vertex(10), "decimate", [&] { decimate(m, {.target_vertices = 10}); });
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "hedge/algorithms/split_all_faces.h"
 #include "hedge/core/build.h"
 #include "hedge/error.h"
+#include "non_finite.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -131,7 +132,8 @@ TEST(Distance, EmptyMeshNaNPositionAndZeroThreadsAreRefused) {
     (void)hausdorff_distance(nan, cube);
     FAIL() << "no error for a NaN position";
   } catch (const InvalidInputError& e) {
-    EXPECT_NE(std::string(e.what()).find("vertex 5 of mesh a"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("(mesh a): vertex 5 has a non-finite position"), std::string::npos)
+        << e.what();
   }
   EXPECT_THROW((void)hausdorff_distance(cube, cube, {.threads = 0}), InvalidInputError);
 }
@@ -151,6 +153,14 @@ TEST(Distance, TooManySamplesAreRefusedInsteadOfWrappingAround) {
     }
   }
   EXPECT_THROW((void)one_sided_distance(cube, cube, {.samples = kMaxDistanceSamples + 1}), InvalidInputError);
+}
+
+TEST(Distance, RefusesANonFinitePositionInEitherMesh) {
+  SurfaceMesh a = build(test::cube()), b = build(test::cube());
+  test::expect_refuses_non_finite(a, Vertex(2), "hausdorff_distance (mesh a)",
+                                  [&] { hausdorff_distance(a, b); });
+  test::expect_refuses_non_finite(b, Vertex(5), "hausdorff_distance (mesh b)",
+                                  [&] { hausdorff_distance(a, b); });
 }
 
 }  // namespace

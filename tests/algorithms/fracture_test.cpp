@@ -18,6 +18,7 @@
 #include "hedge/core/face_operations.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "non_finite.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -663,6 +664,11 @@ TEST(Fracture, RandomImpactsOverRealMeshes) {
   EXPECT_GT(shards, impacts * 5);
   // No hull reports a vertex outside.
   EXPECT_EQ(g_hulls_outside, 0u) << g_hulls_outside << " of " << g_hulls;
+}
+
+TEST(Fracture, RefusesANonFinitePositionBeforeCutting) {
+  SurfaceMesh m = plate(8);
+  test::expect_refuses_non_finite(m, Vertex(70), "fracture", [&] { fracture(m, {4.2f, 3.9f, 0}); });
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "hedge/core/export.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "non_finite.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -214,6 +215,16 @@ TEST(Geometry, VectorHelpers) {
   EXPECT_EQ(float_bits(1.0f), 0x3F800000u);
   EXPECT_NE(float_bits(-0.0f), float_bits(0.0f));
   EXPECT_LT(float_bits(1.5f), float_bits(2.5f));  // non-negative floats order as their bits
+}
+
+TEST(Geometry, WholeMeshMeasuresRefuseANonFinitePosition) {
+  SurfaceMesh m = build(test::cube());
+  test::expect_refuses_non_finite(m, Vertex(4), "bounding_box", [&] { bounding_box(m); });
+  test::expect_refuses_non_finite(m, Vertex(4), "volume", [&] { volume(m); });
+  test::expect_refuses_non_finite(m, Vertex(4), "surface_area", [&] { surface_area(m); });
+  SurfaceMesh t = build(test::tetrahedron());
+  test::expect_refuses_non_finite(t, Vertex(2), "vertex_areas", [&] { vertex_areas(t); });
+  test::expect_refuses_non_finite(t, Vertex(2), "cotangent_weights", [&] { cotangent_weights(t); });
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include "hedge/algorithms/locate.h"
 #include "hedge/core/build.h"
 #include "locate_reference.h"
+#include "non_finite.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -22,6 +23,11 @@ TEST(FaceBvh, ShapeOfTheTree) {
     EXPECT_GE(s.height, 11u);  // ceil(log2(5856 / 4))
     EXPECT_EQ(s.dead_slots, 0u);
   }
+}
+
+TEST(FaceBvhBuild, RefusesANonFinitePosition) {
+  SurfaceMesh m = build(test::grid(4, true));
+  test::expect_refuses_non_finite(m, Vertex(6), "FaceBvh", [&] { FaceBvh bvh(m); });
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "hedge/core/export.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "non_finite.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -155,6 +156,11 @@ TEST(MassProperties, BadInputIsRefusedWithAReason) {
   EXPECT_NE(message([&] { mass_properties(build(inside_out)); }).find("not a positive one"),
             std::string::npos);
   EXPECT_NE(message([&] { mass_properties(SurfaceMesh()); }).find("volume of 0,"), std::string::npos);
+}
+
+TEST(MassProperties, RefusesANonFinitePosition) {
+  SurfaceMesh m = build(test::tetrahedron());
+  test::expect_refuses_non_finite(m, Vertex(3), "mass_properties", [&] { mass_properties(m); });
 }
 
 }  // namespace

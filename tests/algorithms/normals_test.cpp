@@ -7,6 +7,7 @@
 #include "hedge/core/build.h"
 #include "hedge/core/export.h"
 #include "hedge/error.h"
+#include "non_finite.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -129,6 +130,15 @@ TEST(Normals, BadCreaseAnglesAreRefused) {
   EXPECT_THROW(compute_corner_normals(m, 181), InvalidInputError);
   EXPECT_THROW(compute_corner_normals(m, std::nan("")), InvalidInputError);
   EXPECT_FALSE(m.get_halfedge_property<Vec3>("h:normal"));  // nothing was added
+}
+
+TEST(Normals, RefuseANonFinitePosition) {
+  SurfaceMesh m = build(test::cube());
+  test::expect_refuses_non_finite(m, Vertex(6), "compute_face_normals", [&] { compute_face_normals(m); });
+  test::expect_refuses_non_finite(m, Vertex(6), "compute_vertex_normals", [&] { compute_vertex_normals(m); });
+  test::expect_refuses_non_finite(m, Vertex(6), "compute_corner_normals",
+                                  [&] { compute_corner_normals(m, 30); });
+  EXPECT_FALSE(m.get_face_property<Vec3>("f:normal"));
 }
 
 }  // namespace

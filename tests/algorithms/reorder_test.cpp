@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <deque>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "hedge/core/face_operations.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "non_finite.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -187,9 +189,32 @@ TEST(Reorder, CacheMissRatioCountsFifoLoads) {
   const SurfaceMesh m = build(two);
   EXPECT_DOUBLE_EQ(average_cache_miss_ratio(m, 16), 2.0);
   EXPECT_DOUBLE_EQ(average_cache_miss_ratio(m, 1), 3.0);
+  // A cache of k entries keeps a vertex until k others entered after it: the ratio is that of a
+  // FIFO queue of k vertices, each triangle drawn from its face's half-edge target on.
+  const SurfaceMesh grid = build(test::grid(6, true));
+  for (std::size_t k : {1, 2, 3, 5, 16}) {
+    std::deque<Vertex> fifo;
+    std::size_t misses = 0;
+    for (Face f : grid.faces()) {
+      const Halfedge h = grid.halfedge(f);
+      for (Vertex v :
+           {grid.to_vertex(h), grid.to_vertex(grid.next(h)), grid.to_vertex(grid.next(grid.next(h)))}) {
+        if (std::find(fifo.begin(), fifo.end(), v) != fifo.end()) continue;
+        ++misses;
+        fifo.push_back(v);
+        if (fifo.size() > k) fifo.pop_front();
+      }
+    }
+    EXPECT_DOUBLE_EQ(average_cache_miss_ratio(grid, k), double(misses) / double(grid.n_faces())) << k;
+  }
   // A quad draws as a fan of two triangles: 4 loads.
   SurfaceMesh quad = build(test::grid(1, false));
   EXPECT_DOUBLE_EQ(average_cache_miss_ratio(quad, 16), 2.0);
+}
+
+TEST(Reorder, SpatialOrderRefusesANonFinitePosition) {
+  SurfaceMesh m = build(test::grid(6, true));
+  test::expect_refuses_non_finite(m, Vertex(9), "reorder", [&] { reorder(m, Ordering::spatial); });
 }
 
 }  // namespace

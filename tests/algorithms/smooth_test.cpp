@@ -11,6 +11,7 @@
 #include "hedge/core/changes.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "non_finite.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -213,6 +214,13 @@ TEST(Smooth, BadOptionsChangeNothing) {
   smooth(quads, {.method = SmoothMethod::taubin, .iterations = 2});  // polygons are fine otherwise
   EXPECT_TRUE(quads.validate().empty());
   EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(Smooth, RefusesANonFinitePositionBeforeMovingAnything) {
+  SurfaceMesh m = build(test::grid(5, true));
+  test::expect_refuses_non_finite(m, Vertex(7), "smooth", [&] { smooth(m); });
+  test::expect_refuses_non_finite(m, Vertex(7), "smooth",
+                                  [&] { smooth(m, {.method = SmoothMethod::implicit}); });
 }
 
 }  // namespace

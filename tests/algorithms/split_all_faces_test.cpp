@@ -5,6 +5,7 @@
 #include "edit_checks.h"
 #include "hedge/core/build.h"
 #include "hedge/core/face_operations.h"
+#include "non_finite.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -50,6 +51,11 @@ TEST(SplitAllFaces, WithGarbageEveryIndexStays) {
   for (Vertex v : before.vertices()) EXPECT_EQ(m.position(v), before.position(v));
   EXPECT_EQ(m.n_faces(), 3 * faces);
   EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(SplitAllFaces, RefusesANonFinitePosition) {
+  SurfaceMesh m = build(test::cube());
+  test::expect_refuses_non_finite(m, Vertex(1), "split_all_faces", [&] { split_all_faces(m); });
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "hedge/core/face_operations.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "non_finite.h"
 #include "subdivide_test_util.h"
 #include "test_meshes.h"
 
@@ -258,6 +259,15 @@ TEST(Subdivide, PropertyHandlesStayValidAndAProgressThatThrowsKeepsTheStepsDone)
 }
 
 // ---- Catmull-Clark ----
+
+TEST(Subdivide, RefusesANonFinitePositionBeforeRefining) {
+  SurfaceMesh m = build(test::cube());
+  for (Subdivision s : {Subdivision::catmull_clark, Subdivision::split_faces})
+    test::expect_refuses_non_finite(m, Vertex(3), "subdivide", [&] { subdivide(m, s, 1); });
+  SurfaceMesh t = build(test::tetrahedron());
+  for (Subdivision s : {Subdivision::loop, Subdivision::midpoint, Subdivision::sqrt3})
+    test::expect_refuses_non_finite(t, Vertex(1), "subdivide", [&] { subdivide(t, s, 1); });
+}
 
 }  // namespace
 }  // namespace hedge

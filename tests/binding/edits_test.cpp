@@ -52,14 +52,25 @@ TEST(BindingEdits, AllowedEditsAreDone) {
 
 TEST(BindingEdits, RefusalByNameAndArity) {
   SurfaceMesh m = build(test::grid(1, false));
-  EXPECT_EQ(parse_edit("cutFace"), Edit::cut_face);
-  EXPECT_EQ(parse_edit("fill_hole"), Edit::fill_hole);
-  EXPECT_EQ(error_of([] { parse_edit("explode"); }).message,
+  EXPECT_EQ(parse_edit("cutFace", EditNaming::camel_case), Edit::cut_face);
+  EXPECT_EQ(parse_edit("fill_hole", EditNaming::snake_case), Edit::fill_hole);
+  EXPECT_EQ(parse_edit("remove_face", EditNaming::snake_case), Edit::remove_face);
+  // Each caller's spelling only: the error lists the edits as that caller names them.
+  EXPECT_EQ(error_of([] { parse_edit("explode", EditNaming::camel_case); }).message,
             "unknown edit 'explode' (splitEdge, collapse, flip, splitFace, cutFace, fillHole)");
+  EXPECT_EQ(
+      error_of([] { parse_edit("cutFace", EditNaming::snake_case); }).message,
+      "unknown edit 'cutFace' (split_edge, collapse, flip, split_face, cut_face, fill_hole, remove_face)");
+  EXPECT_EQ(parse_edit("split_edge", EditNaming::camel_case), Edit::split_edge);  // as the JS API always took
+  EXPECT_EQ(error_of([] { parse_edit("removeFace", EditNaming::camel_case); }).status,
+            HEDGE_ERROR_INVALID_ARGUMENT);
   const std::uint32_t one[] = {0}, two[] = {0, 0};
   EXPECT_STREQ(refusal(m, Edit::cut_face, two), "the two half-edges are the same");
   EXPECT_STREQ(refusal(m, Edit::split_face, std::vector<std::uint32_t>{7}), "the face is not live");
   EXPECT_EQ(refusal(m, Edit::split_face, one), nullptr);
+  EXPECT_STREQ(refusal(m, Edit::remove_face, std::vector<std::uint32_t>{0xffffffffu}),
+               "the face is not live");
+  EXPECT_EQ(refusal(m, Edit::remove_face, one), nullptr);
   EXPECT_EQ(error_of([&] { refusal(m, Edit::flip, two); }).status, HEDGE_ERROR_INVALID_ARGUMENT);
   EXPECT_TRUE(m.validate().empty());
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "binding/errors.h"
+#include "hedge/core/threads.h"
 #include "hedge/error.h"
 
 namespace hedge::binding {
@@ -20,6 +21,12 @@ TEST(BindingNames, OneSpellingEachAndItsAliases) {
   EXPECT_STREQ(name(Subdivision::split_faces), "split-faces");
   EXPECT_EQ(parse_normal_source("auto"), NormalSource::automatic);
   EXPECT_STREQ(name(NormalSource::automatic), "auto");
+  EXPECT_EQ(parse_normal_weighting("angle"), NormalWeighting::angle);
+  EXPECT_STREQ(name(NormalWeighting::uniform), "uniform");
+  EXPECT_EQ(parse_ordering("vertex-cache"), Ordering::vertex_cache);
+  EXPECT_EQ(parse_ordering("vertex_cache"), Ordering::vertex_cache);
+  EXPECT_STREQ(name(Ordering::vertex_cache), "vertex-cache");
+  EXPECT_THROW(parse_normal_weighting("cotangent"), InvalidInputError);
   for (const std::string& s : smooth_method_spellings()) EXPECT_NO_THROW(parse_smooth_method(s)) << s;
   for (const std::string& s : subdivision_spellings()) EXPECT_NO_THROW(parse_subdivision(s)) << s;
   const auto methods = smooth_method_spellings();
@@ -42,6 +49,21 @@ TEST(BindingNames, TheCAbisConstants) {
   } catch (const BindingError& e) {
     EXPECT_EQ(e.status, HEDGE_ERROR_INVALID_ARGUMENT);
     EXPECT_EQ(e.message, "weld is 7, not a HEDGE_WELD_* value");
+  }
+}
+
+TEST(BindingNames, ThreadCounts) {
+  EXPECT_EQ(thread_count(0, "threads"), max_threads());  // 0: every core
+  EXPECT_EQ(thread_count(3, "threads"), 3u);
+  EXPECT_EQ(thread_count(kMaxThreadsAsked, "threads"), 1024u);
+  for (const std::int64_t bad : {std::int64_t(-1), kMaxThreadsAsked + 1, std::int64_t(1) << 40}) {
+    try {
+      thread_count(bad, "render: threads");
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const BindingError& e) {
+      EXPECT_EQ(e.status, HEDGE_ERROR_INVALID_ARGUMENT);
+      EXPECT_EQ(e.message, "render: threads must be 0 (every core) to 1024, got " + std::to_string(bad));
+    }
   }
 }
 

@@ -114,7 +114,7 @@ void test_picking(void) {
   CHECK_STATUS(hedge_mesh_raycast(mesh, nan3, down, INFINITY, &hit, &found), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_ERROR_HAS("origin");
   CHECK_STATUS(hedge_mesh_raycast(mesh, origin, zero, INFINITY, &hit, &found), HEDGE_ERROR_INVALID_ARGUMENT);
-  CHECK_ERROR_HAS("direction is zero");
+  CHECK_ERROR_HAS("direction has zero length");
   CHECK_STATUS(hedge_mesh_raycast(mesh, origin, down, -1, &hit, &found), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_ERROR_HAS("t_max");
   CHECK_STATUS(hedge_mesh_raycast(mesh, NULL, down, 1, &hit, &found), HEDGE_ERROR_INVALID_ARGUMENT);

@@ -1,8 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
 
 #include "hedge/core/build.h"
+#include "hedge/core/face_operations.h"
+#include "non_finite.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -98,6 +101,39 @@ TEST(Validate, PinchedVertexIsReported) {
   m.set_halfedge(Vertex(5), Halfedge());
   auto p = m.validate();
   EXPECT_TRUE(mentions(p, "vertex 0 is non-manifold")) << (p.empty() ? "" : p.front());
+}
+
+TEST(Validate, NonFinitePositionsAreNamedBesideTheConnectivity) {
+  SurfaceMesh m = build(test::cube());
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  m.position(Vertex(2)) = {nan, 0, 1};
+  m.position(Vertex(5)) = {0, -inf, 0};
+  EXPECT_EQ(m.validate(), (std::vector<std::string>{"vertex 2 has a non-finite position (nan, 0, 1)",
+                                                    "vertex 5 has a non-finite position (0, -inf, 0)"}));
+  // A bad position does not hide a broken link.
+  m.set_next(Halfedge(0), m.next(m.next(Halfedge(0))));
+  const auto p = m.validate();
+  EXPECT_TRUE(mentions(p, "vertex 2 has a non-finite position"));
+  EXPECT_TRUE(mentions(p, "next/prev not inverse"));
+  // A deleted vertex's position is not looked at.
+  SurfaceMesh g = build(test::grid(2, true));
+  test::poison(g, Vertex(4));
+  ASSERT_TRUE(remove_vertex(g, Vertex(4)));
+  EXPECT_EQ(g.validate(), std::vector<std::string>{});
+}
+
+TEST(Validate, NonFinitePositionsAreCappedLikeOtherProblems) {
+  SurfaceMesh m = build(test::grid(40, true));  // 41 x 41 vertices
+  for (Vertex v : m.vertices()) test::poison(m, v);
+  const auto p = m.validate();
+  ASSERT_EQ(p.size(), 1001u);
+  EXPECT_EQ(p.back(), "... and 681 more problems");
+}
+
+TEST(RequireFinitePositions, NamesTheFirstBadVertex) {
+  SurfaceMesh m = build(test::grid(3, true));
+  require_finite_positions(m, "check");
+  test::expect_refuses_non_finite(m, Vertex(5), "check", [&] { require_finite_positions(m, "check"); });
 }
 
 }  // namespace

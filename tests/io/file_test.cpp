@@ -11,12 +11,14 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <string>
 #include <tuple>
 #include <vector>
 
 #include "hedge/core/build.h"
+#include "hedge/core/face_operations.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 #include "io/file_fixture.h"
@@ -286,6 +288,22 @@ TEST(ReadMesh, EverySharedMeshRepairsIntoAValidMesh) {
     ++checked;
   }
   EXPECT_GE(checked, 20u);
+}
+
+TEST_F(FileTest, WriteMeshRefusesANonFinitePositionAndLeavesTheFile) {
+  SurfaceMesh m = build(test::cube());
+  // Garbage renumbers the exported vertices: the error names the mesh's own vertex.
+  ASSERT_TRUE(remove_vertex(m, Vertex(0)));
+  m.position(Vertex(6)).z = std::numeric_limits<float>::quiet_NaN();
+  for (const char* name : {"a.obj", "a.off", "a.ply", "a.stl", "a.gltf", "a.glb"}) {
+    put(path(name), "old");
+    const InvalidInputError e =
+        test::caught<InvalidInputError>([&] { write_mesh(m, path(name)); }, InvalidInputError(""));
+    EXPECT_EQ(std::string(e.what()).rfind("write_mesh: vertex 6 has a non-finite position (", 0), 0u)
+        << e.what();
+    EXPECT_EQ(read_file(path(name)), "old") << name;
+  }
+  EXPECT_EQ(listing().size(), 6u);  // no temporary file left
 }
 
 }  // namespace

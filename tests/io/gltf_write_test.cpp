@@ -11,6 +11,7 @@
 #include "hedge/core/export.h"
 #include "hedge/render/render_buffers.h"
 #include "io/gltf_test_common.h"
+#include "io/io_errors.h"
 #include "support/io_checks.h"
 #include "test_meshes.h"
 
@@ -220,6 +221,11 @@ TEST(GltfWrite, AMeshWithoutFacesGivesNoSceneAndBadMeshesAreRefused) {
   bad.positions = {{0, 0, 0}};
   bad.indices = {0, 0, 5};
   EXPECT_THROW(write_glb(bad), InvalidInputError);
+}
+
+TEST(GltfWrite, RefusesANonFiniteValueBeforeWriting) {
+  test::expect_writer_refuses_non_finite([](const IndexedMesh& m) { return write_gltf(m); });
+  test::expect_writer_refuses_non_finite([](const IndexedMesh& m) { return write_glb(m); });
 }
 
 }  // namespace

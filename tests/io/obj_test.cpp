@@ -10,6 +10,7 @@
 
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "io/io_errors.h"
 #include "support/io_checks.h"
 #include "test_meshes.h"
 
@@ -379,6 +380,10 @@ TEST(ObjWrite, RejectsAnInconsistentMesh) {
   EXPECT_NO_THROW(write_obj(m));
   m.face_sizes = {2, 2};
   EXPECT_THROW(write_obj(m), InvalidInputError);
+}
+
+TEST(ObjWrite, RefusesANonFiniteValueBeforeWriting) {
+  test::expect_writer_refuses_non_finite([](const IndexedMesh& m) { return write_obj(m); });
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "hedge/error.h"
 #include "hedge/io/io.h"
+#include "io/io_errors.h"
 #include "support/io_checks.h"
 #include "test_meshes.h"
 
@@ -141,6 +142,10 @@ TEST(OffWrite, WritesTheExpectedText) {
   m.indices = {0, 1, 3, 2, 0, 3, 1};
   m.face_sizes = {4, 3};
   EXPECT_EQ(write_off(m), "OFF\n4 2 0\n0 0 0\n1.5 0 0\n0 1 -2\n1 1 0\n4 0 1 3 2\n3 0 3 1\n");
+}
+
+TEST(OffWrite, RefusesANonFiniteValueBeforeWriting) {
+  test::expect_writer_refuses_non_finite([](const IndexedMesh& m) { return write_off(m); });
 }
 
 }  // namespace

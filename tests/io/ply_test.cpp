@@ -530,5 +530,9 @@ TEST(PlyWrite, BinaryLayoutIsLittleEndianFloat) {
   EXPECT_EQ(out.substr(out.size() - 4), std::string("\x02\x00\x00\x00", 4));
 }
 
+TEST(PlyWrite, RefusesANonFiniteValueBeforeWriting) {
+  test::expect_writer_refuses_non_finite([](const IndexedMesh& m) { return write_ply(m); });
+}
+
 }  // namespace
 }  // namespace hedge

@@ -203,5 +203,9 @@ TEST(StlWrite, DegenerateTrianglesGetAZeroNormal) {
   EXPECT_EQ(f32_at(out, 92), 0.0f);
 }
 
+TEST(StlWrite, RefusesANonFiniteValueBeforeWriting) {
+  test::expect_writer_refuses_non_finite([](const IndexedMesh& m) { return write_stl(m); });
+}
+
 }  // namespace
 }  // namespace hedge

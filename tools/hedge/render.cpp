@@ -17,7 +17,7 @@
 #include "memory_budget.h"
 #include "numbers.h"
 #include "picture/diagram.h"
-#include "picture/raster.h"
+#include "picture/shaded.h"
 #include "picture/sheet.h"
 #include "progress_bar.h"
 
@@ -46,12 +46,6 @@ struct RenderCommandOptions {
   std::size_t max_faces = 400;
   LoadOptions load;
 };
-
-//! What render() holds for one picture: a depth key (float) and a colour (3 bytes) per sample, and
-//! the picture (3 bytes a pixel). The per-face arrays, in proportion to the mesh, come on top.
-double picture_bytes(int w, int h, int supersample) {
-  return double(w) * h * supersample * supersample * (sizeof(float) + 3) + 3.0 * w * h;
-}
 
 // "WxH" -> (W, H), each side a whole number that fits an int; nothing if malformed.
 std::optional<std::pair<int, int>> parse_size(const std::string& text) {
@@ -106,37 +100,33 @@ std::vector<Vertex> repaired_vertices(const LoadedMesh& loaded) {
   return out;
 }
 
-Camera camera_for(const SurfaceMesh& mesh, const RenderCommandOptions& o, double aspect) {
-  if (!o.eye.empty()) {
-    Camera c;
-    c.eye = {o.eye[0], o.eye[1], o.eye[2]};
-    c.target = {o.target[0], o.target[1], o.target[2]};
-    if (!o.up.empty()) c.up = {o.up[0], o.up[1], o.up[2]};
-    c.fov_degrees = o.fov;
-    return c;
-  }
-  return frame(mesh, *parse_view(o.view), aspect);
+//! The explicit camera of --eye, --target, --up and --fov, if --eye is given.
+std::optional<Camera> explicit_camera(const RenderCommandOptions& o) {
+  if (o.eye.empty()) return std::nullopt;
+  Camera c;
+  c.eye = {o.eye[0], o.eye[1], o.eye[2]};
+  c.target = {o.target[0], o.target[1], o.target[2]};
+  if (!o.up.empty()) c.up = {o.up[0], o.up[1], o.up[2]};
+  c.fov_degrees = o.fov;
+  return c;
 }
 
 Image picture_of(const std::string& path, const RenderCommandOptions& o, int w, int h, LoadedMesh& loaded) {
   loaded = load_mesh(path, o.load);
   if (loaded.mesh.n_faces() == 0) throw InvalidInputError(path + ": nothing to draw: the mesh has no faces");
-  RenderOptions r;
-  r.width = w;
-  r.height = h;
-  r.supersample = o.supersample;
-  r.shading = o.shading == "flat" ? Shading::flat : Shading::smooth;
-  static const std::unordered_map<std::string, ColorBy> kColorBy = {{"none", ColorBy::none},
-                                                                    {"face", ColorBy::face},
-                                                                    {"shard", ColorBy::shard},
-                                                                    {"curvature", ColorBy::curvature},
-                                                                    {"valence", ColorBy::valence}};
-  r.color_by = kColorBy.at(o.color_by);
-  r.wireframe = o.wireframe;
-  r.feature_angle = o.feature_angle;
-  r.marked = repaired_vertices(loaded);
-  r.threads = o.threads;
-  return render(loaded.mesh, camera_for(loaded.mesh, o, double(w) / h), r);
+  ShadedOptions s;
+  s.width = w;
+  s.height = h;
+  s.view = view_named(o.view);
+  s.camera = explicit_camera(o);
+  s.shading = shading_named(o.shading);
+  s.color_by = color_by_named(o.color_by);
+  s.wireframe = o.wireframe;
+  s.feature_angle = o.feature_angle;
+  s.supersample = o.supersample;
+  s.threads = o.threads;
+  s.marked = repaired_vertices(loaded);
+  return shaded_picture(loaded.mesh, s);
 }
 
 std::string caption_of(const std::string& path, const SurfaceMesh& m) {
@@ -159,8 +149,8 @@ int run_render(const RenderCommandOptions& o) {
     const LoadedMesh loaded = load_mesh(o.input, o.load);
     DiagramOptions d;
     d.max_faces = o.max_faces;
-    const Camera camera =
-        o.eye.empty() ? diagram_camera(loaded.mesh, double(w) / h) : camera_for(loaded.mesh, o, 1);
+    const std::optional<Camera> given = explicit_camera(o);
+    const Camera camera = given ? *given : diagram_camera(loaded.mesh, double(w) / h);
     if (!parent.empty()) std::filesystem::create_directories(parent);
     if (svg) {
       SvgCanvas canvas(w, h);
@@ -178,10 +168,10 @@ int run_render(const RenderCommandOptions& o) {
     // The sheet's size and memory before any panel is drawn: every panel is kept for the sheet.
     int sheet_w = 0, sheet_h = 0;
     check_contact_sheet(o.grid.size(), w, h, o.columns, &sheet_w, &sheet_h);
-    check_memory(
-        picture_bytes(w, h, o.supersample) + 3.0 * w * h * double(o.grid.size()) + 3.0 * sheet_w * sheet_h,
-        o.load.memory, "a sheet of " + std::to_string(o.grid.size()) + " pictures of " + o.size,
-        "use a smaller --size, a lower --supersample or fewer meshes");
+    check_memory(shaded_picture_bytes(w, h, o.supersample) + 3.0 * w * h * double(o.grid.size()) +
+                     3.0 * sheet_w * sheet_h,
+                 o.load.memory, "a sheet of " + std::to_string(o.grid.size()) + " pictures of " + o.size,
+                 "use a smaller --size, a lower --supersample or fewer meshes");
     std::vector<Panel> panels;
     for (const std::string& path : o.grid) {
       LoadedMesh loaded;
@@ -194,7 +184,7 @@ int run_render(const RenderCommandOptions& o) {
     what = std::to_string(panels.size()) + " meshes side by side (" + std::to_string(sheet.width()) + "x" +
            std::to_string(sheet.height()) + ")";
   } else {
-    check_memory(picture_bytes(w, h, o.supersample), o.load.memory, "a picture of " + o.size,
+    check_memory(shaded_picture_bytes(w, h, o.supersample), o.load.memory, "a picture of " + o.size,
                  "use a smaller --size or a lower --supersample");
     LoadedMesh loaded;
     const Image image = picture_of(o.input, o, w, h, loaded);

@@ -15,12 +15,16 @@ namespace hedge {
 //! normals), negative where it bends toward them. 0 on boundary vertices, isolated or deleted ones,
 //! and vertices of zero area. The normal is the area-weighted sum of the faces' Newell vectors.
 //! O(V + F).
+//! \throw InvalidInputError naming the first vertex whose position is not finite,
+//!   before anything changes (require_finite_positions()).
 std::vector<double> mean_curvature(const SurfaceMesh& mesh);
 
 //! The Gaussian curvature of every vertex slot: the angle defect 2 pi minus the sum of the corner
 //! angles of the fan triangles at the vertex, divided by its barycentric area (so 1/r^2 on a sphere
 //! of radius r; summed with the areas over a closed surface, 2 pi times its Euler characteristic).
 //! 0 on boundary vertices, isolated or deleted ones, and vertices of zero area. O(V + F).
+//! \throw InvalidInputError naming the first vertex whose position is not finite,
+//!   before anything changes (require_finite_positions()).
 std::vector<double> gaussian_curvature(const SurfaceMesh& mesh);
 
 }  // namespace hedge

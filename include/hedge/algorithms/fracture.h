@@ -216,6 +216,8 @@ struct FractureResult {
 //!   (ring index included), such as more rings or break points than the limits above or a thickness
 //!   beyond kFractureMaxThicknessRatio times the mesh's diagonal; a face property "f:submesh" that
 //!   is not std::int32_t while there is a thickness; a bvh of another mesh.
+//! \throw InvalidInputError naming the first vertex whose position is not finite,
+//!   before anything changes (require_finite_positions()).
 FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOptions& options = {},
                         FaceBvh* bvh = nullptr);
 

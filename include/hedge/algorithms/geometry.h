@@ -72,7 +72,8 @@ Vec3d area_vector(const SurfaceMesh& mesh, Face f);
 //! non-planar polygon gets the area of its projection onto its best-fit plane). O(face degree).
 double face_area(const SurfaceMesh& mesh, Face f);
 
-//! The sum of the areas of the live faces. O(F).
+//! The sum of the areas of the live faces. O(V + F).
+//! \throw InvalidInputError naming the first vertex whose position is not finite.
 double surface_area(const SurfaceMesh& mesh);
 
 struct BoundingBox {
@@ -84,13 +85,16 @@ struct BoundingBox {
 };
 
 //! The axis-aligned box around the live vertices (isolated ones included). O(V).
+//! \throw InvalidInputError naming the first vertex whose position is not finite: a box that
+//!   skipped a NaN (as min and max do) would be wrong without a word.
 BoundingBox bounding_box(const SurfaceMesh& mesh);
 
 //! The signed volume the surface encloses: positive when the faces wind counter-clockwise seen from
 //! outside (outward normals), negative for an inside-out surface, by the divergence theorem over the
 //! faces' fan triangles. For several closed pieces, the sum of theirs. O(F).
 //! \throw InvalidInputError if the mesh has a boundary (an open surface encloses no volume); the
-//!   message says how many boundary half-edges it has.
+//!   message says how many boundary half-edges it has, or naming the first vertex whose position
+//!   is not finite.
 double volume(const SurfaceMesh& mesh);
 
 // ---- A seeded generator ----

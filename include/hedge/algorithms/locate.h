@@ -145,6 +145,8 @@ class FaceBvh {
   explicit FaceBvh(const SurfaceMesh& mesh, const BvhOptions& options = {});
 
   //! (Re)builds over the live faces of mesh, replacing the whole tree. O(n log n).
+  //! \throw InvalidInputError naming the first vertex whose position is not finite,
+  //!   before anything changes (require_finite_positions()).
   void build(const SurfaceMesh& mesh, const BvhOptions& options = {});
   //! Rebuilds over the same mesh with the same options. O(n log n). No-op on an empty FaceBvh.
   void rebuild();

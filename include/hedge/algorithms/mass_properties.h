@@ -33,6 +33,8 @@ struct MassProperties {
 //! \throw InvalidInputError if `density` is not finite and positive; if the mesh has a boundary
 //!   (naming how many boundary half-edges) or a face that is not a triangle (naming it); if the
 //!   enclosed volume is not positive (an empty or inside-out mesh), giving the volume.
+//! \throw InvalidInputError naming the first vertex whose position is not finite,
+//!   before anything changes (require_finite_positions()).
 MassProperties mass_properties(const SurfaceMesh& mesh, double density = 1.0);
 
 }  // namespace hedge

@@ -27,11 +27,15 @@ enum class NormalWeighting {
 Vec3 face_normal(const SurfaceMesh& mesh, Face f);
 
 //! Unit face normals of every live face into face property `name` (created if missing). O(F).
+//! \throw InvalidInputError naming the first vertex whose position is not finite,
+//!   before anything changes (require_finite_positions()).
 FaceProperty<Vec3> compute_face_normals(SurfaceMesh& mesh, std::string_view name = "f:normal");
 
 //! Unit vertex normals into vertex property `name` (created if missing): the weighted sum of the
 //! normals of the faces around each vertex, normalised. Isolated vertices, and vertices whose faces
 //! cancel out, get a zero normal. O(V + F).
+//! \throw InvalidInputError naming the first vertex whose position is not finite,
+//!   before anything changes (require_finite_positions()).
 VertexProperty<Vec3> compute_vertex_normals(SurfaceMesh& mesh,
                                             NormalWeighting weighting = NormalWeighting::area,
                                             std::string_view name = "v:normal");
@@ -43,6 +47,8 @@ VertexProperty<Vec3> compute_vertex_normals(SurfaceMesh& mesh,
 //! (flat shading), 180 the vertex normal (smooth); about 30-60 is typical for hard-surface models.
 //! Boundary half-edges (no face) get zero. O(V + F).
 //! \throw InvalidInputError if crease_degrees is not in [0, 180].
+//! \throw InvalidInputError naming the first vertex whose position is not finite,
+//!   before anything changes (require_finite_positions()).
 HalfedgeProperty<Vec3> compute_corner_normals(SurfaceMesh& mesh, double crease_degrees,
                                               NormalWeighting weighting = NormalWeighting::angle,
                                               std::string_view name = "h:normal");

@@ -31,6 +31,9 @@ enum class Ordering {
 //! `cache_size` (vertex_cache only) is the number of vertices the target cache holds: 16 to 32 on
 //! current GPUs; values below 3 are taken as 3.
 //! \return the old-to-new maps, as garbage_collection() returns them.
+//! Spatial order (which reads positions): \throw InvalidInputError naming the first vertex whose position is
+//! not finite,
+//!   before anything changes (require_finite_positions()).
 GarbageMaps reorder(SurfaceMesh& mesh, Ordering ordering = Ordering::spatial, std::size_t cache_size = 16);
 
 //! The average cache miss ratio (ACMR) of drawing the faces in index order, each face as a fan of

@@ -59,6 +59,8 @@ struct SmoothOptions {
 //!   face that is not a triangle (the message names it).
 //! \throw std::bad_alloc, with the positions unchanged, if memory runs out (a watched mesh's change
 //!   log may then hold marks for vertices that did not move).
+//! \throw InvalidInputError naming the first vertex whose position is not finite,
+//!   before anything changes (require_finite_positions()).
 void smooth(SurfaceMesh& mesh, const SmoothOptions& options = {});
 
 }  // namespace hedge

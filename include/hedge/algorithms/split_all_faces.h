@@ -15,6 +15,8 @@ namespace hedge {
 //! by its corners, face by face); the change log records a reset. With deleted elements present
 //! it splits face by face instead (core/operations.h split_face), so that every index, and the
 //! garbage, stays where it was.
+//! \throw InvalidInputError naming the first vertex whose position is not finite,
+//!   before anything changes (require_finite_positions()).
 std::vector<Vertex> split_all_faces(SurfaceMesh& mesh);
 
 }  // namespace hedge

@@ -81,6 +81,8 @@ enum class Subdivision { loop, midpoint, catmull_clark, sqrt3, split_faces };
 //!   midpoint or the sqrt3 scheme (the message names it), if steps is negative, if the result
 //!   would exceed 2^31 half-edges, or if the estimate exceeds a nonzero max_memory (the message
 //!   gives both, and the most steps that fit).
+//! \throw InvalidInputError naming the first vertex whose position is not finite,
+//!   before anything changes (require_finite_positions()).
 void subdivide(SurfaceMesh& mesh, Subdivision scheme, int steps = 1, const Progress& progress = {},
                std::size_t max_memory = 0);
 

@@ -346,6 +346,9 @@ class SurfaceMesh {
 
   // ---- Checking. ----
   //! Every broken invariant, one line each; empty means valid. O(#elements). See docs/design.md.
+  //! Besides the connectivity, every live vertex's position must be finite: a NaN or infinite
+  //! coordinate is reported as "vertex V has a non-finite position (x, y, z)". At most 1000 lines,
+  //! then a count of the rest.
   std::vector<std::string> validate() const;
 
   // Raw arrays for tight loops and bindings (read-only).
@@ -465,6 +468,11 @@ inline Face SurfaceMesh::new_faces() {
   fprops_.push_back(N);
   return f;
 }
+
+//! Throws InvalidInputError "WHAT: vertex V has a non-finite position (x, y, z)" for the first live
+//! vertex whose position holds a NaN or an infinity. Whole-mesh algorithms that read positions call
+//! it before they change anything, so a bad position is named rather than spread. O(#vertices).
+void require_finite_positions(const SurfaceMesh& mesh, const char* what);
 
 }  // namespace hedge
 

@@ -130,7 +130,8 @@ IndexedMesh read_indexed(std::string_view data, FileFormat format, const std::st
 // Coordinates are written so that they read back bit for bit (see WriteOptions::precision).
 // \throw InvalidInputError when the mesh is inconsistent: face sizes not adding up to the index
 //        count, a face without corners, an index out of its pool, attribute index arrays of the
-//        wrong length.
+//        wrong length, or a position, texture coordinate, normal or colour that is not finite
+//        (the readers refuse those, so the file could not be read back). Nothing is written then.
 
 //! OBJ: v, then vt and vn when the mesh has those corner attributes, and f with v/vt/vn corners.
 std::string write_obj(const IndexedMesh& mesh, const WriteOptions& options = {});
@@ -206,6 +207,8 @@ SurfaceMesh read_mesh(const std::string& path, const BuildOptions& options, Buil
 SurfaceMesh read_mesh(const std::string& path, const BuildOptions& options, const ReadOptions& read_options,
                       BuildReport* report = nullptr);
 //! Exports (triangulating for STL, and by ear clipping for glTF) and writes atomically.
+//! \throw InvalidInputError naming the first vertex whose position is not finite,
+//!   before anything changes (require_finite_positions()).
 void write_mesh(const SurfaceMesh& mesh, const std::string& path, const WriteOptions& options = {});
 
 namespace detail {

@@ -147,7 +147,7 @@ namespace Hedge.Tests
                                                 () => mesh.Raycast(new Vec3(float.NaN, 0, 0), new Vec3(0, 0, 1), out hit));
                 Check.Contains(e.Message, "origin");
                 e = Check.Throws(HedgeStatus.InvalidArgument, () => mesh.Raycast(new Vec3(0, 0, 1), new Vec3(0, 0, 0), out hit));
-                Check.Contains(e.Message, "direction is zero");
+                Check.Contains(e.Message, "direction has zero length");
                 e = Check.Throws(HedgeStatus.InvalidArgument,
                                  () => mesh.TryGetClosestPoint(new Vec3(0, 0, 1), out hit, -1));
                 Check.Contains(e.Message, "max_distance");

@@ -1,0 +1,215 @@
+// Mesh.fracture(): an impact breaks the mesh into shards, located through the mesh's one picking
+// tree (binding::picking_tree), as the C ABI and the WebAssembly module do. Each shard is a
+// hedge.Shard, a hedge.Mesh of its own with what the library reports of it (front centroid and area, mass
+// properties, convex hull); the remaining mesh is the mesh itself, edited in place. A custom
+// material is a dict in the schema of the CLI's material files (docs/fracture.md), parsed by the
+// same parser (tools/hedge/material_json.cpp), so both take the same fields with the same checks.
+#include <pybind11/stl.h>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "binding/errors.h"
+#include "hedge/algorithms/fracture.h"
+#include "hedge/error.h"
+#include "material_json.h"
+#include "py_args.h"
+#include "py_support.h"
+
+namespace hedge::python {
+
+namespace {
+
+//! A piece broken off by Mesh.fracture(): a mesh, with what the library reports of it.
+class Shard : public Mesh {
+ public:
+  Shard(std::shared_ptr<State> state, const hedge::Shard& s, std::shared_ptr<State> hull)
+      : Mesh(std::move(state)),
+        centroid(s.centroid),
+        area(s.area),
+        closed(s.closed),
+        mass(s.mass),
+        hull_dimension(s.hull.dimension),
+        hull_tolerance(s.hull.tolerance),
+        hull(std::move(hull)) {}
+  Vec3d centroid;
+  double area;
+  bool closed;
+  MassProperties mass;
+  HullDimension hull_dimension;
+  double hull_tolerance;
+  std::shared_ptr<State> hull;  //!< none when the hull has no faces (or hulls were not asked for)
+};
+
+//! The library's result with each shard's mesh (and hull) already moved into a state of its own,
+//! made without the GIL.
+struct Broken {
+  FractureResult result;
+  std::vector<std::shared_ptr<State>> meshes, hulls;
+};
+
+const char* dimension_name(HullDimension d) {
+  static const char* const kNames[] = {"empty", "point", "segment", "flat", "solid"};
+  return kNames[static_cast<int>(d)];
+}
+
+//! A custom material: the dict as JSON text, through the material files' parser.
+FractureMaterial material_from_dict(const py::dict& material) {
+  // numpy scalars and arrays (a grain given as an array) become Python numbers and lists.
+  const py::cpp_function plain([](const py::object& o) -> py::object {
+    if (py::hasattr(o, "tolist")) return o.attr("tolist")();
+    throw InvalidInputError("fracture: material: " + std::string(py::repr(o)) +
+                            " is not a number, list or str");
+  });
+  py::dict fields(material);
+  if (!fields.contains("name")) fields["name"] = "custom";
+  std::string text;
+  try {
+    text = py::module_::import("json")
+               .attr("dumps")(fields, py::arg("allow_nan") = false, py::arg("default") = plain)
+               .cast<std::string>();
+  } catch (py::error_already_set& e) {
+    if (!e.matches(PyExc_ValueError) || e.matches(py::module_::import("hedge._errors").attr("HedgeError")))
+      throw;
+    throw InvalidInputError("fracture: material: every number must be finite, not NaN or infinite");
+  }
+  return cli::parse_material_json(text, "fracture: material");
+}
+
+//! The options of Mesh.fracture(), checked where the library does not check them itself.
+FractureOptions fracture_options(const py::object& material, const py::object& seed, double break_radius,
+                                 double thickness, double relative_thickness, std::int32_t inner_submesh,
+                                 double density, double tolerance, bool hulls) {
+  FractureOptions o;
+  if (py::isinstance<py::str>(material)) {
+    o.material = fracture_material(material.cast<std::string>());  // lists the presets otherwise
+  } else if (py::isinstance<py::dict>(material)) {
+    o.material = material_from_dict(material.cast<py::dict>());
+  } else {
+    std::string presets;
+    for (const std::string& name : fracture_material_names()) presets += (presets.empty() ? "" : ", ") + name;
+    throw InvalidInputError("fracture: material must be a preset name (" + presets + ") or a dict, not " +
+                            std::string(py::str(material.get_type().attr("__name__"))));
+  }
+  // 0: the material's own spacings; anything else is checked (finite, positive) by the scaling.
+  if (break_radius != 0) o.material = fracture_material_at_radius(o.material, break_radius);
+  // Any integer (numpy's too, through __index__), but not a bool or a float.
+  if (py::isinstance<py::bool_>(seed) || !PyIndex_Check(seed.ptr()))
+    throw InvalidInputError("fracture: seed must be a whole number in [0, 2^64), not " +
+                            std::string(py::str(seed.get_type().attr("__name__"))));
+  const py::object whole = py::reinterpret_steal<py::object>(PyNumber_Index(seed.ptr()));
+  if (!whole) throw py::error_already_set();
+  const unsigned long long s = PyLong_AsUnsignedLongLong(whole.ptr());
+  if (PyErr_Occurred()) {
+    PyErr_Clear();
+    throw InvalidInputError("fracture: seed must be a whole number in [0, 2^64), got " +
+                            std::string(py::str(seed)));
+  }
+  o.seed = s;
+  o.thickness = thickness;
+  o.relative_thickness = relative_thickness;
+  o.inner_submesh = inner_submesh;
+  o.density = density;
+  o.tolerance = tolerance;
+  o.hulls = hulls;
+  return o;
+}
+
+std::shared_ptr<State> state_of(SurfaceMesh&& mesh) {
+  auto state = std::make_shared<State>();
+  state->mesh = std::move(mesh);
+  return state;
+}
+
+py::list fracture(const Mesh& self, const py::object& point, const py::object& material,
+                  const py::object& seed, double break_radius, double thickness, double relative_thickness,
+                  std::int32_t inner_submesh, double density, double tolerance, bool hulls) {
+  const Vec3 impact = point3(point, "fracture", "point");
+  const FractureOptions options = fracture_options(
+      material, seed, break_radius, thickness, relative_thickness, inner_submesh, density, tolerance, hulls);
+  Broken broken;
+  {
+    const auto use = self.use();
+    require_no_views(*use, "fracture");  // the cuts and splits add elements
+    py::gil_scoped_release unlocked;
+    // Its InvalidInputError leaves the mesh unchanged; the tree is kept up to date by fracture().
+    broken.result = hedge::fracture(use->mesh, impact, options, &binding::picking_tree(*use));
+    for (hedge::Shard& s : broken.result.shards) {
+      broken.meshes.push_back(state_of(std::move(s.mesh)));
+      broken.hulls.push_back(s.hull.mesh.n_faces() > 0 ? state_of(std::move(s.hull.mesh)) : nullptr);
+    }
+  }
+  py::list shards;
+  for (std::size_t i = 0; i < broken.meshes.size(); ++i)
+    shards.append(Shard(std::move(broken.meshes[i]), broken.result.shards[i], std::move(broken.hulls[i])));
+  return shards;
+}
+
+}  // namespace
+
+void bind_fracture(py::module_& m, py::class_<Mesh>& mesh) {
+  py::class_<Shard, Mesh>(m, "Shard",
+                          "A piece broken off by Mesh.fracture(): a Mesh of its own (every Mesh method "
+                          "works on it), with what the library reports of it.")
+      .def_property_readonly(
+          "front_centroid", [](const Shard& s) { return vec3_array(s.centroid); },
+          "Area-weighted centroid of the broken faces (the front), a (3,) float64 array (the C++ "
+          "Shard::centroid; centroid is not a Mesh method's name).")
+      .def_property_readonly(
+          "front_area", [](const Shard& s) { return s.area; },
+          "Area of the broken faces (the front only; Mesh.area() is the whole shard's area).")
+      .def_property_readonly(
+          "closed", [](const Shard& s) { return s.closed; },
+          "True when the shard has no boundary (it was given a thickness): a solid with mass.")
+      .def_property_readonly(
+          "mass",
+          [](const Shard& s) -> py::object {
+            if (!s.closed) return py::none();  // an open shard encloses no volume: no mass to give
+            return mass_properties_dict(s.mass);
+          },
+          "The mass properties of the closed solid at the fracture's density (the C++ "
+          "Shard::mass; Mesh.mass_properties(density) computes them afresh): a dict of volume, mass, "
+          "centre_of_mass (3,), inertia (3, 3) about the centre of mass, "
+          "principal_moments (3,) ascending and principal_axes (3, 3), one unit axis "
+          "a row, a right-handed frame. None for an open shard (closed is False): it encloses no volume.")
+      .def_property_readonly(
+          "hull",
+          [](const Shard& s) -> py::object {
+            if (!s.hull) return py::none();
+            return py::cast(Mesh(s.hull));
+          },
+          "The convex hull of the shard's vertices as a Mesh (closed, outward triangles), for a "
+          "collider; None when it has no faces or hulls=False.")
+      .def_property_readonly(
+          "hull_dimension", [](const Shard& s) { return dimension_name(s.hull_dimension); },
+          "What the shard's vertices span: 'empty', 'point', 'segment', 'flat' (the hull is given a "
+          "thickness) or 'solid'.")
+      .def_property_readonly(
+          "hull_tolerance", [](const Shard& s) { return s.hull_tolerance; },
+          "Every vertex lies inside the hull or within this distance of it.");
+  mesh.def("fracture", &fracture, py::arg("point"), py::arg("material") = "glass", py::kw_only(),
+           py::arg("seed") = 0, py::arg("break_radius") = 0.0, py::arg("thickness") = 0.0,
+           py::arg("relative_thickness") = 0.0, py::arg("inner_submesh") = -1, py::arg("density") = 1.0,
+           py::arg("tolerance") = 0.0, py::arg("hulls") = true,
+           "Breaks the mesh at point (3 numbers, within tolerance of the surface) into shards and "
+           "returns them as a list of Shard (each a Mesh, with front_centroid, front_area, closed, "
+           "mass and hull), in the order of their break points. The broken faces leave "
+           "this mesh, which is edited in place. material: 'glass', 'stone', 'wood', 'ice', or a dict "
+           "{name, rings: [{points, spacing, jitter}], grain, grain_stretch, refine_edge, absolute} "
+           "as the CLI's material files (docs/fracture.md). seed: a whole number; the same mesh, "
+           "point, options and seed give the same shards. break_radius > 0: the material scaled so "
+           "its outer ring lies that far from the impact (model units); 0: its own spacings (edge "
+           "lengths of the impact face). thickness > 0 (model units) or relative_thickness > 0 (a "
+           "fraction of the break radius): each shard becomes a closed solid with mass properties at "
+           "density; its added faces get inner_submesh in 'f:submesh' (-1: one more than the "
+           "largest). hulls: compute each shard's convex hull. Located through the mesh's picking "
+           "tree, so a strike costs the broken area. InvalidArgumentError (the mesh unchanged) for a "
+           "point off the surface or not finite, an unknown material or a bad option; "
+           "ViewsExportedError while numpy views are alive. Releases the GIL.");
+}
+
+}  // namespace hedge::python
