@@ -193,13 +193,17 @@ FaceBvh::Entry FaceBvh::make_entry(Face f) const {
 FaceBvh::Box FaceBvh::entry_box(const Entry& e) const {
   Box box;
   if (e.face == kInvalidIndex) return box;
+  bool finite = true;
   for_each_triangle(e, [&](Face, Vertex a, Vertex b, Vertex c) {
-    box.grow(mesh_->position(a));
-    box.grow(mesh_->position(b));
-    box.grow(mesh_->position(c));
+    for (const Vertex v : {a, b, c}) {
+      finite = finite && is_finite(mesh_->position(v));
+      box.grow(mesh_->position(v));
+    }
     return false;
   });
-  return box;
+  // A face with a corner that is not finite (written after the tree was made, without the change
+  // log's notice) gets the empty box: no query reaches it, and the boxes above it stay finite.
+  return finite ? box : Box{};
 }
 
 void FaceBvh::set_height(Index n) {
@@ -218,6 +222,13 @@ void FaceBvh::build(const SurfaceMesh& mesh, const BvhOptions& options) {
   if (!(options.rebuild_fraction > 0 && options.rebuild_fraction <= 1))
     throw InvalidInputError("FaceBvh: rebuild_fraction must be in (0, 1]");
   require_finite_positions(mesh, "FaceBvh");
+  build_tree(mesh, options);
+}
+
+// A new tree refuses a position that is not finite, by name (build()). A rebuild by update() does
+// not: it must not fail halfway through an edit that called it, so it leaves such faces out
+// (entry_box()).
+void FaceBvh::build_tree(const SurfaceMesh& mesh, const BvhOptions& options) {
   if (mesh_ != &mesh || !changes_.attached()) changes_ = ChangeConsumer(mesh.watch_changes());
   changes_.consume();  // the new tree holds every edit so far
   mesh_ = &mesh;
@@ -247,7 +258,7 @@ void FaceBvh::build(const SurfaceMesh& mesh, const BvhOptions& options) {
 }
 
 void FaceBvh::rebuild() {
-  if (mesh_) build(*mesh_, options_);
+  if (mesh_) build_tree(*mesh_, options_);
 }
 
 void FaceBvh::update_slack() {

@@ -666,9 +666,38 @@ TEST(Fracture, RandomImpactsOverRealMeshes) {
   EXPECT_EQ(g_hulls_outside, 0u) << g_hulls_outside << " of " << g_hulls;
 }
 
-TEST(Fracture, RefusesANonFinitePositionBeforeCutting) {
+TEST(Fracture, WithoutATreeTheTreeItMakesRefusesANonFinitePosition) {
   SurfaceMesh m = plate(8);
-  test::expect_refuses_non_finite(m, Vertex(70), "fracture", [&] { fracture(m, {4.2f, 3.9f, 0}); });
+  test::expect_refuses_non_finite(m, Vertex(70), "FaceBvh", [&] { fracture(m, {4.2f, 3.9f, 0}); });
+}
+
+// With a tree, a strike reads only the positions of the broken area, as its cost is the area's: a
+// face with a non-finite corner (written without the change log's notice) stays in the mesh, and
+// no shard takes it.
+TEST(Fracture, ANonFinitePositionInTheBrokenAreaStaysInTheMeshAndInNoShard) {
+  SurfaceMesh m = plate(20);
+  FaceBvh bvh(m);
+  const Vec3 impact{10.3f, 10.4f, 0};
+  const Vertex poisoned(12 * 21 + 10);  // (10, 12): inside the broken area, not a corner of the impact
+  const Vec3 good = m.position(poisoned);
+  test::poison(m, poisoned);
+  FractureOptions o;
+  o.seed = 5;  // no thickness: with one, check_thickness() reads the whole box and refuses the NaN
+  const FractureResult r = fracture(m, impact, o, &bvh);
+  ASSERT_GT(r.shards.size(), 3u);
+  for (const Shard& s : r.shards) {
+    for (Vertex v : s.mesh.vertices()) EXPECT_TRUE(is_finite(s.mesh.position(v)));
+    EXPECT_EQ(s.mesh.validate(), std::vector<std::string>{});
+  }
+  ASSERT_TRUE(m.is_live(poisoned));
+  EXPECT_EQ(m.valence(poisoned), 6u);  // its faces stayed
+  m.position(poisoned) = good;
+  EXPECT_EQ(m.validate(), std::vector<std::string>{});
+  // The broken area did reach it: without the NaN the same strike takes its faces.
+  SurfaceMesh clean = plate(20);
+  FaceBvh clean_bvh(clean);
+  fracture(clean, impact, o, &clean_bvh);
+  EXPECT_TRUE(!clean.is_live(poisoned) || clean.valence(poisoned) < 6u);
 }
 
 }  // namespace

@@ -30,5 +30,31 @@ TEST(FaceBvhBuild, RefusesANonFinitePosition) {
   test::expect_refuses_non_finite(m, Vertex(6), "FaceBvh", [&] { FaceBvh bvh(m); });
 }
 
+// A rebuild (update() calls it, in the middle of edits) does not throw: a face whose corner became
+// non-finite without notice is left out, and every other face is found as before.
+TEST(FaceBvhBuild, ARebuildLeavesOutAFaceWithANonFiniteCorner) {
+  SurfaceMesh m = build(test::grid(4, true));
+  FaceBvh bvh(m);
+  const Vertex poisoned(6);  // (1, 1): its faces lie within x, y in [0, 2]
+  test::poison(m, poisoned);
+  ASSERT_NO_THROW(bvh.rebuild());
+  // A ray down through the middle of each square: found unless the square has the poisoned corner.
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const Vec3 origin{i + 0.7f, j + 0.2f, 1};  // in the lower-right triangle (a, b, c) of the square
+      const auto hit = bvh.first_hit(origin, {0, 0, -1});
+      // The triangle's corners are (i, j), (i + 1, j) and (i + 1, j + 1); vertex 6 is (1, 1).
+      const bool corner_in_triangle = (i == 1 && j == 1) || (i == 0 && j == 1) || (i == 0 && j == 0);
+      if (corner_in_triangle) {
+        EXPECT_FALSE(hit) << "square " << i << ", " << j;
+      } else {
+        ASSERT_TRUE(hit) << "square " << i << ", " << j;
+        for (Vertex v : m.vertices(hit->face)) EXPECT_NE(v, poisoned);
+      }
+    }
+  m.position(poisoned) = {1, 1, 0};
+  EXPECT_EQ(m.validate(), std::vector<std::string>{});
+}
+
 }  // namespace
 }  // namespace hedge

@@ -141,7 +141,7 @@ class FaceBvh {
 
   //! An empty tree: every query finds nothing.
   FaceBvh() = default;
-  //! Builds over the live faces of mesh. O(n log n) for n live faces.
+  //! Builds over the live faces of mesh. O(n log n) for n live faces. \throw as build().
   explicit FaceBvh(const SurfaceMesh& mesh, const BvhOptions& options = {});
 
   //! (Re)builds over the live faces of mesh, replacing the whole tree. O(n log n).
@@ -149,6 +149,9 @@ class FaceBvh {
   //!   before anything changes (require_finite_positions()).
   void build(const SurfaceMesh& mesh, const BvhOptions& options = {});
   //! Rebuilds over the same mesh with the same options. O(n log n). No-op on an empty FaceBvh.
+  //! Does not throw for a position that is not finite (update() calls it, often in the middle of
+  //! an edit that must not fail halfway): a face with such a corner is left out of the tree, and no
+  //! query finds it. The same holds for the faces update() and refit() box.
   void rebuild();
 
   //! Recomputes every box bottom-up from the current positions, after vertices moved. The tree's
@@ -244,6 +247,8 @@ class FaceBvh {
   struct Box;
   struct Builder;
 
+  //! build() without the check of the positions (rebuild()).
+  void build_tree(const SurfaceMesh& mesh, const BvhOptions& options);
   Entry make_entry(Face f) const;
   Box entry_box(const Entry& e) const;
   template <typename Fn>
