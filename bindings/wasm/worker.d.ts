@@ -92,7 +92,7 @@ export interface HedgeWorker {
   /** Frees the mesh in the worker (an unknown id does nothing). */
   dispose(id: number): Promise<void>;
   /** Runs a call of worker.js by name; transfer lists buffers of args to hand over. */
-  call(op: string, args?: unknown[], transfer?: Transferable[]): Promise<unknown>;
+  call(op: string, args?: unknown[], transfer?: ArrayBuffer[]): Promise<unknown>;
   /** Stops the worker; calls still waiting reject with a HedgeError of kind 'bad-handle'. */
   terminate(): void;
 }

@@ -186,14 +186,13 @@ export function serveHedge(port, options = {}) {
   return { loading, close: () => port.removeEventListener('message', listener) };
 }
 
-// The worker's own port: self in a browser's module worker, parentPort in a node worker.
-async function ownPort() {
-  if (typeof WorkerGlobalScope !== 'undefined' && globalThis instanceof WorkerGlobalScope)
-    return globalThis;
-  if (!isNode()) return null;
-  const threads = await import(/* webpackIgnore: true */ /* @vite-ignore */ WORKER_THREADS);
-  return threads.isMainThread ? null : threads.parentPort;
+// The worker's own port: self in a browser's module worker (served at once, before any message can
+// arrive), parentPort in a node worker (whose port holds messages until served). No top-level
+// await: bundlers' default targets refuse it.
+if (typeof WorkerGlobalScope !== 'undefined' && globalThis instanceof WorkerGlobalScope) {
+  serveHedge(globalThis);
+} else if (isNode()) {
+  import(/* webpackIgnore: true */ /* @vite-ignore */ WORKER_THREADS).then((threads) => {
+    if (!threads.isMainThread && threads.parentPort) serveHedge(threads.parentPort);
+  });
 }
-
-const port = await ownPort();
-if (port) serveHedge(port);

@@ -15,6 +15,7 @@ import { HedgeError } from './hedge.js';
 import { isNode } from './load.js';
 
 const WORKER_THREADS = 'node:worker_threads';
+const WORKER_FILE = './worker.js';
 
 // The calls of worker.js (its OPS), each a method of HedgeWorker taking the same arguments.
 const CALLS = [
@@ -53,11 +54,13 @@ export async function createHedgeWorker({ worker } = {}) {
   return remote;
 }
 
+// In a browser, the literal `new Worker(new URL('./worker.js', import.meta.url), ...)` is the form
+// that vite and webpack recognise: they bundle worker.js with hedge as a worker of its own. Under
+// node the file's name is held in a variable, so that bundlers do not copy it a second time.
 async function startWorker() {
-  const url = new URL('./worker.js', import.meta.url);
-  if (!isNode()) return new Worker(url, { type: 'module' });
+  if (!isNode()) return new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
   const threads = await import(/* webpackIgnore: true */ /* @vite-ignore */ WORKER_THREADS);
-  return new threads.Worker(url);
+  return new threads.Worker(new URL(/* webpackIgnore: true */ WORKER_FILE, import.meta.url));
 }
 
 /** hedge in a worker: one promise-returning method per call of worker.js. */
