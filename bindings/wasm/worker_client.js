@@ -55,7 +55,8 @@ export async function createHedgeWorker({ worker } = {}) {
 }
 
 // In a browser, the literal `new Worker(new URL('./worker.js', import.meta.url), ...)` is the form
-// that vite and webpack recognise: they bundle worker.js with hedge as a worker of its own. Under
+// that vite (and, by its documentation, webpack 5) recognises: worker.js is bundled with hedge as a
+// worker of its own. Under
 // node the file's name is held in a variable, so that bundlers do not copy it a second time.
 async function startWorker() {
   if (!isNode()) return new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
