@@ -4,7 +4,15 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import {
+  existsSync,
+  mkdirSync,
+  mkdtempSync,
+  readFileSync,
+  rmSync,
+  symlinkSync,
+  writeFileSync,
+} from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -19,7 +27,13 @@ test('the README quick start for three.js runs as written', { skip: !existsSync(
   assert.ok(start >= 0, 'the README has its three.js section');
   const open = readme.indexOf('```js\n', start);
   const block = readme.slice(open + 6, readme.indexOf('```\n', open + 6));
-  for (const step of ['loadHedge', 'fromBufferGeometry', 'hedgeRaycast', 'syncBufferGeometry', 'fracture'])
+  for (const step of [
+    'loadHedge',
+    'fromBufferGeometry',
+    'hedgeRaycast',
+    'syncBufferGeometry',
+    'fracture',
+  ])
     assert.ok(block.includes(step), `the quick start shows ${step}`);
   assert.ok(block.split('\n').length <= 30, 'the quick start is at most 30 lines');
   const folder = mkdtempSync(join(tmpdir(), 'hedge-readme-'));
