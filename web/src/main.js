@@ -208,7 +208,7 @@ function wireInput() {
   $('pick-bench').addEventListener('click', () =>
     guard('picking benchmark', async () => {
       $('stat-pick').textContent = 'measuring...';
-      const report = await measurePicking(state.hedge, state.current, Number($('pick-size').value));
+      const report = await measurePicking(state.current, Number($('pick-size').value));
       $('stat-pick').textContent = report.text;
       document.body.dataset.pick = JSON.stringify(report);
     }),

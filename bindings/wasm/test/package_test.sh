@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The package as a web developer gets it: packs it (bindings/wasm/pack), installs the tarball into
 # a fresh project (consumer/, vite pinned by its lock file, from the npm registry), imports it under
-# node (ES module), type-checks it with TypeScript as browser code and as node code, bundles three
-# pages with vite (hedge-mesh; hedge-mesh/single, the wasm embedded; hedge-mesh in a module worker)
-# and the first once more with webpack, and loads, picks and edits a mesh in each in headless
+# node (ES module), type-checks it with TypeScript as browser code and as node code, bundles five
+# pages with vite (hedge-mesh; hedge-mesh/single, the wasm embedded; hedge-mesh in a module worker;
+# hedge-mesh/three; hedge-mesh/worker, the worker helper) and the first once more with webpack, and loads, picks and edits a mesh in each in headless
 # chromium (playwright-core from web/node_modules). Run by ./test after the WebAssembly node tests.
 # HEDGE_WASM_SKIP_BUILD=1 packs the module already built.
 set -euo pipefail

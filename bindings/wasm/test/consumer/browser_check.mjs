@@ -1,5 +1,5 @@
 // The vite build (dist/) and the webpack build (dist/webpack/) in headless chromium: serves them
-// with vite's preview server, opens the five pages and compares what each computed; the
+// with vite's preview server, opens the six pages and compares what each computed; the
 // single-file page must fetch no .wasm, the others must.
 // playwright-core comes from the playground's packages: HEDGE_REPO/web/node_modules. CHROMIUM
 // (default /usr/bin/chromium) is the browser.
@@ -19,6 +19,16 @@ const expectedThree = {
   problems: [],
   partialUpload: true,
   glError: 0,
+};
+// remote.html: the square loaded, picked and drawn in hedge's worker (hedge-mesh/worker), a bad
+// scheme refused there as a HedgeError.
+const expectedRemote = {
+  version: expected.version,
+  faces: 2,
+  hitFace: 0,
+  drawn: [12, 6],
+  problems: [],
+  error: 'HedgeError: invalid-argument',
 };
 const { chromium } = await import(
   pathToFileURL(join(repo, 'web/node_modules/playwright-core/index.mjs')).href
@@ -45,6 +55,7 @@ try {
     ['worker.html', true],
     ['webpack/index.html', true],
     ['three.html', true],
+    ['remote.html', true],
   ]) {
     const page = await browser.newPage();
     const problems = [];
@@ -66,6 +77,8 @@ try {
       const { uploadedBytes, ...rest } = result;
       assert.deepEqual(rest, expectedThree, `${page_}: what the page computed`);
       assert.ok(uploadedBytes > 0 && uploadedBytes < 4096, `${page_}: ${uploadedBytes} B uploaded`);
+    } else if (page_ === 'remote.html') {
+      assert.deepEqual(result, expectedRemote, `${page_}: what the page computed`);
     } else assert.deepEqual(result, expected, `${page_}: what the page computed`);
     assert.equal(wasm.length > 0, wantsWasm, `${page_}: .wasm requests: ${wasm.join(', ')}`);
     console.log(`chromium: ${page_}: ${JSON.stringify(result)}; wasm fetched: ${wasm.length}`);

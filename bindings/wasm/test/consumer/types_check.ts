@@ -14,3 +14,11 @@ const mesh = hedge.fromBuffers({
 export const faces: number = mesh.counts().faces;
 export const versions: string[] = [hedge.version, fromSingle.version];
 export const unused = loadHedgeNode;
+
+// The worker helper: meshes in a module worker, named by id; results with typed arrays.
+import { createHedgeWorker, type HedgeWorker } from 'hedge-mesh/worker';
+const remote: HedgeWorker = await createHedgeWorker();
+const loaded = await remote.load(new Uint8Array(0), 'empty.obj', { transfer: true });
+const drawn: Float32Array = (await remote.buffers(loaded.id, { normals: 'computed' })).positions;
+const broken = await remote.fracture(loaded.id, [0, 0, 0], { material: 'glass' });
+export const remoteIds: number[] = [loaded.id, ...broken.shards.map((s) => s.id), drawn.length];
