@@ -1,6 +1,8 @@
 // The top-level README's three.js quick start, run as written: its js block is copied into a fresh
 // folder whose node_modules holds this build as the package hedge-mesh and three.js from the
-// playground's npm packages, then run under node. Skipped when three.js is not installed.
+// playground's npm packages, then run under node. Skipped when three.js is not installed. Node
+// keeps the links' paths (--preserve-symlinks), so the package finds its peer three.js in the
+// folder's node_modules, as it would in a project that installed both.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -42,7 +44,11 @@ test('the README quick start for three.js runs as written', { skip: !existsSync(
     symlinkSync(fileURLToPath(dist), join(folder, 'node_modules', 'hedge-mesh'));
     symlinkSync(three, join(folder, 'node_modules', 'three'));
     writeFileSync(join(folder, 'quick.mjs'), block);
-    const out = execFileSync(process.execPath, ['quick.mjs'], { cwd: folder, encoding: 'utf8' });
+    const out = execFileSync(
+      process.execPath,
+      ['--preserve-symlinks', '--preserve-symlinks-main', 'quick.mjs'],
+      { cwd: folder, encoding: 'utf8' },
+    );
     const shards = /^(\d+) shards; the first weighs ([0-9.]+)/m.exec(out);
     assert.ok(shards, `the quick start prints its shards: ${out}`);
     assert.ok(Number(shards[1]) > 1 && Number(shards[2]) > 0, out);
