@@ -28,6 +28,24 @@ std::vector<Vec3d> positions_of(const SurfaceMesh& m, const char* function) {
   return p;
 }
 
+//! The box of the live vertices, positions unchecked (the callers check them once).
+BoundingBox box_of(const SurfaceMesh& mesh) {
+  BoundingBox box;
+  for (Vertex v : mesh.vertices()) {
+    const Vec3& p = mesh.position(v);
+    if (box.empty) {
+      box.min = box.max = p;
+      box.empty = false;
+      continue;
+    }
+    for (int a = 0; a < 3; ++a) {
+      box.min[a] = std::min(box.min[a], p[a]);
+      box.max[a] = std::max(box.max[a], p[a]);
+    }
+  }
+  return box;
+}
+
 }  // namespace
 
 double edge_length(const SurfaceMesh& m, Halfedge h) {
@@ -130,20 +148,7 @@ double surface_area(const SurfaceMesh& mesh) {
 
 BoundingBox bounding_box(const SurfaceMesh& mesh) {
   require_finite_positions(mesh, "bounding_box");
-  BoundingBox box;
-  for (Vertex v : mesh.vertices()) {
-    const Vec3& p = mesh.position(v);
-    if (box.empty) {
-      box.min = box.max = p;
-      box.empty = false;
-      continue;
-    }
-    for (int a = 0; a < 3; ++a) {
-      box.min[a] = std::min(box.min[a], p[a]);
-      box.max[a] = std::max(box.max[a], p[a]);
-    }
-  }
-  return box;
+  return box_of(mesh);
 }
 
 double volume(const SurfaceMesh& mesh) {
@@ -154,7 +159,7 @@ double volume(const SurfaceMesh& mesh) {
                             " boundary half-edges), so it encloses no volume");
   require_finite_positions(mesh, "volume");
   // About the box centre, which keeps the terms small and the cancellation mild.
-  const Vec3d c = to_double(bounding_box(mesh).centre());
+  const Vec3d c = to_double(box_of(mesh).centre());
   double six_v = 0;
   for (Face f : mesh.faces()) {
     const Halfedge h0 = mesh.halfedge(f);
