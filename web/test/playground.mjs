@@ -23,7 +23,7 @@ import { startServer } from '../serve.mjs';
 const webDir = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 export const repoDir = resolve(webDir, '..');
 const cli = process.env.HEDGE_CLI || join(repoDir, 'build', 'release', 'tools', 'hedge', 'hedge');
-const wasmDir = process.env.HEDGE_WASM_DIR || join(repoDir, 'build', 'wasm', 'dist');
+export const wasmDir = process.env.HEDGE_WASM_DIR || join(repoDir, 'build', 'wasm', 'dist');
 export const outDir = process.env.HEDGE_E2E_OUT || join(repoDir, 'build', 'output', 'web-e2e');
 const executablePath = process.env.CHROMIUM || '/usr/bin/chromium';
 
