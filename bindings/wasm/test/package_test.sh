@@ -3,8 +3,9 @@
 # a fresh project (consumer/, vite pinned by its lock file, from the npm registry), imports it under
 # node (ES module), type-checks it with TypeScript as browser code and as node code, bundles five
 # pages with vite (hedge-mesh; hedge-mesh/single, the wasm embedded; hedge-mesh in a module worker;
-# hedge-mesh/three; hedge-mesh/worker, the worker helper) and the first once more with webpack, and loads, picks and edits a mesh in each in headless
-# chromium (playwright-core from web/node_modules). Run by ./test after the WebAssembly node tests.
+# hedge-mesh/three; hedge-mesh/worker, the worker helper) and two once more with webpack
+# (loadHedge(), and the worker helper with its worker chunk), and loads, picks and edits a mesh in
+# each in headless chromium (playwright-core from web/node_modules). Run by ./test after the WebAssembly node tests.
 # HEDGE_WASM_SKIP_BUILD=1 packs the module already built.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -43,6 +44,6 @@ if grep -q 'WARNING' webpack.log; then
   echo "package_test: webpack warned" >&2
   exit 1
 fi
-cp index.html dist/webpack/index.html
+cp index.html remote.html dist/webpack/
 HEDGE_REPO=$root node browser_check.mjs "$expected"
 echo "package test: passed"

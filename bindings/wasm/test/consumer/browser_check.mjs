@@ -1,5 +1,5 @@
 // The vite build (dist/) and the webpack build (dist/webpack/) in headless chromium: serves them
-// with vite's preview server, opens the six pages and compares what each computed; the
+// with vite's preview server, opens the seven pages and compares what each computed; the
 // single-file page must fetch no .wasm, the others must.
 // playwright-core comes from the playground's packages: HEDGE_REPO/web/node_modules. CHROMIUM
 // (default /usr/bin/chromium) is the browser.
@@ -54,6 +54,7 @@ try {
     ['single.html', false],
     ['worker.html', true],
     ['webpack/index.html', true],
+    ['webpack/remote.html', true],
     ['three.html', true],
     ['remote.html', true],
   ]) {
@@ -77,7 +78,7 @@ try {
       const { uploadedBytes, ...rest } = result;
       assert.deepEqual(rest, expectedThree, `${page_}: what the page computed`);
       assert.ok(uploadedBytes > 0 && uploadedBytes < 4096, `${page_}: ${uploadedBytes} B uploaded`);
-    } else if (page_ === 'remote.html') {
+    } else if (page_.endsWith('remote.html')) {
       assert.deepEqual(result, expectedRemote, `${page_}: what the page computed`);
     } else assert.deepEqual(result, expected, `${page_}: what the page computed`);
     assert.equal(wasm.length > 0, wantsWasm, `${page_}: .wasm requests: ${wasm.join(', ')}`);
