@@ -37,15 +37,25 @@ void check(const SurfaceMesh& m, const SmoothOptions& o) {
                                 " corners (triangulate first)");
 }
 
-// The cotangent weights (geometry.h) clamped to zero, so that every weight pulls: an edge between
-// two obtuse angles would otherwise push its ends apart.
-void clamped_cotangent_weights(const SurfaceMesh& m, const std::vector<Vec3d>& p, std::vector<double>& w) {
-  w = cotangent_weights(m, p);
-  for (double& x : w) x = std::max(0.0, x);
+// Each vertex's stiffness: the sum of the magnitudes of the cotangent weights (geometry.h) of its
+// edges, 0 for a vertex whose faces are all degenerate. Dividing a vertex's Laplacian by it gives a
+// step relative to the local size, like dividing by its area (a mass), but bounded: the cotangent
+// stiffness satisfies x^T L x <= 2 x^T S x, so explicit steps with lambda in (0, 1] never grow
+// (in the norm of S), whatever the mesh's angles.
+std::vector<double> stiffness(const SurfaceMesh& m, const std::vector<double>& w) {
+  std::vector<double> s(m.vertex_slots(), 0);
+  for (Edge e : m.edges()) {
+    const double a = std::abs(w[e.idx()]);
+    s[m.vertex(e, 0).idx()] += a;
+    s[m.vertex(e, 1).idx()] += a;
+  }
+  return s;
 }
 
-// Backward Euler steps of the cotangent flow: (M + t L) x' = M x over the moving vertices, the
-// fixed ones moved to the right-hand side. M: a third of the areas of the faces around each vertex.
+// Backward Euler steps of the cotangent flow with each vertex's time step relative to its own size:
+// (S + lambda L) x' = S x over the moving vertices, the fixed ones moved to the right-hand side, with
+// the stiffness S (above) as the mass. S + lambda L is symmetric positive definite (L is positive
+// semidefinite with any angles), and a plane (L x = 0) is a fixed point.
 void smooth_implicit(const SurfaceMesh& m, const SmoothOptions& o, const std::vector<std::uint8_t>& moving,
                      std::vector<Vec3d>& p) {
   const std::size_t nv = m.vertex_slots();
@@ -54,16 +64,11 @@ void smooth_implicit(const SurfaceMesh& m, const SmoothOptions& o, const std::ve
   for (Vertex v : m.vertices())
     if (moving[v.idx()] != 0) unknown[v.idx()] = n++;
   if (n == 0) return;
-  std::vector<double> w;
-  clamped_cotangent_weights(m, p, w);
-  const std::vector<double> mass = vertex_areas(m, p);
-  double edge_sum = 0;
-  for (Edge e : m.edges()) {
-    const Vec3d d = p[m.vertex(e, 0).idx()] - p[m.vertex(e, 1).idx()];
-    edge_sum += std::sqrt(dot(d, d));
-  }
-  const double mean_edge = edge_sum / double(std::max<std::size_t>(1, m.n_edges()));
-  const double t = o.lambda * mean_edge * mean_edge;
+  const std::vector<double> w = cotangent_weights(m, p);
+  std::vector<double> mass = stiffness(m, w);
+  for (double& x : mass)
+    if (!(x > 0)) x = 1;  // a vertex with no stiffness has no Laplacian either: it stays
+  const double t = o.lambda;
   std::vector<Eigen::Triplet<double>> entries;
   std::vector<double> diagonal(n, 0);
   for (Vertex v : m.vertices()) {
@@ -77,7 +82,7 @@ void smooth_implicit(const SurfaceMesh& m, const SmoothOptions& o, const std::ve
       if (j != kInvalidIndex) entries.emplace_back(i, j, -wij);
     }
   }
-  for (Index i = 0; i < n; ++i) entries.emplace_back(i, i, diagonal[i] > 0 ? diagonal[i] : 1.0);
+  for (Index i = 0; i < n; ++i) entries.emplace_back(i, i, diagonal[i]);
   Eigen::SparseMatrix<double> a(n, n);
   a.setFromTriplets(entries.begin(), entries.end());
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(a);
@@ -91,8 +96,7 @@ void smooth_implicit(const SurfaceMesh& m, const SmoothOptions& o, const std::ve
     for (Vertex v : m.vertices()) {
       const Index i = unknown[v.idx()];
       if (i == kInvalidIndex) continue;
-      const double mi = mass[v.idx()] > 0 ? mass[v.idx()] : 1.0;
-      Vec3d r = p[v.idx()] * mi;
+      Vec3d r = p[v.idx()] * mass[v.idx()];
       for (Halfedge h : m.halfedges(v)) {
         const Vertex u = m.to_vertex(h);
         if (unknown[u.idx()] == kInvalidIndex) r += p[u.idx()] * (t * w[SurfaceMesh::edge(h).idx()]);
@@ -130,21 +134,32 @@ void smooth(SurfaceMesh& m, const SmoothOptions& o) {
     // one-sided neighbourhood rather than the boundary curve alone (see the header).
     smooth_implicit(m, o, moving, p);
   } else {
-    std::vector<double> w;
+    std::vector<double> w, s;
     auto step = [&](double factor) {
-      if (o.method == SmoothMethod::cotangent) clamped_cotangent_weights(m, p, w);
+      if (o.method == SmoothMethod::cotangent) {
+        w = cotangent_weights(m, p);
+        s = stiffness(m, w);
+      }
       for (Vertex v : m.vertices()) {
         const std::size_t i = v.idx();
         next[i] = p[i];
         if (mode[i] == 0) continue;
+        if (o.method == SmoothMethod::cotangent && mode[i] == 1) {
+          // x += lambda S^-1 L x: linear precision (a plane is a fixed point) with negative
+          // weights kept, and a step relative to the vertex's size.
+          if (!(s[i] > 0)) continue;
+          Vec3d laplacian{0, 0, 0};
+          for (Halfedge h : m.halfedges(v))
+            laplacian += (p[m.to_vertex(h).idx()] - p[i]) * w[SurfaceMesh::edge(h).idx()];
+          next[i] = p[i] + laplacian * (factor / s[i]);
+          continue;
+        }
         Vec3d sum{0, 0, 0};
         double weight = 0;
         for (Halfedge h : m.halfedges(v)) {
           if (mode[i] == 2 && !m.is_boundary(SurfaceMesh::edge(h))) continue;
-          const double wi =
-              o.method == SmoothMethod::cotangent && mode[i] == 1 ? w[SurfaceMesh::edge(h).idx()] : 1.0;
-          sum += p[m.to_vertex(h).idx()] * wi;
-          weight += wi;
+          sum += p[m.to_vertex(h).idx()];
+          weight += 1;
         }
         if (weight > 0) next[i] = p[i] + (sum * (1 / weight) - p[i]) * factor;
       }
