@@ -8,7 +8,9 @@
 // fixed) by the uniform, cotangent and implicit methods. A face counts as turned when its normal
 // after makes more than 90 degrees with its normal before, and as collapsed when its area was
 // positive and is exactly zero after; faces of zero area before count in neither. Prints a Markdown
-// table; exits with 1 if any method turned or collapsed a face.
+// table; exits with 1 if the cotangent or the implicit method turned or collapsed a face (they
+// promise not to; the uniform column, unchecked as OpenMesh's umbrella smoother is, is for
+// comparison).
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -111,7 +113,7 @@ int main(int argc, char** argv) {
         o.method = method;
         hedge::smooth(m, o);
         const Damage d = damage(mesh, m);
-        clean = clean && d.turned == 0 && d.collapsed == 0;
+        if (method != hedge::SmoothMethod::uniform) clean = clean && d.turned == 0 && d.collapsed == 0;
         row += " | " + std::to_string(d.turned) + " / " + std::to_string(d.collapsed);
       }
     } catch (const std::exception& e) {

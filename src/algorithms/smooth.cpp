@@ -4,6 +4,7 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,12 +53,59 @@ std::vector<double> stiffness(const SurfaceMesh& m, const std::vector<double>& w
   return s;
 }
 
+Vec3d triangle_normal(const SurfaceMesh& m, Face f, const std::vector<Vec3d>& p) {
+  const Halfedge h = m.halfedge(f);
+  const Vec3d& a = p[m.from_vertex(h).idx()];
+  return cross(p[m.to_vertex(h).idx()] - a, p[m.to_vertex(m.next(h)).idx()] - a);
+}
+
+// Keeps every triangle's normal within 90 degrees of its normal before smoothing: a step that
+// would turn a triangle further, or collapse it to zero area, is withheld from the triangle's
+// corners (they stay where the previous step left them), in rounds until no triangle would. Each
+// round reverts the corners of all offending triangles at once, so the result does not depend on
+// the numbering; it ends because the previous step's positions pass. Triangles of zero area at the
+// start have no direction to keep and are not checked.
+class FoldGuard {
+ public:
+  FoldGuard(const SurfaceMesh& m, const std::vector<Vec3d>& p)
+      : positions_(p), start_(m.face_slots(), Vec3d{0, 0, 0}) {
+    for (Face f : m.faces()) start_[f.idx()] = triangle_normal(m, f, p);
+  }
+  // The last check, on the positions as they will be stored (in float): rounding can still turn a
+  // nearly degenerate triangle, whose corners then go back to where they started.
+  void apply_rounded(const SurfaceMesh& m, std::vector<Vec3d>& p) {
+    // Through float storage (a direct to_double(to_float(x)) came back unrounded from GCC 12 at -O3).
+    std::vector<Vec3> stored(p.size());
+    for (Vertex v : m.vertices()) stored[v.idx()] = to_float(p[v.idx()]);
+    for (Vertex v : m.vertices()) p[v.idx()] = to_double(stored[v.idx()]);
+    apply(m, positions_, p);
+  }
+  void apply(const SurfaceMesh& m, const std::vector<Vec3d>& previous, std::vector<Vec3d>& next) {
+    for (;;) {
+      revert_.clear();
+      for (Face f : m.faces()) {
+        const Vec3d& n0 = start_[f.idx()];
+        if (dot(n0, n0) > 0 && !(dot(n0, triangle_normal(m, f, next)) > 0))
+          for (Vertex v : m.vertices(f))
+            if (next[v.idx()] != previous[v.idx()]) revert_.push_back(v.idx());
+      }
+      if (revert_.empty()) return;
+      for (Index i : revert_) next[i] = previous[i];
+    }
+  }
+
+ private:
+  std::vector<Vec3d> positions_;  // at the start
+  std::vector<Vec3d> start_;      // the normals at the start, per face slot
+  std::vector<Index> revert_;
+};
+
 // Backward Euler steps of the cotangent flow with each vertex's time step relative to its own size:
 // (S + lambda L) x' = S x over the moving vertices, the fixed ones moved to the right-hand side, with
 // the stiffness S (above) as the mass. S + lambda L is symmetric positive definite (L is positive
 // semidefinite with any angles), and a plane (L x = 0) is a fixed point.
 void smooth_implicit(const SurfaceMesh& m, const SmoothOptions& o, const std::vector<std::uint8_t>& moving,
-                     std::vector<Vec3d>& p) {
+                     FoldGuard& guard, std::vector<Vec3d>& p) {
   const std::size_t nv = m.vertex_slots();
   std::vector<Index> unknown(nv, kInvalidIndex);
   Index n = 0;
@@ -92,6 +140,7 @@ void smooth_implicit(const SurfaceMesh& m, const SmoothOptions& o, const std::ve
   const double steps = double(o.iterations) + 1;
   report_progress(o.progress, 1 / steps);
   Eigen::MatrixXd rhs(n, 3), x(n, 3);
+  std::vector<Vec3d> next;
   for (int it = 0; it < o.iterations; ++it) {
     for (Vertex v : m.vertices()) {
       const Index i = unknown[v.idx()];
@@ -104,10 +153,13 @@ void smooth_implicit(const SurfaceMesh& m, const SmoothOptions& o, const std::ve
       rhs(i, 0) = r.x, rhs(i, 1) = r.y, rhs(i, 2) = r.z;
     }
     x = solver.solve(rhs);
+    next = p;
     for (Vertex v : m.vertices()) {
       const Index i = unknown[v.idx()];
-      if (i != kInvalidIndex) p[v.idx()] = Vec3d{x(i, 0), x(i, 1), x(i, 2)};
+      if (i != kInvalidIndex) next[v.idx()] = Vec3d{x(i, 0), x(i, 1), x(i, 2)};
     }
+    guard.apply(m, p, next);
+    std::swap(p, next);
     report_progress(o.progress, double(it + 2) / steps);
   }
 }
@@ -132,9 +184,13 @@ void smooth(SurfaceMesh& m, const SmoothOptions& o) {
     for (std::size_t i = 0; i < nv; ++i) moving[i] = mode[i] == 1 || mode[i] == 2;
     // A free boundary is solved for with the interior: it follows the cotangent flow of its
     // one-sided neighbourhood rather than the boundary curve alone (see the header).
-    smooth_implicit(m, o, moving, p);
+    FoldGuard guard(m, p);
+    smooth_implicit(m, o, moving, guard, p);
+    guard.apply_rounded(m, p);
   } else {
     std::vector<double> w, s;
+    std::optional<FoldGuard> guard;
+    if (o.method == SmoothMethod::cotangent) guard.emplace(m, p);
     auto step = [&](double factor) {
       if (o.method == SmoothMethod::cotangent) {
         w = cotangent_weights(m, p);
@@ -163,6 +219,7 @@ void smooth(SurfaceMesh& m, const SmoothOptions& o) {
         }
         if (weight > 0) next[i] = p[i] + (sum * (1 / weight) - p[i]) * factor;
       }
+      if (guard) guard->apply(m, p, next);
       std::swap(p, next);
     };
     for (int it = 0; it < o.iterations; ++it) {
@@ -170,6 +227,7 @@ void smooth(SurfaceMesh& m, const SmoothOptions& o) {
       if (o.method == SmoothMethod::taubin) step(o.mu);
       report_progress(o.progress, double(it + 1) / double(o.iterations));
     }
+    if (guard) guard->apply_rounded(m, p);
   }
   // The change log first: recording may allocate (when the mesh is watched), the writes cannot, so
   // a std::bad_alloc leaves the positions as they were.

@@ -18,6 +18,12 @@
 //    a large lambda smooths as much as many explicit ones. Needs triangles. A free boundary
 //    (fix_boundary = false) follows the same flow, not the boundary curve alone.
 //
+// Both cotangent methods keep every triangle's normal within 90 degrees of its normal before the
+// call: a step that would turn a triangle further, or collapse it to zero area, is withheld from
+// the triangle's corners for that step (on a coarse mesh with thin parts the flow itself would
+// fold them). Uniform and Taubin steps are not checked (uniform matches the common umbrella
+// smoother).
+//
 // The first three are explicit (Jacobi) steps: every vertex moves from the positions of the previous
 // step. Boundary vertices stay fixed unless asked otherwise; then they move along the boundary only
 // (the average of their two boundary neighbours), so that an open surface keeps its outline's shape.
@@ -55,7 +61,8 @@ struct SmoothOptions {
   Progress progress{};
 };
 
-//! Smooths the positions of the live vertices. O(iterations x (V + E)).
+//! Smooths the positions of the live vertices. O(iterations x (V + E)), the cotangent methods'
+//! check of the triangles' normals included (a few rounds of O(F) where a step is withheld).
 //! The implicit method costs a sparse factorisation, O(V^1.5) for a surface, then O(V) per step.
 //! \throw InvalidInputError, leaving the mesh unchanged, for iterations outside 0..100000, lambda
 //!   outside (0, 1] (positive and finite for the implicit method), a Taubin mu that is not below
