@@ -3,6 +3,7 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -53,11 +54,25 @@ std::vector<double> stiffness(const SurfaceMesh& m, const std::vector<double>& w
   return s;
 }
 
-Vec3d triangle_normal(const SurfaceMesh& m, Face f, const std::vector<Vec3d>& p) {
-  const Halfedge h = m.halfedge(f);
-  const Vec3d& a = p[m.from_vertex(h).idx()];
-  return cross(p[m.to_vertex(h).idx()] - a, p[m.to_vertex(m.next(h)).idx()] - a);
-}
+// The one-rings of some vertices, flattened once so that each explicit step reads them in order
+// instead of circulating the half-edges: neighbour and edge of every outgoing half-edge.
+struct Rings {
+  std::vector<Index> start, vertex, edge;  // start: per vertex slot, plus one for the end
+  // The rings of the vertices whose mode is 1 (moving interior vertices); empty ones elsewhere.
+  Rings(const SurfaceMesh& m, const std::vector<std::uint8_t>& mode) : start(m.vertex_slots() + 1, 0) {
+    vertex.reserve(2 * m.n_edges());
+    edge.reserve(2 * m.n_edges());
+    for (std::size_t i = 0; i < m.vertex_slots(); ++i) {
+      start[i] = Index(vertex.size());
+      if (mode[i] != 1) continue;
+      for (Halfedge h : m.halfedges(Vertex(Index(i)))) {
+        vertex.push_back(m.to_vertex(h).idx());
+        edge.push_back(SurfaceMesh::edge(h).idx());
+      }
+    }
+    start.back() = Index(vertex.size());
+  }
+};
 
 // Keeps every triangle's normal within 90 degrees of its normal before smoothing: a step that
 // would turn a triangle further, or collapse it to zero area, is withheld from the triangle's
@@ -67,9 +82,14 @@ Vec3d triangle_normal(const SurfaceMesh& m, Face f, const std::vector<Vec3d>& p)
 // start have no direction to keep and are not checked.
 class FoldGuard {
  public:
-  FoldGuard(const SurfaceMesh& m, const std::vector<Vec3d>& p)
-      : positions_(p), start_(m.face_slots(), Vec3d{0, 0, 0}) {
-    for (Face f : m.faces()) start_[f.idx()] = triangle_normal(m, f, p);
+  FoldGuard(const SurfaceMesh& m, const std::vector<Vec3d>& p) : positions_(p) {
+    triangles_.reserve(m.n_faces());
+    for (Face f : m.faces()) {
+      const Halfedge h = m.halfedge(f);
+      const Triangle t{{m.from_vertex(h).idx(), m.to_vertex(h).idx(), m.to_vertex(m.next(h)).idx()}, {}};
+      const Vec3 n = to_float(unit_or_zero(normal(t, p)));
+      if (dot(n, n) > 0) triangles_.push_back({t.corner, n});
+    }
   }
   // The last check, on the positions as they will be stored (in float): rounding can still turn a
   // nearly degenerate triangle, whose corners then go back to where they started.
@@ -78,25 +98,31 @@ class FoldGuard {
     std::vector<Vec3> stored(p.size());
     for (Vertex v : m.vertices()) stored[v.idx()] = to_float(p[v.idx()]);
     for (Vertex v : m.vertices()) p[v.idx()] = to_double(stored[v.idx()]);
-    apply(m, positions_, p);
+    apply(positions_, p);
   }
-  void apply(const SurfaceMesh& m, const std::vector<Vec3d>& previous, std::vector<Vec3d>& next) {
+  void apply(const std::vector<Vec3d>& previous, std::vector<Vec3d>& next) {
     for (;;) {
       revert_.clear();
-      for (Face f : m.faces()) {
-        const Vec3d& n0 = start_[f.idx()];
-        if (dot(n0, n0) > 0 && !(dot(n0, triangle_normal(m, f, next)) > 0))
-          for (Vertex v : m.vertices(f))
-            if (next[v.idx()] != previous[v.idx()]) revert_.push_back(v.idx());
-      }
+      for (const Triangle& t : triangles_)
+        if (!(dot(to_double(t.start), normal(t, next)) > 0))
+          for (Index i : t.corner)
+            if (next[i] != previous[i]) revert_.push_back(i);
       if (revert_.empty()) return;
       for (Index i : revert_) next[i] = previous[i];
     }
   }
 
  private:
-  std::vector<Vec3d> positions_;  // at the start
-  std::vector<Vec3d> start_;      // the normals at the start, per face slot
+  struct Triangle {
+    std::array<Index, 3> corner;
+    Vec3 start;  // the unit normal at the start (float: it only tells which side is up)
+  };
+  static Vec3d normal(const Triangle& t, const std::vector<Vec3d>& p) {
+    const Vec3d& a = p[t.corner[0]];
+    return cross(p[t.corner[1]] - a, p[t.corner[2]] - a);
+  }
+  std::vector<Vec3d> positions_;     // at the start
+  std::vector<Triangle> triangles_;  // those of positive area at the start
   std::vector<Index> revert_;
 };
 
@@ -158,7 +184,7 @@ void smooth_implicit(const SurfaceMesh& m, const SmoothOptions& o, const std::ve
       const Index i = unknown[v.idx()];
       if (i != kInvalidIndex) next[v.idx()] = Vec3d{x(i, 0), x(i, 1), x(i, 2)};
     }
-    guard.apply(m, p, next);
+    guard.apply(p, next);
     std::swap(p, next);
     report_progress(o.progress, double(it + 2) / steps);
   }
@@ -188,14 +214,15 @@ void smooth(SurfaceMesh& m, const SmoothOptions& o) {
     smooth_implicit(m, o, moving, guard, p);
     guard.apply_rounded(m, p);
   } else {
-    std::vector<double> w, s;
+    std::vector<double> w;
     std::optional<FoldGuard> guard;
-    if (o.method == SmoothMethod::cotangent) guard.emplace(m, p);
+    std::optional<Rings> rings;
+    if (o.method == SmoothMethod::cotangent) {
+      guard.emplace(m, p);
+      rings.emplace(m, mode);
+    }
     auto step = [&](double factor) {
-      if (o.method == SmoothMethod::cotangent) {
-        w = cotangent_weights(m, p);
-        s = stiffness(m, w);
-      }
+      if (o.method == SmoothMethod::cotangent) w = cotangent_weights(m, p);
       for (Vertex v : m.vertices()) {
         const std::size_t i = v.idx();
         next[i] = p[i];
@@ -203,11 +230,14 @@ void smooth(SurfaceMesh& m, const SmoothOptions& o) {
         if (o.method == SmoothMethod::cotangent && mode[i] == 1) {
           // x += lambda S^-1 L x: linear precision (a plane is a fixed point) with negative
           // weights kept, and a step relative to the vertex's size.
-          if (!(s[i] > 0)) continue;
           Vec3d laplacian{0, 0, 0};
-          for (Halfedge h : m.halfedges(v))
-            laplacian += (p[m.to_vertex(h).idx()] - p[i]) * w[SurfaceMesh::edge(h).idx()];
-          next[i] = p[i] + laplacian * (factor / s[i]);
+          double stiffness = 0;
+          for (Index k = rings->start[i]; k < rings->start[i + 1]; ++k) {
+            const double wh = w[rings->edge[k]];
+            laplacian += (p[rings->vertex[k]] - p[i]) * wh;
+            stiffness += std::abs(wh);
+          }
+          if (stiffness > 0) next[i] = p[i] + laplacian * (factor / stiffness);
           continue;
         }
         Vec3d sum{0, 0, 0};
@@ -219,7 +249,7 @@ void smooth(SurfaceMesh& m, const SmoothOptions& o) {
         }
         if (weight > 0) next[i] = p[i] + (sum * (1 / weight) - p[i]) * factor;
       }
-      if (guard) guard->apply(m, p, next);
+      if (guard) guard->apply(p, next);
       std::swap(p, next);
     };
     for (int it = 0; it < o.iterations; ++it) {
