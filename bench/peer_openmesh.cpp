@@ -179,9 +179,10 @@ double split_op(Context& c) {
   return static_cast<double>(m.n_vertices() + m.n_faces());
 }
 
-//! Ten iterations of OpenMesh's JacobiLaplaceSmootherT, C0: with uniform weights in every direction
-//! (Tangential_and_Normal), or with cotangent weights along the normals (Normal), the two
-//! weightings OpenMesh offers. Returns the sum of |x| + |y| + |z| over the vertices after.
+//! Ten iterations of OpenMesh's JacobiLaplaceSmootherT, C0: with uniform weights (Tangential_and_Normal)
+//! or with cotangent weights (Normal), the two weightings OpenMesh offers; both move vertices along
+//! the whole Laplacian vector (only Tangential projects it). Returns the sum of |x| + |y| + |z| over the
+//! vertices after.
 template <bool uniform>
 double smooth_op(Context& c) {
   OMesh& m = mesh_of(c);

@@ -95,8 +95,9 @@ const OpSpec kOps[] = {
     // ones the boundary rules differ (hedge keeps boundary edges), hence the tolerance.
     {"sqrt3", "sqrt(3) subdivision, one step", BarKind::faster, 2.0, 0.01, false, "#V + #F after"},
     // Ten smoothing iterations (CGAL has no explicit Laplacian smoother: n/a). Uniform: the same
-    // umbrella step with damping 0.5 in both, so the results agree. Cotangent: hedge moves along the
-    // cotangent Laplacian, OpenMesh along its normal component only, so the sums differ a little.
+    // umbrella step with damping 0.5 in both, so the results agree. Cotangent: both move along the
+    // cotangent Laplacian, OpenMesh divided by the sum of the weights, hedge by the sum of their
+    // magnitudes and with folding steps withheld, so the sums differ a little.
     {"smooth_uniform", "uniform smoothing, 10 iterations", BarKind::faster, 1.0, 1e-4, false,
      "sum |p| after"},
     {"smooth_cotan", "cotangent smoothing, 10 iterations", BarKind::faster, 1.0, 1e-2, false,

@@ -53,10 +53,10 @@ void add_smooth_arguments(CLI::App* app, SmoothCommandOptions* o) {
   app->add_option("--iterations", o->iterations, "Iterations")
       ->capture_default_str()
       ->transform(whole_number<int>(0, 100000));
-  add_real_option(
-      *app, "--lambda", o->lambda,
-      "Step toward the average, in (0, 1]; for implicit, the time step in squared mean edge lengths", -kInf,
-      kInf);
+  add_real_option(*app, "--lambda", o->lambda,
+                  "Step toward the average, in (0, 1]; for implicit, the time step in units of each vertex's "
+                  "explicit step",
+                  -kInf, kInf);
   add_real_option(*app, "--mu", o->mu, "Taubin's inflating step, below -lambda", -kInf, kInf);
   app->add_flag("--free-boundary", o->free_boundary, "Let boundary vertices move along the boundary");
   add_ascii_flag(*app, o->ascii);
