@@ -616,6 +616,24 @@ TEST(Fracture, ModelUnitsRefineACoarseMesh) {
   EXPECT_TRUE(mesh.validate().empty());
 }
 
+// Cells far smaller than the faces: the refinement stops after kFractureMaxRefineSplits splits in
+// the strike (each adds at most two faces), and the shards are still sound.
+TEST(Fracture, RefinementStopsAtItsLimitPerStrike) {
+  SurfaceMesh mesh = plate(4);
+  const double area = surface_area(mesh);
+  const std::size_t before = mesh.n_faces();
+  FractureOptions o;
+  o.material.units = FractureUnits::model;
+  o.material.radius = 1.5;
+  o.material.refine_edge = 1e-4;
+  const FractureResult r = fracture(mesh, {2.1f, 1.9f, 0}, o);
+  expect_sound(mesh, r, area, 0);
+  std::size_t faces = mesh.n_faces();
+  for (const Shard& s : r.shards) faces += s.mesh.n_faces();
+  EXPECT_GT(faces, before + kFractureMaxRefineSplits);
+  EXPECT_LE(faces, before + 2 * kFractureMaxRefineSplits + 4);
+}
+
 // Random impacts over the meshes of data/: plates, closed and open surfaces. HEDGE_FRACTURE_IMPACTS
 // sets how many (the full sweep: HEDGE_FRACTURE_IMPACTS=10000); HEDGE_FRACTURE_FIRST=i skips to
 // impact i (the same impacts, the earlier ones not run) to look at one that failed.
