@@ -31,7 +31,6 @@ using detail::number;
 
 //! A barycentric weight this close to 1 (or to 0) puts the impact on a corner (or an edge).
 constexpr double kSnap = 1e-3;
-constexpr unsigned kMaxRingPoints = 100000;
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point& t) {
@@ -51,65 +50,6 @@ struct Metric {
     return std::sqrt(perp2 + a * a * shrink * shrink);
   }
 };
-
-std::size_t check_options(const FractureOptions& o) {
-  auto fail = [](const std::string& what) { throw InvalidInputError("fracture: " + what); };
-  const FractureMaterial& m = o.material;
-  if (m.rings.size() > kFractureMaxRings)
-    fail("material '" + m.name + "' has " + std::to_string(m.rings.size()) +
-         " rings, more than the limit of " + std::to_string(kFractureMaxRings) +
-         " (kFractureMaxRings); use fewer, wider rings");
-  std::size_t total = 0;
-  for (std::size_t i = 0; i < m.rings.size(); ++i) {
-    const FractureRing& r = m.rings[i];
-    const std::string where = "material '" + m.name + "' rings[" + std::to_string(i) + "].";
-    if (r.points > kMaxRingPoints)
-      fail(where + "points is " + std::to_string(r.points) + ", more than " + std::to_string(kMaxRingPoints));
-    if (!std::isfinite(r.spacing) || r.spacing <= 0)
-      fail(where + "spacing must be finite and positive, is " + number(r.spacing));
-    if (!std::isfinite(r.jitter) || r.jitter < 0 || r.jitter > 1)
-      fail(where + "jitter must be in [0, 1], is " + number(r.jitter));
-    total += r.points;
-    if (total > kFractureMaxPoints)
-      fail(where + "points brings the break points of rings[0.." + std::to_string(i) + "] to " +
-           std::to_string(total) + ", more than the limit of " + std::to_string(kFractureMaxPoints) +
-           " in all rings (kFractureMaxPoints); use fewer points");
-  }
-  const std::string mat = "material '" + m.name + "' ";
-  if (!std::isfinite(m.grain_stretch) || m.grain_stretch < 1)
-    fail(mat + "grain_stretch must be finite and at least 1, is " + number(m.grain_stretch));
-  if (!is_finite(m.grain)) fail(mat + "grain is not finite");
-  if (m.grain_stretch > 1 && dot(to_double(m.grain), to_double(m.grain)) == 0)
-    fail(mat + "grain is zero while grain_stretch is " + number(m.grain_stretch));
-  if (!std::isfinite(m.refine_edge) || m.refine_edge <= 0)
-    fail(mat + "refine_edge must be finite and positive, is " + number(m.refine_edge));
-  if (m.units != FractureUnits::edge_lengths && m.units != FractureUnits::model &&
-      m.units != FractureUnits::diagonal_fraction)
-    fail(mat + "units is " + std::to_string(static_cast<std::int32_t>(m.units)) +
-         ", not one of edge_lengths (0), model (1), diagonal_fraction (2)");
-  if (!std::isfinite(m.radius) || m.radius <= 0)
-    fail(mat + "radius (the break radius, in " + fracture_units_name(m.units) +
-         ") must be finite and positive, is " + number(m.radius));
-  if (!std::isfinite(o.thickness) || o.thickness < 0)
-    fail("thickness must be finite and >= 0, is " + number(o.thickness));
-  if (!std::isfinite(o.relative_thickness) || o.relative_thickness < 0 ||
-      o.relative_thickness > kFractureMaxRelativeThickness)
-    fail("relative_thickness must be in [0, " + number(kFractureMaxRelativeThickness) +
-         "] (kFractureMaxRelativeThickness: a solid at most as thick as the break radius), is " +
-         number(o.relative_thickness));
-  if (o.thickness > 0 && o.relative_thickness > 0)
-    fail("thickness (" + number(o.thickness) + ") and relative_thickness (" + number(o.relative_thickness) +
-         ") are both set; give one of them");
-  if (o.inner_submesh < -1)
-    fail("inner_submesh must be -1 (automatic) or >= 0, is " + std::to_string(o.inner_submesh));
-  if (!std::isfinite(o.density) || o.density <= 0)
-    fail("density must be finite and positive, is " + number(o.density));
-  if (!std::isfinite(o.shell_thickness) || o.shell_thickness < 0)
-    fail("shell_thickness must be finite and >= 0 (0: automatic), is " + number(o.shell_thickness));
-  if (!std::isfinite(o.tolerance) || o.tolerance < 0)
-    fail("tolerance must be finite and >= 0, is " + number(o.tolerance));
-  return total;
-}
 
 //! Refuses a thickness beyond kFractureMaxThicknessRatio times the mesh's diagonal (of the picking
 //! tree's box).
@@ -400,7 +340,7 @@ void measure_shard(Shard& shard, const FractureOptions& o, const Solid& solid) {
 // ---- the steps of fracture(), in order ----
 
 //! Refuses an impact that is not finite, a mesh without faces, a FaceBvh of another mesh and a
-//! thickness out of proportion (options are checked by check_options()).
+//! thickness out of proportion (options are checked by fracture_break_points()).
 void check_input(const SurfaceMesh& mesh, const Vec3& impact, const FractureOptions& o, const FaceBvh* bvh) {
   if (!is_finite(impact))
     throw InvalidInputError("fracture: the impact (" + number(impact.x) + ", " + number(impact.y) + ", " +
@@ -644,13 +584,11 @@ void solids(std::vector<Shard>& shards, const FractureOptions& o, const Solid& s
 
 }  // namespace
 
-std::size_t fracture_break_points(const FractureOptions& options) { return check_options(options); }
-
 // The pipeline: locate the impact, take its frame, cut it into the surface, gather the broken area
 // (refined where its faces are large), scatter the break points, grow a cell about each, detach
 // the cells and make each a solid. Each step is a function of its own above.
 FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOptions& o, FaceBvh* bvh) {
-  const std::size_t total_points = check_options(o);
+  const std::size_t total_points = fracture_break_points(o);  // checks the options
   check_input(mesh, impact, o, bvh);
   FractureResult result;
   Clock::time_point t = Clock::now();
@@ -666,7 +604,7 @@ FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOpt
   const Frame frame = impact_frame(mesh, hit, o.material, diagonal);
   result.break_radius = frame.break_radius;
   // The solid's thickness in model units (a relative one is known only now, from the break radius;
-  // check_options() bounded it), the inner faces' submesh and the shell's thickness, all settled
+  // fracture_break_points() bounded it), the inner faces' submesh and the shell's thickness, all settled
   // before the mesh is edited.
   Solid solid;
   if (o.thickness > 0 || o.relative_thickness > 0) {
