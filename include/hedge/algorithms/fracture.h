@@ -163,7 +163,8 @@ struct FractureOptions {
   //! Seed of the break points' generator.
   std::uint64_t seed = 0;
   //! > 0: every open shard is extruded into a closed solid this thick (model units), see Shard::mesh.
-  //! At most kFractureMaxThicknessRatio times the diagonal of the mesh's bounding box.
+  //! At most kFractureMaxThicknessRatio times the diagonal of the mesh's bounding box (the picking
+  //! tree's box, FaceBvh::bounds()).
   double thickness = 0;
   //! > 0 (and thickness 0): the thickness is this fraction of the strike's break radius in model
   //! units (FractureResult::break_radius), so shards of any size get a solid of the same proportion. When
