@@ -262,7 +262,29 @@ void test_decimate(void) {
   CHECK_OK(hedge_mesh_destroy(field));
 }
 
+/* The library's FractureMaterial.TheDefaultStrikeOnSpotThatEveryBindingChecks gives these numbers:
+ * the C ABI's defaults (NULL options, the glass preset) are the library's. */
+static void test_fracture_default_strike_on_spot(void) {
+  hedge_mesh* spot = NULL;
+  CHECK_OK(hedge_mesh_read(HEDGE_DATA_DIR "/spot_triangulated.obj", NULL, NULL, &spot));
+  hedge_fracture_shard shards[40];
+  uint32_t count = 0;
+  CHECK_OK(hedge_mesh_fracture(spot, 0.380073f, -0.0641595f, 0.195141f, NULL, shards, 40, &count));
+  CHECK(count == 40);
+  double area = 0, mass = 0;
+  for (uint32_t i = 0; i < count; ++i) {
+    area += shards[i].area, mass += shards[i].mass;
+    CHECK(shards[i].closed == 0 && shards[i].mass > 0 && shards[i].principal_moments[0] > 0);
+    CHECK_OK(hedge_mesh_destroy(shards[i].mesh));
+    if (shards[i].hull != NULL) CHECK_OK(hedge_mesh_destroy(shards[i].hull));
+  }
+  CHECK(fabs(area - 0.498213) < 1e-6 && fabs(mass - 0.00838123) < 1e-8);
+  CHECK_VALID(spot);
+  CHECK_OK(hedge_mesh_destroy(spot));
+}
+
 void test_fracture(void) {
+  test_fracture_default_strike_on_spot();
   CHECK(sizeof(hedge_fracture_ring) == 24 && sizeof(hedge_fracture_options) == 488 &&
         sizeof(hedge_fracture_shard) == 264);
   CHECK(offsetof(hedge_fracture_options, units) == 388 && offsetof(hedge_fracture_options, radius) == 472 &&
