@@ -15,8 +15,12 @@
 // BM_convex_hull/<n>: the convex hull of n random points in a ball (200: a shard's size).
 // BM_decimate/<mesh>: quadric decimation to 10% of the vertices (algorithms/decimate.h), the copy of
 // the mesh excluded from the time; the counters give the vertices reached and the largest error.
-// BM_fracture/<mesh>: one impact, glass preset (algorithms/fracture.h), on a flat plate of 100k and
-// of 1M triangles (plate_100k, plate_1m) and on igea.ply from ../shared/meshes when it is there.
+// BM_fracture/<mesh>: one impact, glass preset (algorithms/fracture.h) with its break radius in edge
+// lengths of the impact face (7, units edge_lengths), so the broken area holds about the same faces
+// on every mesh, on a flat plate of 100k and of 1M triangles (plate_100k, plate_1m) and on igea.ply
+// from ../shared/meshes when it is there. BM_fracture_diagonal/<mesh>: the same with the preset's
+// own radius, 0.13 of the mesh's diagonal: the broken area is the same share of every mesh, so its
+// faces, and the time, grow with the resolution.
 // Impacts hit the centroid of a random live face of the same mesh, its FaceBvh kept up to date by
 // fracture(), as in a game; when a fifth of the faces has broken off, the mesh and its tree are
 // restored with the timer paused. Counters: shards and faces per impact, and the mean
@@ -182,7 +186,7 @@ bool set_fracture_counters(benchmark::State& state, std::vector<double>& seconds
   return true;
 }
 
-void fracture_impacts(benchmark::State& state, std::string name, std::string root) {
+void fracture_impacts(benchmark::State& state, std::string name, std::string root, bool edge_lengths) {
   const hedge::SurfaceMesh* input = fracture_input_or_skip(state, name, root);
   if (!input) return;
   auto mesh = std::make_unique<hedge::SurfaceMesh>(*input);
@@ -190,6 +194,10 @@ void fracture_impacts(benchmark::State& state, std::string name, std::string roo
   std::mt19937_64 rng(1);
   hedge::FractureOptions options;
   options.material = hedge::fracture_material("glass");
+  if (edge_lengths) {
+    options.material.units = hedge::FractureUnits::edge_lengths;
+    options.material.radius = hedge::fracture_material_radius(options.material);
+  }
   double shards = 0, faces = 0;
   std::vector<double> seconds;
   hedge::FractureResult::Timings total;
@@ -275,6 +283,9 @@ void capi_fracture_impacts(benchmark::State& state, std::string name, std::strin
   hedge_mesh* mesh = capi_mesh(*input, error);
   hedge_fracture_options options;
   hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &options);
+  options.units = HEDGE_FRACTURE_UNITS_EDGE_LENGTHS;  // as BM_fracture
+  options.radius = 0;
+  for (std::uint32_t i = 0; i < options.ring_count; ++i) options.radius += options.rings[i].spacing;
   std::uint32_t capacity = 0;
   for (std::uint32_t i = 0; i < options.ring_count; ++i) capacity += options.rings[i].points;
   std::vector<hedge_fracture_shard> shards(capacity);
@@ -334,7 +345,10 @@ void capi_fracture_impacts(benchmark::State& state, std::string name, std::strin
 void register_fracture(const std::string& root) {
   for (const char* name : {"plate_100k", "plate_1m", "igea"}) {
     benchmark::RegisterBenchmark((std::string("BM_fracture/") + name).c_str(), fracture_impacts,
-                                 std::string(name), root)
+                                 std::string(name), root, true)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((std::string("BM_fracture_diagonal/") + name).c_str(), fracture_impacts,
+                                 std::string(name), root, false)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((std::string("BM_capi_fracture/") + name).c_str(), capi_fracture_impacts,
                                  std::string(name), root)

@@ -11,6 +11,8 @@ import { HedgeError } from './hedge.js';
 
 export const isArrayLike = (x) => ArrayBuffer.isView(x) || Array.isArray(x);
 const isNumber = (x) => typeof x === 'number';
+//! The units of a fracture's break radius (FractureUnits in fracture.h).
+export const UNITS = Object.freeze(['diagonal_fraction', 'model', 'edge_lengths']);
 /** A point the argument check has approved, as the module takes it. */
 export const point3 = (p) => Array.from(p, Number);
 
@@ -150,8 +152,11 @@ const ARGUMENTS = {
         options({
           seed: NUMBER,
           breakRadius: NUMBER,
+          units: optional(STRING),
+          radius: NUMBER,
           thickness: NUMBER,
           density: NUMBER,
+          shellThickness: NUMBER,
           tolerance: NUMBER,
         }),
       ],
@@ -237,8 +242,13 @@ export function customMaterial(m) {
     grain = [0, 0, 0],
     grainStretch = 1,
     refineEdge = 1.5,
-    absolute = false,
+    units = 'diagonal_fraction',
+    radius = 0.1,
   } = m;
+  if ('absolute' in m)
+    throw bad(
+      "absolute was replaced by units and radius (absolute true: units 'model' and the spacings summed as radius)",
+    );
   if (!Array.isArray(rings)) throw bad('rings must be an array of {points, spacing, jitter}');
   const flat = new Float64Array(rings.length * 3);
   rings.forEach((ring, i) => {
@@ -251,12 +261,15 @@ export function customMaterial(m) {
     throw bad('grain must be [x, y, z]');
   if (!isNumber(grainStretch)) throw bad('grainStretch must be a number');
   if (!isNumber(refineEdge)) throw bad('refineEdge must be a number');
+  if (!UNITS.includes(units)) throw bad(`units must be one of ${UNITS.join(', ')}`);
+  if (!isNumber(radius)) throw bad('radius must be a number');
   return {
     name: String(name),
     rings: flat,
     grain: Array.from(grain),
     grainStretch,
     refineEdge,
-    absolute: Boolean(absolute),
+    units,
+    radius,
   };
 }

@@ -23,7 +23,7 @@
 import createHedge from './hedge.mjs';
 
 import { instantiate } from './load.js';
-import { customMaterial, installArgumentChecks, point3 } from './arguments.js';
+import { customMaterial, installArgumentChecks, point3, UNITS } from './arguments.js';
 
 /** An error raised by hedge. kind names the C ABI's status (hedge_status), one to one:
  *  'invalid-argument', 'bad-handle' (a disposed object, an element out of range or deleted),
@@ -519,12 +519,16 @@ export class Mesh extends NativeOwner {
   /** Breaks the mesh at `impact` ([x, y, z], within the tolerance of the surface) into shards; the
    *  mesh is edited in place (the broken faces leave it) and its RenderBuffers syncs the change as a few
    *  ranges. material: 'glass', 'stone', 'wood', 'ice' or {name, rings: [{points, spacing,
-   *  jitter}], grain, grainStretch, refineEdge, absolute} (docs/fracture.md). seed: a whole number
-   *  (the same seed, mesh and impact give the same shards). breakRadius > 0: the material scaled so
-   *  its outer ring lies that far from the impact in model units (the same share of the object
-   *  breaks at any resolution); 0: its own spacings. thickness > 0 makes each shard a
-   *  closed solid, with mass properties at `density`. Uses the picking tree (built if missing), so
-   *  an impact costs what the broken area does. Returns {shards: [Shard], impactFace, impactPoint,
+   *  jitter}], grain, grainStretch, refineEdge, units, radius} (docs/fracture.md). seed: a whole
+   *  number (the same seed, mesh and impact give the same shards). The break radius (the outer
+   *  ring's) is the material's radius in its units: for the presets a fraction of the mesh's
+   *  bounding-box diagonal (glass 0.13, stone 0.14, wood and ice 0.11), so the same share of an
+   *  object breaks at any resolution. units ('diagonal_fraction', 'model', 'edge_lengths') and
+   *  radius > 0 replace the material's; breakRadius > 0 sets it in model units instead (0: as
+   *  above). thickness > 0 makes each shard a closed solid, with mass properties at `density`;
+   *  open shards weigh as a thin shell shellThickness thick (model units; 0: a twentieth of the
+   *  break radius). Uses the picking tree (built if missing), so an impact costs what the broken
+   *  area does. Returns {shards: [Shard], impactFace, impactPoint, breakRadius (model units),
    *  seconds: {locate, scatter, cut, detach, hulls, fracture (the whole library call), pack (making
    *  the result for JS)}}. A bad impact (NaN, off the surface) or option
    *  throws a HedgeError, the mesh unchanged. */
@@ -534,8 +538,11 @@ export class Mesh extends NativeOwner {
       material = 'glass',
       seed = 0,
       breakRadius = 0,
+      units = '',
+      radius = 0,
       thickness = 0,
       density = 1,
+      shellThickness = 0,
       tolerance = 0,
       hulls = true,
     } = {},
@@ -553,6 +560,11 @@ export class Mesh extends NativeOwner {
     } else {
       custom = customMaterial(material);
     }
+    if (units !== '' && !UNITS.includes(units))
+      throw new HedgeError(
+        'invalid-argument',
+        `fracture: units must be one of ${UNITS.join(', ')}, got '${units}'`,
+      );
     const result = this._call(
       'fracture',
       at,
@@ -560,17 +572,20 @@ export class Mesh extends NativeOwner {
       custom,
       seed,
       breakRadius,
+      units,
+      radius,
       thickness,
       density,
+      shellThickness,
       tolerance,
       Boolean(hulls),
     );
-    // Unpacks the shards (see WasmMesh::fracture): 34 numbers each, hulls concatenated.
+    // Unpacks the shards (see WasmMesh::fracture): 35 numbers each, hulls concatenated.
     const p = result.shards;
     const shards = [];
     const v3 = (k) => [p.scalars[k], p.scalars[k + 1], p.scalars[k + 2]];
     for (let i = 0; i < p.count; ++i) {
-      const k = i * 34;
+      const k = i * 35;
       const hv = [p.hullVertexOffsets[i], p.hullVertexOffsets[i + 1]];
       const hi = [p.hullIndexOffsets[i], p.hullIndexOffsets[i + 1]];
       shards.push(
@@ -585,6 +600,7 @@ export class Mesh extends NativeOwner {
           principalMoments: v3(k + 13),
           principalAxes: [v3(k + 16), v3(k + 19), v3(k + 22)],
           inertia: p.scalars.slice(k + 25, k + 34),
+          shellThickness: p.scalars[k + 34],
           hull: {
             positions: p.hullPositions.subarray(hv[0] * 3, hv[1] * 3),
             indices: p.hullIndices.subarray(hi[0], hi[1]),
@@ -641,10 +657,10 @@ export class Mesh extends NativeOwner {
 }
 
 /** A piece broken off by Mesh.fracture(). `mesh` is its own Mesh (dispose() frees it); the rest
- *  are plain values: centroid and area of its broken faces, and when it is a closed solid
- *  (thickness > 0) its volume, mass, centreOfMass, inertia (about the centre of mass, row-major
- *  3x3 Float64Array), principalMoments (ascending) and principalAxes (unit vectors, a right-handed
- *  frame); its convex hull for a collider as hull.positions (Float32Array, 3 per vertex) and
+ *  are plain values: centroid and area of its broken faces, and its volume, mass, centreOfMass,
+ *  inertia (about the centre of mass, row-major 3x3 Float64Array), principalMoments (ascending)
+ *  and principalAxes (unit vectors, a right-handed frame): of the solid when it is closed
+ *  (thickness > 0), else of a thin shell shellThickness thick (0 when closed); its convex hull for a collider as hull.positions (Float32Array, 3 per vertex) and
  *  hull.indices (Uint32Array, 3 per outward triangle). */
 export class Shard {
   constructor(mesh, s) {
@@ -659,6 +675,7 @@ export class Shard {
     this.inertia = s.inertia;
     this.principalMoments = s.principalMoments;
     this.principalAxes = s.principalAxes;
+    this.shellThickness = s.shellThickness;
     this.hull = s.hull;
   }
 

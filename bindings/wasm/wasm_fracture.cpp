@@ -13,6 +13,15 @@ namespace hedge::wasm {
 
 namespace {
 
+//! FractureUnits by name ("diagonal_fraction", "model", "edge_lengths").
+FractureUnits units_from_js(const std::string& name) {
+  for (FractureUnits u :
+       {FractureUnits::diagonal_fraction, FractureUnits::model, FractureUnits::edge_lengths})
+    if (name == fracture_units_name(u)) return u;
+  throw InvalidInputError("fracture: units must be 'diagonal_fraction', 'model' or 'edge_lengths', got '" +
+                          name + "'");
+}
+
 //! A fracture material from the object the JS layer made of a custom material (see
 //! WasmMesh::fracture); fracture() checks the values.
 FractureMaterial material_from_js(const val& m) {
@@ -32,25 +41,31 @@ FractureMaterial material_from_js(const val& m) {
   out.grain = Vec3{float(grain[0].as<double>()), float(grain[1].as<double>()), float(grain[2].as<double>())};
   out.grain_stretch = m["grainStretch"].as<double>();
   out.refine_edge = m["refineEdge"].as<double>();
-  out.absolute = m["absolute"].as<bool>();
+  out.units = units_from_js(m["units"].as<std::string>());
+  out.radius = m["radius"].as<double>();
   return out;
 }
 
 //! Numbers per shard in the packed result of WasmMesh::fracture.
-constexpr std::size_t kShardScalars = 7 + 6 * 3 + 9;
+constexpr std::size_t kShardScalars = 7 + 6 * 3 + 9 + 1;
 
 }  // namespace
 
 val WasmMesh::fracture(val impact, const std::string& preset, val custom, double seed, double break_radius,
-                       double thickness, double density, double tolerance, bool hulls) {
+                       const std::string& units, double radius, double thickness, double density,
+                       double shell_thickness, double tolerance, bool hulls) {
   return guarded([&] {
     const Vec3 at = point_from_js(impact, "fracture: the impact");
     if (!(seed >= 0 && seed <= 9007199254740992.0 && std::floor(seed) == seed))
       throw InvalidInputError("fracture: the seed must be a whole number in [0, 2^53]");
     FractureOptions options;
     options.material = preset.empty() ? material_from_js(custom) : fracture_material(preset);
-    // 0: the material's own spacings; anything else is checked (finite, positive) by the scaling.
+    // "" and 0: the material's own; anything else is checked by fracture() (finite, positive).
+    if (!units.empty()) options.material.units = units_from_js(units);
+    if (radius != 0) options.material.radius = radius;
+    // 0: as above; anything else is checked (finite, positive) by the scaling.
     if (break_radius != 0) options.material = fracture_material_at_radius(options.material, break_radius);
+    options.shell_thickness = shell_thickness;
     options.seed = std::uint64_t(seed);
     options.thickness = thickness;
     options.density = density;
@@ -80,6 +95,7 @@ val WasmMesh::fracture(val impact, const std::string& preset, val custom, double
                              mp.principal_axes[1], mp.principal_axes[2]})
         scalars.insert(scalars.end(), {v.x, v.y, v.z});
       scalars.insert(scalars.end(), mp.inertia.begin(), mp.inertia.end());
+      scalars.push_back(shard.shell_thickness);
       const IndexedMesh h = to_indexed(shard.hull.mesh);
       for (const Vec3& p : h.positions) hull_positions.insert(hull_positions.end(), {p.x, p.y, p.z});
       hull_indices.insert(hull_indices.end(), h.indices.begin(), h.indices.end());
@@ -109,6 +125,7 @@ val WasmMesh::fracture(val impact, const std::string& preset, val custom, double
     result.set("shards", shards);
     result.set("impactFace", js_index(r.impact_face.idx()));
     result.set("impactPoint", js_vec3(r.impact_point));
+    result.set("breakRadius", r.break_radius);
     result.set("seconds", seconds);
     return result;
   });

@@ -93,20 +93,24 @@ class WasmMesh {
   //! Breaks the mesh at `impact` (fracture.h), through the mesh's picking tree (binding::
   //! picking_tree: built if missing, kept up to date), so the cost is that of the broken area.
   //! `preset`: a preset's name, or "" for the material in `custom`: {name, rings (Float64Array, 3
-  //! per ring: points, spacing, jitter), grain ([x, y, z]), grainStretch, refineEdge, absolute},
-  //! whose types the JS layer has checked. `break_radius` != 0: the material scaled so its outer
-  //! ring lies that many model units from the impact (fracture_material_at_radius; 0: as it is).
-  //! Returns {shards: {count, scalars (kShardScalars per
-  //! shard: faces, area, volume, closed, mass, hull dimension, hull tolerance, centroid, centre of
-  //! mass, principal moments, the three principal axes, inertia (9)), meshes (NativeMesh each),
+  //! per ring: points, spacing, jitter), grain ([x, y, z]), grainStretch, refineEdge, units (a
+  //! FractureUnits name), radius}, whose types the JS layer has checked. `units` (a name) and
+  //! `radius` (!= 0) replace the material's; then `break_radius` != 0 puts the material in model
+  //! units with that radius (fracture_material_at_radius; 0: as it is). `shell_thickness`: the thin
+  //! shell open shards are weighed as (0: automatic). Returns {shards: {count, scalars
+  //! (kShardScalars per shard: faces, area, volume, closed, mass, hull dimension, hull tolerance,
+  //! centroid, centre of mass, principal moments, the three principal axes, inertia (9), shell
+  //! thickness), meshes (NativeMesh each),
   //! hullPositions, hullIndices (each hull's indices count from its first vertex),
-  //! hullVertexOffsets, hullIndexOffsets (count + 1 each)}, impactFace, impactPoint, seconds:
+  //! hullVertexOffsets, hullIndexOffsets (count + 1 each)}, impactFace, impactPoint, breakRadius
+  //! (model units), seconds:
   //! {locate, scatter, cut, detach, hulls, fracture (the whole call), pack (making this result)}}.
   //! fracture() checks everything before it edits, so a refusal leaves the mesh as it was. Running
   //! out of wasm memory halfway is not rolled back (a copy of the mesh would cost more than the
   //! strike, whose own allocations are those of the small broken area).
   val fracture(val impact, const std::string& preset, val custom, double seed, double break_radius,
-               double thickness, double density, double tolerance, bool hulls);
+               const std::string& units, double radius, double thickness, double density,
+               double shell_thickness, double tolerance, bool hulls);
 
  private:
   std::shared_ptr<MeshState> s_;

@@ -672,30 +672,41 @@ typedef enum hedge_fracture_preset {
   HEDGE_FRACTURE_ICE = 3    /**< 26 break points */
 } hedge_fracture_preset;
 
+/** The units of hedge_fracture_options.radius (hedge::FractureUnits). */
+typedef enum hedge_fracture_units {
+  HEDGE_FRACTURE_UNITS_EDGE_LENGTHS = 0,     /**< mean edge lengths of the impact face */
+  HEDGE_FRACTURE_UNITS_MODEL = 1,            /**< model units */
+  HEDGE_FRACTURE_UNITS_DIAGONAL_FRACTION = 2 /**< a fraction of the mesh's bounding-box diagonal */
+} hedge_fracture_units;
+
 /** Most rings a hedge_fracture_options holds. */
 #define HEDGE_FRACTURE_MAX_RINGS 16
 
 /** One ring of break points. Layout (24 bytes): spacing @0, jitter @8 (double), points @16,
  *  reserved @20 (uint32_t). */
 typedef struct hedge_fracture_ring {
-  double spacing;    /**< distance from the previous ring (the first: from the impact), > 0 */
+  double spacing;    /**< distance from the previous ring (the first: from the impact), > 0, in
+                          proportion only: the spacings are scaled so that the outer ring lies at
+                          the radius */
   double jitter;     /**< in [0, 1]: how far points stray from even angles and the ring's radius */
   uint32_t points;   /**< break points on the ring, at most 100000 (10000 in all rings) */
   uint32_t reserved; /**< 0 */
 } hedge_fracture_ring;
 
-/** Layout (472 bytes): rings @0 (16 x 24), ring_count @384 (uint32_t), absolute @388 (int32_t),
+/** Layout (488 bytes): rings @0 (16 x 24), ring_count @384 (uint32_t), units @388 (int32_t),
  *  grain @392 (3 floats), reserved @404 (uint32_t), grain_stretch @408, refine_edge @416 (double),
  *  seed @424 (uint64_t), thickness @432, density @440, tolerance @448 (double), hulls @456,
- *  inner_submesh @460 (int32_t), relative_thickness @464 (double). */
+ *  inner_submesh @460 (int32_t), relative_thickness @464, radius @472, shell_thickness @480
+ *  (double). units took the place of the former absolute (0: edge lengths, 1: model units, as
+ *  absolute meant). */
 typedef struct hedge_fracture_options {
   hedge_fracture_ring rings[HEDGE_FRACTURE_MAX_RINGS]; /**< the material's rings, innermost first */
   uint32_t ring_count;                                 /**< rings used, 0..HEDGE_FRACTURE_MAX_RINGS */
-  int32_t absolute;      /**< 1: spacings in model units; 0: in edge lengths of the impact face */
+  int32_t units;         /**< hedge_fracture_units of radius; the presets: diagonal fraction */
   float grain[3];        /**< grain direction, nonzero when grain_stretch > 1 */
   uint32_t reserved;     /**< 0 */
   double grain_stretch;  /**< >= 1: cells this many times longer along the grain */
-  double refine_edge;    /**< longest edge left in the broken area (units of the spacing), > 0 */
+  double refine_edge;    /**< longest edge left in the broken area (units of the spacings), > 0 */
   uint64_t seed;         /**< seed of the break points */
   double thickness;      /**< > 0: each shard extruded into a closed solid this thick */
   double density;        /**< mass per unit volume, > 0 */
@@ -705,7 +716,11 @@ typedef struct hedge_fracture_options {
   int32_t inner_submesh; /**< with a thickness, the face property "f:submesh" of the faces the solid
                             adds (back, side walls); -1: one more than the mesh's largest, or 1 */
   double relative_thickness; /**< in [0, 1]; > 0 (thickness 0): the thickness as this fraction of
-                                the break radius in model units (the spacings summed, at the impact) */
+                                the break radius in model units */
+  double radius;             /**< the break radius (the outer ring's) in units, > 0; the presets:
+                                0.13 (glass), 0.14 (stone), 0.11 (wood, ice) of the diagonal */
+  double shell_thickness;    /**< >= 0: an open shard's mass properties are those of a thin shell
+                                this thick (model units); 0: 0.05 of the break radius in model units */
 } hedge_fracture_options;
 
 /** One shard. Layout (264 bytes): mesh @0, hull @8 (handles), centroid @16 (3 doubles), area @40,
@@ -717,27 +732,31 @@ typedef struct hedge_fracture_shard {
   hedge_mesh* hull;            /**< its convex hull, a new mesh, or NULL (hulls off, or no volume) */
   double centroid[3];          /**< area-weighted centroid of the broken faces */
   double area;                 /**< area of the broken faces */
-  double volume;               /**< volume when closed, else 0 */
-  double mass;                 /**< at the density when closed, else 0 */
-  double centre_of_mass[3];    /**< when closed, else 0 */
-  double inertia[9];           /**< inertia tensor about the centre of mass when closed, else 0 */
+  double volume;               /**< volume when closed; when open, of the thin shell (area x the shell
+                                  thickness, see hedge_fracture_options.shell_thickness) */
+  double mass;                 /**< at the density, of the solid when closed, of the shell when open;
+                                  0 only for a shard without area (skip it) */
+  double centre_of_mass[3];    /**< of the solid or the shell */
+  double inertia[9];           /**< inertia tensor about the centre of mass, of the solid or shell */
   int32_t closed;              /**< 1: the shard's mesh has no boundary */
   int32_t hull_dimension;      /**< 0 empty, 1 point, 2 segment, 3 flat (a thin prism), 4 solid */
-  double principal_moments[3]; /**< the eigenvalues of inertia, ascending, when closed, else 0 */
+  double principal_moments[3]; /**< the eigenvalues of inertia, ascending (0 with mass 0) */
   double principal_axes[9];    /**< row i: the unit axis of principal_moments[i]; a right-handed frame
                                   (row 2 = row 0 x row 1), so the matrix whose columns they are is a
-                                  rotation R with inertia = R diag(moments) R^T; 0 when open */
+                                  rotation R with inertia = R diag(moments) R^T; 0 with mass 0 */
 } hedge_fracture_shard;
 
-/** Fills *out_options with a preset (hedge_fracture_preset), seed 0, no thickness, density 1,
- *  tolerance 0 (automatic), hulls on and inner_submesh -1 (automatic). An unknown preset:
+/** Fills *out_options with a preset (hedge_fracture_preset): its rings, its break radius as a
+ *  fraction of the mesh's bounding-box diagonal (units HEDGE_FRACTURE_UNITS_DIAGONAL_FRACTION),
+ *  seed 0, no thickness, density 1, shell_thickness 0 (automatic), tolerance 0 (automatic), hulls
+ *  on and inner_submesh -1 (automatic). An unknown preset:
  *  HEDGE_ERROR_INVALID_ARGUMENT. */
 HEDGE_API hedge_status hedge_fracture_options_default(int32_t preset, hedge_fracture_options* out_options);
 /** Puts the material of *options into model units with its outer ring radius model units from the
- *  impact (fracture_material_at_radius): absolute = 1, every used ring's spacing and refine_edge
- *  scaled by radius / (the spacings summed). So a strike breaks the same share of an object at
- *  every mesh resolution. A radius that is not finite and positive, no ring, or a spacing that is
- *  not finite and positive: HEDGE_ERROR_INVALID_ARGUMENT naming it, *options unchanged. */
+ *  impact (fracture_material_at_radius): units HEDGE_FRACTURE_UNITS_MODEL, radius = radius, and
+ *  every used ring's spacing and refine_edge scaled by radius / (the spacings summed), so they read
+ *  in model units too. A radius that is not finite and positive, no ring, or a spacing that is not
+ *  finite and positive: HEDGE_ERROR_INVALID_ARGUMENT naming it, *options unchanged. */
 HEDGE_API hedge_status hedge_fracture_options_at_radius(hedge_fracture_options* options, double radius);
 /** Breaks the mesh at the impact (x, y, z) into shards (see hedge/algorithms/fracture.h): the
  *  broken faces leave the mesh, each shard is a new mesh with its properties, its area, centroid,

@@ -31,8 +31,6 @@ using detail::number;
 
 //! A barycentric weight this close to 1 (or to 0) puts the impact on a corner (or an edge).
 constexpr double kSnap = 1e-3;
-constexpr std::size_t kMaxRefineSplits = 20000;  // per round
-constexpr unsigned kMaxRingPoints = 100000;
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point& t) {
@@ -53,63 +51,10 @@ struct Metric {
   }
 };
 
-std::size_t check_options(const FractureOptions& o) {
-  auto fail = [](const std::string& what) { throw InvalidInputError("fracture: " + what); };
-  const FractureMaterial& m = o.material;
-  if (m.rings.size() > kFractureMaxRings)
-    fail("material '" + m.name + "' has " + std::to_string(m.rings.size()) +
-         " rings, more than the limit of " + std::to_string(kFractureMaxRings) +
-         " (kFractureMaxRings); use fewer, wider rings");
-  std::size_t total = 0;
-  for (std::size_t i = 0; i < m.rings.size(); ++i) {
-    const FractureRing& r = m.rings[i];
-    const std::string where = "material '" + m.name + "' rings[" + std::to_string(i) + "].";
-    if (r.points > kMaxRingPoints)
-      fail(where + "points is " + std::to_string(r.points) + ", more than " + std::to_string(kMaxRingPoints));
-    if (!std::isfinite(r.spacing) || r.spacing <= 0)
-      fail(where + "spacing must be finite and positive, is " + number(r.spacing));
-    if (!std::isfinite(r.jitter) || r.jitter < 0 || r.jitter > 1)
-      fail(where + "jitter must be in [0, 1], is " + number(r.jitter));
-    total += r.points;
-    if (total > kFractureMaxPoints)
-      fail(where + "points brings the break points of rings[0.." + std::to_string(i) + "] to " +
-           std::to_string(total) + ", more than the limit of " + std::to_string(kFractureMaxPoints) +
-           " in all rings (kFractureMaxPoints); use fewer points");
-  }
-  const std::string mat = "material '" + m.name + "' ";
-  if (!std::isfinite(m.grain_stretch) || m.grain_stretch < 1)
-    fail(mat + "grain_stretch must be finite and at least 1, is " + number(m.grain_stretch));
-  if (!is_finite(m.grain)) fail(mat + "grain is not finite");
-  if (m.grain_stretch > 1 && dot(to_double(m.grain), to_double(m.grain)) == 0)
-    fail(mat + "grain is zero while grain_stretch is " + number(m.grain_stretch));
-  if (!std::isfinite(m.refine_edge) || m.refine_edge <= 0)
-    fail(mat + "refine_edge must be finite and positive, is " + number(m.refine_edge));
-  if (!std::isfinite(o.thickness) || o.thickness < 0)
-    fail("thickness must be finite and >= 0, is " + number(o.thickness));
-  if (!std::isfinite(o.relative_thickness) || o.relative_thickness < 0 ||
-      o.relative_thickness > kFractureMaxRelativeThickness)
-    fail("relative_thickness must be in [0, " + number(kFractureMaxRelativeThickness) +
-         "] (kFractureMaxRelativeThickness: a solid at most as thick as the break radius), is " +
-         number(o.relative_thickness));
-  if (o.thickness > 0 && o.relative_thickness > 0)
-    fail("thickness (" + number(o.thickness) + ") and relative_thickness (" + number(o.relative_thickness) +
-         ") are both set; give one of them");
-  if (o.inner_submesh < -1)
-    fail("inner_submesh must be -1 (automatic) or >= 0, is " + std::to_string(o.inner_submesh));
-  if (!std::isfinite(o.density) || o.density <= 0)
-    fail("density must be finite and positive, is " + number(o.density));
-  if (!std::isfinite(o.tolerance) || o.tolerance < 0)
-    fail("tolerance must be finite and >= 0, is " + number(o.tolerance));
-  return total;
-}
-
-//! Refuses a thickness beyond kFractureMaxThicknessRatio times the mesh's diagonal. O(V), only
-//! when there is a thickness.
-void check_thickness(const SurfaceMesh& mesh, double thickness) {
+//! Refuses a thickness beyond kFractureMaxThicknessRatio times the mesh's diagonal (of the picking
+//! tree's box).
+void check_thickness(double diagonal, double thickness) {
   if (thickness <= 0) return;
-  const Vec3 size = bounding_box(mesh).size();
-  const double diagonal =
-      std::sqrt(double(size.x) * size.x + double(size.y) * size.y + double(size.z) * size.z);
   if (thickness > kFractureMaxThicknessRatio * diagonal)
     throw InvalidInputError("fracture: thickness is " + number(thickness) + ", more than " +
                             number(kFractureMaxThicknessRatio) +
@@ -176,14 +121,14 @@ class Area {
 //! Splits polygons of the area at their centroid and edges longer than max_edge at their midpoint
 //! (longest first), for faces whose centroid lies within `radius` of p in the metric.
 //! \return true if anything was split.
+//! `budget`: the splits left for the strike, counted down.
 bool refine(SurfaceMesh& m, const Area& area, const Vec3d& p, double radius, double max_edge,
-            const Metric& metric) {
+            const Metric& metric, std::size_t& budget) {
   std::vector<Face> work;
   work.reserve(area.faces.size());
   for (const AreaFace& a : area.faces) work.push_back(a.face);
-  std::size_t splits = 0;
   bool changed = false;
-  for (std::size_t i = 0; i < work.size() && splits < kMaxRefineSplits; ++i) {
+  for (std::size_t i = 0; i < work.size() && budget > 0; ++i) {
     const Face f = work[i];
     if (!m.is_live(f)) continue;
     if (i >= area.faces.size() && metric.length(centroid(m, f) - p) > radius) continue;
@@ -206,7 +151,7 @@ bool refine(SurfaceMesh& m, const Area& area, const Vec3d& p, double radius, dou
       v = split_edge(m, SurfaceMesh::edge(longest), to_float(mid));
     }
     if (!v.is_valid()) continue;
-    ++splits;
+    --budget;
     changed = true;
     for (Face g : m.faces(v)) work.push_back(g);
   }
@@ -242,10 +187,12 @@ Vec3d any_perpendicular(const Vec3d& n) {
 }
 
 //! What makes each shard a solid: its thickness in model units (0: none) and the "f:submesh" of
-//! the faces the solid adds, both resolved for this strike.
+//! the faces the solid adds, both resolved for this strike; and the thickness of the shell an
+//! open shard's mass properties are taken for (model units, positive).
 struct Solid {
   double thickness = 0;
   std::int32_t inner_submesh = 1;
+  double shell = 1;
 };
 
 //! The solid of an open shard: front, back copy `thickness` behind along the vertex normals
@@ -367,12 +314,16 @@ void measure_shard(Shard& shard, const FractureOptions& o, const Solid& solid) {
     boundary = false;
   }
   shard.closed = !boundary;
-  if (shard.closed) {
-    try {
+  try {
+    if (shard.closed) {
       shard.mass = mass_properties(shard.mesh, o.density);
-    } catch (const InvalidInputError&) {
-      shard.mass = MassProperties{};  // not a positive volume (folded by a thickness too large)
+    } else {
+      shard.shell_thickness = solid.shell;
+      shard.mass = shell_mass_properties(shard.mesh, o.density, solid.shell);
     }
+  } catch (const InvalidInputError&) {
+    // Not a positive volume (folded by a thickness too large) or no area: nothing to weigh.
+    shard.mass = MassProperties{};
   }
   if (o.hulls) {
     std::vector<Vec3> points;
@@ -389,7 +340,7 @@ void measure_shard(Shard& shard, const FractureOptions& o, const Solid& solid) {
 // ---- the steps of fracture(), in order ----
 
 //! Refuses an impact that is not finite, a mesh without faces, a FaceBvh of another mesh and a
-//! thickness out of proportion (options are checked by check_options()).
+//! thickness out of proportion (options are checked by fracture_break_points()).
 void check_input(const SurfaceMesh& mesh, const Vec3& impact, const FractureOptions& o, const FaceBvh* bvh) {
   if (!is_finite(impact))
     throw InvalidInputError("fracture: the impact (" + number(impact.x) + ", " + number(impact.y) + ", " +
@@ -397,7 +348,6 @@ void check_input(const SurfaceMesh& mesh, const Vec3& impact, const FractureOpti
   if (mesh.n_faces() == 0) throw InvalidInputError("fracture: the mesh has no face");
   if (bvh && bvh->mesh() != &mesh)
     throw InvalidInputError("fracture: the FaceBvh was built over another mesh");
-  check_thickness(mesh, o.thickness);
   if ((o.thickness > 0 || o.relative_thickness > 0) && mesh.face_properties().find_base(kSubmeshProperty) &&
       !mesh.get_face_property<std::int32_t>(kSubmeshProperty))
     throw InvalidInputError(std::string("fracture: the face property \"") + kSubmeshProperty +
@@ -422,8 +372,10 @@ std::int32_t inner_submesh(const SurfaceMesh& mesh, const FractureOptions& o) {
 }
 
 //! The nearest point of the surface to the impact, by bvh (brought up to date) or a tree of its
-//! own. Refuses an impact beyond the tolerance and a face without a neighbour.
-LocateResult locate_impact(SurfaceMesh& mesh, const Vec3& impact, const FractureOptions& o, FaceBvh* bvh) {
+//! own, and the diagonal of that tree's box. Refuses an impact beyond the tolerance and a face
+//! without a neighbour.
+LocateResult locate_impact(SurfaceMesh& mesh, const Vec3& impact, const FractureOptions& o, FaceBvh* bvh,
+                           double& diagonal) {
   std::optional<FaceBvh> own;
   FaceBvh* tree = bvh;
   if (tree) {
@@ -432,6 +384,7 @@ LocateResult locate_impact(SurfaceMesh& mesh, const Vec3& impact, const Fracture
     own.emplace(mesh);
     tree = &*own;
   }
+  diagonal = norm(to_double(tree->bounds().size()));
   const std::optional<LocateResult> hit = tree->closest_point(impact);
   if (!hit) throw InvalidInputError("fracture: no face found near the impact");
   const double tolerance = o.tolerance > 0 ? o.tolerance : 1e-3 * longest_edge(mesh, hit->face);
@@ -455,16 +408,29 @@ LocateResult locate_impact(SurfaceMesh& mesh, const Vec3& impact, const Fracture
 }
 
 //! The frame of the impact: the face normal, two directions in its plane (t1 along the grain if
-//! there is one), the metric, the length unit of the rings and the radius of the broken area.
+//! there is one), the metric, the model length of one unit of the rings' spacings, the break
+//! radius and the radius of the broken area (half the outer spacing farther), both model units.
 struct Frame {
   Vec3d normal, t1, t2;
   Metric metric;
-  double unit = 1, radius = 0;
+  double unit = 1, break_radius = 0, radius = 0;
 };
 
-Frame impact_frame(const SurfaceMesh& mesh, const LocateResult& hit, const FractureMaterial& mat) {
+//! \throw InvalidInputError for a break radius that is not positive in model units (a mesh of
+//!   zero extent).
+Frame impact_frame(const SurfaceMesh& mesh, const LocateResult& hit, const FractureMaterial& mat,
+                   double diagonal) {
   Frame f;
-  f.unit = mat.absolute ? 1.0 : mean_edge_length(mesh, hit.face);
+  const double scale = mat.units == FractureUnits::model          ? 1.0
+                       : mat.units == FractureUnits::edge_lengths ? mean_edge_length(mesh, hit.face)
+                                                                  : diagonal;
+  f.break_radius = mat.radius * scale;
+  if (!(f.break_radius > 0) || !std::isfinite(f.break_radius))
+    throw InvalidInputError("fracture: the break radius is " + number(f.break_radius) +
+                            " model units (radius " + number(mat.radius) + " in " +
+                            fracture_units_name(mat.units) + " of " + number(scale) +
+                            "), not a positive one");
+  f.unit = f.break_radius / fracture_material_radius(mat);
   f.normal = normalize(area_vector(mesh, hit.face));
   if (dot(f.normal, f.normal) == 0) f.normal = {0, 0, 1};
   f.t1 = any_perpendicular(f.normal);
@@ -478,7 +444,7 @@ Frame impact_frame(const SurfaceMesh& mesh, const LocateResult& hit, const Fract
     }
   }
   f.t2 = cross(f.normal, f.t1);
-  f.radius = (fracture_material_radius(mat) + 0.5 * mat.rings.back().spacing) * f.unit;
+  f.radius = f.break_radius + 0.5 * mat.rings.back().spacing * f.unit;
   return f;
 }
 
@@ -489,10 +455,11 @@ Area broken_area(SurfaceMesh& mesh, Vertex centre, const Vec3d& p, const Frame& 
   Area area;
   area.gather(mesh, centre, p, frame.radius, frame.metric);
   result.seconds.scatter += seconds_since(t);
+  std::size_t budget = kFractureMaxRefineSplits;
   // Splits change the centroids and so the area's rim: again until nothing is split (a polygon or a
   // long edge newly reached at the rim), a few rounds at most.
   for (int round = 0;
-       round < 8 && refine(mesh, area, p, frame.radius, mat.refine_edge * frame.unit, frame.metric);
+       round < 8 && refine(mesh, area, p, frame.radius, mat.refine_edge * frame.unit, frame.metric, budget);
        ++round) {
     result.seconds.cut += seconds_since(t);
     area.gather(mesh, centre, p, frame.radius, frame.metric);
@@ -617,33 +584,34 @@ void solids(std::vector<Shard>& shards, const FractureOptions& o, const Solid& s
 
 }  // namespace
 
-std::size_t fracture_break_points(const FractureOptions& options) { return check_options(options); }
-
 // The pipeline: locate the impact, take its frame, cut it into the surface, gather the broken area
 // (refined where its faces are large), scatter the break points, grow a cell about each, detach
 // the cells and make each a solid. Each step is a function of its own above.
 FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOptions& o, FaceBvh* bvh) {
-  const std::size_t total_points = check_options(o);
+  const std::size_t total_points = fracture_break_points(o);  // checks the options
   check_input(mesh, impact, o, bvh);
   FractureResult result;
   Clock::time_point t = Clock::now();
 
-  const LocateResult hit = locate_impact(mesh, impact, o, bvh);
+  double diagonal = 0;
+  const LocateResult hit = locate_impact(mesh, impact, o, bvh, diagonal);
   result.impact_face = hit.face;
   result.impact_point = hit.point;
+  check_thickness(diagonal, o.thickness);
   result.seconds.locate = seconds_since(t);
   if (total_points == 0) return result;
 
-  const Frame frame = impact_frame(mesh, hit, o.material);
-  // The solid's thickness in model units (a relative one is known only now, from the frame's unit;
-  // check_options() bounded it) and the inner faces' submesh, both settled before the mesh is edited.
+  const Frame frame = impact_frame(mesh, hit, o.material, diagonal);
+  result.break_radius = frame.break_radius;
+  // The solid's thickness in model units (a relative one is known only now, from the break radius;
+  // fracture_break_points() bounded it), the inner faces' submesh and the shell's thickness, all settled
+  // before the mesh is edited.
   Solid solid;
   if (o.thickness > 0 || o.relative_thickness > 0) {
-    solid.thickness = o.thickness > 0
-                          ? o.thickness
-                          : o.relative_thickness * fracture_material_radius(o.material) * frame.unit;
+    solid.thickness = o.thickness > 0 ? o.thickness : o.relative_thickness * frame.break_radius;
     solid.inner_submesh = inner_submesh(mesh, o);
   }
+  solid.shell = o.shell_thickness > 0 ? o.shell_thickness : kFractureDefaultShellRatio * frame.break_radius;
   Vec3 impact_on_surface;
   const Vertex centre = cut_impact(mesh, hit, impact_on_surface);
   result.impact_point = impact_on_surface;
@@ -661,8 +629,12 @@ FractureResult fracture(SurfaceMesh& mesh, const Vec3& impact, const FractureOpt
   if (bvh) bvh->update();
   result.seconds.detach += seconds_since(t);
 
-  if (o.relative_thickness > 0)
-    solid.thickness = std::min(solid.thickness, o.relative_thickness * span(result.shards));
+  if (o.relative_thickness > 0 || o.shell_thickness == 0) {
+    const double size = span(result.shards);
+    if (o.relative_thickness > 0) solid.thickness = std::min(solid.thickness, o.relative_thickness * size);
+    if (o.shell_thickness == 0 && size > 0)
+      solid.shell = std::min(solid.shell, kFractureDefaultShellRatio * size);
+  }
   solids(result.shards, o, solid);
   result.seconds.hulls += seconds_since(t);
   return result;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/locate.h"
 #include "hedge/error.h"
 #include "locate_internal.h"
@@ -271,6 +272,17 @@ void FaceBvh::update_slack() {
   double diag2 = 0;
   for (int a = 0; a < 3; ++a) diag2 += sq(double(r.hi[a]) - r.lo[a]);
   slack_sq_ = diag2 * 1e-12;
+}
+
+BoundingBox FaceBvh::bounds() const {
+  BoundingBox box;
+  if (empty()) return box;
+  const Node& r = nodes_[0];
+  if (!(r.lo[0] <= r.hi[0])) return box;
+  box.min = {r.lo[0], r.lo[1], r.lo[2]};
+  box.max = {r.hi[0], r.hi[1], r.hi[2]};
+  box.empty = false;
+  return box;
 }
 
 void FaceBvh::check_fresh() const {

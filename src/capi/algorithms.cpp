@@ -250,7 +250,8 @@ hedge_status hedge_fracture_options_default(int32_t preset, hedge_fracture_optio
     o.ring_count = static_cast<std::uint32_t>(m.rings.size());
     for (std::size_t i = 0; i < m.rings.size(); ++i)
       o.rings[i] = {m.rings[i].spacing, m.rings[i].jitter, m.rings[i].points, 0};
-    o.absolute = m.absolute ? 1 : 0;
+    o.units = static_cast<std::int32_t>(m.units);
+    o.radius = m.radius;
     o.grain[0] = m.grain.x, o.grain[1] = m.grain.y, o.grain[2] = m.grain.z;
     o.grain_stretch = m.grain_stretch;
     o.refine_edge = m.refine_edge;
@@ -261,6 +262,7 @@ hedge_status hedge_fracture_options_default(int32_t preset, hedge_fracture_optio
     o.hulls = d.hulls ? 1 : 0;
     o.inner_submesh = d.inner_submesh;
     o.relative_thickness = d.relative_thickness;
+    o.shell_thickness = d.shell_thickness;
   });
 }
 
@@ -281,7 +283,8 @@ hedge_status hedge_fracture_options_at_radius(hedge_fracture_options* options, d
     const FractureMaterial scaled = fracture_material_at_radius(m, radius);
     for (std::uint32_t i = 0; i < o.ring_count; ++i) o.rings[i].spacing = scaled.rings[i].spacing;
     o.refine_edge = scaled.refine_edge;
-    o.absolute = 1;
+    o.units = static_cast<std::int32_t>(scaled.units);
+    o.radius = scaled.radius;
   });
 }
 
@@ -303,7 +306,9 @@ hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z,
     f.material.rings.clear();
     for (std::uint32_t i = 0; i < o.ring_count; ++i)
       f.material.rings.push_back({o.rings[i].points, o.rings[i].spacing, o.rings[i].jitter});
-    f.material.absolute = need_bool(o.absolute, "absolute");
+    // fracture() refuses (naming the field) units outside the enum and a radius that is not positive.
+    f.material.units = static_cast<FractureUnits>(o.units);
+    f.material.radius = o.radius;
     f.material.grain = {o.grain[0], o.grain[1], o.grain[2]};
     f.material.grain_stretch = o.grain_stretch;
     f.material.refine_edge = o.refine_edge;
@@ -314,6 +319,7 @@ hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z,
     f.hulls = need_bool(o.hulls, "hulls");
     f.inner_submesh = o.inner_submesh;
     f.relative_thickness = o.relative_thickness;
+    f.shell_thickness = o.shell_thickness;
     const Vec3 impact = need_point(x, y, z, "fracture impact");
     // The library's limits first (rings, break points in all, each field): an illegal material is
     // HEDGE_ERROR_INVALID_ARGUMENT naming the field, before any buffer size is looked at. Within
@@ -348,7 +354,7 @@ hedge_status hedge_mesh_fracture(hedge_mesh* mesh, float x, float y, float z,
       out.centre_of_mass[1] = s.mass.centre_of_mass.y;
       out.centre_of_mass[2] = s.mass.centre_of_mass.z;
       std::copy(s.mass.inertia.begin(), s.mass.inertia.end(), out.inertia);
-      if (s.closed) {
+      if (s.mass.mass > 0) {
         const Vec3d& m = s.mass.principal_moments;
         out.principal_moments[0] = m.x, out.principal_moments[1] = m.y, out.principal_moments[2] = m.z;
         for (int a = 0; a < 3; ++a) {

@@ -89,6 +89,11 @@ void expect_sound(const SurfaceMesh& mesh, const FractureResult& r, double area_
     } else {
       EXPECT_EQ(s.closed, !has_boundary(s.mesh));
     }
+    if (!s.closed) {  // a thin shell's mass properties, ready for a physics engine
+      EXPECT_GT(s.shell_thickness, 0);
+      EXPECT_NEAR(s.mass.volume, s.area * s.shell_thickness, 1e-9 * s.mass.volume);
+      EXPECT_GT(s.mass.principal_moments.x, 0);  // the smallest: positive definite
+    }
     expect_hull_contains(s);
   }
   EXPECT_NEAR(total, area_before, 1e-5 * area_before);
@@ -113,8 +118,11 @@ TEST(Fracture, GlassBreaksAPlateIntoManyShardsOfSeveralFaces) {
   // The broken area is local: far corners of the plate keep their faces.
   EXPECT_GT(mesh.n_faces(), 60u * 60u * 2u - faces);
   EXPECT_LT(std::abs(r.impact_point.x - 30.3f), 1e-5f);
+  // The break radius is glass's fraction of the plate's diagonal; the area reaches half the outer
+  // spacing (2.4 of 7) farther.
+  EXPECT_NEAR(r.break_radius, 0.13 * diagonal(mesh), 1e-4);
   for (const Shard& s : r.shards) {
-    EXPECT_LT(std::hypot(s.centroid.x - 30.3, s.centroid.y - 29.6), 10.0);
+    EXPECT_LT(std::hypot(s.centroid.x - 30.3, s.centroid.y - 29.6), r.break_radius * (1 + 1.2 / 7));
     EXPECT_NEAR(s.centroid.z, 0, 1e-9);
   }
   EXPECT_TRUE(mesh.validate().empty());
@@ -257,15 +265,14 @@ TEST(Fracture, RelativeThicknessIsBoundedByWhatBroke) {
   EXPECT_NEAR(volume, area * thickness, 1e-3 * area);  // the whole plate, 0.28 thick (not 50)
 }
 
-// A thickness relative to the break radius: glass reaches 7 mean edge lengths of the impact face.
+// A thickness relative to the break radius: glass reaches 0.13 of the plate's diagonal.
 TEST(Fracture, RelativeThicknessIsAFractionOfTheBreakRadius) {
   SurfaceMesh mesh = plate(50);
   const double area = surface_area(mesh);
   FractureOptions o;
   o.relative_thickness = 0.05;
   o.seed = 5;
-  const double edge = (2 + std::sqrt(2.0)) / 3;  // the mean edge of the plate's triangles
-  const double thickness = 0.05 * fracture_material_radius(o.material) * edge;
+  const double thickness = 0.05 * 0.13 * 50 * std::sqrt(2.0);
   const FractureResult r = fracture(mesh, {25.1f, 24.7f, 0}, o);
   expect_sound(mesh, r, area, thickness);
   for (const Shard& s : r.shards) EXPECT_NEAR(s.mass.volume, s.area * thickness, 1e-4 * s.area);
@@ -463,9 +470,12 @@ TEST(Fracture, SingleTriangleIsTooSmallToBreakTwoBreak) {
   const test::Snapshot before = test::snapshot(mesh);
   EXPECT_THROW(fracture(mesh, {0.2f, 0.2f, 0}, {}), InvalidInputError);
   EXPECT_TRUE(test::snapshot(mesh) == before);
-  // Two triangles: the whole small mesh breaks off, in more than one piece.
+  // Two triangles and a break radius beyond them: the whole small mesh breaks off, in more than one
+  // piece (refined to the cells' size).
   SurfaceMesh two = plate(1);
-  const FractureResult r = fracture(two, {0.3f, 0.6f, 0}, {});
+  FractureOptions o;
+  o.material.radius = 2;
+  const FractureResult r = fracture(two, {0.3f, 0.6f, 0}, o);
   expect_sound(two, r, 1.0, 0);
   EXPECT_GE(r.shards.size(), 2u);
   EXPECT_EQ(two.n_faces(), 0u);
@@ -584,12 +594,13 @@ TEST(Fracture, PolygonFacesAreSplitWhereTheyBreak) {
   EXPECT_TRUE(mesh.validate().empty());
 }
 
-TEST(Fracture, AbsoluteSpacingRefinesACoarseMesh) {
+TEST(Fracture, ModelUnitsRefineACoarseMesh) {
   SurfaceMesh mesh = plate(4);  // 32 triangles, edges of 1
   const double area = surface_area(mesh);
   FractureOptions o;
   o.material.rings = {{5, 0.3, 0.2}, {8, 0.4, 0.2}};
-  o.material.absolute = true;
+  o.material.units = FractureUnits::model;
+  o.material.radius = 0.7;
   o.material.refine_edge = 0.15;
   const FractureResult r = fracture(mesh, {2.1f, 1.9f, 0}, o);
   expect_sound(mesh, r, area, 0);
@@ -603,6 +614,24 @@ TEST(Fracture, AbsoluteSpacingRefinesACoarseMesh) {
             0.1501);
   }
   EXPECT_TRUE(mesh.validate().empty());
+}
+
+// Cells far smaller than the faces: the refinement stops after kFractureMaxRefineSplits splits in
+// the strike (each adds at most two faces), and the shards are still sound.
+TEST(Fracture, RefinementStopsAtItsLimitPerStrike) {
+  SurfaceMesh mesh = plate(4);
+  const double area = surface_area(mesh);
+  const std::size_t before = mesh.n_faces();
+  FractureOptions o;
+  o.material.units = FractureUnits::model;
+  o.material.radius = 1.5;
+  o.material.refine_edge = 1e-4;
+  const FractureResult r = fracture(mesh, {2.1f, 1.9f, 0}, o);
+  expect_sound(mesh, r, area, 0);
+  std::size_t faces = mesh.n_faces();
+  for (const Shard& s : r.shards) faces += s.mesh.n_faces();
+  EXPECT_GT(faces, before + kFractureMaxRefineSplits);
+  EXPECT_LE(faces, before + 2 * kFractureMaxRefineSplits + 4);
 }
 
 // Random impacts over the meshes of data/: plates, closed and open surfaces. HEDGE_FRACTURE_IMPACTS
@@ -682,7 +711,8 @@ TEST(Fracture, ANonFinitePositionInTheBrokenAreaStaysInTheMeshAndInNoShard) {
   const Vec3 good = m.position(poisoned);
   test::poison(m, poisoned);
   FractureOptions o;
-  o.seed = 5;  // no thickness: with one, check_thickness() reads the whole box and refuses the NaN
+  o.seed = 5;
+  o.material.refine_edge = 10;  // no refinement: the poisoned vertex's faces keep their shape
   const FractureResult r = fracture(m, impact, o, &bvh);
   ASSERT_GT(r.shards.size(), 3u);
   for (const Shard& s : r.shards) {

@@ -1,6 +1,8 @@
 // FaceBvh construction: the shape of the tree each split strategy builds.
 #include <gtest/gtest.h>
 
+#include "hedge/algorithms/detach_faces.h"
+#include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/locate.h"
 #include "hedge/core/build.h"
 #include "locate_reference.h"
@@ -23,6 +25,27 @@ TEST(FaceBvh, ShapeOfTheTree) {
     EXPECT_GE(s.height, 11u);  // ceil(log2(5856 / 4))
     EXPECT_EQ(s.dead_slots, 0u);
   }
+}
+
+// The root box is the mesh's box (no isolated vertex here), without a pass over the vertices; an
+// empty tree has none, and faces removed later keep the box until the next build.
+TEST(FaceBvhBuild, BoundsAreTheRootBox) {
+  SurfaceMesh m = load("spot_triangulated.obj");
+  EXPECT_TRUE(FaceBvh().bounds().empty);
+  FaceBvh bvh(m);
+  const BoundingBox expected = bounding_box(m), got = bvh.bounds();
+  ASSERT_FALSE(got.empty);
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_EQ(got.min[a], expected.min[a]) << "axis " << a;
+    EXPECT_EQ(got.max[a], expected.max[a]) << "axis " << a;
+  }
+  std::vector<Face> removed;  // the faces at the far end in x
+  for (Face f : m.faces())
+    if (hedge::centroid(m, f).x > expected.max.x - 0.1 * expected.size().x) removed.push_back(f);
+  detach_faces(m, removed);
+  ASSERT_LT(bounding_box(m).max.x, expected.max.x);
+  bvh.update();
+  EXPECT_EQ(bvh.bounds().max.x, expected.max.x);
 }
 
 TEST(FaceBvhBuild, RefusesANonFinitePosition) {

@@ -163,5 +163,52 @@ TEST(MassProperties, RefusesANonFinitePosition) {
   test::expect_refuses_non_finite(m, Vertex(3), "mass_properties", [&] { mass_properties(m); });
 }
 
+// A unit square plate (grid of 2 x 2 squares of side 0.5) t thick: the slab's textbook inertia.
+TEST(ShellMassProperties, FlatPlateIsASlab) {
+  IndexedMesh in = test::grid(2, true);
+  for (Vec3& p : in.positions) p = p * 0.5f + Vec3{3, 4, 5};
+  const double t = 0.1, density = 2;
+  const MassProperties m = shell_mass_properties(build(in), density, t);
+  EXPECT_NEAR(m.volume, t, 1e-12);
+  EXPECT_NEAR(m.mass, density * t, 1e-12);
+  EXPECT_NEAR(norm(m.centre_of_mass - Vec3d{3.5, 4.5, 5}), 0, 1e-12);
+  const double in_plane = m.mass * (1 + t * t) / 12, normal = m.mass / 6;
+  expect_tensor(m, {{in_plane, 0, 0}, {0, in_plane, 0}, {0, 0, normal}}, 1e-12);
+  for (int k = 0; k < 3; ++k) EXPECT_GT(m.principal_moments[std::size_t(k)], 0);
+}
+
+// A thin-walled cube of side 1: (5/18) m a^2 for the surface, plus the thickness term of the four
+// walls parallel to each axis (m / 6 t^2 / 12 each).
+TEST(ShellMassProperties, HollowCube) {
+  const double t = 0.01;
+  const MassProperties m = shell_mass_properties(box(1, 1, 1), 1, t);
+  EXPECT_NEAR(m.mass, 6 * t, 1e-12);
+  const double d = m.mass * (5.0 / 18 + t * t / 18);
+  expect_tensor(m, {{d, 0, 0}, {0, d, 0}, {0, 0, d}}, 1e-12);
+}
+
+TEST(ShellMassProperties, BadInputIsRefusedWithAReason) {
+  auto expect_refused = [](auto&& call, const std::string& part) {
+    std::string what = "no error";
+    try {
+      call();
+    } catch (const InvalidInputError& e) {
+      what = e.what();
+    }
+    EXPECT_NE(what.find(part), std::string::npos) << what;
+  };
+  const SurfaceMesh plate = build(test::grid(2, true));
+  expect_refused([&] { shell_mass_properties(plate, 0, 1); },
+                 "shell_mass_properties: density must be finite");
+  expect_refused([&] { shell_mass_properties(plate, 1, -1); },
+                 "thickness must be finite and positive, got -1");
+  expect_refused([&] { shell_mass_properties(plate, 1, std::nan("")); }, "thickness");
+  expect_refused([&] { shell_mass_properties(build(test::grid(2, false)), 1, 1); }, "face 0 has 4 corners");
+  expect_refused([&] { shell_mass_properties(SurfaceMesh(), 1, 1); }, "an area of 0,");
+  SurfaceMesh poisoned = build(test::tetrahedron());
+  test::expect_refuses_non_finite(poisoned, Vertex(3), "shell_mass_properties",
+                                  [&] { shell_mass_properties(poisoned, 1, 1); });
+}
+
 }  // namespace
 }  // namespace hedge

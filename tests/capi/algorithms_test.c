@@ -1,5 +1,7 @@
 /* The C ABI's algorithms (src/capi/algorithms.cpp): geometry, normals, distance, smoothing,
  * decimation, fracture, subdivision. */
+#include <stddef.h>
+
 #include "capi_test.h"
 
 /* ---------------------------------------------------------------------------------------------- */
@@ -260,13 +262,38 @@ void test_decimate(void) {
   CHECK_OK(hedge_mesh_destroy(field));
 }
 
+/* The library's FractureMaterial.TheDefaultStrikeOnSpotThatEveryBindingChecks gives these numbers:
+ * the C ABI's defaults (NULL options, the glass preset) are the library's. */
+static void test_fracture_default_strike_on_spot(void) {
+  hedge_mesh* spot = NULL;
+  CHECK_OK(hedge_mesh_read(HEDGE_DATA_DIR "/spot_triangulated.obj", NULL, NULL, &spot));
+  hedge_fracture_shard shards[40];
+  uint32_t count = 0;
+  CHECK_OK(hedge_mesh_fracture(spot, 0.380073f, -0.0641595f, 0.195141f, NULL, shards, 40, &count));
+  CHECK(count == 40);
+  double area = 0, mass = 0;
+  for (uint32_t i = 0; i < count; ++i) {
+    area += shards[i].area, mass += shards[i].mass;
+    CHECK(shards[i].closed == 0 && shards[i].mass > 0 && shards[i].principal_moments[0] > 0);
+    CHECK_OK(hedge_mesh_destroy(shards[i].mesh));
+    if (shards[i].hull != NULL) CHECK_OK(hedge_mesh_destroy(shards[i].hull));
+  }
+  CHECK(fabs(area - 0.498213) < 1e-6 && fabs(mass - 0.00838123) < 1e-8);
+  CHECK_VALID(spot);
+  CHECK_OK(hedge_mesh_destroy(spot));
+}
+
 void test_fracture(void) {
-  CHECK(sizeof(hedge_fracture_ring) == 24 && sizeof(hedge_fracture_options) == 472 &&
+  test_fracture_default_strike_on_spot();
+  CHECK(sizeof(hedge_fracture_ring) == 24 && sizeof(hedge_fracture_options) == 488 &&
         sizeof(hedge_fracture_shard) == 264);
+  CHECK(offsetof(hedge_fracture_options, units) == 388 && offsetof(hedge_fracture_options, radius) == 472 &&
+        offsetof(hedge_fracture_options, shell_thickness) == 480);
   hedge_fracture_options o;
   CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o));
   CHECK(o.ring_count == 4 && o.rings[0].points == 4 && o.rings[3].points == 16 && o.density == 1 &&
-        o.hulls == 1 && o.thickness == 0 && o.absolute == 0);
+        o.hulls == 1 && o.thickness == 0 && o.units == HEDGE_FRACTURE_UNITS_DIAGONAL_FRACTION &&
+        o.radius == 0.13 && o.shell_thickness == 0);
   CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_WOOD, &o));
   CHECK(o.grain[0] == 1 && o.grain_stretch == 3);
   CHECK_STATUS(hedge_fracture_options_default(7, &o), HEDGE_ERROR_INVALID_ARGUMENT);
@@ -276,7 +303,8 @@ void test_fracture(void) {
   CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o));
   CHECK(o.inner_submesh == -1 && o.relative_thickness == 0);
   CHECK_OK(hedge_fracture_options_at_radius(&o, 14));
-  CHECK(o.absolute == 1 && fabs(o.rings[0].spacing - 2) < 1e-12 && fabs(o.rings[3].spacing - 4.8) < 1e-12);
+  CHECK(o.units == HEDGE_FRACTURE_UNITS_MODEL && o.radius == 14 && fabs(o.rings[0].spacing - 2) < 1e-12 &&
+        fabs(o.rings[3].spacing - 4.8) < 1e-12);
   o.ring_count = 0;
   CHECK_STATUS(hedge_fracture_options_at_radius(&o, 1), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_ERROR_HAS("no ring");
@@ -322,6 +350,18 @@ void test_fracture(void) {
   o.rings[1].points = 6000;
   CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, &o, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_ERROR_HAS("10000");
+  CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o));
+  o.units = 3;
+  CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, &o, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("units is 3");
+  o.units = HEDGE_FRACTURE_UNITS_MODEL;
+  o.radius = 0;
+  CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, &o, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("radius");
+  o.radius = 1;
+  o.shell_thickness = -1;
+  CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, &o, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("shell_thickness");
   CHECK_OK(hedge_fracture_options_default(HEDGE_FRACTURE_GLASS, &o));
   o.thickness = 1e30;
   CHECK_STATUS(hedge_mesh_fracture(plate, 15, 15, 0, &o, shards, 40, &count), HEDGE_ERROR_INVALID_ARGUMENT);

@@ -2,8 +2,8 @@
  * picking.cpp), compiled as C11: strikes in a row on one mesh, whose tree each strike keeps up to
  * date, give the same shards as the same strikes on a twin mesh whose tree is freed before each
  * strike (so each strike builds a fresh one); a strike where an earlier one removed the faces finds
- * no surface there; a break radius in model units, a relative thickness, the inner faces' submesh
- * and the principal moments and axes. The rest of hedge_mesh_fracture() is tested in
+ * no surface there; open shards weigh as thin shells; a break radius in model units, a relative thickness,
+ * the inner faces' submesh and the principal moments and axes. The rest of hedge_mesh_fracture() is tested in
  * algorithms_test.c.
  * Each CHECK reports file:line and exits non-zero on failure. */
 #include "capi_test.h"
@@ -42,6 +42,8 @@ static uint32_t strike_both(hedge_mesh* cached, hedge_mesh* fresh, float x, floa
   CHECK(na > 0 && na == nb);
   for (uint32_t i = 0; i < na && i < nb; ++i) {
     CHECK(a[i].area == b[i].area && a[i].area > 0);
+    /* Open shards weigh as thin shells by default: a mass and a positive-definite inertia. */
+    CHECK(a[i].closed == 0 && a[i].mass > 0 && a[i].mass == b[i].mass && a[i].principal_moments[0] > 0);
     CHECK(a[i].centroid[0] == b[i].centroid[0] && a[i].centroid[1] == b[i].centroid[1]);
     check_same_mesh(a[i].mesh, b[i].mesh);
     CHECK_VALID(a[i].mesh);
@@ -147,12 +149,14 @@ static void test_radius_thickness_inner_faces_and_principal_frame(void) {
   CHECK_ERROR_HAS("radius");
   CHECK_STATUS(hedge_fracture_options_at_radius(&o, NAN), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK_STATUS(hedge_fracture_options_at_radius(NULL, 1), HEDGE_ERROR_INVALID_ARGUMENT);
-  CHECK(o.absolute == 0 && o.rings[0].spacing == 1.0 && o.refine_edge == refine);
+  CHECK(o.units == HEDGE_FRACTURE_UNITS_DIAGONAL_FRACTION && o.rings[0].spacing == 1.0 &&
+        o.refine_edge == refine);
   CHECK(o.inner_submesh == -1 && o.relative_thickness == 0);
   CHECK_OK(hedge_fracture_options_at_radius(&o, 3.5));
   double sum = 0;
   for (uint32_t i = 0; i < o.ring_count; ++i) sum += o.rings[i].spacing;
-  CHECK(o.absolute == 1 && fabs(sum - 3.5) < 1e-12 && fabs(o.refine_edge - refine * 0.5) < 1e-12);
+  CHECK(o.units == HEDGE_FRACTURE_UNITS_MODEL && o.radius == 3.5 && fabs(sum - 3.5) < 1e-12 &&
+        fabs(o.refine_edge - refine * 0.5) < 1e-12);
 
   for (int explicit_inner = 0; explicit_inner < 2; ++explicit_inner) {
     hedge_mesh* plate = make_plate(30);

@@ -68,6 +68,44 @@ TEST_F(HedgeCli, FractureBreakRadiusIsInModelUnits) {
   EXPECT_NE(r.err.find("--break-radius"), std::string::npos) << r.err;
 }
 
+// The presets' break radius is a fraction of the mesh's diagonal by default; --units and --radius
+// set it; open shards weigh as thin shells (--shell-thickness, or a twentieth of the break radius).
+TEST_F(HedgeCli, FractureUnitsRadiusAndShellThickness) {
+  const std::vector<std::string> base = {"fracture",    data("spot_triangulated.obj"),
+                                         "--impact",    "0.0,0.0,0.0",
+                                         "--tolerance", "10",
+                                         "--seed",      "4",
+                                         "--json",      "-o"};
+  auto strike = [&](const std::string& name, std::vector<std::string> extra) {
+    std::vector<std::string> args = base;
+    args.push_back(tmp(name).string());
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_json(args);
+  };
+  const json preset = strike("preset", {});
+  EXPECT_EQ(preset["units"], "diagonal_fraction");
+  EXPECT_EQ(preset["radius"].get<double>(), 0.13);
+  const double diagonal = 2.58809;  // of spot's bounding box
+  EXPECT_NEAR(preset["break_radius"].get<double>(), 0.13 * diagonal, 1e-4);
+  for (const json& s : preset["shards"]) {
+    EXPECT_FALSE(s["closed"].get<bool>());
+    EXPECT_NEAR(s["shell_thickness"].get<double>(), 0.05 * 0.13 * diagonal, 1e-4);
+    EXPECT_GT(s["mass"]["mass"].get<double>(), 0);
+    EXPECT_GT(s["mass"]["principal_moments"][0].get<double>(), 0);
+  }
+  const json model = strike("model", {"--units", "model", "--radius", "0.2", "--shell-thickness", "0.01"});
+  EXPECT_EQ(model["units"], "model");
+  EXPECT_EQ(model["break_radius"].get<double>(), 0.2);
+  for (const json& s : model["shards"]) {
+    EXPECT_EQ(s["shell_thickness"].get<double>(), 0.01);
+    EXPECT_NEAR(s["volume"].get<double>(), 0.01 * s["area"].get<double>(), 1e-12);
+  }
+  const Result r = run({"fracture", data("spot_triangulated.obj"), "--impact", "0,0,0", "--tolerance", "10",
+                        "--units", "metres", "-o", tmp("bad").string()});
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("--units"), std::string::npos) << r.err;
+}
+
 TEST_F(HedgeCli, FractureTwoRunsGiveByteIdenticalFolders) {
   const std::vector<std::string> base = {"fracture",    data("three_peaks.off"),
                                          "--impact",    "0.1,0.2,10",
@@ -104,6 +142,15 @@ TEST_F(HedgeCli, FractureReadsAMaterialFile) {
   EXPECT_EQ(j["material"], "two rings");
   EXPECT_GE(j["shards"].size(), 2u);
   EXPECT_LE(j["shards"].size(), 8u);
+  EXPECT_EQ(j["units"], "diagonal_fraction");  // a file's default, with the default radius
+  EXPECT_EQ(j["radius"].get<double>(), 0.1);
+  write_text(tmp("metres.json"),
+             R"({"rings": [{"points": 3, "spacing": 2}], "units": "model", "radius": 4.5})");
+  const json m =
+      run_json({"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--tolerance", "100",
+                "--material", tmp("metres.json").string(), "-o", tmp("out").string(), "--json"});
+  EXPECT_EQ(m["units"], "model");
+  EXPECT_EQ(m["break_radius"].get<double>(), 4.5);
 }
 
 TEST_F(HedgeCli, FractureBadMaterialFileNamesTheField) {
@@ -119,6 +166,17 @@ TEST_F(HedgeCli, FractureBadMaterialFileNamesTheField) {
                         tmp("typo.json").string(), "-o", tmp("out").string()});
   EXPECT_EQ(t.code, 1);
   EXPECT_NE(t.err.find("'grian'"), std::string::npos) << t.err;
+  // The former "absolute" is refused, saying what replaced it.
+  write_text(tmp("old.json"), R"({"rings": [{"points": 3, "spacing": 2}], "absolute": true})");
+  const Result a = run({"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--material",
+                        tmp("old.json").string(), "-o", tmp("out").string()});
+  EXPECT_EQ(a.code, 1);
+  EXPECT_NE(a.err.find("'absolute' was replaced by units and radius"), std::string::npos) << a.err;
+  write_text(tmp("units.json"), R"({"rings": [{"points": 3, "spacing": 2}], "units": "metres"})");
+  const Result u = run({"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--material",
+                        tmp("units.json").string(), "-o", tmp("out").string()});
+  EXPECT_EQ(u.code, 1);
+  EXPECT_NE(u.err.find("'units' must be"), std::string::npos) << u.err;
   write_text(tmp("broken.json"), R"({"rings": [)");
   expect_data_error({"fracture", data("three_peaks.off"), "--impact", "0,0,0", "--material",
                      tmp("broken.json").string(), "-o", tmp("out").string()},

@@ -1,4 +1,5 @@
-// hedge fracture IN --impact x,y,z --material NAME|FILE.json --seed S [--break-radius R] -o DIR:
+// hedge fracture IN --impact x,y,z --material NAME|FILE.json --seed S [--radius R --units U]
+// [--break-radius R] -o DIR:
 // break a mesh at an impact and write the remaining mesh, one OBJ per shard and summary.json into DIR.
 #include "hedge/algorithms/fracture.h"
 
@@ -32,7 +33,8 @@ using nlohmann::json;
 struct FractureCommandOptions {
   std::string input, output, material = "glass", impact;
   std::uint64_t seed = 0;
-  double thickness = 0, density = 1, tolerance = 0, break_radius = 0;
+  double thickness = 0, density = 1, tolerance = 0, break_radius = 0, radius = 0, shell_thickness = 0;
+  std::string units;
   bool json = false;
   LoadOptions load;
 };
@@ -71,6 +73,16 @@ FractureMaterial material_from(const std::string& text) {
   return fracture_material(text);  // throws, listing the presets
 }
 
+const FractureUnits kAllUnits[] = {FractureUnits::diagonal_fraction, FractureUnits::model,
+                                   FractureUnits::edge_lengths};
+
+FractureUnits units_from(const std::string& text) {
+  for (FractureUnits u : kAllUnits)
+    if (text == fracture_units_name(u)) return u;
+  throw CLI::ValidationError("--units",
+                             "must be diagonal_fraction, model or edge_lengths, got '" + text + "'");
+}
+
 json vec(const Vec3d& v) { return json::array({v.x, v.y, v.z}); }
 
 //! Writes `text` to `path` through a temporary file in the same folder and a rename.
@@ -99,7 +111,10 @@ int run_fracture(const FractureCommandOptions& o) {
   const Vec3 impact = parse_impact(o.impact);
   FractureOptions f;
   f.material = material_from(o.material);
+  if (!o.units.empty()) f.material.units = units_from(o.units);
+  if (o.radius > 0) f.material.radius = o.radius;
   if (o.break_radius > 0) f.material = fracture_material_at_radius(f.material, o.break_radius);
+  f.shell_thickness = o.shell_thickness;
   f.seed = o.seed;
   f.thickness = o.thickness;
   f.density = o.density;
@@ -120,7 +135,9 @@ int run_fracture(const FractureCommandOptions& o) {
   summary["impact_on_surface"] = vec(to_double(r.impact_point));
   summary["material"] = f.material.name;
   summary["seed"] = o.seed;
-  summary["break_radius"] = o.break_radius;
+  summary["units"] = fracture_units_name(f.material.units);
+  summary["radius"] = f.material.radius;
+  summary["break_radius"] = r.break_radius;
   summary["thickness"] = o.thickness;
   summary["density"] = o.density;
   summary["remaining"] = {
@@ -142,6 +159,7 @@ int run_fracture(const FractureCommandOptions& o) {
                       {"centroid", vec(s.centroid)},
                       {"area", s.area},
                       {"volume", s.mass.volume},
+                      {"shell_thickness", s.shell_thickness},
                       {"closed", s.closed},
                       {"mass", m},
                       {"hull", {{"vertices", s.hull.mesh.n_vertices()}, {"faces", s.hull.mesh.n_faces()}}}});
@@ -189,15 +207,26 @@ void add_fracture_arguments(CLI::App* app, FractureCommandOptions* o) {
                   "glass, stone, wood, ice, or a material file FILE.json (docs/fracture.md)")
       ->capture_default_str();
   add_seed_option(*app, o->seed, "Seed of the break points");
+  app->add_option("--units", o->units,
+                  "Units of the break radius: diagonal_fraction (of the mesh's bounding box, the presets), "
+                  "model, or edge_lengths (of the impact face); default: the material's")
+      ->check(CLI::IsMember({"diagonal_fraction", "model", "edge_lengths"}));
+  add_real_option(*app, "--radius", o->radius,
+                  "The break radius (the outer ring's) in the units; 0: the material's (glass 0.13, stone "
+                  "0.14, wood and ice 0.11 of the diagonal)",
+                  0);
   add_real_option(*app, "--break-radius", o->break_radius,
-                  "The outer ring this far from the impact (model units), the material scaled to it; 0: the "
-                  "material's own spacings",
+                  "The break radius in model units (the same as --units model --radius R, the material's "
+                  "spacings scaled to it); 0: as --units and --radius say",
                   0);
   app->add_option("-o,--output", o->output, "Output folder (created if missing)")->required();
   add_real_option(*app, "--thickness", o->thickness,
                   "Extrude each shard into a solid this thick (model units); 0: none", 0);
   add_real_option(*app, "--density", o->density, "Mass per unit volume for the mass properties", 0, kInf,
                   true);
+  add_real_option(*app, "--shell-thickness", o->shell_thickness,
+                  "Open shards weigh as a thin shell this thick (model units); 0: 0.05 of the break radius",
+                  0);
   add_real_option(
       *app, "--tolerance", o->tolerance,
       "Largest distance from the impact to the surface (model units); 0: 1e-3 of the nearest face's "

@@ -35,13 +35,18 @@ FractureMaterial parse_material_json(std::string_view text, const std::string& p
     throw IoError(path, 0, -1, std::string("not valid JSON: ") + e.what());
   }
   if (!j.is_object()) throw InvalidInputError(path + ": a material is a JSON object");
-  static const char* const known[] = {"name", "rings", "grain", "grain_stretch", "refine_edge", "absolute"};
+  static const char* const known[] = {"name",        "rings", "grain", "grain_stretch",
+                                      "refine_edge", "units", "radius"};
   for (const auto& item : j.items()) {
     bool ok = false;
     for (const char* k : known) ok |= item.key() == k;
+    if (item.key() == "absolute")
+      bad_field(path, "absolute",
+                "was replaced by units and radius (absolute true: \"units\": \"model\" and the "
+                "spacings summed as \"radius\"; false: \"units\": \"edge_lengths\")");
     if (!ok)
       bad_field(path, item.key(),
-                "is unknown (fields: name, rings, grain, grain_stretch, refine_edge, absolute)");
+                "is unknown (fields: name, rings, grain, grain_stretch, refine_edge, units, radius)");
   }
   FractureMaterial m;
   m.name = std::filesystem::path(path).stem().string();
@@ -93,9 +98,20 @@ FractureMaterial parse_material_json(std::string_view text, const std::string& p
     m.refine_edge = number_field(j["refine_edge"], path, "refine_edge");
     if (!(m.refine_edge > 0)) bad_field(path, "refine_edge", "must be positive");
   }
-  if (j.contains("absolute")) {
-    if (!j["absolute"].is_boolean()) bad_field(path, "absolute", "must be true or false");
-    m.absolute = j["absolute"].get<bool>();
+  if (j.contains("units")) {
+    static const FractureUnits all[] = {FractureUnits::edge_lengths, FractureUnits::model,
+                                        FractureUnits::diagonal_fraction};
+    bool found = false;
+    for (FractureUnits u : all)
+      if (j["units"].is_string() && j["units"].get<std::string>() == fracture_units_name(u)) {
+        m.units = u;
+        found = true;
+      }
+    if (!found) bad_field(path, "units", "must be \"diagonal_fraction\", \"model\" or \"edge_lengths\"");
+  }
+  if (j.contains("radius")) {
+    m.radius = number_field(j["radius"], path, "radius");
+    if (!(m.radius > 0)) bad_field(path, "radius", "must be positive");
   }
   return m;
 }

@@ -1,5 +1,5 @@
-// Fracture from C#: the options (a preset, a break radius in model units or as a fraction of the
-// object's size, a thickness so that every shard is a solid with mass), the shards with what a
+// Fracture from C#: the options (a preset, a break radius as a fraction of the object's size or in
+// model units, a thickness so that every shard is a solid with mass), the shards with what a
 // rigid body needs, and HalfEdgeMesh.Fracture / SimulateBreaking. FractureOptions and the shard
 // record carry fixed-size arrays (ByValArray), copied by the marshaller once per call.
 using System;
@@ -23,12 +23,25 @@ namespace Hedge
         Ice = 3,
     }
 
+    /// <summary>The units of <see cref="FractureOptions.Radius"/> (hedge_fracture_units).</summary>
+    public enum FractureUnits
+    {
+        /// <summary>Mean edge lengths of the impact face: the same number of shards of the same number of faces on
+        /// any mesh, a share of the object that shrinks as the mesh is refined.</summary>
+        EdgeLengths = 0,
+        /// <summary>Model units (metres in a game).</summary>
+        Model = 1,
+        /// <summary>A fraction of the diagonal of the mesh's bounding box (the presets): the same share of an object
+        /// breaks whatever its size and resolution.</summary>
+        DiagonalFraction = 2,
+    }
+
     /// <summary>One ring of break points (24 bytes, hedge_fracture_ring).</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct FractureRing
     {
-        /// <summary>Distance from the previous ring (the first: from the impact), greater than 0; in edge lengths of
-        /// the impact face unless <see cref="FractureOptions.Absolute"/>.</summary>
+        /// <summary>Distance from the previous ring (the first: from the impact), greater than 0, in proportion:
+        /// the spacings are scaled so that the outer ring lies at <see cref="FractureOptions.Radius"/>.</summary>
         public double Spacing;
         /// <summary>In [0, 1]: how far points stray from even angles and from the ring's radius.</summary>
         public double Jitter;
@@ -37,9 +50,10 @@ namespace Hedge
         uint reserved;
     }
 
-    /// <summary>Options of <see cref="HalfEdgeMesh.Fracture"/> (472 bytes, hedge_fracture_options): the material's rings
-    /// and grain, the seed, and what each shard gets. Start from <see cref="Preset"/>; give the break radius in model
-    /// units with <see cref="WithBreakRadius"/> or <see cref="WithBreakRadiusFraction"/>.</summary>
+    /// <summary>Options of <see cref="HalfEdgeMesh.Fracture"/> (488 bytes, hedge_fracture_options): the material's rings
+    /// and grain, its break radius, the seed, and what each shard gets. Start from <see cref="Preset"/> (a break
+    /// radius as a fraction of the object's size); give it in model units with <see cref="WithBreakRadius"/>, or
+    /// another fraction with <see cref="WithBreakRadiusFraction(double)"/>.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct FractureOptions
     {
@@ -54,13 +68,15 @@ namespace Hedge
         public FractureRing[] Rings;
         /// <summary>Rings used, 0 to <see cref="MaxRings"/>.</summary>
         public int RingCount;
-        int absolute;
+        /// <summary>The units of <see cref="Radius"/>; the presets: <see cref="FractureUnits.DiagonalFraction"/>.</summary>
+        public FractureUnits Units;
         /// <summary>Grain direction, nonzero when <see cref="GrainStretch"/> is greater than 1.</summary>
         public Vec3 Grain;
         uint reserved;
         /// <summary>1 or more: cells this many times longer along the grain.</summary>
         public double GrainStretch;
-        /// <summary>Longest edge left in the broken area (units of the spacing).</summary>
+        /// <summary>Longest edge left in the broken area (in the units of the spacings, so in proportion to the
+        /// radius).</summary>
         public double RefineEdge;
         /// <summary>Seed of the break points: the same seed gives the same shards, bit for bit.</summary>
         public ulong Seed;
@@ -75,10 +91,16 @@ namespace Hedge
         /// mesh's largest submesh, or 1 when the mesh has none. The broken faces keep theirs (0 when none).</summary>
         public int InnerSubmesh;
         double relativeThickness;
+        /// <summary>The break radius (the outer ring's distance from the impact) in <see cref="Units"/>, greater than
+        /// 0. The presets: 0.13 (glass), 0.14 (stone), 0.11 (wood, ice) of the diagonal.</summary>
+        public double Radius;
+        /// <summary>0 or more: an open shard (no thickness) gets the mass properties of a thin shell this thick (model
+        /// units); 0: a twentieth of the break radius.</summary>
+        public double ShellThickness;
 
         /// <summary>Greater than 0: each shard is extruded into a closed solid this thick (model units), at most 10
         /// times the diagonal of the mesh's bounding box. Setting it above 0 clears <see cref="RelativeThickness"/>;
-        /// 0 and a relative thickness of 0: open shards, with no mass.</summary>
+        /// 0 and a relative thickness of 0: open shards, weighed as thin shells (<see cref="ShellThickness"/>).</summary>
         public double Thickness
         {
             get { return thickness; }
@@ -86,7 +108,7 @@ namespace Hedge
         }
 
         /// <summary>In [0, 1]; greater than 0: the thickness as this fraction of the strike's break radius in model
-        /// units (the rings' spacings summed, in model units at the impact), so small and large breaks get solids of
+        /// units, so small and large breaks get solids of
         /// the same proportion, at a cost that does not grow with the mesh. <see cref="Preset"/> sets <see cref="GameRelativeThickness"/>. Setting it above 0 clears
         /// <see cref="Thickness"/>.</summary>
         public double RelativeThickness
@@ -95,8 +117,6 @@ namespace Hedge
             set { relativeThickness = value; if (value > 0) thickness = 0; }
         }
 
-        /// <summary>Spacings in model units rather than in edge lengths of the impact face.</summary>
-        public bool Absolute { get { return absolute != 0; } set { absolute = value ? 1 : 0; } }
         /// <summary>Compute each shard's convex hull.</summary>
         public bool Hulls { get { return hulls != 0; } set { hulls = value ? 1 : 0; } }
 
@@ -111,23 +131,14 @@ namespace Hedge
             }
         }
 
-        /// <summary>The radius of the outer ring: the spacings summed, in edge lengths of the impact face, or model
-        /// units when <see cref="Absolute"/> (after <see cref="WithBreakRadius"/>: the break radius).</summary>
-        public double BreakRadius
-        {
-            get
-            {
-                double r = 0;
-                for (int i = 0; Rings != null && i < RingCount && i < Rings.Length; ++i) r += Rings[i].Spacing;
-                return r;
-            }
-        }
+        /// <summary>The break radius in <see cref="Units"/>: <see cref="Radius"/>.</summary>
+        public double BreakRadius { get { return Radius; } }
 
         /// <summary>A preset with seed 0, density 1, automatic tolerance, hulls on, the automatic inner submesh and a
         /// thickness of <see cref="GameRelativeThickness"/> of the break radius, so that every shard is a closed
-        /// solid with mass. Its spacings are in edge lengths of the impact face: give a break radius in model units
-        /// with <see cref="WithBreakRadius"/> or <see cref="WithBreakRadiusFraction"/> so that a strike breaks the
-        /// same share of the object at any mesh resolution.</summary>
+        /// solid with mass. Its break radius is a fraction of the diagonal of the object's bounding box, so a strike
+        /// breaks the same share of the object at any size and mesh resolution; give it in model units with
+        /// <see cref="WithBreakRadius"/>.</summary>
         public static FractureOptions Preset(FracturePreset preset)
         {
             FractureOptions o;
@@ -137,8 +148,9 @@ namespace Hedge
         }
 
         /// <summary>These options with the outer ring <paramref name="radius"/> model units (metres in a game) from
-        /// the impact: absolute spacings, each spacing and <see cref="RefineEdge"/> scaled to it
-        /// (hedge_fracture_options_at_radius). These options are not changed.</summary>
+        /// the impact: <see cref="Units"/> <see cref="FractureUnits.Model"/>, <see cref="Radius"/> radius, each
+        /// spacing and <see cref="RefineEdge"/> scaled to read in model units (hedge_fracture_options_at_radius).
+        /// These options are not changed.</summary>
         /// <exception cref="HedgeException">InvalidArgument for a radius that is not finite and positive, or no
         /// ring.</exception>
         public FractureOptions WithBreakRadius(double radius)
@@ -151,23 +163,30 @@ namespace Hedge
             return o;
         }
 
-        /// <summary>These options with a break radius of <paramref name="fraction"/> times the diagonal of
-        /// <paramref name="mesh"/>'s bounding box (<see cref="WithBreakRadius"/>): 0.1 breaks a tenth of the
-        /// object's size around the impact, whatever its scale or resolution. Reads the box once (O(n)): keep the
-        /// options for the strikes on the same object.</summary>
+        /// <summary>These options with a break radius of <paramref name="fraction"/> times the diagonal of the
+        /// struck mesh's bounding box (<see cref="FractureUnits.DiagonalFraction"/>): 0.1 breaks a tenth of the
+        /// object's size around the impact, whatever its scale or resolution. The library takes the diagonal from
+        /// the mesh's picking tree at each strike, without a pass over the mesh. These options are not
+        /// changed.</summary>
         /// <exception cref="ArgumentOutOfRangeException">A fraction that is not finite and positive.</exception>
-        /// <exception cref="ArgumentException">An empty mesh (no size).</exception>
+        public FractureOptions WithBreakRadiusFraction(double fraction)
+        {
+            if (!(fraction > 0) || double.IsInfinity(fraction))
+                throw new ArgumentOutOfRangeException("fraction", fraction, "a fraction of the object's size must be finite and positive");
+            FractureOptions o = this;
+            o.Rings = Rings != null ? (FractureRing[])Rings.Clone() : null;
+            o.Units = FractureUnits.DiagonalFraction;
+            o.Radius = fraction;
+            return o;
+        }
+
+        /// <summary><see cref="WithBreakRadiusFraction(double)"/>; the mesh is no longer needed (the library takes
+        /// the diagonal of the struck mesh itself).</summary>
+        [Obsolete("use WithBreakRadiusFraction(fraction): the library takes the diagonal of the struck mesh")]
         public FractureOptions WithBreakRadiusFraction(HalfEdgeMesh mesh, double fraction)
         {
             if (mesh == null) throw new ArgumentNullException("mesh");
-            if (!(fraction > 0) || double.IsInfinity(fraction))
-                throw new ArgumentOutOfRangeException("fraction", fraction, "a fraction of the object's size must be finite and positive");
-            MeshGeometry g = mesh.Geometry;
-            double dx = g.BoxMax.X - g.BoxMin.X, dy = g.BoxMax.Y - g.BoxMin.Y, dz = g.BoxMax.Z - g.BoxMin.Z;
-            double diagonal = Math.Sqrt(dx * dx + dy * dy + dz * dz);
-            if (g.Empty || !(diagonal > 0))
-                throw new ArgumentException("the mesh has no size (its bounding box is a point)", "mesh");
-            return WithBreakRadius(fraction * diagonal);
+            return WithBreakRadiusFraction(fraction);
         }
     }
 
@@ -184,19 +203,20 @@ namespace Hedge
         public double[] Centroid { get; internal set; }
         /// <summary>Area of the broken faces.</summary>
         public double Area { get; internal set; }
-        /// <summary>Volume when closed, else 0.</summary>
+        /// <summary>Volume of the solid when closed; when open, of the thin shell it is weighed as (area x the
+        /// options' <see cref="FractureOptions.ShellThickness"/>, or its automatic value).</summary>
         public double Volume { get; internal set; }
-        /// <summary>Mass at the density when closed, else 0.</summary>
+        /// <summary>Mass at the density, of the solid or the shell; 0 only for a shard without area.</summary>
         public double Mass { get; internal set; }
-        /// <summary>Centre of mass when closed.</summary>
+        /// <summary>Centre of mass, of the solid or the shell.</summary>
         public double[] CentreOfMass { get; internal set; }
-        /// <summary>Inertia tensor about the centre of mass, row-major 3 x 3, when closed.</summary>
+        /// <summary>Inertia tensor about the centre of mass, row-major 3 x 3, of the solid or the shell.</summary>
         public double[] Inertia { get; internal set; }
-        /// <summary>The eigenvalues of <see cref="Inertia"/>, ascending (zero when open): a rigid body's principal
+        /// <summary>The eigenvalues of <see cref="Inertia"/>, ascending (zero with no mass): a rigid body's principal
         /// moments.</summary>
         public double[] PrincipalMoments { get; internal set; }
-        /// <summary>Row i (elements 3i..3i+2): the unit axis of PrincipalMoments[i], a right-handed frame; zero when
-        /// open.</summary>
+        /// <summary>Row i (elements 3i..3i+2): the unit axis of PrincipalMoments[i], a right-handed frame; zero with
+        /// no mass.</summary>
         public double[] PrincipalAxes { get; internal set; }
         /// <summary>The mesh has no boundary.</summary>
         public bool Closed { get; internal set; }
@@ -205,11 +225,11 @@ namespace Hedge
 
         /// <summary>The rotation (x, y, z, w, a unit quaternion) that turns the coordinate axes into the principal
         /// axes: with R its matrix, Inertia = R diag(PrincipalMoments) R^T. What a physics engine takes as the
-        /// inertia tensor's rotation. The identity when open.</summary>
+        /// inertia tensor's rotation. The identity with no mass.</summary>
         public double[] PrincipalRotation()
         {
             double[] a = PrincipalAxes;
-            if (a == null || !Closed) return new double[] { 0, 0, 0, 1 };
+            if (a == null || !(Mass > 0)) return new double[] { 0, 0, 0, 1 };
             // R's columns are the axes: R[r, c] = a[3c + r].
             double m00 = a[0], m11 = a[4], m22 = a[8];
             double m01 = a[3], m10 = a[1], m02 = a[6], m20 = a[2], m12 = a[7], m21 = a[5];
@@ -309,8 +329,9 @@ namespace Hedge
         }
 
         /// <summary>The original's SimulateBreaking, on any surface and repeatable: <see cref="Fracture"/> with a
-        /// preset material (<see cref="FractureOptions.Preset"/>: its rings in edge lengths of the impact face, each
-        /// shard a solid <see cref="FractureOptions.GameRelativeThickness"/> of the break radius thick) and a seed.
+        /// preset material (<see cref="FractureOptions.Preset"/>: its break radius a fraction of the object's size,
+        /// each shard a solid <see cref="FractureOptions.GameRelativeThickness"/> of the break radius thick) and a
+        /// seed.
         /// Returns the shards, each a mesh ready for engine buffers (<see cref="CreateRenderBuffers(RenderOptions)"/>)
         /// with its convex hull and mass properties for a rigid body.</summary>
         public FractureShard[] SimulateBreaking(Vec3 impactPoint, FracturePreset material, ulong seed)

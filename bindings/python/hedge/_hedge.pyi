@@ -150,7 +150,7 @@ class Mesh:
     # Pictures (py_render.cpp)
     def _repr_png_(self) -> Optional[bytes]: ...
     # Fracture (py_fracture.cpp): the shards leave this mesh; a material is a preset or a dict
-    # {name, rings: [{points, spacing, jitter}], grain, grain_stretch, refine_edge, absolute}
+    # {name, rings: [{points, spacing, jitter}], grain, grain_stretch, refine_edge, units, radius}
     def fracture(
         self,
         point: Sequence[float],
@@ -158,10 +158,13 @@ class Mesh:
         *,
         seed: int = 0,
         break_radius: float = 0.0,
+        units: Optional[str] = None,
+        radius: float = 0.0,
         thickness: float = 0.0,
         relative_thickness: float = 0.0,
         inner_submesh: int = -1,
         density: float = 1.0,
+        shell_thickness: float = 0.0,
         tolerance: float = 0.0,
         hulls: bool = True,
     ) -> list[Shard]: ...
@@ -194,6 +197,8 @@ class Shard(Mesh):
     def closed(self) -> bool: ...
     @property
     def mass(self) -> Optional[dict[str, Union[float, npt.NDArray[np.float64]]]]: ...
+    @property
+    def shell_thickness(self) -> float: ...
     @property
     def hull(self) -> Optional[Mesh]: ...
     @property

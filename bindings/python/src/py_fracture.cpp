@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,6 +34,7 @@ class Shard : public Mesh {
         area(s.area),
         closed(s.closed),
         mass(s.mass),
+        shell_thickness(s.shell_thickness),
         hull_dimension(s.hull.dimension),
         hull_tolerance(s.hull.tolerance),
         hull(std::move(hull)) {}
@@ -40,6 +42,7 @@ class Shard : public Mesh {
   double area;
   bool closed;
   MassProperties mass;
+  double shell_thickness;
   HullDimension hull_dimension;
   double hull_tolerance;
   std::shared_ptr<State> hull;  //!< none when the hull has no faces (or hulls were not asked for)
@@ -81,9 +84,26 @@ FractureMaterial material_from_dict(const py::dict& material) {
 }
 
 //! The options of Mesh.fracture(), checked where the library does not check them itself.
-FractureOptions fracture_options(const py::object& material, const py::object& seed, double break_radius,
-                                 double thickness, double relative_thickness, std::int32_t inner_submesh,
-                                 double density, double tolerance, bool hulls) {
+//! The break radius's units by name.
+FractureUnits units_named(const std::string& name) {
+  for (FractureUnits u :
+       {FractureUnits::diagonal_fraction, FractureUnits::model, FractureUnits::edge_lengths})
+    if (name == fracture_units_name(u)) return u;
+  throw InvalidInputError("fracture: units must be 'diagonal_fraction', 'model' or 'edge_lengths', not '" +
+                          name + "'");
+}
+
+//! The keyword options of Mesh.fracture() besides the material and the seed.
+struct Keywords {
+  double break_radius;
+  std::optional<std::string> units;
+  double radius, thickness, relative_thickness;
+  std::int32_t inner_submesh;
+  double density, shell_thickness, tolerance;
+  bool hulls;
+};
+
+FractureOptions fracture_options(const py::object& material, const py::object& seed, const Keywords& k) {
   FractureOptions o;
   if (py::isinstance<py::str>(material)) {
     o.material = fracture_material(material.cast<std::string>());  // lists the presets otherwise
@@ -95,8 +115,11 @@ FractureOptions fracture_options(const py::object& material, const py::object& s
     throw InvalidInputError("fracture: material must be a preset name (" + presets + ") or a dict, not " +
                             std::string(py::str(material.get_type().attr("__name__"))));
   }
-  // 0: the material's own spacings; anything else is checked (finite, positive) by the scaling.
-  if (break_radius != 0) o.material = fracture_material_at_radius(o.material, break_radius);
+  // None and 0: the material's own; anything else is checked by fracture() (finite, positive).
+  if (k.units) o.material.units = units_named(*k.units);
+  if (k.radius != 0) o.material.radius = k.radius;
+  // 0: as above; anything else is checked (finite, positive) by the scaling.
+  if (k.break_radius != 0) o.material = fracture_material_at_radius(o.material, k.break_radius);
   // Any integer (numpy's too, through __index__), but not a bool or a float.
   if (py::isinstance<py::bool_>(seed) || !PyIndex_Check(seed.ptr()))
     throw InvalidInputError("fracture: seed must be a whole number in [0, 2^64), not " +
@@ -110,12 +133,13 @@ FractureOptions fracture_options(const py::object& material, const py::object& s
                             std::string(py::str(seed)));
   }
   o.seed = s;
-  o.thickness = thickness;
-  o.relative_thickness = relative_thickness;
-  o.inner_submesh = inner_submesh;
-  o.density = density;
-  o.tolerance = tolerance;
-  o.hulls = hulls;
+  o.thickness = k.thickness;
+  o.relative_thickness = k.relative_thickness;
+  o.inner_submesh = k.inner_submesh;
+  o.density = k.density;
+  o.shell_thickness = k.shell_thickness;
+  o.tolerance = k.tolerance;
+  o.hulls = k.hulls;
   return o;
 }
 
@@ -126,11 +150,14 @@ std::shared_ptr<State> state_of(SurfaceMesh&& mesh) {
 }
 
 py::list fracture(const Mesh& self, const py::object& point, const py::object& material,
-                  const py::object& seed, double break_radius, double thickness, double relative_thickness,
-                  std::int32_t inner_submesh, double density, double tolerance, bool hulls) {
+                  const py::object& seed, double break_radius, std::optional<std::string> units,
+                  double radius, double thickness, double relative_thickness, std::int32_t inner_submesh,
+                  double density, double shell_thickness, double tolerance, bool hulls) {
   const Vec3 impact = point3(point, "fracture", "point");
-  const FractureOptions options = fracture_options(
-      material, seed, break_radius, thickness, relative_thickness, inner_submesh, density, tolerance, hulls);
+  const FractureOptions options =
+      fracture_options(material, seed,
+                       {break_radius, std::move(units), radius, thickness, relative_thickness, inner_submesh,
+                        density, shell_thickness, tolerance, hulls});
   Broken broken;
   {
     const auto use = self.use();
@@ -168,14 +195,18 @@ void bind_fracture(py::module_& m, py::class_<Mesh>& mesh) {
       .def_property_readonly(
           "mass",
           [](const Shard& s) -> py::object {
-            if (!s.closed) return py::none();  // an open shard encloses no volume: no mass to give
+            if (!(s.mass.mass > 0)) return py::none();  // no area (or a folded solid): nothing to weigh
             return mass_properties_dict(s.mass);
           },
-          "The mass properties of the closed solid at the fracture's density (the C++ "
-          "Shard::mass; Mesh.mass_properties(density) computes them afresh): a dict of volume, mass, "
+          "The mass properties at the fracture's density (the C++ Shard::mass): of the closed solid "
+          "(Mesh.mass_properties(density) computes them afresh), or for an open shard (closed is "
+          "False) of its surface as a thin shell shell_thickness thick. A dict of volume, mass, "
           "centre_of_mass (3,), inertia (3, 3) about the centre of mass, "
           "principal_moments (3,) ascending and principal_axes (3, 3), one unit axis "
-          "a row, a right-handed frame. None for an open shard (closed is False): it encloses no volume.")
+          "a row, a right-handed frame. None only for a shard without area.")
+      .def_property_readonly(
+          "shell_thickness", [](const Shard& s) { return s.shell_thickness; },
+          "The thickness of the shell an open shard is weighed as (model units); 0 when closed.")
       .def_property_readonly(
           "hull",
           [](const Shard& s) -> py::object {
@@ -192,21 +223,26 @@ void bind_fracture(py::module_& m, py::class_<Mesh>& mesh) {
           "hull_tolerance", [](const Shard& s) { return s.hull_tolerance; },
           "Every vertex lies inside the hull or within this distance of it.");
   mesh.def("fracture", &fracture, py::arg("point"), py::arg("material") = "glass", py::kw_only(),
-           py::arg("seed") = 0, py::arg("break_radius") = 0.0, py::arg("thickness") = 0.0,
-           py::arg("relative_thickness") = 0.0, py::arg("inner_submesh") = -1, py::arg("density") = 1.0,
+           py::arg("seed") = 0, py::arg("break_radius") = 0.0, py::arg("units") = py::none(),
+           py::arg("radius") = 0.0, py::arg("thickness") = 0.0, py::arg("relative_thickness") = 0.0,
+           py::arg("inner_submesh") = -1, py::arg("density") = 1.0, py::arg("shell_thickness") = 0.0,
            py::arg("tolerance") = 0.0, py::arg("hulls") = true,
            "Breaks the mesh at point (3 numbers, within tolerance of the surface) into shards and "
            "returns them as a list of Shard (each a Mesh, with front_centroid, front_area, closed, "
            "mass and hull), in the order of their break points. The broken faces leave "
            "this mesh, which is edited in place. material: 'glass', 'stone', 'wood', 'ice', or a dict "
-           "{name, rings: [{points, spacing, jitter}], grain, grain_stretch, refine_edge, absolute} "
-           "as the CLI's material files (docs/fracture.md). seed: a whole number; the same mesh, "
-           "point, options and seed give the same shards. break_radius > 0: the material scaled so "
-           "its outer ring lies that far from the impact (model units); 0: its own spacings (edge "
-           "lengths of the impact face). thickness > 0 (model units) or relative_thickness > 0 (a "
-           "fraction of the break radius): each shard becomes a closed solid with mass properties at "
-           "density; its added faces get inner_submesh in 'f:submesh' (-1: one more than the "
-           "largest). hulls: compute each shard's convex hull. Located through the mesh's picking "
+           "{name, rings: [{points, spacing, jitter}], grain, grain_stretch, refine_edge, units, "
+           "radius} as the CLI's material files (docs/fracture.md). seed: a whole number; the same "
+           "mesh, point, options and seed give the same shards. The break radius (the outer ring's) "
+           "is the material's radius in its units: for the presets a fraction of the mesh's "
+           "bounding-box diagonal (glass 0.13, stone 0.14, wood and ice 0.11), so the same share "
+           "breaks at any resolution. units ('diagonal_fraction', 'model', 'edge_lengths') and "
+           "radius > 0 replace the material's; break_radius > 0 sets it in model units instead. "
+           "thickness > 0 (model units) or relative_thickness > 0 (a fraction of the break radius): "
+           "each shard becomes a closed solid with mass properties at density; its added faces get "
+           "inner_submesh in 'f:submesh' (-1: one more than the largest). Open shards weigh as a "
+           "thin shell shell_thickness thick (0: a twentieth of the break radius). hulls: compute "
+           "each shard's convex hull. Located through the mesh's picking "
            "tree, so a strike costs the broken area. InvalidArgumentError (the mesh unchanged) for a "
            "point off the surface or not finite, an unknown material or a bad option; "
            "ViewsExportedError while numpy views are alive. Releases the GIL.");

@@ -79,7 +79,10 @@ def test_an_open_shard_reports_the_area_and_centroid_of_its_faces():
         areas = 0.5 * np.linalg.norm(np.cross(t[:, 1] - t[:, 0], t[:, 2] - t[:, 0]), axis=1)
         assert s.front_area == pytest.approx(areas.sum(), rel=1e-6)
         np.testing.assert_allclose(s.front_centroid, (areas[:, None] * t.mean(axis=1)).sum(axis=0) / areas.sum(), rtol=1e-6)
-        assert not s.closed and s.mass is None  # an open shard encloses no volume
+        # An open shard weighs as a thin shell: a mass and a positive-definite inertia.
+        assert not s.closed and s.shell_thickness > 0
+        assert s.mass["volume"] == pytest.approx(s.front_area * s.shell_thickness, rel=1e-9)
+        assert s.mass["mass"] > 0 and s.mass["principal_moments"][0] > 0
 
 
 def test_a_solid_shard_has_the_mass_properties_numpy_computes():
@@ -130,6 +133,29 @@ def test_a_break_radius_breaks_that_far_and_a_custom_material_its_rings():
     assert_valid(mesh)
 
 
+def test_the_presets_break_the_same_share_at_every_resolution_units_and_radius_change_it():
+    def share(n, **options):
+        V, F = grid_arrays(n)
+        mesh = hedge.Mesh.from_arrays(V * (20.0 / n), F)
+        return sum(s.front_area for s in mesh.fracture(IMPACT, seed=3, **options)) / 400
+
+    coarse, fine = share(20), share(80)
+    assert abs(fine - coarse) < 0.1 * coarse
+    assert share(80, units="edge_lengths", radius=7) < share(20, units="edge_lengths", radius=7) / 8
+    assert share(40, units="model", radius=2) < share(40, units="model", radius=4) / 2.5
+
+
+def test_the_default_strike_on_spot_gives_the_librarys_shards():
+    # The library's FractureMaterial.TheDefaultStrikeOnSpotThatEveryBindingChecks gives these numbers:
+    # the binding's defaults are the library's.
+    data = os.path.join(os.path.dirname(__file__), "..", "..", "..", "data", "spot_triangulated.obj")
+    mesh = hedge.read(data)
+    shards = mesh.fracture((0.380073, -0.0641595, 0.195141))
+    assert len(shards) == 40
+    assert sum(s.front_area for s in shards) == pytest.approx(0.498213, abs=1e-6)
+    assert sum(s.mass["mass"] for s in shards) == pytest.approx(0.00838123, abs=1e-8)
+
+
 def test_a_shard_is_a_mesh_like_any_other():
     mesh = plate()
     shard = mesh.fracture(IMPACT, seed=1)[0]
@@ -166,13 +192,11 @@ def test_the_same_shards_as_the_cli(tmp_path, material, thickness):
         assert (s.n_faces, s.n_vertices, s.closed) == (c["faces"], c["vertices"], c["closed"])
         np.testing.assert_allclose(s.front_centroid, c["centroid"], rtol=1e-12)
         assert s.front_area == pytest.approx(c["area"], rel=1e-12)
-        mp = s.mass
-        if not s.closed:  # an open shard has no mass properties (the CLI gives zeros)
-            assert mp is None and c["volume"] == 0 and c["mass"]["mass"] == 0
-        else:
-            assert mp["volume"] == pytest.approx(c["volume"], rel=1e-12)
-            assert mp["mass"] == pytest.approx(c["mass"]["mass"], rel=1e-12)
-            np.testing.assert_allclose(mp["principal_moments"], c["mass"]["principal_moments"], rtol=1e-12)
+        mp = s.mass  # of the solid, or of the thin shell an open shard weighs as
+        assert s.shell_thickness == c["shell_thickness"]
+        assert mp["volume"] == pytest.approx(c["volume"], rel=1e-12)
+        assert mp["mass"] == pytest.approx(c["mass"]["mass"], rel=1e-12)
+        np.testing.assert_allclose(mp["principal_moments"], c["mass"]["principal_moments"], rtol=1e-12)
         assert s.hull.n_faces == c["hull"]["faces"]
     assert_valid(mesh)
 
@@ -192,6 +216,10 @@ def test_the_same_shards_as_the_cli(tmp_path, material, thickness):
         ((1, 2, 0), {"seed": -1}, "seed must be a whole number in [0, 2^64), got -1"),
         ((1, 2, 0), {"seed": 1.5}, "seed must be a whole number in [0, 2^64), not float"),
         ((1, 2, 0), {"break_radius": -2}, "radius"),
+        ((1, 2, 0), {"units": "metres"}, "units must be 'diagonal_fraction', 'model' or 'edge_lengths'"),
+        ((1, 2, 0), {"radius": -1}, "radius (the break radius, in diagonal_fraction) must be finite"),
+        ((1, 2, 0), {"shell_thickness": -1}, "shell_thickness must be finite and >= 0"),
+        ((1, 2, 0), {"material": {"rings": [{"points": 3, "spacing": 1}], "absolute": True}}, "replaced by units"),
         ((1, 2, 0), {"thickness": -1}, "thickness must be finite and >= 0"),
         ((1, 2, 0), {"thickness": 0.1, "relative_thickness": 0.1}, "thickness"),
         ((1, 2, 0), {"density": 0}, "density"),

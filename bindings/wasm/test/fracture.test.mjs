@@ -65,9 +65,12 @@ test('a glass strike on a plate gives valid shards whose areas and the rest add 
     const a = area(shard.mesh);
     assert.ok(Math.abs(a - shard.area) <= 1e-5 * a, `shard area ${shard.area} vs its mesh ${a}`);
     shardArea += shard.area;
-    // Open shards (no thickness): no volume, no mass; a hull all the same (a thin slab).
+    // Open shards (no thickness) weigh as a thin shell: a mass and a positive-definite inertia;
+    // a hull all the same (a thin slab).
     assert.equal(shard.closed, false);
-    assert.equal(shard.mass, 0);
+    assert.ok(shard.shellThickness > 0);
+    assert.ok(Math.abs(shard.volume - shard.area * shard.shellThickness) <= 1e-9 * shard.volume);
+    assert.ok(shard.mass > 0 && shard.principalMoments[0] > 0);
     const hullVertices = shard.hull.positions.length / 3;
     assert.ok(hullVertices >= 4);
     assert.equal(
@@ -166,6 +169,20 @@ test('a strike on a closed sample breaks it and leaves a valid mesh', () => {
   mesh.dispose();
 });
 
+// The library's test FractureMaterial.TheDefaultStrikeOnSpotThatEveryBindingChecks gives these
+// numbers: the binding's defaults are the library's.
+test("the default strike on spot gives the library's shards", () => {
+  const mesh = hedge.fromFile(sample('spot_triangulated.obj'), 'spot_triangulated.obj');
+  const result = mesh.fracture([0.380073, -0.0641595, 0.195141]);
+  assert.equal(result.shards.length, 40);
+  const sum = (f) => result.shards.reduce((total, s) => total + f(s), 0);
+  assert.ok(Math.abs(sum((s) => s.area) - 0.498213) < 1e-6, `area ${sum((s) => s.area)}`);
+  assert.ok(Math.abs(sum((s) => s.mass) - 0.00838123) < 1e-8, `mass ${sum((s) => s.mass)}`);
+  assert.ok(Math.abs(result.breakRadius - 0.336452) < 1e-6, `break radius ${result.breakRadius}`);
+  disposeAll(result);
+  mesh.dispose();
+});
+
 test('the remaining mesh reaches its RenderBuffers as a partial sync', () => {
   const mesh = grid(60);
   const render = mesh.createRenderBuffers();
@@ -184,9 +201,10 @@ test('the remaining mesh reaches its RenderBuffers as a partial sync', () => {
 });
 
 // A 10 x 10 plate of n x n squares broken at its middle: the share of its area that breaks. A preset
-// in edge lengths breaks a quarter of it each time the resolution doubles; a break radius in model
-// units about the same share at every resolution.
-test('breakRadius breaks the same share of an object at every resolution', () => {
+// in edge lengths breaks a quarter of it each time the resolution doubles; a preset as it is (a
+// fraction of the diagonal) or a break radius in model units about the same share at every
+// resolution.
+test('the presets and breakRadius break the same share of an object at every resolution', () => {
   const share = (n, options) => {
     const arrays = gridArrays(n);
     const mesh = hedge.fromBuffers({
@@ -200,7 +218,14 @@ test('breakRadius breaks the same share of an object at every resolution', () =>
     mesh.dispose();
     return broken / 100;
   };
-  assert.ok(share(80, {}) < share(20, {}) / 8);
+  const edges = { units: 'edge_lengths', radius: 7 };
+  assert.ok(share(80, edges) < share(20, edges) / 8);
+  const coarse = share(20, {});
+  assert.ok(Math.abs(share(80, {}) - coarse) < 0.1 * coarse, `${share(80, {})} vs ${coarse}`);
+  assert.ok(
+    Math.abs(share(80, { units: 'model', radius: 2 }) - share(20, { units: 'model', radius: 2 })) <
+      0.02,
+  );
   for (const n of [10, 20, 80]) {
     const s = share(n, { breakRadius: 2 });
     assert.ok(s > 0.12 && s < 0.24, `share at ${n}: ${s}`);
@@ -226,6 +251,22 @@ test('bad strikes throw a HedgeError and leave the mesh unchanged', () => {
   refused([5, 5, 0], { density: 0, thickness: 0.1 }, /density/);
   refused([5, 5, 0], { breakRadius: -1 }, /radius must be finite and positive/);
   refused([5, 5, 0], { breakRadius: '2' }, /breakRadius must be a number/);
+  refused(
+    [5, 5, 0],
+    { units: 'metres' },
+    /units must be one of diagonal_fraction, model, edge_lengths/,
+  );
+  refused(
+    [5, 5, 0],
+    { radius: -1 },
+    /radius \(the break radius, in diagonal_fraction\) must be finite/,
+  );
+  refused([5, 5, 0], { shellThickness: -1 }, /shell_thickness/);
+  refused(
+    [5, 5, 0],
+    { material: { rings: [{ points: 4, spacing: 1 }], absolute: true } },
+    /absolute was replaced by units and radius/,
+  );
   refused([5, 5, 0], { material: { rings: [{ points: 4, spacing: -1 }] } }, /rings\[0\]\.spacing/);
   refused([5, 5, 0], { material: { rings: [{ points: 2.5, spacing: 1 }] } }, /rings\[0\]\.points/);
   refused([5, 5, 0], { material: { rings: 'many' } }, /rings must be an array/);
@@ -257,13 +298,16 @@ test('repeated strikes with their shards disposed leave the heap as it was', () 
   assert.equal(hedge.memoryBytes, memory, 'wasm memory did not grow');
   // And strikes on one mesh free what each gives out.
   const mesh = grid(130);
-  mesh.fracture([125.2, 125.3, 0]).shards.forEach((s) => s.dispose());
+  // Small strikes (7 edge lengths) that do not overlap.
+  const small = { units: 'edge_lengths', radius: 7 };
+  mesh.fracture([125.2, 125.3, 0], small).shards.forEach((s) => s.dispose());
   const base = hedge.heapBytesInUse();
   let bytes = 0;
   for (let i = 0; i < 30; ++i) {
     const before = hedge.heapBytesInUse();
     const result = mesh.fracture([10.3 + (i % 6) * 20, 10.6 + Math.floor(i / 6) * 20, 0], {
       seed: i,
+      ...small,
     });
     bytes = Math.max(bytes, hedge.heapBytesInUse() - before);
     disposeAll(result);

@@ -32,6 +32,8 @@
 
 namespace hedge {
 
+struct BoundingBox;  // algorithms/geometry.h
+
 //! A point on a face: the face, the fan triangle of the face it lies in, and where.
 struct SurfacePoint {
   Face face;
@@ -223,6 +225,11 @@ class FaceBvh {
                                   double t_max = std::numeric_limits<double>::infinity()) const;
 
   bool empty() const { return nodes_.empty() || live_ == 0; }
+  //! The root's box: it covers every face the tree answers for. After update() it may still cover
+  //! faces removed since the last build or refit() (their boxes shrink then), so it never shrinks
+  //! between two builds as pieces are taken away. Empty for a tree without faces. O(1), so a caller
+  //! gets the size of the mesh without a pass over its vertices. (BoundingBox: algorithms/geometry.h.)
+  BoundingBox bounds() const;
   //! Heap bytes held by the tree (capacity, not size). O(1).
   std::size_t memory_bytes() const;
   const SurfaceMesh* mesh() const { return mesh_; }

@@ -1,4 +1,5 @@
-// Mass properties of a closed triangle mesh of uniform density: what a rigid body needs.
+// Mass properties of a closed triangle mesh of uniform density, or of a thin shell of uniform
+// thickness over any triangle mesh: what a rigid body needs.
 #pragma once
 
 #include <array>
@@ -36,5 +37,20 @@ struct MassProperties {
 //! \throw InvalidInputError naming the first vertex whose position is not finite,
 //!   before anything changes (require_finite_positions()).
 MassProperties mass_properties(const SurfaceMesh& mesh, double density = 1.0);
+
+//! Mass properties of a thin shell: the surface of a triangle mesh (open or closed) given a
+//! uniform `thickness`, each triangle a slab of that thickness centred on it, at uniform `density`
+//! (mass per unit volume). volume = area x thickness, mass = density x volume, the centre of mass is
+//! the area centroid, and the inertia is that of the surface at surface density density x thickness
+//! plus, per triangle, the slab's own term across it (mass x thickness^2 / 12 about the axes in
+//! its plane). So a flat piece, whose surface alone has no extent along its normal, still has a
+//! positive-definite inertia. Exact for the slabs up to rounding (their overlap at bends and the
+//! bevels they lack are ignored: the shell is thin), computed in double relative to the
+//! bounding-box centre. O(F).
+//! \throw InvalidInputError if `density` or `thickness` is not finite and positive; if a face is
+//!   not a triangle (naming it); if the total area is not positive.
+//! \throw InvalidInputError naming the first vertex whose position is not finite,
+//!   before anything changes (require_finite_positions()).
+MassProperties shell_mass_properties(const SurfaceMesh& mesh, double density, double thickness);
 
 }  // namespace hedge

@@ -25,14 +25,13 @@ namespace Hedge.Unity
         public Quaternion inertiaTensorRotation;
 
         /// <summary>The shard's values (FractureShard.Mass, CentreOfMass, PrincipalMoments, PrincipalRotation()).</summary>
-        /// <exception cref="ArgumentException">The shard is open (no volume, no mass): fracture with a thickness, as
-        /// FractureOptions.Preset does.</exception>
+        /// An open shard (no thickness) has the mass properties of a thin shell (FractureOptions.ShellThickness).
+        /// <exception cref="ArgumentException">The shard has no mass (no area).</exception>
         public static ShardBody Of(FractureShard shard)
         {
             if (shard == null) throw new ArgumentNullException("shard");
-            if (!shard.Closed || !(shard.Mass > 0))
-                throw new ArgumentException("the shard is open and has no mass; fracture with a thickness " +
-                                            "(FractureOptions.Thickness or RelativeThickness)", "shard");
+            if (!(shard.Mass > 0))
+                throw new ArgumentException("the shard has no mass (no area)", "shard");
             double[] c = shard.CentreOfMass, m = shard.PrincipalMoments, q = shard.PrincipalRotation();
             return new ShardBody
             {

@@ -68,7 +68,7 @@ public sealed class BreakOnClick : MonoBehaviour
         filter.sharedMesh = rendered;
         meshCollider = GetComponent<MeshCollider>();
         meshCollider.sharedMesh = rendered;
-        options = FractureOptions.Preset(material).WithBreakRadiusFraction(halfEdgeMesh, breakRadiusFraction);
+        options = FractureOptions.Preset(material).WithBreakRadiusFraction(breakRadiusFraction);
         options.Density = density;
         // The shards' cut faces get the submesh after the object's own, settled once here (left at -1, each
         // strike would look through every face for the largest).

@@ -46,17 +46,26 @@ namespace Hedge.Tests
             }
         }
 
-        // A preset in edge lengths broke a quarter of the share each time the resolution doubled (7.4%, 1.6%,
-        // 0.4% at Loop x0, x1, x2); a break radius in model units, or a fraction of the object's size, breaks the
-        // same share at every resolution.
+        // A break radius in edge lengths breaks a quarter of the share each time the resolution doubles (7.4%,
+        // 1.6%, 0.4% at Loop x0, x1, x2); a preset as it is (a fraction of the object's size) or a break radius in
+        // model units breaks the same share at every resolution.
         [Test]
         static void ABreakRadiusBreaksTheSameShareAtEveryResolution()
         {
+            Func<HalfEdgeMesh, FractureOptions> edges = m =>
+            {
+                FractureOptions o = FractureOptions.Preset(FracturePreset.Glass);
+                o.Units = FractureUnits.EdgeLengths;
+                o.Radius = 7;
+                return o;
+            };
+            Check.True(BrokenShare(80, edges) < BrokenShare(20, edges) / 8, "a share in edge lengths shrinks with the edges");
             Func<HalfEdgeMesh, FractureOptions> preset = m => FractureOptions.Preset(FracturePreset.Glass);
-            Check.True(BrokenShare(80, preset) < BrokenShare(20, preset) / 8, "a preset's share shrinks with the edges");
+            double coarse = BrokenShare(20, preset), fine = BrokenShare(80, preset);
+            Check.True(Math.Abs(fine - coarse) < 0.1 * coarse, "a preset breaks the same share: " + coarse + ", " + fine);
             Func<HalfEdgeMesh, FractureOptions> metres = m => FractureOptions.Preset(FracturePreset.Glass).WithBreakRadius(2);
             Func<HalfEdgeMesh, FractureOptions> fraction =
-                m => FractureOptions.Preset(FracturePreset.Glass).WithBreakRadiusFraction(m, 2 / Math.Sqrt(200));
+                m => FractureOptions.Preset(FracturePreset.Glass).WithBreakRadiusFraction(2 / Math.Sqrt(200));
             foreach (int n in new[] { 10, 20, 80 })
                 foreach (Func<HalfEdgeMesh, FractureOptions> o in new[] { metres, fraction })
                 {
@@ -70,22 +79,76 @@ namespace Hedge.Tests
         static void WithBreakRadiusScalesACopy()
         {
             FractureOptions preset = FractureOptions.Preset(FracturePreset.Ice);
-            double refine = preset.RefineEdge, radius = preset.BreakRadius;
+            Check.True(preset.Units == FractureUnits.DiagonalFraction && preset.Radius == 0.11, "a fraction of the size");
+            double refine = preset.RefineEdge, spacings = 0, first = preset.Rings[0].Spacing;
+            for (int i = 0; i < preset.RingCount; ++i) spacings += preset.Rings[i].Spacing;
             FractureOptions o = preset.WithBreakRadius(0.75);
-            Check.True(o.Absolute && !preset.Absolute, "model units, the original kept");
+            Check.True(o.Units == FractureUnits.Model && preset.Units == FractureUnits.DiagonalFraction,
+                       "model units, the original kept");
             Check.Near(0.75, o.BreakRadius, 1e-12, "the outer ring at the radius");
-            Check.Near(refine * 0.75 / radius, o.RefineEdge, 1e-12, "the refinement scaled alike");
-            Check.Equal(radius, preset.BreakRadius, "the original's rings are not shared");
+            Check.Near(refine * 0.75 / spacings, o.RefineEdge, 1e-12, "the refinement scaled alike");
+            Check.Equal(first, preset.Rings[0].Spacing, "the original's rings are not shared");
             Check.Equal(preset.TotalPoints, o.TotalPoints);
             Check.Throws(HedgeStatus.InvalidArgument, () => preset.WithBreakRadius(0));
             Check.Throws(HedgeStatus.InvalidArgument, () => preset.WithBreakRadius(double.NaN));
+            Check.ThrowsType<ArgumentOutOfRangeException>(() => preset.WithBreakRadiusFraction(-1));
+            Check.ThrowsType<ArgumentOutOfRangeException>(() => preset.WithBreakRadiusFraction(double.PositiveInfinity));
+            FractureOptions tenth = o.WithBreakRadiusFraction(0.1);
+            Check.True(tenth.Units == FractureUnits.DiagonalFraction && tenth.Radius == 0.1 && o.Radius == 0.75,
+                       "a tenth of the diagonal, the original kept");
+#pragma warning disable 618 // the former overload, with the mesh it no longer needs
             using (HalfEdgeMesh pane = Pane(4))
             {
-                Check.ThrowsType<ArgumentOutOfRangeException>(() => preset.WithBreakRadiusFraction(pane, -1));
-                Check.ThrowsType<ArgumentOutOfRangeException>(() => preset.WithBreakRadiusFraction(pane, double.PositiveInfinity));
                 Check.ThrowsType<ArgumentNullException>(() => preset.WithBreakRadiusFraction(null, 0.1));
-                Check.Near(0.1 * Math.Sqrt(200), preset.WithBreakRadiusFraction(pane, 0.1).BreakRadius, 1e-5,
-                           "a tenth of the diagonal");
+                Check.Equal(0.1, preset.WithBreakRadiusFraction(pane, 0.1).Radius, "the mesh is not needed");
+            }
+#pragma warning restore 618
+        }
+
+        // Open shards (no thickness) weigh as thin shells: every shard of a strike has a mass and a positive-definite
+        // inertia, a twentieth of the break radius thick by default or ShellThickness thick.
+        [Test]
+        static void OpenShardsWeighAsThinShells()
+        {
+            foreach (double shell in new[] { 0.0, 0.05 })
+                using (HalfEdgeMesh pane = Pane(20))
+                {
+                    FractureOptions o = FractureOptions.Preset(FracturePreset.Glass);
+                    o.RelativeThickness = 0;
+                    o.ShellThickness = shell;
+                    double thickness = shell > 0 ? shell : 0.05 * 0.13 * Math.Sqrt(200);
+                    FractureShard[] shards = pane.Fracture(new Vec3(5.03f, 4.98f, 0), o);
+                    Check.True(shards.Length >= 20, "glass shards: " + shards.Length);
+                    foreach (FractureShard s in shards)
+                    {
+                        Check.True(!s.Closed && s.Mass > 0 && s.PrincipalMoments[0] > 0, "a shell with mass");
+                        Check.Near(s.Area * thickness, s.Volume, 1e-6 * s.Volume, "the shell's volume");
+                        s.Dispose();
+                    }
+                    Check.Valid(pane);
+                }
+        }
+
+        // The library's FractureMaterial.TheDefaultStrikeOnSpotThatEveryBindingChecks gives these numbers: the
+        // binding's defaults are the library's (open shards: no thickness).
+        [Test]
+        static void TheDefaultStrikeOnSpotGivesTheLibrarysShards()
+        {
+            using (HalfEdgeMesh spot = HalfEdgeMesh.Read(Context.Data("spot_triangulated.obj")))
+            {
+                FractureOptions o = FractureOptions.Preset(FracturePreset.Glass);
+                o.RelativeThickness = 0;
+                FractureShard[] shards = spot.Fracture(new Vec3(0.380073f, -0.0641595f, 0.195141f), o);
+                Check.Equal(40, shards.Length, "glass shards");
+                double area = 0, mass = 0;
+                foreach (FractureShard s in shards)
+                {
+                    area += s.Area;
+                    mass += s.Mass;
+                    s.Dispose();
+                }
+                Check.Near(0.498213, area, 1e-6, "the broken area");
+                Check.Near(0.00838123, mass, 1e-8, "the shells' mass");
             }
         }
 

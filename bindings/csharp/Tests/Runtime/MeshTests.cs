@@ -204,7 +204,10 @@ namespace Hedge.Tests
         [Test]
         static void SimulateBreakingGivesShardsForRigidBodies()
         {
-            Check.Equal(472, Marshal.SizeOf(typeof(FractureOptions)), "hedge_fracture_options");
+            Check.Equal(488, Marshal.SizeOf(typeof(FractureOptions)), "hedge_fracture_options");
+            Check.Equal(388, (int)Marshal.OffsetOf(typeof(FractureOptions), "Units"), "units");
+            Check.Equal(472, (int)Marshal.OffsetOf(typeof(FractureOptions), "Radius"), "radius");
+            Check.Equal(480, (int)Marshal.OffsetOf(typeof(FractureOptions), "ShellThickness"), "shell_thickness");
             Check.Equal(24, Marshal.SizeOf(typeof(FractureRing)), "hedge_fracture_ring");
             Check.Equal(264, Marshal.SizeOf(typeof(NativeFractureShard)), "hedge_fracture_shard");
             using (var plate = Meshes.Plate(24))
