@@ -222,6 +222,13 @@ class FaceBvh {
   std::optional<RayHit> first_hit(const Vec3& origin, const Vec3& direction,
                                   double t_max = std::numeric_limits<double>::infinity()) const;
 
+  //! Appends to `out` the faces whose boxes (of their corners) overlap the closed box [lo, hi],
+  //! sorted by index: the faces that may meet a region inside the box. O(log n + k) expected for
+  //! k faces found. Nothing for an empty tree or a box that is empty or not finite.
+  void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<Face>& out) const;
+  //! The root's box, which holds every face the tree answers for (after update() it may be
+  //! larger than their tight box): O(1). False, with lo and hi untouched, for an empty tree.
+  bool bounds(Vec3& lo, Vec3& hi) const;
   bool empty() const { return nodes_.empty() || live_ == 0; }
   //! Heap bytes held by the tree (capacity, not size). O(1).
   std::size_t memory_bytes() const;
