@@ -125,7 +125,6 @@ std::int32_t inner_submesh_of(const SurfaceMesh& mesh, std::int32_t option) {
 std::vector<SolidPiece> assemble_pieces(const StrikeInput& in, Strike& strike, std::int32_t inner) {
   const SurfaceMesh& m = in.mesh;
   const Geometry g{&m, &strike.planes, &strike.soup, nullptr};
-  const HalfedgeProperty<Vec2> uv_in = m.get_halfedge_property<Vec2>(kTexcoord);
   std::vector<SolidPiece> pieces;
   pieces.reserve(strike.pieces.size());
   for (PieceDraft& d : strike.pieces) {
