@@ -169,7 +169,10 @@ std::vector<SolidPiece> assemble_pieces(const StrikeInput& in, Strike& strike, s
                      nullptr);
       }
     }
-    piece.cap_area = d.cap_area;
+    // Of the cap faces as built (float positions), so it is what a caller measures on the mesh.
+    piece.cap_area = 0;
+    for (Face f : out.faces())
+      if (inner_mark[f]) piece.cap_area += face_area(out, f);
     pieces.push_back(std::move(piece));
   }
   return pieces;

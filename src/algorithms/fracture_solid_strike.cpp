@@ -270,7 +270,6 @@ bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, doubl
       const Vec3d b = piece.surface.points[piece.surface.index(tri[1])].second;
       const Vec3d c = piece.surface.points[piece.surface.index(tri[2])].second;
       const double ar = triangle_area(a, b, c);
-      piece.cap_area += ar;
       cap_areas.push_back({{strike.pieces.size() - 1, piece.surface.source[k] & ~kCapBit}, ar});
     }
     strike.seconds_cap += seconds_since(t);
