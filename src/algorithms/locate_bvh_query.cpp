@@ -349,6 +349,43 @@ std::optional<SurfacePoint> FaceBvh::face_containing(const Vec2& p, ProjectionPl
   return search.result();
 }
 
+void FaceBvh::faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<Face>& out) const {
+  if (empty() || !is_finite(lo) || !is_finite(hi) || !(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z)) return;
+  check_fresh();
+  auto overlaps = [&](const float* blo, const float* bhi) {
+    for (int a = 0; a < 3; ++a)
+      if (blo[a] > hi[a] || bhi[a] < lo[a]) return false;
+    return true;
+  };
+  const std::size_t first = out.size();
+  SmallVector<Index, 96> stack;  // no allocation for the usual depths
+  stack.push_back(0);
+  while (!stack.empty()) {
+    const Node& node = nodes_[stack.pop_back()];
+    if (!overlaps(node.lo, node.hi)) continue;
+    if (!node.is_leaf()) {
+      stack.push_back(node.index + 1);
+      stack.push_back(node.index);
+      continue;
+    }
+    for (Index k = node.index; k < node.index + node.count; ++k) {
+      const Entry& e = entries_[k];
+      if (e.face == kInvalidIndex) continue;
+      const Box box = entry_box(e);
+      if (!box.empty() && overlaps(box.lo, box.hi)) out.push_back(Face(e.face));
+    }
+  }
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+}
+
+bool FaceBvh::bounds(Vec3& lo, Vec3& hi) const {
+  if (empty()) return false;
+  const Node& root = nodes_[0];
+  lo = {root.lo[0], root.lo[1], root.lo[2]};
+  hi = {root.hi[0], root.hi[1], root.hi[2]};
+  return true;
+}
+
 std::optional<RayHit> FaceBvh::first_hit(const Vec3& origin, const Vec3& direction, double t_max) const {
   if (empty() || !is_finite(origin) || !valid_direction(direction) || !(t_max >= 0)) return std::nullopt;
   check_fresh();

@@ -89,6 +89,49 @@ TEST_P(FaceBvhOnMesh, ClosestPointMatchesBruteForce) {
   }
 }
 
+TEST_P(FaceBvhOnMesh, FacesInBoxMatchBruteForce) {
+  SurfaceMesh m = load(GetParam().file);
+  FaceBvh bvh(m, {.split = GetParam().split});
+  auto brute = [&](const Vec3& lo, const Vec3& hi) {
+    std::vector<Face> want;
+    for (Face f : m.faces()) {
+      bool overlap = true;
+      for (int a = 0; a < 3; ++a) {
+        float flo = std::numeric_limits<float>::infinity(), fhi = -flo;
+        for (Vertex v : m.vertices(f)) {
+          flo = std::min(flo, m.position(v)[a]);
+          fhi = std::max(fhi, m.position(v)[a]);
+        }
+        overlap = overlap && flo <= hi[a] && fhi >= lo[a];
+      }
+      if (overlap) want.push_back(f);
+    }
+    return want;
+  };
+  Vec3 root_lo, root_hi;
+  ASSERT_TRUE(bvh.bounds(root_lo, root_hi));
+  const Vec3 size = root_hi - root_lo;
+  int nonempty = 0;
+  for (const Vec3& p : query_points(m, 200, 5)) {
+    const Vec3 half = size * 0.07f;
+    std::vector<Face> got;
+    bvh.faces_in_box(p - half, p + half, got);
+    EXPECT_EQ(got, brute(p - half, p + half));
+    nonempty += !got.empty();
+  }
+  EXPECT_GT(nonempty, 10);
+  // After an edit through update(): removed faces are no longer found, new ones are.
+  std::vector<Face> some;
+  bvh.faces_in_box(root_lo, root_hi, some);
+  EXPECT_EQ(some.size(), m.n_faces());
+  split_face(m, some.front(), face_centroid(m, some.front()));
+  bvh.update();
+  some.clear();
+  bvh.faces_in_box(root_lo, root_hi, some);
+  EXPECT_EQ(some, brute(root_lo, root_hi));
+  EXPECT_TRUE(m.validate().empty());
+}
+
 TEST_P(FaceBvhOnMesh, FirstHitMatchesBruteForce) {
   const SurfaceMesh m = load(GetParam().file);
   const FaceBvh bvh(m, {.split = GetParam().split});

@@ -224,6 +224,13 @@ class FaceBvh {
   std::optional<RayHit> first_hit(const Vec3& origin, const Vec3& direction,
                                   double t_max = std::numeric_limits<double>::infinity()) const;
 
+  //! Appends to `out` the faces whose boxes (of their corners) overlap the closed box [lo, hi],
+  //! sorted by index: the faces that may meet a region inside the box. O(log n + k) expected for
+  //! k faces found. Nothing for an empty tree or a box that is empty or not finite.
+  void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<Face>& out) const;
+  //! The root's box, which holds every face the tree answers for (after update() it may be
+  //! larger than their tight box): O(1). False, with lo and hi untouched, for an empty tree.
+  bool bounds(Vec3& lo, Vec3& hi) const;
   bool empty() const { return nodes_.empty() || live_ == 0; }
   //! The root's box: it covers every face the tree answers for. After update() it may still cover
   //! faces removed since the last build or refit() (their boxes shrink then), so it never shrinks
