@@ -8,8 +8,25 @@
 //   /data/...         the repository's sample meshes
 //   /wasm/...         the WebAssembly build (hedge.mjs, hedge.wasm); DIR defaults to
 //                     $HEDGE_WASM_DIR or build/wasm/dist
-// --port 0 picks a free port. The first line printed is "serving http://127.0.0.1:PORT/", which
-// the end-to-end tests read to find the page.
+// --port 0 picks a free port. The first line printed is "serving http://127.0.0.1:PORT/". The
+// browser tests (web/test/playground.mjs) call startServer({ port: 0 }) and get the URL back.
+//
+// Why a server of our own and not a maintained one (sirv 3, or vite's preview), checked against
+// both: neither serves the playground by itself.
+// - Four folders from three places, one chosen at run time (the wasm build, --wasm or
+//   $HEDGE_WASM_DIR), each under its URL prefix. sirv (and sirv-cli) serves one folder; with it we
+//   would still need this file's dispatch, its arguments and startServer(), and would save only the
+//   MIME table and the path check (about 50 lines) for four more npm packages. vite's preview serves
+//   one vite build's output, and the page is deliberately not bundled (an import map into
+//   node_modules); vite's dev server would add a bundler's weight to the page's dependencies.
+// - The files as they are now: a rebuilt hedge.wasm is served without a restart. sirv caches a
+//   listing of its folder at start unless in its dev mode.
+// - The types the page needs: application/wasm, JavaScript, and bytes for every mesh format (mrmime,
+//   sirv's table, has no type for .off or .ply and sirv then sends an empty Content-Type).
+// - Nothing out of the roots (.., encoded or not: the test 'the server serves its roots only'),
+//   GET and HEAD only, 127.0.0.1 only.
+// What it does not do, because the page needs none of it: range requests, ETags, compression, and
+// cross-origin isolation headers (the module is built without threads, so no SharedArrayBuffer).
 import { createServer } from 'node:http';
 import { createReadStream, statSync } from 'node:fs';
 import { dirname, extname, join, resolve, sep } from 'node:path';

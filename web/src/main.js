@@ -5,6 +5,12 @@
 import { Viewer } from './viewer.js';
 import { loadHedge, PageMesh, SUBDIVISION_SCHEMES } from './page_mesh.js';
 import { measurePicking } from './picking_bench.js';
+import {
+  DECIMATE_IN_WORKER_FACES,
+  LOAD_IN_WORKER_BYTES,
+  decimateInWorker,
+  loadInWorker,
+} from './heavy.js';
 import { $, fmt, state, showError, clearError, messageOf, guard, offerRemedy } from './page.js';
 import { adopt, applyEdit, meshName } from './scene.js';
 import { elementAt, faceCentre, drawHover, setHover } from './inspect.js';
@@ -18,13 +24,19 @@ import {
 
 // ---- loading ------------------------------------------------------------------------------------
 
+// A large file is read in the worker (heavy.js), so the page keeps drawing meanwhile.
 async function loadBytes(bytes, name) {
   leaveBreak();
+  const inWorker = bytes.length >= LOAD_IN_WORKER_BYTES;
   const t0 = performance.now();
-  const loaded = PageMesh.load(state.hedge, bytes, name);
+  const loaded = inWorker
+    ? await loadInWorker(state.hedge, bytes, name)
+    : PageMesh.load(state.hedge, bytes, name);
   const loadMs = performance.now() - t0;
   clearError();
-  adopt(loaded, name, loadMs);
+  adopt(loaded, name, loadMs, {
+    operation: `load ${name}${inWorker ? ' (read in a worker)' : ''}`,
+  });
 }
 
 async function loadSample(name) {
@@ -86,6 +98,30 @@ function triangulate() {
     operation: `triangulate: ${fmt(before)} faces into ${fmt(after)} triangles`,
     sameFile: true,
   });
+  document.body.dataset.edits = String(Number(document.body.dataset.edits || 0) + 1);
+}
+
+// Decimates to `percent` of the faces: a large triangle mesh in the worker (heavy.js), whose result
+// replaces the mesh on screen; else on the page, as an edit with a partial upload.
+async function decimate(percent) {
+  const s = state.current;
+  if (!s) throw new Error('no mesh loaded');
+  const before = s.counts().faces;
+  const target = Math.max(4, Math.round((before * percent) / 100));
+  const operation = `decimate to ${fmt(target)} faces`;
+  if (before < DECIMATE_IN_WORKER_FACES || !s.mesh.isTriangleMesh()) {
+    applyEdit('decimate', (m) => {
+      m.decimate(target);
+      return operation;
+    });
+    return;
+  }
+  const t0 = performance.now();
+  const next = await decimateInWorker(s, target);
+  const opMs = performance.now() - t0;
+  leaveBreak();
+  clearError();
+  adopt(next, meshName(), opMs, { operation: `${operation} (in a worker)`, sameFile: true });
   document.body.dataset.edits = String(Number(document.body.dataset.edits || 0) + 1);
 }
 
@@ -195,14 +231,7 @@ function wireInput() {
   ratio.addEventListener('input', ratioLabel);
   ratioLabel();
   $('decimate').addEventListener('click', () =>
-    guard('decimate', () =>
-      applyEdit('decimate', (s) => {
-        const before = s.counts().faces;
-        const target = Math.max(4, Math.round((before * Number(ratio.value)) / 100));
-        s.decimate(target);
-        return `decimate to ${fmt(target)} faces`;
-      }),
-    ),
+    guard('decimate', () => decimate(Number(ratio.value))),
   );
   wireBreakInput();
   $('pick-bench').addEventListener('click', () =>

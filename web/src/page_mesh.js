@@ -21,9 +21,12 @@ export async function loadHedge() {
 
 export class PageMesh {
   //! `render`: keep render buffers (RenderBuffers) for drawing; false for a mesh only measured.
-  constructor(hedge, mesh, { render = true } = {}) {
+  //! `report`: the buildReport() of the file the mesh was read from, when it was read elsewhere (in
+  //! the worker) and rebuilt here from arrays; by default the mesh's own.
+  constructor(hedge, mesh, { render = true, report = null } = {}) {
     this.hedge = hedge;
     this.mesh = mesh;
+    this.report = report;
     // Corner normals, the same for every file: smooth where faces meet at less than CREASE_DEGREES,
     // hard edges elsewhere (smooth vertex normals streak the flat sides of CAD models); 'auto'
     // keeps them up around each edit, creases included.
@@ -72,7 +75,7 @@ export class PageMesh {
   //! edges split). Notes: welding and isolated vertices, which well-formed files have too (an STL
   //! file's corners are welded into vertices).
   fileReport() {
-    const report = this.mesh.buildReport();
+    const report = this.report ?? this.mesh.buildReport();
     const warningLabels = {
       degenerateFaces: 'degenerate faces dropped',
       repeatedCorners: 'repeated corners removed',

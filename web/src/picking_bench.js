@@ -5,7 +5,7 @@
 // The large mesh is made, given its picking tree and cast at in a worker (hedge/worker), so the
 // page keeps drawing and answering while it is subdivided and its tree is built (seconds for 1.5M
 // triangles); its ray times are then round trips to the worker.
-import { createHedgeWorker } from 'hedge/worker';
+import { worker } from './heavy.js';
 
 const RAYS_PER_FRAME = 500;
 const FRAMES = 60;
@@ -54,17 +54,6 @@ const nextFrame = () => new Promise((resolve) => requestAnimationFrame(resolve))
 
 function percentile(sorted, p) {
   return sorted[Math.min(sorted.length - 1, Math.floor(p * sorted.length))];
-}
-
-// The worker, started on first use (again after a failed start).
-let remote = null;
-function worker() {
-  if (!remote)
-    remote = createHedgeWorker().catch((error) => {
-      remote = null;
-      throw error;
-    });
-  return remote;
 }
 
 function boxOf(positions) {
