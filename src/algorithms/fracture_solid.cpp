@@ -1,0 +1,220 @@
+// Solid fracture. See include/hedge/algorithms/fracture_solid.h for the contract.
+#include "hedge/algorithms/fracture_solid.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "format.h"
+#include "fracture_solid_internal.h"
+#include "fracture_solid_strike.h"
+#include "hedge/algorithms/geometry.h"
+#include "hedge/core/build.h"
+#include "hedge/core/triangulate.h"
+#include "hedge/error.h"
+
+namespace hedge {
+
+using detail::number;
+using namespace solid_detail;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point& t) {
+  const Clock::time_point now = Clock::now();
+  const double s = std::chrono::duration<double>(now - t).count();
+  t = now;
+  return s;
+}
+
+constexpr int kAttempts = 4;
+constexpr double kNudge = 1e-7;
+
+//! The options' error, or empty.
+std::string check_options(const SolidFractureOptions& o) {
+  try {
+    FractureOptions f;
+    f.material = o.material;
+    fracture_break_points(f);
+  } catch (const InvalidInputError& e) {
+    std::string what = e.what();
+    const std::string prefix = "fracture: ";
+    if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
+    return what;
+  }
+  if (o.material.rings.empty()) return "material '" + o.material.name + "' has no rings";
+  if (!std::isfinite(o.radius) || o.radius < 0)
+    return "radius must be finite and >= 0, is " + number(o.radius);
+  if (!std::isfinite(o.radius_fraction) || o.radius_fraction <= 0 || o.radius_fraction > 10)
+    return "radius_fraction must be in (0, 10], is " + number(o.radius_fraction);
+  if (o.inner_submesh < -1)
+    return "inner_submesh must be -1 (automatic) or >= 0, is " + std::to_string(o.inner_submesh);
+  if (!std::isfinite(o.density) || o.density <= 0)
+    return "density must be finite and positive, is " + number(o.density);
+  if (!std::isfinite(o.tolerance) || o.tolerance < 0)
+    return "tolerance must be finite and >= 0, is " + number(o.tolerance);
+  return {};
+}
+
+//! The strike's setting: the tree, the located impact and the radii; or the reason it cannot be.
+struct Setup {
+  std::optional<FaceBvh> own;
+  FaceBvh* tree = nullptr;
+  LocateResult hit;
+  double radius = 0;         // the outer ring's
+  double region_radius = 0;  // P's inscribed sphere
+  FractureMaterial material;
+  std::string refusal;
+};
+
+std::string point_text(const Vec3& p) {
+  return "(" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + ")";
+}
+
+void setup(SurfaceMesh& mesh, const Vec3& impact, const SolidFractureOptions& o, FaceBvh* bvh, Setup& s) {
+  if (std::string e = check_options(o); !e.empty()) {
+    s.refusal = e;
+    return;
+  }
+  if (!is_finite(impact)) {
+    s.refusal = "the impact " + point_text(impact) + " is not finite";
+    return;
+  }
+  if (mesh.n_faces() == 0) {
+    s.refusal = "the mesh has no face";
+    return;
+  }
+  if (bvh && bvh->mesh() != &mesh) {
+    s.refusal = "the FaceBvh was built over another mesh";
+    return;
+  }
+  if (bvh) {
+    bvh->update();
+    s.tree = bvh;
+  } else {
+    s.own.emplace(mesh);
+    s.tree = &*s.own;
+  }
+  const std::optional<LocateResult> hit = s.tree->closest_point(impact);
+  if (!hit) {
+    s.refusal = "no face found near the impact";
+    return;
+  }
+  s.hit = *hit;
+  const double tolerance = o.tolerance > 0 ? o.tolerance : 1e-3 * longest_edge(mesh, hit->face);
+  const double distance = std::sqrt(hit->squared_distance);
+  if (!(distance <= tolerance)) {
+    s.refusal = "the impact " + point_text(impact) + " is " + number(distance) + " from the nearest face (" +
+                std::to_string(hit->face.idx()) + "), beyond the tolerance " + number(tolerance) +
+                "; the nearest point of the surface is " + point_text(hit->point);
+    return;
+  }
+  double radius = o.radius;
+  if (radius == 0) {
+    Vec3 lo, hi;
+    s.tree->bounds(lo, hi);
+    radius = o.radius_fraction * norm(to_double(hi) - to_double(lo));
+  }
+  if (!(radius > 0) || !std::isfinite(radius)) {
+    s.refusal = "the break radius is " + number(radius) + ", not positive (a mesh of zero size?)";
+    return;
+  }
+  s.radius = radius;
+  s.material = fracture_material_at_radius(o.material, radius);
+  s.region_radius = radius + 0.5 * s.material.rings.back().spacing;
+}
+
+//! Why the faces about the region cannot be broken as a solid: a boundary edge or a non-manifold
+//! vertex among them, or empty. O(region).
+std::string check_closed(const SurfaceMesh& mesh, const std::vector<Face>& faces) {
+  for (Face f : faces)
+    for (Halfedge h : mesh.halfedges(f)) {
+      if (mesh.is_boundary(SurfaceMesh::twin(h)))
+        return "the mesh is open near the impact: edge " + std::to_string(SurfaceMesh::edge(h).idx()) +
+               " (vertices " + std::to_string(mesh.from_vertex(h).idx()) + " and " +
+               std::to_string(mesh.to_vertex(h).idx()) + ") has a face on one side only";
+      if (!mesh.is_manifold(mesh.to_vertex(h)))
+        return "the mesh is not manifold near the impact: vertex " + std::to_string(mesh.to_vertex(h).idx()) +
+               " joins several fans of faces";
+    }
+  return {};
+}
+
+}  // namespace
+
+std::string solid_fracture_refusal(SurfaceMesh& mesh, const Vec3& impact, const SolidFractureOptions& options,
+                                   FaceBvh* bvh) {
+  Setup s;
+  try {
+    setup(mesh, impact, options, bvh, s);
+  } catch (const InvalidInputError& e) {
+    return e.what();
+  }
+  if (!s.refusal.empty()) return s.refusal;
+  std::vector<Face> faces;
+  const StrikeInput in{mesh, *s.tree, to_double(s.hit.point), s.region_radius, s.material, options};
+  region_faces(in, faces);
+  return check_closed(mesh, faces);
+}
+
+SolidFractureResult fracture_solid(SurfaceMesh& mesh, const Vec3& impact, const SolidFractureOptions& o,
+                                   FaceBvh* bvh) {
+  SolidFractureResult result;
+  Clock::time_point t = Clock::now();
+  Setup s;
+  setup(mesh, impact, o, bvh, s);
+  if (!s.refusal.empty()) throw InvalidInputError("fracture_solid: " + s.refusal);
+  if (mesh.face_properties().find_base(kSubmeshProperty) &&
+      !mesh.get_face_property<std::int32_t>(kSubmeshProperty))
+    throw InvalidInputError(std::string("fracture_solid: the face property \"") + kSubmeshProperty +
+                            "\" is not of type std::int32_t");
+  if (mesh.face_properties().find_base(kInnerProperty) &&
+      !mesh.get_face_property<std::uint8_t>(kInnerProperty))
+    throw InvalidInputError(std::string("fracture_solid: the face property \"") + kInnerProperty +
+                            "\" is not of type std::uint8_t");
+  result.impact_face = s.hit.face;
+  result.impact_point = s.hit.point;
+  result.radius = s.radius;
+  result.seconds.locate = seconds_since(t);
+
+  StrikeInput in{mesh, *s.tree, to_double(s.hit.point), s.region_radius, s.material, o};
+  // The region's faces, checked closed before anything else.
+  std::vector<Face> faces;
+  region_faces(in, faces);
+  if (std::string why = check_closed(mesh, faces); !why.empty())
+    throw InvalidInputError("fracture_solid: " + why);
+
+  Strike strike;
+  bool made = false;
+  for (int attempt = 0; attempt < kAttempts && !made; ++attempt) {
+    strike = Strike{};
+    made = compute_strike(in, faces, attempt == 0 ? 0.0 : kNudge * s.radius * attempt,
+                          o.seed + static_cast<std::uint64_t>(attempt), strike);
+  }
+  result.seconds.cells = strike.seconds_cells;
+  result.seconds.clip = strike.seconds_clip;
+  result.seconds.cap = strike.seconds_cap;
+  t = Clock::now();
+  if (!made)
+    throw InvalidInputError("fracture_solid: the pieces of the strike at " + point_text(s.hit.point) +
+                            " could not be made closed (" + strike.failure +
+                            "); the mesh is unchanged. Strike again a little elsewhere");
+  if (strike.pieces.empty()) {
+    result.seconds.assemble = seconds_since(t);
+    return result;
+  }
+  const std::int32_t inner = inner_submesh_of(mesh, o.inner_submesh);
+  result.pieces = assemble_pieces(in, strike, inner);
+  apply_remaining(in, strike, inner);
+  if (bvh) bvh->update();
+  result.seconds.assemble = seconds_since(t);
+  measure_pieces(result.pieces, o);
+  result.bonds = std::move(strike.bonds);
+  result.seconds.per_piece = seconds_since(t);
+  return result;
+}
+
+}  // namespace hedge

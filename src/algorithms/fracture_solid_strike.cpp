@@ -1,0 +1,287 @@
+// Solid fracture: one strike computed without touching the mesh: the cells, each piece clipped and
+// capped, and the patch of the remaining object.
+#include "fracture_solid_strike.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "hedge/algorithms/geometry.h"
+#include "hedge/core/triangulate.h"
+#include "hedge/error.h"
+
+namespace hedge::solid_detail {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point& t) {
+  const Clock::time_point now = Clock::now();
+  const double s = std::chrono::duration<double>(now - t).count();
+  t = now;
+  return s;
+}
+
+//! Whether p lies inside the closed mesh: the first face a fixed ray from p meets is seen from
+//! behind. O(log n).
+bool inside_mesh(const StrikeInput& in, const Vec3d& p) {
+  const Vec3 dir = to_float(normalize(Vec3d{0.5773, 0.6412, 0.5061}));
+  const std::optional<RayHit> hit = in.tree.first_hit(to_float(p), dir);
+  if (!hit) return false;
+  return dot(area_vector(in.mesh, hit->face), to_double(dir)) > 0;
+}
+
+//! The soup: every face of `faces` as triangles, a polygon as the fan from its first corner (as
+//! volume() and the picking tree see it; faces are convex).
+std::vector<SoupTriangle> make_soup(const SurfaceMesh& mesh, const std::vector<Face>& faces) {
+  std::vector<SoupTriangle> soup;
+  std::vector<Halfedge> hs;
+  for (Face f : faces) {
+    hs.clear();
+    for (Halfedge h : mesh.halfedges(f)) hs.push_back(h);
+    for (std::size_t k = 1; k + 1 < hs.size(); ++k) {
+      SoupTriangle s;
+      s.face = f;
+      const std::array<Halfedge, 3> c{hs[0], hs[k], hs[k + 1]};
+      for (int i = 0; i < 3; ++i) {
+        s.corner[i] = c[i];
+        s.v[i] = mesh.to_vertex(c[i]).idx();
+        const Vec3& p = mesh.position(Vertex(s.v[i]));
+        for (int a = 0; a < 3; ++a) {
+          s.lo[a] = i == 0 ? p[a] : std::min(s.lo[a], p[a]);
+          s.hi[a] = i == 0 ? p[a] : std::max(s.hi[a], p[a]);
+        }
+      }
+      soup.push_back(s);
+    }
+  }
+  return soup;
+}
+
+bool overlaps(const SoupTriangle& t, const float lo[3], const float hi[3]) {
+  for (int a = 0; a < 3; ++a)
+    if (t.lo[a] > hi[a] || t.hi[a] < lo[a]) return false;
+  return true;
+}
+
+//! The clipped polygons of the soup triangles in a convex polytope.
+void clip_all(const Geometry& g, const Polytope& cell, double margin, std::vector<ClipPolygon>& out) {
+  float lo[3], hi[3];
+  cell.box(margin, lo, hi);
+  std::vector<HalfSpace> planes;
+  for (const Polytope::Side& s : cell.faces) planes.push_back(s.h);
+  ClipPolygon poly;
+  for (std::uint32_t t = 0; t < g.soup->size(); ++t) {
+    if (!overlaps((*g.soup)[t], lo, hi)) continue;
+    clip_triangle(g, t, planes, poly);
+    if (!poly.keys.empty()) out.push_back(poly);
+  }
+}
+
+//! The caps of a convex polytope: on each face, the part inside the mesh. Appends triangles
+//! (counter-clockwise seen from outside the polytope) with their plane as source, and their area
+//! per face.
+bool cap_polytope(const StrikeInput& in, const Polytope& cell, const std::vector<ClipPolygon>& polys,
+                  KeyedSurface& out, std::string& failure) {
+  for (std::size_t fi = 0; fi < cell.faces.size(); ++fi) {
+    const Polytope::Side& f = cell.faces[fi];
+    RegionInput r;
+    for (const Key& k : f.corners) {
+      r.corners.push_back(k);
+      r.corner_pos.push_back(cell.points.at(k));
+    }
+    for (const ClipPolygon& p : polys) {
+      const std::size_t n = p.keys.size();
+      for (std::size_t i = 0; i < n; ++i)
+        if (p.support[i] == f.h.plane) {
+          const std::size_t j = (i + 1) % n;
+          r.chain.push_back({p.keys[j], p.keys[i], p.pos[j], p.pos[i]});
+        }
+    }
+    const std::size_t n = f.corners.size();
+    std::vector<std::uint32_t> side_plane(n);
+    for (std::size_t s = 0; s < n; ++s) {
+      const Key& a = f.corners[s];
+      const Key& b = f.corners[(s + 1) % n];
+      side_plane[s] = kNoPlane;
+      for (std::uint32_t q : {a.a, a.b, a.c})
+        if (q != f.h.plane && (q == b.a || q == b.b || q == b.c)) side_plane[s] = q;
+    }
+    const std::uint32_t own = f.h.plane;
+    r.side = [&](const Key& k) -> int {
+      if (k.kind != Key::triangle || (k.b != own && k.c != own)) return -2;
+      const std::uint32_t other = k.b == own ? k.c : k.b;
+      for (std::size_t s = 0; s < n; ++s)
+        if (side_plane[s] == other) return static_cast<int>(s);
+      return -2;
+    };
+    const Key first = *std::min_element(f.corners.begin(), f.corners.end());
+    r.inside = [&]() { return inside_mesh(in, cell.points.at(first)); };
+    // The outward normal, for the frame of the triangulation.
+    Vec3d normal{};
+    for (std::size_t s = 0; s < n; ++s) add_newell_term(normal, r.corner_pos[s], r.corner_pos[(s + 1) % n]);
+    r.normal = normalize(normal);
+    std::vector<std::array<Key, 3>> tris;
+    if (!fill_region(r, tris, out.points)) {
+      failure = "a cap on plane " + std::to_string(own) + " did not close";
+      return false;
+    }
+    for (const auto& t : tris) out.add(t, kCapBit | own);
+  }
+  return true;
+}
+
+}  // namespace
+
+void KeyedSurface::finish_points() {
+  std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  points.erase(std::unique(points.begin(), points.end(),
+                           [](const auto& a, const auto& b) { return a.first == b.first; }),
+               points.end());
+}
+
+std::uint32_t KeyedSurface::index(const Key& k) const {
+  const auto it =
+      std::lower_bound(points.begin(), points.end(), k,
+                       [](const std::pair<Key, Vec3d>& p, const Key& key) { return p.first < key; });
+  return static_cast<std::uint32_t>(it - points.begin());
+}
+
+void region_faces(const StrikeInput& in, std::vector<Face>& faces) {
+  // P lies within the cube of its six axis planes (its other planes cut that cube's edges and
+  // corners off); the margin covers the nudge of a retry.
+  const double r = in.region_radius * 1.0001;
+  const Vec3d c = in.centre;
+  in.tree.faces_in_box(to_float(c - Vec3d{r, r, r}), to_float(c + Vec3d{r, r, r}), faces);
+}
+
+namespace {
+
+//! Builds a keyed surface into a mesh; false if it is not a closed manifold.
+bool build_closed(KeyedSurface& s, SurfaceMesh& mesh, std::string& failure) {
+  s.finish_points();
+  IndexedMesh im;
+  im.positions.reserve(s.points.size());
+  for (const auto& [k, p] : s.points) im.positions.push_back(to_float(p));
+  im.indices.reserve(3 * s.tris.size());
+  for (const auto& t : s.tris)
+    for (const Key& k : t) im.indices.push_back(s.index(k));
+  im.face_sizes.assign(s.tris.size(), 3);
+  BuildOptions bo;
+  bo.corner_attributes = false;
+  try {
+    mesh = build(im, bo);
+  } catch (const Error& e) {
+    failure = std::string("a piece is not manifold: ") + e.what();
+    return false;
+  }
+  for (Halfedge h : mesh.halfedges())
+    if (mesh.is_boundary(h)) {
+      failure = "a piece is open";
+      return false;
+    }
+  return true;
+}
+
+//! Triangles of each clipped polygon (a fan: it is convex), with their soup triangle as source.
+void add_polygons(const std::vector<ClipPolygon>& polys, KeyedSurface& s) {
+  for (const ClipPolygon& p : polys) {
+    for (std::size_t k = 1; k + 1 < p.keys.size(); ++k)
+      s.add({p.keys[0], p.keys[k], p.keys[k + 1]}, p.triangle);
+    for (std::size_t k = 0; k < p.keys.size(); ++k) s.points.emplace_back(p.keys[k], p.pos[k]);
+  }
+}
+
+}  // namespace
+
+bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, double nudge, std::uint64_t seed,
+                    Strike& strike) {
+  Clock::time_point t = Clock::now();
+  const Polytope region = region_polytope(in.centre, in.region_radius, strike.planes, seed, nudge);
+  const std::vector<Vec3d> points = break_points(in.material, in.centre, seed, nudge);
+  std::vector<Polytope> cells(points.size());
+  for (std::uint32_t i = 0; i < points.size(); ++i)
+    if (!voronoi_cell(region, points, i, strike.planes, cells[i])) {
+      strike.failure = "a cell is degenerate";
+      return false;
+    }
+  strike.soup = make_soup(in.mesh, faces);
+  Geometry g{&in.mesh, &strike.planes, &strike.soup, nullptr};
+  const double margin = 1e-6 * in.region_radius;
+  strike.seconds_cells += seconds_since(t);
+
+  // Per plane and piece, the cap area, for the bonds.
+  std::vector<std::pair<std::pair<std::size_t, std::uint32_t>, double>> cap_areas;
+  std::vector<ClipPolygon> polys;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (cells[i].empty()) continue;
+    polys.clear();
+    clip_all(g, cells[i], margin, polys);
+    strike.seconds_clip += seconds_since(t);
+    PieceDraft d;
+    d.cell = i;
+    add_polygons(polys, d.surface);
+    if (!cap_polytope(in, cells[i], polys, d.surface, strike.failure)) return false;
+    strike.seconds_cap += seconds_since(t);
+    if (d.surface.tris.empty()) continue;
+    if (!build_closed(d.surface, d.mesh, strike.failure)) return false;
+    strike.pieces.push_back(std::move(d));
+    // Cap areas per plane.
+    PieceDraft& piece = strike.pieces.back();
+    for (std::size_t k = 0; k < piece.surface.tris.size(); ++k) {
+      if (!(piece.surface.source[k] & kCapBit)) continue;
+      const auto& tri = piece.surface.tris[k];
+      const Vec3d a = piece.surface.points[piece.surface.index(tri[0])].second;
+      const Vec3d b = piece.surface.points[piece.surface.index(tri[1])].second;
+      const Vec3d c = piece.surface.points[piece.surface.index(tri[2])].second;
+      const double ar = triangle_area(a, b, c);
+      piece.cap_area += ar;
+      cap_areas.push_back({{strike.pieces.size() - 1, piece.surface.source[k] & ~kCapBit}, ar});
+    }
+    strike.seconds_cap += seconds_since(t);
+  }
+  if (strike.pieces.empty()) return true;
+
+  // The patch: the touched triangles' parts outside P, and P's caps turned inwards.
+  polys.clear();
+  clip_all(g, region, margin, polys);
+  std::vector<ClipPolygon> inside_p(strike.soup.size());
+  std::vector<char> touched_tri(strike.soup.size(), 0);
+  for (ClipPolygon& p : polys) {
+    touched_tri[p.triangle] = 1;
+    inside_p[p.triangle] = p;
+  }
+  strike.seconds_clip += seconds_since(t);
+  KeyedSurface caps;
+  if (!cap_polytope(in, region, polys, caps, strike.failure)) return false;
+  for (std::size_t k = 0; k < caps.tris.size(); ++k) {
+    const auto& tri = caps.tris[k];
+    strike.patch.add({tri[0], tri[2], tri[1]}, caps.source[k]);
+  }
+  strike.patch.points = std::move(caps.points);
+  if (!patch_outside(in, g, inside_p, touched_tri, strike)) return false;
+  strike.patch.finish_points();
+  strike.seconds_cap += seconds_since(t);
+
+  // Bonds: cap area on a bisector joins its two cells' pieces, on a plane of P the remaining object.
+  std::sort(cap_areas.begin(), cap_areas.end());
+  std::vector<std::size_t> piece_of_cell(cells.size(), kSolidRemaining);
+  for (std::size_t p = 0; p < strike.pieces.size(); ++p) piece_of_cell[strike.pieces[p].cell] = p;
+  std::map<std::pair<std::size_t, std::size_t>, double> bond;
+  for (const auto& [key, ar] : cap_areas) {
+    const auto [piece, plane] = key;
+    const auto [i, j] = strike.planes.pair_of[plane];
+    std::size_t other = kSolidRemaining;
+    if (i >= 0) {
+      const std::size_t cell = strike.pieces[piece].cell;
+      other = piece_of_cell[static_cast<std::size_t>(cell == std::size_t(i) ? j : i)];
+      if (other == kSolidRemaining || other < piece) continue;  // counted from the other end (or empty)
+    }
+    bond[{piece, other}] += ar;
+  }
+  for (const auto& [ab, ar] : bond)
+    if (ar > 0) strike.bonds.push_back({ab.first, ab.second, ar});
+  return true;
+}
+
+}  // namespace hedge::solid_detail
