@@ -11,10 +11,6 @@
 
 namespace hedge::wasm {
 
-namespace {
-
-//! A fracture material from the object the JS layer made of a custom material (see
-//! WasmMesh::fracture); fracture() checks the values.
 FractureMaterial material_from_js(const val& m) {
   FractureMaterial out;
   out.name = m["name"].as<std::string>();
@@ -35,6 +31,8 @@ FractureMaterial material_from_js(const val& m) {
   out.absolute = m["absolute"].as<bool>();
   return out;
 }
+
+namespace {
 
 //! Numbers per shard in the packed result of WasmMesh::fracture.
 constexpr std::size_t kShardScalars = 7 + 6 * 3 + 9;
