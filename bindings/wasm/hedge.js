@@ -621,7 +621,7 @@ export class Mesh extends NativeOwner {
    *  pieces' mass. hulls: compute each piece's convex hull. kind: 'solid', or 'auto' to break an
    *  open or non-manifold mesh by surface fracture instead (the result then is fracture()'s, with
    *  kind 'surface' and the refusal that sent it there; `surface`: more options for that fracture,
-   *  e.g. {thickness}). Uses the picking tree, so a strike costs
+   *  e.g. {thickness}; a bad option or impact throws as with 'solid'). Uses the picking tree, so a strike costs
    *  the broken region. Returns {kind: 'solid', pieces: [Piece], bonds: [{a, b, area}] (pieces a
    *  and b share `area` of cap; b null: the remaining object), impactFace, impactPoint, radius,
    *  seconds: {locate, cells, clip, cap, assemble, perPiece, fracture, pack}}. A refused strike (an
@@ -637,8 +637,10 @@ export class Mesh extends NativeOwner {
     const [preset, custom] = materialArguments('fractureSolid', material);
     const o = solidOptions(options);
     if (kind === 'auto') {
+      // Only an open or non-manifold mesh goes to surface fracture; a bad option or impact is an
+      // error, as it is with kind 'solid'.
       const refusal = this._call('solidFractureRefusal', at, preset, custom, o);
-      if (refusal !== '') {
+      if (/^the mesh is (open|not manifold)/.test(refusal)) {
         const { seed, radius, density, tolerance, hulls } = o;
         const shards = this.fracture(impact, {
           material,

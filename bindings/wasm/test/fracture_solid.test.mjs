@@ -180,6 +180,14 @@ test('an open mesh is refused with a reason, unchanged; kind auto breaks it by s
   assert.equal(auto.refusal, why);
   assert.ok(auto.shards.length > 0);
   assert.deepEqual(plate.validate(), []);
+  // A bad option is an error with 'auto' too, not a reason to break the surface.
+  const faces = plate.counts().faces;
+  assert.throws(
+    () => plate.fractureSolid([1.2, 1.7, 0], { kind: 'auto', radiusFraction: 0 }),
+    (e) =>
+      e instanceof HedgeError && e.kind === 'invalid-argument' && /radius_fraction/.test(e.message),
+  );
+  assert.equal(plate.counts().faces, faces);
   auto.shards.forEach((s) => s.dispose());
   plate.dispose();
   // A closed mesh with 'auto' breaks solid.
