@@ -32,3 +32,8 @@ const auto = mesh.fractureSolid([0, 0, 0], { kind: 'auto', surface: { thickness:
 export const solidParts: number =
   pieces.length + bonds.length + (auto.kind === 'solid' ? auto.pieces.length : auto.shards.length);
 export const solidRefusal: string | null = mesh.solidFractureRefusal([0, 0, 0]);
+const remoteSolid = await remote.fractureSolid(loaded.id, [0, 0, 0], { kind: 'auto' });
+export const remotePieceIds: number[] =
+  remoteSolid.kind === 'solid'
+    ? remoteSolid.pieces.map((p) => p.id)
+    : remoteSolid.shards.map((s) => s.id);
