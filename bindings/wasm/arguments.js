@@ -32,6 +32,7 @@ const ELEMENT = kind('an element index (a whole number)', Number.isInteger);
 const COUNT = kind('a whole number >= 0', (x) => Number.isInteger(x) && x >= 0);
 const NUMBER = kind('a number', isNumber);
 const STRING = kind('a string', (x) => typeof x === 'string');
+const BOOLEAN = kind('a boolean', (x) => typeof x === 'boolean');
 const VEC3 = kind('[x, y, z] (an array or typed array of 3 numbers)', (x) => {
   if (!isArrayLike(x) || x.length !== 3) return false;
   for (let i = 0; i < 3; ++i) if (typeof x[i] !== 'number') return false;
@@ -161,6 +162,37 @@ const ARGUMENTS = {
         }),
       ],
     ],
+    fractureSolid: [
+      ['impact', VEC3],
+      [
+        'options',
+        options({
+          kind: STRING,
+          surface: OBJECT,
+          seed: NUMBER,
+          radius: NUMBER,
+          radiusFraction: NUMBER,
+          innerSubmesh: NUMBER,
+          density: NUMBER,
+          tolerance: NUMBER,
+          hulls: BOOLEAN,
+        }),
+      ],
+    ],
+    solidFractureRefusal: [
+      ['impact', VEC3],
+      [
+        'options',
+        options({
+          seed: NUMBER,
+          radius: NUMBER,
+          radiusFraction: NUMBER,
+          innerSubmesh: NUMBER,
+          density: NUMBER,
+          tolerance: NUMBER,
+        }),
+      ],
+    ],
     computeCornerNormals: [['creaseDegrees', optional(NUMBER)]],
     toArrays: [['options', options({})]],
     toFile: [['name', STRING]],
@@ -229,12 +261,12 @@ export function installArgumentChecks(classes) {
 
 // A custom fracture material as the module takes it: every field typed, the rings flattened.
 // The values themselves (ranges, a zero grain with a stretch) are checked by fracture().
-export function customMaterial(m) {
-  const bad = (what) => new HedgeError('invalid-argument', `fracture: material.${what}`);
+export function customMaterial(m, call = 'fracture') {
+  const bad = (what) => new HedgeError('invalid-argument', `${call}: material.${what}`);
   if (m === null || typeof m !== 'object')
     throw new HedgeError(
       'invalid-argument',
-      'fracture: material must be a preset name or an object',
+      `${call}: material must be a preset name or an object`,
     );
   const {
     name = 'custom',

@@ -251,6 +251,98 @@ export interface FractureResult {
   };
 }
 
+export interface SolidFractureOptions {
+  /** Default 'stone'. */
+  material?: FracturePreset | FractureMaterial;
+  /** 'solid' (default), or 'auto': an open or non-manifold mesh breaks by surface fracture. */
+  kind?: 'solid' | 'auto';
+  /** With kind 'auto': more options of the surface fracture it falls back to (e.g. thickness). */
+  surface?: FractureOptions;
+  /** A whole number in [0, 2^53]. Default 0. */
+  seed?: number;
+  /** The break radius in model units. Default 0: radiusFraction of the bounding-box diagonal. */
+  radius?: number;
+  /** In (0, 10]. Default 0.25. */
+  radiusFraction?: number;
+  /** The caps' "f:submesh"; -1 (default): one more than the largest. */
+  innerSubmesh?: number;
+  /** Mass per unit volume. Default 1. */
+  density?: number;
+  /** Largest distance from the impact to the surface; 0: 1e-3 of the nearest face's longest edge. */
+  tolerance?: number;
+  /** Compute each piece's convex hull. Default true. */
+  hulls?: boolean;
+}
+
+/** A closed piece broken off by Mesh.fractureSolid(). */
+export class Piece {
+  /** Closed, outward; its caps are marked "f:inner" and carry the inner submesh. */
+  readonly mesh: Mesh;
+  readonly faces: number;
+  /** Positive. */
+  readonly volume: number;
+  /** Area of the cap (inner) faces. */
+  readonly capArea: number;
+  readonly mass: number;
+  readonly centroid: [number, number, number];
+  readonly centreOfMass: [number, number, number];
+  /** About the centre of mass, row-major 3x3. */
+  readonly inertia: Float64Array;
+  readonly principalMoments: [number, number, number];
+  readonly principalAxes: [
+    [number, number, number],
+    [number, number, number],
+    [number, number, number],
+  ];
+  /** As Shard's hull. */
+  readonly hull: {
+    positions: Float32Array;
+    indices: Uint32Array;
+    dimension: number;
+    tolerance: number;
+  };
+  /** Frees the piece's mesh now. Idempotent. */
+  dispose(): void;
+}
+
+/** Pieces a and b share `area` of cap; b null: a touches the remaining object. a < b. */
+export interface SolidBond {
+  a: number;
+  b: number | null;
+  area: number;
+}
+
+export interface SolidFractureResult {
+  kind: 'solid';
+  /** In the order of their break points; empty cells make none. */
+  pieces: Piece[];
+  /** Sorted by (a, b). */
+  bonds: SolidBond[];
+  impactFace: number;
+  impactPoint: [number, number, number];
+  /** The break radius used, in model units. */
+  radius: number;
+  /** Seconds, measured in wasm: per stage; `fracture`, the whole library call; `pack`, making the
+   *  result for JS afterwards. */
+  seconds: {
+    locate: number;
+    cells: number;
+    clip: number;
+    cap: number;
+    assemble: number;
+    perPiece: number;
+    fracture: number;
+    pack: number;
+  };
+}
+
+/** What fractureSolid() with kind 'auto' returns for a mesh solid fracture refuses. */
+export interface SurfaceFallbackResult extends FractureResult {
+  kind: 'surface';
+  /** Why solid fracture was refused. */
+  refusal: string;
+}
+
 export class Hedge {
   readonly module: unknown;
   /** Log console warnings of misuse that costs memory (Mesh.dispose() under a live RenderBuffers).
@@ -355,6 +447,17 @@ export class Mesh {
   computeCornerNormals(creaseDegrees?: number): void;
   /** Breaks the mesh at impact; the broken faces leave it as shards (see FractureOptions). */
   fracture(impact: Vec3, options?: FractureOptions): FractureResult;
+  /** Breaks the closed mesh at impact into closed pieces; the mesh becomes the remaining object. */
+  fractureSolid(
+    impact: Vec3,
+    options?: SolidFractureOptions & { kind?: 'solid' },
+  ): SolidFractureResult;
+  fractureSolid(
+    impact: Vec3,
+    options: SolidFractureOptions & { kind: 'auto' },
+  ): SolidFractureResult | SurfaceFallbackResult;
+  /** Why fractureSolid() would be refused, or null. */
+  solidFractureRefusal(impact: Vec3, options?: Omit<SolidFractureOptions, 'kind'>): string | null;
   toArrays(options?: { triangulate?: boolean }): Arrays;
   toFile(name: string): Uint8Array;
   memoryBytes(): number;

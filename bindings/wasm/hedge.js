@@ -24,6 +24,9 @@ import createHedge from './hedge.mjs';
 
 import { instantiate } from './load.js';
 import { customMaterial, installArgumentChecks, point3, UNITS } from './arguments.js';
+import { Piece, solidOptions, unpackSolidResult } from './fracture_solid.js';
+
+export { Piece };
 
 /** An error raised by hedge. kind names the C ABI's status (hedge_status), one to one:
  *  'invalid-argument', 'bad-handle' (a disposed object, an element out of range or deleted),
@@ -48,6 +51,17 @@ export const smoothingMethods = Object.freeze([...METHODS]);
 const MATERIALS = ['glass', 'stone', 'wood', 'ice'];
 /** The fracture presets, for menus. */
 export const fractureMaterials = Object.freeze([...MATERIALS]);
+
+// A fracture material as the module takes it: [preset name, ''] or ['', the custom material].
+function materialArguments(call, material) {
+  if (typeof material !== 'string') return ['', customMaterial(material, call)];
+  if (!MATERIALS.includes(material))
+    throw new HedgeError(
+      'invalid-argument',
+      `${call}: unknown material '${material}' (${MATERIALS.join(', ')}, or an object)`,
+    );
+  return [material, null];
+}
 
 /** Loads the module, in node, a browser page, a module worker or a bundle (load.js); sets no
  *  globals. options go to the emscripten factory: wasmBinary (the bytes of hedge.wasm) or
@@ -612,6 +626,67 @@ export class Mesh extends NativeOwner {
     }
     result.shards = shards;
     return result;
+  }
+
+  /** Breaks the closed mesh at `impact` ([x, y, z], within the tolerance of the surface) into
+   *  closed pieces with capped inner faces (docs/fracture.md); the mesh, edited in place, becomes
+   *  the remaining object, closed too. material: a preset ('stone' by default) or an object as for
+   *  fracture(). radius: the break radius in model units (0: radiusFraction times the diagonal of
+   *  the mesh's bounding box). seed: a whole number (the same seed, mesh and impact give the same
+   *  pieces). innerSubmesh: the caps' submesh (-1: one more than the largest). density: for the
+   *  pieces' mass. hulls: compute each piece's convex hull. kind: 'solid', or 'auto' to break an
+   *  open or non-manifold mesh by surface fracture instead (the result then is fracture()'s, with
+   *  kind 'surface' and the refusal that sent it there; `surface`: more options for that fracture,
+   *  e.g. {thickness}; a bad option or impact throws as with 'solid'). Uses the picking tree, so a strike costs
+   *  the broken region. Returns {kind: 'solid', pieces: [Piece], bonds: [{a, b, area}] (pieces a
+   *  and b share `area` of cap; b null: the remaining object), impactFace, impactPoint, radius,
+   *  seconds: {locate, cells, clip, cap, assemble, perPiece, fracture, pack}}. A refused strike (an
+   *  open mesh with kind 'solid', a bad impact or option) throws a HedgeError of kind
+   *  'invalid-argument', the mesh unchanged. */
+  fractureSolid(impact, { material = 'stone', kind = 'solid', surface = {}, ...options } = {}) {
+    if (kind !== 'solid' && kind !== 'auto')
+      throw new HedgeError(
+        'invalid-argument',
+        `fractureSolid: unknown kind '${kind}' (solid, auto)`,
+      );
+    const at = point3(impact);
+    const [preset, custom] = materialArguments('fractureSolid', material);
+    const o = solidOptions(options);
+    if (kind === 'auto') {
+      // Only an open or non-manifold mesh goes to surface fracture; a bad option or impact is an
+      // error, as it is with kind 'solid'.
+      const refusal = this._call('solidFractureRefusal', at, preset, custom, o);
+      if (/^the mesh is (open|not manifold)/.test(refusal)) {
+        const { seed, radius, density, tolerance, hulls } = o;
+        const shards = this.fracture(impact, {
+          material,
+          seed,
+          breakRadius: radius,
+          density,
+          tolerance,
+          hulls,
+          ...surface,
+        });
+        return { kind: 'surface', refusal, ...shards };
+      }
+    }
+    const result = this._call('fractureSolid', at, preset, custom, o);
+    return unpackSolidResult(result, (native) => new Mesh(this.hedge, native));
+  }
+
+  /** Why fractureSolid(impact, options) would be refused (the mesh open or non-manifold near the
+   *  impact, naming an edge; the impact off the surface; an illegal option), or null if it would
+   *  not. Checks only the faces of the broken region, through the picking tree. */
+  solidFractureRefusal(impact, { material = 'stone', ...options } = {}) {
+    const [preset, custom] = materialArguments('solidFractureRefusal', material);
+    const why = this._call(
+      'solidFractureRefusal',
+      point3(impact),
+      preset,
+      custom,
+      solidOptions(options),
+    );
+    return why === '' ? null : why;
   }
 
   /** The mesh as index buffers (copies): {positions, indices, faceSizes (null for triangles)};

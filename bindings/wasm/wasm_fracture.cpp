@@ -22,6 +22,8 @@ FractureUnits units_from_js(const std::string& name) {
                           name + "'");
 }
 
+}  // namespace
+
 //! A fracture material from the object the JS layer made of a custom material (see
 //! WasmMesh::fracture); fracture() checks the values.
 FractureMaterial material_from_js(const val& m) {
@@ -45,6 +47,8 @@ FractureMaterial material_from_js(const val& m) {
   out.radius = m["radius"].as<double>();
   return out;
 }
+
+namespace {
 
 //! Numbers per shard in the packed result of WasmMesh::fracture.
 constexpr std::size_t kShardScalars = 7 + 6 * 3 + 9 + 1;

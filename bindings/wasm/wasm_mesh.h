@@ -6,9 +6,15 @@
 #include <memory>
 #include <string>
 
+#include "hedge/algorithms/fracture.h"
 #include "wasm_support.h"
 
 namespace hedge::wasm {
+
+//! A fracture material from the object the JS layer made of a custom material (arguments.js's
+//! customMaterial(): {name, rings (Float64Array, 3 per ring), grain, grainStretch, refineEdge,
+//! absolute}, typed); the fracture functions check the values (wasm_fracture.cpp).
+FractureMaterial material_from_js(const val& m);
 
 //! Filled by WasmMesh::pick and read by the JS layer as a Float64Array at pickScratchAddress():
 //! [face, t, px, py, pz, halfedge, edge, vertex, edgeDistance, vertexDistance, c0, c1, c2, b0, b1, b2].
@@ -111,6 +117,22 @@ class WasmMesh {
   val fracture(val impact, const std::string& preset, val custom, double seed, double break_radius,
                const std::string& units, double radius, double thickness, double density,
                double shell_thickness, double tolerance, bool hulls);
+
+  // ---- Solid fracture (wasm_fracture_solid.cpp) ----
+
+  //! Breaks the closed mesh at `impact` into closed pieces (fracture_solid.h), through the mesh's
+  //! picking tree. `preset`/`custom` as for fracture(); `options`: {radius, radiusFraction, seed,
+  //! innerSubmesh, density, tolerance, hulls}, numbers and a boolean the JS layer has typed.
+  //! Returns {pieces: {count, scalars (kPieceScalars per piece: faces, volume, cap area, mass, hull
+  //! dimension, hull tolerance, centroid, centre of mass, principal moments, the three principal
+  //! axes, inertia (9)), meshes (NativeMesh each), hullPositions, hullIndices, hullVertexOffsets,
+  //! hullIndexOffsets (as fracture()'s)}, bonds (Float64Array, 3 per bond: a, b (-1: the remaining
+  //! object), area), impactFace, impactPoint, radius, seconds: {locate, cells, clip, cap, assemble,
+  //! perPiece, fracture (the whole call), pack}}. A refused strike leaves the mesh as it was.
+  val fracture_solid(val impact, const std::string& preset, val custom, val options);
+  //! Why the mesh cannot be solid-fractured at `impact` with these options (as fracture_solid()),
+  //! or "" if it can; checks the broken region only, through the picking tree.
+  std::string solid_fracture_refusal(val impact, const std::string& preset, val custom, val options);
 
  private:
   std::shared_ptr<MeshState> s_;

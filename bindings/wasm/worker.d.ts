@@ -10,6 +10,9 @@ import type {
   FractureOptions,
   FractureResult,
   Pick,
+  Piece,
+  SolidFractureOptions,
+  SolidFractureResult,
   Shard,
   SmoothMethod,
   SubdivisionScheme,
@@ -27,6 +30,17 @@ export type RemoteShard = Omit<Shard, 'mesh' | 'dispose'> & { id: number };
 
 export interface RemoteFractureResult extends Omit<FractureResult, 'shards'> {
   shards: RemoteShard[];
+}
+
+export type RemotePiece = Omit<Piece, 'mesh' | 'dispose'> & { id: number };
+
+export interface RemoteSolidFractureResult extends Omit<SolidFractureResult, 'pieces'> {
+  pieces: RemotePiece[];
+}
+
+export interface RemoteSurfaceFallbackResult extends RemoteFractureResult {
+  kind: 'surface';
+  refusal: string;
 }
 
 export interface DrawBuffers {
@@ -80,6 +94,12 @@ export interface HedgeWorker {
   pickMany(id: number, rays: Float32Array): Promise<Int32Array>;
   /** Mesh.fracture(); each shard's mesh stays in the worker (dispose(shard.id) frees it). */
   fracture(id: number, impact: Vec3, options?: FractureOptions): Promise<RemoteFractureResult>;
+  /** Mesh.fractureSolid(); each piece's mesh stays in the worker (dispose(piece.id) frees it). */
+  fractureSolid(
+    id: number,
+    impact: Vec3,
+    options?: SolidFractureOptions,
+  ): Promise<RemoteSolidFractureResult | RemoteSurfaceFallbackResult>;
   /** Draw buffers of the mesh as a RenderBuffers (not interleaved) makes them. normals as
    *  createRenderBuffers's; default 'auto'. */
   buffers(

@@ -66,6 +66,16 @@ const OPS = {
     return result;
   },
 
+  /** Mesh.fractureSolid(); each piece's (or, for kind 'auto' on an open mesh, each shard's) mesh
+   *  stays in the worker under a new id: {kind, pieces: [{id, volume, ..., hull}], bonds, ...}. */
+  fractureSolid(w, id, point, options) {
+    const result = w.mesh(id).fractureSolid(point, options);
+    const keep = ({ mesh, ...values }) => ({ id: w.keep(mesh), ...values });
+    if (result.kind === 'solid') result.pieces = result.pieces.map(keep);
+    else result.shards = result.shards.map(keep);
+    return result;
+  },
+
   /** Draw buffers: {positions, indices, normals} (Float32Array, Uint32Array, Float32Array; normals
    *  empty for normals: 'none'), from a RenderBuffers made for the call. options.normals as
    *  createRenderBuffers's ('auto' by default; 'auto' draws corner normals if computed). */

@@ -31,6 +31,7 @@ const CALLS = [
   'pick',
   'pickMany',
   'fracture',
+  'fractureSolid',
   'buffers',
   'computeCornerNormals',
   'toArrays',

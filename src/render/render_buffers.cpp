@@ -561,6 +561,12 @@ void RenderBuffers::sync_changes() {
     return;
   }
   const SurfaceMesh& m = *mesh_;
+  // The mesh gained submeshes since the regions were laid out ("f:submesh" added by an edit, as
+  // solid fracture adds it for its caps): lay them out again, grouped by it.
+  if (!f_submesh_ && m.get_face_property<std::int32_t>(kSubmeshProperty)) {
+    rebuild();
+    return;
+  }
   grow_element_arrays();
   written_vertices_.clear();
   written_indices_.clear();

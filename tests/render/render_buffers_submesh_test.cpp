@@ -259,6 +259,22 @@ TEST(RenderBuffersSubmesh, AFaceMovedToAnotherSubmeshMovesItsTriangles) {
   expect_submeshes(rs);
 }
 
+TEST(RenderBuffersSubmesh, SubmeshesAddedByAnEditAreGroupedAtTheNextSync) {
+  // As solid fracture adds "f:submesh" for its caps to a mesh that had none.
+  SurfaceMesh m = grid_with_submeshes(6, 0);
+  RenderBuffers rs(m);
+  ASSERT_EQ(rs.submesh_count(), 1u);
+  auto s = m.add_face_property<std::int32_t>("f:submesh", 0);
+  const Face f = *m.faces().begin();
+  const Vertex v = split_face(m, f, centre(m, f));
+  for (Face g : m.faces(v)) s[g] = 2;
+  EXPECT_TRUE(rs.sync().full);
+  EXPECT_EQ(rs.submesh_count(), 3u);
+  for (Face g : m.faces(v)) EXPECT_EQ(rs.face_submesh(g), 2u);
+  expect_submeshes(rs);
+  EXPECT_TRUE(m.validate().empty());
+}
+
 TEST(RenderBuffersSubmesh, CompactKeepsTheSubmeshesAndTheirRoom) {
   SurfaceMesh m = grid_with_submeshes(8);
   RenderBuffers rs(m, RenderOptions{.interleaved = false});

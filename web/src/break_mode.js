@@ -1,6 +1,9 @@
 // The break scene: a plate, a sample or the loaded mesh above a ground plane; a click strikes the
-// mesh, fracture() breaks it in wasm, the rest is synced to the GPU by dirty ranges and the shards
-// fall in the physics world (break_scene.js). Also times strikes, as the benchmark does.
+// mesh and breaks it in wasm, the rest is synced to the GPU by dirty ranges and the broken parts
+// fall in the physics world (break_scene.js). The plate breaks by surface fracture into shards; a 3D
+// object (spot, the loaded mesh) by solid fracture into closed pieces whose caps are drawn in an
+// inner colour, or by surface fracture when it is open (fractureSolid's kind 'auto'). Also times
+// strikes, as the benchmark does.
 import { PageMesh } from './page_mesh.js';
 import { BreakWorld, STEP, median, plateArrays } from './break_scene.js';
 import { $, fmt, ms, state, clearError, guard } from './page.js';
@@ -16,6 +19,8 @@ const scene = {
   world: null, // the BreakWorld (cannon-es)
   thickness: 0, // of the shards
   size: {}, // the break radius ({units, radius}) of the scene's strikes; {}: the preset's
+  solid: false, // strikes break by solid fracture (kind 'auto': surface fracture if refused)
+  innerSubmesh: 1, // the caps' submesh, drawn in the inner colour
   strikes: [], // {ms, wasmMs, shards} of each strike in the scene
   ticking: false, // the physics loop is running
   lastTick: undefined,
@@ -35,6 +40,7 @@ export function leaveBreak() {
   if (scene.world) scene.world.clear();
   if (state.viewer) {
     state.viewer.setSeeThrough(false);
+    state.viewer.setInnerSubmesh(null);
     state.viewer.setWireframe($('show-wire').checked);
   }
   delete document.body.dataset.scene;
@@ -92,7 +98,10 @@ async function setupBreak(name) {
   // preset's fraction of the diagonal would take 0.55 m, some 12k of its 100k triangles a strike);
   // an object breaks the preset's fraction of its size.
   scene.size = name === 'plate' ? { units: 'model', radius: 0.25 } : {};
+  scene.solid = name !== 'plate';
+  scene.innerSubmesh = next.submeshCount();
   state.mode = 'break';
+  if (scene.solid) state.viewer.setInnerSubmesh(scene.innerSubmesh);
   // The plate as glass, so the shards below show through; no wireframe over its 100k triangles.
   state.viewer.setSeeThrough(name === 'plate');
   state.viewer.setWireframe(name !== 'plate' && $('show-wire').checked);
@@ -108,14 +117,19 @@ function showFracture() {
   const strikes = scene.strikes;
   const last = strikes[strikes.length - 1];
   const m = median(strikes.map((x) => x.ms));
+  const parts = last.kind === 'solid' ? 'closed pieces' : 'shards';
   $('stat-fracture').textContent =
-    `${ms(last.ms)} (in fracture() ${ms(last.wasmMs)}), median ${ms(m)} over ${strikes.length} strike(s); ${last.shards} shards`;
+    `${ms(last.ms)} (in the library ${ms(last.wasmMs)}), median ${ms(m)} over ${strikes.length} strike(s); ${last.shards} ${parts}`;
+  // kind: 'solid' or 'surface'; closed: how many of the parts have no boundary.
   document.body.dataset.fracture = JSON.stringify({
     last: last.ms,
     wasm: last.wasmMs,
     median: m,
     strikes: strikes.length,
     shards: last.shards,
+    kind: last.kind,
+    closed: last.closed,
+    bonds: last.bonds,
   });
 }
 
@@ -165,37 +179,66 @@ function strikeOptions() {
   return { material, seed, thickness: scene.thickness, density: DENSITY[material], ...scene.size };
 }
 
+//! A strike of the scene's kind: solid fracture of a 3D object (surface fracture when it is open),
+//! surface fracture of the plate.
+function breakAt(s, point, options) {
+  if (!scene.solid) return s.fracture(point, options);
+  const { material, seed, density, thickness } = options;
+  return s.fractureSolid(point, {
+    kind: 'auto',
+    material,
+    seed,
+    density,
+    innerSubmesh: scene.innerSubmesh,
+    surface: { thickness },
+  });
+}
+
+// A closed triangle mesh: every half-edge has a face (3 per triangle).
+const isClosed = (mesh) => {
+  const c = mesh.counts();
+  return mesh.isTriangleMesh() && c.halfedges === 3 * c.faces;
+};
+
 //! Strikes the mesh at `point` (the ray travelling along `direction`): fracture in wasm, the
-//! remaining mesh synced to the GPU by dirty ranges, the shards handed to the physics.
+//! remaining mesh synced to the GPU by dirty ranges, the shards or pieces handed to the physics.
 function strike(point, direction) {
   const options = strikeOptions();
   let result = null;
   let strikeMs = 0;
   applyEdit('strike', (s) => {
     const t0 = performance.now();
-    result = s.fracture(point, options);
+    result = breakAt(s, point, options);
     strikeMs = performance.now() - t0;
-    return `strike (${options.material}, seed ${options.seed})`;
+    const kind = result.kind === 'solid' ? 'solid' : 'surface';
+    return `strike (${kind}, ${options.material}, seed ${options.seed})`;
   });
   const s = result.seconds;
-  scene.strikes.push({ ms: strikeMs, wasmMs: 1000 * s.fracture, shards: result.shards.length });
+  const solid = result.kind === 'solid';
+  const parts = solid ? result.pieces : result.shards;
+  scene.strikes.push({
+    ms: strikeMs,
+    wasmMs: 1000 * s.fracture,
+    shards: parts.length,
+    kind: solid ? 'solid' : 'surface',
+    closed: parts.filter((p) => isClosed(p.mesh)).length,
+    bonds: solid ? result.bonds.length : 0,
+  });
   showFracture();
   const d = Math.hypot(...direction) || 1;
   try {
-    for (const shard of result.shards) {
+    for (const shard of parts) {
       // Away from the impact along the surface, and on along the strike.
       const out = [0, 1, 2].map((i) => shard.centreOfMass[i] - point[i]);
       const len = Math.hypot(...out) || 1;
       const away = [0, 1, 2].map((i) => out[i] / len + (0.5 * direction[i]) / d);
       const n = Math.hypot(...away) || 1;
-      scene.world.addShard(
-        shard,
-        away.map((x) => x / n),
-        PUSH,
-      );
+      const unit = away.map((x) => x / n);
+      if (solid) scene.world.addPiece(shard, unit, PUSH, scene.innerSubmesh);
+      else scene.world.addShard(shard, unit, PUSH);
     }
   } finally {
-    for (const shard of result.shards) shard.dispose();
+    for (const shard of parts) shard.dispose();
   }
   // Where the new shards start, for the tests: the simulation moves them from the next frame on.
   scene.strikeSnapshot = { steps: scene.world.steps, shards: scene.world.report() };
@@ -215,9 +258,9 @@ export function strikeAt(event) {
 //! Times `count` strikes of the chosen material on a copy of the scene's mesh, at points where
 //! random rays hit it (after 5 that are not counted: the first calls run before the engine has
 //! optimised the wasm code). As in the benchmark, the copy is made again (untimed) once a fifth of
-//! its faces has broken off. Shards are made (with their hulls) and freed, not simulated; the break
-//! radius is the scene's strikes'. A point fracture refuses (a lone face left by earlier strikes)
-//! is skipped.
+//! its faces has broken off. Shards (in a 3D object's scene, solid pieces, as a click makes them) are
+//! made (with their hulls) and freed, not simulated; the plate's break radius is its strikes'. A
+//! point fracture refuses (a lone face left by earlier strikes) is skipped.
 async function timeStrikes(count = 25) {
   const s = state.current;
   if (!s || state.mode !== 'break') throw new Error('set up a break scene first');
@@ -266,7 +309,11 @@ async function timeStrikes(count = 25) {
       let result;
       const t0 = performance.now();
       try {
-        result = copy.fracture(hit.point, { material, seed: attempt, ...scene.size });
+        // Surface strikes as the benchmark times them (no thickness); solid ones as clicked.
+        const extra = scene.solid
+          ? { density: DENSITY[material], thickness: scene.thickness }
+          : scene.size;
+        result = breakAt(copy, hit.point, { material, seed: attempt, ...extra });
       } catch (error) {
         if (error.kind !== 'invalid-argument') throw error;
         ++skipped;
@@ -274,14 +321,15 @@ async function timeStrikes(count = 25) {
       }
       const t = performance.now() - t0;
       const sec = result.seconds;
-      for (const shard of result.shards) shard.dispose();
+      const parts = result.kind === 'solid' ? result.pieces : result.shards;
+      for (const part of parts) part.dispose();
       if (warmUp.length < WARM_UP) {
         warmUp.push(t);
         continue;
       }
       times.push(t);
       inWasm.push(1000 * sec.fracture);
-      shards.push(result.shards.length);
+      shards.push(parts.length);
       if (times.length % 5 === 0) await new Promise((resolve) => setTimeout(resolve, 0));
     }
     return { times, inWasm, shards, warmUp, skipped, material, triangles };
@@ -336,5 +384,20 @@ export const breakHooks = {
   },
   groundY() {
     return scene.world ? scene.world.groundY : NaN;
+  },
+  //! How the caps of a solid fracture are drawn: {innerSubmesh, pieces (bodies drawn with a
+  //! non-empty group of the inner material), object (the remaining object's geometry has such a
+  //! group)}.
+  drawnCaps() {
+    const inner = scene.innerSubmesh;
+    const capped = (mesh) =>
+      Array.isArray(mesh.material) &&
+      mesh.material[inner] !== mesh.material[0] &&
+      mesh.geometry.groups.some((g) => g.materialIndex === inner && g.count > 0);
+    return {
+      innerSubmesh: inner,
+      pieces: scene.world ? scene.world.shards.filter(({ mesh }) => capped(mesh)).length : 0,
+      object: state.viewer ? capped(state.viewer.mesh.surface) : false,
+    };
   },
 };

@@ -1,8 +1,10 @@
-// The break scene: a strike runs hedge's fracture in wasm on the shown mesh, and each shard becomes
-// a rigid body of cannon-es that falls under gravity and settles on a ground plane.
+// The break scene: a strike runs hedge's fracture in wasm on the shown mesh, and each shard (surface
+// fracture) or piece (solid fracture) becomes a rigid body of cannon-es that falls under gravity and
+// settles on a ground plane.
 //
-// Bodies. Each shard is a closed solid (the strike gives it a thickness), so fracture returns its
-// mass, centre of mass and inertia tensor. A body sits at the shard's centre of mass, turned to its
+// Bodies. Each shard is a closed solid (the strike gives it a thickness), and each piece of a solid
+// fracture is one by construction, so the fracture returns its mass, centre of mass and inertia
+// tensor. A body sits at the shard's centre of mass, turned to its
 // principal axes: there the tensor is diagonal, which is what cannon-es stores, so mass and inertia
 // are the fracture's exact values (set after addShape, which would put in an approximation from the
 // bounding box). The collider is a ConvexPolyhedron of the shard's convex hull, in the same frame.
@@ -10,6 +12,7 @@
 // first step would cost more than the rest of the frame and add nothing to a demonstration.
 import * as THREE from 'three';
 import * as CANNON from 'cannon-es';
+import { toBufferGeometry } from 'hedge/three';
 
 export const STEP = 1 / 60;
 
@@ -61,6 +64,9 @@ export class BreakWorld {
       metalness: 0.05,
       flatShading: true,
     });
+    // A solid fracture's pieces: the object's colour outside, the inner colour on their caps.
+    this.pieceMaterial = new THREE.MeshStandardMaterial({ color: 0xb9c4d0, roughness: 0.7 });
+    this.innerMaterial = new THREE.MeshStandardMaterial({ color: 0xc9774b, roughness: 0.9 });
     this.groundMesh = null;
   }
 
@@ -117,6 +123,46 @@ export class BreakWorld {
   addShard(shard, away, speed) {
     if (!shard.closed || !(shard.mass > 0))
       throw new Error('a shard without a thickness has no mass to simulate');
+    this.addBody(shard, away, speed, (toLocal) => {
+      const { positions, indices } = shard.mesh.toArrays({ triangulate: true });
+      const local = new Float32Array(positions.length);
+      for (let i = 0; i < positions.length; i += 3)
+        local.set(toLocal(positions[i], positions[i + 1], positions[i + 2]), i);
+      const geometry = new THREE.BufferGeometry();
+      geometry.setAttribute('position', new THREE.BufferAttribute(local, 3));
+      geometry.setIndex(new THREE.BufferAttribute(indices, 1));
+      geometry.computeVertexNormals();
+      return new THREE.Mesh(geometry, this.material);
+    });
+  }
+
+  //! Adds one piece of a solid fracture (Mesh.fractureSolid) as a body and a mesh, its caps (the
+  //! faces of submesh `innerSubmesh`) drawn in the inner colour; `away` and `speed` as for
+  //! addShard. The piece's hedge mesh is read here; the caller disposes it afterwards.
+  addPiece(piece, away, speed, innerSubmesh) {
+    if (!(piece.mass > 0)) throw new Error(`a piece of mass ${piece.mass} cannot be simulated`);
+    this.addBody(piece, away, speed, (toLocal, com, rotation) => {
+      // One group per submesh (toBufferGeometry), moved into the body's frame. The caps' corners
+      // carry no normal: the corner normals are made anew, hard along the caps' rims.
+      piece.mesh.computeCornerNormals(40);
+      const geometry = toBufferGeometry(piece.mesh, { texcoords: false, colors: false });
+      geometry.applyMatrix4(
+        rotation
+          .clone()
+          .transpose()
+          .multiply(new THREE.Matrix4().makeTranslation(-com.x, -com.y, -com.z)),
+      );
+      const materials = Array.from({ length: innerSubmesh + 1 }, (_, i) =>
+        i === innerSubmesh ? this.innerMaterial : this.pieceMaterial,
+      );
+      return new THREE.Mesh(geometry, materials);
+    });
+  }
+
+  //! The body of a closed part (a shard or a piece: mass, centreOfMass, principalAxes,
+  //! principalMoments, hull) and its drawn mesh, made by draw(toLocal, com, rotation) in the frame
+  //! of its principal axes.
+  addBody(shard, away, speed, draw) {
     const com = new THREE.Vector3(...shard.centreOfMass);
     const [a0, a1, a2] = shard.principalAxes.map((a) => new THREE.Vector3(...a));
     const rotation = new THREE.Matrix4().makeBasis(a0, a1, a2);
@@ -167,16 +213,8 @@ export class BreakWorld {
     );
     this.world.addBody(body);
 
-    // What is drawn: the shard's own faces, in the same frame.
-    const { positions, indices } = shard.mesh.toArrays({ triangulate: true });
-    const local = new Float32Array(positions.length);
-    for (let i = 0; i < positions.length; i += 3)
-      local.set(toLocal(positions[i], positions[i + 1], positions[i + 2]), i);
-    const geometry = new THREE.BufferGeometry();
-    geometry.setAttribute('position', new THREE.BufferAttribute(local, 3));
-    geometry.setIndex(new THREE.BufferAttribute(indices, 1));
-    geometry.computeVertexNormals();
-    const mesh = new THREE.Mesh(geometry, this.material);
+    // What is drawn: the part's own faces, in the same frame.
+    const mesh = draw(toLocal, com, rotation);
     mesh.position.copy(com);
     mesh.quaternion.copy(q);
     this.group.add(mesh);
@@ -235,6 +273,8 @@ export class BreakWorld {
   dispose() {
     this.clear();
     this.material.dispose();
+    this.pieceMaterial.dispose();
+    this.innerMaterial.dispose();
     this.scene.remove(this.group);
   }
 }

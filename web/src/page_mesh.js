@@ -36,6 +36,7 @@ export class PageMesh {
       : null;
     this.rays = null;
     this.pickFaces = null;
+    this.rebuildNext = false; // the next sync() rebuilds the render buffers (see fractureSolid)
   }
 
   //! Reads a mesh file's bytes (a Uint8Array) with the reader for `name`'s extension. A malformed
@@ -168,6 +169,10 @@ export class PageMesh {
   //! Syncs the render buffers with the mesh: RenderBuffers.sync()'s result ({vertexRanges,
   //! indexRanges: Uint32Array pairs [first, count], resized, full, ...}).
   sync() {
+    if (this.rebuildNext) {
+      this.rebuildNext = false;
+      return this.render.rebuild();
+    }
     return this.render.sync();
   }
 
@@ -256,6 +261,26 @@ export class PageMesh {
   //! the caller disposes.
   fracture(point, options) {
     return this.mesh.fracture(point, options);
+  }
+
+  //! Breaks the closed mesh at `point` into closed pieces (Mesh.fractureSolid; with kind 'auto', an
+  //! open mesh by surface fracture); the pieces (or shards) come back with their own meshes, which
+  //! the caller disposes.
+  //! The caps' corners carry no normal ("h:normal" is interpolated on the outer faces only), so the
+  //! corner normals are computed again and the next sync uploads everything.
+  fractureSolid(point, options) {
+    const result = this.mesh.fractureSolid(point, options);
+    if (result.kind === 'solid' && this.render) {
+      this.mesh.computeCornerNormals(CREASE_DEGREES);
+      this.rebuildNext = true;
+    }
+    return result;
+  }
+
+  //! How many submesh ids the drawn mesh has (one more than the largest; 1 without submeshes): the
+  //! id a solid fracture's caps get by default.
+  submeshCount() {
+    return this.render ? this.render.submeshes().length : 1;
   }
 
   decimate(targetFaces) {

@@ -6,6 +6,7 @@ import { GpuMesh, UploadMeter } from './gpu_mesh.js';
 
 const COLORS = {
   surface: 0xb9c4d0,
+  inner: 0xc9774b, // the inside of a broken solid: its cap faces
   wire: 0x34404c,
   face: 0xffa31a,
   edge: 0xe0206a,
@@ -57,6 +58,10 @@ export class Viewer {
       transparent: true,
       opacity: 0.45,
     });
+    this.material = material;
+    // The caps of a solid fracture (one submesh, see setInnerSubmesh): the surface's look, another colour.
+    this.innerMaterial = material.clone();
+    this.innerMaterial.color.set(COLORS.inner);
     this.mesh = new GpuMesh(material, lineMaterial);
     this.scene.add(this.mesh.group);
 
@@ -94,11 +99,22 @@ export class Viewer {
 
   //! Draws the surface see-through (a glass plate, with what is under it in view), or not.
   setSeeThrough(on) {
-    const m = this.mesh.surface.material;
-    m.transparent = on;
-    m.opacity = on ? 0.45 : 1;
-    m.depthWrite = !on;
-    m.needsUpdate = true;
+    for (const m of [this.material, this.innerMaterial]) {
+      m.transparent = on;
+      m.opacity = on ? 0.45 : 1;
+      m.depthWrite = !on;
+      m.needsUpdate = true;
+    }
+    this.requestRender();
+  }
+
+  //! Draws submesh `k` (a group of the geometry) in the inner colour and every other submesh in
+  //! the surface's; null: one material for all.
+  setInnerSubmesh(k) {
+    this.mesh.surface.material =
+      k === null
+        ? this.material
+        : Array.from({ length: k + 1 }, (_, i) => (i === k ? this.innerMaterial : this.material));
     this.requestRender();
   }
 

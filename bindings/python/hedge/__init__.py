@@ -28,12 +28,13 @@ from ._errors import (
     TopologyError,
     ViewsExportedError,
 )
-from ._hedge import Mesh, Shard, __version__, hausdorff_distance, read, render
+from ._hedge import Mesh, Piece, Shard, __version__, hausdorff_distance, read, render
 
 __all__ = [
     "__version__",
     "Mesh",
     "Shard",
+    "Piece",
     "read",
     "render",
     "hausdorff_distance",

@@ -168,6 +168,31 @@ class Mesh:
         tolerance: float = 0.0,
         hulls: bool = True,
     ) -> list[Shard]: ...
+    def fracture_solid(
+        self,
+        point: Sequence[float],
+        material: Union[str, dict[str, Any]] = "stone",
+        *,
+        seed: int = 0,
+        radius: float = 0.0,
+        radius_fraction: float = 0.25,
+        inner_submesh: int = -1,
+        density: float = 1.0,
+        tolerance: float = 0.0,
+        hulls: bool = True,
+    ) -> tuple[list[Piece], list[tuple[int, Optional[int], float]]]: ...
+    def solid_fracture_refusal(
+        self,
+        point: Sequence[float],
+        material: Union[str, dict[str, Any]] = "stone",
+        *,
+        seed: int = 0,
+        radius: float = 0.0,
+        radius_fraction: float = 0.25,
+        inner_submesh: int = -1,
+        density: float = 1.0,
+        tolerance: float = 0.0,
+    ) -> Optional[str]: ...
 
 def render(
     mesh: Mesh,
@@ -199,6 +224,20 @@ class Shard(Mesh):
     def mass(self) -> Optional[dict[str, Union[float, npt.NDArray[np.float64]]]]: ...
     @property
     def shell_thickness(self) -> float: ...
+    @property
+    def hull(self) -> Optional[Mesh]: ...
+    @property
+    def hull_dimension(self) -> str: ...
+    @property
+    def hull_tolerance(self) -> float: ...
+
+class Piece(Mesh):
+    @property
+    def volume(self) -> float: ...
+    @property
+    def cap_area(self) -> float: ...
+    @property
+    def mass(self) -> dict[str, Union[float, npt.NDArray[np.float64]]]: ...
     @property
     def hull(self) -> Optional[Mesh]: ...
     @property

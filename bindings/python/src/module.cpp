@@ -1,7 +1,7 @@
 // hedge._hedge: the native half of the Python package `hedge` (bindings/python/hedge/). The pieces
 // are bound in py_mesh.cpp, py_views.cpp, py_edits.cpp,
-// py_queries.cpp, py_picking.cpp, py_algorithms.cpp, py_render.cpp and py_fracture.cpp; py_support.h
-// describes the whole.
+// py_queries.cpp, py_picking.cpp, py_algorithms.cpp, py_render.cpp, py_fracture.cpp and
+// py_fracture_solid.cpp; py_support.h describes the whole.
 #include "py_support.h"
 
 PYBIND11_MODULE(_hedge, m) {
@@ -18,5 +18,6 @@ PYBIND11_MODULE(_hedge, m) {
   bind_picking(mesh);
   bind_render(m, mesh);
   bind_fracture(m, mesh);
+  bind_fracture_solid(m, mesh);
   bind_algorithms(mesh, m);
 }

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "hedge/algorithms/convex_hull.h"
+#include "hedge/algorithms/fracture.h"
 #include "hedge/algorithms/mass_properties.h"
 #include "hedge/core/vec.h"
 #include "py_support.h"
@@ -50,5 +52,15 @@ py::array_t<double> vec3_array(const Vec3& v);
 //! Mass properties as a dict: mass, volume, centre_of_mass (3,), inertia (3, 3) about the centre of
 //! mass, principal_moments (3,), principal_axes (3, 3), one unit axis a row.
 py::dict mass_properties_dict(const MassProperties& mp);
+
+//! What a convex hull's points span, as Python names it: 'empty', 'point', 'segment', 'flat' or 'solid'.
+const char* hull_dimension_name(HullDimension d);
+//! A fracture material: a preset's name, or a dict in the schema of the CLI's material files
+//! (docs/fracture.md), parsed by the same parser (py_fracture.cpp). \throw InvalidInputError "CALL:
+//! material ..." for another type, an unknown preset or a bad field.
+FractureMaterial fracture_material_arg(const py::object& material, const std::string& call);
+//! A fracture's seed: any Python integer in [0, 2^64) (numpy's too), not a bool or a float.
+//! \throw InvalidInputError "CALL: seed must be a whole number in [0, 2^64) ..." otherwise.
+std::uint64_t seed_arg(const py::object& seed, const std::string& call);
 
 }  // namespace hedge::python

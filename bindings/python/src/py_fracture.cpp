@@ -55,17 +55,19 @@ struct Broken {
   std::vector<std::shared_ptr<State>> meshes, hulls;
 };
 
-const char* dimension_name(HullDimension d) {
+}  // namespace
+
+const char* hull_dimension_name(HullDimension d) {
   static const char* const kNames[] = {"empty", "point", "segment", "flat", "solid"};
   return kNames[static_cast<int>(d)];
 }
 
 //! A custom material: the dict as JSON text, through the material files' parser.
-FractureMaterial material_from_dict(const py::dict& material) {
+static FractureMaterial material_from_dict(const py::dict& material, const std::string& call) {
   // numpy scalars and arrays (a grain given as an array) become Python numbers and lists.
-  const py::cpp_function plain([](const py::object& o) -> py::object {
+  const py::cpp_function plain([call](const py::object& o) -> py::object {
     if (py::hasattr(o, "tolist")) return o.attr("tolist")();
-    throw InvalidInputError("fracture: material: " + std::string(py::repr(o)) +
+    throw InvalidInputError(call + ": material: " + std::string(py::repr(o)) +
                             " is not a number, list or str");
   });
   py::dict fields(material);
@@ -78,12 +80,38 @@ FractureMaterial material_from_dict(const py::dict& material) {
   } catch (py::error_already_set& e) {
     if (!e.matches(PyExc_ValueError) || e.matches(py::module_::import("hedge._errors").attr("HedgeError")))
       throw;
-    throw InvalidInputError("fracture: material: every number must be finite, not NaN or infinite");
+    throw InvalidInputError(call + ": material: every number must be finite, not NaN or infinite");
   }
-  return cli::parse_material_json(text, "fracture: material");
+  return cli::parse_material_json(text, call + ": material");
 }
 
-//! The options of Mesh.fracture(), checked where the library does not check them itself.
+FractureMaterial fracture_material_arg(const py::object& material, const std::string& call) {
+  if (py::isinstance<py::str>(material)) return fracture_material(material.cast<std::string>());
+  if (py::isinstance<py::dict>(material)) return material_from_dict(material.cast<py::dict>(), call);
+  std::string presets;
+  for (const std::string& name : fracture_material_names()) presets += (presets.empty() ? "" : ", ") + name;
+  throw InvalidInputError(call + ": material must be a preset name (" + presets + ") or a dict, not " +
+                          std::string(py::str(material.get_type().attr("__name__"))));
+}
+
+std::uint64_t seed_arg(const py::object& seed, const std::string& call) {
+  // Any integer (numpy's too, through __index__), but not a bool or a float.
+  if (py::isinstance<py::bool_>(seed) || !PyIndex_Check(seed.ptr()))
+    throw InvalidInputError(call + ": seed must be a whole number in [0, 2^64), not " +
+                            std::string(py::str(seed.get_type().attr("__name__"))));
+  const py::object whole = py::reinterpret_steal<py::object>(PyNumber_Index(seed.ptr()));
+  if (!whole) throw py::error_already_set();
+  const unsigned long long s = PyLong_AsUnsignedLongLong(whole.ptr());
+  if (PyErr_Occurred()) {
+    PyErr_Clear();
+    throw InvalidInputError(call + ": seed must be a whole number in [0, 2^64), got " +
+                            std::string(py::str(seed)));
+  }
+  return s;
+}
+
+namespace {
+
 //! The break radius's units by name.
 FractureUnits units_named(const std::string& name) {
   for (FractureUnits u :
@@ -103,36 +131,16 @@ struct Keywords {
   bool hulls;
 };
 
+//! The options of Mesh.fracture(), checked where the library does not check them itself.
 FractureOptions fracture_options(const py::object& material, const py::object& seed, const Keywords& k) {
   FractureOptions o;
-  if (py::isinstance<py::str>(material)) {
-    o.material = fracture_material(material.cast<std::string>());  // lists the presets otherwise
-  } else if (py::isinstance<py::dict>(material)) {
-    o.material = material_from_dict(material.cast<py::dict>());
-  } else {
-    std::string presets;
-    for (const std::string& name : fracture_material_names()) presets += (presets.empty() ? "" : ", ") + name;
-    throw InvalidInputError("fracture: material must be a preset name (" + presets + ") or a dict, not " +
-                            std::string(py::str(material.get_type().attr("__name__"))));
-  }
+  o.material = fracture_material_arg(material, "fracture");  // lists the presets otherwise
   // None and 0: the material's own; anything else is checked by fracture() (finite, positive).
   if (k.units) o.material.units = units_named(*k.units);
   if (k.radius != 0) o.material.radius = k.radius;
   // 0: as above; anything else is checked (finite, positive) by the scaling.
   if (k.break_radius != 0) o.material = fracture_material_at_radius(o.material, k.break_radius);
-  // Any integer (numpy's too, through __index__), but not a bool or a float.
-  if (py::isinstance<py::bool_>(seed) || !PyIndex_Check(seed.ptr()))
-    throw InvalidInputError("fracture: seed must be a whole number in [0, 2^64), not " +
-                            std::string(py::str(seed.get_type().attr("__name__"))));
-  const py::object whole = py::reinterpret_steal<py::object>(PyNumber_Index(seed.ptr()));
-  if (!whole) throw py::error_already_set();
-  const unsigned long long s = PyLong_AsUnsignedLongLong(whole.ptr());
-  if (PyErr_Occurred()) {
-    PyErr_Clear();
-    throw InvalidInputError("fracture: seed must be a whole number in [0, 2^64), got " +
-                            std::string(py::str(seed)));
-  }
-  o.seed = s;
+  o.seed = seed_arg(seed, "fracture");
   o.thickness = k.thickness;
   o.relative_thickness = k.relative_thickness;
   o.inner_submesh = k.inner_submesh;
@@ -216,7 +224,7 @@ void bind_fracture(py::module_& m, py::class_<Mesh>& mesh) {
           "The convex hull of the shard's vertices as a Mesh (closed, outward triangles), for a "
           "collider; None when it has no faces or hulls=False.")
       .def_property_readonly(
-          "hull_dimension", [](const Shard& s) { return dimension_name(s.hull_dimension); },
+          "hull_dimension", [](const Shard& s) { return hull_dimension_name(s.hull_dimension); },
           "What the shard's vertices span: 'empty', 'point', 'segment', 'flat' (the hull is given a "
           "thickness) or 'solid'.")
       .def_property_readonly(

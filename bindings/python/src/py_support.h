@@ -79,6 +79,8 @@ void bind_picking(py::class_<Mesh>& mesh);
 void bind_render(py::module_& m, py::class_<Mesh>& mesh);
 //! Mesh.fracture and hedge.Shard (py_fracture.cpp).
 void bind_fracture(py::module_& m, py::class_<Mesh>& mesh);
+//! Mesh.fracture_solid, Mesh.solid_fracture_refusal and hedge.Piece (py_fracture_solid.cpp).
+void bind_fracture_solid(py::module_& m, py::class_<Mesh>& mesh);
 //! The whole-mesh algorithms and hedge.hausdorff_distance (py_algorithms.cpp).
 void bind_algorithms(py::class_<Mesh>& mesh, py::module_& m);
 

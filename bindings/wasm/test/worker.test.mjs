@@ -38,6 +38,37 @@ function localBuffers(mesh) {
   return out;
 }
 
+test('solid fracture in a worker gives what it gives here, the pieces kept there', async () => {
+  const remote = await createHedgeWorker();
+  try {
+    const local = hedge.fromFile(sample(SPOT), SPOT);
+    const { id } = await remote.load(sample(SPOT), SPOT);
+    const at = local.pick([0, 2, 0.1], [0, -1, 0]).point;
+    const options = { material: 'stone', seed: 3, radiusFraction: 0.2 };
+    const here = local.fractureSolid(at, options);
+    const there = await remote.fractureSolid(id, at, options);
+    assert.equal(there.kind, 'solid');
+    assert.ok(here.pieces.length >= 2);
+    assert.equal(there.pieces.length, here.pieces.length);
+    assert.deepEqual(there.bonds, here.bonds);
+    for (let i = 0; i < here.pieces.length; ++i) {
+      const { id: pieceId, ...values } = there.pieces[i];
+      const { mesh, ...expected } = here.pieces[i];
+      assert.deepEqual(values, { ...expected });
+      assert.deepEqual(await remote.counts(pieceId), mesh.counts());
+      assert.deepEqual(await remote.validate(pieceId), []);
+      await remote.dispose(pieceId);
+      mesh.dispose();
+    }
+    assert.deepEqual(await remote.counts(id), local.counts());
+    assert.deepEqual(await remote.validate(id), []);
+    await assert.rejects(remote.fractureSolid(id, [NaN, 0, 0]), { kind: 'invalid-argument' });
+    local.dispose();
+  } finally {
+    await remote.terminate();
+  }
+});
+
 test('load, subdivide, decimate, pick and fracture in a worker give what they give here', async () => {
   const remote = await createHedgeWorker();
   try {

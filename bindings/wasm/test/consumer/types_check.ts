@@ -22,3 +22,18 @@ const loaded = await remote.load(new Uint8Array(0), 'empty.obj', { transfer: tru
 const drawn: Float32Array = (await remote.buffers(loaded.id, { normals: 'computed' })).positions;
 const broken = await remote.fracture(loaded.id, [0, 0, 0], { material: 'glass' });
 export const remoteIds: number[] = [loaded.id, ...broken.shards.map((s) => s.id), drawn.length];
+
+// Solid fracture: pieces and bonds; with kind 'auto', surface fracture's result when refused.
+import type { Piece, SolidBond } from 'hedge-mesh';
+const solid = mesh.fractureSolid([0, 0, 0], { material: 'stone', radius: 0.5, seed: 1 });
+const pieces: Piece[] = solid.pieces;
+const bonds: SolidBond[] = solid.bonds;
+const auto = mesh.fractureSolid([0, 0, 0], { kind: 'auto', surface: { thickness: 0.01 } });
+export const solidParts: number =
+  pieces.length + bonds.length + (auto.kind === 'solid' ? auto.pieces.length : auto.shards.length);
+export const solidRefusal: string | null = mesh.solidFractureRefusal([0, 0, 0]);
+const remoteSolid = await remote.fractureSolid(loaded.id, [0, 0, 0], { kind: 'auto' });
+export const remotePieceIds: number[] =
+  remoteSolid.kind === 'solid'
+    ? remoteSolid.pieces.map((p) => p.id)
+    : remoteSolid.shards.map((s) => s.id);
