@@ -73,7 +73,8 @@ int main(int argc, char** argv) {
        "Sampled symmetric Hausdorff distance and mean distance between the surfaces of two meshes",
        distance_command},
       {"fracture",
-       "Break a mesh at an impact point into shards; write the rest, one OBJ per shard and summary.json",
+       "Break a mesh at an impact point into shards (--kind solid: a closed mesh into closed pieces); write "
+       "the rest, one OBJ per shard or piece and summary.json",
        fracture_command},
   };
   std::vector<Command> commands;
