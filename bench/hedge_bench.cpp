@@ -27,10 +27,19 @@
 // and kept up to date by the strikes; restored as BM_fracture restores. Shards are made into
 // handles by the call and destroyed with the timer paused. Counters as BM_fracture's, without the
 // stages.
+// BM_fracture_solid/<mesh>/<points>: one solid strike (algorithms/fracture_solid.h) on a closed
+// sphere of 100k (sphere_100k) or 1M (sphere_1m) triangles of radius 1, break radius 0.5 (model
+// units, the same on both), with a material of 64 or 200 break points in two shells (about half
+// of the cells hold part of the sphere, so about 32 or 100 pieces). Impacts at the surface point
+// nearest to a random direction, the FaceBvh kept up to date by the strikes; the mesh and its
+// tree are restored (timer paused) every 4 strikes. Counters: pieces per strike, median and p99
+// microseconds, and the mean microseconds of each stage (locate, cells, clip, cap, assemble,
+// per_piece).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <numeric>
@@ -42,6 +51,7 @@
 #include "hedge/algorithms/convex_hull.h"
 #include "hedge/algorithms/decimate.h"
 #include "hedge/algorithms/fracture.h"
+#include "hedge/algorithms/fracture_solid.h"
 #include "hedge/algorithms/locate.h"
 #include "hedge/algorithms/reorder.h"
 #include "hedge/c_api.h"
@@ -331,7 +341,113 @@ void capi_fracture_impacts(benchmark::State& state, std::string name, std::strin
   set_fracture_counters(state, seconds, double(input->n_faces()), broken, faces);
 }
 
+//! A closed sphere of radius 1: a cube's faces cut into n x n squares of two triangles each
+//! (12 n^2 triangles), welded and pushed onto the sphere.
+hedge::SurfaceMesh grid_sphere(int n) {
+  hedge::IndexedMesh m;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = -1; side <= 1; side += 2) {
+      const std::uint32_t base = static_cast<std::uint32_t>(m.positions.size());
+      for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+          float p[3];
+          p[axis] = float(side);
+          p[(axis + 1) % 3] = float(2 * i - n) / float(n);
+          p[(axis + 2) % 3] = float(2 * j - n) / float(n);
+          m.positions.push_back({p[0], p[1], p[2]});
+        }
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          const std::uint32_t a = base + std::uint32_t(j * (n + 1) + i), b = a + 1,
+                              c = a + std::uint32_t(n + 1), d = c + 1;
+          if (side > 0)
+            m.indices.insert(m.indices.end(), {a, b, d, a, d, c});
+          else
+            m.indices.insert(m.indices.end(), {a, d, b, a, c, d});
+          m.face_sizes.insert(m.face_sizes.end(), {3, 3});
+        }
+    }
+  hedge::SurfaceMesh s = hedge::build(m, {.weld = hedge::Weld::exact});
+  for (hedge::Vertex v : s.vertices()) {
+    const hedge::Vec3 p = s.position(v);
+    const float l = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+    s.position(v) = {p.x / l, p.y / l, p.z / l};
+  }
+  return s;
+}
+
+void fracture_solid_impacts(benchmark::State& state, int n, unsigned points) {
+  static std::vector<std::pair<int, std::unique_ptr<hedge::SurfaceMesh>>> cache;
+  const hedge::SurfaceMesh* input = nullptr;
+  for (const auto& [k, m] : cache)
+    if (k == n) input = m.get();
+  if (!input) {
+    cache.emplace_back(n, std::make_unique<hedge::SurfaceMesh>(grid_sphere(n)));
+    input = cache.back().second.get();
+  }
+  auto mesh = std::make_unique<hedge::SurfaceMesh>(*input);
+  auto bvh = std::make_unique<hedge::FaceBvh>(*mesh);
+  std::mt19937_64 rng(1);
+  hedge::SolidFractureOptions options;
+  options.material.name = "bench";
+  options.material.rings = {{points / 4, 1, 0.5}, {points - points / 4, 1, 0.5}};
+  options.radius = 0.5;
+  options.hulls = true;
+  double pieces = 0;
+  std::vector<double> seconds;
+  hedge::SolidFractureResult::Timings total;
+  int strikes = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    if (++strikes % 4 == 0) {
+      bvh.reset();
+      mesh = std::make_unique<hedge::SurfaceMesh>(*input);
+      bvh = std::make_unique<hedge::FaceBvh>(*mesh);
+    }
+    std::normal_distribution<double> g;
+    const hedge::Vec3 dir = {float(g(rng)), float(g(rng)), float(g(rng))};
+    const auto near = bvh->closest_point(dir);
+    options.seed = rng();
+    state.ResumeTiming();
+    const auto t0 = std::chrono::steady_clock::now();
+    hedge::SolidFractureResult r;
+    try {
+      r = hedge::fracture_solid(*mesh, near->point, options, bvh.get());
+    } catch (const hedge::InvalidInputError&) {
+      // A refused strike (about 1%) leaves the mesh as it was; it is timed all the same.
+    }
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    state.PauseTiming();
+    pieces += double(r.pieces.size());
+    total.locate += r.seconds.locate;
+    total.cells += r.seconds.cells;
+    total.clip += r.seconds.clip;
+    total.cap += r.seconds.cap;
+    total.assemble += r.seconds.assemble;
+    total.per_piece += r.seconds.per_piece;
+    r = {};
+    state.ResumeTiming();
+  }
+  if (set_fracture_counters(state, seconds, double(input->n_faces()), pieces, 0)) {
+    const double k = 1e6 / double(seconds.size());
+    state.counters["pieces"] = pieces / double(seconds.size());
+    state.counters["locate_us"] = total.locate * k;
+    state.counters["cells_us"] = total.cells * k;
+    state.counters["clip_us"] = total.clip * k;
+    state.counters["cap_us"] = total.cap * k;
+    state.counters["assemble_us"] = total.assemble * k;
+    state.counters["per_piece_us"] = total.per_piece * k;
+  }
+}
+
 void register_fracture(const std::string& root) {
+  for (const auto& [name, n] : {std::pair<const char*, int>{"sphere_100k", 91}, {"sphere_1m", 289}})
+    for (unsigned points : {64u, 200u})
+      benchmark::RegisterBenchmark(
+          (std::string("BM_fracture_solid/") + name + "/" + std::to_string(points)).c_str(),
+          fracture_solid_impacts, n, points)
+          ->Unit(benchmark::kMillisecond)
+          ->Iterations(24);
   for (const char* name : {"plate_100k", "plate_1m", "igea"}) {
     benchmark::RegisterBenchmark((std::string("BM_fracture/") + name).c_str(), fracture_impacts,
                                  std::string(name), root)

@@ -30,8 +30,8 @@ double seconds_since(Clock::time_point& t) {
   return s;
 }
 
-constexpr int kAttempts = 4;
-constexpr double kNudge = 1e-7;
+constexpr int kAttempts = 6;
+constexpr double kNudge = 1e-5;
 
 //! The options' error, or empty.
 std::string check_options(const SolidFractureOptions& o) {

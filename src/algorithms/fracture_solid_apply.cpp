@@ -125,7 +125,6 @@ std::int32_t inner_submesh_of(const SurfaceMesh& mesh, std::int32_t option) {
 std::vector<SolidPiece> assemble_pieces(const StrikeInput& in, Strike& strike, std::int32_t inner) {
   const SurfaceMesh& m = in.mesh;
   const Geometry g{&m, &strike.planes, &strike.soup, nullptr};
-  const HalfedgeProperty<Vec2> uv_in = m.get_halfedge_property<Vec2>(kTexcoord);
   std::vector<SolidPiece> pieces;
   pieces.reserve(strike.pieces.size());
   for (PieceDraft& d : strike.pieces) {
@@ -170,7 +169,10 @@ std::vector<SolidPiece> assemble_pieces(const StrikeInput& in, Strike& strike, s
                      nullptr);
       }
     }
-    piece.cap_area = d.cap_area;
+    // Of the cap faces as built (float positions), so it is what a caller measures on the mesh.
+    piece.cap_area = 0;
+    for (Face f : out.faces())
+      if (inner_mark[f]) piece.cap_area += face_area(out, f);
     pieces.push_back(std::move(piece));
   }
   return pieces;

@@ -10,7 +10,8 @@ namespace hedge::solid_detail {
 
 Vec3d Geometry::vertex(Index v) const { return to_double(mesh->position(Vertex(v))); }
 
-// Each position is computed from its key alone, in a fixed order of its inputs.
+// Each position is computed from its key alone, in a fixed order of its inputs (a point where a
+// triangle meets two planes is placed by clip_triangle(), the one place it is made).
 Vec3d Geometry::position(const Key& k) const {
   switch (k.kind) {
     case Key::vertex:
@@ -21,25 +22,6 @@ Vec3d Geometry::position(const Key& k) const {
       const double sa = p.value(pa), sb = p.value(pb);
       const double t = sa == sb ? 0.5 : std::clamp(sa / (sa - sb), 0.0, 1.0);
       return pa + (pb - pa) * t;
-    }
-    case Key::triangle: {
-      const SoupTriangle& t = (*soup)[k.a];
-      const Vec3d p0 = vertex(t.v[0]), p1 = vertex(t.v[1]), p2 = vertex(t.v[2]);
-      const Vec3d n1 = cross(p1 - p0, p2 - p0);
-      const double d1 = -dot(n1, p0);
-      const Plane& b = planes->planes[k.b];
-      const Plane& c = planes->planes[k.c];
-      const Vec3d n23 = cross(b.n, c.n), n31 = cross(c.n, n1), n12 = cross(n1, b.n);
-      const double det = dot(n1, n23);
-      Vec3d x = (n23 * d1 + n31 * b.d + n12 * c.d) * (-1.0 / det);
-      const Vec3d lo{std::min({p0.x, p1.x, p2.x}), std::min({p0.y, p1.y, p2.y}),
-                     std::min({p0.z, p1.z, p2.z})};
-      const Vec3d hi{std::max({p0.x, p1.x, p2.x}), std::max({p0.y, p1.y, p2.y}),
-                     std::max({p0.z, p1.z, p2.z})};
-      if (!is_finite(x)) return (p0 + p1 + p2) * (1.0 / 3);
-      // A line nearly in the triangle's plane: keep the point within the triangle's box.
-      for (int a = 0; a < 3; ++a) x[a] = std::clamp(x[a], lo[a], hi[a]);
-      return x;
     }
     default:
       return corners->at(k);
@@ -107,7 +89,18 @@ void clip_triangle(const Geometry& g, std::uint32_t t, const std::vector<HalfSpa
           x = {Key::triangle, t, std::min(p, h.plane), std::max(p, h.plane)};
         }
         keys.push_back(x);
-        pos.push_back(g.position(x));
+        if (x.kind == Key::edge) {
+          pos.push_back(g.position(x));
+        } else {
+          // Along the edge of plane p inside the triangle: well conditioned even where the line of
+          // p and the plane grazes the triangle (where the meeting of three planes is not). The
+          // key occurs in this polygon only, so this is its one position.
+          const Vec3d& pu = out.pos[i];
+          const Vec3d& pw = out.pos[j];
+          const double su = pl.value(pu), sw = pl.value(pw);
+          const double t = su == sw ? 0.5 : std::clamp(su / (su - sw), 0.0, 1.0);
+          pos.push_back(pu + (pw - pu) * t);
+        }
         // in -> out: the edge from x on runs along the plane; out -> in: it is the rest of edge i.
         support.push_back(in[i] ? h.plane : out.support[i]);
       }

@@ -94,7 +94,7 @@ struct Geometry {
   const SurfaceMesh* mesh = nullptr;
   const PlaneSet* planes = nullptr;
   const std::vector<SoupTriangle>* soup = nullptr;
-  //! Positions of corner keys of the polytope at hand.
+  //! Positions of corner keys of the polytope at hand (triangle keys: see clip_triangle()).
   const std::map<Key, Vec3d>* corners = nullptr;
   Vec3d position(const Key& k) const;
   Vec3d vertex(Index v) const;

@@ -121,6 +121,9 @@ bool patch_outside(const StrikeInput& in, const Geometry& g, const std::vector<C
   for (const auto& [f, ts] : tris_of)
     for (std::uint32_t t : ts) {
       if (t < inside_p.size() && touched[t]) {
+        const std::vector<std::uint32_t>& support = inside_p[t].support;
+        if (std::all_of(support.begin(), support.end(), [](std::uint32_t p) { return p == kNoPlane; }))
+          continue;  // all of it inside P: nothing stays
         if (!outside_part(g, t, inside_p[t], strike.patch)) {
           strike.failure = "the part of a face outside the region did not close";
           return false;

@@ -64,17 +64,43 @@ bool overlaps(const SoupTriangle& t, const float lo[3], const float hi[3]) {
   return true;
 }
 
-//! The clipped polygons of the soup triangles in a convex polytope.
-void clip_all(const Geometry& g, const Polytope& cell, double margin, std::vector<ClipPolygon>& out) {
+//! The soup's triangles of each face, in face order (the soup is made in that order).
+struct SoupIndex {
+  std::vector<Face> faces;           // sorted
+  std::vector<std::uint32_t> first;  // faces.size() + 1 entries
+};
+
+SoupIndex index_soup(const std::vector<SoupTriangle>& soup) {
+  SoupIndex x;
+  for (std::uint32_t t = 0; t < soup.size(); ++t)
+    if (x.faces.empty() || x.faces.back() != soup[t].face) {
+      x.faces.push_back(soup[t].face);
+      x.first.push_back(t);
+    }
+  x.first.push_back(static_cast<std::uint32_t>(soup.size()));
+  return x;
+}
+
+//! The clipped polygons of the soup triangles in a convex polytope: the triangles of the faces the
+//! picking tree finds in the polytope's box, so a cell costs its own triangles.
+void clip_all(const StrikeInput& in, const Geometry& g, const SoupIndex& index, const Polytope& cell,
+              double margin, std::vector<ClipPolygon>& out) {
   float lo[3], hi[3];
   cell.box(margin, lo, hi);
   std::vector<HalfSpace> planes;
   for (const Polytope::Side& s : cell.faces) planes.push_back(s.h);
+  std::vector<Face> faces;
+  in.tree.faces_in_box({lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}, faces);
   ClipPolygon poly;
-  for (std::uint32_t t = 0; t < g.soup->size(); ++t) {
-    if (!overlaps((*g.soup)[t], lo, hi)) continue;
-    clip_triangle(g, t, planes, poly);
-    if (!poly.keys.empty()) out.push_back(poly);
+  for (Face f : faces) {
+    const auto it = std::lower_bound(index.faces.begin(), index.faces.end(), f);
+    if (it == index.faces.end() || *it != f) continue;
+    const std::size_t k = static_cast<std::size_t>(it - index.faces.begin());
+    for (std::uint32_t t = index.first[k]; t < index.first[k + 1]; ++t) {
+      if (!overlaps((*g.soup)[t], lo, hi)) continue;
+      clip_triangle(g, t, planes, poly);
+      if (!poly.keys.empty()) out.push_back(poly);
+    }
   }
 }
 
@@ -83,6 +109,18 @@ void clip_all(const Geometry& g, const Polytope& cell, double margin, std::vecto
 //! per face.
 bool cap_polytope(const StrikeInput& in, const Polytope& cell, const std::vector<ClipPolygon>& polys,
                   KeyedSurface& out, std::string& failure) {
+  // The surface's edges on each plane, reversed: the caps' chains.
+  std::vector<std::pair<std::uint32_t, ChainEdge>> on_plane;
+  for (const ClipPolygon& p : polys) {
+    const std::size_t n = p.keys.size();
+    for (std::size_t i = 0; i < n; ++i)
+      if (p.support[i] != kNoPlane) {
+        const std::size_t j = (i + 1) % n;
+        on_plane.push_back({p.support[i], {p.keys[j], p.keys[i], p.pos[j], p.pos[i]}});
+      }
+  }
+  std::stable_sort(on_plane.begin(), on_plane.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
   for (std::size_t fi = 0; fi < cell.faces.size(); ++fi) {
     const Polytope::Side& f = cell.faces[fi];
     RegionInput r;
@@ -90,14 +128,10 @@ bool cap_polytope(const StrikeInput& in, const Polytope& cell, const std::vector
       r.corners.push_back(k);
       r.corner_pos.push_back(cell.points.at(k));
     }
-    for (const ClipPolygon& p : polys) {
-      const std::size_t n = p.keys.size();
-      for (std::size_t i = 0; i < n; ++i)
-        if (p.support[i] == f.h.plane) {
-          const std::size_t j = (i + 1) % n;
-          r.chain.push_back({p.keys[j], p.keys[i], p.pos[j], p.pos[i]});
-        }
-    }
+    for (auto it = std::lower_bound(on_plane.begin(), on_plane.end(), f.h.plane,
+                                    [](const auto&a, std::uint32_t plane) { return a.first < plane; });
+         it != on_plane.end() && it->first == f.h.plane; ++it)
+      r.chain.push_back(it->second);
     const std::size_t n = f.corners.size();
     std::vector<std::uint32_t> side_plane(n);
     for (std::size_t s = 0; s < n; ++s) {
@@ -206,6 +240,7 @@ bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, doubl
       return false;
     }
   strike.soup = make_soup(in.mesh, faces);
+  const SoupIndex index = index_soup(strike.soup);
   Geometry g{&in.mesh, &strike.planes, &strike.soup, nullptr};
   const double margin = 1e-6 * in.region_radius;
   strike.seconds_cells += seconds_since(t);
@@ -216,7 +251,7 @@ bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, doubl
   for (std::size_t i = 0; i < cells.size(); ++i) {
     if (cells[i].empty()) continue;
     polys.clear();
-    clip_all(g, cells[i], margin, polys);
+    clip_all(in, g, index, cells[i], margin, polys);
     strike.seconds_clip += seconds_since(t);
     PieceDraft d;
     d.cell = i;
@@ -235,7 +270,6 @@ bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, doubl
       const Vec3d b = piece.surface.points[piece.surface.index(tri[1])].second;
       const Vec3d c = piece.surface.points[piece.surface.index(tri[2])].second;
       const double ar = triangle_area(a, b, c);
-      piece.cap_area += ar;
       cap_areas.push_back({{strike.pieces.size() - 1, piece.surface.source[k] & ~kCapBit}, ar});
     }
     strike.seconds_cap += seconds_since(t);
@@ -244,7 +278,7 @@ bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, doubl
 
   // The patch: the touched triangles' parts outside P, and P's caps turned inwards.
   polys.clear();
-  clip_all(g, region, margin, polys);
+  clip_all(in, g, index, region, margin, polys);
   std::vector<ClipPolygon> inside_p(strike.soup.size());
   std::vector<char> touched_tri(strike.soup.size(), 0);
   for (ClipPolygon& p : polys) {

@@ -41,7 +41,6 @@ struct PieceDraft {
   KeyedSurface surface;
   //! Built from `surface` (triangle i is face i, point i vertex i), closed; no properties yet.
   SurfaceMesh mesh;
-  double cap_area = 0;
 };
 
 struct Strike {

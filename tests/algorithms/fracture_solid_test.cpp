@@ -8,6 +8,7 @@
 
 #include "fracture_solid_checks.h"
 #include "hedge/algorithms/geometry.h"
+#include "hedge/algorithms/locate.h"
 #include "hedge/algorithms/subdivide.h"
 #include "hedge/core/build.h"
 #include "hedge/core/face_operations.h"
@@ -57,6 +58,118 @@ TEST(FractureSolid, SpotBreaksIntoClosedPiecesWithProperties) {
   const SolidFractureResult r = fracture_solid(m, impact, {.seed = 7});
   EXPECT_GT(r.pieces.size(), 1u);
   expect_solid_strike(m, r, before);
+}
+
+TEST(FractureSolid, OpenMeshNearTheImpactIsRefusedNamingAnEdge) {
+  IndexedMesh open = test::cube();
+  open.indices.resize(open.indices.size() - 4);  // no face on x = 0
+  open.face_sizes.pop_back();
+  SurfaceMesh m = build(open);
+  const std::string why = solid_fracture_refusal(m, {0.5f, 0.5f, 1.0f}, {.radius = 0.4});
+  EXPECT_NE(why.find("open near the impact: edge"), std::string::npos) << why;
+  const std::size_t faces = m.n_faces();
+  EXPECT_THROW(fracture_solid(m, {0.5f, 0.5f, 1.0f}, {.radius = 0.4}), InvalidInputError);
+  EXPECT_EQ(m.n_faces(), faces);
+  EXPECT_TRUE(m.validate().empty());
+  // Bad options and impacts are named.
+  EXPECT_NE(solid_fracture_refusal(m, {0.5f, 0.5f, 1.0f}, {.density = -1}).find("density"),
+            std::string::npos);
+  EXPECT_NE(solid_fracture_refusal(m, {0.5f, 0.5f, 9.0f}).find("beyond the tolerance"), std::string::npos);
+}
+
+TEST(FractureSolid, AHoleFarFromTheRegionDoesNotStopIt) {
+  SurfaceMesh m = read_mesh(test::data_path("spot_triangulated.obj"));
+  const Vec3 impact = m.position(Vertex(100));
+  // Remove the face farthest from the impact.
+  Face far;
+  double best = 0;
+  for (Face f : m.faces())
+    if (const double d = norm(centroid(m, f) - to_double(impact)); d > best) best = d, far = f;
+  remove_face(m, far);
+  SolidFractureOptions o{.radius_fraction = 0.1};
+  EXPECT_EQ(solid_fracture_refusal(m, impact, o), "");
+  const SolidFractureResult r = fracture_solid(m, impact, o);
+  EXPECT_GT(r.pieces.size(), 0u);
+  for (const SolidPiece& p : r.pieces) EXPECT_EQ(solid_test::solid_problem(p.mesh), "");
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(FractureSolid, CapsGetTheirMarksSubmeshAndPlanarUVs) {
+  SurfaceMesh m = read_mesh(test::data_path("spot_triangulated.obj"));
+  FaceProperty<std::int32_t> sub = m.face_property<std::int32_t>(kSubmeshProperty, 0);
+  const auto uv_in = m.get_halfedge_property<Vec2>("h:texcoord");
+  Vec2 lo{1e9f, 1e9f}, hi{-1e9f, -1e9f};
+  for (Halfedge h : m.halfedges())
+    if (!m.is_boundary(h)) {
+      lo = {std::min(lo.x, uv_in[h].x), std::min(lo.y, uv_in[h].y)};
+      hi = {std::max(hi.x, uv_in[h].x), std::max(hi.y, uv_in[h].y)};
+    }
+  for (Face f : m.faces()) sub[f] = 2;
+  const SolidFractureResult r = fracture_solid(m, m.position(Vertex(100)), {.seed = 7});
+  ASSERT_GT(r.pieces.size(), 0u);
+  std::size_t caps = 0, outer = 0;
+  for (const SolidPiece& p : r.pieces) {
+    const auto inner = p.mesh.get_face_property<std::uint8_t>(kInnerProperty);
+    const auto submesh = p.mesh.get_face_property<std::int32_t>(kSubmeshProperty);
+    const auto uv = p.mesh.get_halfedge_property<Vec2>("h:texcoord");
+    ASSERT_TRUE(inner && submesh && uv);
+    for (Face f : p.mesh.faces()) {
+      if (inner[f]) {
+        ++caps;
+        EXPECT_EQ(submesh[f], 3);  // one more than the largest
+        // Planar UVs: the UV distance between two corners is their distance in the plane.
+        const Halfedge h = p.mesh.halfedge(f), g = p.mesh.next(h);
+        const double d3 = norm(to_double(p.mesh.position(p.mesh.to_vertex(h))) -
+                               to_double(p.mesh.position(p.mesh.to_vertex(g))));
+        const double d2 = std::hypot(uv[h].x - uv[g].x, uv[h].y - uv[g].y);
+        EXPECT_NEAR(d2, d3, 1e-5);
+      } else {
+        ++outer;
+        EXPECT_EQ(submesh[f], 2);
+        // Interpolated within the face's own corners: within the mesh's range of UVs.
+        for (Halfedge h : p.mesh.halfedges(f))
+          EXPECT_TRUE(uv[h].x >= lo.x && uv[h].x <= hi.x && uv[h].y >= lo.y && uv[h].y <= hi.y)
+              << uv[h].x << " " << uv[h].y;
+      }
+    }
+  }
+  EXPECT_GT(caps, 0u);
+  EXPECT_GT(outer, 0u);
+  std::size_t remaining_caps = 0;
+  const auto inner = m.get_face_property<std::uint8_t>(kInnerProperty);
+  ASSERT_TRUE(inner);
+  for (Face f : m.faces()) remaining_caps += inner[f];
+  EXPECT_GT(remaining_caps, 0u);
+  // Bonds: the area a piece shares with the remaining object adds up to the remaining caps' area.
+  double to_remaining = 0, remaining_cap_area = 0;
+  for (const SolidBond& b : r.bonds)
+    if (b.b == kSolidRemaining) to_remaining += b.area;
+  for (Face f : m.faces())
+    if (inner[f]) remaining_cap_area += face_area(m, f);
+  EXPECT_NEAR(to_remaining, remaining_cap_area, 1e-4 * remaining_cap_area);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+TEST(FractureSolid, SameStrikeSameResultAndTheTreeIsKeptUpToDate) {
+  SurfaceMesh a = read_mesh(test::data_path("bob_small.ply"));
+  SurfaceMesh b = a;
+  FaceBvh tree(b);
+  const Vec3 impact = a.position(Vertex(10));
+  const SolidFractureResult ra = fracture_solid(a, impact, {.seed = 4});
+  const SolidFractureResult rb = fracture_solid(b, impact, {.seed = 4}, &tree);
+  ASSERT_EQ(ra.pieces.size(), rb.pieces.size());
+  for (std::size_t i = 0; i < ra.pieces.size(); ++i) {
+    ASSERT_EQ(ra.pieces[i].mesh.n_vertices(), rb.pieces[i].mesh.n_vertices());
+    for (Vertex v : ra.pieces[i].mesh.vertices())
+      EXPECT_EQ(ra.pieces[i].mesh.position(v), rb.pieces[i].mesh.position(v));
+  }
+  EXPECT_TRUE(tree.up_to_date());
+  for (Vertex v : a.vertices()) {
+    const Vec3 q = a.position(v) * 1.1f;
+    EXPECT_EQ(tree.closest_point(q)->squared_distance, closest_point_linear(b, q)->squared_distance);
+    if (v.idx() > 50) break;
+  }
+  EXPECT_TRUE(b.validate().empty());
 }
 
 }  // namespace
