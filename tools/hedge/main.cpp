@@ -58,9 +58,8 @@ int main(int argc, char** argv) {
       {"tour",
        "Show what hedge does to a mesh: load and repair, validate, Catmull-Clark, split all faces, "
        "Loop-subdivide and smooth, decimate, break like glass and as a solid, cut a hole and fill it, the "
-       "half-edge "
-       "diagram of one vertex's faces; writes a contact sheet PNG of every stage, the edited meshes, and "
-       "prints counts and timings",
+       "half-edge diagram of one vertex's faces; writes a contact sheet PNG of every stage, the edited "
+       "meshes, and prints counts and timings",
        tour_command},
       {"smooth",
        "Smooth a mesh's vertex positions (boundary fixed unless --free-boundary) and write the result",
