@@ -56,7 +56,7 @@ TEST(FractureSolidSweep, RandomImpactsLeaveClosedPiecesAndConserveVolume) {
   for (const std::string& p : paths) meshes.push_back(read_mesh(p));
   const std::vector<std::string> presets = fracture_material_names();
   TestRng rng{12345};
-  int pieces = 0, refused = 0;
+  int pieces = 0, refused = 0, bad = 0;
   const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < impacts; ++i) {
     const std::size_t which = i % meshes.size();
@@ -85,7 +85,7 @@ TEST(FractureSolidSweep, RandomImpactsLeaveClosedPiecesAndConserveVolume) {
       solid_test::expect_solid_strike(m, r, before);
       if (::testing::UnitTest::GetInstance()->current_test_info()->result()->total_part_count() != parts) {
         ADD_FAILURE() << what;
-        return;
+        if (++bad >= 10) return;
       }
     } catch (const InvalidInputError& e) {
       // A strike that could not be made closed is refused with the mesh unchanged (checked).
@@ -98,8 +98,8 @@ TEST(FractureSolidSweep, RandomImpactsLeaveClosedPiecesAndConserveVolume) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   // Known limitation: about 1% of strikes (surfaces folded near a cell's edge) are refused.
   EXPECT_LE(refused, impacts / 50 + 1);
-  std::printf("sweep: %d impacts over %zu meshes, %d pieces, %d refused, %.1f s\n", impacts, meshes.size(),
-              pieces, refused, seconds);
+  std::printf("sweep: %d impacts over %zu meshes, %d pieces, %d refused, %d failed, %.1f s\n", impacts,
+              meshes.size(), pieces, refused, bad, seconds);
 }
 
 }  // namespace
