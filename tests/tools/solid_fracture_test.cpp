@@ -77,6 +77,10 @@ TEST_F(HedgeCli, SolidFractureWritesClosedPiecesAndTheBondGraph) {
     EXPECT_NEAR(info["volume"].get<double>(), p["volume"].get<double>(), 1e-6 * p["volume"].get<double>());
     EXPECT_GT(p["volume"].get<double>(), 0);
     EXPECT_GT(p["inner_faces"].get<int>(), 0);
+    // The caps in their own submesh (1: spot has none), as usemtl runs of the OBJ file.
+    const std::string obj = read_text(out / p["file"].get<std::string>());
+    EXPECT_NE(obj.find("usemtl submesh_1\n"), std::string::npos) << p["file"];
+    EXPECT_NE(obj.find("usemtl submesh_0\n"), std::string::npos) << p["file"];
     EXPECT_NEAR(p["mass"]["mass"].get<double>(), p["volume"].get<double>(), 1e-12);  // density 1
     EXPECT_EQ(p["mass"]["principal_axes"].size(), 3u);
     EXPECT_GE(p["hull"]["faces"].get<int>(), 4);
