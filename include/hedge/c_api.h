@@ -789,6 +789,119 @@ HEDGE_API hedge_status hedge_mesh_copy_face_submeshes(const hedge_mesh* mesh, in
                                                       uint64_t capacity, uint64_t* out_count);
 
 /* ============================================================================================ */
+/* Solid fracture (hedge/algorithms/fracture_solid.h; docs/fracture.md)                         */
+/* ============================================================================================ */
+
+/** The result of a solid fracture: its pieces and bonds, read through the hedge_solid_fracture_*
+ *  calls below; destroy it with hedge_solid_fracture_destroy(). */
+typedef struct hedge_solid_fracture hedge_solid_fracture;
+
+/** Names the remaining object (the struck mesh) as the end b of a bond. */
+#define HEDGE_SOLID_REMAINING 0xFFFFFFFFu
+
+/** Layout (440 bytes): rings @0 (16 x hedge_fracture_ring, 24 bytes each), ring_count @384
+ *  (uint32_t), hulls @388 (int32_t), radius @392, radius_fraction @400 (double), seed @408
+ *  (uint64_t), density @416, tolerance @424 (double), inner_submesh @432 (int32_t), reserved @436
+ *  (uint32_t). */
+typedef struct hedge_solid_fracture_options {
+  hedge_fracture_ring rings[HEDGE_FRACTURE_MAX_RINGS]; /**< the material's rings, innermost first; their
+                                                          spacings are scaled so the outer ring lies at
+                                                          the break radius */
+  uint32_t ring_count;                                 /**< rings used, 1..HEDGE_FRACTURE_MAX_RINGS */
+  int32_t hulls;                                       /**< 1: compute each piece's convex hull */
+  double radius;          /**< the break radius in model units; 0: radius_fraction of the diagonal of the
+                             mesh's bounding box */
+  double radius_fraction; /**< used when radius is 0; in (0, 10] */
+  uint64_t seed;          /**< seed of the break points */
+  double density;         /**< mass per unit volume, > 0 */
+  double tolerance;       /**< largest distance from the impact to the surface; 0: 1e-3 of the nearest
+                             face's longest edge */
+  int32_t inner_submesh;  /**< "f:submesh" of the cap faces; -1: one more than the mesh's largest, or 1 */
+  uint32_t reserved;      /**< 0 */
+} hedge_solid_fracture_options;
+
+/** One piece. Layout (240 bytes): mesh @0, hull @8 (handles), volume @16, cap_area @24, mass @32
+ *  (double), centre_of_mass @40 (3 doubles), inertia @64 (9 doubles, row-major, about the centre
+ *  of mass), principal_moments @136 (3 doubles), principal_axes @160 (9 doubles), hull_dimension
+ *  @232 (int32_t), reserved @236 (uint32_t). */
+typedef struct hedge_solid_piece {
+  hedge_mesh* mesh;            /**< the closed piece, its caps marked in "f:inner" and "f:submesh" */
+  hedge_mesh* hull;            /**< its convex hull, or NULL (hulls off) */
+  double volume;               /**< enclosed volume, positive */
+  double cap_area;             /**< area of the cap (inner) faces */
+  double mass;                 /**< at the options' density */
+  double centre_of_mass[3];    /**< uniform density */
+  double inertia[9];           /**< inertia tensor about the centre of mass */
+  double principal_moments[3]; /**< the eigenvalues of inertia, ascending */
+  double principal_axes[9];    /**< row i: the unit axis of principal_moments[i], a right-handed frame */
+  int32_t hull_dimension;      /**< 0 empty, 1 point, 2 segment, 3 flat, 4 solid */
+  uint32_t reserved;           /**< 0 */
+} hedge_solid_piece;
+
+/** Two pieces that touch, or a piece and the remaining object (b = HEDGE_SOLID_REMAINING), sharing
+ *  `area` of cap. a < b. Layout (16 bytes): a @0, b @4 (uint32_t), area @8 (double). */
+typedef struct hedge_solid_bond {
+  uint32_t a;  /**< index of a piece */
+  uint32_t b;  /**< index of a piece, or HEDGE_SOLID_REMAINING */
+  double area; /**< shared cap area */
+} hedge_solid_bond;
+
+/** What a strike did. Layout (48 bytes): piece_count @0, bond_count @4, impact_face @8, reserved
+ *  @12 (uint32_t), impact_point @16 (3 doubles), radius @40 (double). */
+typedef struct hedge_solid_fracture_summary {
+  uint32_t piece_count;   /**< pieces, in the order of their break points */
+  uint32_t bond_count;    /**< bonds, sorted by (a, b) */
+  uint32_t impact_face;   /**< the face the impact was located on, before the strike */
+  uint32_t reserved;      /**< 0 */
+  double impact_point[3]; /**< the impact moved onto the surface */
+  double radius;          /**< the break radius used, in model units */
+} hedge_solid_fracture_summary;
+
+/** Fills *out_options with a preset's rings (hedge_fracture_preset), radius 0 and radius_fraction
+ *  0.25 (a quarter of the bounding box's diagonal), seed 0, density 1, tolerance 0 (automatic),
+ *  hulls on and inner_submesh -1 (automatic). An unknown preset: HEDGE_ERROR_INVALID_ARGUMENT. */
+HEDGE_API hedge_status hedge_solid_fracture_options_default(int32_t preset,
+                                                            hedge_solid_fracture_options* out_options);
+/** Why the mesh cannot be solid-fractured at the impact (x, y, z) with these options (NULL: the
+ *  stone preset), as a text with its NUL, or "" when it can: a non-finite impact, no face within
+ *  the tolerance, a mesh open or non-manifold near the impact, or an illegal option. It checks the
+ *  broken region only, through the mesh's picking tree, and changes nothing: a caller that wants
+ *  "auto" strikes with hedge_mesh_fracture() where this answers. *out_size receives the bytes
+ *  needed; a smaller buffer: HEDGE_ERROR_BUFFER_TOO_SMALL. */
+HEDGE_API hedge_status hedge_solid_fracture_refusal(hedge_mesh* mesh, float x, float y, float z,
+                                                    const hedge_solid_fracture_options* options, char* buffer,
+                                                    uint32_t capacity, uint32_t* out_size);
+/** Breaks the closed mesh at the impact (x, y, z) into closed pieces (see
+ *  hedge/algorithms/fracture_solid.h): the mesh becomes the remaining object, closed, its new cap
+ *  faces marked inner. The pieces, their mass properties, hulls and bonds are in *out_result, even
+ *  when there are none (no cell held part of the object, the mesh unchanged). Each piece's mesh
+ *  and hull are new meshes that belong to the caller from this call on: destroy them with
+ *  hedge_mesh_destroy(), before or after the result. The same mesh, impact, options and seed give
+ *  the same pieces, bit for bit. The impact is located, and the region found, through the mesh's
+ *  picking tree, kept up to date for the next strike (as hedge_mesh_fracture()).
+ *  \param options NULL for the stone preset.
+ *  What hedge_solid_fracture_refusal() names, or a strike whose pieces could not be made closed:
+ *  HEDGE_ERROR_INVALID_ARGUMENT with the reason, the mesh unchanged and *out_result NULL. */
+HEDGE_API hedge_status hedge_mesh_fracture_solid(hedge_mesh* mesh, float x, float y, float z,
+                                                 const hedge_solid_fracture_options* options,
+                                                 hedge_solid_fracture** out_result);
+/** Counts, impact and radius of a strike. */
+HEDGE_API hedge_status hedge_solid_fracture_get_summary(const hedge_solid_fracture* result,
+                                                        hedge_solid_fracture_summary* out_summary);
+/** Copies the pieces (the same mesh handles on every call). *out_count receives piece_count; a
+ *  smaller buffer: HEDGE_ERROR_BUFFER_TOO_SMALL. */
+HEDGE_API hedge_status hedge_solid_fracture_copy_pieces(const hedge_solid_fracture* result,
+                                                        hedge_solid_piece* buffer, uint32_t capacity,
+                                                        uint32_t* out_count);
+/** Copies the bonds, sorted by (a, b). *out_count receives bond_count; a smaller buffer:
+ *  HEDGE_ERROR_BUFFER_TOO_SMALL. */
+HEDGE_API hedge_status hedge_solid_fracture_copy_bonds(const hedge_solid_fracture* result,
+                                                       hedge_solid_bond* buffer, uint32_t capacity,
+                                                       uint32_t* out_count);
+/** Frees the result (not the pieces' meshes, which are the caller's). */
+HEDGE_API hedge_status hedge_solid_fracture_destroy(hedge_solid_fracture* result);
+
+/* ============================================================================================ */
 /* Subdivision (hedge/algorithms/subdivide.h)                                                   */
 /* ============================================================================================ */
 

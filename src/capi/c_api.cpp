@@ -22,6 +22,7 @@ struct Registry {
   std::shared_mutex mutex;
   std::unordered_map<std::uintptr_t, std::shared_ptr<MeshObject>> meshes;
   std::unordered_map<std::uintptr_t, std::shared_ptr<RenderObject>> renders;
+  std::unordered_map<std::uintptr_t, std::shared_ptr<const SolidFractureObject>> solid_fractures;
   std::uintptr_t last_id = 0;
 };
 
@@ -72,6 +73,14 @@ hedge_render_buffers* register_render(std::shared_ptr<RenderObject> render, cons
   return reinterpret_cast<hedge_render_buffers*>(id);
 }
 
+hedge_solid_fracture* register_solid_fracture(std::shared_ptr<const SolidFractureObject> result) {
+  Registry& r = registry();
+  std::unique_lock lock(r.mutex);
+  const std::uintptr_t id = new_id(r);
+  r.solid_fractures.emplace(id, std::move(result));
+  return reinterpret_cast<hedge_solid_fracture*>(id);
+}
+
 namespace {
 // The live object a handle names in `objects`. \throw BindingError (HEDGE_ERROR_BAD_HANDLE) if none.
 template <typename T>
@@ -93,6 +102,10 @@ MeshUse find_mesh(const hedge_mesh* handle) { return MeshUse(lookup(registry().m
 
 RenderUse find_render(const hedge_render_buffers* handle) {
   return RenderUse(lookup(registry().renders, handle, "render"));
+}
+
+std::shared_ptr<const SolidFractureObject> find_solid_fracture(const hedge_solid_fracture* handle) {
+  return lookup(registry().solid_fractures, handle, "solid fracture");
 }
 
 std::pair<std::shared_ptr<MeshObject>, std::vector<std::shared_ptr<RenderObject>>> unregister_mesh(
@@ -130,6 +143,19 @@ std::shared_ptr<RenderObject> unregister_render(const hedge_render_buffers* hand
   r.renders.erase(it);
   auto& ids = out->mesh->renders;
   ids.erase(std::remove(ids.begin(), ids.end(), id_of(handle)), ids.end());
+  return out;
+}
+
+std::shared_ptr<const SolidFractureObject> unregister_solid_fracture(const hedge_solid_fracture* handle) {
+  Registry& r = registry();
+  std::unique_lock lock(r.mutex);
+  auto it = r.solid_fractures.find(id_of(handle));
+  if (it == r.solid_fractures.end()) {
+    lock.unlock();
+    bad_handle("solid fracture", handle);
+  }
+  std::shared_ptr<const SolidFractureObject> out = std::move(it->second);
+  r.solid_fractures.erase(it);
   return out;
 }
 

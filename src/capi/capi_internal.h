@@ -74,19 +74,30 @@ class RenderUse {
   std::shared_ptr<RenderObject> object_;
 };
 
+//! What a hedge_solid_fracture handle names: a strike's result, as the C ABI gives it out. It
+//! never changes after the strike, so any thread may read it.
+struct SolidFractureObject {
+  hedge_solid_fracture_summary summary{};
+  std::vector<hedge_solid_piece> pieces;
+  std::vector<hedge_solid_bond> bonds;
+};
+
 // ---- Registry: handles are ids (never addresses, never reused) mapped to live objects. ----
 hedge_mesh* register_mesh(std::shared_ptr<MeshObject> mesh);
+hedge_solid_fracture* register_solid_fracture(std::shared_ptr<const SolidFractureObject> result);
 hedge_render_buffers* register_render(std::shared_ptr<RenderObject> render, const hedge_mesh* mesh);
 //! The object a handle names, in use by the calling thread until the result is destroyed.
 //! \throw BindingError: HEDGE_ERROR_BAD_HANDLE if it names none, HEDGE_ERROR_BUSY if another thread
 //!   is using the mesh.
 MeshUse find_mesh(const hedge_mesh* handle);
 RenderUse find_render(const hedge_render_buffers* handle);
+std::shared_ptr<const SolidFractureObject> find_solid_fracture(const hedge_solid_fracture* handle);
 //! Removes a mesh and its render objects from the registry; returns them (destroyed by the caller,
 //! outside the lock). \throw BindingError if the handle names no mesh.
 std::pair<std::shared_ptr<MeshObject>, std::vector<std::shared_ptr<RenderObject>>> unregister_mesh(
     const hedge_mesh* handle);
 std::shared_ptr<RenderObject> unregister_render(const hedge_render_buffers* handle);
+std::shared_ptr<const SolidFractureObject> unregister_solid_fracture(const hedge_solid_fracture* handle);
 
 // ---- Error channel. ----
 void clear_error() noexcept;

@@ -5,6 +5,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "hedge/core/properties.h"
 #include "hedge/core/triangulate.h"
 
 namespace hedge {
@@ -48,6 +49,7 @@ IndexedMesh to_indexed(const SurfaceMesh& mesh, const ExportOptions& opt, std::v
       opt.corner_attributes ? mesh.get_halfedge_property<Color>("h:color") : HalfedgeProperty<Color>();
   Pool<Vec3> nrm_pool(out.normals);
   Pool<Color> col_pool(out.colors);
+  const auto submesh = mesh.get_face_property<std::int32_t>(kSubmeshProperty);
 
   const bool polygons = opt.triangulation == Triangulation::none && !mesh.is_triangle_mesh();
   out.indices.reserve(3 * mesh.n_faces());
@@ -71,6 +73,7 @@ IndexedMesh to_indexed(const SurfaceMesh& mesh, const ExportOptions& opt, std::v
     if (polygons || n == 3) {
       for (Halfedge h : corner) emit(h);
       if (polygons) out.face_sizes.push_back(static_cast<Index>(n));
+      if (submesh) out.face_submeshes.push_back(submesh[f]);
       continue;
     }
     tris.clear();
@@ -84,6 +87,7 @@ IndexedMesh to_indexed(const SurfaceMesh& mesh, const ExportOptions& opt, std::v
     }
     for (const auto& t : tris)
       for (Index i : t) emit(corner[i]);
+    if (submesh) out.face_submeshes.insert(out.face_submeshes.end(), tris.size(), submesh[f]);
   }
   if (vertex_map) *vertex_map = std::move(vmap);
   return out;

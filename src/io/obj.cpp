@@ -348,7 +348,16 @@ std::string write_obj(const IndexedMesh& mesh, const WriteOptions& options) {
       detail::append_vec3_line(out, n, options.precision);
     }
   }
+  // Runs of faces of one submesh under "usemtl submesh_N", in face order.
+  const bool submeshes = !mesh.face_submeshes.empty() && mesh.face_submeshes.size() == mesh.face_count();
+  std::size_t face = 0;
   detail::for_each_face(mesh, [&](std::size_t first, std::size_t n) {
+    if (submeshes && (face == 0 || mesh.face_submeshes[face] != mesh.face_submeshes[face - 1])) {
+      out += "usemtl submesh_";
+      out += std::to_string(mesh.face_submeshes[face]);
+      out += '\n';
+    }
+    ++face;
     out += 'f';
     for (std::size_t c = first; c < first + n; ++c) {
       out += ' ';

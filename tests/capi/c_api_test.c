@@ -722,6 +722,7 @@ int main(void) {
   test_mirror();
   test_engine_sources();
   test_picking();
+  test_solid_fracture();
   test_triangle_faces();
   test_submeshes();
   test_engine_streams();

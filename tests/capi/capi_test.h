@@ -213,6 +213,7 @@ void test_subdivide(void);
 void test_mirror(void);
 void test_engine_sources(void);
 void test_picking(void);
+void test_solid_fracture(void);
 void test_triangle_faces(void);
 void test_submeshes(void);
 void test_engine_streams(void);

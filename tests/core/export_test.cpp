@@ -32,6 +32,27 @@ TEST(Export, RoundTripKeepsTrianglesAndPolygons) {
   }
 }
 
+// "f:submesh" follows each face into face_submeshes, one per output face also when the faces are
+// triangulated; a mesh without it has none.
+TEST(Export, FaceSubmeshesFollowTheFaces) {
+  SurfaceMesh m = build(test::cube());
+  EXPECT_TRUE(to_indexed(m).face_submeshes.empty());
+  auto submesh = m.add_face_property<std::int32_t>(kSubmeshProperty, 0);
+  submesh[Face(2)] = 7;
+  const IndexedMesh quads = to_indexed(m);
+  ASSERT_EQ(quads.face_submeshes.size(), m.n_faces());
+  for (std::size_t f = 0; f < m.n_faces(); ++f) EXPECT_EQ(quads.face_submeshes[f], f == 2 ? 7 : 0) << f;
+  for (Triangulation t : {Triangulation::fan, Triangulation::ear}) {
+    ExportOptions o;
+    o.triangulation = t;
+    const IndexedMesh tris = to_indexed(m, o);
+    ASSERT_EQ(tris.face_submeshes.size(), tris.face_count());
+    for (std::size_t i = 0; i < tris.face_count(); ++i)
+      EXPECT_EQ(tris.face_submeshes[i], i / 2 == 2 ? 7 : 0) << i;  // two triangles per quad
+  }
+  EXPECT_TRUE(m.validate().empty());
+}
+
 TEST(Export, ClockwiseReversesEveryFaceKeepingItsFirstCorner) {
   SurfaceMesh m = build(test::tetrahedron());
   ExportOptions o;

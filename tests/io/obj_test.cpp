@@ -331,6 +331,23 @@ TEST(ObjWrite, RoundTripIsExact) {
   }
 }
 
+// Faces' submeshes become runs under "usemtl submesh_N", in face order; the reader ignores them.
+TEST(ObjWrite, SubmeshesBecomeUsemtlRuns) {
+  IndexedMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  m.indices = {0, 1, 2, 1, 3, 2, 0, 2, 3};
+  m.face_submeshes = {0, 0, 4};
+  const std::string text = write_obj(m);
+  EXPECT_NE(text.find("usemtl submesh_0\nf 1 2 3\nf 2 4 3\nusemtl submesh_4\nf 1 3 4\n"), std::string::npos)
+      << text;
+  const IndexedMesh back = read_obj(text);
+  EXPECT_EQ(back.indices, m.indices);
+  EXPECT_TRUE(back.face_submeshes.empty());
+  // Without one submesh per face, none is written.
+  m.face_submeshes = {1};
+  EXPECT_EQ(write_obj(m).find("usemtl"), std::string::npos);
+}
+
 TEST(ObjWrite, HardFloatsSurviveARoundTrip) {
   IndexedMesh m;
   m.positions = {{0.1f, -0.0f, 1e-45f},

@@ -199,6 +199,26 @@ TEST(Render, ColourByShardGivesEachPieceItsOwnColour) {
   EXPECT_NE(b, kWhite);
 }
 
+// The cut faces of a solid fracture (face property "f:inner") take the inner colour.
+TEST(Render, ColourByShardDrawsInnerFacesInTheInnerColour) {
+  SurfaceMesh m = mesh_of({{-0.9f, -0.9f, 0},
+                           {-0.1f, -0.9f, 0},
+                           {-0.9f, -0.1f, 0},
+                           {0.1f, 0.1f, 0},
+                           {0.9f, 0.1f, 0},
+                           {0.1f, 0.9f, 0}},
+                          {0, 1, 2, 3, 4, 5});
+  auto inner = m.add_face_property<std::uint8_t>("f:inner", 0);
+  inner[Face(1)] = 1;
+  RenderOptions o = flat_colour(kRed);
+  o.color_by = ColorBy::shard;
+  o.inner_color = kGreen;
+  const Image img = render(m, ortho_camera(), o);
+  EXPECT_EQ(img.at(60, 40), kGreen);  // inside the second triangle
+  EXPECT_NE(img.at(15, 85), kGreen);
+  EXPECT_NE(img.at(15, 85), kWhite);
+}
+
 TEST(Render, CurvatureOfAConvexSolidIsPositiveEverywhere) {
   const SurfaceMesh m = read_mesh(std::string(HEDGE_DATA_DIR) + "/hourglass_ico.obj");
   RenderOptions o;

@@ -14,8 +14,9 @@ TEST_F(HedgeCli, TourWritesTheContactSheetAndEveryEditedMesh) {
   const std::string sheet = read_text(out / "spot_control_mesh_tour.png");
   ASSERT_GT(sheet.size(), 24u);
   EXPECT_EQ(sheet.compare(0, 8, "\x89PNG\r\n\x1a\n"), 0);
-  for (const char* stage : {"_catmull_clark.obj", "_split.obj", "_loop.obj", "_smooth.obj", "_decimated.obj",
-                            "_fractured.obj", "_hole.obj", "_filled.obj", "_patch.obj"}) {
+  for (const char* stage :
+       {"_catmull_clark.obj", "_split.obj", "_loop.obj", "_smooth.obj", "_decimated.obj", "_fractured.obj",
+        "_solid_fractured.obj", "_hole.obj", "_filled.obj", "_patch.obj"}) {
     const fs::path mesh = out / (std::string("spot_control_mesh") + stage);
     EXPECT_TRUE(fs::exists(mesh)) << mesh;
     const Result v = run({"validate", mesh.string()});
@@ -23,9 +24,9 @@ TEST_F(HedgeCli, TourWritesTheContactSheetAndEveryEditedMesh) {
   }
   // The table: a header and one row per stage, every one valid.
   EXPECT_NE(r.out.find("stage"), std::string::npos);
-  for (const char* stage :
-       {"loaded", "Catmull-Clark", "split all faces", "Loop subdivision", "smoothed",
-        "decimated to 732 faces", "glass fracture", "faces removed", "hole filled", "detached one-ring"})
+  for (const char* stage : {"loaded", "Catmull-Clark", "split all faces", "Loop subdivision", "smoothed",
+                            "decimated to 732 faces", "glass fracture", "solid fracture: ", "faces removed",
+                            "hole filled", "detached one-ring"})
     EXPECT_NE(r.out.find(stage), std::string::npos) << stage;
   EXPECT_EQ(r.out.find(" NO "), std::string::npos) << r.out;
   // The split stage: 180 faces of 4.4 corners on average become 732 triangles.
@@ -47,6 +48,17 @@ TEST_F(HedgeCli, TourSkipsTheSubdivisionsALargeMeshCannotAfford) {
   EXPECT_NE(r.out.find("decimated to 182 faces"), std::string::npos) << r.out;
   EXPECT_TRUE(fs::exists(tmp("out") / "spot_control_mesh_fractured.obj"));
   EXPECT_TRUE(fs::exists(tmp("out") / "spot_control_mesh_tour.png"));
+}
+
+// An open mesh cannot be broken as a solid: the tour skips that stage, saying why, and goes on.
+TEST_F(HedgeCli, TourSkipsTheSolidFractureOfAnOpenMesh) {
+  const Result r = run({"tour", data("three_peaks.off"), "--out", tmp("out").string(), "--panel", "96"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("solid fracture                     skipped: the mesh is open"), std::string::npos)
+      << r.out;
+  EXPECT_FALSE(fs::exists(tmp("out") / "three_peaks_solid_fractured.obj"));
+  EXPECT_NE(r.out.find("glass fracture"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("hole filled"), std::string::npos) << r.out;
 }
 
 TEST_F(HedgeCli, TourOfAMeshWithoutFacesIsADataError) {

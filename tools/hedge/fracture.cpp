@@ -1,6 +1,7 @@
 // hedge fracture IN --impact x,y,z --material NAME|FILE.json --seed S [--radius R --units U]
 // [--break-radius R] -o DIR:
 // break a mesh at an impact and write the remaining mesh, one OBJ per shard and summary.json into DIR.
+// With --kind solid or auto, solid_fracture.cpp breaks it into closed pieces instead.
 #include "hedge/algorithms/fracture.h"
 
 #include <unistd.h>
@@ -22,6 +23,7 @@
 #include "material_json.h"
 #include "numbers.h"
 #include "progress_bar.h"
+#include "solid_fracture.h"
 
 namespace hedge::cli {
 
@@ -37,7 +39,10 @@ struct FractureCommandOptions {
   std::string units;
   bool json = false;
   LoadOptions load;
+  SolidFractureCliOptions solid;
 };
+
+}  // namespace
 
 Vec3 parse_impact(const std::string& text) {
   Vec3 p;
@@ -101,13 +106,15 @@ void write_atomically(const fs::path& path, const std::string& text) {
   fs::rename(tmp, path);
 }
 
+namespace {
+
 std::string shard_name(std::size_t i) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "shard_%03zu.obj", i);
   return buf;
 }
 
-int run_fracture(const FractureCommandOptions& o) {
+int run_surface_fracture(const FractureCommandOptions& o, const std::string& solid_refusal) {
   const Vec3 impact = parse_impact(o.impact);
   FractureOptions f;
   f.material = material_from(o.material);
@@ -140,6 +147,7 @@ int run_fracture(const FractureCommandOptions& o) {
   summary["break_radius"] = r.break_radius;
   summary["thickness"] = o.thickness;
   summary["density"] = o.density;
+  if (!solid_refusal.empty()) summary["solid_refusal"] = solid_refusal;
   summary["remaining"] = {
       {"file", "remaining.obj"}, {"faces", mesh.n_faces()}, {"vertices", mesh.n_vertices()}};
   mesh.garbage_collection();
@@ -188,6 +196,14 @@ int run_fracture(const FractureCommandOptions& o) {
   return kExitOk;
 }
 
+int run_fracture(const FractureCommandOptions& o) {
+  if (o.solid.kind == "surface" && !o.solid.solid) return run_surface_fracture(o, "");
+  const SolidFractureCliInputs in{o.input,   o.output,    o.impact, o.material, o.seed,
+                                  o.density, o.tolerance, o.json,   o.load};
+  return run_solid_fracture(o.solid, in,
+                            [&](const std::string& why) { return run_surface_fracture(o, why); });
+}
+
 void add_fracture_arguments(CLI::App* app, FractureCommandOptions* o) {
   app->add_option("IN", o->input, "Input mesh file")->required();
   app->add_option("--impact", o->impact,
@@ -233,6 +249,7 @@ void add_fracture_arguments(CLI::App* app, FractureCommandOptions* o) {
       "longest edge",
       0);
   add_json_flag(*app, o->json, "Print the summary as JSON, with timings");
+  add_solid_fracture_arguments(*app, o->solid);
 }
 
 }  // namespace

@@ -57,9 +57,9 @@ int main(int argc, char** argv) {
        render_command},
       {"tour",
        "Show what hedge does to a mesh: load and repair, validate, Catmull-Clark, split all faces, "
-       "Loop-subdivide and smooth, decimate, break like glass, cut a hole and fill it, the half-edge "
-       "diagram of one vertex's faces; writes a contact sheet PNG of every stage, the edited meshes, and "
-       "prints counts and timings",
+       "Loop-subdivide and smooth, decimate, break like glass and as a solid, cut a hole and fill it, the "
+       "half-edge diagram of one vertex's faces; writes a contact sheet PNG of every stage, the edited "
+       "meshes, and prints counts and timings",
        tour_command},
       {"smooth",
        "Smooth a mesh's vertex positions (boundary fixed unless --free-boundary) and write the result",
@@ -73,7 +73,8 @@ int main(int argc, char** argv) {
        "Sampled symmetric Hausdorff distance and mean distance between the surfaces of two meshes",
        distance_command},
       {"fracture",
-       "Break a mesh at an impact point into shards; write the rest, one OBJ per shard and summary.json",
+       "Break a mesh at an impact point into shards (--kind solid: a closed mesh into closed pieces); write "
+       "the rest, one OBJ per shard or piece and summary.json",
        fracture_command},
   };
   std::vector<Command> commands;

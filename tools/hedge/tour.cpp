@@ -17,6 +17,7 @@
 #include "hedge/algorithms/detach_faces.h"
 #include "hedge/algorithms/fill_hole.h"
 #include "hedge/algorithms/fracture.h"
+#include "hedge/algorithms/fracture_solid.h"
 #include "hedge/algorithms/smooth.h"
 #include "hedge/algorithms/split_all_faces.h"
 #include "hedge/algorithms/subdivide.h"
@@ -59,9 +60,16 @@ struct Row {
   std::string file;
 };
 
-//! The remaining mesh and its shards as one mesh for a picture, each shard pushed away from the
-//! impact by `spread` times its centroid's distance, so the cracks show.
-SurfaceMesh exploded_view(const SurfaceMesh& rest, const std::vector<Shard>& shards, const Vec3& impact,
+//! One piece of an exploded view: its mesh and the point it is pushed away from the impact by.
+struct ViewPiece {
+  const SurfaceMesh* mesh;
+  Vec3d centroid;
+};
+
+//! The remaining mesh and the pieces (shards, or solid pieces) as one mesh for a picture, each
+//! piece pushed away from the impact by `spread` times its centroid's distance, so the cracks show.
+//! The cut faces of a solid fracture keep their mark ("f:inner"), for the picture's inner colour.
+SurfaceMesh exploded_view(const SurfaceMesh& rest, const std::vector<ViewPiece>& pieces, const Vec3& impact,
                           double spread) {
   ExportOptions plain;
   plain.corner_attributes = false;
@@ -69,21 +77,36 @@ SurfaceMesh exploded_view(const SurfaceMesh& rest, const std::vector<Shard>& sha
   auto sizes = [](const IndexedMesh& m) {
     return m.face_sizes.empty() ? std::vector<std::uint32_t>(m.indices.size() / 3, 3) : m.face_sizes;
   };
+  std::vector<std::uint8_t> inner;  // per face of `all`, in order
+  auto add_inner = [&](const SurfaceMesh& m) {
+    const auto mark = m.get_face_property<std::uint8_t>(kInnerProperty);
+    for (Face f : m.faces()) inner.push_back(mark ? mark[f] : 0);
+  };
   IndexedMesh all = to_indexed(rest, plain);
   all.face_sizes = sizes(all);
-  for (const Shard& s : shards) {
-    const IndexedMesh piece = to_indexed(s.mesh, plain);
-    const Vec3 push{float(spread * (s.centroid.x - impact.x)), float(spread * (s.centroid.y - impact.y)),
-                    float(spread * (s.centroid.z - impact.z))};
+  add_inner(rest);
+  for (const ViewPiece& v : pieces) {
+    const IndexedMesh piece = to_indexed(*v.mesh, plain);
+    const Vec3 push{float(spread * (v.centroid.x - impact.x)), float(spread * (v.centroid.y - impact.y)),
+                    float(spread * (v.centroid.z - impact.z))};
     const auto base = static_cast<std::uint32_t>(all.positions.size());
     for (const Vec3& p : piece.positions) all.positions.push_back({p.x + push.x, p.y + push.y, p.z + push.z});
     for (std::uint32_t i : piece.indices) all.indices.push_back(base + i);
     const std::vector<std::uint32_t> piece_sizes = sizes(piece);
     all.face_sizes.insert(all.face_sizes.end(), piece_sizes.begin(), piece_sizes.end());
+    add_inner(*v.mesh);
   }
   BuildOptions exact;
   exact.weld = Weld::none;
-  return build(all, exact);
+  SurfaceMesh view = build(all, exact);
+  // The faces come out in the order they went in, unless the build dropped some.
+  if (view.n_faces() == inner.size() &&
+      std::find(inner.begin(), inner.end(), std::uint8_t(1)) != inner.end()) {
+    auto mark = view.add_face_property<std::uint8_t>(kInnerProperty, 0);
+    std::size_t i = 0;
+    for (Face f : view.faces()) mark[f] = inner[i++];
+  }
+  return view;
 }
 
 //! The interior vertex nearest to the eye, so that an edit around it faces the camera.
@@ -286,12 +309,50 @@ void stage_fracture(Tour& t) {
     RenderOptions r;
     r.color_by = ColorBy::shard;
     r.shading = Shading::flat;
-    const SurfaceMesh view = exploded_view(rest, fr.shards, fr.impact_point, 0.35);
+    std::vector<ViewPiece> pieces;
+    for (const Shard& shard : fr.shards) pieces.push_back({&shard.mesh, shard.centroid});
+    const SurfaceMesh view = exploded_view(rest, pieces, fr.impact_point, 0.35);
     t.add("glass fracture: " + std::to_string(fr.shards.size()) + " shards", view, ms, r,
           t.base + "_fractured.obj");
   } catch (const InvalidInputError& e) {
     // A mesh too small to break, say: the tour goes on, and says why.
     t.skipped.push_back({"fracture", e.what()});
+  }
+}
+
+// 9. The mesh, if closed, broken as a solid where it faces the eye: closed pieces pushed apart from
+// the impact, their cut faces in the inner colour. The finest triangle mesh when there is one.
+void stage_solid_fracture(Tour& t) {
+  const SurfaceMesh& whole = t.fine ? *t.fine : t.mesh();
+  const Vertex hit = front_vertex(whole, t.camera);
+  if (!hit.is_valid()) {
+    t.skipped.push_back({"solid fracture", "no vertex faces the camera"});
+    return;
+  }
+  SurfaceMesh rest = whole;
+  SolidFractureOptions f;
+  f.material = fracture_material("ice");
+  f.radius_fraction = 0.22;
+  f.seed = 1;
+  // Refused on an open mesh, say: the tour goes on, and says why.
+  const std::string why = solid_fracture_refusal(rest, whole.position(hit), f);
+  if (!why.empty()) {
+    t.skipped.push_back({"solid fracture", why});
+    return;
+  }
+  try {
+    SolidFractureResult sr;
+    const double ms = timed([&] { sr = fracture_solid(rest, whole.position(hit), f); });
+    std::vector<ViewPiece> pieces;
+    for (const SolidPiece& p : sr.pieces) pieces.push_back({&p.mesh, p.centroid});
+    RenderOptions r;
+    r.color_by = ColorBy::shard;
+    r.shading = Shading::flat;
+    const SurfaceMesh view = exploded_view(rest, pieces, sr.impact_point, 0.5);
+    t.add("solid fracture: " + std::to_string(sr.pieces.size()) + " pieces", view, ms, r,
+          t.base + "_solid_fractured.obj");
+  } catch (const InvalidInputError& e) {
+    t.skipped.push_back({"solid fracture", e.what()});
   }
 }
 
@@ -328,7 +389,7 @@ std::size_t fill_new_holes(SurfaceMesh& filled, const SurfaceMesh& original) {
   return faces;
 }
 
-// 9. A hole cut around the vertex nearest the eye, then 10. filled again, and 11. the half-edge
+// 10. A hole cut around the vertex nearest the eye, then 11. filled again, and 12. the half-edge
 // diagram of the faces around that vertex, detached as a mesh of their own.
 void stage_hole(Tour& t) {
   const SurfaceMesh& mesh = t.mesh();
@@ -361,9 +422,9 @@ void stage_hole(Tour& t) {
 }
 
 //! The stages of the tour, in order; each adds pictures and rows, or says why it was skipped.
-constexpr void (*kStages[])(Tour&) = {stage_loaded,   stage_edges,    stage_catmull_clark,
-                                      stage_split,    stage_loop,     stage_smooth,
-                                      stage_decimate, stage_fracture, stage_hole};
+constexpr void (*kStages[])(Tour&) = {stage_loaded,         stage_edges,  stage_catmull_clark, stage_split,
+                                      stage_loop,           stage_smooth, stage_decimate,      stage_fracture,
+                                      stage_solid_fracture, stage_hole};
 
 //! Prints the table of stages and what was written; true when every stage's mesh was valid.
 bool print_report(const Tour& t, const std::string& sheet_path) {

@@ -9,6 +9,7 @@
 #include "colors.h"
 #include "hedge/algorithms/components.h"
 #include "hedge/algorithms/curvature.h"
+#include "hedge/algorithms/fracture_solid.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/core/threads.h"
 #include "hedge/error.h"
@@ -109,6 +110,10 @@ Prepared prepare(const SurfaceMesh& m, const Projection& proj, const RenderOptio
   } else if (o.color_by == ColorBy::shard) {
     const Components comp = face_components(m);
     for (Face f : m.faces()) p.face_color[f.idx()] = categorical(comp.label[f.idx()]);
+    const auto inner = m.get_face_property<std::uint8_t>(kInnerProperty);
+    if (inner)
+      for (Face f : m.faces())
+        if (inner[f] != 0) p.face_color[f.idx()] = o.inner_color;
   } else if (o.color_by == ColorBy::valence) {
     p.vertex_color.assign(m.vertex_slots(), o.base);
     // Regular valence from the faces around: a corner of a regular n-gon spans pi (n - 2) / n, so

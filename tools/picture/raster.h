@@ -24,7 +24,8 @@ enum class Shading {
 enum class ColorBy {
   none,       //!< one colour, RenderOptions::base
   face,       //!< a colour per face
-  shard,      //!< a colour per connected component (the shards of a fracture)
+  shard,      //!< a colour per connected component (the shards of a fracture); cap faces of a solid
+              //!< fracture (face property "f:inner" = 1) in RenderOptions::inner_color
   curvature,  //!< mean curvature (cotangent Laplacian), blue (concave) to red (convex)
   valence,  //!< vertex valence: white where regular (6 among triangles, 4 among quads), blue below, red above
 };
@@ -51,6 +52,8 @@ struct RenderOptions {
   Rgb boundary_color{220, 40, 40};
   Rgb feature_color{235, 150, 20};
   Rgb marked_color{200, 0, 200};
+  //! The cut faces of a solid fracture, with ColorBy::shard.
+  Rgb inner_color{150, 70, 55};
   //! Width of a line in pixels.
   double line_width = 1.0;
   //! Most threads for the bands of rows (at most 16); 0: max_threads() (core/threads.h). Never

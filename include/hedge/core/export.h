@@ -32,10 +32,11 @@ struct ExportOptions {
 //! enters), so clean input built without welding comes back with the same indices. face_sizes stays
 //! empty when every output face is a triangle. "h:texcoord" (Vec2), "h:normal" (Vec3) and "h:color"
 //! (Color) corner properties become pools of their distinct values with one index per corner; a property of
-//! that name with another type is treated as absent. With Winding::cw each face keeps its first corner and
-//! lists the others in reverse. \param vertex_map if given, receives mesh vertex -> output vertex
-//! (kInvalidIndex for deleted). \pre mesh is valid (mesh.validate() is empty); this is not checked, and an
-//! invalid mesh gives
+//! that name with another type is treated as absent. The face property "f:submesh" (std::int32_t) becomes
+//! face_submeshes, one per output face (each triangle of a triangulated face gets the face's). With
+//! Winding::cw each face keeps its first corner and lists the others in reverse. \param vertex_map if given,
+//! receives mesh vertex -> output vertex (kInvalidIndex for deleted). \pre mesh is valid (mesh.validate() is
+//! empty); this is not checked, and an invalid mesh gives
 //!      undefined results.
 //! Throws only std::bad_alloc. O(vertex slots + corners) time, plus an expected O(1) hash lookup
 //! per corner attribute and O(n^2) per n-gon with Triangulation::ear.

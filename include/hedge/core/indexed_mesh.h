@@ -45,6 +45,11 @@ struct IndexedMesh {
   std::vector<Color> colors;
   std::vector<std::uint32_t> color_indices;
 
+  //! Each face's submesh (the face property "f:submesh"), one per face, or empty. to_indexed()
+  //! fills it when the mesh has that property; write_obj() marks each run of faces of one submesh
+  //! with "usemtl submesh_N". The other writers and the readers leave it out.
+  std::vector<std::int32_t> face_submeshes;
+
   //! What the reader that made this mesh found suspect but kept (empty for meshes not read from a
   //! file). read_mesh() refuses them under the strict policy and reports them otherwise.
   std::vector<ReadWarning> warnings;

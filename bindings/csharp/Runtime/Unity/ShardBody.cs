@@ -42,6 +42,21 @@ namespace Hedge.Unity
             };
         }
 
+        /// <summary>A solid fracture piece's values (SolidPiece.Mass, CentreOfMass, PrincipalMoments,
+        /// PrincipalRotation()): a piece is always closed, with mass.</summary>
+        public static ShardBody Of(SolidPiece piece)
+        {
+            if (piece == null) throw new ArgumentNullException("piece");
+            double[] c = piece.CentreOfMass, m = piece.PrincipalMoments, q = piece.PrincipalRotation();
+            return new ShardBody
+            {
+                mass = (float)piece.Mass,
+                centerOfMass = new Vector3((float)c[0], (float)c[1], (float)c[2]),
+                inertiaTensor = new Vector3((float)m[0], (float)m[1], (float)m[2]),
+                inertiaTensorRotation = new Quaternion((float)q[0], (float)q[1], (float)q[2], (float)q[3]),
+            };
+        }
+
         /// <summary>Sets the body's mass, centerOfMass, inertiaTensor and inertiaTensorRotation to these values
         /// (which turns off Unity's automatic centre and tensor for it).</summary>
         public void ApplyTo(Rigidbody body)

@@ -76,6 +76,33 @@ namespace Hedge.Tests
             }
         }
 
+        // A solid fracture piece's ShardBody: the same values in Unity's float types.
+        [Test]
+        static void ShardBodyOfASolidPiece()
+        {
+            // A closed box 4 x 4 x 2, struck at the centre of its top.
+            float[] p = { 0, 0, 0, 4, 0, 0, 4, 4, 0, 0, 4, 0, 0, 0, 2, 4, 0, 2, 4, 4, 2, 0, 4, 2 };
+            int[] t = { 0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
+                        1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7 };
+            using (HalfEdgeMesh box = HalfEdgeMesh.FromTriangles(p, t))
+            using (SolidFracture r = box.FractureSolid(new Vec3(2.1f, 1.9f, 2), FracturePreset.Stone, 1, 5))
+            {
+                Check.True(r.Pieces.Length >= 2, "stone pieces: " + r.Pieces.Length);
+                foreach (SolidPiece piece in r.Pieces)
+                {
+                    ShardBody b = ShardBody.Of(piece);
+                    Check.Equal((float)piece.Mass, b.mass);
+                    Check.True(b.mass > 0, "a piece has mass");
+                    Check.Equal((float)piece.CentreOfMass[1], b.centerOfMass.y);
+                    double[] tensor = Tensor(b.inertiaTensorRotation, b.inertiaTensor);
+                    double scale = Largest(piece.Inertia);
+                    for (int i = 0; i < 9; ++i) Check.Near(piece.Inertia[i], tensor[i], 1e-5 * scale, "tensor element " + i);
+                }
+                Check.Valid(box);
+            }
+            Check.ThrowsType<ArgumentNullException>(() => ShardBody.Of((SolidPiece)null), "no piece");
+        }
+
         [Test]
         static void BreakOnClickSample()
         {
