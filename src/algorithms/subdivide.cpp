@@ -136,6 +136,12 @@ namespace {
 
 using namespace detail::subdivision;
 
+double boundary_edges(const SurfaceMesh& m) {
+  double n = 0;
+  for (Edge e : m.edges()) n += m.is_boundary(e);
+  return n;
+}
+
 void check(const SurfaceMesh& m, Subdivision scheme, int steps) {
   if (steps < 0) throw InvalidInputError("subdivide: steps must be 0 or more, got " + std::to_string(steps));
   const bool any_polygon = scheme == Subdivision::catmull_clark || scheme == Subdivision::split_faces;
@@ -171,13 +177,16 @@ void check(const SurfaceMesh& m, Subdivision scheme, int steps) {
   }
   // Refuse what would not fit 32-bit indices. With H half-edges, F faces and C face corners, a step
   // makes: Loop, midpoint 2H + 6F half-edges, 4F faces; Catmull-Clark at most 4H; split-faces and
-  // sqrt3 H + 2C half-edges and C faces of three corners.
+  // sqrt3 H + 2C half-edges and C faces of three corners, and in its even steps 2 more half-edges
+  // per boundary edge.
   double halfedges = double(m.n_halfedges()), faces = double(m.n_faces());
+  double boundary = scheme == Subdivision::sqrt3 && steps > 1 ? boundary_edges(m) : 0;
   for (int s = 0; s < steps; ++s) {
     if (scheme == Subdivision::catmull_clark) {
       halfedges *= 4;
     } else if (any_polygon || scheme == Subdivision::sqrt3) {
       halfedges += 2 * corners;
+      if (s % 2 == 1) halfedges += 2 * boundary, boundary *= 3;
       faces = corners;
       corners = 3 * faces;
     } else {
@@ -191,20 +200,26 @@ void check(const SurfaceMesh& m, Subdivision scheme, int steps) {
 
 // ---- the memory estimate ----
 
-// Live element counts of a mesh (c: face corners), as doubles so that no step overflows.
+// Live element counts of a mesh (c: face corners, b: boundary edges), as doubles so that no step
+// overflows.
 struct Counts {
-  double v = 0, e = 0, f = 0, c = 0;
+  double v = 0, e = 0, f = 0, c = 0, b = 0;
 };
 
-Counts counts_after(const Counts& n, Subdivision scheme) {
+// The counts after step `step` (from 0) of a call. An odd-numbered sqrt(3) step splits each
+// boundary edge in three: its face's centroid gives way to the two points, so one more vertex and
+// one more edge each.
+Counts counts_after(const Counts& n, Subdivision scheme, int step) {
   switch (scheme) {
     case Subdivision::catmull_clark:
-      return {n.v + n.e + n.f, 2 * n.e + n.c, n.c, 4 * n.c};
+      return {n.v + n.e + n.f, 2 * n.e + n.c, n.c, 4 * n.c, 2 * n.b};
     case Subdivision::sqrt3:
+      if (step % 2 == 1) return {n.v + n.f + n.b, n.e + n.c + n.b, n.c, 3 * n.c, 3 * n.b};
+      return {n.v + n.f, n.e + n.c, n.c, 3 * n.c, n.b};
     case Subdivision::split_faces:
-      return {n.v + n.f, n.e + n.c, n.c, 3 * n.c};
+      return {n.v + n.f, n.e + n.c, n.c, 3 * n.c, n.b};
     default:
-      return {n.v + n.e, 2 * n.e + 3 * n.f, 4 * n.f, 12 * n.f};
+      return {n.v + n.e, 2 * n.e + 3 * n.f, 4 * n.f, 12 * n.f, 2 * n.b};
   }
 }
 
@@ -239,12 +254,12 @@ constexpr double kSlack = 1.25;
 
 double estimate(const SurfaceMesh& m, Subdivision scheme, int steps) {
   const ElementBytes bytes(m);
-  Counts n{double(m.n_vertices()), double(m.n_edges()), double(m.n_faces()), 0};
+  Counts n{double(m.n_vertices()), double(m.n_edges()), double(m.n_faces()), 0, boundary_edges(m)};
   for (Face f : m.faces()) n.c += double(m.valence(f));
   const double compact = m.has_garbage() ? bytes.of(n) : 0;
   double peak = 0, previous = 0;
   for (int s = 0; s < steps; ++s) {
-    const Counts next = counts_after(n, scheme);
+    const Counts next = counts_after(n, scheme, s);
     // Corner properties (texture coordinates) are gathered per new half-edge before they are set.
     const double work = work_bytes_per_element(scheme) * (n.v + n.e + n.f) + 2 * next.e * bytes.corner;
     const double made = kSlack * bytes.of(next);
@@ -278,13 +293,14 @@ void check_memory(const SurfaceMesh& m, Subdivision scheme, int steps, std::size
       " (subdivide_memory() gives the estimate)");
 }
 
-// One step from src, into a mesh of its own.
-SurfaceMesh refine(const SurfaceMesh& src, Subdivision scheme) {
+// One step from src, into a mesh of its own. `step` counts from 0 within the call: sqrt(3) splits
+// the boundary in its odd-numbered (second, fourth, ...) steps.
+SurfaceMesh refine(const SurfaceMesh& src, Subdivision scheme, int step) {
   switch (scheme) {
     case Subdivision::catmull_clark:
       return refine_catmull_clark(src);
     case Subdivision::sqrt3:
-      return refine_at_centres(src, true);
+      return refine_at_centres(src, true, step % 2 == 1);
     case Subdivision::split_faces:
       return refine_at_centres(src, false);
     default:
@@ -317,7 +333,7 @@ void subdivide(SurfaceMesh& mesh, Subdivision scheme, int steps, const Progress&
     from = &compact;
   }
   for (int s = 0; s < steps; ++s) {
-    SurfaceMesh next = refine(*from, scheme);
+    SurfaceMesh next = refine(*from, scheme, s);
     result = std::move(next);
     from = &result;
     if (s + 1 == steps) break;

@@ -58,8 +58,11 @@ Split face_rings(const SurfaceMesh& m) {
 }
 
 // Kobbelt's smoothing of the old vertices: (1 - a) p + a * (mean of the ring), a = (4 - 2 cos(2 pi / n)) / 9.
-// A vertex on two or more sharp edges (boundary or "e:crease") stays: those edges are not refined.
-std::vector<Vec3> sqrt3_positions(const SurfaceMesh& m, const std::vector<std::uint8_t>& keep) {
+// A vertex on two or more sharp edges (boundary or "e:crease") stays, but for a boundary vertex
+// whose two boundary edges are both split in this step (`split`): it moves by the ternary cubic
+// B-spline rule (4 prev + 19 p + 4 next) / 27 along its boundary.
+std::vector<Vec3> sqrt3_positions(const SurfaceMesh& m, const std::vector<std::uint8_t>& sharp,
+                                  const std::vector<std::uint8_t>& split) {
   std::vector<Vec3> out(m.vertex_slots());
   const Vec3* p = m.positions().vector().data();
   const std::vector<Vertex>& to = m.halfedge_vertex_array();
@@ -71,15 +74,21 @@ std::vector<Vec3> sqrt3_positions(const SurfaceMesh& m, const std::vector<std::u
       out[v] = p[v];
       const Halfedge start = m.halfedge(Vertex(Index(v)));
       if (!start.is_valid()) continue;
-      Vec3d ring{0, 0, 0};
-      std::size_t n = 0, n_sharp = 0;
+      Vec3d ring{0, 0, 0}, ends{0, 0, 0};
+      std::size_t n = 0, n_sharp = 0, n_split = 0;
       Index h = start.idx();
       do {
-        ring += to_double(p[to[h].idx()]);
+        const Vec3d q = to_double(p[to[h].idx()]);
+        ring += q;
         ++n;
-        n_sharp += keep[h >> 1];
+        n_sharp += sharp[h >> 1];
+        if (!split.empty() && split[h >> 1]) ends += q, ++n_split;
         h = next[h ^ 1u].idx();  // clockwise about v
       } while (h != start.idx());
+      if (n_sharp == 2 && n_split == 2) {
+        out[v] = to_float((to_double(p[v]) * 19 + ends * 4) * (1.0 / 27));
+        continue;
+      }
       if (n_sharp >= 2) continue;
       const double a = n < 32 ? alphas[n] : (4 - 2 * std::cos(2 * std::numbers::pi / double(n))) / 9;
       out[v] = to_float(to_double(p[v]) * (1 - a) + ring * (a / double(n)));
@@ -88,28 +97,181 @@ std::vector<Vec3> sqrt3_positions(const SurfaceMesh& m, const std::vector<std::u
   return out;
 }
 
+// The boundary split of an even sqrt(3) step (Kobbelt's boundary rule). After an odd step every
+// boundary face is (A, B, M): a boundary edge A -> B and an interior vertex M. The even step puts
+// two points on the edge, P = (Z + 16 A + 10 B) / 27 and Q = (10 A + 16 B + W) / 27 (Z before A
+// and W after B along the boundary), and makes the face the fan (A, P, M), (P, Q, M), (Q, B, M),
+// whose edges A-M and B-M are flipped like any interior edge; so two steps split every boundary
+// edge in three, as they do every interior one. P takes the face's centre index V + f, Q the
+// index V + F + j and the new edge Q-B the index E + C + j (C the corners, j counting the split
+// faces in face order); old edge A-B becomes P-Q and the spoke to A becomes A-P.
+struct BoundarySplit {
+  std::vector<std::uint8_t> split;  // per edge: a boundary edge split in this step
+  std::vector<Index> faces;         // the split faces, in face order
+  std::vector<Index> of_face;       // per face: j, or kNone
+  std::vector<Index> side;          // per split face: k of its boundary half-edge h_k
+  static constexpr Index kNone = ~Index(0);
+};
+
+BoundarySplit find_boundary_split(const SurfaceMesh& m, const Split& s,
+                                  const std::vector<std::uint8_t>& sharp) {
+  BoundarySplit b;
+  b.split.assign(s.ne, 0);
+  b.of_face.assign(s.nf, BoundarySplit::kNone);
+  const auto crease = m.get_edge_property<std::uint8_t>("e:crease");
+  for (std::size_t f = 0; f < s.nf; ++f) {
+    Index side = BoundarySplit::kNone, count = 0;
+    for (Index c = s.first[f]; c < s.first[f + 1]; ++c) {
+      const Index h = s.ring[c];
+      if (sharp[h >> 1] && m.is_boundary(Halfedge(h ^ 1u)) && !(crease && crease[Edge(h >> 1)] != 0))
+        side = c - s.first[f], ++count;
+    }
+    if (count != 1) continue;  // after an odd step every boundary face has exactly one
+    b.split[s.ring[s.first[f] + side] >> 1] = 1;
+    b.of_face[f] = Index(b.faces.size());
+    b.faces.push_back(Index(f));
+    b.side.push_back(side);
+  }
+  return b;
+}
+
+// Rewrites what the pass of refine_at_centres made of each split face (A, B, M) and its flipped
+// neighbours (see BoundarySplit): positions, links and properties of P, Q and the new edge. `sharp`:
+// the edges the pass left unflipped.
+void apply_boundary_split(SurfaceMesh& m, const SurfaceMesh& src, const Split& s, const BoundarySplit& b,
+                          const std::vector<std::uint8_t>& sharp) {
+  if (b.faces.empty()) return;
+  const Index E = Index(s.ne), V = Index(s.nv), C = Index(s.ring.size()), F = Index(s.nf);
+  auto in = [&](Index c) { return Halfedge(2 * (E + c)); };
+  auto out = [&](Index c) { return Halfedge(2 * (E + c) + 1); };
+  // The boundary half-edge before each one (src's loops), and where a boundary half-edge's chain of
+  // new boundary half-edges starts: B -> Q of its face when split (B its start), else itself.
+  std::vector<Index> prev(2 * s.ne, 0);
+  for (std::size_t h = 0; h < 2 * s.ne; ++h)
+    if (src.is_boundary(Halfedge(Index(h)))) prev[src.next(Halfedge(Index(h))).idx()] = Index(h);
+  auto extra = [&](std::size_t j) { return Halfedge(2 * (E + C + Index(j))); };  // Q -> B; twin B -> Q
+  auto chain = [&](Halfedge t) {
+    return b.split[t.idx() >> 1] ? SurfaceMesh::twin(extra(b.of_face[src.face(SurfaceMesh::twin(t)).idx()]))
+                                 : t;
+  };
+  const Vec3* p = src.positions().vector().data();
+  PropertyContainer& vprops = m.vertex_properties();
+  PropertyContainer& hprops = m.halfedge_properties();
+  PropertyContainer& eprops = m.edge_properties();
+  const bool vertex_data = vprops.array_count() > 1;
+  for (std::size_t j = 0; j < b.faces.size(); ++j) {
+    const Index f = b.faces[j], base = s.first[f];
+    const Index q0 = base + b.side[j], q1 = base + (b.side[j] + 1) % 3, q2 = base + (b.side[j] + 2) % 3;
+    const Halfedge h0(s.ring[q0]), h1(s.ring[q1]), h2(s.ring[q2]), t0 = SurfaceMesh::twin(h0);
+    const Halfedge x0 = extra(j), x1 = SurfaceMesh::twin(x0);
+    const Vertex a = src.from_vertex(h0), bv = src.to_vertex(h0), mv = src.to_vertex(h1);
+    const Vertex P(V + f), Q(V + F + Index(j));
+    const Halfedge lead1 = m.next(out(q0));  // B -> C_R if h1 was flipped, else h1 itself
+    // Face q0 becomes (P, Q, M): h0 P -> Q, out(q0) Q -> M, in(q1) M -> P.
+    m.set_vertex(h0, Q);
+    m.set_vertex(out(q0), mv);
+    m.set_next(h0, out(q0));
+    m.set_next(out(q0), in(q1));
+    m.set_next(in(q1), h0);
+    m.set_face(out(q0), Face(q0));
+    m.set_face(in(q1), Face(q0));
+    // in(q0) now runs M -> Q, and x0 (Q -> B) takes out(q0)'s place in face q1.
+    m.set_vertex(in(q0), Q);
+    m.set_vertex(x0, bv);
+    m.set_face(x0, Face(q1));
+    m.set_next(x0, lead1);
+    if (!sharp[h1.idx() >> 1]) {
+      // q1 = (Q, B, C_R): x0, B -> C_R, h1 C_R -> Q. The neighbour's (M, Q, C_R) takes in(q0).
+      const Halfedge to_cr = SurfaceMesh::twin(h1), back = m.next(to_cr);
+      m.set_vertex(h1, Q);
+      m.set_next(h1, x0);
+      m.set_next(back, in(q0));
+      m.set_next(in(q0), to_cr);
+      m.set_face(in(q0), m.face(to_cr));
+    } else {
+      // q1 = (Q, B, M): x0, h1 B -> M, in(q0) M -> Q.
+      m.set_next(h1, in(q0));
+      m.set_next(in(q0), x0);
+      m.set_face(in(q0), Face(q1));
+    }
+    m.set_halfedge(Face(q1), x0);
+    // The boundary: B -> Q -> P -> A, then the chain of the half-edge after t0.
+    m.set_vertex(x1, Q);
+    m.set_face(x1, Face());
+    m.set_next(x1, t0);
+    m.set_vertex(t0, P);
+    m.set_next(t0, out(q2));
+    m.set_face(out(q2), Face());
+    m.set_next(out(q2), chain(src.next(t0)));
+    m.set_halfedge(P, out(q2));
+    m.set_halfedge(Q, t0);
+    if (m.halfedge(bv) == t0) m.set_halfedge(bv, x1);
+    if (m.halfedge(a) == h0) m.set_halfedge(a, in(q2));
+    // Positions by the ternary cubic B-spline rule along the boundary.
+    const Vec3d pa = to_double(p[a.idx()]), pb = to_double(p[bv.idx()]);
+    const Vec3d pz = to_double(p[src.to_vertex(src.next(t0)).idx()]);
+    const Vec3d pw = to_double(p[src.from_vertex(Halfedge(prev[t0.idx()])).idx()]);
+    m.position(P) = to_float((pz + pa * 16 + pb * 10) * (1.0 / 27));
+    m.position(Q) = to_float((pa * 10 + pb * 16 + pw) * (1.0 / 27));
+    // Properties: P and Q divide A-B in thirds (vertex and corner data alike); both new boundary
+    // edges A-P and Q-B take A-B's edge properties.
+    const float thirds[2][2] = {{2.f / 3, 1.f / 3}, {1.f / 3, 2.f / 3}};
+    if (vertex_data) {
+      const Index ends[2] = {a.idx(), bv.idx()};
+      vprops.interpolate(P.idx(), ends, thirds[0], 2, m.positions().array());
+      vprops.interpolate(Q.idx(), ends, thirds[1], 2, m.positions().array());
+    }
+    if (!eprops.empty()) {
+      eprops.copy_element_from(src.edge_properties(), h0.idx() >> 1, E + C + Index(j));
+      eprops.copy_element_from(src.edge_properties(), h0.idx() >> 1, E + q2);
+    }
+    if (hprops.empty()) continue;
+    // h_k's value is the corner of f at to(h_k): B for h0, M for h1, A for h2.
+    const PropertyContainer& old = src.halfedge_properties();
+    hprops.copy_element_from(old, h0.idx(), x0.idx());               // Q -> B enters B
+    hprops.copy_element_from(old, h1.idx(), out(q0).idx());          // Q -> M enters M
+    hprops.copy_element_from(old, h2.idx(), in(q2).idx());           // A's value, for now
+    const Index corners[2] = {in(q2).idx(), x0.idx()};               // A, B
+    hprops.interpolate(in(q1).idx(), corners, thirds[0], 2);         // M -> P enters P
+    hprops.interpolate(h0.idx(), corners, thirds[1], 2);             // P -> Q enters Q
+    hprops.copy(in(q1).idx(), in(q2).idx());                         // A -> P
+    hprops.copy(h0.idx(), in(q0).idx());                             // M -> Q
+    if (!sharp[h1.idx() >> 1]) hprops.copy(h0.idx(), h1.idx());      // C_R -> Q
+    if (!sharp[h2.idx() >> 1]) hprops.copy(in(q1).idx(), h2.idx());  // C_L -> P
+    hprops.copy(t0.idx(), x1.idx());
+  }
+  // Boundary half-edges of edges not split run on to the chain of the old next.
+  for (std::size_t h = 0; h < 2 * s.ne; ++h) {
+    const Halfedge t{Index(h)};
+    if (src.is_boundary(t) && !b.split[h >> 1]) m.set_next(t, chain(src.next(t)));
+  }
+}
+
 }  // namespace
 
-SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3) {
+SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3, bool split_boundary) {
   const Split s = face_rings(src);
   const std::size_t nc = s.ring.size();
   const Index E = Index(s.ne), V = Index(s.nv);
-  // Which edges sqrt(3) leaves unflipped (boundary and crease edges), and each half-edge's q.
-  std::vector<std::uint8_t> keep;
+  // Which edges are sharp and stay unflipped (boundary and crease edges), which boundary edges an
+  // even sqrt(3) step splits, and each half-edge's q.
+  std::vector<std::uint8_t> sharp;
+  BoundarySplit bsplit;
   std::vector<Index> q;
   std::vector<Vec3> smoothed;
   if (sqrt3) {
-    keep.resize(s.ne);
+    sharp.resize(s.ne);
     const auto crease = src.get_edge_property<std::uint8_t>("e:crease");
     for_ranges(s.ne, [&](std::size_t begin, std::size_t end) {
       for (std::size_t e = begin; e < end; ++e)
-        keep[e] = src.is_boundary(Edge(Index(e))) || (crease && crease[Edge(Index(e))] != 0);
+        sharp[e] = src.is_boundary(Edge(Index(e))) || (crease && crease[Edge(Index(e))] != 0);
     });
+    if (split_boundary) bsplit = find_boundary_split(src, s, sharp);
     q.resize(2 * s.ne);  // boundary half-edges' entries are never read
     for_ranges(nc, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) q[s.ring[i]] = Index(i);
     });
-    smoothed = sqrt3_positions(src, keep);
+    smoothed = sqrt3_positions(src, sharp, bsplit.split);
   }
   // Face centroids, summed in double as face_centroid() does.
   std::vector<Vec3> centres(s.nf);
@@ -125,7 +287,8 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3) {
 
   // Old vertices, edges and half-edges keep their index, links and properties; the links of the
   // old half-edges of faces and the old vertices' outgoing half-edges are rewritten below.
-  SurfaceMesh m = refined_like(src, s.nv + s.nf, s.ne + nc, nc, s.nv);
+  const std::size_t nb = bsplit.faces.size();
+  SurfaceMesh m = refined_like(src, s.nv + s.nf + nb, s.ne + nc + nb, nc, s.nv);
   for_ranges(2 * s.ne, [&](std::size_t begin, std::size_t end) {
     for (std::size_t h = begin; h < end; ++h) {
       m.set_vertex(Halfedge(Index(h)), src.to_vertex(Halfedge(Index(h))));
@@ -164,7 +327,7 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3) {
         const Halfedge h(s.ring[c]);
         const Face child(c);
         Halfedge lead = in(c);  // the half-edge before h's successor: in(c) when split
-        if (sqrt3 && !keep[h.idx() >> 1]) {
+        if (sqrt3 && !sharp[h.idx() >> 1]) {
           lead = in(q[h.idx() ^ 1u]);
           m.set_vertex(h, centre);
           m.set_next(lead, h);
@@ -173,7 +336,7 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3) {
           m.set_next(h, lead);
           m.set_next(lead, out(cp));
         }
-        m.set_next(out(cp), sqrt3 && !keep[h.idx() >> 1] ? lead : h);
+        m.set_next(out(cp), sqrt3 && !sharp[h.idx() >> 1] ? lead : h);
         m.set_face(h, child);
         m.set_face(lead, child);
         m.set_face(out(cp), child);
@@ -187,7 +350,7 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3) {
     for_ranges(s.nv, [&](std::size_t begin, std::size_t end) {
       for (std::size_t v = begin; v < end; ++v) {
         const Halfedge o = m.halfedge(Vertex(Index(v)));
-        if (o.is_valid() && !m.is_boundary(o) && !keep[o.idx() >> 1])
+        if (o.is_valid() && !m.is_boundary(o) && !sharp[o.idx() >> 1])
           m.set_halfedge(Vertex(Index(v)), in(q[o.idx() ^ 1u]));
       }
     });
@@ -216,7 +379,7 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3) {
   }
   if (sqrt3 && !hprops.empty())
     for (std::size_t c = 0; c < nc; ++c)
-      if (!keep[s.ring[c] >> 1]) hprops.copy(in(Index(c)).idx(), s.ring[c]);
+      if (!sharp[s.ring[c] >> 1]) hprops.copy(in(Index(c)).idx(), s.ring[c]);
   PropertyContainer& fprops = m.face_properties();
   if (!fprops.empty())
     for (std::size_t f = 0; f < s.nf; ++f)
@@ -225,6 +388,7 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3) {
   for (std::size_t f = 0; f < s.nf; ++f) m.position(Vertex(V + Index(f))) = centres[f];
   for (std::size_t v = 0; v < s.nv; ++v)
     m.position(Vertex(Index(v))) = sqrt3 ? smoothed[v] : src.position(Vertex(Index(v)));
+  apply_boundary_split(m, src, s, bsplit, sharp);
   return m;
 }
 

@@ -72,7 +72,8 @@ SurfaceMesh refine_1_to_4(const SurfaceMesh& src, Subdivision scheme);
 //! Catmull-Clark (subdivide_catmull_clark.cpp).
 SurfaceMesh refine_catmull_clark(const SurfaceMesh& src);
 //! Kobbelt's sqrt(3) when sqrt3, else the split of every face at its centroid
-//! (subdivide_face_centres.cpp).
-SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3);
+//! (subdivide_face_centres.cpp). split_boundary: an even sqrt(3) step, which splits the boundary
+//! edges in three (Kobbelt's boundary rule).
+SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3, bool split_boundary = false);
 
 }  // namespace hedge::detail::subdivision

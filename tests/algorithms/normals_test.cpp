@@ -6,6 +6,7 @@
 
 #include "hedge/core/build.h"
 #include "hedge/core/export.h"
+#include "hedge/core/face_operations.h"
 #include "hedge/error.h"
 #include "non_finite.h"
 #include "test_meshes.h"
@@ -58,6 +59,28 @@ TEST(Normals, AngleWeightingIsIndependentOfTheTriangulation) {
   }
   EXPECT_GT(off_area, 0.05);
   EXPECT_GT(off_uniform, 0.05);
+  EXPECT_TRUE(m.validate().empty());
+}
+
+// A 2 x 1 quad in z = 0 (area 2, normal +z) and a triangle of area 1/2 in x = 0 (normal +x) share
+// the edge from (0, 0, 0) to (0, 1, 0). Worked by hand: at (0, 0, 0) area weighting gives
+// (1/2, 0, 2) / sqrt(17/4), uniform weighting (1, 0, 1) / sqrt(2); with the triangle removed (its
+// slot left as garbage) the quad's +z alone.
+TEST(Normals, PolygonsWeighByAreaAndRemovedFacesAddNothing) {
+  IndexedMesh in;
+  in.positions = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}, {0, 0, 1}};
+  in.indices = {0, 1, 2, 3, 0, 3, 4};
+  in.face_sizes = {4, 3};
+  SurfaceMesh m = build(in);
+  const float r = 1 / std::sqrt(4.25f), s = 1 / std::sqrt(2.f);
+  expect_near(compute_vertex_normals(m, NormalWeighting::area)[Vertex(0)], Vec3{0.5f * r, 0, 2 * r});
+  expect_near(compute_vertex_normals(m, NormalWeighting::uniform, "v:u")[Vertex(0)], Vec3{s, 0, s});
+  expect_near(compute_face_normals(m)[Face(0)], Vec3{0, 0, 1});
+  expect_near(compute_face_normals(m)[Face(1)], Vec3{1, 0, 0});
+  remove_face(m, Face(1));
+  ASSERT_TRUE(m.has_garbage());
+  expect_near(compute_vertex_normals(m, NormalWeighting::area)[Vertex(0)], Vec3{0, 0, 1});
+  expect_near(compute_vertex_normals(m, NormalWeighting::angle, "v:a")[Vertex(3)], Vec3{0, 0, 1});
   EXPECT_TRUE(m.validate().empty());
 }
 

@@ -1,6 +1,7 @@
 // Splitting at face centres and sqrt(3) (src/algorithms/subdivide_face_centres.cpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
@@ -9,6 +10,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "heap_hooks.h"
 #include "hedge/algorithms/geometry.h"
@@ -23,6 +25,12 @@
 
 namespace hedge {
 namespace {
+
+std::size_t boundary_edges(const SurfaceMesh& m) {
+  std::size_t n = 0;
+  for (Edge e : m.edges()) n += m.is_boundary(e);
+  return n;
+}
 
 void expect_texcoords_follow_positions(const SurfaceMesh& before, const SurfaceMesh& after) {
   const auto uv = after.get_halfedge_property<Vec2>("h:texcoord");
@@ -63,19 +71,119 @@ TEST(Sqrt3, CountsAfterStepsOnClosedAndOpenMeshes) {
   SurfaceMesh grid = build(test::grid(3, true));  // 16 V, 33 E, 18 F, one loop of 12 edges
   const SurfaceMesh before = grid;
   const test::Counts c = test::counts(grid);
-  subdivide(grid, Subdivision::sqrt3, 2);
-  EXPECT_EQ(grid.n_vertices(), c.v + c.f + 3 * c.f);
-  EXPECT_EQ(grid.n_edges(), c.e + 3 * c.f + 3 * (3 * c.f));
-  EXPECT_EQ(grid.n_faces(), 9 * c.f);
-  EXPECT_EQ(grid.boundary_loops().size(), 1u);
-  // Boundary edges are neither split nor flipped, and boundary vertices stay.
+  subdivide(grid, Subdivision::sqrt3, 1);
+  // The first step neither splits nor flips boundary edges, and boundary vertices stay.
   for (Edge e : before.edges()) {
     EXPECT_EQ(grid.is_boundary(e), before.is_boundary(e));
     if (before.is_boundary(e)) EXPECT_EQ(grid.vertices(e), before.vertices(e));
   }
   for (Vertex v : before.vertices())
     if (before.is_boundary(v)) EXPECT_EQ(grid.position(v), before.position(v));
+  // The second splits each of the 12 boundary edges in three: its face gets the two points instead
+  // of a centroid, so one more vertex and one more edge each.
+  grid = before;
+  subdivide(grid, Subdivision::sqrt3, 2);
+  EXPECT_EQ(grid.n_vertices(), c.v + c.f + 3 * c.f + 12);
+  EXPECT_EQ(grid.n_edges(), c.e + 3 * c.f + 3 * (3 * c.f) + 12);
+  EXPECT_EQ(grid.n_faces(), 9 * c.f);
+  ASSERT_EQ(grid.boundary_loops().size(), 1u);
+  EXPECT_EQ(boundary_edges(grid), 36u);
   EXPECT_TRUE(grid.validate().empty()) << grid.validate().front();
+}
+
+// Two triangles, (0, 0, 0), (3, 0, 0), (3, 3, 1), (0, 3, 0), split along 0-2: two steps, every
+// position worked out by hand from Kobbelt's stencils.
+//  Step 1: boundary vertices stay; centres c0 = (2, 1, 1/3), c1 = (1, 2, 1/3); edge 0-2 flips to
+//   c0-c1. Each of the four boundary faces (v_i, v_i+1, c) has one boundary edge.
+//  Step 2: boundary vertices move by (4 prev + 19 p + 4 next) / 27: v0 -> (4/9, 4/9, 0),
+//   v1 -> (23/9, 4/9, 4/27), v2 -> (23/9, 23/9, 19/27), v3 -> (4/9, 23/9, 4/27). Each boundary
+//   edge a -> b (z before a, w after b) gets (z + 16 a + 10 b) / 27 and (10 a + 16 b + w) / 27:
+//   v0 v1: (10/9, 1/9, 0), (17/9, 1/9, 1/27); v1 v2: (26/9, 10/9, 10/27), (26/9, 17/9, 16/27);
+//   v2 v3: (17/9, 26/9, 16/27), (10/9, 26/9, 10/27); v3 v0: (1/9, 17/9, 1/27), (1/9, 10/9, 0).
+//   c0 and c1 have valence 4 (a = 4/9): c0 -> 5/9 c0 + 1/9 (v0 + v1 + v2 + c1) = (17/9, 10/9, 1/3),
+//   c1 -> (10/9, 17/9, 1/3). The two interior faces (v0, c0, c1) and (v2, c1, c0) get their
+//   centroids (1, 1, 2/9) and (2, 2, 5/9).
+TEST(Sqrt3, TwoStepsOnAnOpenMeshMatchTheStencilsWorkedByHand) {
+  IndexedMesh in;
+  in.positions = {{0, 0, 0}, {3, 0, 0}, {3, 3, 1}, {0, 3, 0}};
+  in.indices = {0, 1, 2, 0, 2, 3};
+  SurfaceMesh m = build(in);
+  subdivide(m, Subdivision::sqrt3, 2);
+  const double n = 1.0 / 9, t = 1.0 / 27;
+  const std::vector<Vec3d> want = {{4 * n, 4 * n, 0},
+                                   {23 * n, 4 * n, 4 * t},
+                                   {23 * n, 23 * n, 19 * t},
+                                   {4 * n, 23 * n, 4 * t},
+                                   {10 * n, n, 0},
+                                   {17 * n, n, t},
+                                   {26 * n, 10 * n, 10 * t},
+                                   {26 * n, 17 * n, 16 * t},
+                                   {17 * n, 26 * n, 16 * t},
+                                   {10 * n, 26 * n, 10 * t},
+                                   {n, 17 * n, t},
+                                   {n, 10 * n, 0},
+                                   {17 * n, 10 * n, 1.0 / 3},
+                                   {10 * n, 17 * n, 1.0 / 3},
+                                   {1, 1, 2 * n},
+                                   {2, 2, 5 * n}};
+  ASSERT_EQ(m.n_vertices(), want.size());
+  EXPECT_EQ(m.n_faces(), 18u);
+  std::vector<int> used(want.size(), 0);
+  for (Vertex v : m.vertices()) {
+    std::size_t hit = want.size();
+    for (std::size_t i = 0; i < want.size(); ++i)
+      if (test::near(m.position(v), want[i], 1e-6)) hit = i;
+    ASSERT_LT(hit, want.size()) << "vertex " << v.idx() << " at " << m.position(v).x << ", "
+                                << m.position(v).y << ", " << m.position(v).z << " is none of the expected";
+    ++used[hit];
+  }
+  for (int u : used) EXPECT_EQ(u, 1);
+  // v1 and v3 were on one face each: after step 1 the edge v1-c0 lies between two split faces, and
+  // flips like any interior edge, joining the points beside v1; so v1 keeps one triangle.
+  EXPECT_EQ(m.valence(Vertex(1)), 2u);
+  EXPECT_EQ(m.valence(Vertex(3)), 2u);
+  ASSERT_EQ(m.boundary_loops().size(), 1u);
+  EXPECT_EQ(boundary_edges(m), 12u);
+  EXPECT_TRUE(m.validate().empty()) << m.validate().front();
+}
+
+// The smallest angle of each face on the boundary, after 4 steps of a grid: Kobbelt's rule keeps
+// them near the interior's; never splitting the boundary made needles (median 0.5 degrees).
+TEST(Sqrt3, BoundaryFacesStayWellShaped) {
+  SurfaceMesh m = build(test::grid(4, true));
+  subdivide(m, Subdivision::sqrt3, 4);
+  std::vector<double> smallest;
+  for (Face f : m.faces()) {
+    bool on_boundary = false;
+    for (Halfedge h : m.halfedges(f)) on_boundary = on_boundary || m.is_boundary(SurfaceMesh::twin(h));
+    if (!on_boundary) continue;
+    double a = 1e9;
+    for (Halfedge h : m.halfedges(f))
+      a = std::min(
+          a, corner_angle(to_double(m.position(m.to_vertex(h))), to_double(m.position(m.from_vertex(h))),
+                          to_double(m.position(m.to_vertex(m.next(h))))));
+    smallest.push_back(a * 180 / 3.14159265358979);
+  }
+  ASSERT_FALSE(smallest.empty());
+  std::nth_element(smallest.begin(), smallest.begin() + smallest.size() / 2, smallest.end());
+  EXPECT_GT(smallest[smallest.size() / 2], 15.0);
+  EXPECT_TRUE(m.validate().empty()) << m.validate().front();
+}
+
+// Boundary edges marked "e:crease" keep the rule of crease edges: never split, their vertices stay,
+// so the boundary polygon is kept exactly (to patch a hole in a mesh that is not refined).
+TEST(Sqrt3, BoundaryEdgesMarkedAsCreasesAreKept) {
+  SurfaceMesh m = build(test::grid(3, true));
+  auto crease = m.add_edge_property<std::uint8_t>("e:crease", 0);
+  for (Edge e : m.edges()) crease[e] = m.is_boundary(e);
+  const SurfaceMesh before = m;
+  subdivide(m, Subdivision::sqrt3, 2);
+  for (Edge e : before.edges())
+    if (before.is_boundary(e)) EXPECT_EQ(m.vertices(e), before.vertices(e));
+  for (Vertex v : before.vertices())
+    if (before.is_boundary(v)) EXPECT_EQ(m.position(v), before.position(v));
+  EXPECT_EQ(boundary_edges(m), 12u);
+  EXPECT_TRUE(m.validate().empty()) << m.validate().front();
 }
 
 TEST(Sqrt3, ARegularVertexMovesByKobbeltsRuleAndTendsToItsLimit) {

@@ -18,10 +18,20 @@
 //    vertex, every old edge is flipped so that it joins the centroids of its two faces, and old
 //    vertices move by (1 - a) p + a (mean of the n neighbours), a = (4 - 2 cos(2 pi / n)) / 9. A
 //    closed mesh goes from V, E, F to V + F, E + 3F, 3F; two steps make each edge three (a triadic
-//    split). Boundaries: Kobbelt's every-second-step boundary rule is not used; instead boundary
-//    edges and "e:crease" edges are never flipped nor split, and a vertex on two or more of them
-//    stays where it is. So the boundary polygon is kept exactly (interpolated) while the interior
-//    is smoothed; a vertex on one crease edge is smoothed as an interior one.
+//    split). Boundaries follow Kobbelt's rule, as OpenMesh's and CGAL's sqrt(3) do: the first,
+//    third, ... step of a call neither flips nor splits boundary edges and leaves boundary vertices
+//    where they are; the second, fourth, ... splits each boundary edge a -> b in three, with points
+//    (z + 16a + 10b) / 27 and (10a + 16b + w) / 27 (z before a, w after b along the boundary), and
+//    moves boundary vertices to (4 prev + 19 p + 4 next) / 27 (the ternary cubic B-spline), so two
+//    steps split the boundary as they split the interior and boundary faces stay well shaped. The
+//    parity counts within one call: subdivide(m, sqrt3, 2) is not two calls of one step (those
+//    never split the boundary). "e:crease" edges are never flipped nor split, and a vertex on two
+//    or more sharp edges (crease or boundary) stays where it is, but for a boundary vertex whose
+//    two boundary edges are split; a vertex on one crease edge is smoothed as an interior one. A
+//    boundary edge marked "e:crease" is kept like any crease: mark a whole boundary so to keep the
+//    boundary polygon exactly (a patch that must still fit a hole in an unrefined mesh). An even
+//    step adds one vertex and one edge per split boundary edge to the counts above (its face
+//    gets the two points instead of a centroid).
 //  - split_faces: the 1-to-n split of every face of n corners at its centroid (no flip, nothing
 //    moves): the original's SplitAllFaces. Any polygons; gives triangles.
 //
@@ -36,7 +46,10 @@
 // sqrt3 and split_faces: old vertices, edges and half-edges keep their index (old edges flipped),
 // face f's centroid is vertex V + f, and with the faces' corners numbered face by face
 // (q = 3f + k for triangles), corner q gets the spoke edge E + q and the new face q. So again
-// children sit next to their parents.
+// children sit next to their parents. In an even sqrt3 step a boundary face f (a, b, m) with a split
+// edge takes, instead of a centroid, the point near a as vertex V + f, and the j-th such face (in
+// face order) the point near b as vertex V + F + j and the edge from it to b as edge E + C + j (C
+// the face corners).
 //
 // Properties follow: vertex properties of new vertices are the average of the edge's ends (the
 // positions by the scheme); corner properties (texture coordinates) are copied at old corners and
@@ -45,7 +58,9 @@
 // split_faces the centroid averages its face's vertex and corner properties, corners at old
 // vertices keep their face's value, old edges keep theirs and spokes get the default, and the
 // children take their face's properties. A sqrt3 flip across a UV seam cannot keep the seam: the
-// new triangle takes each side's centroid value and the first face's value at the old vertex.
+// new triangle takes each side's centroid value and the first face's value at the old vertex. The
+// two points of a split boundary edge take 2/3 and 1/3 of its ends' vertex and corner values, and
+// its three pieces keep its edge properties.
 // Deleted elements are
 // collected first (in a copy: the input's garbage stays until the result replaces it). The change
 // log records a reset: every index changed.
