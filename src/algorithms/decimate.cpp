@@ -652,8 +652,11 @@ DecimateResult Decimator::run() {
     // not need (a refined flat region, all of whose cheapest collapses cost 0, collapses back
     // exactly this way). Adding 4 to a float's exponent bits multiplies it by 16. Unless nothing was
     // done yet, so that illegal cheap candidates cannot stop the decimation.
-    const std::uint64_t cost_limit =
-        n_keys == 0 ? 0 : (keys_[std::min(budget, n_keys) - 1] >> 32) + (4u << 23);
+    // A candidate the shape check refuses moves the limit on by one: it is not waiting for a locked
+    // vertex, and in a flat region, where every cost is 0, the limit would otherwise end the pass
+    // at its first refusals.
+    std::size_t limit_index = std::min(budget, n_keys) - 1;
+    std::uint64_t cost_limit = n_keys == 0 ? 0 : (keys_[limit_index] >> 32) + (4u << 23);
     const Vertex* to = m_.halfedge_vertex_array().data();
     for (std::size_t k = 0; k < n_keys; ++k) {
       // The keys come in cost order, so every candidate's data is cold: fetch the half-edges of the
@@ -688,6 +691,8 @@ DecimateResult Decimator::run() {
           c != Check::ok) {
         ++(c == Check::normal ? result.refused.normal : result.refused.shape);
         refused_shape_now += c == Check::shape;
+        if (c == Check::shape && limit_index + 1 < n_keys)
+          cost_limit = (keys_[++limit_index] >> 32) + (4u << 23);
         refused_normal_now += c == Check::normal;
         continue;
       }
