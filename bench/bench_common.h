@@ -90,9 +90,14 @@ Backend meshopt_backend();
 
 // ---- Decimation: the same target for every library. ----
 
-//! QEM decimation to a tenth of the vertices: the vertex count hedge, OpenMesh and CGAL stop at.
-//! (meshoptimizer, which counts indices, is asked for a tenth of them.)
-inline std::size_t decimate_target_vertices(const Input& in) { return in.n_vertices() / 10; }
+//! The share of the vertices the decimation keeps (peers' --decimate-ratio; a tenth by default).
+inline double decimate_ratio = 0.1;
+
+//! QEM decimation to decimate_ratio of the vertices: the vertex count hedge, OpenMesh and CGAL stop
+//! at. (meshoptimizer, which counts indices, is asked for that share of them.)
+inline std::size_t decimate_target_vertices(const Input& in) {
+  return static_cast<std::size_t>(static_cast<double>(in.n_vertices()) * decimate_ratio);
+}
 
 //! The sampled surface distances of a result to the input (bench_quality.cpp, through hedge's
 //! algorithms/distance.h): symmetric Hausdorff distance and mean distance, and the result's

@@ -43,7 +43,8 @@ std::unique_ptr<MeshBox> prepare(const MeshBox& reference) {
 //! the count of the vertices the result uses. Returns that count.
 double decimate_op(Context& c) {
   MOBox& m = *static_cast<MOBox*>(c.mesh);
-  const std::size_t target = m.indices.size() / 30 * 3;
+  const std::size_t target =
+      static_cast<std::size_t>(static_cast<double>(m.indices.size() / 3) * decimate_ratio) * 3;
   m.simplified_count =
       meshopt_simplify(m.simplified.data(), m.indices.data(), m.indices.size(), m.xyz.data(), m.n_vertices(),
                        3 * sizeof(float), target, std::numeric_limits<float>::max(), 0, nullptr);

@@ -16,6 +16,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hedge/algorithms/geometry.h"
@@ -30,6 +31,20 @@ using Mesh = SurfaceMesh;
 
 // Sum of weighted squared distances to planes n.x + d = 0: x'Ax + 2b'x + c, with A symmetric
 // (a00 a01 a02 a11 a12 a22) and w the total weight of the geometric planes.
+// Directions of a quadric whose eigenvalue is below this fraction of the largest are left
+// undetermined by the placement (see Quadric::minimiser).
+constexpr double kRankTolerance = 1e-3;
+
+// A collapse in a flat region (its error at most kFlat times its edge's squared length, a
+// root-mean-square distance of 1/1000 of the edge) may not make a face whose quality,
+// 4 sqrt(3) area / (sum of its squared edge lengths) (1 for an equilateral triangle, 0 for a
+// degenerate one), is below kMinQuality, unless a face around the edge is already that bad and the
+// worst new face is no worse than it. 0.1 is a needle with an angle of about 3.3 degrees. Where
+// every collapse is free, the error cannot tell them apart and the shape decides; elsewhere the
+// error alone does. When this check alone stops the decimation short of its target, it is lifted
+// for the rest of the run.
+constexpr double kMinQuality = 0.1, kFlat = 1e-6;
+
 struct Quadric {
   double a00 = 0, a01 = 0, a02 = 0, a11 = 0, a12 = 0, a22 = 0, b0 = 0, b1 = 0, b2 = 0, c = 0, w = 0;
 
@@ -49,20 +64,90 @@ struct Quadric {
     return x * (a00 * x + 2 * (a01 * y + a02 * z + b0)) + y * (a11 * y + 2 * (a12 * z + b1)) +
            z * (a22 * z + 2 * b2) + c;
   }
-  // The minimiser, if the system is well conditioned: |det A| above a fraction of (trace / 3)^3,
-  // the value it has when every direction is constrained as strongly as the average one. On a
-  // flat or cylindrical patch one eigenvalue is (nearly) zero, the minimiser is a plane or a line,
-  // and the caller falls back to the endpoints or the midpoint.
-  bool minimiser(Vec3d& p) const {
-    const double c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
-    const double det = a00 * c00 + a01 * c01 + a02 * c02;
-    const double s = (a00 + a11 + a22) / 3;
-    if (!(s > 0) || !(std::abs(det) > 1e-3 * s * s * s)) return false;
-    const double c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
-    const double inv = -1 / det;
-    p = {inv * (c00 * b0 + c01 * b1 + c02 * b2), inv * (c01 * b0 + c11 * b1 + c12 * b2),
-         inv * (c02 * b0 + c12 * b1 + c22 * b2)};
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+  // (A + c u u^T)^-1 v, for a unit u (c = 0: A^-1 v); false if singular.
+  bool solve(const Vec3d& u, double c, const Vec3d& v, Vec3d& x) const {
+    const double m00 = a00 + c * u.x * u.x, m01 = a01 + c * u.x * u.y, m02 = a02 + c * u.x * u.z;
+    const double m11 = a11 + c * u.y * u.y, m12 = a12 + c * u.y * u.z, m22 = a22 + c * u.z * u.z;
+    const double c00 = m11 * m22 - m12 * m12, c01 = m02 * m12 - m01 * m22, c02 = m01 * m12 - m02 * m11;
+    const double det = m00 * c00 + m01 * c01 + m02 * c02;
+    if (!(std::abs(det) > 0)) return false;
+    const double c11 = m00 * m22 - m02 * m02, c12 = m01 * m02 - m00 * m12, c22 = m00 * m11 - m01 * m01;
+    const double inv = 1 / det;
+    x = {inv * (c00 * v.x + c01 * v.y + c02 * v.z), inv * (c01 * v.x + c11 * v.y + c12 * v.z),
+         inv * (c02 * v.x + c12 * v.y + c22 * v.z)};
+    return true;
+  }
+
+  // The eigenvalues of A, largest first (the closed form for symmetric 3x3 matrices).
+  std::array<double, 3> eigenvalues() const {
+    const double q = (a00 + a11 + a22) / 3;
+    const double off = a01 * a01 + a02 * a02 + a12 * a12;
+    const double p2 = (a00 - q) * (a00 - q) + (a11 - q) * (a11 - q) + (a22 - q) * (a22 - q) + 2 * off;
+    const double p = std::sqrt(p2 / 6);
+    if (!(p > 0)) return {q, q, q};
+    // B = (A - q I) / p; its eigenvalues are 2 cos(phi + 2 pi k / 3), with cos(3 phi) = det(B) / 2.
+    const double b00 = (a00 - q) / p, b11 = (a11 - q) / p, b22 = (a22 - q) / p, b01 = a01 / p, b02 = a02 / p,
+                 b12 = a12 / p;
+    const double det =
+        b00 * (b11 * b22 - b12 * b12) - b01 * (b01 * b22 - b12 * b02) + b02 * (b01 * b12 - b11 * b02);
+    const double phi = std::acos(std::clamp(det / 2, -1.0, 1.0)) / 3;
+    const double l0 = q + 2 * p * std::cos(phi), l2 = q + 2 * p * std::cos(phi + 2 * std::numbers::pi / 3);
+    return {l0, 3 * q - l0 - l2, l2};
+  }
+
+  // A unit vector spanning the image of (A - x I)(A - y I): the eigenvector of the third eigenvalue
+  // when x and y are the other two. False if that product vanishes.
+  bool eigenvector(double x, double y, Vec3d& u) const {
+    const Vec3d r0{a00 - x, a01, a02}, r1{a01, a11 - x, a12}, r2{a02, a12, a22 - x};
+    const Vec3d s0{a00 - y, a01, a02}, s1{a01, a11 - y, a12}, s2{a02, a12, a22 - y};
+    // Columns of the (symmetric) product.
+    const Vec3d col[3] = {{dot(r0, s0), dot(r1, s0), dot(r2, s0)},
+                          {dot(r0, s1), dot(r1, s1), dot(r2, s1)},
+                          {dot(r0, s2), dot(r1, s2), dot(r2, s2)}};
+    int k = 0;
+    for (int i = 1; i < 3; ++i)
+      if (dot(col[i], col[i]) > dot(col[k], col[k])) k = i;
+    const double l = norm(col[k]);
+    if (!(l > 0)) return false;
+    u = col[k] / l;
+    return true;
+  }
+
+  // The point that minimises the quadric near `mid`, in the directions the quadric determines:
+  // A's eigenvectors whose eigenvalue is at least kRankTolerance times the largest (a truncated
+  // pseudo-inverse, as in Lindstrom and Turk's placement). Along the others (the plane of a flat
+  // patch, the axis of a cylinder, the tangent plane where curvature is low) the point stays at
+  // `mid`. The test is a ratio of eigenvalues, so it does not depend on the mesh's scale. If the
+  // point lies farther than sqrt(max_dist2) from mid, the weakest direction kept is dropped and the
+  // point found again. False if no direction is left or a value is not finite.
+  bool minimiser(const Vec3d& mid, double max_dist2, Vec3d& p) const {
+    const double tr = a00 + a11 + a22;
+    if (!(tr > 0)) return false;
+    const Vec3d g{a00 * mid.x + a01 * mid.y + a02 * mid.z + b0, a01 * mid.x + a11 * mid.y + a12 * mid.z + b1,
+                  a02 * mid.x + a12 * mid.y + a22 * mid.z + b2};
+    auto accept = [&](const Vec3d& d) {
+      if (!(dot(d, d) <= max_dist2)) return false;
+      p = mid - d;
+      return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+    };
+    // Fast path: det >= kRankTolerance tr^3 / 4 implies the smallest eigenvalue is at least
+    // kRankTolerance times the largest (lambda_min >= 4 det / tr^2 and lambda_max <= tr).
+    const double det =
+        a00 * (a11 * a22 - a12 * a12) - a01 * (a01 * a22 - a12 * a02) + a02 * (a01 * a12 - a11 * a02);
+    Vec3d d;
+    const bool full = det >= 0.25 * kRankTolerance * tr * tr * tr;
+    if (full && solve({0, 0, 0}, 0, g, d) && accept(d)) return true;
+    const std::array<double, 3> l = eigenvalues();
+    int rank = 1;
+    while (rank < 3 && l[rank] >= kRankTolerance * l[0]) ++rank;
+    if (rank == 3 && !full && solve({0, 0, 0}, 0, g, d) && accept(d)) return true;
+    Vec3d u;
+    // Rank 2: solve in the plane normal to the weakest eigenvector u (A + l0 u u^T has the same
+    // eigenvectors, with u's eigenvalue lifted, and g is projected off u).
+    if (rank >= 2 && eigenvector(l[0], l[1], u) && solve(u, l[0], g - u * dot(u, g), d) && accept(d))
+      return true;
+    // Rank 1: along the strongest eigenvector only.
+    return eigenvector(l[1], l[2], u) && accept(u * (dot(u, g) / l[0]));
   }
 };
 
@@ -164,7 +249,8 @@ class Decimator {
   // may not collapse either way.
   bool best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost) const;
   bool placement(Halfedge h, Vec3d& p, double& cost) const;
-  bool keeps_normals(Halfedge h, const Vec3d& p) const;
+  enum class Check { ok, normal, shape };
+  Check check_faces(Halfedge h, const Vec3d& p, bool shape) const;
   void gather_ring(Halfedge h);
   void interpolate_corners(Vertex v, const Vec3d& p);
   void sort_candidates();
@@ -184,6 +270,8 @@ class Decimator {
   std::vector<std::uint8_t> seam_count_;  // seam edges at the vertex, saturated at 3
   // Candidates: (cost bits << 32) | half-edge, per edge (kept between passes) and of this pass.
   static constexpr std::uint64_t kNoKey = ~std::uint64_t(0);
+  // An edge whose best collapse exceeds max_error (sorts last; never pushed as a candidate).
+  static constexpr std::uint64_t kOverError = kNoKey - 1;
   std::vector<std::uint64_t> edge_key_, keys_, scratch_;
 
   // One collapse's ring: the triangles around both ends before it, their corners' positions and
@@ -217,10 +305,10 @@ void Decimator::gather_quadrics() {
     const Vec3d n = cross(x1 - x0, x2 - x0);
     const double len = norm(n);
     if (!(len > 0)) continue;
-    const double area = len / 2;
     const Vec3d u = n / len;
     input_normal_[f.idx()] = to_float(u);
     Quadric face;
+    const double area = len / 2;
     face.add_plane(u, -dot(u, x0), area);
     face.w = area;
     for (const Vertex c : v) q_[c.idx()].add(face);
@@ -326,8 +414,7 @@ bool Decimator::placement(Halfedge h, Vec3d& p, double& cost) const {
     if (const double ea = error_at(q, xa); ea < best - clearly) p = xa, best = ea;
     if (const double em = error_at(q, mid); em < best - clearly) p = mid, best = em;
     Vec3d opt;
-    if (q.minimiser(opt) && dot(opt - mid, opt - mid) <= dot(ab, ab) && error_at(q, opt) < best - clearly)
-      p = opt;
+    if (q.minimiser(mid, dot(ab, ab), opt) && error_at(q, opt) < best - clearly) p = opt;
   }
   // The cost and the checks see the point as it will be stored.
   p = to_double(to_float(p));
@@ -368,9 +455,16 @@ bool Decimator::best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost) const
 }
 
 // No face around either end of h (other than the faces on h, which vanish) may turn by more than
-// the allowed angle or lose its area when the survivor moves to p.
-bool Decimator::keeps_normals(Halfedge h, const Vec3d& p) const {
+// the allowed angle or lose its area when the survivor moves to p; with `shape`, none may become a
+// sliver (quality below kMinQuality) unless one of them already was one at least as bad.
+Decimator::Check Decimator::check_faces(Halfedge h, const Vec3d& p, bool shape) const {
   const Face fl = m_.face(h), fr = m_.face(Mesh::twin(h));
+  // Squared qualities (see kMinQuality): 12 |n|^2 / (sum of squared edges)^2.
+  double worst_old = kMinQuality * kMinQuality, worst_new = worst_old;
+  auto quality2 = [](const Vec3d& n, const Vec3d& u, const Vec3d& v, const Vec3d& w) {
+    const double s = dot(u, u) + dot(v, v) + dot(w, w);
+    return s > 0 ? 12 * dot(n, n) / (s * s) : 0.0;
+  };
   for (const Halfedge start : {h, Mesh::twin(h)}) {
     const Vec3d x = pos(m_.from_vertex(start));
     Halfedge o = start;
@@ -381,15 +475,19 @@ bool Decimator::keeps_normals(Halfedge h, const Vec3d& p) const {
         const Vec3d b = pos(m_.to_vertex(o)), c = pos(m_.to_vertex(on));
         const Vec3d n0 = cross(b - x, c - x), n1 = cross(b - p, c - p);
         const double l1 = dot(n1, n1);
-        if (!(l1 > tiny_area2_)) return false;
+        if (!(l1 > tiny_area2_)) return Check::normal;
         const double d = dot(n0, n1), l0 = dot(n0, n0);
-        if (l0 > 0 && d < min_cos_ * std::sqrt(l0 * l1)) return false;
-        if (dot(n1, to_double(input_normal_[f.idx()])) < 0) return false;
+        if (l0 > 0 && d < min_cos_ * std::sqrt(l0 * l1)) return Check::normal;
+        if (dot(n1, to_double(input_normal_[f.idx()])) < 0) return Check::normal;
+        if (shape) {
+          worst_old = std::min(worst_old, quality2(n0, b - x, c - x, c - b));
+          worst_new = std::min(worst_new, quality2(n1, b - p, c - p, c - b));
+        }
       }
       o = m_.rotate_cw(o);
     } while (o != start);
   }
-  return true;
+  return worst_new < worst_old ? Check::shape : Check::ok;
 }
 
 // Before collapsing h: the triangles around both ends, their corners, and their charts (faces
@@ -498,6 +596,7 @@ DecimateResult Decimator::run() {
   const std::size_t initial = needed();
   if (initial == 0 || m_.n_faces() == 0) {
     result.vertices = m_.n_vertices(), result.faces = m_.n_faces();
+    result.stop = initial == 0 ? DecimateStop::target_reached : DecimateStop::no_legal_collapse;
     report_progress(o_.progress, 1);
     return result;
   }
@@ -505,6 +604,8 @@ DecimateResult Decimator::run() {
   stamp_.assign(m_.vertex_slots(), 0);
   edge_key_.assign(m_.edge_slots(), kNoKey);
   double max_cost = 0;
+  bool over_error = false;  // a candidate of this pass exceeded max_error
+  bool shapely = true;      // the shape check is on (see check_faces)
   const bool endless = o_.target_vertices == 0 && o_.target_faces == 0;
   for (std::uint32_t pass = 1;; ++pass) {
     classify();
@@ -512,6 +613,7 @@ DecimateResult Decimator::run() {
     // Only edges at a vertex that survived a collapse in the last pass need a new ranking: no
     // other vertex's quadric, position or class has changed.
     keys_.clear();
+    over_error = false;
     const std::size_t slots = m_.edge_slots();
     for (std::size_t i = 0; i < slots; ++i) {
       const Edge e(static_cast<Index>(i));
@@ -524,8 +626,16 @@ DecimateResult Decimator::run() {
         Vec3d p;
         double cost;
         key = kNoKey;
-        if (best_collapse(e, h, p, cost) && cost <= max_cost_)
-          key = std::uint64_t(float_bits(static_cast<float>(cost))) << 32 | h.idx();
+        if (best_collapse(e, h, p, cost)) {
+          if (cost <= max_cost_)
+            key = std::uint64_t(float_bits(static_cast<float>(cost))) << 32 | h.idx();
+          else
+            key = kOverError;
+        }
+      }
+      if (key == kOverError) {
+        over_error = true;
+        continue;
       }
       if (key != kNoKey) keys_.push_back(key);
     }
@@ -535,15 +645,18 @@ DecimateResult Decimator::run() {
     // ever smaller passes (each a full re-sort) stops after a few.
     const std::size_t budget =
         endless ? keys_.size() : std::max<std::size_t>({1, (needed() + 1) / 2, initial / 32});
-    std::size_t done_now = 0;
+    std::size_t done_now = 0, refused_shape_now = 0, refused_normal_now = 0;
     const std::size_t n_keys = keys_.size();
     // Nor beyond 16x the cost of the budget-th cheapest candidate: when locked vertices skip cheap
     // candidates, the pass ends rather than reaching for much dearer ones, which the next pass may
     // not need (a refined flat region, all of whose cheapest collapses cost 0, collapses back
     // exactly this way). Adding 4 to a float's exponent bits multiplies it by 16. Unless nothing was
     // done yet, so that illegal cheap candidates cannot stop the decimation.
-    const std::uint64_t cost_limit =
-        n_keys == 0 ? 0 : (keys_[std::min(budget, n_keys) - 1] >> 32) + (4u << 23);
+    // A candidate the shape check refuses moves the limit on by one: it is not waiting for a locked
+    // vertex, and in a flat region, where every cost is 0, the limit would otherwise end the pass
+    // at its first refusals.
+    std::size_t limit_index = std::min(budget, n_keys) - 1;
+    std::uint64_t cost_limit = n_keys == 0 ? 0 : (keys_[limit_index] >> 32) + (4u << 23);
     const Vertex* to = m_.halfedge_vertex_array().data();
     for (std::size_t k = 0; k < n_keys; ++k) {
       // The keys come in cost order, so every candidate's data is cold: fetch the half-edges of the
@@ -570,9 +683,24 @@ DecimateResult Decimator::run() {
       Vec3d p;
       double cost;
       placement(h, p, cost);
-      if (!(cost <= max_cost_) || !keeps_normals(h, p)) continue;
+      if (!(cost <= max_cost_)) {
+        over_error = true;
+        continue;
+      }
+      if (const Check c = check_faces(h, p, shapely && cost <= kFlat * dot(pos(a) - pos(b), pos(a) - pos(b)));
+          c != Check::ok) {
+        ++(c == Check::normal ? result.refused.normal : result.refused.shape);
+        refused_shape_now += c == Check::shape;
+        if (c == Check::shape && limit_index + 1 < n_keys)
+          cost_limit = (keys_[++limit_index] >> 32) + (4u << 23);
+        refused_normal_now += c == Check::normal;
+        continue;
+      }
       if (uv_) gather_ring(h);
-      if (!collapse(m_, h).is_valid()) continue;
+      if (!collapse(m_, h).is_valid()) {
+        ++result.refused.topology;
+        continue;
+      }
       pos_[b.idx()] = to_float(p);
       q_[b.idx()].add(q_[a.idx()]);
       stamp_[b.idx()] = pass;
@@ -584,7 +712,22 @@ DecimateResult Decimator::run() {
     }
     if (!endless)
       report_progress(o_.progress, double(initial - std::min(initial, needed())) / double(initial));
-    if (done() || done_now == 0) break;
+    if (done()) break;
+    if (done_now == 0 && refused_shape_now > 0) {
+      // The shape check alone may stop the decimation short of its target: lift it, and go on.
+      shapely = false;
+      continue;
+    }
+    if (done_now == 0 && refused_normal_now > 0 && min_cos_ > 0) {
+      // Likewise the turn limit, when it is below 90 degrees: faces may turn up to 90 degrees (never
+      // over) for the rest of the run, so that coarse targets are reached.
+      min_cos_ = 0;
+      continue;
+    }
+    if (done_now == 0) {
+      result.stop = over_error ? DecimateStop::error_bound : DecimateStop::no_legal_collapse;
+      break;
+    }
   }
   if (result.collapses > 0) {
     m_.garbage_collection();

@@ -6,9 +6,14 @@
 //    sum over its faces, and a collapse's is the sum of its two ends'. The error of a collapse is
 //    sqrt(Q(p) / W): the root-mean-square distance, in model units, of the surviving point p from
 //    the planes the two ends gathered (W: their total weight).
-//  - The surviving point minimises the quadric when its 3x3 system is well conditioned and the
-//    optimum lies near the edge; otherwise (flat or cylindrical regions, where the optimum is a line
-//    or a plane) the best of the two ends and the midpoint is taken, so planar regions do not fold.
+//  - The surviving point minimises the quadric in the directions it determines: from the edge's
+//    midpoint, along the eigenvectors of the quadric's 3x3 matrix whose eigenvalue is at least 1e-3
+//    of the largest (a truncated pseudo-inverse, as in Lindstrom and Turk's placement); along the
+//    others (the plane of a flat patch, the axis of a cylinder, the tangent plane of a gently curved
+//    one) it stays at the midpoint. The test is a ratio, so the placement does not depend on the
+//    mesh's scale. A point farther than an edge length from the midpoint drops the weakest direction
+//    kept. The point is taken only if clearly better than the two ends and the midpoint, else the
+//    best of those, so planar regions keep their vertices exactly and do not fold.
 //  - Boundary edges add the plane through the edge perpendicular to its face, weighted by
 //    boundary_weight x length^2, which keeps open outlines in place; keep_boundary pins them.
 //    Feature edges (the edge property "e:crease" nonzero, or a dihedral angle above
@@ -18,6 +23,15 @@
 //    by more than max_normal_change_degrees, turn more than 90 degrees away from its own normal in
 //    the input (so that small turns cannot add up to a flip), or lose its area, and, with
 //    keep_seams, it does not break a UV seam.
+//  - Shape: in flat regions (a collapse whose error is at most 1/1000 of its edge's length), a
+//    collapse may not make a sliver, a face of quality 4 sqrt(3) area / (sum of squared edge
+//    lengths) below 0.1 (1: equilateral; 0.1: a needle of about 3.3 degrees), unless a face around
+//    the edge already is one and the new faces are no worse. There every collapse is (nearly) free
+//    and the error cannot choose; elsewhere the error alone ranks collapses (the check has no weight
+//    in the cost, so it never trades distance for shape). When it alone would stop the decimation
+//    short of its target, it is lifted for the rest of the run.
+//  - A collapse refused by a check is tried again in later passes (its neighbours may have moved);
+//    the result says why the decimation stopped and how many attempts each check refused.
 //  - Corner texture coordinates ("h:texcoord", Vec2) follow: each corner at the surviving vertex
 //    gets the value interpolated at the new position, barycentric in the triangle of its own side
 //    of a seam that the point projects into. A seam edge (the corners on its two sides differ) is
@@ -64,10 +78,34 @@ struct DecimateOptions {
   bool keep_seams = true;
   //! >0: corner UVs enter the quadric with this weight (UV units per model unit). 0: geometry only.
   double attribute_weight = 0;
-  //! Refuse collapses that turn a face around either end by more than this (prevents flips).
+  //! Refuse collapses that turn a face around either end by more than this (prevents flips). When
+  //! this limit (below 90) alone stops the decimation short of its target, it is raised to 90
+  //! degrees for the rest of the run, so that coarse targets are reached; no face turns over.
   double max_normal_change_degrees = 60.0;
   //! Called with the fraction of the work done.
   Progress progress{};
+};
+
+//! Why decimate() stopped.
+enum class DecimateStop {
+  //! The vertex and face targets are met (also when they were met at once).
+  target_reached,
+  //! Every collapse left would exceed max_error.
+  error_bound,
+  //! No legal collapse is left: each remaining one is refused by a check (counted in
+  //! DecimateResult::refused), or there is none (no target: everything removable was removed).
+  no_legal_collapse,
+};
+
+//! Collapse attempts refused, by check. An edge refused in one pass is tried again in later ones
+//! (its neighbours may have moved), so an edge may count more than once.
+struct DecimateRefusals {
+  //! The link condition or another rule of can_collapse() (topology).
+  std::size_t topology = 0;
+  //! A face around the edge would turn too far, turn away from its input normal, or lose its area.
+  std::size_t normal = 0;
+  //! A new face would be a sliver (see DecimateOptions::min_quality).
+  std::size_t shape = 0;
 };
 
 struct DecimateResult {
@@ -77,6 +115,10 @@ struct DecimateResult {
   std::size_t collapses = 0;
   //! The largest error (a distance) of a collapse done, 0 if none.
   double max_error = 0;
+  //! Why it stopped.
+  DecimateStop stop = DecimateStop::target_reached;
+  //! Attempts refused by each check.
+  DecimateRefusals refused{};
 };
 
 //! Decimates the triangle mesh by quadric-ranked edge collapses until it has at most
