@@ -24,7 +24,7 @@ std::vector<std::string> strike(const fs::path& out, const std::string& material
   return {"fracture",  data("spot_triangulated.obj"),
           "--solid",   "--impact",
           "0,0,0",     "--tolerance",
-          "10",        "--radius",
+          "10",        "--break-radius",
           "0.3",       "--material",
           material,    "--seed",
           seed,        "-o",
@@ -134,7 +134,7 @@ TEST_F(HedgeCli, SolidFractureOptionsAreChecked) {
   a.insert(a.end(), {"--kind", "auto"});  // --solid and --kind together
   expect_usage_error(a);
   std::vector<std::string> b = strike(tmp("x"), "stone", "1");
-  b.insert(b.end(), {"--radius-fraction", "0"});
+  b.insert(b.end(), {"--units", "edge_lengths", "--radius", "3"});  // solid sizes: not in edge lengths
   expect_usage_error(b);
   std::vector<std::string> c = strike(tmp("x"), "stone", "1");
   c[2] = "--kind=rubble";

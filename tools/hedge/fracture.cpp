@@ -198,8 +198,8 @@ int run_surface_fracture(const FractureCommandOptions& o, const std::string& sol
 
 int run_fracture(const FractureCommandOptions& o) {
   if (o.solid.kind == "surface" && !o.solid.solid) return run_surface_fracture(o, "");
-  const SolidFractureCliInputs in{o.input,   o.output,    o.impact, o.material, o.seed,
-                                  o.density, o.tolerance, o.json,   o.load};
+  const SolidFractureCliInputs in{o.input,  o.output,       o.impact,  o.material,  o.seed, o.units,
+                                  o.radius, o.break_radius, o.density, o.tolerance, o.json, o.load};
   return run_solid_fracture(o.solid, in,
                             [&](const std::string& why) { return run_surface_fracture(o, why); });
 }

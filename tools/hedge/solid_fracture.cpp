@@ -1,4 +1,5 @@
-// hedge fracture IN --kind solid|auto (or --solid) --impact x,y,z [--radius R | --radius-fraction F]
+// hedge fracture IN --kind solid|auto (or --solid) --impact x,y,z [--break-radius R |
+// --units U --radius R]
 // -o DIR: break a closed mesh into closed pieces and write the remaining object, one OBJ per piece
 // and summary.json (with the bond graph) into DIR. "auto" falls back to surface fracture where
 // solid_fracture_refusal() refuses.
@@ -80,8 +81,20 @@ json volume_or_null(const SurfaceMesh& mesh) {
 SolidFractureOptions solid_options(const SolidFractureCliOptions& s, const SolidFractureCliInputs& in) {
   SolidFractureOptions o;
   o.material = material_from(in.material);
-  o.radius = s.radius;
-  o.radius_fraction = s.radius_fraction;
+  if (in.break_radius > 0) {
+    o.radius = in.break_radius;
+  } else if (in.radius > 0) {
+    const std::string units = in.units.empty() ? fracture_units_name(o.material.units) : in.units;
+    if (units == "model")
+      o.radius = in.radius;
+    else if (units == "diagonal_fraction")
+      o.radius_fraction = in.radius;
+    else
+      throw CLI::ValidationError("--units",
+                                 "solid fracture takes its break radius in model units or as a "
+                                 "fraction of the diagonal, not in " +
+                                     units);
+  }
   o.seed = in.seed;
   o.density = in.density;
   o.tolerance = in.tolerance;
@@ -172,14 +185,6 @@ void add_solid_fracture_arguments(CLI::App& app, SolidFractureCliOptions& o) {
           ->check(CLI::IsMember({"surface", "solid", "auto"}))
           ->capture_default_str();
   app.add_flag("--solid", o.solid, "The same as --kind solid")->excludes(kind);
-  add_real_option(app, "--radius", o.radius,
-                  "Solid fracture: the break radius in model units; 0: --radius-fraction of the bounding "
-                  "box's diagonal",
-                  0);
-  add_real_option(app, "--radius-fraction", o.radius_fraction,
-                  "Solid fracture: the break radius as a fraction of the bounding box's diagonal, when "
-                  "--radius is 0",
-                  0, 10, true);
   app.add_option("--inner-submesh", o.inner_submesh,
                  "Solid fracture: the f:submesh of the cap faces; -1: one more than the mesh's largest")
       ->capture_default_str()

@@ -32,7 +32,6 @@ struct SolidFractureCliOptions {
   std::string kind = "surface";
   //! --solid: the same as --kind solid.
   bool solid = false;
-  double radius = 0, radius_fraction = 0.25;
   std::int32_t inner_submesh = -1;
 };
 
@@ -40,6 +39,10 @@ struct SolidFractureCliOptions {
 struct SolidFractureCliInputs {
   const std::string &input, &output, &impact, &material;
   std::uint64_t seed;
+  //! The break radius as the surface fracture takes it: --break-radius in model units, or --radius
+  //! in --units (the material's when not given: a fraction of the diagonal for the presets).
+  const std::string& units;
+  double radius, break_radius;
   double density, tolerance;
   bool json;
   const LoadOptions& load;
