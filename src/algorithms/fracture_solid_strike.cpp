@@ -31,14 +31,19 @@ bool inside_mesh(const StrikeInput& in, const Vec3d& p) {
   return dot(area_vector(in.mesh, hit->face), to_double(dir)) > 0;
 }
 
-//! The soup: every face of `faces` as triangles, a polygon as the fan from its first corner (as
-//! volume() and the picking tree see it; faces are convex).
+//! The soup: every face of `faces` as triangles, a polygon as its fan from fan_start() (as
+//! volume() and the picking tree see it: from the first corner unless that fan folds).
 std::vector<SoupTriangle> make_soup(const SurfaceMesh& mesh, const std::vector<Face>& faces) {
   std::vector<SoupTriangle> soup;
   std::vector<Halfedge> hs;
   for (Face f : faces) {
     hs.clear();
-    for (Halfedge h : mesh.halfedges(f)) hs.push_back(h);
+    const Halfedge start = fan_start(mesh, f);
+    Halfedge h = start;
+    do {
+      hs.push_back(h);
+      h = mesh.next(h);
+    } while (h != start);
     for (std::size_t k = 1; k + 1 < hs.size(); ++k) {
       SoupTriangle s;
       s.face = f;
