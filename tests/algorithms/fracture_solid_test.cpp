@@ -76,6 +76,19 @@ TEST(FractureSolid, SpotControlMeshConservesTheVolume) {
   expect_solid_strike(m, r, before, 1e-7);
 }
 
+TEST(FractureSolid, SpotControlMeshCapsAskTheHitTriangleWhetherTheyAreInside) {
+  // A cap that no surface crosses is inside when a ray from it first meets a triangle from
+  // behind: that triangle's own normal decides, not its polygon's mean normal, which a folded
+  // quad's triangles may point against (this strike's caps then did not close).
+  SurfaceMesh m = read_mesh(test::data_path("spot_control_mesh.obj"));
+  const double before = volume(m);
+  SolidFractureOptions o{
+      .material = fracture_material("ice"), .radius_fraction = 0.30032652736392723, .seed = 8680059088170858};
+  const SolidFractureResult r = fracture_solid(m, {-0.355365157f, -0.188007176f, 0.552008569f}, o);
+  EXPECT_GT(r.pieces.size(), 5u);
+  expect_solid_strike(m, r, before);
+}
+
 TEST(FractureSolid, SpotBreaksIntoClosedPiecesWithProperties) {
   SurfaceMesh m = read_mesh(test::data_path("spot_triangulated.obj"));
   const double before = volume(m);
