@@ -44,7 +44,7 @@ struct Key {
 Key corner_key(std::uint32_t p, std::uint32_t q, std::uint32_t r);
 
 //! The triangles of the mesh's faces in the region: each face's triangles (polygons split by
-//! triangulate_polygon), corners counter-clockwise as the face.
+//! fan_start(), as volume() and the picking tree see them), corners counter-clockwise as the face.
 struct SoupTriangle {
   std::array<Index, 3> v;          // mesh vertices
   std::array<Halfedge, 3> corner;  // the face's half-edge pointing to v[k]

@@ -22,23 +22,32 @@ double seconds_since(Clock::time_point& t) {
   return s;
 }
 
-//! Whether p lies inside the closed mesh: the first face a fixed ray from p meets is seen from
-//! behind. O(log n).
+//! Whether p lies inside the closed mesh: the first triangle a fixed ray from p meets is seen from
+//! behind. The hit triangle's own normal decides, not its face's: a non-planar polygon's triangles
+//! may point apart from the polygon's mean normal. O(log n).
 bool inside_mesh(const StrikeInput& in, const Vec3d& p) {
   const Vec3 dir = to_float(normalize(Vec3d{0.5773, 0.6412, 0.5061}));
   const std::optional<RayHit> hit = in.tree.first_hit(to_float(p), dir);
   if (!hit) return false;
-  return dot(area_vector(in.mesh, hit->face), to_double(dir)) > 0;
+  const Vec3d a = to_double(in.mesh.position(hit->corners[0]));
+  const Vec3d b = to_double(in.mesh.position(hit->corners[1]));
+  const Vec3d c = to_double(in.mesh.position(hit->corners[2]));
+  return dot(cross(b - a, c - a), to_double(dir)) > 0;
 }
 
-//! The soup: every face of `faces` as triangles, a polygon as the fan from its first corner (as
-//! volume() and the picking tree see it; faces are convex).
+//! The soup: every face of `faces` as triangles, a polygon as its fan from fan_start() (as
+//! volume() and the picking tree see it: from the first corner unless that fan folds).
 std::vector<SoupTriangle> make_soup(const SurfaceMesh& mesh, const std::vector<Face>& faces) {
   std::vector<SoupTriangle> soup;
   std::vector<Halfedge> hs;
   for (Face f : faces) {
     hs.clear();
-    for (Halfedge h : mesh.halfedges(f)) hs.push_back(h);
+    const Halfedge start = fan_start(mesh, f);
+    Halfedge h = start;
+    do {
+      hs.push_back(h);
+      h = mesh.next(h);
+    } while (h != start);
     for (std::size_t k = 1; k + 1 < hs.size(); ++k) {
       SoupTriangle s;
       s.face = f;

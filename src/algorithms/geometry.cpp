@@ -162,7 +162,7 @@ double volume(const SurfaceMesh& mesh) {
   const Vec3d c = to_double(box_of(mesh).centre());
   double six_v = 0;
   for (Face f : mesh.faces()) {
-    const Halfedge h0 = mesh.halfedge(f);
+    const Halfedge h0 = fan_start(mesh, f);  // the fan the picking tree and solid fracture use
     const Vec3d p0 = to_double(mesh.position(mesh.to_vertex(h0))) - c;
     for (Halfedge g = mesh.next(mesh.next(h0)); g != h0; g = mesh.next(g)) {
       const Vec3d p1 = to_double(mesh.position(mesh.from_vertex(g))) - c;

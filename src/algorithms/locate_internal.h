@@ -21,6 +21,7 @@
 #include <utility>
 
 #include "hedge/algorithms/locate.h"
+#include "hedge/core/triangulate.h"
 
 namespace hedge {
 namespace locate_detail {
@@ -69,12 +70,13 @@ namespace {
 
 [[maybe_unused]] double sq(double x) { return x * x; }
 
-//! Calls fn(c0, c[i], c[i+1]) for the fan triangles of f until fn returns true. Returns whether it
-//! stopped. The walk is bounded by the number of half-edges, so a broken loop cannot hang it.
+//! Calls fn(c0, c[i], c[i+1]) for the fan triangles of f (from fan_start()) until fn returns true. Returns
+//! whether it stopped. The walk is bounded by the number of half-edges, so a broken loop cannot hang it.
 template <typename Fn>
 bool for_each_fan(const SurfaceMesh& m, Face f, Fn&& fn) {
-  const Halfedge h0 = m.halfedge(f);
+  Halfedge h0 = m.halfedge(f);
   if (!h0.is_valid() || !m.is_valid(h0)) return false;
+  h0 = fan_start(m, f);  // from the first corner unless that fan folds (core/triangulate.h)
   const Vertex c0 = m.to_vertex(h0);
   Halfedge h = m.next(h0);
   if (!m.is_valid(h)) return false;

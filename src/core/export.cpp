@@ -68,6 +68,9 @@ IndexedMesh to_indexed(const SurfaceMesh& mesh, const ExportOptions& opt, std::v
     corner.clear();
     // halfedge(f) enters the face's first corner, so the order given at build time is kept.
     for (Halfedge h : mesh.halfedges(f)) corner.push_back(h);
+    // A fan starts from the corner fan_start() names: the first unless that fan folds.
+    if (!polygons && opt.triangulation == Triangulation::fan && corner.size() > 3)
+      std::rotate(corner.begin(), std::find(corner.begin(), corner.end(), fan_start(mesh, f)), corner.end());
     if (opt.winding == Winding::cw) std::reverse(corner.begin() + 1, corner.end());
     const std::size_t n = corner.size();
     if (polygons || n == 3) {

@@ -1,6 +1,7 @@
 // Ear clipping in the polygon's Newell plane.
 #include "hedge/core/triangulate.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hedge {
@@ -47,6 +48,69 @@ void triangulate_polygon(std::span<const Vec3d> p, std::vector<std::array<Index,
     if (!clipped) break;
   }
   for (std::size_t i = 1; i + 1 < ring.size(); ++i) tris.push_back({ring[0], ring[i], ring[i + 1]});
+}
+
+namespace {
+
+//! The cosine of the angle between the normal of triangle (a, b, c) and the unit vector n; 0 for
+//! a degenerate triangle.
+double tilt(const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& n) {
+  const Vec3d t = cross(b - a, c - a);
+  const double l = std::sqrt(dot(t, t));
+  return l > 0 ? dot(t, n) / l : 0.0;
+}
+
+//! The smallest tilt() of the fan's triangles from corner k.
+double worst_tilt(std::span<const Vec3d> p, std::size_t k, const Vec3d& n) {
+  const std::size_t m = p.size();
+  double worst = 2;
+  for (std::size_t i = 1; i + 1 < m; ++i)
+    worst = std::min(worst, tilt(p[k], p[(k + i) % m], p[(k + i + 1) % m], n));
+  return worst;
+}
+
+}  // namespace
+
+std::size_t fan_apex(std::span<const Vec3d> p) {
+  const std::size_t n = p.size();
+  if (n <= 3) return 0;
+  Vec3d nrm{0, 0, 0};
+  for (std::size_t i = 0; i < n; ++i) add_newell_term(nrm, p[i], p[(i + 1) % n]);
+  const double len = std::sqrt(dot(nrm, nrm));
+  if (!(len > 0)) return 0;
+  nrm = nrm * (1 / len);
+  bool folds = false;
+  for (std::size_t i = 1; i + 1 < n && !folds; ++i) folds = dot(cross(p[i] - p[0], p[i + 1] - p[0]), nrm) < 0;
+  if (!folds) return 0;
+  std::size_t best = 0;
+  double best_tilt = worst_tilt(p, 0, nrm);
+  for (std::size_t k = 1; k < n; ++k)
+    if (const double t = worst_tilt(p, k, nrm); t > best_tilt) {
+      best_tilt = t;
+      best = k;
+    }
+  return best;
+}
+
+Halfedge fan_start(const SurfaceMesh& mesh, Face f) {
+  const Halfedge h0 = mesh.halfedge(f);
+  if (mesh.next(mesh.next(mesh.next(h0))) == h0) return h0;
+  // Without allocating for the usual small polygons (the picking tree asks once per face visit).
+  constexpr std::size_t kSmall = 16;
+  std::array<Vec3d, kSmall> small;
+  std::vector<Vec3d> large;
+  std::size_t n = 0;
+  for (Halfedge h : mesh.halfedges(f)) {
+    const Vec3d x = to_double(mesh.position(mesh.to_vertex(h)));
+    if (n < kSmall) small[n] = x;
+    if (n == kSmall) large.assign(small.begin(), small.end());
+    if (n >= kSmall) large.push_back(x);
+    ++n;
+  }
+  const std::size_t k = n <= kSmall ? fan_apex(std::span<const Vec3d>(small.data(), n)) : fan_apex(large);
+  Halfedge h = h0;
+  for (std::size_t i = 0; i < k; ++i) h = mesh.next(h);
+  return h;
 }
 
 }  // namespace hedge

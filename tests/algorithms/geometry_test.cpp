@@ -103,6 +103,16 @@ TEST(Geometry, ARealClosedMeshHasAPositiveVolumeBelowItsBox) {
   EXPECT_GT(surface_area(m), 0);
 }
 
+TEST(Geometry, VolumeSplitsPolygonsAsTheirExportedFan) {
+  // Spot's control mesh has non-planar quads whose first-corner fan folds: volume() sums the fan of
+  // fan_start(), the triangles export's fan writes (and the picking tree and solid fracture use).
+  const SurfaceMesh m = read_mesh(test::data_path("spot_control_mesh.obj"));
+  ExportOptions o;
+  o.triangulation = Triangulation::fan;
+  const SurfaceMesh tri = build(to_indexed(m, o));
+  EXPECT_NEAR(volume(m), volume(tri), 1e-12 * volume(tri));
+}
+
 TEST(Geometry, EdgeLengthsAndCentroidsOfAFace) {
   IndexedMesh in;
   in.positions = {{0, 0, 0}, {3, 0, 0}, {3, 4, 0}, {0, 4, 0}};

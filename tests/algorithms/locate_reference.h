@@ -17,6 +17,7 @@
 
 #include "hedge/algorithms/locate.h"
 #include "hedge/core/surface_mesh.h"
+#include "hedge/core/triangulate.h"
 #include "hedge/io/io.h"
 #include "test_meshes.h"
 
@@ -26,12 +27,16 @@ inline constexpr double kInf = std::numeric_limits<double>::infinity();
 inline constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
 // ---- An independent reference: corners from the mesh's own circulator, fan triangles from the
-// first corner, the public triangle primitives, and the documented tie order (smaller value, then
-// smaller face index, then earlier fan triangle). ----
+// first corner (or from the corner fan_start() names where that fan folds), the public triangle
+// primitives, and the documented tie order (smaller value, then smaller face index, then earlier
+// fan triangle). ----
 
+//! The face's corners from its fan's apex on.
 inline std::vector<Vertex> corners_of(const SurfaceMesh& m, Face f) {
   std::vector<Vertex> c;
   for (Vertex v : m.vertices(f)) c.push_back(v);
+  const Vertex apex = m.to_vertex(fan_start(m, f));
+  std::rotate(c.begin(), std::find(c.begin(), c.end(), apex), c.end());
   return c;
 }
 
@@ -144,7 +149,7 @@ inline void expect_consistent(const SurfaceMesh& m, const SurfacePoint& s) {
   ASSERT_TRUE(s.face.is_valid());
   ASSERT_FALSE(m.is_deleted(s.face));
   const std::vector<Vertex> c = corners_of(m, s.face);
-  EXPECT_EQ(s.corners[0], c[0]) << "fan triangles start at the face's first corner";
+  EXPECT_EQ(s.corners[0], c[0]) << "fan triangles start at the fan's apex";
   for (Vertex v : s.corners) EXPECT_NE(std::find(c.begin(), c.end(), v), c.end());
   double sum = 0;
   for (double w : s.barycentric) {

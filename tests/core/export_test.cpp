@@ -97,8 +97,12 @@ TEST(Export, FanAndEarTriangulation) {
          r = ear.positions[ear.indices[t + 2]];
     EXPECT_GT(cross(q - p, r - p).z, 0.0f);
   }
+  // The fan from corner 0, (2,0), would fold over the notch; the fan starts at the notch's
+  // corner (1,1) instead (fan_start()), and tiles the polygon.
   o.triangulation = Triangulation::fan;
-  EXPECT_GT(area(to_indexed(lm, o)), 3.0 + 1e-6);  // the fan overlaps itself: area is wrong
+  const IndexedMesh fan_l = to_indexed(lm, o);
+  EXPECT_NEAR(area(fan_l), 3.0, 1e-9);
+  EXPECT_EQ(fan_l.positions[fan_l.indices[0]], (Vec3{1, 1, 0}));
 }
 
 TEST(Export, DeletedVerticesAreSkippedAndMapped) {

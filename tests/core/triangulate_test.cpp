@@ -5,6 +5,8 @@
 #include <cmath>
 #include <set>
 
+#include "hedge/core/build.h"
+
 namespace hedge {
 namespace {
 
@@ -84,6 +86,35 @@ TEST(Triangulate, SelfIntersectingInputStillGivesNMinusTwoTriangles) {
   std::vector<std::array<Index, 3>> tris;
   triangulate_polygon(std::vector<Vec3d>{{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}}, tris);
   EXPECT_EQ(tris.size(), 2u);
+}
+
+TEST(Triangulate, FanApexIsTheFirstCornerUnlessThatFanFolds) {
+  // Triangles and convex polygons keep corner 0.
+  EXPECT_EQ(fan_apex(std::vector<Vec3d>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), 0u);
+  EXPECT_EQ(fan_apex(std::vector<Vec3d>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}), 0u);
+  // A slightly non-planar quad whose first-corner fan does not fold keeps it too.
+  EXPECT_EQ(fan_apex(std::vector<Vec3d>{{0, 0, 0}, {1, 0, 0.1}, {1, 1, 0}, {0, 1, 0.1}}), 0u);
+  // A dart, its notch at corner 3: the diagonal from corner 0 runs outside it (its second triangle
+  // points down), so the fan starts at corner 1, along the other diagonal.
+  const std::vector<Vec3d> dart{{0, 0, 0}, {2, 1, 0}, {0, 2, 0}, {0.5, 1, 0}};
+  EXPECT_EQ(fan_apex(dart), 1u);
+  // The dart with its notch lifted (non-planar, as on a coarse control mesh) folds the same way.
+  EXPECT_EQ(fan_apex(std::vector<Vec3d>{{0, 0, 0}, {2, 1, 0}, {0, 2, 0}, {0.5, 1, 0.4}}), 1u);
+  // An L hexagon: only the fan from the notch's corner (2) tiles it.
+  EXPECT_EQ(fan_apex(std::vector<Vec3d>{{2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}, {0, 0, 0}}),
+            2u);
+}
+
+TEST(Triangulate, FanStartNamesTheApexOfAFace) {
+  IndexedMesh in;
+  in.positions = {{0, 0, 0}, {2, 1, 0}, {0, 2, 0}, {0.5f, 1, 0}, {5, 0, 0},
+                  {6, 0, 0}, {6, 1, 0}, {5, 1, 0}, {5, -1, 0}};
+  in.indices = {0, 1, 2, 3, 4, 5, 6, 7, 5, 4, 8};
+  in.face_sizes = {4, 4, 3};
+  const SurfaceMesh m = build(in);
+  EXPECT_EQ(fan_start(m, Face(0)), m.next(m.halfedge(Face(0))));  // the dart: from corner 1
+  EXPECT_EQ(fan_start(m, Face(1)), m.halfedge(Face(1)));          // a square: its first corner
+  EXPECT_EQ(fan_start(m, Face(2)), m.halfedge(Face(2)));          // a triangle
 }
 
 }  // namespace

@@ -14,8 +14,9 @@
 //     break radius plus half the outer ring's spacing. Each break point's cell is P clipped by the
 //     bisector planes of the other break points (its Voronoi cell within P).
 //  4. clip: the triangles whose boxes meet a cell's box (a FaceBvh box query; polygon faces are
-//     split into the fan from their first corner, as volume() and the tree see them: faces must
-//     be convex) are clipped by the cell's planes, and each of the cell's faces
+//     split into the fan of fan_start() in core/triangulate.h, from their first corner unless that
+//     fan folds, as volume() and the tree see them) are clipped by the cell's planes, and each of
+//     the cell's faces
 //     gets a cap, the part of it inside the object: its loops (several, holes included) are
 //     triangulated in the face's plane. A piece is the clipped surface and its caps.
 //  5. remaining object: the faces that meet P leave the mesh, and their parts outside P come back
@@ -32,7 +33,7 @@
 // edge), the break points and the region's planes are moved by a small seeded amount (1e-5 of the
 // break radius) and the strike is computed again, at most 6 times in all; the mesh is edited only
 // once every piece and the patch of the remaining object are known to be closed and manifold, so a
-// refused strike leaves it as it was. About 1% of random strikes are refused (docs/fracture.md).
+// refused strike leaves it as it was. About 2 in 10^4 random strikes are refused (docs/fracture.md).
 //
 // Properties: outer faces of a piece keep their face properties ("f:submesh" included); vertex and
 // corner properties (UVs, normals) are interpolated at new points, linearly along an edge and

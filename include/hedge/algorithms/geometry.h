@@ -91,7 +91,8 @@ BoundingBox bounding_box(const SurfaceMesh& mesh);
 
 //! The signed volume the surface encloses: positive when the faces wind counter-clockwise seen from
 //! outside (outward normals), negative for an inside-out surface, by the divergence theorem over the
-//! faces' fan triangles. For several closed pieces, the sum of theirs. O(F).
+//! faces' fan triangles (from fan_start(): the first corner unless that fan folds, the triangles
+//! the picking tree and solid fracture use). For several closed pieces, the sum of theirs. O(F).
 //! \throw InvalidInputError if the mesh has a boundary (an open surface encloses no volume); the
 //!   message says how many boundary half-edges it has, or naming the first vertex whose position
 //!   is not finite.

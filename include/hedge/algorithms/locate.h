@@ -4,7 +4,9 @@
 // scans and serve as the reference.
 //
 // Faces are located through triangles: a triangle face is itself, and a polygon face is the fan of
-// triangles (c0, c[i], c[i+1]) from its first corner c0 = to_vertex(halfedge(f)), the same fan as
+// triangles (c0, c[i], c[i+1]) from its first corner c0 = to_vertex(halfedge(f)), or from the
+// corner fan_start() names where that fan folds (a non-planar quad split along the wrong
+// diagonal; core/triangulate.h): the same fan as volume(), solid fracture and
 // to_indexed(..., Triangulation::fan). Every answer names the face, the fan triangle's corners
 // and barycentric coordinates within that triangle. For a concave polygon the fan covers area
 // outside the polygon; locating such faces is exact only for convex (and planar) polygons.
@@ -37,7 +39,8 @@ struct BoundingBox;  // algorithms/geometry.h
 //! A point on a face: the face, the fan triangle of the face it lies in, and where.
 struct SurfacePoint {
   Face face;
-  //! Corners of the fan triangle (see the file comment); corners[0] is the face's first corner.
+  //! Corners of the fan triangle (see the file comment); corners[0] is the fan's apex (the face's
+  //! first corner unless that fan folds).
   std::array<Vertex, 3> corners;
   //! Weights of corners[0..2]: each in [0, 1], summing to 1 (up to rounding).
   std::array<double, 3> barycentric{};

@@ -14,7 +14,7 @@ enum class Winding { ccw, cw };
 
 enum class Triangulation {
   none,  //!< polygons as they are
-  fan,   //!< fan from each face's first corner
+  fan,   //!< fan from each face's first corner (from fan_start()'s where that fan folds)
   ear,   //!< ear clipping in the face's best-fit plane (robust on concave faces)
 };
 

@@ -1,4 +1,6 @@
-// Triangulation of one polygon face, shared by export and render buffers.
+// Triangulation of one polygon face, shared by export and render buffers; and the fan that
+// stands for a polygon face in volume(), the picking tree (FaceBvh), export's fan and solid
+// fracture, so that they all see the same triangles.
 #pragma once
 
 #include <array>
@@ -6,6 +8,7 @@
 #include <vector>
 
 #include "hedge/core/handles.h"
+#include "hedge/core/surface_mesh.h"
 #include "hedge/core/vec.h"
 
 namespace hedge {
@@ -23,5 +26,18 @@ inline void add_newell_term(Vec3d& n, const Vec3d& a, const Vec3d& b) {
 //! polygon's orientation; falls back to a fan where no ear is found (self-intersecting input).
 //! O(n^2) for n corners.
 void triangulate_polygon(std::span<const Vec3d> p, std::vector<std::array<Index, 3>>& tris);
+
+//! The corner k whose fan, the triangles (p[k], p[k+i], p[k+i+1]) for i = 1..n-2 (indices modulo
+//! n), stands for the polygon: 0, unless a triangle of the fan from corner 0 folds (its normal
+//! points against the polygon's Newell normal, as where a non-planar quad is split along the wrong
+//! diagonal); then the corner whose fan's most tilted triangle (smallest cosine of the angle
+//! between its normal and the Newell normal, a degenerate triangle counting 0) is least tilted,
+//! the smallest such k on ties. Planar convex polygons keep corner 0. O(n^2), O(1) for n = 3.
+std::size_t fan_apex(std::span<const Vec3d> p);
+
+//! The half-edge of face f that points to its fan's apex (fan_apex() of its corners in the order
+//! of halfedges(f)): halfedge(f) for triangles and for every polygon whose first-corner fan does
+//! not fold. The fan is (to_vertex(h), to_vertex(next(h)), to_vertex(next(next(h)))), ...
+Halfedge fan_start(const SurfaceMesh& mesh, Face f);
 
 }  // namespace hedge
