@@ -42,10 +42,11 @@ void clip_triangle(const Geometry& g, std::uint32_t t, const std::vector<HalfSpa
     out.pos.push_back(g.vertex(tri.v[k]));
     out.support.push_back(kNoPlane);
   }
-  std::vector<Key> keys;
-  std::vector<Vec3d> pos;
-  std::vector<std::uint32_t> support;
-  std::vector<char> in;
+  // Scratch kept between calls: a strike clips tens of thousands of triangles.
+  thread_local std::vector<Key> keys;
+  thread_local std::vector<Vec3d> pos;
+  thread_local std::vector<std::uint32_t> support;
+  thread_local std::vector<char> in;
   for (const HalfSpace& h : planes) {
     const Plane& pl = g.planes->planes[h.plane];
     const std::size_t n = out.keys.size();
