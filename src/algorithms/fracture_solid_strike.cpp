@@ -269,17 +269,18 @@ namespace {
 //! Builds a keyed surface into a mesh; false if it is not a closed manifold.
 bool build_closed(KeyedSurface& s, SurfaceMesh& mesh, std::string& failure) {
   s.finish_points();
-  IndexedMesh im;
-  im.positions.reserve(s.points.size());
-  for (const auto& [k, p] : s.points) im.positions.push_back(to_float(p));
-  im.indices.reserve(3 * s.tris.size());
+  std::vector<Vec3> positions;
+  positions.reserve(s.points.size());
+  for (const auto& [k, p] : s.points) positions.push_back(to_float(p));
+  std::vector<std::uint32_t> indices;
+  indices.reserve(3 * s.tris.size());
   for (const auto& t : s.tris)
-    for (const Key& k : t) im.indices.push_back(s.index(k));
-  im.face_sizes.assign(s.tris.size(), 3);
+    for (const Key& k : t) indices.push_back(s.index(k));
   BuildOptions bo;
   bo.corner_attributes = false;
   try {
-    mesh = build(im, bo);
+    // Triangles only: build()'s path for them, without the general one's face sizes.
+    mesh = build_triangles(positions, indices, bo);
   } catch (const Error& e) {
     failure = std::string("a piece is not manifold: ") + e.what();
     return false;
