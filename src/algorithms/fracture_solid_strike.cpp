@@ -82,15 +82,17 @@ SoupIndex index_soup(const std::vector<SoupTriangle>& soup) {
       x.first.push_back(t);
     }
   x.first.push_back(static_cast<std::uint32_t>(soup.size()));
-  x.vertices.reserve(3 * soup.size());
-  for (const SoupTriangle& t : soup) x.vertices.insert(x.vertices.end(), t.v.begin(), t.v.end());
-  std::sort(x.vertices.begin(), x.vertices.end());
-  x.vertices.erase(std::unique(x.vertices.begin(), x.vertices.end()), x.vertices.end());
-  x.corner.resize(soup.size());
+  // (vertex, corner) pairs sorted: each run of one vertex gets the next index.
+  std::vector<std::pair<Index, std::uint32_t>> corners(3 * soup.size());
   for (std::size_t t = 0; t < soup.size(); ++t)
-    for (int k = 0; k < 3; ++k)
-      x.corner[t][k] = static_cast<std::uint32_t>(
-          std::lower_bound(x.vertices.begin(), x.vertices.end(), soup[t].v[k]) - x.vertices.begin());
+    for (std::uint32_t k = 0; k < 3; ++k)
+      corners[3 * t + k] = {soup[t].v[k], static_cast<std::uint32_t>(3 * t + k)};
+  std::sort(corners.begin(), corners.end());
+  x.corner.resize(soup.size());
+  for (const auto& [v, c] : corners) {
+    if (x.vertices.empty() || x.vertices.back() != v) x.vertices.push_back(v);
+    x.corner[c / 3][c % 3] = static_cast<std::uint32_t>(x.vertices.size() - 1);
+  }
   return x;
 }
 
