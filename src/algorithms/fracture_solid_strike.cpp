@@ -102,7 +102,12 @@ struct PolygonList {
   std::size_t size = 0;
   void clear() { size = 0; }
   ClipPolygon& next() {
-    if (size == store.size()) store.emplace_back();
+    if (size == store.size()) {
+      ClipPolygon& p = store.emplace_back();
+      p.keys.reserve(8);
+      p.pos.reserve(8);
+      p.support.reserve(8);
+    }
     return store[size];
   }
   std::span<const ClipPolygon> view() const { return {store.data(), size}; }
@@ -358,12 +363,6 @@ bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, doubl
   // The patch: the touched triangles' parts outside P, and P's caps turned inwards.
   polys.clear();
   clip_all(in, g, index, region, margin, masks, polys);
-  std::vector<ClipPolygon> inside_p(strike.soup.size());
-  std::vector<char> touched_tri(strike.soup.size(), 0);
-  for (const ClipPolygon& p : polys.view()) {
-    touched_tri[p.triangle] = 1;
-    inside_p[p.triangle] = p;
-  }
   strike.seconds_clip += seconds_since(t);
   KeyedSurface caps;
   if (!cap_polytope(in, region, polys.view(), caps, strike.failure)) return false;
@@ -372,6 +371,14 @@ bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, doubl
     strike.patch.add({tri[0], tri[2], tri[1]}, caps.source[k]);
   }
   strike.patch.points = std::move(caps.points);
+  // The caps are made: each polygon moves to its triangle's slot.
+  std::vector<ClipPolygon> inside_p(strike.soup.size());
+  std::vector<char> touched_tri(strike.soup.size(), 0);
+  for (std::size_t i = 0; i < polys.size; ++i) {
+    const std::uint32_t tri = polys.store[i].triangle;
+    touched_tri[tri] = 1;
+    inside_p[tri] = std::move(polys.store[i]);
+  }
   if (!patch_outside(in, g, inside_p, touched_tri, strike)) return false;
   strike.patch.finish_points();
   strike.seconds_cap += seconds_since(t);
