@@ -66,11 +66,12 @@ bool overlaps(const SoupTriangle& t, const float lo[3], const float hi[3]) {
 }
 
 //! The soup's triangles of each face, in face order (the soup is made in that order), and the
-//! soup's vertices: each triangle's corners as indices into a sorted list of its mesh vertices.
+//! soup's vertices: each triangle's corners as indices into a list of its mesh vertices (in the
+//! order of first use; the numbering stays inside the strike).
 struct SoupIndex {
   std::vector<Face> faces;           // sorted
   std::vector<std::uint32_t> first;  // faces.size() + 1 entries
-  std::vector<Index> vertices;       // sorted, unique
+  std::vector<Index> vertices;       // unique
   std::vector<std::array<std::uint32_t, 3>> corner;
 };
 
@@ -82,17 +83,24 @@ SoupIndex index_soup(const std::vector<SoupTriangle>& soup) {
       x.first.push_back(t);
     }
   x.first.push_back(static_cast<std::uint32_t>(soup.size()));
-  // (vertex, corner) pairs sorted: each run of one vertex gets the next index.
-  std::vector<std::pair<Index, std::uint32_t>> corners(3 * soup.size());
-  for (std::size_t t = 0; t < soup.size(); ++t)
-    for (std::uint32_t k = 0; k < 3; ++k)
-      corners[3 * t + k] = {soup[t].v[k], static_cast<std::uint32_t>(3 * t + k)};
-  std::sort(corners.begin(), corners.end());
+  // An open-addressing table mesh vertex -> number, only looked up (never iterated), so the
+  // numbering is the order of first use.
+  std::size_t size = 16;
+  while (size < 4 * soup.size()) size <<= 1;
+  constexpr std::uint32_t kEmpty = 0xffffffffu;
+  std::vector<std::pair<Index, std::uint32_t>> table(size, {0, kEmpty});
   x.corner.resize(soup.size());
-  for (const auto& [v, c] : corners) {
-    if (x.vertices.empty() || x.vertices.back() != v) x.vertices.push_back(v);
-    x.corner[c / 3][c % 3] = static_cast<std::uint32_t>(x.vertices.size() - 1);
-  }
+  for (std::size_t t = 0; t < soup.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const Index v = soup[t].v[k];
+      std::size_t at = (std::uint64_t{v} * 0x9E3779B97F4A7C15ull >> 20) & (size - 1);
+      while (table[at].second != kEmpty && table[at].first != v) at = (at + 1) & (size - 1);
+      if (table[at].second == kEmpty) {
+        table[at] = {v, static_cast<std::uint32_t>(x.vertices.size())};
+        x.vertices.push_back(v);
+      }
+      x.corner[t][k] = table[at].second;
+    }
   return x;
 }
 
