@@ -32,9 +32,11 @@
 // handles by the call and destroyed with the timer paused. Counters as BM_fracture's, without the
 // stages.
 // BM_fracture_solid/<mesh>/<points>: one solid strike (algorithms/fracture_solid.h) on a closed
-// sphere of 100k (sphere_100k) or 1M (sphere_1m) triangles of radius 1, break radius 0.5 (model
-// units, the same on both), with a material of 64 or 200 break points in two shells (about half
-// of the cells hold part of the sphere, so about 32 or 100 pieces). Impacts at the surface point
+// sphere of 100k (sphere_100k) or 1M (sphere_1m) triangles of radius 1, or of 1M triangles of
+// radius sqrt(10) (sphere_1m_r3: the triangles of sphere_100k's size, so the broken region holds
+// as many of them), break radius 0.5 (model units, the same on all), with a material of 64 or 200
+// break points in two shells (about half of the cells hold part of the sphere, so about 32 or 100
+// pieces). Impacts at the surface point
 // nearest to a random direction, the FaceBvh kept up to date by the strikes; the mesh and its
 // tree are restored (timer paused) every 4 strikes. Counters: pieces per strike, median and p99
 // microseconds, and the mean microseconds of each stage (locate, cells, clip, cap, assemble,
@@ -354,7 +356,7 @@ void capi_fracture_impacts(benchmark::State& state, std::string name, std::strin
 
 //! A closed sphere of radius 1: a cube's faces cut into n x n squares of two triangles each
 //! (12 n^2 triangles), welded and pushed onto the sphere.
-hedge::SurfaceMesh grid_sphere(int n) {
+hedge::SurfaceMesh grid_sphere(int n, float radius = 1) {
   hedge::IndexedMesh m;
   for (int axis = 0; axis < 3; ++axis)
     for (int side = -1; side <= 1; side += 2) {
@@ -381,19 +383,20 @@ hedge::SurfaceMesh grid_sphere(int n) {
   hedge::SurfaceMesh s = hedge::build(m, {.weld = hedge::Weld::exact});
   for (hedge::Vertex v : s.vertices()) {
     const hedge::Vec3 p = s.position(v);
-    const float l = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+    const float l = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z) / radius;
     s.position(v) = {p.x / l, p.y / l, p.z / l};
   }
   return s;
 }
 
-void fracture_solid_impacts(benchmark::State& state, int n, unsigned points) {
-  static std::vector<std::pair<int, std::unique_ptr<hedge::SurfaceMesh>>> cache;
+void fracture_solid_impacts(benchmark::State& state, int n, float radius, unsigned points) {
+  static std::vector<std::pair<std::pair<int, float>, std::unique_ptr<hedge::SurfaceMesh>>> cache;
   const hedge::SurfaceMesh* input = nullptr;
   for (const auto& [k, m] : cache)
-    if (k == n) input = m.get();
+    if (k == std::make_pair(n, radius)) input = m.get();
   if (!input) {
-    cache.emplace_back(n, std::make_unique<hedge::SurfaceMesh>(grid_sphere(n)));
+    cache.emplace_back(std::make_pair(n, radius),
+                       std::make_unique<hedge::SurfaceMesh>(grid_sphere(n, radius)));
     input = cache.back().second.get();
   }
   auto mesh = std::make_unique<hedge::SurfaceMesh>(*input);
@@ -452,11 +455,17 @@ void fracture_solid_impacts(benchmark::State& state, int n, unsigned points) {
 }
 
 void register_fracture(const std::string& root) {
-  for (const auto& [name, n] : {std::pair<const char*, int>{"sphere_100k", 91}, {"sphere_1m", 289}})
+  struct Sphere {
+    const char* name;
+    int n;
+    float radius;
+  };
+  for (const Sphere& sphere : {Sphere{"sphere_100k", 91, 1.0f}, Sphere{"sphere_1m", 289, 1.0f},
+                               Sphere{"sphere_1m_r3", 289, std::sqrt(10.0f)}})
     for (unsigned points : {64u, 200u})
       benchmark::RegisterBenchmark(
-          (std::string("BM_fracture_solid/") + name + "/" + std::to_string(points)).c_str(),
-          fracture_solid_impacts, n, points)
+          (std::string("BM_fracture_solid/") + sphere.name + "/" + std::to_string(points)).c_str(),
+          fracture_solid_impacts, sphere.n, sphere.radius, points)
           ->Unit(benchmark::kMillisecond)
           ->Iterations(24);
   for (const char* name : {"plate_100k", "plate_1m", "igea"}) {

@@ -42,10 +42,11 @@ void clip_triangle(const Geometry& g, std::uint32_t t, const std::vector<HalfSpa
     out.pos.push_back(g.vertex(tri.v[k]));
     out.support.push_back(kNoPlane);
   }
-  std::vector<Key> keys;
-  std::vector<Vec3d> pos;
-  std::vector<std::uint32_t> support;
-  std::vector<char> in;
+  // Scratch kept between calls: a strike clips tens of thousands of triangles.
+  thread_local std::vector<Key> keys;
+  thread_local std::vector<Vec3d> pos;
+  thread_local std::vector<std::uint32_t> support;
+  thread_local std::vector<char> in;
   for (const HalfSpace& h : planes) {
     const Plane& pl = g.planes->planes[h.plane];
     const std::size_t n = out.keys.size();
@@ -128,21 +129,43 @@ bool fill_region(const RegionInput& in, std::vector<std::array<Key, 3>>& tris,
   const std::size_t n = in.corners.size();
   // The graph of boundary edges: chains, then the outline's pieces inside the region.
   std::vector<std::pair<Key, Key>> edges;
-  std::map<Key, Vec3d> where;
-  std::map<Key, int> role;  // 1: has an outgoing chain edge only, 2: incoming only, 3: both
+  // Flat maps, sorted by key: a point's position (the first one given wins) and its role.
+  std::vector<std::pair<Key, Vec3d>> where;
+  std::vector<std::pair<Key, int>> role;  // 1: has an outgoing chain edge only, 2: incoming only, 3: both
   for (const ChainEdge& e : in.chain) {
     edges.emplace_back(e.a, e.b);
-    where.emplace(e.a, e.pa);
-    where.emplace(e.b, e.pb);
-    role[e.a] |= 1;
-    role[e.b] |= 2;
+    where.emplace_back(e.a, e.pa);
+    where.emplace_back(e.b, e.pb);
+    role.emplace_back(e.a, 1);
+    role.emplace_back(e.b, 2);
   }
+  const auto by_key = [](const auto& x, const auto& y) { return x.first < y.first; };
+  const auto same_key = [](const auto& x, const auto& y) { return x.first == y.first; };
+  const auto keep_first = [&]() {
+    std::stable_sort(where.begin(), where.end(), by_key);
+    where.erase(std::unique(where.begin(), where.end(), same_key), where.end());
+  };
+  keep_first();
+  const auto slot = [&](const Key& k) {
+    return static_cast<std::size_t>(
+        std::lower_bound(where.begin(), where.end(), k,
+                         [](const auto& x, const Key& key) { return x.first < key; }) -
+        where.begin());
+  };
+  std::sort(role.begin(), role.end(), by_key);
+  std::size_t roles = 0;
+  for (std::size_t i = 0; i < role.size(); ++i)
+    if (roles > 0 && role[roles - 1].first == role[i].first)
+      role[roles - 1].second |= role[i].second;
+    else
+      role[roles++] = role[i];
+  role.resize(roles);
   std::vector<std::vector<Stop>> on_side(n);
   for (const auto& [k, r] : role) {
     if (r == 3) continue;
     const int s = in.side(k);
     if (s < 0) return false;  // a chain end inside the outline, or on no side of it
-    on_side[static_cast<std::size_t>(s)].push_back({k, where.at(k), r});
+    on_side[static_cast<std::size_t>(s)].push_back({k, where[slot(k)].second, r});
   }
   std::vector<Stop> outline;
   for (std::size_t s = 0; s < n; ++s) {
@@ -168,7 +191,8 @@ bool fill_region(const RegionInput& in, std::vector<std::array<Key, 3>>& tris,
       first = i;
       break;
     }
-  for (const Stop& s : outline) where.emplace(s.key, s.pos);
+  for (const Stop& s : outline) where.emplace_back(s.key, s.pos);
+  keep_first();
   if (first == outline.size()) {
     if (in.inside())
       for (std::size_t i = 0; i < n; ++i) edges.emplace_back(in.corners[i], in.corners[(i + 1) % n]);
@@ -202,12 +226,14 @@ bool fill_region(const RegionInput& in, std::vector<std::array<Key, 3>>& tris,
     double area = 0;
   };
   std::vector<Loop> loops;
-  std::vector<Key> names;  // id -> key
-  std::map<Key, std::uint32_t> id_of;
-  auto id = [&](const Key& k) {
-    const auto [it, inserted] = id_of.emplace(k, static_cast<std::uint32_t>(names.size()));
-    if (inserted) names.push_back(k);
-    return it->second;
+  std::vector<Key> names;                                    // id -> key, in the order of first use
+  std::vector<std::uint32_t> id_of(where.size(), kNoPlane);  // by slot in `where`
+  auto id = [&](std::size_t at) {
+    if (id_of[at] == kNoPlane) {
+      id_of[at] = static_cast<std::uint32_t>(names.size());
+      names.push_back(where[at].first);
+    }
+    return id_of[at];
   };
   const Vec3d origin = in.corner_pos.empty() ? Vec3d{} : in.corner_pos[0];
   for (std::size_t i = 0; i < edges.size(); ++i) {
@@ -217,8 +243,9 @@ bool fill_region(const RegionInput& in, std::vector<std::array<Key, 3>>& tris,
     while (!used[e]) {
       used[e] = 1;
       const Key& k = edges[e].first;
-      const Vec3d p = where.at(k) - origin;
-      loop.ids.push_back(id(k));
+      const std::size_t at = slot(k);
+      const Vec3d p = where[at].second - origin;
+      loop.ids.push_back(id(at));
       loop.xy.push_back({dot(p, u), dot(p, v)});
       const auto it = std::lower_bound(edges.begin(), edges.end(), std::make_pair(edges[e].second, Key{}));
       if (it == edges.end() || it->first != edges[e].second) return false;  // an open chain
@@ -277,7 +304,7 @@ bool fill_region(const RegionInput& in, std::vector<std::array<Key, 3>>& tris,
     if (!triangulate_with_holes(loops[o].xy, loops[o].ids, hxy, hid, ids)) return false;
   }
   for (const auto& t : ids) tris.push_back({names[t[0]], names[t[1]], names[t[2]]});
-  for (std::size_t i = 0; i < names.size(); ++i) points.emplace_back(names[i], where.at(names[i]));
+  for (std::size_t i = 0; i < names.size(); ++i) points.emplace_back(names[i], where[slot(names[i])].second);
   return true;
 }
 

@@ -93,12 +93,17 @@ bool patch_outside(const StrikeInput& in, const Geometry& g, const std::vector<C
   std::sort(faces.begin(), faces.end());
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
   close_pinches(mesh, faces);
-  // Soup triangles of each touched face; faces beyond the soup (joined to close a pinch) get theirs.
-  std::map<Face, std::vector<std::uint32_t>> tris_of;
+  // Soup triangles of each touched face, as (face, triangle) sorted; faces beyond the soup (joined
+  // to close a pinch) get theirs.
+  std::vector<std::pair<Face, std::uint32_t>> tris_of;
   for (std::uint32_t t = 0; t < strike.soup.size(); ++t)
-    if (in_sorted(faces, strike.soup[t].face)) tris_of[strike.soup[t].face].push_back(t);
+    if (in_sorted(faces, strike.soup[t].face)) tris_of.emplace_back(strike.soup[t].face, t);
+  std::sort(tris_of.begin(), tris_of.end());
+  const std::size_t in_soup = tris_of.size();
   for (Face f : faces) {
-    if (tris_of.count(f)) continue;
+    const auto first = tris_of.begin() + std::ptrdiff_t(in_soup);
+    const auto it = std::lower_bound(tris_of.begin(), first, std::make_pair(f, std::uint32_t{0}));
+    if (it != first && it->first == f) continue;
     const std::size_t before = strike.soup.size();
     // make the triangles of f as the soup does, by appending them.
     std::vector<Halfedge> hs;
@@ -115,29 +120,29 @@ bool patch_outside(const StrikeInput& in, const Geometry& g, const std::vector<C
       strike.soup.push_back(s);
     }
     for (std::size_t t = before; t < strike.soup.size(); ++t)
-      tris_of[f].push_back(static_cast<std::uint32_t>(t));
+      tris_of.emplace_back(f, static_cast<std::uint32_t>(t));
     touched.resize(strike.soup.size(), 0);
   }
-  for (const auto& [f, ts] : tris_of)
-    for (std::uint32_t t : ts) {
-      if (t < inside_p.size() && touched[t]) {
-        const std::vector<std::uint32_t>& support = inside_p[t].support;
-        if (std::all_of(support.begin(), support.end(), [](std::uint32_t p) { return p == kNoPlane; }))
-          continue;  // all of it inside P: nothing stays
-        if (!outside_part(g, t, inside_p[t], strike.patch)) {
-          strike.failure = "the part of a face outside the region did not close";
-          return false;
-        }
-        continue;
+  std::sort(tris_of.begin(), tris_of.end());
+  for (const auto& [f, t] : tris_of) {
+    if (t < inside_p.size() && touched[t]) {
+      const std::vector<std::uint32_t>& support = inside_p[t].support;
+      if (std::all_of(support.begin(), support.end(), [](std::uint32_t p) { return p == kNoPlane; }))
+        continue;  // all of it inside P: nothing stays
+      if (!outside_part(g, t, inside_p[t], strike.patch)) {
+        strike.failure = "the part of a face outside the region did not close";
+        return false;
       }
-      const SoupTriangle& s = strike.soup[t];
-      std::array<Key, 3> k;
-      for (int i = 0; i < 3; ++i) {
-        k[i] = {Key::vertex, s.v[i], 0, 0};
-        strike.patch.points.emplace_back(k[i], g.vertex(s.v[i]));
-      }
-      strike.patch.add(k, t);
+      continue;
     }
+    const SoupTriangle& s = strike.soup[t];
+    std::array<Key, 3> k;
+    for (int i = 0; i < 3; ++i) {
+      k[i] = {Key::vertex, s.v[i], 0, 0};
+      strike.patch.points.emplace_back(k[i], g.vertex(s.v[i]));
+    }
+    strike.patch.add(k, t);
+  }
   // The patch must fit the hole: each of its directed edges is used once, and those without their
   // twin in the patch are exactly the hole's rim, edges of the mesh whose other face stays.
   std::vector<std::pair<Key, Key>> edges;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <span>
 
 #include "hedge/algorithms/geometry.h"
 #include "hedge/core/triangulate.h"
@@ -73,10 +74,14 @@ bool overlaps(const SoupTriangle& t, const float lo[3], const float hi[3]) {
   return true;
 }
 
-//! The soup's triangles of each face, in face order (the soup is made in that order).
+//! The soup's triangles of each face, in face order (the soup is made in that order), and the
+//! soup's vertices: each triangle's corners as indices into a list of its mesh vertices (in the
+//! order of first use; the numbering stays inside the strike).
 struct SoupIndex {
   std::vector<Face> faces;           // sorted
   std::vector<std::uint32_t> first;  // faces.size() + 1 entries
+  std::vector<Index> vertices;       // unique
+  std::vector<std::array<std::uint32_t, 3>> corner;
 };
 
 SoupIndex index_soup(const std::vector<SoupTriangle>& soup) {
@@ -87,28 +92,113 @@ SoupIndex index_soup(const std::vector<SoupTriangle>& soup) {
       x.first.push_back(t);
     }
   x.first.push_back(static_cast<std::uint32_t>(soup.size()));
+  // An open-addressing table mesh vertex -> number, only looked up (never iterated), so the
+  // numbering is the order of first use.
+  std::size_t size = 16;
+  while (size < 4 * soup.size()) size <<= 1;
+  constexpr std::uint32_t kEmpty = 0xffffffffu;
+  std::vector<std::pair<Index, std::uint32_t>> table(size, {0, kEmpty});
+  x.corner.resize(soup.size());
+  for (std::size_t t = 0; t < soup.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const Index v = soup[t].v[k];
+      std::size_t at = (std::uint64_t{v} * 0x9E3779B97F4A7C15ull >> 20) & (size - 1);
+      while (table[at].second != kEmpty && table[at].first != v) at = (at + 1) & (size - 1);
+      if (table[at].second == kEmpty) {
+        table[at] = {v, static_cast<std::uint32_t>(x.vertices.size())};
+        x.vertices.push_back(v);
+      }
+      x.corner[t][k] = table[at].second;
+    }
   return x;
 }
 
+//! Clipped polygons, their storage kept from one polytope to the next: the first `size` are in use.
+struct PolygonList {
+  std::vector<ClipPolygon> store;
+  std::size_t size = 0;
+  void clear() { size = 0; }
+  ClipPolygon& next() {
+    if (size == store.size()) {
+      ClipPolygon& p = store.emplace_back();
+      p.keys.reserve(8);
+      p.pos.reserve(8);
+      p.support.reserve(8);
+    }
+    return store[size];
+  }
+  std::span<const ClipPolygon> view() const { return {store.data(), size}; }
+};
+
+//! Per soup vertex, the first half-space of the polytope at hand it lies outside of (the number of
+//! half-spaces if none), computed once per polytope (stamped) with the test clip_triangle() makes.
+struct FirstOut {
+  std::vector<std::uint32_t> first;
+  std::vector<std::uint32_t> stamp;
+  std::uint32_t current = 0;
+};
+
 //! The clipped polygons of the soup triangles in a convex polytope: the triangles of the faces the
-//! picking tree finds in the polytope's box, so a cell costs its own triangles.
+//! picking tree finds in the polytope's box, so a cell costs its own triangles. Most of them lie
+//! wholly inside the polytope or outside one of its half-spaces: their corners' classification
+//! (shared by the triangles around a vertex) decides them as clip_triangle() would, and only the
+//! triangles a plane crosses are clipped.
 void clip_all(const StrikeInput& in, const Geometry& g, const SoupIndex& index, const Polytope& cell,
-              double margin, std::vector<ClipPolygon>& out) {
+              double margin, FirstOut& masks, PolygonList& out) {
   float lo[3], hi[3];
   cell.box(margin, lo, hi);
   std::vector<HalfSpace> planes;
   for (const Polytope::Side& s : cell.faces) planes.push_back(s.h);
+  if (masks.stamp.size() != index.vertices.size()) {
+    masks.stamp.assign(index.vertices.size(), 0);
+    masks.first.assign(index.vertices.size(), 0);
+    masks.current = 0;
+  }
+  ++masks.current;
+  const std::uint32_t none = static_cast<std::uint32_t>(planes.size());
+  auto first_out = [&](std::uint32_t v) {
+    if (masks.stamp[v] != masks.current) {
+      masks.stamp[v] = masks.current;
+      const Vec3d p = g.vertex(index.vertices[v]);
+      std::uint32_t k = 0;
+      while (k < none && g.planes->planes[planes[k].plane].below(p) != planes[k].flip) ++k;
+      masks.first[v] = k;
+    }
+    return masks.first[v];
+  };
   std::vector<Face> faces;
   in.tree.faces_in_box({lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}, faces);
-  ClipPolygon poly;
   for (Face f : faces) {
     const auto it = std::lower_bound(index.faces.begin(), index.faces.end(), f);
     if (it == index.faces.end() || *it != f) continue;
     const std::size_t k = static_cast<std::size_t>(it - index.faces.begin());
     for (std::uint32_t t = index.first[k]; t < index.first[k + 1]; ++t) {
-      if (!overlaps((*g.soup)[t], lo, hi)) continue;
+      const SoupTriangle& tri = (*g.soup)[t];
+      if (!overlaps(tri, lo, hi)) continue;
+      const auto& c = index.corner[t];
+      const std::uint32_t a = first_out(c[0]), b = first_out(c[1]), d = first_out(c[2]);
+      if (a == none && b == none && d == none) {
+        // Inside every half-space: clip_triangle() would return the triangle as it is.
+        ClipPolygon& p = out.next();
+        p.triangle = t;
+        p.keys.clear();
+        p.pos.clear();
+        p.support.clear();
+        for (int i = 0; i < 3; ++i) {
+          p.keys.push_back({Key::vertex, tri.v[i], 0, 0});
+          p.pos.push_back(g.vertex(tri.v[i]));
+          p.support.push_back(kNoPlane);
+        }
+        ++out.size;
+        continue;
+      }
+      // The first half-space a corner leaves is the first that changes the triangle (the corners
+      // lie inside the ones before); when every corner leaves it, clip_triangle() would return
+      // nothing.
+      if (a == b && b == d) continue;
+      ClipPolygon& poly = out.next();
       clip_triangle(g, t, planes, poly);
-      if (!poly.keys.empty()) out.push_back(poly);
+      if (!poly.keys.empty()) ++out.size;
     }
   }
 }
@@ -116,7 +206,7 @@ void clip_all(const StrikeInput& in, const Geometry& g, const SoupIndex& index, 
 //! The caps of a convex polytope: on each face, the part inside the mesh. Appends triangles
 //! (counter-clockwise seen from outside the polytope) with their plane as source, and their area
 //! per face.
-bool cap_polytope(const StrikeInput& in, const Polytope& cell, const std::vector<ClipPolygon>& polys,
+bool cap_polytope(const StrikeInput& in, const Polytope& cell, std::span<const ClipPolygon> polys,
                   KeyedSurface& out, std::string& failure) {
   // The surface's edges on each plane, reversed: the caps' chains.
   std::vector<std::pair<std::uint32_t, ChainEdge>> on_plane;
@@ -203,17 +293,18 @@ namespace {
 //! Builds a keyed surface into a mesh; false if it is not a closed manifold.
 bool build_closed(KeyedSurface& s, SurfaceMesh& mesh, std::string& failure) {
   s.finish_points();
-  IndexedMesh im;
-  im.positions.reserve(s.points.size());
-  for (const auto& [k, p] : s.points) im.positions.push_back(to_float(p));
-  im.indices.reserve(3 * s.tris.size());
+  std::vector<Vec3> positions;
+  positions.reserve(s.points.size());
+  for (const auto& [k, p] : s.points) positions.push_back(to_float(p));
+  std::vector<std::uint32_t> indices;
+  indices.reserve(3 * s.tris.size());
   for (const auto& t : s.tris)
-    for (const Key& k : t) im.indices.push_back(s.index(k));
-  im.face_sizes.assign(s.tris.size(), 3);
+    for (const Key& k : t) indices.push_back(s.index(k));
   BuildOptions bo;
   bo.corner_attributes = false;
   try {
-    mesh = build(im, bo);
+    // Triangles only: build()'s path for them, without the general one's face sizes.
+    mesh = build_triangles(positions, indices, bo);
   } catch (const Error& e) {
     failure = std::string("a piece is not manifold: ") + e.what();
     return false;
@@ -227,7 +318,7 @@ bool build_closed(KeyedSurface& s, SurfaceMesh& mesh, std::string& failure) {
 }
 
 //! Triangles of each clipped polygon (a fan: it is convex), with their soup triangle as source.
-void add_polygons(const std::vector<ClipPolygon>& polys, KeyedSurface& s) {
+void add_polygons(std::span<const ClipPolygon> polys, KeyedSurface& s) {
   for (const ClipPolygon& p : polys) {
     for (std::size_t k = 1; k + 1 < p.keys.size(); ++k)
       s.add({p.keys[0], p.keys[k], p.keys[k + 1]}, p.triangle);
@@ -256,16 +347,17 @@ bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, doubl
 
   // Per plane and piece, the cap area, for the bonds.
   std::vector<std::pair<std::pair<std::size_t, std::uint32_t>, double>> cap_areas;
-  std::vector<ClipPolygon> polys;
+  PolygonList polys;
+  FirstOut masks;
   for (std::size_t i = 0; i < cells.size(); ++i) {
     if (cells[i].empty()) continue;
     polys.clear();
-    clip_all(in, g, index, cells[i], margin, polys);
+    clip_all(in, g, index, cells[i], margin, masks, polys);
     strike.seconds_clip += seconds_since(t);
     PieceDraft d;
     d.cell = i;
-    add_polygons(polys, d.surface);
-    if (!cap_polytope(in, cells[i], polys, d.surface, strike.failure)) return false;
+    add_polygons(polys.view(), d.surface);
+    if (!cap_polytope(in, cells[i], polys.view(), d.surface, strike.failure)) return false;
     strike.seconds_cap += seconds_since(t);
     if (d.surface.tris.empty()) continue;
     if (!build_closed(d.surface, d.mesh, strike.failure)) return false;
@@ -287,21 +379,23 @@ bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, doubl
 
   // The patch: the touched triangles' parts outside P, and P's caps turned inwards.
   polys.clear();
-  clip_all(in, g, index, region, margin, polys);
-  std::vector<ClipPolygon> inside_p(strike.soup.size());
-  std::vector<char> touched_tri(strike.soup.size(), 0);
-  for (ClipPolygon& p : polys) {
-    touched_tri[p.triangle] = 1;
-    inside_p[p.triangle] = p;
-  }
+  clip_all(in, g, index, region, margin, masks, polys);
   strike.seconds_clip += seconds_since(t);
   KeyedSurface caps;
-  if (!cap_polytope(in, region, polys, caps, strike.failure)) return false;
+  if (!cap_polytope(in, region, polys.view(), caps, strike.failure)) return false;
   for (std::size_t k = 0; k < caps.tris.size(); ++k) {
     const auto& tri = caps.tris[k];
     strike.patch.add({tri[0], tri[2], tri[1]}, caps.source[k]);
   }
   strike.patch.points = std::move(caps.points);
+  // The caps are made: each polygon moves to its triangle's slot.
+  std::vector<ClipPolygon> inside_p(strike.soup.size());
+  std::vector<char> touched_tri(strike.soup.size(), 0);
+  for (std::size_t i = 0; i < polys.size; ++i) {
+    const std::uint32_t tri = polys.store[i].triangle;
+    touched_tri[tri] = 1;
+    inside_p[tri] = std::move(polys.store[i]);
+  }
   if (!patch_outside(in, g, inside_p, touched_tri, strike)) return false;
   strike.patch.finish_points();
   strike.seconds_cap += seconds_since(t);

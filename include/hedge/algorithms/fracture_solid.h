@@ -15,8 +15,10 @@
 //     bisector planes of the other break points (its Voronoi cell within P).
 //  4. clip: the triangles whose boxes meet a cell's box (a FaceBvh box query; polygon faces are
 //     split into the fan of fan_start() in core/triangulate.h, from their first corner unless that
-//     fan folds, as volume() and the tree see them) are clipped by the cell's planes, and each of
-//     the cell's faces
+//     fan folds, as volume() and the tree see them) are clipped by the cell's planes (a triangle
+//     whose corners all lie inside the cell, or all outside the first of its planes that any
+//     corner leaves, is kept whole or dropped without clipping: the same result), and each of the
+//     cell's faces
 //     gets a cap, the part of it inside the object: its loops (several, holes included) are
 //     triangulated in the face's plane. A piece is the clipped surface and its caps.
 //  5. remaining object: the faces that meet P leave the mesh, and their parts outside P come back
