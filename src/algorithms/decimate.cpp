@@ -718,7 +718,7 @@ DecimateResult Decimator::run() {
       shapely = false;
       continue;
     }
-    if (done_now == 0 && refused_normal_now > 0 && min_cos_ > 0) {
+    if (done_now == 0 && refused_normal_now > 0 && min_cos_ > 0 && o_.relax_normal_change) {
       // Likewise the turn limit, when it is below 90 degrees: faces may turn up to 90 degrees (never
       // over) for the rest of the run, so that coarse targets are reached.
       min_cos_ = 0;

@@ -125,6 +125,13 @@ void setup(SurfaceMesh& mesh, const Vec3& impact, const SolidFractureOptions& o,
   s.radius = radius;
   s.material = fracture_material_at_radius(o.material, radius);
   s.region_radius = radius + 0.5 * s.material.rings.back().spacing;
+  // Only a closed mesh encloses a solid, and a hole away from the region cannot be seen from it: a
+  // pass over the half-edges, kept by the tree until the mesh changes (a strike keeps it closed).
+  Halfedge open;
+  if (!s.tree->mesh_closed(&open))
+    s.refusal = "the mesh is open: edge " + std::to_string(SurfaceMesh::edge(open).idx()) + " (vertices " +
+                std::to_string(mesh.from_vertex(open).idx()) + " and " + std::to_string(mesh.to_vertex(open).idx()) +
+                ") has a face on one side only, and only a closed mesh encloses a solid";
 }
 
 //! Why the faces about the region cannot be broken as a solid: a boundary edge or a non-manifold
@@ -209,7 +216,10 @@ SolidFractureResult fracture_solid(SurfaceMesh& mesh, const Vec3& impact, const 
   const std::int32_t inner = inner_submesh_of(mesh, o.inner_submesh);
   result.pieces = assemble_pieces(in, strike, inner);
   apply_remaining(in, strike, inner);
-  if (bvh) bvh->update();
+  if (bvh) {
+    bvh->update();
+    bvh->note_closed(true);  // the remaining object is closed, as the mesh was
+  }
   result.seconds.assemble = seconds_since(t);
   measure_pieces(result.pieces, o);
   result.bonds = std::move(strike.bonds);

@@ -255,7 +255,28 @@ void FaceBvh::build_tree(const SurfaceMesh& mesh, const BvhOptions& options) {
     young_.shrink_to_fit();
   }
   height_at_build_ = nodes_.empty() ? 0 : height_[0];
+  closed_ = -1;
   update_slack();
+}
+
+bool FaceBvh::mesh_closed(Halfedge* boundary) {
+  if (closed_ < 0 && mesh_) {
+    closed_ = 1;
+    first_boundary_ = Halfedge{};
+    for (Halfedge h : mesh_->halfedges())
+      if (mesh_->is_boundary(h)) {
+        closed_ = 0;
+        first_boundary_ = h;
+        break;
+      }
+  }
+  if (boundary) *boundary = first_boundary_;
+  return closed_ == 1;
+}
+
+void FaceBvh::note_closed(bool closed, Halfedge boundary) {
+  closed_ = closed ? 1 : 0;
+  first_boundary_ = closed ? Halfedge{} : boundary;
 }
 
 void FaceBvh::rebuild() {

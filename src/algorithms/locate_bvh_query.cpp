@@ -218,6 +218,7 @@ void FaceBvh::update(std::span<const Face> changed_or_added, std::span<const Fac
         throw InvalidInputError("FaceBvh::update: face " + std::to_string(f.idx()) +
                                 " is not a face slot of the mesh (" + std::to_string(m.face_slots()) +
                                 " slots)");
+  if (!changed_or_added.empty() || !removed.empty()) closed_ = -1;  // mesh_closed() asks again
   slot_of_face_.resize(m.face_slots(), kInvalidIndex);
   auto tombstone = [&](Face f) {
     Index& slot = slot_of_face_[f.idx()];

@@ -199,6 +199,13 @@ TEST(Decimate, ReachesALowTargetOnAHighGenusMesh) {
   EXPECT_GT(r.refused.normal, 0u);
   EXPECT_EQ(long(m.n_vertices()) - long(m.n_edges()) + long(m.n_faces()), 0);  // 16 x (2 - 2)
   EXPECT_TRUE(m.validate().empty());
+  // A limit that must hold holds: the run stops short and says why.
+  SurfaceMesh strict = input;
+  const DecimateResult s = decimate(strict, {.target_faces = 300, .relax_normal_change = false});
+  EXPECT_EQ(s.stop, DecimateStop::no_legal_collapse);
+  EXPECT_GT(s.faces, 300u);
+  EXPECT_GT(s.refused.normal, 0u);
+  EXPECT_TRUE(strict.validate().empty());
 }
 
 // Where no legal collapse is left the result says so, with the checks that refused.

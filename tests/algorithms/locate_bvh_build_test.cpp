@@ -5,6 +5,7 @@
 #include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/locate.h"
 #include "hedge/core/build.h"
+#include "hedge/core/face_operations.h"
 #include "locate_reference.h"
 #include "non_finite.h"
 #include "test_meshes.h"
@@ -46,6 +47,26 @@ TEST(FaceBvhBuild, BoundsAreTheRootBox) {
   ASSERT_LT(bounding_box(m).max.x, expected.max.x);
   bvh.update();
   EXPECT_EQ(bvh.bounds().max.x, expected.max.x);
+}
+
+TEST(FaceBvhBuild, MeshClosedIsAskedOnceUntilTheMeshChanges) {
+  SurfaceMesh m = load("spot_triangulated.obj");
+  FaceBvh bvh(m);
+  EXPECT_TRUE(bvh.mesh_closed());
+  remove_face(m, Face(7));
+  bvh.update();  // took in the removed face: asked again
+  Halfedge open;
+  EXPECT_FALSE(bvh.mesh_closed(&open));
+  ASSERT_TRUE(open.is_valid());
+  EXPECT_TRUE(m.is_boundary(open));
+  // Kept without a pass: an algorithm's word stands until the next change.
+  bvh.note_closed(true);
+  EXPECT_TRUE(bvh.mesh_closed());
+  bvh.update();  // nothing changed since
+  EXPECT_TRUE(bvh.mesh_closed());
+  bvh.rebuild();
+  EXPECT_FALSE(bvh.mesh_closed());
+  EXPECT_TRUE(m.validate().empty());
 }
 
 TEST(FaceBvhBuild, RefusesANonFinitePosition) {

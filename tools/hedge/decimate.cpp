@@ -28,6 +28,7 @@ struct DecimateCommandOptions : InOutOptions {
   double feature_weight = DecimateOptions{}.feature_weight;
   double attribute_weight = 0;
   double max_normal_change = DecimateOptions{}.max_normal_change_degrees;
+  bool normal_change_given = false;  // then it holds to the end (DecimateOptions::relax_normal_change)
   bool keep_boundary = false;
   bool break_seams = false;
 };
@@ -47,6 +48,7 @@ int run_decimate(const DecimateCommandOptions& o) {
   d.feature_weight = o.feature_weight;
   d.attribute_weight = o.attribute_weight;
   d.max_normal_change_degrees = o.max_normal_change;
+  d.relax_normal_change = !o.normal_change_given;
   d.keep_boundary = o.keep_boundary;
   d.keep_seams = !o.break_seams;
   const std::size_t v0 = mesh.n_vertices(), f0 = mesh.n_faces();
@@ -88,9 +90,12 @@ void add_decimate_arguments(CLI::App* app, DecimateCommandOptions* o) {
   add_real_option(*app, "--attribute-weight", o->attribute_weight,
                   "Weight of texture distortion in the error (0: none)", 0);
   add_real_option(*app, "--max-normal-change", o->max_normal_change,
-                  "Refuse collapses that turn a face by more than this many degrees", 0, 180);
+                  "Refuse collapses that turn a face by more than this many degrees (given: to the end; by default\n"
+                  "60, raised to 90 should it alone stop the run short of its target)",
+                  0, 180);
   add_ascii_flag(*app, o->ascii);
-  app->callback([app, ratio, faces, vertices] {
+  app->callback([app, ratio, faces, vertices, o] {
+    o->normal_change_given = app->get_option("--max-normal-change")->count() > 0;
     if (ratio->count() + faces->count() + vertices->count() + app->get_option("--max-error")->count() == 0)
       throw CLI::ValidationError("decimate", "give --ratio, --faces, --vertices or --max-error");
   });

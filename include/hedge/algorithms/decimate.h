@@ -79,9 +79,13 @@ struct DecimateOptions {
   //! >0: corner UVs enter the quadric with this weight (UV units per model unit). 0: geometry only.
   double attribute_weight = 0;
   //! Refuse collapses that turn a face around either end by more than this (prevents flips). When
-  //! this limit (below 90) alone stops the decimation short of its target, it is raised to 90
-  //! degrees for the rest of the run, so that coarse targets are reached; no face turns over.
+  //! this limit (below 90) alone stops the decimation short of its target and relax_normal_change
+  //! is true, it is raised to 90 degrees for the rest of the run, so that coarse targets are
+  //! reached; no face turns over.
   double max_normal_change_degrees = 60.0;
+  //! false: max_normal_change_degrees holds to the end, and a run it stops short of its target says
+  //! so (DecimateStop::no_legal_collapse, with the refusals counted).
+  bool relax_normal_change = true;
   //! Called with the fraction of the work done.
   Progress progress{};
 };

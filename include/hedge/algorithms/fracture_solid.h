@@ -136,10 +136,12 @@ struct SolidFractureResult {
 };
 
 //! Why `mesh` cannot be solid-fractured at `impact`, or empty if it can: the impact is not finite,
-//! the mesh has no face, no face lies within the tolerance of the impact, or the mesh is open or
-//! non-manifold near the impact (naming a boundary edge by its vertices). Checks the faces whose
-//! boxes meet the box of the broken region (as fracture_solid() would with the same options), so
-//! it costs the region, never the mesh: a hole far from the region does not stop a strike. The
+//! the mesh has no face, no face lies within the tolerance of the impact, the mesh is open
+//! anywhere (only a closed mesh encloses a solid: naming a boundary edge by its vertices), or it is
+//! non-manifold near the impact. Whether the mesh is closed is FaceBvh::mesh_closed(): one pass over
+//! the half-edges after the tree is built or the mesh changed, then kept (a solid strike keeps it
+//! closed, so repeated strikes cost the broken region only); the rest checks the faces whose boxes
+//! meet the box of the broken region (as fracture_solid() would with the same options). The
 //! bindings use it for "auto" (surface fracture where solid fracture is refused). With `bvh`
 //! (built over `mesh`, brought up to date) no tree is built. Options are checked as
 //! fracture_solid() does (an illegal one is named in the answer).

@@ -240,6 +240,16 @@ class FaceBvh {
   //! between two builds as pieces are taken away. Empty for a tree without faces. O(1), so a caller
   //! gets the size of the mesh without a pass over its vertices. (BoundingBox: algorithms/geometry.h.)
   BoundingBox bounds() const;
+  //! Whether every edge of the mesh has a face on both sides (no boundary half-edge): a pass over
+  //! the half-edges, O(H), the first time it is asked after a build or after an update() that took
+  //! in changed or removed faces; kept until then, so asking again costs nothing. With `boundary`,
+  //! an open mesh's first boundary half-edge is stored there. Solid fracture asks it: only a closed
+  //! mesh encloses a solid, and a hole far from the impact cannot be seen from the broken region.
+  bool mesh_closed(Halfedge* boundary = nullptr);
+  //! Records that the mesh is (or is not) closed, for an algorithm that knows it kept a closed mesh
+  //! closed: call it after the update() that took its edit in, so the next mesh_closed() makes no
+  //! pass. Solid fracture does, so repeated strikes on one mesh cost the broken region only.
+  void note_closed(bool closed, Halfedge boundary = Halfedge{});
   //! Heap bytes held by the tree (capacity, not size). O(1).
   std::size_t memory_bytes() const;
   const SurfaceMesh* mesh() const { return mesh_; }
@@ -300,6 +310,9 @@ class FaceBvh {
   //! This tree's place in the mesh's change log.
   ChangeConsumer changes_;
   unsigned height_at_build_ = 0;
+  //! mesh_closed()'s answer: -1 until it is asked after a build or a change, then 0 or 1.
+  int closed_ = -1;
+  Halfedge first_boundary_{};
   std::size_t builds_ = 0;
   std::size_t inserted_ = 0;
   std::size_t merged_ = 0;
