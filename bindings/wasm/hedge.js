@@ -674,9 +674,9 @@ export class Mesh extends NativeOwner {
     return unpackSolidResult(result, (native) => new Mesh(this.hedge, native));
   }
 
-  /** Why fractureSolid(impact, options) would be refused (the mesh open or non-manifold near the
-   *  impact, naming an edge; the impact off the surface; an illegal option), or null if it would
-   *  not. Checks only the faces of the broken region, through the picking tree. */
+  /** Why fractureSolid(impact, options) would be refused (the mesh open, naming an edge, or
+   *  non-manifold near the impact; the impact off the surface; an illegal option), or null if it
+   *  would not. Whether the mesh is closed is kept by the picking tree until the mesh changes. */
   solidFractureRefusal(impact, { material = 'stone', ...options } = {}) {
     const [preset, custom] = materialArguments('solidFractureRefusal', material);
     const why = this._call(

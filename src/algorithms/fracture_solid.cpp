@@ -130,7 +130,8 @@ void setup(SurfaceMesh& mesh, const Vec3& impact, const SolidFractureOptions& o,
   Halfedge open;
   if (!s.tree->mesh_closed(&open))
     s.refusal = "the mesh is open: edge " + std::to_string(SurfaceMesh::edge(open).idx()) + " (vertices " +
-                std::to_string(mesh.from_vertex(open).idx()) + " and " + std::to_string(mesh.to_vertex(open).idx()) +
+                std::to_string(mesh.from_vertex(open).idx()) + " and " +
+                std::to_string(mesh.to_vertex(open).idx()) +
                 ") has a face on one side only, and only a closed mesh encloses a solid";
 }
 

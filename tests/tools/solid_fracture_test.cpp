@@ -112,7 +112,7 @@ TEST_F(HedgeCli, SolidFractureOfAnOpenMeshIsRefusedOrFallsBack) {
   std::vector<std::string> solid = base;
   solid.insert(solid.end(), {"--kind", "solid"});
   expect_data_error(solid, "three_peaks.off");
-  EXPECT_NE(run(solid).err.find("open near the impact"), std::string::npos);
+  EXPECT_NE(run(solid).err.find("the mesh is open: edge"), std::string::npos);
   EXPECT_FALSE(fs::exists(tmp("out")));
   std::vector<std::string> automatic = base;
   automatic.insert(automatic.end(), {"--kind", "auto"});

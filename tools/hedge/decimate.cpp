@@ -89,10 +89,11 @@ void add_decimate_arguments(CLI::App* app, DecimateCommandOptions* o) {
                 "Lift the seam rule of decimation (collapses off a UV seam stay refused)");
   add_real_option(*app, "--attribute-weight", o->attribute_weight,
                   "Weight of texture distortion in the error (0: none)", 0);
-  add_real_option(*app, "--max-normal-change", o->max_normal_change,
-                  "Refuse collapses that turn a face by more than this many degrees (given: to the end; by default\n"
-                  "60, raised to 90 should it alone stop the run short of its target)",
-                  0, 180);
+  add_real_option(
+      *app, "--max-normal-change", o->max_normal_change,
+      "Refuse collapses that turn a face by more than this many degrees (given: to the end; by default\n"
+      "60, raised to 90 should it alone stop the run short of its target)",
+      0, 180);
   add_ascii_flag(*app, o->ascii);
   app->callback([app, ratio, faces, vertices, o] {
     o->normal_change_given = app->get_option("--max-normal-change")->count() > 0;

@@ -181,7 +181,7 @@ void add_solid_fracture_arguments(CLI::App& app, SolidFractureCliOptions& o) {
       app.add_option("--kind", o.kind,
                      "surface: shards of the surface; solid: closed pieces of a closed mesh, their cut faces "
                      "capped (f:inner, f:submesh), and the bond graph in summary.json; auto: solid where "
-                     "the mesh allows it (closed near the impact), else surface, saying why on stderr")
+                     "the mesh allows it (closed), else surface, saying why on stderr")
           ->check(CLI::IsMember({"surface", "solid", "auto"}))
           ->capture_default_str();
   app.add_flag("--solid", o.solid, "The same as --kind solid")->excludes(kind);

@@ -109,7 +109,7 @@ namespace Hedge
         /// axes, as <see cref="FractureShard.PrincipalRotation"/>.</summary>
         public double[] PrincipalRotation()
         {
-            return new FractureShard { PrincipalAxes = PrincipalAxes, Closed = true }.PrincipalRotation();
+            return new FractureShard { PrincipalAxes = PrincipalAxes, Closed = true, Mass = Mass }.PrincipalRotation();
         }
 
         public void Dispose()
@@ -204,7 +204,7 @@ namespace Hedge
         }
 
         /// <summary>Why this mesh cannot be broken as a solid at the impact with these options, or "" when it can: a
-        /// non-finite impact, no face within the tolerance, a mesh open or non-manifold near the impact, or an option
+        /// non-finite impact, no face within the tolerance, a mesh that is open (anywhere) or non-manifold near the impact, or an option
         /// out of range. Checks the broken region only, through the picking tree; changes nothing. For "auto": break
         /// with <see cref="Fracture"/> where this answers.</summary>
         public string SolidFractureRefusal(Vec3 impact, SolidFractureOptions options)

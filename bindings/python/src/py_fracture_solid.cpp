@@ -157,7 +157,7 @@ void bind_fracture_solid(py::module_& m, py::class_<Mesh>& mesh) {
            "than the largest) and UVs by planar projection in model units. density: for the mass "
            "properties. hulls: compute each piece's convex hull. Located through the mesh's picking "
            "tree, so a strike costs the broken region. InvalidArgumentError (the mesh unchanged) for "
-           "a mesh open or non-manifold near the impact (solid_fracture_refusal() says why without "
+           "a mesh open anywhere or non-manifold near the impact (solid_fracture_refusal() says why without "
            "raising; fracture() breaks such a mesh), a point off the surface or not finite, an "
            "unknown material or a bad option; ViewsExportedError while numpy views are alive. "
            "Releases the GIL.");
@@ -165,7 +165,7 @@ void bind_fracture_solid(py::module_& m, py::class_<Mesh>& mesh) {
            py::kw_only(), py::arg("seed") = 0, py::arg("radius") = 0.0, py::arg("radius_fraction") = 0.25,
            py::arg("inner_submesh") = -1, py::arg("density") = 1.0, py::arg("tolerance") = 0.0,
            "Why fracture_solid() with these arguments would be refused, or None if it would not: the "
-           "mesh open or non-manifold near the impact (naming a boundary edge), no face within "
+           "mesh open anywhere or non-manifold near the impact (naming a boundary edge), no face within "
            "tolerance of point, an illegal option. Checks only the faces of the broken region, so it "
            "costs the region. Use it to choose between fracture_solid() and fracture() (surface "
            "fracture, which breaks open meshes). Releases the GIL.");
