@@ -250,6 +250,13 @@ void add_fracture_arguments(CLI::App* app, FractureCommandOptions* o) {
       0);
   add_json_flag(*app, o->json, "Print the summary as JSON, with timings");
   add_solid_fracture_arguments(*app, o->solid);
+  app->callback([o] {
+    const bool solid = o->solid.solid || o->solid.kind != "surface";
+    if (solid && o->units == "edge_lengths")
+      throw CLI::ValidationError("--units",
+                                 "solid fracture takes its break radius in model units or as a "
+                                 "fraction of the diagonal, not in edge_lengths");
+  });
 }
 
 }  // namespace

@@ -89,11 +89,10 @@ SolidFractureOptions solid_options(const SolidFractureCliOptions& s, const Solid
       o.radius = in.radius;
     else if (units == "diagonal_fraction")
       o.radius_fraction = in.radius;
-    else
-      throw CLI::ValidationError("--units",
-                                 "solid fracture takes its break radius in model units or as a "
-                                 "fraction of the diagonal, not in " +
-                                     units);
+    else  // a material file in edge lengths (--units edge_lengths is a usage error)
+      throw InvalidInputError("fracture: material '" + o.material.name + "' sizes its rings in " + units +
+                              ": solid fracture takes its break radius in model units or as a fraction of "
+                              "the diagonal (give --break-radius or --units)");
   }
   o.seed = in.seed;
   o.density = in.density;
