@@ -864,8 +864,9 @@ HEDGE_API hedge_status hedge_solid_fracture_options_default(int32_t preset,
                                                             hedge_solid_fracture_options* out_options);
 /** Why the mesh cannot be solid-fractured at the impact (x, y, z) with these options (NULL: the
  *  stone preset), as a text with its NUL, or "" when it can: a non-finite impact, no face within
- *  the tolerance, a mesh open or non-manifold near the impact, or an illegal option. It checks the
- *  broken region only, through the mesh's picking tree, and changes nothing: a caller that wants
+ *  the tolerance, a mesh open anywhere or non-manifold near the impact, or an illegal option. It
+ *  checks through the mesh's picking tree, which keeps whether the mesh is closed until the mesh
+ *  changes, and changes nothing: a caller that wants
  *  "auto" strikes with hedge_mesh_fracture() where this answers. *out_size receives the bytes
  *  needed; a smaller buffer: HEDGE_ERROR_BUFFER_TOO_SMALL. */
 HEDGE_API hedge_status hedge_solid_fracture_refusal(hedge_mesh* mesh, float x, float y, float z,
