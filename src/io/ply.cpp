@@ -304,7 +304,11 @@ class BodyReader {
       min_record += type_size(p.is_list() ? p.count_type : p.type);
       ++values;
     }
-    if (values == 0 || e.count == 0) return;  // records of no bytes: nothing to read
+    if (e.count == 0) return;
+    if (values == 0) {  // records of no bytes: nothing to read, but vertices must have positions
+      if (e.name == "vertex") src_.fail("the vertex element lacks a scalar x, y or z property", src_.where());
+      return;
+    }
     // A binary record takes at least min_record bytes, an ascii value at least one character and
     // a separator: reject a count the rest of the file cannot hold before looping or allocating.
     constexpr bool binary = std::is_same_v<Source, BinarySource>;

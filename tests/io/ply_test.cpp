@@ -325,6 +325,11 @@ TEST(PlyRead, MalformedHeaders) {
   expect_ply_error("ply\nformat ascii 1.0\nbanana\nend_header\n", "unknown header keyword 'banana'");
   expect_ply_error("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n",
                    "the vertex element lacks a scalar x, y or z property");
+  // No property at all: faces must not index vertices that were never read.
+  expect_ply_error(
+      "ply\nformat ascii 1.0\nelement vertex 4\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n3 0 1 2\n",
+      "the vertex element lacks a scalar x, y or z property");
   expect_ply_error(
       "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int corners\nend_header\n3 0 1 2\n",
       "the 'face' element has no vertex_indices list");
