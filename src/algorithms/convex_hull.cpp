@@ -128,14 +128,15 @@ Simplex find_simplex(const std::vector<Vec3d>& p, double eps) {
 
 // Quickhull on a set that spans a volume. Faces are triangles with their three neighbours; a
 // face's outside set holds the unassigned points beyond its plane, and a max-heap over the faces'
-// farthest points picks the next point to add.
+// farthest points picks the next point to add. The sets are lists threaded through one array of
+// the points (a point is in one set at a time), so that no step allocates: faces are plain values.
 class Quickhull {
  public:
   // A point is outside a face when it lies more than eps beyond its plane, so points on the hull
   // within eps are not added; but a face counts as seen by the point being added as soon as it
   // lies beyond rounding noise, so the hull stays convex to that noise rather than to eps.
   Quickhull(const std::vector<Vec3d>& p, double eps, double extent)
-      : p_(p), eps_(eps), visible_eps_(std::min(eps, 1e-12 * extent)) {}
+      : p_(p), eps_(eps), visible_eps_(std::min(eps, 1e-12 * extent)), next_(p.size(), kNone) {}
 
   // Builds the hull from the simplex; stops early once it has max_vertices vertices (0: never).
   void run(const Simplex& s, std::size_t max_vertices) {
@@ -165,16 +166,26 @@ class Quickhull {
   }
 
  private:
+  // A set of points in the order they were added, linked through next_.
+  struct List {
+    std::uint32_t head = kNone, tail = kNone;
+    bool empty() const { return head == kNone; }
+  };
+  void append(List& l, std::uint32_t i) {
+    next_[i] = kNone;
+    (l.head == kNone ? l.head : next_[l.tail]) = i;
+    l.tail = i;
+  }
   struct Face_ {
     std::array<std::uint32_t, 3> v{};   // counter-clockwise seen from outside
     std::array<std::uint32_t, 3> nb{};  // nb[i]: the face across edge v[i] -> v[i + 1]
     Vec3d normal;
     double offset = 0;
-    std::vector<std::uint32_t> outside;
+    List outside;
     // Points within eps of the plane, neither outside nor clearly inside. They are sorted again
     // when the face is replaced or a face is built next to it: a nearly coplanar new face, tilted
     // against this one, may have them outside.
-    std::vector<std::uint32_t> near;
+    List near;
     std::uint32_t farthest = kNone;
     double farthest_distance = 0;
     bool alive = true;
@@ -187,11 +198,10 @@ class Quickhull {
   double distance(const Face_& f, std::uint32_t i) const { return dot(f.normal, p_[i]) - f.offset; }
 
   std::uint32_t new_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    Face_ f;
+    Face_& f = faces_.emplace_back();
     f.v = {a, b, c};
     f.normal = triangle_normal(p_[a], p_[b], p_[c]);
     f.offset = dot(f.normal, (p_[a] + p_[b] + p_[c]) * (1.0 / 3.0));
-    faces_.push_back(std::move(f));
     return static_cast<std::uint32_t>(faces_.size() - 1);
   }
 
@@ -207,10 +217,10 @@ class Quickhull {
     if (best == kNone || best_d < -eps_) return;  // inside
     Face_& f = faces_[best];
     if (best_d <= eps_) {  // on the hull within the tolerance, for now
-      f.near.push_back(i);
+      append(f.near, i);
       return;
     }
-    f.outside.push_back(i);
+    append(f.outside, i);
     if (best_d > f.farthest_distance) f.farthest_distance = best_d, f.farthest = i;
   }
 
@@ -223,6 +233,7 @@ class Quickhull {
     auto [a, b, c, d] = s.v;
     if (dot(triangle_normal(p_[a], p_[b], p_[c]), p_[d] - p_[a]) > 0) std::swap(b, c);
     // Now d is below abc: abc, and the three faces through d, wind outward.
+    faces_.reserve(8 * p_.size() + 16);
     const std::array<std::uint32_t, 4> f{new_face(a, b, c), new_face(a, d, b), new_face(b, d, c),
                                          new_face(c, d, a)};
     for (std::uint32_t x : f)
@@ -306,22 +317,24 @@ class Quickhull {
 
     // The visible faces' outside points go to the new faces or, now inside, are dropped.
     for (std::uint32_t f : visible_) {
-      Face_& dead = faces_[f];
-      dead.alive = false;
-      for (std::uint32_t i : dead.outside)
+      faces_[f].alive = false;
+      const List outside = std::exchange(faces_[f].outside, {}), near = std::exchange(faces_[f].near, {});
+      for (std::uint32_t i = outside.head, after; i != kNone; i = after) {
+        after = next_[i];
         if (i != apex) assign(i, new_faces_);
-      for (std::uint32_t i : dead.near) assign(i, new_faces_);
-      std::vector<std::uint32_t>().swap(dead.outside);
-      std::vector<std::uint32_t>().swap(dead.near);
+      }
+      for (std::uint32_t i = near.head, after; i != kNone; i = after) {
+        after = next_[i];
+        assign(i, new_faces_);
+      }
     }
     // The near points of the faces beyond the horizon, against their face and the new ones.
     for (const HorizonEdge& e : horizon_) {
-      Face_& outer = faces_[e.outer];
-      if (outer.near.empty()) continue;
-      std::vector<std::uint32_t> near;
-      near.swap(outer.near);
+      if (faces_[e.outer].near.empty()) continue;
+      const List near = std::exchange(faces_[e.outer].near, {});
       std::array<std::uint32_t, 1> self{e.outer};
-      for (std::uint32_t i : near) {
+      for (std::uint32_t i = near.head, after; i != kNone; i = after) {
+        after = next_[i];
         std::uint32_t best = kNone;
         double best_d = -std::numeric_limits<double>::infinity();
         for (std::uint32_t f : new_faces_)
@@ -339,17 +352,22 @@ class Quickhull {
   void drop(std::uint32_t f0) {
     Face_& f = faces_[f0];
     dropped_ = std::max(dropped_, f.farthest_distance);
-    std::erase(f.outside, f.farthest);
+    const List outside = std::exchange(f.outside, {});
+    for (std::uint32_t i = outside.head, after; i != kNone; i = after) {
+      after = next_[i];
+      if (i != f.farthest) append(f.outside, i);
+    }
     f.farthest = kNone;
     f.farthest_distance = 0;
-    for (std::uint32_t i : f.outside)
+    for (std::uint32_t i = f.outside.head; i != kNone; i = next_[i])
       if (const double d = distance(f, i); d > f.farthest_distance) f.farthest_distance = d, f.farthest = i;
     push_if_outside({&f0, 1});
   }
 
   const std::vector<Vec3d>& p_;
   double eps_, visible_eps_;
-  double dropped_ = 0;  // the farthest a point left out by drop() was beyond its face
+  double dropped_ = 0;               // the farthest a point left out by drop() was beyond its face
+  std::vector<std::uint32_t> next_;  // the point after each in its face's outside or near list
   std::vector<Face_> faces_;
   std::priority_queue<std::pair<double, std::uint32_t>> heap_;
   std::size_t n_vertices_ = 0;
