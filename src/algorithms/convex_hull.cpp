@@ -5,10 +5,10 @@
 #include <cmath>
 #include <limits>
 #include <queue>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
-#include "hedge/core/build.h"
 #include "hedge/error.h"
 
 namespace hedge {
@@ -157,13 +157,9 @@ class Quickhull {
   // The largest distance of a point still outside beyond its face's plane (0 after a full run).
   double max_outside_distance() const { return std::max(dropped_, heap_.empty() ? 0.0 : heap_.top().first); }
 
-  // The live faces as triangles of point indices, in creation order.
-  std::vector<std::array<std::uint32_t, 3>> triangles() const {
-    std::vector<std::array<std::uint32_t, 3>> t;
-    for (const Face_& f : faces_)
-      if (f.alive) t.push_back(f.v);
-    return t;
-  }
+  // The hull as a mesh of the points it uses, numbered in input order (so that the output depends
+  // on the input only), and `input_index` (hull vertex -> point).
+  SurfaceMesh mesh(std::span<const Vec3> points, std::vector<std::uint32_t>& input_index) const;
 
  private:
   // A set of points in the order they were added, linked through next_.
@@ -377,29 +373,65 @@ class Quickhull {
   std::vector<HorizonEdge> horizon_;
 };
 
+// The live faces are linked into a mesh directly, as their neighbours are known. The numbering is
+// the one build() gives the same triangles (faces in creation order; an edge made by the first
+// corner that crosses it, its other half-edge taken by the second; a vertex holds its last corner's
+// half-edge, a face the half-edge entering its first corner), without build()'s pairing and checks:
+// the hull is closed and manifold by construction (every horizon is one loop).
+SurfaceMesh Quickhull::mesh(std::span<const Vec3> points, std::vector<std::uint32_t>& input_index) const {
+  std::vector<std::uint32_t> rank(faces_.size(), kNone), index(points.size(), kNone);
+  std::uint32_t n_faces = 0;
+  for (std::uint32_t f = 0; f < faces_.size(); ++f)
+    if (faces_[f].alive) {
+      rank[f] = n_faces++;
+      for (std::uint32_t v : faces_[f].v) index[v] = 0;
+    }
+  input_index.clear();
+  for (std::uint32_t i = 0; i < points.size(); ++i)
+    if (index[i] != kNone) {
+      index[i] = static_cast<std::uint32_t>(input_index.size());
+      input_index.push_back(i);
+    }
+  SurfaceMesh m;
+  m.resize(input_index.size(), 3 * std::size_t(n_faces) / 2, n_faces);
+  for (std::uint32_t v = 0; v < input_index.size(); ++v) m.position(Vertex(v)) = points[input_index[v]];
+  std::vector<Index> he(3 * std::size_t(n_faces));  // face rank k's corner i -> its half-edge
+  Index n_edges = 0;
+  for (std::uint32_t f = 0; f < faces_.size(); ++f) {
+    const std::uint32_t k = rank[f];
+    if (k == kNone) continue;
+    const Face_& face = faces_[f];
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::uint32_t g = face.nb[i];
+      if (rank[g] > k) {  // the edge is new
+        he[3 * k + i] = 2 * n_edges++;
+        continue;
+      }
+      const Face_& other = faces_[g];  // it made the edge: it runs the other way there
+      std::size_t j = 0;
+      while (j < 3 && (other.v[j] != face.v[(i + 1) % 3] || other.v[(j + 1) % 3] != face.v[i])) ++j;
+      if (j == 3) throw std::logic_error("convex_hull: neighbouring faces do not share their edge");
+      he[3 * k + i] = he[3 * rank[g] + j] + 1;
+    }
+    for (std::size_t i = 0; i < 3; ++i) {
+      const Halfedge h(he[3 * k + i]);
+      m.set_vertex(h, Vertex(index[face.v[(i + 1) % 3]]));
+      m.set_next(h, Halfedge(he[3 * k + (i + 1) % 3]));
+      m.set_face(h, Face(k));
+      m.set_halfedge(Vertex(index[face.v[i]]), h);
+    }
+    m.set_halfedge(Face(k), Halfedge(he[3 * k + 2]));
+  }
+  return m;
+}
+
 // The hull of a set known to span a volume, as a mesh of the points it uses.
 ConvexHull solid_hull(std::span<const Vec3> points, const Centred& c, const Simplex& s, double eps,
                       std::size_t max_vertices) {
   Quickhull qh(c.p, eps, c.extent);
   qh.run(s, max_vertices);
-  std::vector<std::array<std::uint32_t, 3>> tris = qh.triangles();
-  // Hull vertices numbered in input order, so the output depends on the input only.
-  std::vector<std::uint32_t> index(points.size(), kNone);
-  for (const auto& t : tris)
-    for (std::uint32_t v : t) index[v] = 0;
   ConvexHull hull;
-  std::vector<Vec3> positions;
-  for (std::uint32_t i = 0; i < points.size(); ++i)
-    if (index[i] != kNone) {
-      index[i] = static_cast<std::uint32_t>(positions.size());
-      positions.push_back(points[i]);
-      hull.input_index.push_back(i);
-    }
-  std::vector<std::uint32_t> flat;
-  flat.reserve(3 * tris.size());
-  for (const auto& t : tris)
-    for (std::uint32_t v : t) flat.push_back(index[v]);
-  hull.mesh = build_triangles(positions, flat, {.corner_attributes = false});
+  hull.mesh = qh.mesh(points, hull.input_index);
   hull.dimension = HullDimension::solid;
   hull.tolerance = eps;
   hull.max_outside_distance = qh.max_outside_distance();
