@@ -5,10 +5,10 @@
 #include <cmath>
 #include <limits>
 #include <queue>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
-#include "hedge/core/build.h"
 #include "hedge/error.h"
 
 namespace hedge {
@@ -128,14 +128,15 @@ Simplex find_simplex(const std::vector<Vec3d>& p, double eps) {
 
 // Quickhull on a set that spans a volume. Faces are triangles with their three neighbours; a
 // face's outside set holds the unassigned points beyond its plane, and a max-heap over the faces'
-// farthest points picks the next point to add.
+// farthest points picks the next point to add. The sets are lists threaded through one array of
+// the points (a point is in one set at a time), so that no step allocates: faces are plain values.
 class Quickhull {
  public:
   // A point is outside a face when it lies more than eps beyond its plane, so points on the hull
   // within eps are not added; but a face counts as seen by the point being added as soon as it
   // lies beyond rounding noise, so the hull stays convex to that noise rather than to eps.
   Quickhull(const std::vector<Vec3d>& p, double eps, double extent)
-      : p_(p), eps_(eps), visible_eps_(std::min(eps, 1e-12 * extent)) {}
+      : p_(p), eps_(eps), visible_eps_(std::min(eps, 1e-12 * extent)), next_(p.size(), kNone) {}
 
   // Builds the hull from the simplex; stops early once it has max_vertices vertices (0: never).
   void run(const Simplex& s, std::size_t max_vertices) {
@@ -156,25 +157,31 @@ class Quickhull {
   // The largest distance of a point still outside beyond its face's plane (0 after a full run).
   double max_outside_distance() const { return std::max(dropped_, heap_.empty() ? 0.0 : heap_.top().first); }
 
-  // The live faces as triangles of point indices, in creation order.
-  std::vector<std::array<std::uint32_t, 3>> triangles() const {
-    std::vector<std::array<std::uint32_t, 3>> t;
-    for (const Face_& f : faces_)
-      if (f.alive) t.push_back(f.v);
-    return t;
-  }
+  // The hull as a mesh of the points it uses, numbered in input order (so that the output depends
+  // on the input only), and `input_index` (hull vertex -> point).
+  SurfaceMesh mesh(std::span<const Vec3> points, std::vector<std::uint32_t>& input_index) const;
 
  private:
+  // A set of points in the order they were added, linked through next_.
+  struct List {
+    std::uint32_t head = kNone, tail = kNone;
+    bool empty() const { return head == kNone; }
+  };
+  void append(List& l, std::uint32_t i) {
+    next_[i] = kNone;
+    (l.head == kNone ? l.head : next_[l.tail]) = i;
+    l.tail = i;
+  }
   struct Face_ {
     std::array<std::uint32_t, 3> v{};   // counter-clockwise seen from outside
     std::array<std::uint32_t, 3> nb{};  // nb[i]: the face across edge v[i] -> v[i + 1]
     Vec3d normal;
     double offset = 0;
-    std::vector<std::uint32_t> outside;
+    List outside;
     // Points within eps of the plane, neither outside nor clearly inside. They are sorted again
     // when the face is replaced or a face is built next to it: a nearly coplanar new face, tilted
     // against this one, may have them outside.
-    std::vector<std::uint32_t> near;
+    List near;
     std::uint32_t farthest = kNone;
     double farthest_distance = 0;
     bool alive = true;
@@ -187,11 +194,10 @@ class Quickhull {
   double distance(const Face_& f, std::uint32_t i) const { return dot(f.normal, p_[i]) - f.offset; }
 
   std::uint32_t new_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    Face_ f;
+    Face_& f = faces_.emplace_back();
     f.v = {a, b, c};
     f.normal = triangle_normal(p_[a], p_[b], p_[c]);
     f.offset = dot(f.normal, (p_[a] + p_[b] + p_[c]) * (1.0 / 3.0));
-    faces_.push_back(std::move(f));
     return static_cast<std::uint32_t>(faces_.size() - 1);
   }
 
@@ -207,10 +213,10 @@ class Quickhull {
     if (best == kNone || best_d < -eps_) return;  // inside
     Face_& f = faces_[best];
     if (best_d <= eps_) {  // on the hull within the tolerance, for now
-      f.near.push_back(i);
+      append(f.near, i);
       return;
     }
-    f.outside.push_back(i);
+    append(f.outside, i);
     if (best_d > f.farthest_distance) f.farthest_distance = best_d, f.farthest = i;
   }
 
@@ -223,6 +229,7 @@ class Quickhull {
     auto [a, b, c, d] = s.v;
     if (dot(triangle_normal(p_[a], p_[b], p_[c]), p_[d] - p_[a]) > 0) std::swap(b, c);
     // Now d is below abc: abc, and the three faces through d, wind outward.
+    faces_.reserve(8 * p_.size() + 16);
     const std::array<std::uint32_t, 4> f{new_face(a, b, c), new_face(a, d, b), new_face(b, d, c),
                                          new_face(c, d, a)};
     for (std::uint32_t x : f)
@@ -306,22 +313,24 @@ class Quickhull {
 
     // The visible faces' outside points go to the new faces or, now inside, are dropped.
     for (std::uint32_t f : visible_) {
-      Face_& dead = faces_[f];
-      dead.alive = false;
-      for (std::uint32_t i : dead.outside)
+      faces_[f].alive = false;
+      const List outside = std::exchange(faces_[f].outside, {}), near = std::exchange(faces_[f].near, {});
+      for (std::uint32_t i = outside.head, after; i != kNone; i = after) {
+        after = next_[i];
         if (i != apex) assign(i, new_faces_);
-      for (std::uint32_t i : dead.near) assign(i, new_faces_);
-      std::vector<std::uint32_t>().swap(dead.outside);
-      std::vector<std::uint32_t>().swap(dead.near);
+      }
+      for (std::uint32_t i = near.head, after; i != kNone; i = after) {
+        after = next_[i];
+        assign(i, new_faces_);
+      }
     }
     // The near points of the faces beyond the horizon, against their face and the new ones.
     for (const HorizonEdge& e : horizon_) {
-      Face_& outer = faces_[e.outer];
-      if (outer.near.empty()) continue;
-      std::vector<std::uint32_t> near;
-      near.swap(outer.near);
+      if (faces_[e.outer].near.empty()) continue;
+      const List near = std::exchange(faces_[e.outer].near, {});
       std::array<std::uint32_t, 1> self{e.outer};
-      for (std::uint32_t i : near) {
+      for (std::uint32_t i = near.head, after; i != kNone; i = after) {
+        after = next_[i];
         std::uint32_t best = kNone;
         double best_d = -std::numeric_limits<double>::infinity();
         for (std::uint32_t f : new_faces_)
@@ -339,17 +348,22 @@ class Quickhull {
   void drop(std::uint32_t f0) {
     Face_& f = faces_[f0];
     dropped_ = std::max(dropped_, f.farthest_distance);
-    std::erase(f.outside, f.farthest);
+    const List outside = std::exchange(f.outside, {});
+    for (std::uint32_t i = outside.head, after; i != kNone; i = after) {
+      after = next_[i];
+      if (i != f.farthest) append(f.outside, i);
+    }
     f.farthest = kNone;
     f.farthest_distance = 0;
-    for (std::uint32_t i : f.outside)
+    for (std::uint32_t i = f.outside.head; i != kNone; i = next_[i])
       if (const double d = distance(f, i); d > f.farthest_distance) f.farthest_distance = d, f.farthest = i;
     push_if_outside({&f0, 1});
   }
 
   const std::vector<Vec3d>& p_;
   double eps_, visible_eps_;
-  double dropped_ = 0;  // the farthest a point left out by drop() was beyond its face
+  double dropped_ = 0;               // the farthest a point left out by drop() was beyond its face
+  std::vector<std::uint32_t> next_;  // the point after each in its face's outside or near list
   std::vector<Face_> faces_;
   std::priority_queue<std::pair<double, std::uint32_t>> heap_;
   std::size_t n_vertices_ = 0;
@@ -359,29 +373,65 @@ class Quickhull {
   std::vector<HorizonEdge> horizon_;
 };
 
+// The live faces are linked into a mesh directly, as their neighbours are known. The numbering is
+// the one build() gives the same triangles (faces in creation order; an edge made by the first
+// corner that crosses it, its other half-edge taken by the second; a vertex holds its last corner's
+// half-edge, a face the half-edge entering its first corner), without build()'s pairing and checks:
+// the hull is closed and manifold by construction (every horizon is one loop).
+SurfaceMesh Quickhull::mesh(std::span<const Vec3> points, std::vector<std::uint32_t>& input_index) const {
+  std::vector<std::uint32_t> rank(faces_.size(), kNone), index(points.size(), kNone);
+  std::uint32_t n_faces = 0;
+  for (std::uint32_t f = 0; f < faces_.size(); ++f)
+    if (faces_[f].alive) {
+      rank[f] = n_faces++;
+      for (std::uint32_t v : faces_[f].v) index[v] = 0;
+    }
+  input_index.clear();
+  for (std::uint32_t i = 0; i < points.size(); ++i)
+    if (index[i] != kNone) {
+      index[i] = static_cast<std::uint32_t>(input_index.size());
+      input_index.push_back(i);
+    }
+  SurfaceMesh m;
+  m.resize(input_index.size(), 3 * std::size_t(n_faces) / 2, n_faces);
+  for (std::uint32_t v = 0; v < input_index.size(); ++v) m.position(Vertex(v)) = points[input_index[v]];
+  std::vector<Index> he(3 * std::size_t(n_faces));  // face rank k's corner i -> its half-edge
+  Index n_edges = 0;
+  for (std::uint32_t f = 0; f < faces_.size(); ++f) {
+    const std::uint32_t k = rank[f];
+    if (k == kNone) continue;
+    const Face_& face = faces_[f];
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::uint32_t g = face.nb[i];
+      if (rank[g] > k) {  // the edge is new
+        he[3 * k + i] = 2 * n_edges++;
+        continue;
+      }
+      const Face_& other = faces_[g];  // it made the edge: it runs the other way there
+      std::size_t j = 0;
+      while (j < 3 && (other.v[j] != face.v[(i + 1) % 3] || other.v[(j + 1) % 3] != face.v[i])) ++j;
+      if (j == 3) throw std::logic_error("convex_hull: neighbouring faces do not share their edge");
+      he[3 * k + i] = he[3 * rank[g] + j] + 1;
+    }
+    for (std::size_t i = 0; i < 3; ++i) {
+      const Halfedge h(he[3 * k + i]);
+      m.set_vertex(h, Vertex(index[face.v[(i + 1) % 3]]));
+      m.set_next(h, Halfedge(he[3 * k + (i + 1) % 3]));
+      m.set_face(h, Face(k));
+      m.set_halfedge(Vertex(index[face.v[i]]), h);
+    }
+    m.set_halfedge(Face(k), Halfedge(he[3 * k + 2]));
+  }
+  return m;
+}
+
 // The hull of a set known to span a volume, as a mesh of the points it uses.
 ConvexHull solid_hull(std::span<const Vec3> points, const Centred& c, const Simplex& s, double eps,
                       std::size_t max_vertices) {
   Quickhull qh(c.p, eps, c.extent);
   qh.run(s, max_vertices);
-  std::vector<std::array<std::uint32_t, 3>> tris = qh.triangles();
-  // Hull vertices numbered in input order, so the output depends on the input only.
-  std::vector<std::uint32_t> index(points.size(), kNone);
-  for (const auto& t : tris)
-    for (std::uint32_t v : t) index[v] = 0;
   ConvexHull hull;
-  std::vector<Vec3> positions;
-  for (std::uint32_t i = 0; i < points.size(); ++i)
-    if (index[i] != kNone) {
-      index[i] = static_cast<std::uint32_t>(positions.size());
-      positions.push_back(points[i]);
-      hull.input_index.push_back(i);
-    }
-  std::vector<std::uint32_t> flat;
-  flat.reserve(3 * tris.size());
-  for (const auto& t : tris)
-    for (std::uint32_t v : t) flat.push_back(index[v]);
-  hull.mesh = build_triangles(positions, flat, {.corner_attributes = false});
+  hull.mesh = qh.mesh(points, hull.input_index);
   hull.dimension = HullDimension::solid;
   hull.tolerance = eps;
   hull.max_outside_distance = qh.max_outside_distance();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "hedge/algorithms/geometry.h"
+#include "hedge/core/build.h"
 #include "hedge/error.h"
 
 namespace hedge {
@@ -98,6 +99,34 @@ TEST(ConvexHull, CubeCornersWithInteriorPointsGiveTheCube) {
   EXPECT_NEAR(volume(h.mesh), 1, 1e-12);
   for (std::uint32_t i : h.input_index) EXPECT_GE(i, 200u);
   expect_hull_of(h, pts);
+}
+
+// The hull's mesh is linked directly from the quickhull's faces; it must be numbered as build()
+// numbers the same triangles (so that results did not change when build() was left out).
+TEST(ConvexHull, TheMeshIsNumberedAsBuildNumbersItsTriangles) {
+  for (const std::vector<Vec3>& pts : {ball(300, 5), sphere(400, 6), cube_corners()}) {
+    const ConvexHull h = convex_hull(pts);
+    const SurfaceMesh& m = h.mesh;
+    ASSERT_TRUE(m.validate().empty());
+    std::vector<Vec3> positions;
+    for (Vertex v : m.vertices()) positions.push_back(m.position(v));
+    std::vector<std::uint32_t> tris;
+    for (Face f : m.faces()) {  // a face's half-edge enters its first corner
+      const Halfedge first = m.next(m.halfedge(f));
+      for (Halfedge e : {first, m.next(first), m.next(m.next(first))}) tris.push_back(m.from_vertex(e).idx());
+    }
+    const SurfaceMesh b = build_triangles(positions, tris, {.corner_attributes = false});
+    ASSERT_EQ(b.vertex_slots(), m.vertex_slots());
+    ASSERT_EQ(b.halfedge_slots(), m.halfedge_slots());
+    ASSERT_EQ(b.face_slots(), m.face_slots());
+    for (Vertex v : m.vertices()) EXPECT_EQ(b.halfedge(v), m.halfedge(v)) << "vertex " << v.idx();
+    for (Face f : m.faces()) EXPECT_EQ(b.halfedge(f), m.halfedge(f)) << "face " << f.idx();
+    for (Halfedge e : m.halfedges()) {
+      EXPECT_EQ(b.to_vertex(e), m.to_vertex(e)) << "half-edge " << e.idx();
+      EXPECT_EQ(b.next(e), m.next(e)) << "half-edge " << e.idx();
+      EXPECT_EQ(b.face(e), m.face(e)) << "half-edge " << e.idx();
+    }
+  }
 }
 
 TEST(ConvexHull, PointsOnTheCubesFacesAndEdgesAreNotVertices) {
