@@ -35,7 +35,7 @@
 // edge), the break points and the region's planes are moved by a small seeded amount (1e-5 of the
 // break radius) and the strike is computed again, at most 6 times in all; the mesh is edited only
 // once every piece and the patch of the remaining object are known to be closed and manifold, so a
-// refused strike leaves it as it was. About 2 in 10^4 random strikes are refused (docs/fracture.md).
+// refused strike leaves it as it was. None of 10^4 random strikes was refused (docs/fracture.md).
 //
 // Properties: outer faces of a piece keep their face properties ("f:submesh" included); vertex and
 // corner properties (UVs, normals) are interpolated at new points, linearly along an edge and
