@@ -14,6 +14,7 @@ namespace hedge::solid_detail {
 namespace {
 
 constexpr const char* kTexcoord = "h:texcoord";
+constexpr const char* kCornerNormal = "h:normal";
 
 //! Barycentric weights of x in triangle (a, b, c), clamped to the triangle.
 std::array<float, 3> barycentric(const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& x) {
@@ -85,6 +86,21 @@ Vec2 cap_uv(const Plane& plane, const Vec3d& x) {
   return {float(dot(x, u)), float(dot(x, v))};
 }
 
+//! The unit normal of a cap on `plane` pointing out of cell `cell`'s piece: a cell lies below a
+//! plane of the region, and below the bisector of break points i < j when it is i's.
+Vec3 cap_normal(const PlaneSet& planes, std::uint32_t plane, std::size_t cell) {
+  const Vec3d n = normalize(planes.planes[plane].n);
+  const std::int64_t i = planes.pair_of[plane].first;
+  return to_float(i < 0 || std::size_t(i) == cell ? n : -n);
+}
+
+//! Corner normals blended at a new point are made unit again (a zero one stays zero).
+void renormalize(HalfedgeProperty<Vec3> normal, Halfedge h) {
+  const Vec3 n = normal[h];
+  const float l = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+  if (l > 0) normal[h] = n * (1 / l);
+}
+
 //! Properties of a face the patch adds: a cap's marks and UVs, or those of its source face.
 void set_patch_face_properties(SurfaceMesh& m, const Geometry& g, const Strike& strike, std::uint32_t from,
                                Face f, std::int32_t inner) {
@@ -94,6 +110,11 @@ void set_patch_face_properties(SurfaceMesh& m, const Geometry& g, const Strike& 
     if (HalfedgeProperty<Vec2> uv = m.get_halfedge_property<Vec2>(kTexcoord))
       for (Halfedge h : m.halfedges(f))
         uv[h] = cap_uv(strike.planes.planes[from & ~kCapBit], to_double(m.position(m.to_vertex(h))));
+    // The remaining object lies outside the region: its caps face into it, flat as a cut is.
+    if (HalfedgeProperty<Vec3> normal = m.get_halfedge_property<Vec3>(kCornerNormal)) {
+      const Vec3 n = -cap_normal(strike.planes, from & ~kCapBit, kSolidRemaining);
+      for (Halfedge h : m.halfedges(f)) normal[h] = n;
+    }
     return;
   }
   const SoupTriangle& st = strike.soup[from];
@@ -101,9 +122,11 @@ void set_patch_face_properties(SurfaceMesh& m, const Geometry& g, const Strike& 
   if (m.halfedge_properties().array_count() == 0) return;
   const Vec3d a = g.vertex(st.v[0]), b = g.vertex(st.v[1]), c = g.vertex(st.v[2]);
   const Index src[3] = {st.corner[0].idx(), st.corner[1].idx(), st.corner[2].idx()};
+  const HalfedgeProperty<Vec3> normal = m.get_halfedge_property<Vec3>(kCornerNormal);
   for (Halfedge h : m.halfedges(f)) {
     const auto w = barycentric(a, b, c, to_double(m.position(m.to_vertex(h))));
     m.halfedge_properties().interpolate(h.idx(), src, w.data(), 3);
+    if (normal) renormalize(normal, h);
   }
 }
 
@@ -137,6 +160,7 @@ std::vector<SolidPiece> assemble_pieces(const StrikeInput& in, Strike& strike, s
     FaceProperty<std::uint8_t> inner_mark = out.face_property<std::uint8_t>(kInnerProperty, 0);
     FaceProperty<std::int32_t> submesh = out.face_property<std::int32_t>(kSubmeshProperty, 0);
     HalfedgeProperty<Vec2> uv = out.get_halfedge_property<Vec2>(kTexcoord);
+    HalfedgeProperty<Vec3> normal = out.get_halfedge_property<Vec3>(kCornerNormal);
     const BasePropertyArray* positions = out.positions().array();
     const KeyedSurface& s = d.surface;
     // build() keeps the input's order: point i is vertex i, triangle i face i.
@@ -156,6 +180,11 @@ std::vector<SolidPiece> assemble_pieces(const StrikeInput& in, Strike& strike, s
         if (uv)
           for (Halfedge h : out.halfedges(f))
             uv[h] = cap_uv(strike.planes.planes[from & ~kCapBit], s.points[out.to_vertex(h).idx()].second);
+        // Flat, as a cut is: the plane's normal out of the piece.
+        if (normal) {
+          const Vec3 n = cap_normal(strike.planes, from & ~kCapBit, d.cell);
+          for (Halfedge h : out.halfedges(f)) normal[h] = n;
+        }
         continue;
       }
       const SoupTriangle& st = strike.soup[from];
@@ -167,6 +196,7 @@ std::vector<SolidPiece> assemble_pieces(const StrikeInput& in, Strike& strike, s
         const auto w = barycentric(a, b, c, s.points[out.to_vertex(h).idx()].second);
         blend_across(out.halfedge_properties(), nh, h.idx(), m.halfedge_properties(), src, w.data(), 3,
                      nullptr);
+        if (normal) renormalize(normal, h);
       }
     }
     // Of the cap faces as built (float positions), so it is what a caller measures on the mesh.

@@ -322,10 +322,20 @@ bool crosses(const P2& a, const P2& b, const P2& c, const P2& d) {
   return ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
 }
 
+//! True if p lies on the open segment ab: exactly on its line, strictly between its ends.
+bool on_segment(const P2& a, const P2& b, const P2& p) {
+  if (orient(a, b, p) != 0) return false;
+  const double t = (p[0] - a[0]) * (b[0] - a[0]) + (p[1] - a[1]) * (b[1] - a[1]);
+  const double l = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
+  return t > 0 && t < l;
+}
+
 }  // namespace
 
 // Holes are bridged, rightmost first, from their rightmost point to the nearest point of the
-// polygon built so far that sees it (the bridge crosses no edge of the polygon or of a hole left);
+// polygon built so far that sees it (the bridge crosses no edge of the polygon or of a hole left,
+// and passes through none of their points: a bridge along a row of points, as a cut through a
+// circle's leftmost and rightmost points makes, would cross the hole without crossing an edge);
 // then ears are clipped, the convex corner with no other point inside first, and where none is
 // left (rounding) the most convex corner of three distinct points.
 bool triangulate_with_holes(const std::vector<P2>& outer_xy, const std::vector<std::uint32_t>& outer_id,
@@ -362,12 +372,12 @@ bool triangulate_with_holes(const std::vector<P2>& outer_xy, const std::vector<s
     for (const auto& [d2, i] : cand) {
       bool clear = true;
       for (std::size_t a = 0; a < xy.size() && clear; ++a)
-        clear = !crosses(m, xy[i], xy[a], xy[(a + 1) % xy.size()]);
+        clear = !crosses(m, xy[i], xy[a], xy[(a + 1) % xy.size()]) && !on_segment(m, xy[i], xy[a]);
       for (std::size_t g = 0; g < holes_xy.size() && clear; ++g) {
         if (done[g]) continue;
         const auto& l = holes_xy[g];
         for (std::size_t a = 0; a < l.size() && clear; ++a)
-          clear = !crosses(m, xy[i], l[a], l[(a + 1) % l.size()]);
+          clear = !crosses(m, xy[i], l[a], l[(a + 1) % l.size()]) && !on_segment(m, xy[i], l[a]);
       }
       if (clear) {
         pick = i;

@@ -53,6 +53,25 @@ TEST(FractureSolidClip, ConcavePolygonWithTwoHoles) {
   EXPECT_NEAR(area_of(xy, tris, ids), 20 - 2, 1e-12);
 }
 
+TEST(FractureSolidClip, HoleBridgedAroundItsOwnPointInLine) {
+  // The outer point nearest the hole's rightmost point (3, 1) is (0, 1), in line with the hole's
+  // leftmost point (1, 1): a bridge there runs across the hole through that point, crossing no
+  // edge, and the ears clipped then overlap. (A cut through the anchor's round hole: its leftmost
+  // and rightmost points in one row with a point of the outline.)
+  const std::vector<P2> outer{{0, 1}, {2, -20}, {20, 1}, {2, 20}};
+  const std::vector<std::uint32_t> outer_id{0, 1, 2, 3};
+  const std::vector<std::vector<P2>> holes{{{1, 1}, {2, 1.5}, {3, 1}, {2, 0.5}}};
+  const std::vector<std::vector<std::uint32_t>> hole_ids{{4, 5, 6, 7}};
+  std::vector<std::array<std::uint32_t, 3>> tris;
+  ASSERT_TRUE(triangulate_with_holes(outer, outer_id, holes, hole_ids, tris));
+  EXPECT_EQ(tris.size(), 8u);
+  std::vector<P2> xy = outer;
+  xy.insert(xy.end(), holes[0].begin(), holes[0].end());
+  // The outline's area (two triangles on its diagonal y = 1, of base 20 and heights 21 and 19)
+  // less the hole's.
+  EXPECT_NEAR(area_of(xy, tris, {0, 1, 2, 3, 4, 5, 6, 7}), 400 - 1, 1e-9);
+}
+
 TEST(FractureSolidClip, RegionCutByAChainKeepsItsLeftSide) {
   // The unit square in z = 0, cut by a chain from its bottom side to its top side at x = 0.25: the
   // region is on the chain's left, x < 0.25.

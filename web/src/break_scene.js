@@ -142,8 +142,8 @@ export class BreakWorld {
   addPiece(piece, away, speed, innerSubmesh) {
     if (!(piece.mass > 0)) throw new Error(`a piece of mass ${piece.mass} cannot be simulated`);
     this.addBody(piece, away, speed, (toLocal, com, rotation) => {
-      // One group per submesh (toBufferGeometry), moved into the body's frame. The caps' corners
-      // carry no normal: the corner normals are made anew, hard along the caps' rims.
+      // One group per submesh (toBufferGeometry), moved into the body's frame. The corner normals
+      // are made anew, hard along the caps' rims (the caps' own corners carry their plane's).
       piece.mesh.computeCornerNormals(40);
       const geometry = toBufferGeometry(piece.mesh, { texcoords: false, colors: false });
       geometry.applyMatrix4(

@@ -266,8 +266,8 @@ export class PageMesh {
   //! Breaks the closed mesh at `point` into closed pieces (Mesh.fractureSolid; with kind 'auto', an
   //! open mesh by surface fracture); the pieces (or shards) come back with their own meshes, which
   //! the caller disposes.
-  //! The caps' corners carry no normal ("h:normal" is interpolated on the outer faces only), so the
-  //! corner normals are computed again and the next sync uploads everything.
+  //! The corner normals are computed again with the page's crease angle (the caps' corners carry
+  //! their plane's normal, the outer faces' are interpolated), and the next sync uploads everything.
   fractureSolid(point, options) {
     const result = this.mesh.fractureSolid(point, options);
     if (result.kind === 'solid' && this.render) {

@@ -35,16 +35,19 @@
 // edge), the break points and the region's planes are moved by a small seeded amount (1e-5 of the
 // break radius) and the strike is computed again, at most 6 times in all; the mesh is edited only
 // once every piece and the patch of the remaining object are known to be closed and manifold, so a
-// refused strike leaves it as it was. About 2 in 10^4 random strikes are refused (docs/fracture.md).
+// refused strike leaves it as it was. None of 10^4 random strikes was refused (docs/fracture.md).
 //
 // Properties: outer faces of a piece keep their face properties ("f:submesh" included); vertex and
 // corner properties (UVs, normals) are interpolated at new points, linearly along an edge and
-// barycentrically inside a triangle, as the splits of core/operations.h do. Cap faces get the face
-// property "f:inner" (std::uint8_t, 1 on caps, 0 elsewhere), "f:submesh" = inner_submesh and, when
-// the mesh has "h:texcoord" corners, UVs by planar projection in model units: u along the unit
-// vector of the cap plane's normal crossed with the coordinate axis least aligned with it (x, then
-// y, then z on ties), v = normal x u, both measured from the origin. Vertices only caps use (cell
-// vertices) take the default values of vertex properties.
+// barycentrically inside a triangle, as the splits of core/operations.h do; "h:normal" corners so
+// blended are made unit length again. Cap faces get the face property "f:inner" (std::uint8_t, 1
+// on caps, 0 elsewhere), "f:submesh" = inner_submesh and, when the mesh has "h:texcoord" corners,
+// UVs by planar projection in model units: u along the unit vector of the cap plane's normal
+// crossed with the coordinate axis least aligned with it (x, then y, then z on ties), v = normal x
+// u, both measured from the origin. When the mesh has "h:normal" corners, a cap's corners get the
+// cap plane's unit normal pointing out of the piece (flat shading, as a cut face is); the remaining
+// object's caps likewise, out of it. Vertices only caps use (cell vertices) take the default values
+// of vertex properties.
 //
 // Determinism: the library's seeded generator (SplitMix64), no hashed container iterated, ties
 // broken by key: the same mesh, impact, options and seed give the same pieces bit for bit.
