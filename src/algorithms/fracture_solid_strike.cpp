@@ -225,7 +225,7 @@ bool cap_polytope(const StrikeInput& in, const Polytope& cell, std::span<const C
     RegionInput r;
     for (const Key& k : f.corners) {
       r.corners.push_back(k);
-      r.corner_pos.push_back(cell.points.at(k));
+      r.corner_pos.push_back(cell.at(k));
     }
     for (auto it = std::lower_bound(on_plane.begin(), on_plane.end(), f.h.plane,
                                     [](const auto&a, std::uint32_t plane) { return a.first < plane; });
@@ -249,7 +249,7 @@ bool cap_polytope(const StrikeInput& in, const Polytope& cell, std::span<const C
       return -2;
     };
     const Key first = *std::min_element(f.corners.begin(), f.corners.end());
-    r.inside = [&]() { return inside_mesh(in, cell.points.at(first)); };
+    r.inside = [&]() { return inside_mesh(in, cell.at(first)); };
     // The outward normal, for the frame of the triangulation.
     Vec3d normal{};
     for (std::size_t s = 0; s < n; ++s) add_newell_term(normal, r.corner_pos[s], r.corner_pos[(s + 1) % n]);
