@@ -81,44 +81,55 @@ const Vec3d& Polytope::at(const Key& k) const {
 // succeeded; its storage is reused (a strike clips some ten thousand times).
 bool clip_polytope(Polytope& p, HalfSpace h, const PlaneSet& planes) {
   const Plane& pl = planes.planes[h.plane];
+  // Scratch kept between calls: each point's side (by its slot in p.points) and whether a face
+  // keeps it; the faces' new corners end to end (face f's from first[f] on); the new face's links
+  // entry -> exit; the new points with the first position made for each.
+  thread_local std::vector<char> in, kept;
+  thread_local std::vector<std::size_t> slot;
+  thread_local std::vector<Key> corners;
+  thread_local std::vector<std::size_t> first;
+  thread_local std::vector<std::pair<Key, Key>> next;
+  thread_local std::vector<std::pair<Key, Vec3d>> made;
   bool any_out = false, any_in = false;
-  for (const auto& [k, x] : p.points) (inside(planes, h, x) ? any_in : any_out) = true;
+  in.resize(p.points.size());
+  for (std::size_t i = 0; i < p.points.size(); ++i)
+    ((in[i] = char(inside(planes, h, p.points[i].second))) ? any_in : any_out) = true;
   if (!any_out) return true;
   if (!any_in) {
     p.faces.clear();
     p.points.clear();
     return true;
   }
-  // Scratch kept between calls: the faces' new corners end to end (face f's from first[f] on),
-  // the new face's links entry -> exit, and the points: a kept corner (rank 0) has its old
-  // position; a new one (rank 1) the first position made for it.
-  struct NewPoint {
-    Key key;
-    int rank;
-    Vec3d pos;
-  };
-  thread_local std::vector<Key> corners;
-  thread_local std::vector<std::size_t> first;
-  thread_local std::vector<std::pair<Key, Key>> next;
-  thread_local std::vector<NewPoint> made;
+  kept.assign(p.points.size(), 0);
   corners.clear();
   first.clear();
   next.clear();
   made.clear();
+  const auto slot_of = [&](const Key& k) {
+    const auto it =
+        std::lower_bound(p.points.begin(), p.points.end(), k,
+                         [](const std::pair<Key, Vec3d>& x, const Key& key) { return x.first < key; });
+    if (it == p.points.end() || it->first != k)
+      throw std::out_of_range("solid fracture: a polytope lacks a corner");
+    return static_cast<std::size_t>(it - p.points.begin());
+  };
   for (const Polytope::Side& f : p.faces) {
     first.push_back(corners.size());
     const std::size_t n = f.corners.size();
+    slot.resize(n);
+    for (std::size_t i = 0; i < n; ++i) slot[i] = slot_of(f.corners[i]);
     Key exit_key{}, entry_key{};
     bool has_exit = false, has_entry = false;
     for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t sa = slot[i], sb = slot[(i + 1) % n];
       const Key& a = f.corners[i];
       const Key& b = f.corners[(i + 1) % n];
-      const Vec3d& pa = p.at(a);
-      const Vec3d& pb = p.at(b);
-      const bool ia = inside(planes, h, pa), ib = inside(planes, h, pb);
+      const Vec3d& pa = p.points[sa].second;
+      const Vec3d& pb = p.points[sb].second;
+      const bool ia = in[sa], ib = in[sb];
       if (ia) {
         corners.push_back(a);
-        made.push_back({a, 0, pa});
+        kept[sa] = 1;
       }
       if (ia != ib) {
         const std::uint32_t e = shared_plane(a, b, f.h.plane);
@@ -129,7 +140,7 @@ bool clip_polytope(Polytope& p, HalfSpace h, const PlaneSet& planes) {
         const Vec3d& p1 = a_first ? pb : pa;
         const double s0 = pl.value(p0), s1 = pl.value(p1);
         const double t = s0 == s1 ? 0.5 : std::clamp(s0 / (s0 - s1), 0.0, 1.0);
-        made.push_back({x, 1, p0 + (p1 - p0) * t});
+        made.emplace_back(x, p0 + (p1 - p0) * t);
         corners.push_back(x);
         if (ia) {
           exit_key = x;
@@ -168,22 +179,33 @@ bool clip_polytope(Polytope& p, HalfSpace h, const PlaneSet& planes) {
     if (cap.size() != next.size()) return false;
   }
   // Commit: the faces that keep three corners or more, in order, then the new face.
-  std::size_t kept = 0;
+  std::size_t live = 0;
   for (std::size_t f = 0; f < p.faces.size(); ++f) {
     if (first[f + 1] - first[f] < 3) continue;
-    Polytope::Side& to = p.faces[kept++];
+    Polytope::Side& to = p.faces[live++];
     if (&to != &p.faces[f]) to.h = p.faces[f].h;
     to.corners.assign(corners.begin() + static_cast<std::ptrdiff_t>(first[f]),
                       corners.begin() + static_cast<std::ptrdiff_t>(first[f + 1]));
   }
-  p.faces.resize(kept);
+  p.faces.resize(live);
   if (cap.size() >= 3) p.faces.push_back({h, cap});
-  std::stable_sort(made.begin(), made.end(), [](const NewPoint& a, const NewPoint& b) {
-    return a.key != b.key ? a.key < b.key : a.rank < b.rank;
-  });
-  p.points.clear();
-  for (const NewPoint& x : made)
-    if (p.points.empty() || p.points.back().first != x.key) p.points.emplace_back(x.key, x.pos);
+  // The points: the kept ones (in key order already) with their old positions, merged with the new
+  // ones, each with the first position made for it; a kept key wins over a new one.
+  std::stable_sort(made.begin(), made.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  made.erase(
+      std::unique(made.begin(), made.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
+      made.end());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.points.size(); ++i)
+    if (kept[i]) p.points[k++] = p.points[i];
+  p.points.resize(k);
+  const std::size_t old = p.points.size();
+  p.points.insert(p.points.end(), made.begin(), made.end());
+  std::inplace_merge(p.points.begin(), p.points.begin() + static_cast<std::ptrdiff_t>(old), p.points.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+  p.points.erase(std::unique(p.points.begin(), p.points.end(),
+                             [](const auto& x, const auto& y) { return x.first == y.first; }),
+                 p.points.end());
   return true;
 }
 
