@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "fracture_solid_internal.h"
 #include "hedge/algorithms/geometry.h"
@@ -63,38 +64,72 @@ bool inside(const PlaneSet& planes, HalfSpace h, const Vec3d& x) {
 
 }  // namespace
 
+const Vec3d& Polytope::at(const Key& k) const {
+  const auto it =
+      std::lower_bound(points.begin(), points.end(), k,
+                       [](const std::pair<Key, Vec3d>& x, const Key& key) { return x.first < key; });
+  if (it == points.end() || it->first != k)
+    throw std::out_of_range("solid fracture: a polytope lacks a corner");
+  return it->second;
+}
+
 // Each face is clipped as a convex polygon (Sutherland-Hodgman); a new corner lies on the face's
 // edge from a to b and the clipping plane, named by the three planes and placed by interpolation
 // along the edge from its smaller key, so both faces of the edge place it alike. The new face's
 // corners come from the cut edges: the face leaves the half-space at X and comes back at Y, so the
-// new face (seen from outside) runs from Y to X.
+// new face (seen from outside) runs from Y to X. The polytope changes only once the clip has
+// succeeded; its storage is reused (a strike clips some ten thousand times).
 bool clip_polytope(Polytope& p, HalfSpace h, const PlaneSet& planes) {
   const Plane& pl = planes.planes[h.plane];
+  // Scratch kept between calls: each point's side (by its slot in p.points) and whether a face
+  // keeps it; the faces' new corners end to end (face f's from first[f] on); the new face's links
+  // entry -> exit; the new points with the first position made for each.
+  thread_local std::vector<char> in, kept;
+  thread_local std::vector<std::size_t> slot;
+  thread_local std::vector<Key> corners;
+  thread_local std::vector<std::size_t> first;
+  thread_local std::vector<std::pair<Key, Key>> next;
+  thread_local std::vector<std::pair<Key, Vec3d>> made;
   bool any_out = false, any_in = false;
-  for (const auto& [k, x] : p.points) (inside(planes, h, x) ? any_in : any_out) = true;
+  in.resize(p.points.size());
+  for (std::size_t i = 0; i < p.points.size(); ++i)
+    ((in[i] = char(inside(planes, h, p.points[i].second))) ? any_in : any_out) = true;
   if (!any_out) return true;
   if (!any_in) {
     p.faces.clear();
     p.points.clear();
     return true;
   }
-  std::map<Key, Key> next;  // corner of the new face -> the next one
-  std::vector<Polytope::Side> faces;
-  std::map<Key, Vec3d> points;
+  kept.assign(p.points.size(), 0);
+  corners.clear();
+  first.clear();
+  next.clear();
+  made.clear();
+  const auto slot_of = [&](const Key& k) {
+    const auto it =
+        std::lower_bound(p.points.begin(), p.points.end(), k,
+                         [](const std::pair<Key, Vec3d>& x, const Key& key) { return x.first < key; });
+    if (it == p.points.end() || it->first != k)
+      throw std::out_of_range("solid fracture: a polytope lacks a corner");
+    return static_cast<std::size_t>(it - p.points.begin());
+  };
   for (const Polytope::Side& f : p.faces) {
-    Polytope::Side out{f.h, {}};
+    first.push_back(corners.size());
     const std::size_t n = f.corners.size();
+    slot.resize(n);
+    for (std::size_t i = 0; i < n; ++i) slot[i] = slot_of(f.corners[i]);
     Key exit_key{}, entry_key{};
     bool has_exit = false, has_entry = false;
     for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t sa = slot[i], sb = slot[(i + 1) % n];
       const Key& a = f.corners[i];
       const Key& b = f.corners[(i + 1) % n];
-      const Vec3d& pa = p.points.at(a);
-      const Vec3d& pb = p.points.at(b);
-      const bool ia = inside(planes, h, pa), ib = inside(planes, h, pb);
+      const Vec3d& pa = p.points[sa].second;
+      const Vec3d& pb = p.points[sb].second;
+      const bool ia = in[sa], ib = in[sb];
       if (ia) {
-        out.corners.push_back(a);
-        points[a] = pa;
+        corners.push_back(a);
+        kept[sa] = 1;
       }
       if (ia != ib) {
         const std::uint32_t e = shared_plane(a, b, f.h.plane);
@@ -105,8 +140,8 @@ bool clip_polytope(Polytope& p, HalfSpace h, const PlaneSet& planes) {
         const Vec3d& p1 = a_first ? pb : pa;
         const double s0 = pl.value(p0), s1 = pl.value(p1);
         const double t = s0 == s1 ? 0.5 : std::clamp(s0 / (s0 - s1), 0.0, 1.0);
-        points.emplace(x, p0 + (p1 - p0) * t);
-        out.corners.push_back(x);
+        made.emplace_back(x, p0 + (p1 - p0) * t);
+        corners.push_back(x);
         if (ia) {
           exit_key = x;
           has_exit = true;
@@ -117,24 +152,60 @@ bool clip_polytope(Polytope& p, HalfSpace h, const PlaneSet& planes) {
       }
     }
     if (has_exit != has_entry) return false;
-    if (has_exit) next[entry_key] = exit_key;
-    if (out.corners.size() >= 3) faces.push_back(std::move(out));
-  }
-  if (!next.empty()) {
-    Polytope::Side cap{h, {}};
-    Key k = next.begin()->first;
-    for (std::size_t guard = 0; guard <= next.size(); ++guard) {
-      cap.corners.push_back(k);
-      const auto it = next.find(k);
-      if (it == next.end()) return false;
-      k = it->second;
-      if (k == cap.corners.front()) break;
+    if (has_exit) {
+      // One link per entry key: a later one replaces an earlier.
+      bool found = false;
+      for (auto& [from, to] : next)
+        if (from == entry_key) {
+          to = exit_key;
+          found = true;
+        }
+      if (!found) next.emplace_back(entry_key, exit_key);
     }
-    if (cap.corners.size() != next.size()) return false;
-    if (cap.corners.size() >= 3) faces.push_back(std::move(cap));
   }
-  p.faces = std::move(faces);
-  p.points = std::move(points);
+  first.push_back(corners.size());
+  thread_local std::vector<Key> cap;
+  cap.clear();
+  if (!next.empty()) {
+    std::sort(next.begin(), next.end());
+    Key k = next.front().first;
+    for (std::size_t guard = 0; guard <= next.size(); ++guard) {
+      cap.push_back(k);
+      const auto it = std::lower_bound(next.begin(), next.end(), std::make_pair(k, Key{}));
+      if (it == next.end() || it->first != k) return false;
+      k = it->second;
+      if (k == cap.front()) break;
+    }
+    if (cap.size() != next.size()) return false;
+  }
+  // Commit: the faces that keep three corners or more, in order, then the new face.
+  std::size_t live = 0;
+  for (std::size_t f = 0; f < p.faces.size(); ++f) {
+    if (first[f + 1] - first[f] < 3) continue;
+    Polytope::Side& to = p.faces[live++];
+    if (&to != &p.faces[f]) to.h = p.faces[f].h;
+    to.corners.assign(corners.begin() + static_cast<std::ptrdiff_t>(first[f]),
+                      corners.begin() + static_cast<std::ptrdiff_t>(first[f + 1]));
+  }
+  p.faces.resize(live);
+  if (cap.size() >= 3) p.faces.push_back({h, cap});
+  // The points: the kept ones (in key order already) with their old positions, merged with the new
+  // ones, each with the first position made for it; a kept key wins over a new one.
+  std::stable_sort(made.begin(), made.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  made.erase(
+      std::unique(made.begin(), made.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
+      made.end());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.points.size(); ++i)
+    if (kept[i]) p.points[k++] = p.points[i];
+  p.points.resize(k);
+  const std::size_t old = p.points.size();
+  p.points.insert(p.points.end(), made.begin(), made.end());
+  std::inplace_merge(p.points.begin(), p.points.begin() + static_cast<std::ptrdiff_t>(old), p.points.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+  p.points.erase(std::unique(p.points.begin(), p.points.end(),
+                             [](const auto& x, const auto& y) { return x.first == y.first; }),
+                 p.points.end());
   return true;
 }
 
@@ -165,8 +236,9 @@ Polytope region_polytope(const Vec3d& centre, double radius, PlaneSet& planes, s
     for (int sy = 0; sy < 2; ++sy)
       for (int sz = 0; sz < 2; ++sz) {
         const Vec3d x = centre + Vec3d{sx ? -radius : radius, sy ? -radius : radius, sz ? -radius : radius};
-        p.points.emplace(corner_key(std::uint32_t(sx), std::uint32_t(2 + sy), std::uint32_t(4 + sz)), x);
+        p.points.emplace_back(corner_key(std::uint32_t(sx), std::uint32_t(2 + sy), std::uint32_t(4 + sz)), x);
       }
+  std::sort(p.points.begin(), p.points.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (std::uint32_t f = 0; f < 6; ++f) {
     const Vec3d n = planes.planes[f].n;
     Vec3d u, v;

@@ -60,8 +60,11 @@ struct Polytope {
     std::vector<Key> corners;
   };
   std::vector<Side> faces;
-  std::map<Key, Vec3d> points;
+  //! The corners' positions, sorted by key, keys unique (a flat map: a cell has some tens).
+  std::vector<std::pair<Key, Vec3d>> points;
   bool empty() const { return faces.empty(); }
+  //! The position of corner k, which must be one of `points`.
+  const Vec3d& at(const Key& k) const;
   //! Box of the corners, grown by `margin`.
   void box(double margin, float lo[3], float hi[3]) const;
 };

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <span>
 
 #include "hedge/algorithms/geometry.h"
+#include "hedge/core/threads.h"
 #include "hedge/core/triangulate.h"
 #include "hedge/error.h"
 
@@ -225,7 +227,7 @@ bool cap_polytope(const StrikeInput& in, const Polytope& cell, std::span<const C
     RegionInput r;
     for (const Key& k : f.corners) {
       r.corners.push_back(k);
-      r.corner_pos.push_back(cell.points.at(k));
+      r.corner_pos.push_back(cell.at(k));
     }
     for (auto it = std::lower_bound(on_plane.begin(), on_plane.end(), f.h.plane,
                                     [](const auto&a, std::uint32_t plane) { return a.first < plane; });
@@ -249,7 +251,7 @@ bool cap_polytope(const StrikeInput& in, const Polytope& cell, std::span<const C
       return -2;
     };
     const Key first = *std::min_element(f.corners.begin(), f.corners.end());
-    r.inside = [&]() { return inside_mesh(in, cell.points.at(first)); };
+    r.inside = [&]() { return inside_mesh(in, cell.at(first)); };
     // The outward normal, for the frame of the triangulation.
     Vec3d normal{};
     for (std::size_t s = 0; s < n; ++s) add_newell_term(normal, r.corner_pos[s], r.corner_pos[(s + 1) % n]);
@@ -326,6 +328,54 @@ void add_polygons(std::span<const ClipPolygon> polys, KeyedSurface& s) {
   }
 }
 
+//! One cell's piece, made on a worker thread: its draft (closed) and its cap area per plane, or
+//! the failure that stops the strike, or an exception to pass on.
+struct CellWork {
+  PieceDraft draft;
+  bool made = false;
+  std::string failure;
+  std::exception_ptr error;
+  std::vector<std::pair<std::uint32_t, double>> cap_area;
+  double seconds_clip = 0, seconds_cap = 0;
+};
+
+//! A worker's scratch, kept from one cell to the next.
+struct CellScratch {
+  PolygonList polys;
+  FirstOut masks;
+};
+
+void piece_of(const StrikeInput& in, const Geometry& g, const SoupIndex& index, const Polytope& cell,
+              double margin, CellScratch& scratch, CellWork& w) {
+  if (cell.empty()) return;
+  try {
+    Clock::time_point t = Clock::now();
+    scratch.polys.clear();
+    clip_all(in, g, index, cell, margin, scratch.masks, scratch.polys);
+    w.seconds_clip += seconds_since(t);
+    PieceDraft& d = w.draft;
+    add_polygons(scratch.polys.view(), d.surface);
+    if (!cap_polytope(in, cell, scratch.polys.view(), d.surface, w.failure)) return;
+    if (d.surface.tris.empty()) {
+      w.seconds_cap += seconds_since(t);
+      return;
+    }
+    if (!build_closed(d.surface, d.mesh, w.failure)) return;
+    for (std::size_t k = 0; k < d.surface.tris.size(); ++k) {
+      if (!(d.surface.source[k] & kCapBit)) continue;
+      const auto& tri = d.surface.tris[k];
+      const Vec3d a = d.surface.points[d.surface.index(tri[0])].second;
+      const Vec3d b = d.surface.points[d.surface.index(tri[1])].second;
+      const Vec3d c = d.surface.points[d.surface.index(tri[2])].second;
+      w.cap_area.emplace_back(d.surface.source[k] & ~kCapBit, triangle_area(a, b, c));
+    }
+    w.made = true;
+    w.seconds_cap += seconds_since(t);
+  } catch (...) {
+    w.error = std::current_exception();
+  }
+}
+
 }  // namespace
 
 bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, double nudge, std::uint64_t seed,
@@ -347,34 +397,45 @@ bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, doubl
 
   // Per plane and piece, the cap area, for the bonds.
   std::vector<std::pair<std::pair<std::size_t, std::uint32_t>, double>> cap_areas;
+  // The cells are independent: each is clipped, capped and built on a worker (core/threads.h),
+  // into its own slot; the results are then taken in cell order, so they do not depend on the
+  // number of threads.
+  std::vector<CellWork> work(cells.size());
+  const std::size_t parts = detail::parallel_parts(cells.size(), 2);
+  std::vector<std::size_t> order;  // cells dealt out in turn, so each part gets both rings' cells
+  order.reserve(cells.size());
+  for (std::size_t p = 0; p < parts; ++p)
+    for (std::size_t i = p; i < cells.size(); i += parts) order.push_back(i);
+  detail::parallel_ranges(
+      order.size(),
+      [&](std::size_t begin, std::size_t end) {
+        CellScratch scratch;
+        for (std::size_t k = begin; k < end; ++k)
+          piece_of(in, g, index, cells[order[k]], margin, scratch, work[order[k]]);
+      },
+      2);
+  double clip_cpu = 0, cap_cpu = 0;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    CellWork& w = work[i];
+    if (w.error) std::rethrow_exception(w.error);
+    clip_cpu += w.seconds_clip;
+    cap_cpu += w.seconds_cap;
+    if (!w.failure.empty()) {
+      strike.failure = std::move(w.failure);
+      return false;
+    }
+    if (!w.made) continue;
+    w.draft.cell = i;
+    strike.pieces.push_back(std::move(w.draft));
+    for (const auto& [plane, ar] : w.cap_area) cap_areas.push_back({{strike.pieces.size() - 1, plane}, ar});
+  }
+  // The loop's wall time, split between clipping and capping as their thread times are.
+  const double loop = seconds_since(t);
+  const double share = clip_cpu + cap_cpu > 0 ? clip_cpu / (clip_cpu + cap_cpu) : 0.5;
+  strike.seconds_clip += loop * share;
+  strike.seconds_cap += loop * (1 - share);
   PolygonList polys;
   FirstOut masks;
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    if (cells[i].empty()) continue;
-    polys.clear();
-    clip_all(in, g, index, cells[i], margin, masks, polys);
-    strike.seconds_clip += seconds_since(t);
-    PieceDraft d;
-    d.cell = i;
-    add_polygons(polys.view(), d.surface);
-    if (!cap_polytope(in, cells[i], polys.view(), d.surface, strike.failure)) return false;
-    strike.seconds_cap += seconds_since(t);
-    if (d.surface.tris.empty()) continue;
-    if (!build_closed(d.surface, d.mesh, strike.failure)) return false;
-    strike.pieces.push_back(std::move(d));
-    // Cap areas per plane.
-    PieceDraft& piece = strike.pieces.back();
-    for (std::size_t k = 0; k < piece.surface.tris.size(); ++k) {
-      if (!(piece.surface.source[k] & kCapBit)) continue;
-      const auto& tri = piece.surface.tris[k];
-      const Vec3d a = piece.surface.points[piece.surface.index(tri[0])].second;
-      const Vec3d b = piece.surface.points[piece.surface.index(tri[1])].second;
-      const Vec3d c = piece.surface.points[piece.surface.index(tri[2])].second;
-      const double ar = triangle_area(a, b, c);
-      cap_areas.push_back({{strike.pieces.size() - 1, piece.surface.source[k] & ~kCapBit}, ar});
-    }
-    strike.seconds_cap += seconds_since(t);
-  }
   if (strike.pieces.empty()) return true;
 
   // The patch: the touched triangles' parts outside P, and P's caps turned inwards.

@@ -13,9 +13,9 @@ namespace {
 double polytope_volume(const Polytope& p, const Vec3d& inside) {
   double six_v = 0;
   for (const Polytope::Side& f : p.faces) {
-    const Vec3d a = p.points.at(f.corners[0]) - inside;
+    const Vec3d a = p.at(f.corners[0]) - inside;
     for (std::size_t k = 1; k + 1 < f.corners.size(); ++k)
-      six_v += dot(a, cross(p.points.at(f.corners[k]) - inside, p.points.at(f.corners[k + 1]) - inside));
+      six_v += dot(a, cross(p.at(f.corners[k]) - inside, p.at(f.corners[k + 1]) - inside));
   }
   return six_v / 6;
 }

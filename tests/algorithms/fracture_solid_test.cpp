@@ -12,6 +12,7 @@
 #include "hedge/algorithms/subdivide.h"
 #include "hedge/core/build.h"
 #include "hedge/core/face_operations.h"
+#include "hedge/core/threads.h"
 #include "hedge/error.h"
 #include "hedge/io/io.h"
 #include "test_meshes.h"
@@ -232,6 +233,45 @@ TEST(FractureSolid, SameStrikeSameResultAndTheTreeIsKeptUpToDate) {
     EXPECT_EQ(tree.closest_point(q)->squared_distance, closest_point_linear(b, q)->squared_distance);
     if (v.idx() > 50) break;
   }
+  EXPECT_TRUE(b.validate().empty());
+}
+
+// The cells are clipped and capped on worker threads (core/threads.h); the results are taken in
+// cell order, so one thread or several give the same pieces, bonds and remaining object bit for bit.
+TEST(FractureSolid, OneThreadOrSeveralGiveTheSameResult) {
+  const SurfaceMesh input = read_mesh(test::data_path("spot_triangulated.obj"));
+  SolidFractureOptions o{.seed = 9};
+  o.material.rings = {{16, 1, 0.5}, {48, 1, 0.5}};
+  o.material.name = "many";
+  auto strike = [&](unsigned threads, SurfaceMesh& m) {
+    set_max_threads(threads);
+    SolidFractureResult r = fracture_solid(m, m.position(Vertex(100)), o);
+    set_max_threads(0);
+    return r;
+  };
+  SurfaceMesh a = input, b = input;
+  const SolidFractureResult ra = strike(1, a);
+  const SolidFractureResult rb = strike(4, b);
+  ASSERT_GT(ra.pieces.size(), 4u);
+  ASSERT_EQ(ra.pieces.size(), rb.pieces.size());
+  for (std::size_t i = 0; i < ra.pieces.size(); ++i) {
+    const SurfaceMesh& pa = ra.pieces[i].mesh;
+    const SurfaceMesh& pb = rb.pieces[i].mesh;
+    ASSERT_EQ(pa.n_vertices(), pb.n_vertices());
+    ASSERT_EQ(pa.n_faces(), pb.n_faces());
+    for (Vertex v : pa.vertices()) EXPECT_EQ(pa.position(v), pb.position(v));
+    for (Face f : pa.faces()) EXPECT_EQ(pa.halfedge(f), pb.halfedge(f));
+    EXPECT_TRUE(pa.validate().empty());
+  }
+  ASSERT_EQ(ra.bonds.size(), rb.bonds.size());
+  for (std::size_t i = 0; i < ra.bonds.size(); ++i) {
+    EXPECT_EQ(ra.bonds[i].a, rb.bonds[i].a);
+    EXPECT_EQ(ra.bonds[i].b, rb.bonds[i].b);
+    EXPECT_EQ(ra.bonds[i].area, rb.bonds[i].area);
+  }
+  ASSERT_EQ(a.n_faces(), b.n_faces());
+  for (Vertex v : a.vertices()) EXPECT_EQ(a.position(v), b.position(v));
+  EXPECT_TRUE(a.validate().empty());
   EXPECT_TRUE(b.validate().empty());
 }
 

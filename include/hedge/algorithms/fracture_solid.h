@@ -20,7 +20,10 @@
 //     corner leaves, is kept whole or dropped without clipping: the same result), and each of the
 //     cell's faces
 //     gets a cap, the part of it inside the object: its loops (several, holes included) are
-//     triangulated in the face's plane. A piece is the clipped surface and its caps.
+//     triangulated in the face's plane. A piece is the clipped surface and its caps. The cells are
+//     independent: they are clipped and capped on worker threads (core/threads.h:
+//     set_max_threads(1) keeps the strike on the calling thread), and the pieces are taken in cell
+//     order, so the result does not depend on the number of threads.
 //  5. remaining object: the faces that meet P leave the mesh, and their parts outside P come back
 //     with P's caps turned inwards, so the mesh stays closed. Only the faces that meet P are
 //     touched: the cost follows the broken region, not the mesh.
@@ -132,7 +135,8 @@ struct SolidFractureResult {
   double radius = 0;
   //! Wall-clock seconds per stage (steady clock): locating; the break points and cells; clipping
   //! the triangles by the cells; capping; assembling the pieces and editing the remaining object;
-  //! per-piece work (mass properties, hulls).
+  //! per-piece work (mass properties, hulls). The cells are clipped and capped in one loop over
+  //! worker threads: its wall time is split between clip and cap as their thread times are.
   struct Timings {
     double locate = 0, cells = 0, clip = 0, cap = 0, assemble = 0, per_piece = 0;
   } seconds;
