@@ -1,10 +1,11 @@
 // Quadric-error decimation, as named steps: check the input; gather each vertex's quadric; then
 // passes of rank (every live edge gets its best collapse and cost), sort (a radix sort on the
 // costs' bits) and collapse (cheapest first, each vertex at most once per pass); finally collect
-// the garbage. A pass does half of the collapses still needed (at least 1/32 of all), so about
-// six to eight passes run. A vertex that survived a collapse is locked until the next pass,
-// because the costs of its edges are stale; the costs of all other edges are still exact, since a
-// collapse changes no other vertex's quadric, so the next pass re-ranks only the survivors' edges.
+// the garbage. A pass does half of the collapses still needed (at least 1/32 of all). A vertex that
+// survived a collapse is locked until the next pass, because the costs of its edges are stale; the
+// costs of all other edges are still exact, since a collapse changes no other vertex's quadric, so
+// the next pass re-ranks only the survivors' edges. Within kGreedyFrom times the target, the sorted
+// keys become a lazy binary heap and the rest goes in true greedy order (collapse_greedy).
 // No allocation happens per collapse.
 #include "hedge/algorithms/decimate.h"
 
@@ -13,12 +14,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "decimate_internal.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/core/edge_operations.h"
 #include "hedge/error.h"
@@ -28,12 +31,8 @@ namespace hedge {
 namespace {
 
 using Mesh = SurfaceMesh;
-
-// Sum of weighted squared distances to planes n.x + d = 0: x'Ax + 2b'x + c, with A symmetric
-// (a00 a01 a02 a11 a12 a22) and w the total weight of the geometric planes.
-// Directions of a quadric whose eigenvalue is below this fraction of the largest are left
-// undetermined by the placement (see Quadric::minimiser).
-constexpr double kRankTolerance = 1e-3;
+using detail::decimation::prefetch;
+using detail::decimation::Quadric;
 
 // A collapse in a flat region (its error at most kFlat times its edge's squared length, a
 // root-mean-square distance of 1/1000 of the edge) may not make a face whose quality,
@@ -45,132 +44,9 @@ constexpr double kRankTolerance = 1e-3;
 // for the rest of the run.
 constexpr double kMinQuality = 0.1, kFlat = 1e-6;
 
-struct Quadric {
-  double a00 = 0, a01 = 0, a02 = 0, a11 = 0, a12 = 0, a22 = 0, b0 = 0, b1 = 0, b2 = 0, c = 0, w = 0;
-
-  void add(const Quadric& q) {
-    a00 += q.a00, a01 += q.a01, a02 += q.a02, a11 += q.a11, a12 += q.a12, a22 += q.a22;
-    b0 += q.b0, b1 += q.b1, b2 += q.b2, c += q.c, w += q.w;
-  }
-  // Adds weight x (n.x + d)^2; n need not be unit length (its length scales the term).
-  void add_plane(const Vec3d& n, double d, double weight) {
-    a00 += weight * n.x * n.x, a01 += weight * n.x * n.y, a02 += weight * n.x * n.z;
-    a11 += weight * n.y * n.y, a12 += weight * n.y * n.z, a22 += weight * n.z * n.z;
-    b0 += weight * d * n.x, b1 += weight * d * n.y, b2 += weight * d * n.z;
-    c += weight * d * d;
-  }
-  double eval(const Vec3d& p) const {
-    const double x = p.x, y = p.y, z = p.z;
-    return x * (a00 * x + 2 * (a01 * y + a02 * z + b0)) + y * (a11 * y + 2 * (a12 * z + b1)) +
-           z * (a22 * z + 2 * b2) + c;
-  }
-  // (A + c u u^T)^-1 v, for a unit u (c = 0: A^-1 v); false if singular.
-  bool solve(const Vec3d& u, double c, const Vec3d& v, Vec3d& x) const {
-    const double m00 = a00 + c * u.x * u.x, m01 = a01 + c * u.x * u.y, m02 = a02 + c * u.x * u.z;
-    const double m11 = a11 + c * u.y * u.y, m12 = a12 + c * u.y * u.z, m22 = a22 + c * u.z * u.z;
-    const double c00 = m11 * m22 - m12 * m12, c01 = m02 * m12 - m01 * m22, c02 = m01 * m12 - m02 * m11;
-    const double det = m00 * c00 + m01 * c01 + m02 * c02;
-    if (!(std::abs(det) > 0)) return false;
-    const double c11 = m00 * m22 - m02 * m02, c12 = m01 * m02 - m00 * m12, c22 = m00 * m11 - m01 * m01;
-    const double inv = 1 / det;
-    x = {inv * (c00 * v.x + c01 * v.y + c02 * v.z), inv * (c01 * v.x + c11 * v.y + c12 * v.z),
-         inv * (c02 * v.x + c12 * v.y + c22 * v.z)};
-    return true;
-  }
-
-  // The eigenvalues of A, largest first (the closed form for symmetric 3x3 matrices).
-  std::array<double, 3> eigenvalues() const {
-    const double q = (a00 + a11 + a22) / 3;
-    const double off = a01 * a01 + a02 * a02 + a12 * a12;
-    const double p2 = (a00 - q) * (a00 - q) + (a11 - q) * (a11 - q) + (a22 - q) * (a22 - q) + 2 * off;
-    const double p = std::sqrt(p2 / 6);
-    if (!(p > 0)) return {q, q, q};
-    // B = (A - q I) / p; its eigenvalues are 2 cos(phi + 2 pi k / 3), with cos(3 phi) = det(B) / 2.
-    const double b00 = (a00 - q) / p, b11 = (a11 - q) / p, b22 = (a22 - q) / p, b01 = a01 / p, b02 = a02 / p,
-                 b12 = a12 / p;
-    const double det =
-        b00 * (b11 * b22 - b12 * b12) - b01 * (b01 * b22 - b12 * b02) + b02 * (b01 * b12 - b11 * b02);
-    const double phi = std::acos(std::clamp(det / 2, -1.0, 1.0)) / 3;
-    const double l0 = q + 2 * p * std::cos(phi), l2 = q + 2 * p * std::cos(phi + 2 * std::numbers::pi / 3);
-    return {l0, 3 * q - l0 - l2, l2};
-  }
-
-  // A unit vector spanning the image of (A - x I)(A - y I): the eigenvector of the third eigenvalue
-  // when x and y are the other two. False if that product vanishes.
-  bool eigenvector(double x, double y, Vec3d& u) const {
-    const Vec3d r0{a00 - x, a01, a02}, r1{a01, a11 - x, a12}, r2{a02, a12, a22 - x};
-    const Vec3d s0{a00 - y, a01, a02}, s1{a01, a11 - y, a12}, s2{a02, a12, a22 - y};
-    // Columns of the (symmetric) product.
-    const Vec3d col[3] = {{dot(r0, s0), dot(r1, s0), dot(r2, s0)},
-                          {dot(r0, s1), dot(r1, s1), dot(r2, s1)},
-                          {dot(r0, s2), dot(r1, s2), dot(r2, s2)}};
-    int k = 0;
-    for (int i = 1; i < 3; ++i)
-      if (dot(col[i], col[i]) > dot(col[k], col[k])) k = i;
-    const double l = norm(col[k]);
-    if (!(l > 0)) return false;
-    u = col[k] / l;
-    return true;
-  }
-
-  // The point that minimises the quadric near `mid`, in the directions the quadric determines:
-  // A's eigenvectors whose eigenvalue is at least kRankTolerance times the largest (a truncated
-  // pseudo-inverse, as in Lindstrom and Turk's placement). Along the others (the plane of a flat
-  // patch, the axis of a cylinder, the tangent plane where curvature is low) the point stays at
-  // `mid`. The test is a ratio of eigenvalues, so it does not depend on the mesh's scale. If the
-  // point lies farther than sqrt(max_dist2) from mid, the weakest direction kept is dropped and the
-  // point found again. False if no direction is left or a value is not finite.
-  bool minimiser(const Vec3d& mid, double max_dist2, Vec3d& p) const {
-    const double tr = a00 + a11 + a22;
-    if (!(tr > 0)) return false;
-    const Vec3d g{a00 * mid.x + a01 * mid.y + a02 * mid.z + b0, a01 * mid.x + a11 * mid.y + a12 * mid.z + b1,
-                  a02 * mid.x + a12 * mid.y + a22 * mid.z + b2};
-    auto accept = [&](const Vec3d& d) {
-      if (!(dot(d, d) <= max_dist2)) return false;
-      p = mid - d;
-      return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-    };
-    // Fast path: det >= kRankTolerance tr^3 / 4 implies the smallest eigenvalue is at least
-    // kRankTolerance times the largest (lambda_min >= 4 det / tr^2 and lambda_max <= tr).
-    const double det =
-        a00 * (a11 * a22 - a12 * a12) - a01 * (a01 * a22 - a12 * a02) + a02 * (a01 * a12 - a11 * a02);
-    Vec3d d;
-    const bool full = det >= 0.25 * kRankTolerance * tr * tr * tr;
-    if (full && solve({0, 0, 0}, 0, g, d) && accept(d)) return true;
-    const std::array<double, 3> l = eigenvalues();
-    int rank = 1;
-    while (rank < 3 && l[rank] >= kRankTolerance * l[0]) ++rank;
-    if (rank == 3 && !full && solve({0, 0, 0}, 0, g, d) && accept(d)) return true;
-    Vec3d u;
-    // Rank 2: solve in the plane normal to the weakest eigenvector u (A + l0 u u^T has the same
-    // eigenvectors, with u's eigenvalue lifted, and g is projected off u).
-    if (rank >= 2 && eigenvector(l[0], l[1], u) && solve(u, l[0], g - u * dot(u, g), d) && accept(d))
-      return true;
-    // Rank 1: along the strongest eigenvector only.
-    return eigenvector(l[1], l[2], u) && accept(u * (dot(u, g) / l[0]));
-  }
-};
-
-Quadric sum(const Quadric& a, const Quadric& b) {
-  Quadric q = a;
-  q.add(b);
-  return q;
-}
-
-// Squared distance-like error of q at p: the weighted mean of the squared plane distances.
-inline double error_at(const Quadric& q, const Vec3d& p) {
-  const double e = q.eval(p);
-  return q.w > 0 ? std::max(0.0, e) / q.w : std::max(0.0, e);
-}
-
-template <typename T>
-inline void prefetch(const T* p) {
-#if defined(__GNUC__) || defined(__clang__)
-  __builtin_prefetch(p);
-#else
-  (void)p;
-#endif
-}
+// Passes run while the mesh has more than kGreedyFrom times the target's vertices (or faces); then
+// true greedy order (Decimator::collapse_greedy).
+constexpr std::size_t kGreedyFrom = 3;
 
 std::string vertex_name(Vertex v) { return "vertex " + std::to_string(v.idx()); }
 
@@ -253,7 +129,23 @@ class Decimator {
   Check check_faces(Halfedge h, const Vec3d& p, bool shape) const;
   void gather_ring(Halfedge h);
   void interpolate_corners(Vertex v, const Vec3d& p);
-  void sort_candidates();
+  // The key of e's best collapse: (cost's float bits << 32) | half-edge, kOverError or kNoKey.
+  std::uint64_t rank(Edge e) const;
+  Check check(Halfedge h, const Vec3d& p, double cost, bool shapely) const;
+  bool apply(Halfedge h, const Vec3d& p, double cost, DecimateResult& result, double& max_cost);
+  // Collapses done and refused by the face checks in one pass or in the greedy tail.
+  struct Tally {
+    std::size_t done = 0, refused_shape = 0, refused_normal = 0;
+  };
+  Tally collapse_pass(std::uint32_t pass, std::size_t budget, bool shapely, DecimateResult& result,
+                      double& max_cost, bool& over_error);
+  Tally collapse_greedy(bool shapely, DecimateResult& result, double& max_cost, bool& over_error);
+  // Within kGreedyFrom times every target: the rest is done in true greedy order.
+  bool near_target() const {
+    const bool any = o_.target_vertices > 0 || o_.target_faces > 0;
+    return any && (o_.target_vertices == 0 || m_.n_vertices() <= kGreedyFrom * o_.target_vertices) &&
+           (o_.target_faces == 0 || m_.n_faces() <= kGreedyFrom * o_.target_faces);
+  }
 
   Mesh& m_;
   const DecimateOptions& o_;
@@ -273,6 +165,7 @@ class Decimator {
   // An edge whose best collapse exceeds max_error (sorts last; never pushed as a candidate).
   static constexpr std::uint64_t kOverError = kNoKey - 1;
   std::vector<std::uint64_t> edge_key_, keys_, scratch_;
+  std::vector<std::uint8_t> refused_;  // greedy tail: the edge's key was refused by a check
 
   // One collapse's ring: the triangles around both ends before it, their corners' positions and
   // texture coordinates, and which chart (faces joined across non-seam edges) each belongs to.
@@ -549,15 +442,8 @@ void Decimator::interpolate_corners(Vertex v, const Vec3d& p) {
       Vec2 value = uv_[in];
       for (const RingFace& r : ring_) {
         if (r.chart != chart) continue;
-        const Vec3d e1 = r.x[1] - r.x[0], e2 = r.x[2] - r.x[0], d = p - r.x[0];
-        const double d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
-        const double det = d11 * d22 - d12 * d12;
-        if (!(det > 0)) continue;
-        const double t1 = dot(d, e1), t2 = dot(d, e2);
-        double b1 = (d22 * t1 - d12 * t2) / det, b2 = (d11 * t2 - d12 * t1) / det, b0 = 1 - b1 - b2;
-        b0 = std::max(0.0, b0), b1 = std::max(0.0, b1), b2 = std::max(0.0, b2);
-        const double s = b0 + b1 + b2;
-        b0 /= s, b1 /= s, b2 /= s;
+        double b0, b1, b2;
+        if (!detail::decimation::clamped_barycentric(r.x, p, b0, b1, b2)) continue;
         const Vec3d q = r.x[0] * b0 + r.x[1] * b1 + r.x[2] * b2 - p;
         const double dist = dot(q, q);
         if (dist < best) {
@@ -572,22 +458,155 @@ void Decimator::interpolate_corners(Vertex v, const Vec3d& p) {
   } while (o != start);
 }
 
-// LSD radix sort of the keys by their upper 32 bits (the costs' float bits, which order like the
-// non-negative floats), in three passes of 11 bits.
-void Decimator::sort_candidates() {
-  scratch_.resize(keys_.size());
-  for (int shift = 32; shift < 64; shift += 11) {
-    std::array<std::uint32_t, 2048> count{};
-    for (const std::uint64_t k : keys_) ++count[(k >> shift) & 2047];
-    std::uint32_t total = 0;
-    for (std::uint32_t& c : count) {
-      const std::uint32_t n = c;
-      c = total;
-      total += n;
-    }
-    for (const std::uint64_t k : keys_) scratch_[count[(k >> shift) & 2047]++] = k;
-    keys_.swap(scratch_);
+std::uint64_t Decimator::rank(Edge e) const {
+  Halfedge h;
+  Vec3d p;
+  double cost;
+  if (!best_collapse(e, h, p, cost)) return kNoKey;
+  if (!(cost <= max_cost_)) return kOverError;
+  return std::uint64_t(float_bits(static_cast<float>(cost))) << 32 | h.idx();
+}
+
+Decimator::Check Decimator::check(Halfedge h, const Vec3d& p, double cost, bool shapely) const {
+  const Vec3d ab = pos(m_.to_vertex(h)) - pos(m_.from_vertex(h));
+  return check_faces(h, p, shapely && cost <= kFlat * dot(ab, ab));
+}
+
+// Collapses h, moving the survivor to p; false (and nothing changed) if can_collapse() refuses.
+bool Decimator::apply(Halfedge h, const Vec3d& p, double cost, DecimateResult& result, double& max_cost) {
+  const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
+  if (uv_) gather_ring(h);
+  if (!collapse(m_, h).is_valid()) {
+    ++result.refused.topology;
+    return false;
   }
+  pos_[b.idx()] = to_float(p);
+  q_[b.idx()].add(q_[a.idx()]);
+  if (uv_) interpolate_corners(b, p);
+  max_cost = std::max(max_cost, cost);
+  ++result.collapses;
+  return true;
+}
+
+// One pass over the sorted candidates: cheapest first, at most `budget` collapses, each vertex
+// once (a survivor is stamped with the pass: its edges' costs are stale until the next rank).
+Decimator::Tally Decimator::collapse_pass(std::uint32_t pass, std::size_t budget, bool shapely,
+                                          DecimateResult& result, double& max_cost, bool& over_error) {
+  Tally t;
+  const std::size_t n_keys = keys_.size();
+  // Nor beyond 16x the cost of the budget-th cheapest candidate (4 more in a float's exponent bits),
+  // unless nothing was done yet: when locked vertices skip cheap candidates, the pass ends rather
+  // than reach for dearer ones the next pass may not need (a refined flat region collapses back
+  // exactly this way). A shape refusal moves the limit on by one: it waits for no locked vertex,
+  // and in a flat region (every cost 0) the limit would end the pass at its first refusals.
+  std::size_t limit_index = std::min(budget, n_keys) - 1;
+  std::uint64_t cost_limit = n_keys == 0 ? 0 : (keys_[limit_index] >> 32) + (4u << 23);
+  const Vertex* to = m_.halfedge_vertex_array().data();
+  for (std::size_t k = 0; k < n_keys; ++k) {
+    // The keys come in cost order, so every candidate's data is cold: fetch the half-edges of the
+    // 16th next candidate, and the vertex data of the 8th next (whose half-edges arrived by now).
+    if (k + 16 < n_keys) {
+      const std::uint32_t h16 = std::uint32_t(keys_[k + 16]);
+      prefetch(to + h16);
+      prefetch(m_.halfedge_next_array().data() + h16);
+    }
+    if (k + 8 < n_keys) {
+      const std::uint32_t h8 = std::uint32_t(keys_[k + 8]);
+      for (const Vertex v : {to[h8], to[h8 ^ 1u]}) {
+        prefetch(pos_ + v.idx());
+        prefetch(q_.data() + v.idx());
+        prefetch(reinterpret_cast<const char*>(q_.data() + v.idx()) + 64);  // a quadric spans two lines
+        prefetch(stamp_.data() + v.idx());
+      }
+    }
+    if ((keys_[k] >> 32) > cost_limit && t.done > 0) break;
+    const Halfedge h(static_cast<Index>(keys_[k] & 0xffffffffu));
+    if (m_.is_deleted(h)) continue;
+    const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
+    if (stamp_[a.idx()] == pass || stamp_[b.idx()] == pass) continue;
+    Vec3d p;
+    double cost;
+    placement(h, p, cost);
+    if (!(cost <= max_cost_)) {
+      over_error = true;
+      continue;
+    }
+    if (const Check c = check(h, p, cost, shapely); c != Check::ok) {
+      ++(c == Check::normal ? result.refused.normal : result.refused.shape);
+      t.refused_shape += c == Check::shape;
+      if (c == Check::shape && limit_index + 1 < n_keys)
+        cost_limit = (keys_[++limit_index] >> 32) + (4u << 23);
+      t.refused_normal += c == Check::normal;
+      continue;
+    }
+    if (!apply(h, p, cost, result, max_cost)) continue;
+    stamp_[b.idx()] = pass;
+    ++t.done;
+    if (done() || t.done >= budget) break;
+  }
+  return t;
+}
+
+// The greedy tail: the sorted candidates are a binary min-heap; each step takes the cheapest, and
+// after a collapse re-ranks the edges around the survivor (only their costs changed) and offers
+// again the refused edges around its neighbours (whose faces changed). An entry whose key is no
+// longer its edge's is stale and skipped (a lazy heap), so nothing is allocated per collapse
+// beyond the heap's growth.
+Decimator::Tally Decimator::collapse_greedy(bool shapely, DecimateResult& result, double& max_cost,
+                                            bool& over_error) {
+  Tally t;
+  refused_.assign(m_.edge_slots(), 0);
+  std::vector<std::uint64_t>& heap = keys_;  // sorted ascending, so already a min-heap
+  const std::greater<std::uint64_t> later;
+  auto offer = [&](std::uint64_t key) {
+    heap.push_back(key);
+    std::push_heap(heap.begin(), heap.end(), later);
+  };
+  while (!heap.empty() && !done()) {
+    std::pop_heap(heap.begin(), heap.end(), later);
+    const std::uint64_t key = heap.back();
+    heap.pop_back();
+    const Halfedge h(static_cast<Index>(key & 0xffffffffu));
+    const Index e = Mesh::edge(h).idx();
+    if (m_.is_deleted(h) || edge_key_[e] != key || refused_[e]) continue;
+    Vec3d p;
+    double cost;
+    placement(h, p, cost);
+    if (const Check c = check(h, p, cost, shapely); c != Check::ok) {
+      ++(c == Check::normal ? result.refused.normal : result.refused.shape);
+      t.refused_shape += c == Check::shape;
+      t.refused_normal += c == Check::normal;
+      refused_[e] = 1;
+      continue;
+    }
+    const Vertex b = m_.to_vertex(h);
+    if (!apply(h, p, cost, result, max_cost)) {
+      refused_[e] = 1;
+      continue;
+    }
+    ++t.done;
+    const Halfedge start = m_.halfedge(b);
+    Halfedge o = start;
+    do {
+      const Index s = Mesh::edge(o).idx();
+      const std::uint64_t k = rank(Mesh::edge(o));
+      edge_key_[s] = k, refused_[s] = 0;
+      if (k == kOverError) over_error = true;
+      if (k < kOverError) offer(k);
+      const Halfedge first = m_.halfedge(m_.to_vertex(o));
+      Halfedge r = first;
+      do {
+        const Index x = Mesh::edge(r).idx();
+        if (refused_[x]) {
+          refused_[x] = 0;
+          if (edge_key_[x] < kOverError) offer(edge_key_[x]);
+        }
+        r = m_.rotate_cw(r);
+      } while (r != first);
+      o = m_.rotate_cw(o);
+    } while (o != start);
+  }
+  return t;
 }
 
 DecimateResult Decimator::run() {
@@ -606,6 +625,7 @@ DecimateResult Decimator::run() {
   double max_cost = 0;
   bool over_error = false;  // a candidate of this pass exceeded max_error
   bool shapely = true;      // the shape check is on (see check_faces)
+  bool rerank_all = true;   // every edge's key is stale (the first pass, or after the greedy tail)
   const bool endless = o_.target_vertices == 0 && o_.target_faces == 0;
   for (std::uint32_t pass = 1;; ++pass) {
     classify();
@@ -620,118 +640,48 @@ DecimateResult Decimator::run() {
       if (m_.is_deleted(e)) continue;
       std::uint64_t& key = edge_key_[i];
       const Halfedge h0 = Mesh::halfedge(e, 0);
-      if (pass == 1 || stamp_[m_.to_vertex(h0).idx()] == pass - 1 ||
-          stamp_[m_.from_vertex(h0).idx()] == pass - 1) {
-        Halfedge h;
-        Vec3d p;
-        double cost;
-        key = kNoKey;
-        if (best_collapse(e, h, p, cost)) {
-          if (cost <= max_cost_)
-            key = std::uint64_t(float_bits(static_cast<float>(cost))) << 32 | h.idx();
-          else
-            key = kOverError;
-        }
-      }
+      if (rerank_all || stamp_[m_.to_vertex(h0).idx()] == pass - 1 ||
+          stamp_[m_.from_vertex(h0).idx()] == pass - 1)
+        key = rank(e);
       if (key == kOverError) {
         over_error = true;
         continue;
       }
       if (key != kNoKey) keys_.push_back(key);
     }
-    sort_candidates();
-    // Collapse: cheapest first, half of what is still needed, each vertex once.
-    // Half of what is still needed, but not less than 1/32 of the whole, so that the tail of
-    // ever smaller passes (each a full re-sort) stops after a few.
-    const std::size_t budget =
-        endless ? keys_.size() : std::max<std::size_t>({1, (needed() + 1) / 2, initial / 32});
-    std::size_t done_now = 0, refused_shape_now = 0, refused_normal_now = 0;
-    const std::size_t n_keys = keys_.size();
-    // Nor beyond 16x the cost of the budget-th cheapest candidate: when locked vertices skip cheap
-    // candidates, the pass ends rather than reaching for much dearer ones, which the next pass may
-    // not need (a refined flat region, all of whose cheapest collapses cost 0, collapses back
-    // exactly this way). Adding 4 to a float's exponent bits multiplies it by 16. Unless nothing was
-    // done yet, so that illegal cheap candidates cannot stop the decimation.
-    // A candidate the shape check refuses moves the limit on by one: it is not waiting for a locked
-    // vertex, and in a flat region, where every cost is 0, the limit would otherwise end the pass
-    // at its first refusals.
-    std::size_t limit_index = std::min(budget, n_keys) - 1;
-    std::uint64_t cost_limit = n_keys == 0 ? 0 : (keys_[limit_index] >> 32) + (4u << 23);
-    const Vertex* to = m_.halfedge_vertex_array().data();
-    for (std::size_t k = 0; k < n_keys; ++k) {
-      // The keys come in cost order, so every candidate's data is cold: fetch the half-edges of the
-      // 16th next candidate, and the vertex data of the 8th next (whose half-edges arrived by now).
-      if (k + 16 < n_keys) {
-        const std::uint32_t h16 = std::uint32_t(keys_[k + 16]);
-        prefetch(to + h16);
-        prefetch(m_.halfedge_next_array().data() + h16);
-      }
-      if (k + 8 < n_keys) {
-        const std::uint32_t h8 = std::uint32_t(keys_[k + 8]);
-        for (const Vertex v : {to[h8], to[h8 ^ 1u]}) {
-          prefetch(pos_ + v.idx());
-          prefetch(q_.data() + v.idx());
-          prefetch(reinterpret_cast<const char*>(q_.data() + v.idx()) + 64);  // a quadric spans two lines
-          prefetch(stamp_.data() + v.idx());
-        }
-      }
-      if ((keys_[k] >> 32) > cost_limit && done_now > 0) break;
-      const Halfedge h(static_cast<Index>(keys_[k] & 0xffffffffu));
-      if (m_.is_deleted(h)) continue;
-      const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
-      if (stamp_[a.idx()] == pass || stamp_[b.idx()] == pass) continue;
-      Vec3d p;
-      double cost;
-      placement(h, p, cost);
-      if (!(cost <= max_cost_)) {
-        over_error = true;
-        continue;
-      }
-      if (const Check c = check_faces(h, p, shapely && cost <= kFlat * dot(pos(a) - pos(b), pos(a) - pos(b)));
-          c != Check::ok) {
-        ++(c == Check::normal ? result.refused.normal : result.refused.shape);
-        refused_shape_now += c == Check::shape;
-        if (c == Check::shape && limit_index + 1 < n_keys)
-          cost_limit = (keys_[++limit_index] >> 32) + (4u << 23);
-        refused_normal_now += c == Check::normal;
-        continue;
-      }
-      if (uv_) gather_ring(h);
-      if (!collapse(m_, h).is_valid()) {
-        ++result.refused.topology;
-        continue;
-      }
-      pos_[b.idx()] = to_float(p);
-      q_[b.idx()].add(q_[a.idx()]);
-      stamp_[b.idx()] = pass;
-      if (uv_) interpolate_corners(b, p);
-      max_cost = std::max(max_cost, cost);
-      ++result.collapses;
-      ++done_now;
-      if (done() || done_now >= budget) break;
+    detail::decimation::radix_sort(keys_, scratch_);
+    rerank_all = false;
+    Tally t;
+    if (near_target()) {
+      t = collapse_greedy(shapely, result, max_cost, over_error);
+      rerank_all = true;
+    } else {
+      // Half of what is still needed, but not less than 1/32 of the whole, so that the tail of
+      // ever smaller passes (each a full re-sort) stops after a few.
+      const std::size_t budget =
+          endless ? keys_.size() : std::max<std::size_t>({1, (needed() + 1) / 2, initial / 32});
+      t = collapse_pass(pass, budget, shapely, result, max_cost, over_error);
     }
     if (!endless)
       report_progress(o_.progress, double(initial - std::min(initial, needed())) / double(initial));
     if (done()) break;
-    if (done_now == 0 && refused_shape_now > 0) {
+    if (t.done == 0 && t.refused_shape > 0 && shapely) {
       // The shape check alone may stop the decimation short of its target: lift it, and go on.
       shapely = false;
       continue;
     }
-    if (done_now == 0 && refused_normal_now > 0 && min_cos_ > 0 && o_.relax_normal_change) {
+    if (t.done == 0 && t.refused_normal > 0 && min_cos_ > 0 && o_.relax_normal_change) {
       // Likewise the turn limit, when it is below 90 degrees: faces may turn up to 90 degrees (never
       // over) for the rest of the run, so that coarse targets are reached.
       min_cos_ = 0;
       continue;
     }
-    if (done_now == 0) {
+    if (t.done == 0) {
       result.stop = over_error ? DecimateStop::error_bound : DecimateStop::no_legal_collapse;
       break;
     }
   }
-  if (result.collapses > 0) {
-    m_.garbage_collection();
-  }
+  if (result.collapses > 0) m_.garbage_collection();
   result.vertices = m_.n_vertices(), result.faces = m_.n_faces();
   result.max_error = std::sqrt(max_cost);
   report_progress(o_.progress, 1);

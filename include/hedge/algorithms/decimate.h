@@ -30,8 +30,14 @@
 //    and the error cannot choose; elsewhere the error alone ranks collapses (the check has no weight
 //    in the cost, so it never trades distance for shape). When it alone would stop the decimation
 //    short of its target, it is lifted for the rest of the run.
-//  - A collapse refused by a check is tried again in later passes (its neighbours may have moved);
-//    the result says why the decimation stopped and how many attempts each check refused.
+//  - Order: while the mesh has more than 3 times the target's vertices (or faces), in passes: each
+//    ranks and sorts the candidates and collapses the cheapest half of what is still needed, each
+//    vertex at most once. The rest goes in true greedy order: the cheapest collapse first, the
+//    edges around its survivor re-ranked after each (a lazy heap), which keeps features a pass
+//    would lose near the target.
+//  - A collapse refused by a check is tried again later (in the next pass, or in the greedy order
+//    when a neighbour collapses); the result says why the decimation stopped and how many attempts
+//    each check refused.
 //  - Corner texture coordinates ("h:texcoord", Vec2) follow: each corner at the surviving vertex
 //    gets the value interpolated at the new position, barycentric in the triangle of its own side
 //    of a seam that the point projects into. A seam edge (the corners on its two sides differ) is
@@ -101,8 +107,8 @@ enum class DecimateStop {
   no_legal_collapse,
 };
 
-//! Collapse attempts refused, by check. An edge refused in one pass is tried again in later ones
-//! (its neighbours may have moved), so an edge may count more than once.
+//! Collapse attempts refused, by check. A refused edge is tried again later (its neighbours may
+//! have moved), so an edge may count more than once.
 struct DecimateRefusals {
   //! The link condition or another rule of can_collapse() (topology).
   std::size_t topology = 0;
