@@ -143,7 +143,13 @@ const ARGUMENTS = {
     decimate: [
       [
         'options',
-        options({ ratio: NUMBER, targetFaces: COUNT, targetVertices: COUNT, maxError: NUMBER }),
+        options({
+          ratio: NUMBER,
+          targetFaces: COUNT,
+          targetVertices: COUNT,
+          maxError: NUMBER,
+          relaxNormalChange: BOOLEAN,
+        }),
       ],
     ],
     fracture: [

@@ -518,14 +518,31 @@ export class Mesh extends NativeOwner {
 
   /** Quadric edge-collapse decimation of a triangle mesh. ratio: the fraction of faces to keep
    *  (or targetFaces / targetVertices as counts); maxError: stop before a collapse moving the
-   *  surface further than this. Renumbers elements. Returns {vertices, faces, collapses, maxError}. */
-  decimate({ ratio, targetFaces = 0, targetVertices = 0, maxError = -1 } = {}) {
+   *  surface further than this; relaxNormalChange (true): should the 60-degree normal limit alone
+   *  stop the run short of its target, raise it to 90 for the rest (false: it holds to the end).
+   *  Renumbers elements. Returns {vertices, faces, collapses, maxError, stop, refused}: stop says
+   *  why the run ended ('target_reached', 'error_bound' or 'no_legal_collapse'), refused counts
+   *  the collapse attempts each check refused ({topology, normal, shape}; an edge retried in a
+   *  later pass counts again). */
+  decimate({
+    ratio,
+    targetFaces = 0,
+    targetVertices = 0,
+    maxError = -1,
+    relaxNormalChange = true,
+  } = {}) {
     if (ratio !== undefined) {
       if (!(ratio > 0 && ratio <= 1))
         throw new HedgeError('invalid-argument', `decimate: ratio ${ratio} is not in (0, 1]`);
       targetFaces = Math.max(1, Math.round(ratio * this.counts().faces));
     }
-    return this._call('decimate', targetFaces, targetVertices, maxError);
+    return this._call(
+      'decimate',
+      targetFaces,
+      targetVertices,
+      maxError,
+      Boolean(relaxNormalChange),
+    );
   }
 
   // ---- Fracture ----
