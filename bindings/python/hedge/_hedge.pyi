@@ -181,7 +181,9 @@ class Mesh:
         density: float = 1.0,
         tolerance: float = 0.0,
         hulls: bool = True,
-    ) -> tuple[list[Piece], list[tuple[int, Optional[int], float]]]: ...
+        kind: str = "solid",
+        surface: Optional[dict[str, Any]] = None,
+    ) -> Union[tuple[list[Piece], list[tuple[int, Optional[int], float]]], tuple[list[Shard], str]]: ...
     def solid_fracture_refusal(
         self,
         point: Sequence[float],
