@@ -7,7 +7,7 @@
 // bad value) would unwind wasm frames without their destructors. Values of the right type that the
 // library refuses (an element out of range, an unknown scheme) are the library's to report.
 
-import { HedgeError } from './hedge.js';
+import { HedgeError } from './native.js';
 
 export const isArrayLike = (x) => ArrayBuffer.isView(x) || Array.isArray(x);
 const isNumber = (x) => typeof x === 'number';
@@ -143,7 +143,13 @@ const ARGUMENTS = {
     decimate: [
       [
         'options',
-        options({ ratio: NUMBER, targetFaces: COUNT, targetVertices: COUNT, maxError: NUMBER }),
+        options({
+          ratio: NUMBER,
+          targetFaces: COUNT,
+          targetVertices: COUNT,
+          maxError: NUMBER,
+          relaxNormalChange: BOOLEAN,
+        }),
       ],
     ],
     fracture: [

@@ -130,11 +130,18 @@ export interface Pick {
   barycentric: [number, number, number];
 }
 
+/** Why decimate() stopped. */
+export type DecimateStop = 'target_reached' | 'error_bound' | 'no_legal_collapse';
+
 export interface DecimateResult {
   vertices: number;
   faces: number;
   collapses: number;
   maxError: number;
+  /** Why the run ended. */
+  stop: DecimateStop;
+  /** Collapse attempts each check refused (an edge retried in a later pass counts again). */
+  refused: { topology: number; normal: number; shape: number };
 }
 
 export interface Arrays {
@@ -440,6 +447,9 @@ export class Mesh {
     targetFaces?: number;
     targetVertices?: number;
     maxError?: number;
+    /** true (the default): should the normal limit alone stop the run short of its target, it is
+     *  raised from 60 to 90 degrees for the rest; false: it holds to the end. */
+    relaxNormalChange?: boolean;
   }): DecimateResult;
   /** Corner normals ("h:normal"), hard where faces meet at more than creaseDegrees (0..180,
    *  default 45), smooth elsewhere. A RenderBuffers made afterwards with normals 'auto' draws them

@@ -23,45 +23,19 @@
 import createHedge from './hedge.mjs';
 
 import { instantiate } from './load.js';
-import { customMaterial, installArgumentChecks, point3, UNITS } from './arguments.js';
+import { installArgumentChecks, point3, UNITS } from './arguments.js';
+import { HedgeError, NativeOwner } from './native.js';
+import { RenderBuffers } from './render_buffers.js';
+import { fractureMaterials, materialArguments, Shard, unpackShards } from './fracture.js';
 import { Piece, solidOptions, unpackSolidResult } from './fracture_solid.js';
 
-export { Piece };
-
-/** An error raised by hedge. kind names the C ABI's status (hedge_status), one to one:
- *  'invalid-argument', 'bad-handle' (a disposed object, an element out of range or deleted),
- *  'refused', 'io', 'topology', 'out-of-memory', 'buffer-too-small', 'internal' or 'busy'. A
- *  refused edit's error also carries refusal: the library's reason, the same text as the C ABI's
- *  hedge_last_refusal() and C#'s LastRefusal (null for other errors). */
-export class HedgeError extends Error {
-  constructor(kind, message, refusal = null) {
-    super(message);
-    this.name = 'HedgeError';
-    this.kind = kind;
-    this.refusal = refusal;
-  }
-}
+export { fractureMaterials, HedgeError, Piece, RenderBuffers, Shard };
 
 const SCHEMES = ['loop', 'midpoint', 'catmull-clark', 'sqrt3', 'split-faces'];
 const METHODS = ['uniform', 'taubin', 'cotangent', 'implicit'];
 /** Subdivision schemes and smoothing methods, for menus. */
 export const subdivisionSchemes = Object.freeze([...SCHEMES]);
 export const smoothingMethods = Object.freeze([...METHODS]);
-
-const MATERIALS = ['glass', 'stone', 'wood', 'ice'];
-/** The fracture presets, for menus. */
-export const fractureMaterials = Object.freeze([...MATERIALS]);
-
-// A fracture material as the module takes it: [preset name, ''] or ['', the custom material].
-function materialArguments(call, material) {
-  if (typeof material !== 'string') return ['', customMaterial(material, call)];
-  if (!MATERIALS.includes(material))
-    throw new HedgeError(
-      'invalid-argument',
-      `${call}: unknown material '${material}' (${MATERIALS.join(', ')}, or an object)`,
-    );
-  return [material, null];
-}
 
 /** Loads the module, in node, a browser page, a module worker or a bundle (load.js); sets no
  *  globals. options go to the emscripten factory: wasmBinary (the bytes of hedge.wasm) or
@@ -70,11 +44,6 @@ export async function loadHedge(options = {}) {
   const module = await instantiate(createHedge, options);
   return new Hedge(module);
 }
-
-// Natives are deleted when their JS object is collected; the held value is the native itself.
-const registry = new FinalizationRegistry((native) => {
-  if (!native.isDeleted()) native.delete();
-});
 
 // Development builds: NODE_ENV is not 'production' (bundlers write it into the code; a page
 // without a bundler has no process, and counts as development).
@@ -210,38 +179,6 @@ export class Hedge {
 
   get version() {
     return this.module.version();
-  }
-}
-
-/** What Mesh and RenderBuffers share: a native object freed on dispose() or when collected. */
-class NativeOwner {
-  constructor(hedge, native, what) {
-    this.hedge = hedge;
-    this._native = native;
-    this._what = what;
-    registry.register(this, native, this);
-  }
-
-  /** Frees the native object now. Idempotent. */
-  dispose() {
-    if (this._native) {
-      registry.unregister(this);
-      this._native.delete();
-      this._native = null;
-    }
-  }
-
-  get disposed() {
-    return this._native === null;
-  }
-
-  _n() {
-    if (!this._native) throw new HedgeError('bad-handle', `this ${this._what} was disposed`);
-    return this._native;
-  }
-
-  _call(name, ...args) {
-    return this.hedge._check(this._n()[name](...args));
   }
 }
 
@@ -518,14 +455,31 @@ export class Mesh extends NativeOwner {
 
   /** Quadric edge-collapse decimation of a triangle mesh. ratio: the fraction of faces to keep
    *  (or targetFaces / targetVertices as counts); maxError: stop before a collapse moving the
-   *  surface further than this. Renumbers elements. Returns {vertices, faces, collapses, maxError}. */
-  decimate({ ratio, targetFaces = 0, targetVertices = 0, maxError = -1 } = {}) {
+   *  surface further than this; relaxNormalChange (true): should the 60-degree normal limit alone
+   *  stop the run short of its target, raise it to 90 for the rest (false: it holds to the end).
+   *  Renumbers elements. Returns {vertices, faces, collapses, maxError, stop, refused}: stop says
+   *  why the run ended ('target_reached', 'error_bound' or 'no_legal_collapse'), refused counts
+   *  the collapse attempts each check refused ({topology, normal, shape}; an edge retried in a
+   *  later pass counts again). */
+  decimate({
+    ratio,
+    targetFaces = 0,
+    targetVertices = 0,
+    maxError = -1,
+    relaxNormalChange = true,
+  } = {}) {
     if (ratio !== undefined) {
       if (!(ratio > 0 && ratio <= 1))
         throw new HedgeError('invalid-argument', `decimate: ratio ${ratio} is not in (0, 1]`);
       targetFaces = Math.max(1, Math.round(ratio * this.counts().faces));
     }
-    return this._call('decimate', targetFaces, targetVertices, maxError);
+    return this._call(
+      'decimate',
+      targetFaces,
+      targetVertices,
+      maxError,
+      Boolean(relaxNormalChange),
+    );
   }
 
   // ---- Fracture ----
@@ -562,18 +516,7 @@ export class Mesh extends NativeOwner {
     } = {},
   ) {
     const at = point3(impact);
-    let preset = '';
-    let custom = null;
-    if (typeof material === 'string') {
-      if (!MATERIALS.includes(material))
-        throw new HedgeError(
-          'invalid-argument',
-          `fracture: unknown material '${material}' (${MATERIALS.join(', ')}, or an object)`,
-        );
-      preset = material;
-    } else {
-      custom = customMaterial(material);
-    }
+    const [preset, custom] = materialArguments('fracture', material);
     if (units !== '' && !UNITS.includes(units))
       throw new HedgeError(
         'invalid-argument',
@@ -594,38 +537,7 @@ export class Mesh extends NativeOwner {
       tolerance,
       Boolean(hulls),
     );
-    // Unpacks the shards (see WasmMesh::fracture): 35 numbers each, hulls concatenated.
-    const p = result.shards;
-    const shards = [];
-    const v3 = (k) => [p.scalars[k], p.scalars[k + 1], p.scalars[k + 2]];
-    for (let i = 0; i < p.count; ++i) {
-      const k = i * 35;
-      const hv = [p.hullVertexOffsets[i], p.hullVertexOffsets[i + 1]];
-      const hi = [p.hullIndexOffsets[i], p.hullIndexOffsets[i + 1]];
-      shards.push(
-        new Shard(new Mesh(this.hedge, p.meshes[i]), {
-          faces: p.scalars[k],
-          area: p.scalars[k + 1],
-          volume: p.scalars[k + 2],
-          closed: p.scalars[k + 3] === 1,
-          mass: p.scalars[k + 4],
-          centroid: v3(k + 7),
-          centreOfMass: v3(k + 10),
-          principalMoments: v3(k + 13),
-          principalAxes: [v3(k + 16), v3(k + 19), v3(k + 22)],
-          inertia: p.scalars.slice(k + 25, k + 34),
-          shellThickness: p.scalars[k + 34],
-          hull: {
-            positions: p.hullPositions.subarray(hv[0] * 3, hv[1] * 3),
-            indices: p.hullIndices.subarray(hi[0], hi[1]),
-            dimension: p.scalars[k + 5],
-            tolerance: p.scalars[k + 6],
-          },
-        }),
-      );
-    }
-    result.shards = shards;
-    return result;
+    return unpackShards(result, (native) => new Mesh(this.hedge, native));
   }
 
   /** Breaks the closed mesh at `impact` ([x, y, z], within the tolerance of the surface) into
@@ -728,170 +640,6 @@ export class Mesh extends NativeOwner {
     this._renders = this._renders.filter((ref) => ref.deref() !== undefined);
     this._renders.push(new WeakRef(render));
     return render;
-  }
-}
-
-/** A piece broken off by Mesh.fracture(). `mesh` is its own Mesh (dispose() frees it); the rest
- *  are plain values: centroid and area of its broken faces, and its volume, mass, centreOfMass,
- *  inertia (about the centre of mass, row-major 3x3 Float64Array), principalMoments (ascending)
- *  and principalAxes (unit vectors, a right-handed frame): of the solid when it is closed
- *  (thickness > 0), else of a thin shell shellThickness thick (0 when closed); its convex hull for a collider as hull.positions (Float32Array, 3 per vertex) and
- *  hull.indices (Uint32Array, 3 per outward triangle). */
-export class Shard {
-  constructor(mesh, s) {
-    this.mesh = mesh;
-    this.faces = s.faces;
-    this.centroid = s.centroid;
-    this.area = s.area;
-    this.volume = s.volume;
-    this.closed = s.closed;
-    this.mass = s.mass;
-    this.centreOfMass = s.centreOfMass;
-    this.inertia = s.inertia;
-    this.principalMoments = s.principalMoments;
-    this.principalAxes = s.principalAxes;
-    this.shellThickness = s.shellThickness;
-    this.hull = s.hull;
-  }
-
-  /** Frees the shard's mesh now. Idempotent. */
-  dispose() {
-    this.mesh.dispose();
-  }
-}
-
-/** Vertex and index buffers for a GPU, updated by dirty ranges (RenderBuffers). */
-export class RenderBuffers extends NativeOwner {
-  constructor(hedge, native) {
-    super(hedge, native, 'render object');
-  }
-
-  /** Floats per vertex and the offset of each attribute (-1: absent):
-   *  {stride, position, normal, texcoord, color, interleaved}. */
-  get layout() {
-    return this._call('layout');
-  }
-
-  /** {vertexSlots, triangleSlots, indexCount, vertices, triangles, vertexCapacity, indexCapacity,
-   *  freeTriangleSlots, bufferBytes}. Allocate GPU buffers at the capacities. */
-  sizes() {
-    return this._call('sizes');
-  }
-
-  /** Float32Array views (no copy): the whole interleaved vertex buffer (or the positions), and the
-   *  separate streams (empty when interleaved or absent). Valid until the next sync or memory growth. */
-  get vertices() {
-    return this._call('streamView', 0);
-  }
-  get normals() {
-    return this._call('streamView', 1);
-  }
-  get texcoords() {
-    return this._call('streamView', 2);
-  }
-  get colors() {
-    return this._call('streamView', 3);
-  }
-
-  /** Uint32Array view of the index buffer (3 per triangle slot; a free slot is degenerate). */
-  get indices() {
-    return this._call('indicesView');
-  }
-
-  /** Uint32Array view: render vertex -> mesh vertex (0xFFFFFFFF for a free slot). */
-  get vertexSource() {
-    return this._call('vertexSourceView');
-  }
-
-  /** [first triangle slot, count] of face f. */
-  faceTriangles(f) {
-    return this._call('faceTriangles', f);
-  }
-
-  /** The first face along a ray (through the mesh's picking tree, as Mesh.pick) and the triangle
-   *  slots it owns in these buffers as of the last sync: null if the ray misses, else {face, t,
-   *  point, first, count} (triangles [first, first + count) of the index buffer; count 0 for a face
-   *  made since the last sync). One call per ray: what a raycast against the uploaded triangles
-   *  needs (the three.js adapter's hedgeRaycast). */
-  pickTriangles(origin, direction) {
-    const face = this._n().pickTriangles(
-      +origin[0],
-      +origin[1],
-      +origin[2],
-      +direction[0],
-      +direction[1],
-      +direction[2],
-    );
-    this.hedge._check(face);
-    if (face < 0) return null;
-    const f = this.hedge.module.HEAPF64;
-    const k = this.hedge._pick;
-    return {
-      face,
-      t: f[k + 1],
-      point: [f[k + 2], f[k + 3], f[k + 4]],
-      first: f[k + 5],
-      count: f[k + 6],
-    };
-  }
-
-  /** Each submesh's (material's) part of the buffers as of the last sync, in submesh order:
-   *  [{indexStart, indexCount, firstVertex, vertexCount, empty}]. A submesh's triangles lie in
-   *  index entries [indexStart, indexStart + indexCount) (spare slots included, kept degenerate):
-   *  one draw call or three.js group each; their render vertices in [firstVertex, firstVertex +
-   *  vertexCount). empty: no live triangle since the last full build (or only triangles whose
-   *  corners are all at the origin, which draw nothing), e.g. the ids between used ones. A mesh
-   *  without submeshes has one, the whole buffer. */
-  submeshes() {
-    return this._call('submeshes');
-  }
-
-  /** Brings the buffers in step with the mesh's edits since the last sync and says what was
-   *  rewritten: {vertexRanges, indexRanges (Uint32Array pairs [first, count] in vertices and in
-   *  indices), vertexBytes, indexBytes, facesSynced, verticesSynced, resized (reallocate the GPU
-   *  buffers and upload all), full (everything was rewritten)}. Upload only the ranges: for
-   *  interleaved vertices the floats [first * stride, (first + count) * stride). Take the views
-   *  again after a sync. */
-  sync() {
-    return this._call('sync');
-  }
-
-  /** The dirty ranges of a sync result as views into the buffers (no copy):
-   *  {vertices: Float32Array[], indices: Uint32Array[]}. */
-  dirtyViews(result) {
-    const stride = this.layout.interleaved ? this.layout.stride : 3;
-    const vertices = this.vertices;
-    const indices = this.indices;
-    const v = [];
-    const i = [];
-    for (let k = 0; k < result.vertexRanges.length; k += 2) {
-      const first = result.vertexRanges[k];
-      const count = result.vertexRanges[k + 1];
-      v.push(vertices.subarray(first * stride, (first + count) * stride));
-    }
-    for (let k = 0; k < result.indexRanges.length; k += 2) {
-      const first = result.indexRanges[k];
-      i.push(indices.subarray(first, first + result.indexRanges[k + 1]));
-    }
-    return { vertices: v, indices: i };
-  }
-
-  /** Rebuilds everything (a full export); returns the result as sync() does. */
-  rebuild() {
-    return this._call('rebuild');
-  }
-
-  /** Packs the buffers, removing free slots; the next sync reports everything. */
-  compact() {
-    this._call('compact');
-  }
-
-  /** begin() ... edits ... commit(): one sync for many edits. */
-  begin() {
-    this._call('begin');
-  }
-  commit() {
-    return this._call('commit');
   }
 }
 

@@ -95,7 +95,8 @@ void WasmMesh::compute_corner_normals(double crease_degrees) {
   });
 }
 
-val WasmMesh::decimate(double target_faces, double target_vertices, double max_error) {
+val WasmMesh::decimate(double target_faces, double target_vertices, double max_error,
+                       bool relax_normal_change) {
   return guarded([&] {
     if (!(target_faces >= 0) || !(target_vertices >= 0))
       throw InvalidInputError("decimate: the targets must be counts (0 or more)");
@@ -103,6 +104,7 @@ val WasmMesh::decimate(double target_faces, double target_vertices, double max_e
     options.target_faces = std::size_t(target_faces);
     options.target_vertices = std::size_t(target_vertices);
     if (max_error >= 0) options.max_error = max_error;
+    options.relax_normal_change = relax_normal_change;
     const DecimateResult r =
         binding::with_rollback(s_->mesh, [&] { return hedge::decimate(s_->mesh, options); });
     val out = val::object();
@@ -110,6 +112,12 @@ val WasmMesh::decimate(double target_faces, double target_vertices, double max_e
     out.set("faces", double(r.faces));
     out.set("collapses", double(r.collapses));
     out.set("maxError", r.max_error);
+    out.set("stop", std::string(binding::name(r.stop)));
+    val refused = val::object();
+    refused.set("topology", double(r.refused.topology));
+    refused.set("normal", double(r.refused.normal));
+    refused.set("shape", double(r.refused.shape));
+    out.set("refused", refused);
     return out;
   });
 }

@@ -89,7 +89,7 @@ class WasmMesh {
   void smooth(const std::string& method, int iterations, double lambda, double mu, bool fix_boundary);
   //! Decimates to target_faces faces (0: none) and target_vertices vertices (0: none), stopping
   //! before a collapse whose error exceeds max_error (negative: no limit).
-  val decimate(double target_faces, double target_vertices, double max_error);
+  val decimate(double target_faces, double target_vertices, double max_error, bool relax_normal_change);
   //! Corner normals with hard edges where faces meet at more than crease_degrees (0..180) into
   //! "h:normal" (normals.h), which RenderBuffers with automatic normals draws and keeps up.
   void compute_corner_normals(double crease_degrees);

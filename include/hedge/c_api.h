@@ -619,9 +619,10 @@ HEDGE_API hedge_status hedge_mesh_smooth(hedge_mesh* mesh, const hedge_smooth_op
 /* Decimation (hedge/algorithms/decimate.h)                                                     */
 /* ============================================================================================ */
 
-/** Layout (72 bytes): target_vertices @0, target_faces @8 (uint64_t), max_error @16,
+/** Layout (80 bytes): target_vertices @0, target_faces @8 (uint64_t), max_error @16,
  *  boundary_weight @24, feature_angle_degrees @32, feature_weight @40, attribute_weight @48,
- *  max_normal_change_degrees @56 (double), keep_boundary @64, keep_seams @68 (int32_t). */
+ *  max_normal_change_degrees @56 (double), keep_boundary @64, keep_seams @68,
+ *  relax_normal_change @72, reserved @76 (int32_t). */
 typedef struct hedge_decimate_options {
   uint64_t target_vertices; /**< stop at this many vertices (0: no vertex target) */
   uint64_t target_faces;    /**< stop at this many faces (0: no face target) */
@@ -635,19 +636,38 @@ typedef struct hedge_decimate_options {
   double max_normal_change_degrees; /**< refuse collapses that turn a face more than this, in (0, 180] */
   int32_t keep_boundary;            /**< 1: boundary vertices never move and are never removed */
   int32_t keep_seams;               /**< 1: UV seams are not collapsed across or broken */
+  int32_t relax_normal_change; /**< 1: should max_normal_change_degrees (below 90) alone stop the run short
+                                  of its target, it is raised to 90 for the rest; 0: it holds to the end */
+  int32_t reserved;            /**< 0 */
 } hedge_decimate_options;
 
-/** Layout (32 bytes): vertices @0, faces @8, collapses @16 (uint64_t), max_error @24 (double). */
+/** Why hedge_mesh_decimate() stopped (hedge_decimate_result.stop; DecimateStop in order). */
+typedef enum hedge_decimate_stop {
+  HEDGE_DECIMATE_TARGET_REACHED = 0, /**< the vertex and face targets are met */
+  HEDGE_DECIMATE_ERROR_BOUND = 1,    /**< every collapse left would exceed max_error */
+  HEDGE_DECIMATE_NO_LEGAL_COLLAPSE =
+      2 /**< each collapse left is refused by a check (counted), or none is left */
+} hedge_decimate_stop;
+
+/** Layout (64 bytes): vertices @0, faces @8, collapses @16 (uint64_t), max_error @24 (double),
+ *  stop @32, reserved @36 (int32_t), refused_topology @40, refused_normal @48, refused_shape @56
+ *  (uint64_t). */
 typedef struct hedge_decimate_result {
-  uint64_t vertices;  /**< live vertices left */
-  uint64_t faces;     /**< live faces left */
-  uint64_t collapses; /**< edge collapses done */
-  double max_error;   /**< the largest error (a distance) of a collapse done, 0 if none */
+  uint64_t vertices;         /**< live vertices left */
+  uint64_t faces;            /**< live faces left */
+  uint64_t collapses;        /**< edge collapses done */
+  double max_error;          /**< the largest error (a distance) of a collapse done, 0 if none */
+  int32_t stop;              /**< hedge_decimate_stop: why it stopped */
+  int32_t reserved;          /**< 0 */
+  uint64_t refused_topology; /**< collapse attempts refused by the link condition (an edge retried in a
+                                later pass counts again) */
+  uint64_t refused_normal;   /**< ... because a face would turn too far, turn over or lose its area */
+  uint64_t refused_shape;    /**< ... because a new face would be a sliver */
 } hedge_decimate_result;
 
 /** Fills *out_options with the defaults: no target, no error limit (INFINITY), boundary weight 1,
- *  feature angle 60 and weight 1, no attribute weight, normal change 60 degrees, boundary free,
- *  seams kept. */
+ *  feature angle 60 and weight 1, no attribute weight, normal change 60 degrees relaxed to 90 when
+ *  it alone stops the run, boundary free, seams kept. */
 HEDGE_API hedge_status hedge_decimate_options_default(hedge_decimate_options* out_options);
 /** Decimates a triangle mesh by quadric-ranked edge collapses until both targets that are nonzero
  *  are met, the next collapse's error would exceed max_error, or no legal collapse is left (see

@@ -128,4 +128,18 @@ unsigned thread_count(std::int64_t threads, const char* what) {
   return threads == 0 ? max_threads() : static_cast<unsigned>(threads);
 }
 
+const char* name(DecimateStop value) {
+  switch (value) {
+    case DecimateStop::target_reached:
+      return "target_reached";
+    case DecimateStop::error_bound:
+      return "error_bound";
+    case DecimateStop::no_legal_collapse:
+      return "no_legal_collapse";
+  }
+  return "unknown";
+}
+
+std::int32_t constant(DecimateStop value) { return static_cast<std::int32_t>(value); }
+
 }  // namespace hedge::binding

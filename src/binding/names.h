@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "hedge/algorithms/decimate.h"
 #include "hedge/algorithms/normals.h"
 #include "hedge/algorithms/reorder.h"
 #include "hedge/algorithms/smooth.h"
@@ -38,6 +39,13 @@ const char* name(SmoothMethod value);
 const char* name(NormalSource value);
 const char* name(NormalWeighting value);
 const char* name(Ordering value);
+
+//! Why decimate() stopped, as every binding says it: "target_reached", "error_bound",
+//! "no_legal_collapse" (the enumerators' names). A switch without a default, compiled with
+//! -Werror=switch: an enumerator added to DecimateStop without a name here does not build.
+const char* name(DecimateStop value);
+//! The C ABI's HEDGE_DECIMATE_STOP_* constant of the value (its position in DecimateStop).
+std::int32_t constant(DecimateStop value);
 
 //! Every accepted spelling (names first, then aliases), for a command line's list of choices.
 std::vector<std::string> subdivision_spellings();

@@ -210,6 +210,8 @@ hedge_status hedge_decimate_options_default(hedge_decimate_options* out_options)
     o.max_normal_change_degrees = d.max_normal_change_degrees;
     o.keep_boundary = d.keep_boundary ? 1 : 0;
     o.keep_seams = d.keep_seams ? 1 : 0;
+    o.relax_normal_change = d.relax_normal_change ? 1 : 0;
+    o.reserved = 0;
   });
 }
 
@@ -229,11 +231,18 @@ hedge_status hedge_mesh_decimate(hedge_mesh* mesh, const hedge_decimate_options*
     d.max_normal_change_degrees = o.max_normal_change_degrees;
     d.keep_boundary = need_bool(o.keep_boundary, "keep_boundary");
     d.keep_seams = need_bool(o.keep_seams, "keep_seams");
+    d.relax_normal_change = need_bool(o.relax_normal_change, "relax_normal_change");
+    if (o.reserved != 0)
+      fail(HEDGE_ERROR_INVALID_ARGUMENT,
+           "decimate_options.reserved is " + std::to_string(o.reserved) + ", not 0");
     // Its InvalidInputError becomes HEDGE_ERROR_INVALID_ARGUMENT, the mesh unchanged. A failure
     // halfway (memory) would leave a run of collapses cut short: the rollback puts the mesh back.
     SurfaceMesh& m = object->mesh;
     const DecimateResult r = binding::with_rollback(m, [&] { return decimate(m, d); });
-    if (out_result != nullptr) *out_result = {r.vertices, r.faces, r.collapses, r.max_error};
+    if (out_result != nullptr)
+      *out_result = {
+          r.vertices,         r.faces,          r.collapses,    r.max_error, binding::constant(r.stop), 0,
+          r.refused.topology, r.refused.normal, r.refused.shape};
   });
 }
 

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "build_internal.h"
+#include "hedge/core/properties.h"
 #include "hedge/error.h"
 
 namespace hedge {
@@ -123,7 +124,22 @@ SurfaceMesh build(const IndexedMesh& input, const BuildOptions& options, BuildRe
   BuildReport local;
   BuildReport& rep = report ? *report : local;
   rep = BuildReport{};
-  return MeshBuilder(view, options, rep, report != nullptr).run();
+  const std::vector<std::int32_t>& submeshes = input.face_submeshes;
+  if (submeshes.empty()) return MeshBuilder(view, options, rep, report != nullptr).run();
+  if (submeshes.size() != input.face_count())
+    throw InvalidInputError("indexed mesh: " + std::to_string(submeshes.size()) + " face submeshes for " +
+                            std::to_string(input.face_count()) + " faces");
+  for (std::size_t f = 0; f < submeshes.size(); ++f)
+    if (submeshes[f] < 0 || submeshes[f] > kMaxSubmesh)
+      throw InvalidInputError("indexed mesh: face " + std::to_string(f) + " has submesh " +
+                              std::to_string(submeshes[f]) + ", outside [0, " + std::to_string(kMaxSubmesh) +
+                              "]");
+  // The face map carries each kept face's submesh to the face it became.
+  SurfaceMesh mesh = MeshBuilder(view, options, rep, true).run();
+  auto submesh = mesh.face_property<std::int32_t>(kSubmeshProperty);
+  for (std::size_t f = 0; f < submeshes.size(); ++f)
+    if (rep.face_map[f] != kInvalidIndex) submesh[Face(rep.face_map[f])] = submeshes[f];
+  return mesh;
 }
 
 SurfaceMesh build_triangles(std::span<const Vec3> positions, std::span<const std::uint32_t> triangles,

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <exception>
 #include <limits>
+#include <map>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -18,6 +19,7 @@
 
 #include "gltf_guard.h"
 #include "gltf_internal.h"
+#include "hedge/core/properties.h"
 #include "hedge/io/io.h"
 #include "parse_util.h"
 
@@ -74,6 +76,10 @@ struct Primitive {
   std::vector<Vec2> texcoords;  // empty when absent
   std::vector<Color> colors;    // empty when absent
   std::vector<std::uint32_t> triangles;
+  int material = -1;  // the primitive's material, -1 for none
+  // The earlier primitive whose vertices this one indexes (same node, same attribute accessors),
+  // -1 when it has its own; a sharing primitive leaves its vertex arrays empty.
+  std::ptrdiff_t shares = -1;
 };
 
 class Reader {
@@ -237,6 +243,7 @@ class Reader {
   }
 
   void add_mesh(int mesh, const Mat4& world) {
+    vertex_sets_.clear();  // a node's transform applies to its own copy of the vertices
     const tg::Mesh& m = model_.meshes[static_cast<std::size_t>(mesh)];
     for (std::size_t p = 0; p < m.primitives.size(); ++p)
       add_primitive(m.primitives[p], world, "mesh " + std::to_string(mesh) + " primitive " + str(p));
@@ -399,21 +406,27 @@ class Reader {
     return values;
   }
 
-  void add_primitive(const tg::Primitive& prim, const Mat4& world, const std::string& where) {
-    const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
-    if (mode >= TINYGLTF_MODE_POINTS && mode <= TINYGLTF_MODE_LINE_STRIP) {
-      static constexpr const char* kNames[] = {"points", "lines", "line loop", "line strip"};
-      warnings_.push_back({name_, 0, -1,
-                           where + ": mode " + std::to_string(mode) + " (" + kNames[mode] +
-                               ") is not a surface and is not read"});
-      return;
+  // The attribute accessors a primitive's vertices come from.
+  static std::array<int, 4> vertex_accessors(const tg::Primitive& prim) {
+    std::array<int, 4> ids{};
+    const char* names[4] = {"POSITION", "NORMAL", "TEXCOORD_0", "COLOR_0"};
+    for (std::size_t k = 0; k < 4; ++k) {
+      const auto it = prim.attributes.find(names[k]);
+      ids[k] = it == prim.attributes.end() ? -1 : it->second;
     }
-    if (mode > TINYGLTF_MODE_TRIANGLE_FAN)
-      fail(where + ": mode " + std::to_string(mode) + " is not a glTF mode");
-    if (prim.attributes.find("POSITION") == prim.attributes.end())
-      fail(where + ": has no POSITION attribute");
+    return ids;
+  }
 
-    Primitive out;
+  // Decodes the primitive's vertex attributes into `out`, or, when an earlier primitive of the same
+  // node has the same attribute accessors (several materials over one vertex set, as hedge writes
+  // submeshes), points `out` at that primitive's vertices. Returns the vertex count.
+  std::size_t read_vertices(const tg::Primitive& prim, const std::string& where, Primitive& out) {
+    const std::array<int, 4> ids = vertex_accessors(prim);
+    const auto [it, added] = vertex_sets_.try_emplace(ids, primitives_.size());
+    if (!added) {
+      out.shares = static_cast<std::ptrdiff_t>(it->second);
+      return primitives_[it->second].positions.size();
+    }
     const std::vector<double> pos = attribute(prim, "POSITION", 3, false, where);
     const std::size_t vertices = pos.size() / 3;
     out.positions.resize(vertices);
@@ -454,6 +467,26 @@ class Reader {
                          k == 4 ? static_cast<float>(col[k * i + 3]) : 1.0f};
     }
 
+    return vertices;
+  }
+
+  void add_primitive(const tg::Primitive& prim, const Mat4& world, const std::string& where) {
+    const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+    if (mode >= TINYGLTF_MODE_POINTS && mode <= TINYGLTF_MODE_LINE_STRIP) {
+      static constexpr const char* kNames[] = {"points", "lines", "line loop", "line strip"};
+      warnings_.push_back({name_, 0, -1,
+                           where + ": mode " + std::to_string(mode) + " (" + kNames[mode] +
+                               ") is not a surface and is not read"});
+      return;
+    }
+    if (mode > TINYGLTF_MODE_TRIANGLE_FAN)
+      fail(where + ": mode " + std::to_string(mode) + " is not a glTF mode");
+    if (prim.attributes.find("POSITION") == prim.attributes.end())
+      fail(where + ": has no POSITION attribute");
+
+    Primitive out;
+    out.material = prim.material;
+    const std::size_t vertices = read_vertices(prim, where, out);
     // The primitive's vertex sequence, then its triangles.
     std::vector<std::uint32_t> seq;
     if (prim.indices >= 0) {
@@ -499,11 +532,16 @@ class Reader {
       for (std::size_t i = 1; i + 1 < seq.size(); ++i) emit(seq[i], seq[i + 1], seq[0], true);
     }
 
-    transform(out, world);
+    if (out.shares < 0) transform(out, world);
+    // A mirroring transform turns counter-clockwise triangles clockwise: reverse them back.
+    if (world != kIdentity && mirrors(world))
+      for (std::size_t t = 0; t + 2 < out.triangles.size(); t += 3)
+        std::swap(out.triangles[t + 1], out.triangles[t + 2]);
     primitives_.push_back(std::move(out));
   }
 
-  // Applies a node's world matrix. The identity leaves every value as it is, bit for bit.
+  // Applies a node's world matrix to the vertices. The identity leaves every value as it is, bit
+  // for bit.
   void transform(Primitive& p, const Mat4& m) const {
     if (m == kIdentity) return;
     for (Vec3& v : p.positions) {
@@ -531,33 +569,46 @@ class Reader {
                          static_cast<float>(r[2] / len)}
                   : Vec3{0, 0, 0};
     }
-    // A mirroring transform turns counter-clockwise triangles clockwise: reverse them back.
-    if (det < 0)
-      for (std::size_t t = 0; t + 2 < p.triangles.size(); t += 3)
-        std::swap(p.triangles[t + 1], p.triangles[t + 2]);
+  }
+
+  // Whether the transform's linear part has a negative determinant.
+  static bool mirrors(const Mat4& m) {
+    const double det = m[0] * (m[5] * m[10] - m[9] * m[6]) - m[4] * (m[1] * m[10] - m[9] * m[2]) +
+                       m[8] * (m[1] * m[6] - m[5] * m[2]);
+    return det < 0;
   }
 
   IndexedMesh assemble() {
     IndexedMesh mesh;
     bool normals = !primitives_.empty(), texcoords = !primitives_.empty(), colors = !primitives_.empty();
+    bool materials = false;
     std::size_t vertices = 0, corners = 0;
     for (const Primitive& p : primitives_) {
-      normals = normals && !p.normals.empty();
-      texcoords = texcoords && !p.texcoords.empty();
-      colors = colors && !p.colors.empty();
+      const Primitive& v = p.shares < 0 ? p : primitives_[static_cast<std::size_t>(p.shares)];
+      normals = normals && !v.normals.empty();
+      texcoords = texcoords && !v.texcoords.empty();
+      colors = colors && !v.colors.empty();
+      materials = materials || p.material >= 0;
       vertices += p.positions.size();
       corners += p.triangles.size();
     }
     if (vertices > std::numeric_limits<std::uint32_t>::max()) fail("more than 2^32 - 1 vertices in all");
     mesh.positions.reserve(vertices);
     mesh.indices.reserve(corners);
-    for (const Primitive& p : primitives_) {
-      const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    std::vector<std::uint32_t> bases(primitives_.size());
+    for (std::size_t q = 0; q < primitives_.size(); ++q) {
+      const Primitive& p = primitives_[q];
+      bases[q] = p.shares < 0 ? static_cast<std::uint32_t>(mesh.positions.size())
+                              : bases[static_cast<std::size_t>(p.shares)];
       mesh.positions.insert(mesh.positions.end(), p.positions.begin(), p.positions.end());
       if (normals) mesh.normals.insert(mesh.normals.end(), p.normals.begin(), p.normals.end());
       if (texcoords) mesh.texcoords.insert(mesh.texcoords.end(), p.texcoords.begin(), p.texcoords.end());
       if (colors) mesh.colors.insert(mesh.colors.end(), p.colors.begin(), p.colors.end());
-      for (const std::uint32_t i : p.triangles) mesh.indices.push_back(base + i);
+      for (const std::uint32_t i : p.triangles) mesh.indices.push_back(bases[q] + i);
+      // A primitive's material is its faces' submesh (0 without one), as write_gltf() writes them.
+      if (materials)
+        mesh.face_submeshes.insert(mesh.face_submeshes.end(), p.triangles.size() / 3,
+                                   p.material >= 0 ? std::min(p.material, kMaxSubmesh) : 0);
     }
     // glTF attributes are per vertex: the corner index is the vertex index.
     if (normals) mesh.normal_indices = mesh.indices;
@@ -573,6 +624,8 @@ class Reader {
   std::uint64_t budget_, spent_;
   std::vector<Placement> placements_;
   std::vector<Primitive> primitives_;
+  // The attribute accessors of the placed mesh's vertex sets, each with the primitive that read it.
+  std::map<std::array<int, 4>, std::size_t> vertex_sets_;
   std::vector<ReadWarning> warnings_;
 };
 

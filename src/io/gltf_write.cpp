@@ -1,5 +1,5 @@
 // glTF 2.0 writing: .gltf (JSON with the buffer as a data URI) and .glb (binary container), one
-// triangle primitive, through tinygltf's serializer.
+// triangle primitive per submesh, through tinygltf's serializer.
 
 #include <algorithm>
 #include <array>
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gltf_internal.h"
+#include "hedge/core/properties.h"
 #include "hedge/io/io.h"
 #include "parse_util.h"
 
@@ -40,14 +41,39 @@ void append_pod(std::vector<unsigned char>& out, const T& v) {
   out.insert(out.end(), p, p + sizeof(T));
 }
 
-//! Triangles, polygons fanned from their first corner, as corner numbers into mesh.indices.
-std::vector<std::size_t> fan_corners(const IndexedMesh& mesh) {
+//! Triangles, polygons fanned from their first corner, as corner numbers into mesh.indices, and
+//! the submesh of each triangle (its face's) when the mesh has face_submeshes.
+struct FannedTriangles {
   std::vector<std::size_t> corners;
-  corners.reserve(mesh.indices.size());
+  std::vector<std::int32_t> submeshes;
+};
+
+FannedTriangles fan_corners(const IndexedMesh& mesh) {
+  FannedTriangles out;
+  out.corners.reserve(mesh.indices.size());
+  const bool submeshes = !mesh.face_submeshes.empty();
+  std::size_t face = 0;
   detail::for_each_face(mesh, [&](std::size_t first, std::size_t n) {
-    for (std::size_t k = 1; k + 1 < n; ++k) corners.insert(corners.end(), {first, first + k, first + k + 1});
+    for (std::size_t k = 1; k + 1 < n; ++k) {
+      out.corners.insert(out.corners.end(), {first, first + k, first + k + 1});
+      if (submeshes) out.submeshes.push_back(mesh.face_submeshes[face]);
+    }
+    ++face;
   });
-  return corners;
+  return out;
+}
+
+//! Refuses face_submeshes that are not one per face in [0, kMaxSubmesh], naming the first wrong one.
+void check_submeshes(const IndexedMesh& mesh) {
+  if (mesh.face_submeshes.empty()) return;
+  if (mesh.face_submeshes.size() != mesh.face_count())
+    throw InvalidInputError("indexed mesh: " + std::to_string(mesh.face_submeshes.size()) +
+                            " face submeshes for " + std::to_string(mesh.face_count()) + " faces");
+  for (std::size_t f = 0; f < mesh.face_submeshes.size(); ++f)
+    if (mesh.face_submeshes[f] < 0 || mesh.face_submeshes[f] > kMaxSubmesh)
+      throw InvalidInputError("indexed mesh: face " + std::to_string(f) + " has submesh " +
+                              std::to_string(mesh.face_submeshes[f]) + ", outside [0, " +
+                              std::to_string(kMaxSubmesh) + "]");
 }
 
 //! glTF's vertices, each a distinct (position, texcoord, normal, colour) of a corner, and the
@@ -197,9 +223,40 @@ std::string serialize(tg::Model& model, bool binary, const char* what) {
   return out.str();
 }
 
+//! One primitive per submesh, in increasing submesh order, each drawing its triangles in face
+//! order with material number = submesh (materials 0 to the largest submesh, named "submesh_N",
+//! so a reader maps a primitive's material straight back to its submesh). All primitives share
+//! the vertex accessors: a vertex where two submeshes meet is written once, and the reader, which
+//! reads primitives that share accessors as one vertex set, gives the mesh back connected.
+std::vector<tg::Primitive> submesh_primitives(const tg::Primitive& shared, const GltfVertices& vertices,
+                                              const std::vector<std::int32_t>& submeshes,
+                                              BufferWriter& buffer, tg::Model& model) {
+  const std::int32_t largest = *std::max_element(submeshes.begin(), submeshes.end());
+  std::vector<std::vector<std::uint32_t>> indices(static_cast<std::size_t>(largest) + 1);
+  for (std::size_t t = 0; t < submeshes.size(); ++t) {
+    std::vector<std::uint32_t>& out = indices[static_cast<std::size_t>(submeshes[t])];
+    out.insert(out.end(), vertices.indices.begin() + static_cast<std::ptrdiff_t>(3 * t),
+               vertices.indices.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
+  }
+  std::vector<tg::Primitive> prims;
+  for (std::size_t s = 0; s < indices.size(); ++s) {
+    tg::Material material;
+    material.name = "submesh_" + std::to_string(s);
+    model.materials.push_back(std::move(material));
+    if (indices[s].empty()) continue;
+    tg::Primitive prim = shared;
+    prim.indices = buffer.add_indices(indices[s], vertices.keys.size());
+    prim.material = static_cast<int>(s);
+    prims.push_back(std::move(prim));
+  }
+  return prims;
+}
+
 std::string write_model(const IndexedMesh& mesh, bool binary) {
   detail::check_writable(mesh);
-  const GltfVertices vertices = split_at_seams(mesh, fan_corners(mesh));
+  check_submeshes(mesh);
+  const FannedTriangles triangles = fan_corners(mesh);
+  const GltfVertices vertices = split_at_seams(mesh, triangles.corners);
   tg::Model model;
   model.asset.version = "2.0";
   model.asset.generator = "hedge";
@@ -210,14 +267,18 @@ std::string write_model(const IndexedMesh& mesh, bool binary) {
   tg::Primitive prim;
   prim.mode = TINYGLTF_MODE_TRIANGLES;
   write_attributes(mesh, vertices.keys, buffer, model, prim);
-  prim.indices = buffer.add_indices(vertices.indices, vertices.keys.size());
+  tg::Mesh m;
+  if (triangles.submeshes.empty()) {
+    prim.indices = buffer.add_indices(vertices.indices, vertices.keys.size());
+    m.primitives.push_back(std::move(prim));
+  } else {
+    m.primitives = submesh_primitives(prim, vertices, triangles.submeshes, buffer, model);
+  }
   buffer.finish();
 
   // One scene of one node holding the one mesh.
   model.scenes.emplace_back();
   model.defaultScene = 0;
-  tg::Mesh m;
-  m.primitives.push_back(std::move(prim));
   model.meshes.push_back(std::move(m));
   tg::Node node;
   node.mesh = 0;

@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "caught.h"
 #include "hedge/algorithms/fracture.h"
@@ -16,6 +18,62 @@
 
 namespace hedge {
 namespace {
+
+// A flat n x n plate of triangles in the z = 0 plane.
+SurfaceMesh material_plate(int n) { return build(test::grid(n, true)); }
+
+TEST(FractureMaterial, PresetsDifferInShardCount) {
+  std::vector<std::size_t> counts;
+  for (const char* name : {"glass", "stone", "ice"}) {
+    SurfaceMesh mesh = material_plate(60);
+    FractureOptions o;
+    o.material = fracture_material(name);
+    o.seed = 3;
+    counts.push_back(fracture(mesh, {30.5f, 30.2f, 0}, o).shards.size());
+    EXPECT_TRUE(mesh.validate().empty());
+  }
+  EXPECT_GT(counts[0], counts[2]);  // glass > ice
+  EXPECT_GT(counts[2], counts[1]);  // ice > stone
+  EXPECT_LE(counts[1], 7u);
+}
+
+TEST(FractureMaterial, UnknownPresetListsTheValidNames) {
+  try {
+    fracture_material("metal");
+    FAIL();
+  } catch (const InvalidInputError& e) {
+    const std::string what = e.what();
+    for (const char* n : {"metal", "glass", "stone", "wood", "ice"})
+      EXPECT_NE(what.find(n), std::string::npos) << what;
+  }
+}
+
+TEST(FractureMaterial, WoodShardsAreLongerAlongTheGrain) {
+  auto mean_aspect = [](const char* preset, Vec3 grain) {
+    SurfaceMesh mesh = material_plate(80);
+    FractureOptions o;
+    o.material = fracture_material(preset);
+    o.material.grain = grain;
+    o.seed = 11;
+    const FractureResult r = fracture(mesh, {40.2f, 40.4f, 0}, o);
+    EXPECT_TRUE(mesh.validate().empty());
+    double sum = 0;
+    for (const Shard& s : r.shards) {
+      const BoundingBox b = bounding_box(s.mesh);
+      sum += (b.max.x - b.min.x) / std::max(1e-6f, b.max.y - b.min.y);
+    }
+    return sum / double(r.shards.size());
+  };
+  EXPECT_GT(mean_aspect("wood", {1, 0, 0}), 1.8);
+  EXPECT_LT(mean_aspect("wood", {0, 1, 0}), 1 / 1.8);
+  // A grain along the plate's normal cuts across it: round cells.
+  const double across = mean_aspect("wood", {0, 0, 1});
+  EXPECT_GT(across, 0.6);
+  EXPECT_LT(across, 1.6);
+  const double glass = mean_aspect("glass", {});
+  EXPECT_GT(glass, 0.6);
+  EXPECT_LT(glass, 1.6);
+}
 
 TEST(FractureMaterial, RadiusIsTheSumOfTheSpacings) {
   EXPECT_DOUBLE_EQ(fracture_material_radius(fracture_material("glass")), 1.0 + 1.6 + 2.0 + 2.4);

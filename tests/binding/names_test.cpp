@@ -52,6 +52,24 @@ TEST(BindingNames, TheCAbisConstants) {
   }
 }
 
+// Every DecimateStop has a name (a new enumerator without one does not build: -Werror=switch), the
+// names are distinct, and the C ABI's constants are the enumerators' positions.
+TEST(BindingNames, DecimateStopsAllHaveNamesAndConstants) {
+  const DecimateStop all[] = {DecimateStop::target_reached, DecimateStop::error_bound,
+                              DecimateStop::no_legal_collapse};
+  EXPECT_STREQ(name(DecimateStop::target_reached), "target_reached");
+  EXPECT_STREQ(name(DecimateStop::error_bound), "error_bound");
+  EXPECT_STREQ(name(DecimateStop::no_legal_collapse), "no_legal_collapse");
+  for (const DecimateStop a : all) {
+    EXPECT_STRNE(name(a), "unknown");
+    for (const DecimateStop b : all)
+      if (a != b) EXPECT_STRNE(name(a), name(b));
+  }
+  EXPECT_EQ(constant(DecimateStop::target_reached), HEDGE_DECIMATE_TARGET_REACHED);
+  EXPECT_EQ(constant(DecimateStop::error_bound), HEDGE_DECIMATE_ERROR_BOUND);
+  EXPECT_EQ(constant(DecimateStop::no_legal_collapse), HEDGE_DECIMATE_NO_LEGAL_COLLAPSE);
+}
+
 TEST(BindingNames, ThreadCounts) {
   EXPECT_EQ(thread_count(0, "threads"), max_threads());  // 0: every core
   EXPECT_EQ(thread_count(3, "threads"), 3u);

@@ -203,10 +203,15 @@ void test_smooth(void) {
 void test_decimate(void) {
   hedge_decimate_options o;
   memset(&o, 0xFF, sizeof o);
-  CHECK(sizeof o == 72 && sizeof(hedge_decimate_result) == 32);
+  CHECK(sizeof o == 80 && sizeof(hedge_decimate_result) == 64);
+  CHECK(offsetof(hedge_decimate_options, relax_normal_change) == 72 &&
+        offsetof(hedge_decimate_result, stop) == 32 &&
+        offsetof(hedge_decimate_result, refused_topology) == 40 &&
+        offsetof(hedge_decimate_result, refused_shape) == 56);
   CHECK_OK(hedge_decimate_options_default(&o));
   CHECK(o.target_vertices == 0 && o.target_faces == 0 && isinf(o.max_error) && o.boundary_weight == 1 &&
-        o.max_normal_change_degrees == 60 && o.keep_boundary == 0 && o.keep_seams == 1);
+        o.max_normal_change_degrees == 60 && o.keep_boundary == 0 && o.keep_seams == 1 &&
+        o.relax_normal_change == 1 && o.reserved == 0);
   /* A 9 x 9 height field z = x^2 / 20, triangulated: 81 vertices, 128 triangles. */
   float positions[81 * 3];
   uint32_t triangles[128 * 3], n = 0;
@@ -229,6 +234,7 @@ void test_decimate(void) {
   hedge_counts c = counts_of(field);
   CHECK(r.vertices == c.vertices && r.faces == c.faces && c.vertices <= 20 && c.vertices >= 18);
   CHECK(r.collapses == 81 - c.vertices && r.max_error > 0 && r.max_error < 1);
+  CHECK(r.stop == HEDGE_DECIMATE_TARGET_REACHED && r.reserved == 0);
   CHECK(c.vertex_slots == c.vertices); /* garbage collected */
   uint32_t problems = 1;
   CHECK_OK(hedge_mesh_validate(field, &problems));
@@ -249,9 +255,38 @@ void test_decimate(void) {
   hedge_mesh* fresh = make_mesh(positions, 81, triangles, n, NULL, 0);
   CHECK_OK(hedge_mesh_decimate(fresh, NULL, &r));
   CHECK(r.vertices < 20 && r.vertices >= 3 && r.faces >= 1 && r.vertices == counts_of(fresh).vertices);
+  CHECK(r.stop == HEDGE_DECIMATE_NO_LEGAL_COLLAPSE);
   CHECK_OK(hedge_mesh_validate(fresh, &problems));
   CHECK(problems == 0);
   CHECK_OK(hedge_mesh_destroy(fresh));
+  /* A normal limit of 1 degree held to the end stops the run short, counting its refusals; relaxed
+   * (the default) it is raised to 90 degrees and the run goes further. */
+  uint64_t strict_collapses = 0;
+  for (int32_t relax = 0; relax <= 1; ++relax) {
+    hedge_mesh* curved = make_mesh(positions, 81, triangles, n, NULL, 0);
+    CHECK_OK(hedge_decimate_options_default(&o));
+    o.target_vertices = 4;
+    o.max_normal_change_degrees = 1;
+    o.relax_normal_change = relax;
+    CHECK_OK(hedge_mesh_decimate(curved, &o, &r));
+    if (relax == 0) {
+      CHECK(r.stop == HEDGE_DECIMATE_NO_LEGAL_COLLAPSE && r.refused_normal > 0 && r.vertices > 4);
+      strict_collapses = r.collapses;
+    } else {
+      CHECK(r.collapses > strict_collapses);
+    }
+    CHECK_OK(hedge_mesh_validate(curved, &problems));
+    CHECK(problems == 0);
+    CHECK_OK(hedge_mesh_destroy(curved));
+  }
+  o.relax_normal_change = 2;
+  CHECK_STATUS(hedge_mesh_decimate(field, &o, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("relax_normal_change");
+  o.relax_normal_change = 1;
+  o.reserved = 3;
+  CHECK_STATUS(hedge_mesh_decimate(field, &o, NULL), HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_ERROR_HAS("decimate_options.reserved is 3, not 0");
+  o.reserved = 0;
   /* Quads are refused, unchanged. */
   hedge_mesh* grid = make_mesh(kGridPositions, 9, kGridQuads, 16, kGridSizes, 4);
   CHECK_STATUS(hedge_mesh_decimate(grid, NULL, NULL), HEDGE_ERROR_INVALID_ARGUMENT);

@@ -3,7 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
 #include "core/build_test_util.h"
+#include "hedge/core/properties.h"
+#include "hedge/error.h"
 #include "test_meshes.h"
 
 namespace hedge {
@@ -56,6 +60,34 @@ TEST(Build, CornerAttributesFollowCorners) {
     }
   }
   EXPECT_TRUE(m.validate().empty());
+}
+
+// face_submeshes becomes "f:submesh", each kept face's own, through the face map when the repair
+// drops a face; a submesh outside [0, kMaxSubmesh] or a count that is not one per face is refused.
+TEST(Build, FaceSubmeshesBecomeTheSubmeshProperty) {
+  IndexedMesh in = tetrahedron();
+  in.face_submeshes = {0, 3, 1, 3};
+  SurfaceMesh m = build(in);
+  const auto submesh = m.get_face_property<std::int32_t>(kSubmeshProperty);
+  ASSERT_TRUE(submesh);
+  for (const Face f : m.faces()) EXPECT_EQ(submesh[f], in.face_submeshes[f.idx()]) << f.idx();
+  EXPECT_TRUE(m.validate().empty());
+  EXPECT_FALSE(build(tetrahedron()).get_face_property<std::int32_t>(kSubmeshProperty));
+
+  IndexedMesh degenerate = tetrahedron();
+  degenerate.indices.insert(degenerate.indices.begin(), {0, 0, 1});  // dropped by the repair
+  degenerate.face_submeshes = {9, 0, 3, 1, 3};
+  BuildReport rep;
+  SurfaceMesh r = build(degenerate, repair(), &rep);
+  ASSERT_EQ(rep.degenerate_faces, 1u);
+  const auto kept = r.get_face_property<std::int32_t>(kSubmeshProperty);
+  for (std::size_t f = 1; f < 5; ++f) EXPECT_EQ(kept[Face(rep.face_map[f])], degenerate.face_submeshes[f]);
+  EXPECT_TRUE(r.validate().empty());
+
+  in.face_submeshes = {0, 1, 2};
+  EXPECT_THROW(build(in), InvalidInputError);
+  in.face_submeshes = {0, 1, kMaxSubmesh + 1, 0};
+  EXPECT_THROW(build(in), InvalidInputError);
 }
 
 }  // namespace

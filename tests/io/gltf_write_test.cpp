@@ -8,7 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "caught.h"
+#include "hedge/core/build.h"
 #include "hedge/core/export.h"
+#include "hedge/core/properties.h"
 #include "hedge/render/render_buffers.h"
 #include "io/gltf_test_common.h"
 #include "io/io_errors.h"
@@ -221,6 +224,73 @@ TEST(GltfWrite, AMeshWithoutFacesGivesNoSceneAndBadMeshesAreRefused) {
   bad.positions = {{0, 0, 0}};
   bad.indices = {0, 0, 5};
   EXPECT_THROW(write_glb(bad), InvalidInputError);
+}
+
+// A mesh with submeshes (a solid fracture piece: outer faces in 0, caps in 2) is one primitive per
+// submesh with material N for submesh N, over shared vertex accessors; reading it back gives the
+// same vertices, each face with its corners and its submesh, the faces grouped by submesh.
+TEST(GltfWrite, SubmeshesArePrimitivesWithTheirMaterialsAndReadBack) {
+  IndexedMesh spot = read_obj(read_file(data_path("spot_triangulated.obj")));
+  const std::size_t faces = spot.face_count();
+  for (std::size_t f = 0; f < faces; ++f) spot.face_submeshes.push_back(f % 3 == 1 ? 2 : 0);
+  const json doc = json::parse(write_gltf(spot));
+  const json& prims = doc["meshes"][0]["primitives"];
+  ASSERT_EQ(prims.size(), 2u);
+  ASSERT_EQ(doc["materials"].size(), 3u);  // submesh 1 is unused but keeps its number
+  EXPECT_EQ(doc["materials"][2]["name"], "submesh_2");
+  EXPECT_EQ(prims[0]["material"], 0);
+  EXPECT_EQ(prims[1]["material"], 2);
+  EXPECT_EQ(prims[0]["attributes"], prims[1]["attributes"]);
+  EXPECT_NE(prims[0]["indices"], prims[1]["indices"]);
+
+  const IndexedMesh plain =
+      read_gltf(write_glb(read_obj(read_file(data_path("spot_triangulated.obj")))), "p");
+  for (const bool binary : {false, true}) {
+    const IndexedMesh back = read_gltf(binary ? write_glb(spot) : write_gltf(spot), "spot");
+    // The primitives share their vertices: as many as without submeshes, in the same order.
+    ASSERT_EQ(back.positions.size(), plain.positions.size());
+    EXPECT_EQ(
+        std::memcmp(back.positions.data(), plain.positions.data(), plain.positions.size() * sizeof(Vec3)), 0);
+    ASSERT_EQ(back.face_submeshes.size(), faces);
+    std::size_t read = 0;
+    for (const std::int32_t s : {0, 2})
+      for (std::size_t f = 0; f < faces; ++f) {
+        if (spot.face_submeshes[f] != s) continue;
+        EXPECT_EQ(back.face_submeshes[read], s) << f;
+        for (std::size_t k = 0; k < 3; ++k)
+          ASSERT_TRUE(
+              same_bits(back.positions[back.indices[3 * read + k]], spot.positions[spot.indices[3 * f + k]]))
+              << f;
+        ++read;
+      }
+    EXPECT_EQ(read, faces);
+  }
+  // A file read without materials has no submeshes; out-of-range submeshes are refused by name.
+  EXPECT_TRUE(plain.face_submeshes.empty());
+  spot.face_submeshes[5] = -1;
+  const InvalidInputError e =
+      test::caught<InvalidInputError>([&] { write_glb(spot); }, InvalidInputError(""));
+  EXPECT_EQ(std::string(e.what()), "indexed mesh: face 5 has submesh -1, outside [0, 65535]");
+  spot.face_submeshes.pop_back();
+  EXPECT_THROW(write_gltf(spot), InvalidInputError);
+}
+
+// The mesh a file with submeshes builds into carries them as "f:submesh".
+TEST(GltfWrite, ASurfaceMeshKeepsItsSubmeshesThroughAGlbFile) {
+  SurfaceMesh cube = build(read_obj(read_file(data_path("spot_triangulated.obj"))));
+  auto submesh = cube.add_face_property<std::int32_t>(kSubmeshProperty);
+  for (const Face f : cube.faces()) submesh[f] = static_cast<std::int32_t>(f.idx() % 2);
+  const IndexedMesh back = read_gltf(write_glb(to_indexed(cube)), "cube");
+  const SurfaceMesh again = build(back, default_build_options(FileFormat::glb));
+  EXPECT_TRUE(again.validate().empty());
+  const auto read = again.get_face_property<std::int32_t>(kSubmeshProperty);
+  ASSERT_TRUE(read);
+  std::size_t odd = 0;
+  for (const Face f : again.faces()) odd += static_cast<std::size_t>(read[f]);
+  std::size_t expected = 0;
+  for (const Face f : cube.faces()) expected += static_cast<std::size_t>(submesh[f]);
+  EXPECT_EQ(odd, expected);
+  EXPECT_GT(odd, 0u);
 }
 
 TEST(GltfWrite, RefusesANonFiniteValueBeforeWriting) {

@@ -1,6 +1,7 @@
 // hedge fracture --kind solid|auto, run as a user would.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -101,6 +102,46 @@ TEST_F(HedgeCli, SolidFractureTwoRunsGiveByteIdenticalFolders) {
   ASSERT_EQ(run(strike(tmp("a"), "stone", "3")).code, 0);
   const json summary = json::parse(read_text(tmp("a") / "summary.json"));
   EXPECT_EQ(folder(tmp("a")).size(), summary["pieces"].size() + 2);
+}
+
+// The JSON chunk of a .glb file (after the 12-byte header and the chunk's length and type).
+json glb_json(const std::string& glb) {
+  EXPECT_EQ(glb.substr(0, 4), "glTF");
+  EXPECT_EQ(glb.substr(16, 4), "JSON");
+  std::uint32_t length = 0;
+  for (int k = 3; k >= 0; --k)
+    length = length * 256 + static_cast<unsigned char>(glb[12 + static_cast<std::size_t>(k)]);
+  return json::parse(glb.substr(20, length));
+}
+
+// --format glb writes each piece as one primitive per submesh: the outer faces with material 0,
+// the caps with the inner material 1, as many triangles as the summary's inner faces.
+TEST_F(HedgeCli, SolidFracturePiecesAsGlbCarryTheInnerMaterial) {
+  const fs::path out = tmp("glb");
+  std::vector<std::string> args = strike(out, "stone", "7");
+  args.insert(args.end(), {"--format", "glb"});
+  ASSERT_EQ(run(args).code, 0);
+  const json summary = json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary["remaining"]["file"], "remaining.glb");
+  ASSERT_GE(summary["pieces"].size(), 2u);
+  for (const json& p : summary["pieces"]) {
+    const std::string file = p["file"].get<std::string>();
+    ASSERT_EQ(file.substr(file.size() - 4), ".glb");
+    const json doc = glb_json(read_text(out / file));
+    ASSERT_EQ(doc["materials"].size(), 2u) << file;
+    EXPECT_EQ(doc["materials"][1]["name"], "submesh_1");
+    const json& prims = doc["meshes"][0]["primitives"];
+    ASSERT_EQ(prims.size(), 2u) << file;
+    EXPECT_EQ(prims[1]["material"], 1);
+    EXPECT_EQ(doc["accessors"][prims[1]["indices"].get<int>()]["count"].get<int>(),
+              3 * p["inner_faces"].get<int>());
+    const json info = run_json({"info", (out / file).string(), "--json"});
+    EXPECT_TRUE(info["valid"].get<bool>()) << file;
+    EXPECT_TRUE(info["is_closed"].get<bool>()) << file;
+    EXPECT_EQ(info["faces"], p["faces"]);
+  }
+  expect_usage_error({"fracture", data("spot_triangulated.obj"), "--impact", "0,0,0", "-o", tmp("x").string(),
+                      "--format", "stl"});
 }
 
 // three_peaks is open at the impact: --kind solid refuses it by name, writing nothing; --kind auto

@@ -1,6 +1,7 @@
 // hedge fracture IN --impact x,y,z --material NAME|FILE.json --seed S [--radius R --units U]
 // [--break-radius R] -o DIR:
-// break a mesh at an impact and write the remaining mesh, one OBJ per shard and summary.json into DIR.
+// [--format obj|glb] break a mesh at an impact and write the remaining mesh, one file per shard
+// (OBJ, or glTF binary with one primitive per submesh) and summary.json into DIR.
 // With --kind solid or auto, solid_fracture.cpp breaks it into closed pieces instead.
 #include "hedge/algorithms/fracture.h"
 
@@ -37,6 +38,7 @@ struct FractureCommandOptions {
   std::uint64_t seed = 0;
   double thickness = 0, density = 1, tolerance = 0, break_radius = 0, radius = 0, shell_thickness = 0;
   std::string units;
+  std::string format = "obj";  //!< of the mesh files written: "obj" or "glb"
   bool json = false;
   LoadOptions load;
   SolidFractureCliOptions solid;
@@ -108,10 +110,10 @@ void write_atomically(const fs::path& path, const std::string& text) {
 
 namespace {
 
-std::string shard_name(std::size_t i) {
+std::string shard_name(std::size_t i, const std::string& format) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "shard_%03zu.obj", i);
-  return buf;
+  std::snprintf(buf, sizeof buf, "shard_%03zu.", i);
+  return buf + format;
 }
 
 int run_surface_fracture(const FractureCommandOptions& o, const std::string& solid_refusal) {
@@ -148,14 +150,14 @@ int run_surface_fracture(const FractureCommandOptions& o, const std::string& sol
   summary["thickness"] = o.thickness;
   summary["density"] = o.density;
   if (!solid_refusal.empty()) summary["solid_refusal"] = solid_refusal;
-  summary["remaining"] = {
-      {"file", "remaining.obj"}, {"faces", mesh.n_faces()}, {"vertices", mesh.n_vertices()}};
+  const std::string remaining = "remaining." + o.format;
+  summary["remaining"] = {{"file", remaining}, {"faces", mesh.n_faces()}, {"vertices", mesh.n_vertices()}};
   mesh.garbage_collection();
-  save_mesh(mesh, (dir / "remaining.obj").string(), false);
+  save_mesh(mesh, (dir / remaining).string(), false);
   json shards = json::array();
   for (std::size_t i = 0; i < r.shards.size(); ++i) {
     const Shard& s = r.shards[i];
-    const std::string name = shard_name(i);
+    const std::string name = shard_name(i, o.format);
     save_mesh(s.mesh, (dir / name).string(), false);
     json m = {{"mass", s.mass.mass},
               {"centre_of_mass", vec(s.mass.centre_of_mass)},
@@ -176,7 +178,7 @@ int run_surface_fracture(const FractureCommandOptions& o, const std::string& sol
   // Shard files of an earlier run with more shards would not belong to this summary.
   for (std::size_t i = r.shards.size();; ++i) {
     std::error_code ec;
-    if (!fs::remove(dir / shard_name(i), ec)) break;
+    if (!fs::remove(dir / shard_name(i, o.format), ec)) break;
   }
   write_atomically(dir / "summary.json", summary.dump(2) + "\n");
 
@@ -198,8 +200,9 @@ int run_surface_fracture(const FractureCommandOptions& o, const std::string& sol
 
 int run_fracture(const FractureCommandOptions& o) {
   if (o.solid.kind == "surface" && !o.solid.solid) return run_surface_fracture(o, "");
-  const SolidFractureCliInputs in{o.input,  o.output,       o.impact,  o.material,  o.seed, o.units,
-                                  o.radius, o.break_radius, o.density, o.tolerance, o.json, o.load};
+  const SolidFractureCliInputs in{o.input, o.output, o.impact,       o.material, o.seed,
+                                  o.units, o.radius, o.break_radius, o.density,  o.tolerance,
+                                  o.json,  o.load,   o.format};
   return run_solid_fracture(o.solid, in,
                             [&](const std::string& why) { return run_surface_fracture(o, why); });
 }
@@ -236,6 +239,11 @@ void add_fracture_arguments(CLI::App* app, FractureCommandOptions* o) {
                   "spacings scaled to it); 0: as --units and --radius say",
                   0);
   app->add_option("-o,--output", o->output, "Output folder (created if missing)")->required();
+  app->add_option("--format", o->format,
+                  "Format of the mesh files written: obj (usemtl runs per submesh) or glb (one primitive "
+                  "and material per submesh, so solid pieces' caps carry the inner material)")
+      ->check(CLI::IsMember({"obj", "glb"}))
+      ->capture_default_str();
   add_real_option(*app, "--thickness", o->thickness,
                   "Extrude each shard into a solid this thick (model units); 0: none", 0);
   add_real_option(*app, "--density", o->density, "Mass per unit volume for the mass properties", 0, kInf,

@@ -1,8 +1,9 @@
 // hedge fracture IN --kind solid|auto (or --solid) --impact x,y,z [--break-radius R |
 // --units U --radius R]
-// -o DIR: break a closed mesh into closed pieces and write the remaining object, one OBJ per piece
-// and summary.json (with the bond graph) into DIR. "auto" falls back to surface fracture where
-// solid_fracture_refusal() refuses.
+// -o DIR [--format obj|glb]: break a closed mesh into closed pieces and write the remaining object,
+// one file per piece (OBJ with usemtl runs, or glTF binary with a primitive and material per submesh:
+// the caps' inner material) and summary.json (with the bond graph) into DIR. "auto" falls back to surface
+// fracture where solid_fracture_refusal() refuses.
 #include "solid_fracture.h"
 
 #include <chrono>
@@ -25,10 +26,10 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string piece_name(std::size_t i) {
+std::string piece_name(std::size_t i, const std::string& format) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "piece_%03zu.obj", i);
-  return buf;
+  std::snprintf(buf, sizeof buf, "piece_%03zu.", i);
+  return buf + format;
 }
 
 json mass_json(const MassProperties& m) {
@@ -139,23 +140,25 @@ int run_solid_fracture(const SolidFractureCliOptions& s, const SolidFractureCliI
   summary["density"] = in.density;
   summary["input_volume"] = input_volume;
   mesh.garbage_collection();
-  summary["remaining"] = {{"file", "remaining.obj"},
+  const std::string remaining = "remaining." + in.format;
+  summary["remaining"] = {{"file", remaining},
                           {"faces", mesh.n_faces()},
                           {"vertices", mesh.n_vertices()},
                           {"inner_faces", inner_faces(mesh)},
                           {"volume", volume_or_null(mesh)}};
-  save_mesh(mesh, (dir / "remaining.obj").string(), false);
+  save_mesh(mesh, (dir / remaining).string(), false);
   json pieces = json::array();
   for (std::size_t i = 0; i < r.pieces.size(); ++i) {
-    save_mesh(r.pieces[i].mesh, (dir / piece_name(i)).string(), false);
-    pieces.push_back(piece_json(r.pieces[i], piece_name(i)));
+    const std::string name = piece_name(i, in.format);
+    save_mesh(r.pieces[i].mesh, (dir / name).string(), false);
+    pieces.push_back(piece_json(r.pieces[i], name));
   }
   summary["pieces"] = pieces;
   summary["bonds"] = bonds_json(r.bonds);
   // Piece files of an earlier run with more pieces would not belong to this summary.
   for (std::size_t i = r.pieces.size();; ++i) {
     std::error_code ec;
-    if (!fs::remove(dir / piece_name(i), ec)) break;
+    if (!fs::remove(dir / piece_name(i, in.format), ec)) break;
   }
   write_atomically(dir / "summary.json", summary.dump(2) + "\n");
 

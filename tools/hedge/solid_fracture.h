@@ -46,6 +46,8 @@ struct SolidFractureCliInputs {
   double density, tolerance;
   bool json;
   const LoadOptions& load;
+  //! Of the mesh files written: "obj" or "glb".
+  const std::string& format;
 };
 
 void add_solid_fracture_arguments(CLI::App& app, SolidFractureCliOptions& options);

@@ -84,6 +84,9 @@ SurfaceMesh exploded_view(const SurfaceMesh& rest, const std::vector<ViewPiece>&
   };
   IndexedMesh all = to_indexed(rest, plain);
   all.face_sizes = sizes(all);
+  // The pieces' faces are appended without submeshes: the picture needs only "f:inner", and
+  // face_submeshes must hold one per face or none.
+  all.face_submeshes.clear();
   add_inner(rest);
   for (const ViewPiece& v : pieces) {
     const IndexedMesh piece = to_indexed(*v.mesh, plain);

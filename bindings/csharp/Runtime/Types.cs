@@ -250,7 +250,7 @@ namespace Hedge
         }
     }
 
-    /// <summary>Options of <see cref="HalfEdgeMesh.Decimate"/> (72 bytes, hedge_decimate_options). Start from
+    /// <summary>Options of <see cref="HalfEdgeMesh.Decimate"/> (80 bytes, hedge_decimate_options). Start from
     /// <see cref="Default"/> and set a target.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct DecimateOptions
@@ -273,21 +273,42 @@ namespace Hedge
         public double MaxNormalChangeDegrees;
         int keepBoundary;
         int keepSeams;
+        int relaxNormalChange;
+        int reserved;
 
         /// <summary>Boundary vertices never move and are never removed.</summary>
         public bool KeepBoundary { get { return keepBoundary != 0; } set { keepBoundary = value ? 1 : 0; } }
         /// <summary>UV seams are not collapsed across or broken.</summary>
         public bool KeepSeams { get { return keepSeams != 0; } set { keepSeams = value ? 1 : 0; } }
+        /// <summary>Should <see cref="MaxNormalChangeDegrees"/> (below 90) alone stop the run short of its target, it is
+        /// raised to 90 for the rest (the default); false: it holds to the end, and the result says so
+        /// (<see cref="DecimateStop.NoLegalCollapse"/>, refusals counted).</summary>
+        public bool RelaxNormalChange
+        {
+            get { return relaxNormalChange != 0; }
+            set { relaxNormalChange = value ? 1 : 0; }
+        }
 
         /// <summary>No target, no error limit, boundary weight 1, feature angle 60 and weight 1, normal change 60
-        /// degrees, boundary free, seams kept.</summary>
+        /// degrees relaxed to 90 when it alone stops the run, boundary free, seams kept.</summary>
         public static DecimateOptions Default
         {
             get { return Status.Checked(Native.hedge_decimate_options_default(out DecimateOptions o), o); }
         }
     }
 
-    /// <summary>What <see cref="HalfEdgeMesh.Decimate"/> achieved (32 bytes, hedge_decimate_result).</summary>
+    /// <summary>Why <see cref="HalfEdgeMesh.Decimate"/> stopped (hedge_decimate_stop).</summary>
+    public enum DecimateStop
+    {
+        /// <summary>The vertex and face targets are met.</summary>
+        TargetReached = 0,
+        /// <summary>Every collapse left would exceed the error limit.</summary>
+        ErrorBound = 1,
+        /// <summary>Each collapse left is refused by a check (counted in the result), or none is left.</summary>
+        NoLegalCollapse = 2,
+    }
+
+    /// <summary>What <see cref="HalfEdgeMesh.Decimate"/> achieved (64 bytes, hedge_decimate_result).</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct DecimateResult
     {
@@ -299,6 +320,15 @@ namespace Hedge
         public ulong Collapses;
         /// <summary>The largest error (a distance) of a collapse done, 0 if none.</summary>
         public double MaxError;
+        /// <summary>Why it stopped.</summary>
+        public DecimateStop Stop;
+        int reserved;
+        /// <summary>Collapse attempts refused by the link condition (an edge retried in a later pass counts again).</summary>
+        public ulong RefusedTopology;
+        /// <summary>Attempts refused because a face would turn too far, turn over or lose its area.</summary>
+        public ulong RefusedNormal;
+        /// <summary>Attempts refused because a new face would be a sliver.</summary>
+        public ulong RefusedShape;
     }
 
     /// <summary>Measures of a whole mesh (48 bytes, hedge_geometry).</summary>

@@ -101,7 +101,7 @@ py::dict decimate(const Mesh& self, std::optional<std::int64_t> target_faces_arg
                   std::optional<std::int64_t> target_vertices_arg, std::optional<double> ratio,
                   std::optional<double> max_error, double boundary_weight, double feature_angle_degrees,
                   double feature_weight, bool keep_boundary, bool keep_seams, double attribute_weight,
-                  double max_normal_change_degrees) {
+                  double max_normal_change_degrees, bool relax_normal_change) {
   // With no target the library would collapse all it can: a mesh of thousands of faces to four.
   if (!target_faces_arg && !target_vertices_arg && !ratio && !max_error)
     throw InvalidInputError("decimate: give a target: target_faces, target_vertices, ratio or max_error");
@@ -125,6 +125,7 @@ py::dict decimate(const Mesh& self, std::optional<std::int64_t> target_faces_arg
   o.keep_seams = keep_seams;
   o.attribute_weight = attribute_weight;
   o.max_normal_change_degrees = max_normal_change_degrees;
+  o.relax_normal_change = relax_normal_change;
   const auto use = self.use();
   require_no_views(*use, "decimate");
   SurfaceMesh& m = use->mesh;
@@ -147,9 +148,15 @@ py::dict decimate(const Mesh& self, std::optional<std::int64_t> target_faces_arg
   d["max_error"] = r.max_error;
   d["removed_faces"] = faces_before - r.faces;
   d["removed_vertices"] = vertices_before - r.vertices;
-  // The library does not say why it stopped; what can be told from its result is whether the
-  // targets were met (both False targets mean "as far as max_error and legal collapses allow").
+  // Whether a target was given and met (with none, the run goes as far as max_error and the legal
+  // collapses allow); stop says why the run ended, refused how many attempts each check refused.
   d["target_reached"] = (o.target_faces != 0 || o.target_vertices != 0) && faces_met && vertices_met;
+  d["stop"] = binding::name(r.stop);
+  py::dict refused;
+  refused["topology"] = r.refused.topology;
+  refused["normal"] = r.refused.normal;
+  refused["shape"] = r.refused.shape;
+  d["refused"] = refused;
   return d;
 }
 
@@ -321,14 +328,18 @@ void bind_algorithms(py::class_<Mesh>& mesh, py::module_& m) {
            py::arg("max_error") = py::none(), py::arg("boundary_weight") = 1.0,
            py::arg("feature_angle_degrees") = 60.0, py::arg("feature_weight") = 1.0,
            py::arg("keep_boundary") = false, py::arg("keep_seams") = true, py::arg("attribute_weight") = 0.0,
-           py::arg("max_normal_change_degrees") = 60.0,
+           py::arg("max_normal_change_degrees") = 60.0, py::arg("relax_normal_change") = true,
            "Decimates a triangle mesh by quadric-ranked edge collapses until it has at most "
            "target_faces faces and target_vertices vertices (each when given; ratio, instead of "
            "target_faces, sets it to that share of the faces), or the next collapse would move the surface "
            "by more than max_error, or no legal collapse is left. Garbage is collected at the end "
-           "(indices change). Returns a dict: vertices, faces (left), collapses, max_error (the "
-           "largest error of a collapse done), removed_faces, removed_vertices and target_reached "
-           "(a target was given and met; the library does not say more about why it stopped). On "
+           "(indices change). relax_normal_change: should max_normal_change_degrees (below 90) alone "
+           "stop the run short of its target, raise it to 90 for the rest (False: it holds to the end). "
+           "Returns a dict: vertices, faces (left), collapses, max_error (the "
+           "largest error of a collapse done), removed_faces, removed_vertices, target_reached "
+           "(a target was given and met), stop (why the run ended: 'target_reached', 'error_bound' or "
+           "'no_legal_collapse') and refused (a dict of the collapse attempts each check refused: "
+           "topology, normal, shape; an edge retried in a later pass counts again). On "
            "any error the mesh is unchanged. Raises InvalidArgumentError if none of target_faces, "
            "target_vertices, ratio and max_error is given, or ratio with target_faces; "
            "ViewsExportedError while views are alive. "

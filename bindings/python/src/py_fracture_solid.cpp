@@ -62,12 +62,45 @@ std::shared_ptr<State> state_of(SurfaceMesh&& mesh) {
   return state;
 }
 
+//! Whether a refusal is one "auto" breaks by surface fracture instead: the mesh open or
+//! non-manifold, not a bad impact or option.
+bool surface_fracture_breaks(const std::string& why) {
+  return why.rfind("the mesh is open", 0) == 0 || why.rfind("the mesh is not manifold", 0) == 0;
+}
+
 py::tuple fracture_solid(const Mesh& self, const py::object& point, const py::object& material,
                          const py::object& seed, double radius, double radius_fraction,
-                         std::int32_t inner_submesh, double density, double tolerance, bool hulls) {
+                         std::int32_t inner_submesh, double density, double tolerance, bool hulls,
+                         const std::string& kind, const py::object& surface) {
+  if (kind != "solid" && kind != "auto")
+    throw InvalidInputError("fracture_solid: unknown kind '" + kind + "' (solid, auto)");
+  if (!surface.is_none() && !py::isinstance<py::dict>(surface))
+    throw InvalidInputError("fracture_solid: surface must be a dict of fracture() options");
   const Vec3 impact = point3(point, "fracture_solid", "point");
   const SolidFractureOptions options = solid_options(
       "fracture_solid", material, seed, radius, radius_fraction, inner_submesh, density, tolerance, hulls);
+  if (kind == "auto") {
+    // Only an open or non-manifold mesh goes to surface fracture; a bad option or impact is an
+    // error, as it is with kind 'solid'.
+    std::string why;
+    {
+      const auto use = self.use();
+      py::gil_scoped_release unlocked;
+      why = hedge::solid_fracture_refusal(use->mesh, impact, options, &binding::picking_tree(*use));
+    }
+    if (surface_fracture_breaks(why)) {
+      py::dict kwargs;
+      kwargs["seed"] = seed;
+      kwargs["break_radius"] = radius;
+      kwargs["density"] = density;
+      kwargs["tolerance"] = tolerance;
+      kwargs["hulls"] = hulls;
+      if (!surface.is_none())
+        for (const auto item : surface.cast<py::dict>()) kwargs[item.first] = item.second;
+      const py::object shards = py::cast(self).attr("fracture")(point, material, **kwargs);
+      return py::make_tuple(shards, py::str(why));
+    }
+  }
   SolidFractureResult result;
   std::vector<std::shared_ptr<State>> meshes, hull_meshes;
   {
@@ -144,7 +177,7 @@ void bind_fracture_solid(py::module_& m, py::class_<Mesh>& mesh) {
   mesh.def("fracture_solid", &fracture_solid, py::arg("point"), py::arg("material") = "stone", py::kw_only(),
            py::arg("seed") = 0, py::arg("radius") = 0.0, py::arg("radius_fraction") = 0.25,
            py::arg("inner_submesh") = -1, py::arg("density") = 1.0, py::arg("tolerance") = 0.0,
-           py::arg("hulls") = true,
+           py::arg("hulls") = true, py::arg("kind") = "solid", py::arg("surface") = py::none(),
            "Breaks the closed mesh at point (3 numbers, within tolerance of the surface) into closed "
            "pieces with capped inner faces (docs/fracture.md) and returns (pieces, bonds): pieces a "
            "list of Piece (each a closed Mesh, with volume, cap_area, mass and hull) in the order of "
@@ -155,10 +188,15 @@ void bind_fracture_solid(py::module_& m, py::class_<Mesh>& mesh) {
            "diagonal of the mesh's bounding box. seed: a whole number; the same mesh, point, options "
            "and seed give the same pieces. The caps get inner_submesh in 'f:submesh' (-1: one more "
            "than the largest) and UVs by planar projection in model units. density: for the mass "
-           "properties. hulls: compute each piece's convex hull. Located through the mesh's picking "
+           "properties. hulls: compute each piece's convex hull. kind: 'solid', or 'auto' to break an "
+           "open or non-manifold mesh by surface fracture instead: the result then is (shards, why), "
+           "fracture()'s list of Shard and the refusal (a str) that sent it there in place of the "
+           "bonds; surface: a dict of more fracture() options for that case, e.g. {'thickness': 0.1} "
+           "(a bad option or point raises as with 'solid'). Located through the mesh's picking "
            "tree, so a strike costs the broken region. InvalidArgumentError (the mesh unchanged) for "
-           "a mesh open anywhere or non-manifold near the impact (solid_fracture_refusal() says why without "
-           "raising; fracture() breaks such a mesh), a point off the surface or not finite, an "
+           "a mesh open anywhere or non-manifold near the impact with kind 'solid' (solid_fracture_refusal() "
+           "says why without raising; fracture() or kind 'auto' breaks such a mesh), an unknown kind, a "
+           "point off the surface or not finite, an "
            "unknown material or a bad option; ViewsExportedError while numpy views are alive. "
            "Releases the GIL.");
   mesh.def("solid_fracture_refusal", &solid_fracture_refusal, py::arg("point"), py::arg("material") = "stone",

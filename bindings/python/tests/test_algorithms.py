@@ -135,7 +135,8 @@ def test_decimate_reaches_the_target_and_says_so(ico):
     assert result["vertices"] == ico.n_vertices
     assert result["removed_faces"] == 1280 - ico.n_faces
     assert result["collapses"] > 0 and result["max_error"] > 0
-    assert result["target_reached"]
+    assert result["target_reached"] and result["stop"] == "target_reached"
+    assert set(result["refused"]) == {"topology", "normal", "shape"}
     assert ico.face_slots == ico.n_faces  # compacted
     assert_valid(ico)
 
@@ -144,9 +145,21 @@ def test_decimate_stops_at_max_error(ico):
     ico.subdivide("loop", 2)
     result = ico.decimate(max_error=1e-9)
     assert result["collapses"] == 0 and result["faces"] == 320
-    assert not result["target_reached"]
+    assert not result["target_reached"] and result["stop"] == "error_bound"
     result = ico.decimate(ratio=0.5)
     assert result["faces"] <= 160 and result["target_reached"]
+    assert_valid(ico)
+
+
+def test_decimate_holds_the_normal_limit_when_asked_and_says_why_it_stopped(ico):
+    ico.subdivide("loop", 2)
+    held = ico.clone()
+    strict = held.decimate(target_vertices=4, max_normal_change_degrees=1, relax_normal_change=False)
+    assert strict["stop"] == "no_legal_collapse" and not strict["target_reached"]
+    assert strict["refused"]["normal"] > 0 and strict["vertices"] > 4
+    assert_valid(held)
+    relaxed = ico.decimate(target_vertices=4, max_normal_change_degrees=1)
+    assert relaxed["collapses"] > strict["collapses"]
     assert_valid(ico)
 
 

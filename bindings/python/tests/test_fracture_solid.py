@@ -137,6 +137,32 @@ def test_an_open_mesh_is_refused_with_its_reason_and_left_unchanged():
     assert_valid(plate)
 
 
+def test_kind_auto_breaks_an_open_mesh_by_surface_fracture_and_a_closed_one_as_a_solid():
+    V, F = grid_arrays(10)
+    plate = hedge.Mesh.from_arrays(V, F)
+    shards, why = plate.fracture_solid(
+        (5.2, 4.7, 0), "glass", kind="auto", seed=1, surface={"thickness": 0.1}
+    )
+    assert isinstance(why, str) and why.startswith("the mesh is open")
+    assert shards and all(isinstance(s, hedge.Shard) for s in shards)
+    assert all(s.closed for s in shards)  # the surface option reached fracture()
+    assert_valid(plate)
+    # A closed mesh breaks as a solid, as with kind 'solid'.
+    mesh = spot()
+    pieces, bonds = mesh.fracture_solid(impact_on(mesh), kind="auto", seed=3)
+    assert pieces and all(isinstance(p, hedge.Piece) for p in pieces)
+    assert isinstance(bonds, list)
+    assert_valid(mesh)
+    # A bad option is an error with 'auto' too, and an unknown kind is named.
+    before = plate.to_arrays()
+    with pytest.raises(hedge.InvalidArgumentError, match="density"):
+        plate.fracture_solid((5.2, 4.7, 0), kind="auto", density=0)
+    with pytest.raises(hedge.InvalidArgumentError, match="unknown kind 'surface' \\(solid, auto\\)"):
+        plate.fracture_solid((5.2, 4.7, 0), kind="surface")
+    after = plate.to_arrays()
+    assert np.array_equal(before[0], after[0]) and np.array_equal(before[1], after[1])
+
+
 @pytest.mark.parametrize(
     "point, options, message",
     [

@@ -77,6 +77,7 @@ const meshCases = [
   ['decimate', [{}], 0, 'options', NOT_OPTIONS],
   ['decimate', [{}], 0, 'options.ratio', [{ ratio: 'half' }, { ratio: null }]],
   ['decimate', [{}], 0, 'options.targetFaces', [{ targetFaces: -3 }, { targetFaces: '10' }]],
+  ['decimate', [{}], 0, 'options.relaxNormalChange', [{ relaxNormalChange: 1 }]],
   ['computeCornerNormals', [45], 0, 'creaseDegrees', ['wide', [45]]],
   ['fracture', [[0.5, 0.5, 0]], 0, 'impact', NOT_POINT.concat([undefined])],
   ['fracture', [[0.5, 0.5, 0], {}], 1, 'options', NOT_OPTIONS],

@@ -1,7 +1,7 @@
 // Local operations with their checks and refusal reasons, and the algorithms.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { hedge, grid, octahedron, tetrahedron, cube } from './support.mjs';
+import { hedge, grid, octahedron, tetrahedron, cube, sample } from './support.mjs';
 
 function interiorEdge(mesh) {
   for (let e = 0; e < mesh.counts().edgeSlots; ++e) if (!mesh.edge(e).boundary) return e;
@@ -219,6 +219,26 @@ test('decimate by a ratio reaches the target face count', () => {
     (e) => e.kind === 'invalid-argument',
   );
   mesh.dispose();
+});
+
+test('decimate says why it stopped and holds the normal limit when asked', () => {
+  // Spot to 20 vertices: the 60-degree normal limit alone stops the run short, unless relaxed.
+  const held = hedge.fromFile(sample('spot_triangulated.obj'), 'spot.obj');
+  const strict = held.decimate({ targetVertices: 20, relaxNormalChange: false });
+  assert.equal(strict.stop, 'no_legal_collapse');
+  assert.ok(strict.refused.normal > 0 && strict.vertices > 20, JSON.stringify(strict));
+  assert.deepEqual(Object.keys(strict.refused).sort(), ['normal', 'shape', 'topology']);
+  assert.deepEqual(held.validate(), []);
+  const mesh = hedge.fromFile(sample('spot_triangulated.obj'), 'spot.obj');
+  const relaxed = mesh.decimate({ targetVertices: 20 });
+  assert.equal(relaxed.stop, 'target_reached');
+  assert.ok(relaxed.collapses > strict.collapses, `${relaxed.collapses} <= ${strict.collapses}`);
+  assert.deepEqual(mesh.validate(), []);
+  const again = octahedron();
+  again.subdivide('loop', 2);
+  assert.equal(again.decimate({ maxError: 1e-12 }).stop, 'error_bound');
+  assert.deepEqual(again.validate(), []);
+  for (const m of [mesh, held, again]) m.dispose();
 });
 
 test('clone is independent of its original', () => {

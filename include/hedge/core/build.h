@@ -68,8 +68,9 @@ struct BuildReport {
 };
 
 //! Builds a half-edge mesh from an indexed mesh in O(n) (bucketed twin matching, no hashing).
-//! \throw InvalidInputError on an index out of range, a non-finite position or colour, or a size
-//!        mismatch.
+//! input.face_submeshes, when given, becomes the face property "f:submesh" of the faces kept.
+//! \throw InvalidInputError on an index out of range, a non-finite position or colour, a size
+//!        mismatch, or a face submesh outside [0, kMaxSubmesh].
 //! \throw TopologyError under TopologyPolicy::strict when the input is not an oriented 2-manifold
 //!        (with boundary) or has degenerate faces.
 SurfaceMesh build(const IndexedMesh& input, const BuildOptions& options = {}, BuildReport* report = nullptr);

@@ -45,9 +45,11 @@ struct IndexedMesh {
   std::vector<Color> colors;
   std::vector<std::uint32_t> color_indices;
 
-  //! Each face's submesh (the face property "f:submesh"), one per face, or empty. to_indexed()
-  //! fills it when the mesh has that property; write_obj() marks each run of faces of one submesh
-  //! with "usemtl submesh_N". The other writers and the readers leave it out.
+  //! Each face's submesh (the face property "f:submesh"), one per face in [0, kMaxSubmesh], or
+  //! empty. to_indexed() fills it when the mesh has that property and build() turns it back into
+  //! that property; write_obj() marks each run of faces of one submesh with "usemtl submesh_N";
+  //! write_gltf() writes one primitive per submesh and read_gltf() fills it from the primitives'
+  //! materials. The other writers and readers leave it out.
   std::vector<std::int32_t> face_submeshes;
 
   //! What the reader that made this mesh found suspect but kept (empty for meshes not read from a

@@ -98,13 +98,16 @@ IndexedMesh read_stl(std::string_view data, const std::string& name = {});
 //!    reverses the winding; an identity one leaves positions bit for bit). A file without scenes
 //!    gives every mesh once, untransformed. All primitives of all placed meshes are merged into one
 //!    mesh, in that order, vertices kept apart (default_build_options() welds equal positions, so
-//!    seams become corner attributes); which primitive a face came from is not kept.
+//!    seams become corner attributes). Primitives of one node that share their attribute accessors
+//!    (several materials over one vertex set) share their vertices. When a primitive has a material,
+//!    each face's submesh (IndexedMesh::face_submeshes) is its primitive's material number (0 for a
+//!    primitive without one, kMaxSubmesh for a larger one), as write_gltf() writes them.
 //!  - Attributes: POSITION (float VEC3, required), NORMAL (float VEC3), TEXCOORD_0 (float or
 //!    normalized unsigned byte/short VEC2) and COLOR_0 (float or normalized unsigned byte/short,
 //!    VEC3 read with alpha 1, or VEC4) as per-vertex attributes, kept only when every merged
 //!    primitive has them; v is flipped (v' = 1 - v) from glTF's top-left texture origin to hedge's
-//!    bottom-left one (OBJ's). COLOR_1.., TEXCOORD_1.., tangents, skins, morph targets, materials
-//!    and images are not read (images are never decoded).
+//!    bottom-left one (OBJ's). COLOR_1.., TEXCOORD_1.., tangents, skins, morph targets, the
+//!    materials' content and images are not read (images are never decoded).
 //!  - Modes TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN (strip and fan triangles with a repeated
 //!    index dropped). A POINTS or LINES primitive is skipped with a ReadWarning naming it.
 //!  - Indices u8, u16 or u32, or none (vertices in order). Sparse accessors and byteStride are
@@ -145,7 +148,10 @@ std::string write_ply(const IndexedMesh& mesh, const WriteOptions& options = {})
 //! The binary header never starts with "solid".
 std::string write_stl(const IndexedMesh& mesh, const WriteOptions& options = {});
 //! glTF 2.0 JSON with the one buffer embedded as a base64 data URI (one self-contained file), or
-//! the binary .glb container. One mesh of one TRIANGLES primitive on one node of one scene:
+//! the binary .glb container. One mesh on one node of one scene, of one TRIANGLES primitive, or,
+//! when the mesh has face_submeshes, one per submesh in increasing order (faces in order within
+//! it), all sharing the vertex accessors, with material N (named "submesh_N"; materials 0 to the
+//! largest submesh are written) for submesh N:
 //! POSITION (float, with the min/max the specification requires), NORMAL, TEXCOORD_0 and COLOR_0
 //! (float VEC4) when the mesh has them (v flipped as read_gltf() says), u16 indices when the vertex
 //! count allows, else u32. Polygons are fanned from their first corner. A mesh vertex splits into

@@ -179,6 +179,7 @@ namespace Hedge.Tests
                 Check.Equal((ulong)mesh.FaceCount, r.Faces);
                 Check.Equal(36ul, r.Faces, "a closed genus-0 mesh: F = 2V - 4");
                 Check.True(r.Collapses == 110 && r.MaxError > 0, "collapses " + r.Collapses + ", error " + r.MaxError);
+                Check.Equal(DecimateStop.TargetReached, r.Stop);
                 Check.True(mesh.Geometry.Closed, "still closed");
                 buffers.Sync();
                 Check.Equal(36, buffers.Counts.Triangles, "the buffers follow");
@@ -187,6 +188,29 @@ namespace Hedge.Tests
                 Check.Equal(36, mesh.FaceCount);
                 Check.Valid(mesh, "after decimating");
             }
+            // A normal limit of 1 degree held to the end stops short of the target, counting its refusals;
+            // relaxed (the default) the run goes further.
+            ulong strict = 0;
+            foreach (bool relax in new[] { false, true })
+                using (var mesh = HalfEdgeMesh.FromTriangles(positions, triangles))
+                {
+                    mesh.Subdivide(Subdivision.Loop, 2);
+                    DecimateOptions o = DecimateOptions.Default;
+                    Check.True(o.RelaxNormalChange, "relaxed by default");
+                    o.TargetVertices = 4;
+                    o.MaxNormalChangeDegrees = 1;
+                    o.RelaxNormalChange = relax;
+                    DecimateResult r = mesh.Decimate(o);
+                    if (!relax)
+                    {
+                        Check.Equal(DecimateStop.NoLegalCollapse, r.Stop);
+                        Check.True(r.RefusedNormal > 0 && r.Vertices > 4, "refused " + r.RefusedNormal);
+                        strict = r.Collapses;
+                    }
+                    else
+                        Check.True(r.Collapses > strict, "relaxed: " + r.Collapses + " collapses, held: " + strict);
+                    Check.Valid(mesh, "after decimating");
+                }
             float[] grid = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };
             BuildReport report;
             using (var quad = HalfEdgeMesh.FromPolygons(grid, new int[] { 0, 1, 2, 3 }, new int[] { 4 }, BuildOptions.Default, out report))
@@ -330,9 +354,12 @@ namespace Hedge.Tests
             Check.Equal(48, Marshal.SizeOf(typeof(MeshGeometry)), "hedge_geometry");
             Check.Equal(32, Marshal.SizeOf(typeof(SmoothOptions)), "hedge_smooth_options");
             Check.Equal(16, (int)Marshal.OffsetOf(typeof(SmoothOptions), "Mu"));
-            Check.Equal(72, Marshal.SizeOf(typeof(DecimateOptions)), "hedge_decimate_options");
+            Check.Equal(80, Marshal.SizeOf(typeof(DecimateOptions)), "hedge_decimate_options");
             Check.Equal(56, (int)Marshal.OffsetOf(typeof(DecimateOptions), "MaxNormalChangeDegrees"));
-            Check.Equal(32, Marshal.SizeOf(typeof(DecimateResult)), "hedge_decimate_result");
+            Check.Equal(72, (int)Marshal.OffsetOf(typeof(DecimateOptions), "relaxNormalChange"));
+            Check.Equal(64, Marshal.SizeOf(typeof(DecimateResult)), "hedge_decimate_result");
+            Check.Equal(32, (int)Marshal.OffsetOf(typeof(DecimateResult), "Stop"));
+            Check.Equal(56, (int)Marshal.OffsetOf(typeof(DecimateResult), "RefusedShape"));
             Check.Equal(24, (int)Marshal.OffsetOf(typeof(MeshGeometry), "BoxMin"));
             Check.Equal(24, Marshal.SizeOf(typeof(RenderOptions)), "hedge_render_buffers_options");
             Check.Equal(16, (int)Marshal.OffsetOf(typeof(RenderOptions), "Winding"));
