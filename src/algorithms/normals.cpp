@@ -35,8 +35,12 @@ struct Arrays {
   bool live(std::size_t f) const { return !garbage || !m.is_deleted(Face(Index(f))); }
 };
 
-Vec3 cross3(const Vec3& a, const Vec3& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+// (p1 - p0) x (p2 - p0), component by component from the corners in place: copying a corner into
+// a local Vec3 made the compiler reload it across two stores, a stalled store forward per face.
+inline Vec3 triangle_cross(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  const float ax = p1.x - p0.x, ay = p1.y - p0.y, az = p1.z - p0.z;
+  const float bx = p2.x - p0.x, by = p2.y - p0.y, bz = p2.z - p0.z;
+  return {ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx};
 }
 
 // Newell's vector of a polygon of four or more corners whose first half-edge is h0.
@@ -57,8 +61,7 @@ Vec3 cross3(const Vec3& a, const Vec3& b) {
 inline Vec3 area_vector_float(const Arrays& a, Index h0) {
   const Index h1 = a.next[h0].idx(), h2 = a.next[h1].idx();
   if (a.next[h2].idx() != h0) return polygon_area_vector(a, h0);
-  const Vec3 p0 = a.p[a.to[h0].idx()];
-  return cross3(a.p[a.to[h1].idx()] - p0, a.p[a.to[h2].idx()] - p0);
+  return triangle_cross(a.p[a.to[h0].idx()], a.p[a.to[h1].idx()], a.p[a.to[h2].idx()]);
 }
 
 // n divided by its length; zero if that is zero or not finite (one range test on the squared length).
@@ -91,8 +94,8 @@ void scatter_face_normals(const Arrays& a, NormalWeighting w, Vec3* sum) {
     const Index h0 = a.fhe[f].idx(), h1 = a.next[h0].idx(), h2 = a.next[h1].idx();
     if (a.next[h2].idx() == h0) {
       const Index i0 = a.to[h0].idx(), i1 = a.to[h1].idx(), i2 = a.to[h2].idx();
-      const Vec3 p0 = a.p[i0], p1 = a.p[i1], p2 = a.p[i2];
-      Vec3 n = cross3(p1 - p0, p2 - p0);
+      const Vec3 &p0 = a.p[i0], &p1 = a.p[i1], &p2 = a.p[i2];
+      Vec3 n = triangle_cross(p0, p1, p2);
       if (w != NormalWeighting::area) n = unit_or_zero_float(n);
       if (w == NormalWeighting::angle) {
         // The corner entered by h0 lies between from(h0) = to(h2) and to(next(h0)) = to(h1).
