@@ -88,15 +88,17 @@ float corner_angle_at(const Arrays& a, Index in) {
 // contribution: its Newell vector (area), its unit normal (uniform) or its unit normal times the
 // corner's angle (angle). One pass over the faces, in face order, so the sums are the same on
 // every run; triangles take a path of their own, which adds the same values as the general loop.
-void scatter_face_normals(const Arrays& a, NormalWeighting w, Vec3* sum) {
+// `unit`, if given, holds the faces' unit normals (unit_face_normals), which are then not computed
+// again.
+void scatter_face_normals(const Arrays& a, NormalWeighting w, Vec3* sum, const Vec3* unit = nullptr) {
   for (std::size_t f = 0; f < a.n_faces; ++f) {
     if (!a.live(f)) continue;
     const Index h0 = a.fhe[f].idx(), h1 = a.next[h0].idx(), h2 = a.next[h1].idx();
     if (a.next[h2].idx() == h0) {
       const Index i0 = a.to[h0].idx(), i1 = a.to[h1].idx(), i2 = a.to[h2].idx();
       const Vec3 &p0 = a.p[i0], &p1 = a.p[i1], &p2 = a.p[i2];
-      Vec3 n = triangle_cross(p0, p1, p2);
-      if (w != NormalWeighting::area) n = unit_or_zero_float(n);
+      Vec3 n = unit && w != NormalWeighting::area ? unit[f] : triangle_cross(p0, p1, p2);
+      if (!unit && w != NormalWeighting::area) n = unit_or_zero_float(n);
       if (w == NormalWeighting::angle) {
         // The corner entered by h0 lies between from(h0) = to(h2) and to(next(h0)) = to(h1).
         sum[i0] += n * corner_angle(p0, p2, p1);
@@ -109,8 +111,8 @@ void scatter_face_normals(const Arrays& a, NormalWeighting w, Vec3* sum) {
       sum[i2] += n;
       continue;
     }
-    Vec3 n = area_vector_float(a, h0);
-    if (w != NormalWeighting::area) n = unit_or_zero_float(n);
+    Vec3 n = unit && w != NormalWeighting::area ? unit[f] : area_vector_float(a, h0);
+    if (!unit && w != NormalWeighting::area) n = unit_or_zero_float(n);
     Index h = h0;
     do {
       sum[a.to[h].idx()] += w == NormalWeighting::angle ? n * corner_angle_at(a, h) : n;
@@ -181,7 +183,7 @@ HalfedgeProperty<Vec3> compute_corner_normals(SurfaceMesh& mesh, double crease_d
   // A vertex whose faces form one wedge all round (no boundary or crease edge at it), the common
   // case, gets the normal compute_vertex_normals gives it: the sum over its faces in face order.
   std::vector<Vec3> smooth(nv, Vec3{0, 0, 0});
-  scatter_face_normals(a, weighting, smooth.data());
+  scatter_face_normals(a, weighting, smooth.data(), unit.data());
   for (Vec3& n : smooth) n = unit_or_zero_float(n);
   // The other vertices: an end of a boundary edge, or of a crease edge, where the two faces'
   // normals differ by more than the crease angle (180 degrees keeps every edge smooth, even
@@ -231,29 +233,31 @@ HalfedgeProperty<Vec3> compute_corner_normals(SurfaceMesh& mesh, double crease_d
     // next(twin(outs[i - 1])) is outs[i]: twin(outs[i - 1]) enters v in face(outs[i]).
     const std::size_t k = outs.size();
     ins.resize(k);
-    for (std::size_t i = 0; i < k; ++i) ins[i] = outs[(i + k - 1) % k] ^ 1u;
+    ins[0] = outs[k - 1] ^ 1u;
+    for (std::size_t i = 1; i < k; ++i) ins[i] = outs[i - 1] ^ 1u;
     cut.assign(k, 0);
     std::size_t start = k;  // the first cut; split vertices have one
     for (std::size_t i = 0; i < k; ++i) {
-      const Face fa = face[ins[(i + k - 1) % k]], fb = face[ins[i]];
+      const Face fa = face[ins[i == 0 ? k - 1 : i - 1]], fb = face[ins[i]];
       cut[i] = !fa.is_valid() || !fb.is_valid() ||
                (crease_degrees < 180 && dot(unit[fa.idx()], unit[fb.idx()]) < cos_crease);
       if (cut[i] && start == k) start = i;
     }
     // Walk the ring once from the first cut, closing a wedge at each cut.
+    auto at = [&](std::size_t s) { return start + s < k ? start + s : start + s - k; };  // s steps on
     std::size_t wedge_begin = 0;  // in steps from start
     Vec3 sum{0, 0, 0};
     auto close_wedge = [&](std::size_t end) {
       const Vec3 normal = unit_or_zero_float(sum);
       for (std::size_t s = wedge_begin; s < end; ++s) {
-        const Index in = ins[(start + s) % k];
+        const Index in = ins[at(s)];
         if (face[in].is_valid()) out[in] = normal;
       }
       sum = Vec3{0, 0, 0};
       wedge_begin = end;
     };
     for (std::size_t s = 0; s < k; ++s) {
-      const std::size_t i = (start + s) % k;
+      const std::size_t i = at(s);
       if (s > 0 && cut[i]) close_wedge(s);
       if (face[ins[i]].is_valid()) sum += contribution(ins[i]);
     }
