@@ -34,8 +34,10 @@ struct Input {
 struct Scratch {
   std::vector<float> face_normal;    //!< 3 #F
   std::vector<float> vertex_normal;  //!< 3 #V: an operation's per-vertex output, compared across backends
+  std::vector<float> corner_normal;  //!< 3 per half-edge slot: 2E <= 6F, as every edge has a face
   void resize(const Input& in) {
     face_normal.assign(3 * in.n_faces(), 0.0f);
+    corner_normal.assign(3 * 6 * in.n_faces(), 0.0f);
     vertex_normal.assign(3 * in.n_vertices(), 0.0f);
   }
 };
@@ -107,6 +109,13 @@ struct Quality {
   std::size_t vertices = 0, faces = 0;
 };
 Quality surface_distance(const Input& input, const Input& result);
+//! The largest distance from a vertex of either mesh to the nearest vertex of the other (the
+//! Hausdorff distance between the vertex sets; bench_quality.cpp), so that two libraries' results
+//! compare whatever order they number their vertices in.
+double max_vertex_distance(const Input& a, const Input& b);
+
+//! The crease angle of the corner normals rows (OpenMesh's update_halfedge_normals takes radians).
+constexpr double kCornerCreaseDegrees = 60;
 
 // ---- Arithmetic shared by every backend, so that each computes exactly the same thing. ----
 

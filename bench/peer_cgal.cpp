@@ -154,11 +154,69 @@ double builtin_vertex_normals(Context& c) {
   return sum;
 }
 
-//! One step of CGAL's Subdivision_method_3::Sqrt3_subdivision on the private copy. Returns #V + #F.
+//! Face normals over CGAL's API (as hedge's face_normals): into the scratch array.
+double face_normals(Context& c) {
+  const SMesh& m = mesh_of(c);
+  float* fn = c.scratch.face_normal.data();
+  double sum = 0;
+  for (FI f : m.faces()) {
+    auto range = CGAL::vertices_around_face(m.halfedge(f), m);
+    auto it = range.begin();
+    F3 p0 = f3(m.point(*it));
+    ++it;
+    F3 p1 = f3(m.point(*it));
+    ++it;
+    F3 p2 = f3(m.point(*it));
+    const F3 n = normalized(area_normal(p0, p1, p2));
+    store(fn, static_cast<std::size_t>(f), n);
+    sum += abs_sum(n);
+  }
+  return sum;
+}
+
+//! CGAL's own Polygon_mesh_processing::compute_face_normals into a face property map of a private
+//! copy, added before the timer.
+std::unique_ptr<MeshBox> copy_with_face_normals(const MeshBox& reference) {
+  auto box = std::make_unique<SMBox>();
+  box->m = static_cast<const SMBox&>(reference).m;
+  box->m.add_property_map<FI, Kernel::Vector_3>("f:normal", Kernel::Vector_3(0, 0, 0));
+  return box;
+}
+double builtin_face_normals(Context& c) {
+  SMesh& m = edit_mesh(c);
+  auto normals = m.property_map<FI, Kernel::Vector_3>("f:normal").first;
+  CGAL::Polygon_mesh_processing::compute_face_normals(m, normals);
+  double sum = 0;
+  for (FI f : m.faces()) {
+    const Kernel::Vector_3& n = normals[f];
+    sum += abs_sum(F3{n.x(), n.y(), n.z()});
+  }
+  return sum;
+}
+
+//! `steps` steps of CGAL's Subdivision_method_3::Sqrt3_subdivision in one call on the private copy.
+//! Returns #V + #F.
+template <int steps>
 double sqrt3_op(Context& c) {
   SMesh& m = edit_mesh(c);
-  CGAL::Subdivision_method_3::Sqrt3_subdivision(m, CGAL::parameters::number_of_iterations(1));
+  CGAL::Subdivision_method_3::Sqrt3_subdivision(m, CGAL::parameters::number_of_iterations(steps));
   return static_cast<double>(m.number_of_vertices() + m.number_of_faces());
+}
+
+//! Live vertices and faces of a float mesh, renumbered in order.
+Input float_result(const MeshBox& edited) {
+  const SMesh& m = static_cast<const SMBox&>(edited).m;
+  Input out;
+  std::vector<std::uint32_t> index(m.num_vertices(), UINT32_MAX);
+  for (VI v : m.vertices()) {
+    index[static_cast<std::size_t>(v)] = static_cast<std::uint32_t>(out.n_vertices());
+    const Kernel::Point_3& p = m.point(v);
+    out.xyz.insert(out.xyz.end(), {p.x(), p.y(), p.z()});
+  }
+  for (FI f : m.faces())
+    for (VI v : CGAL::vertices_around_face(m.halfedge(f), m))
+      out.tri.push_back(index[static_cast<std::size_t>(v)]);
+  return out;
 }
 
 //! One step of CGAL's Subdivision_method_3::Loop_subdivision on the private copy. Returns #V + #F.
@@ -353,6 +411,8 @@ Backend cgal_backend() {
   b.ops["one_ring"] = {nullptr, one_ring};
   b.ops["vertex_normals"] = {nullptr, vertex_normals};
   b.ops["vertex_normals_builtin"] = {copy_with_normals, builtin_vertex_normals};
+  b.ops["face_normals"] = {copy_mesh, face_normals};
+  b.ops["face_normals_builtin"] = {copy_with_face_normals, builtin_face_normals};
   b.ops["collapse"] = {copy_mesh, collapse_op, check_edit<EditKind::collapse>};
   b.ops["split"] = {copy_mesh, split_op, check_edit<EditKind::split>};
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
@@ -360,7 +420,8 @@ Backend cgal_backend() {
   b.ops["catmull_clark"] = {copy_mesh, catmull_clark_op};
   b.ops["catmull_clark_quads"] = {quad_copy, catmull_clark_op};
   b.ops["decimate"] = {copy_to_double, decimate_op, check_decimate, decimate_result};
-  b.ops["sqrt3"] = {copy_mesh, sqrt3_op};
+  b.ops["sqrt3"] = {copy_mesh, sqrt3_op<1>, nullptr, float_result};
+  b.ops["sqrt3_two"] = {copy_mesh, sqrt3_op<2>, nullptr, float_result};
   return b;
 }
 

@@ -1,5 +1,6 @@
 // hedge backend: build_triangles with default options (strict policy, no welding), then the same
 // operations as the peers through hedge's idiomatic circulators.
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -108,6 +109,103 @@ double builtin_vertex_normals(Context& c) {
   return sum;
 }
 
+//! Face normals over the public API: Newell's vector of a triangle, normalised, into the scratch
+//! array. Returns the sum of |x| + |y| + |z| of the unit normals.
+double face_normals(Context& c) {
+  const hedge::SurfaceMesh& m = mesh_of(c);
+  float* fn = c.scratch.face_normal.data();
+  double sum = 0;
+  for (hedge::Face f : m.faces()) {
+    const hedge::Halfedge h0 = m.halfedge(f), h1 = m.next(h0), h2 = m.next(h1);
+    const F3 n = normalized(area_normal(f3(m.position(m.to_vertex(h0))), f3(m.position(m.to_vertex(h1))),
+                                        f3(m.position(m.to_vertex(h2)))));
+    store(fn, f.idx(), n);
+    sum += abs_sum(n);
+  }
+  return sum;
+}
+
+//! The library's own compute_face_normals into "f:normal" of a private copy that already has it.
+std::unique_ptr<MeshBox> copy_with_face_normals(const MeshBox& reference) {
+  auto box = std::make_unique<HBox>(hedge::SurfaceMesh(static_cast<const HBox&>(reference).m));
+  hedge::compute_face_normals(box->m);
+  return box;
+}
+double builtin_face_normals(Context& c) {
+  hedge::SurfaceMesh& m = edit_mesh(c);
+  const hedge::FaceProperty<hedge::Vec3> n = hedge::compute_face_normals(m);
+  double sum = 0;
+  for (hedge::Face f : m.faces()) sum += abs_sum(f3(n[f]));
+  return sum;
+}
+
+//! Corner normals over the public API, as OpenMesh's update_halfedge_normals computes them: per
+//! corner, the sum of the unit normals of the faces of its wedge (the faces around the vertex
+//! between crease or boundary edges), normalised, stored per half-edge; the face normals are
+//! computed first. Returns the sum of |x| + |y| + |z| over the corners.
+double corner_normals(Context& c) {
+  const hedge::SurfaceMesh& m = mesh_of(c);
+  face_normals(c);
+  const float* fn = c.scratch.face_normal.data();
+  float* out = c.scratch.corner_normal.data();
+  const float cos_crease = static_cast<float>(std::cos(kCornerCreaseDegrees * 3.14159265358979323846 / 180));
+  auto crease = [&](hedge::Halfedge h) {  // between face(h) and face(twin(h))
+    const hedge::Face a = m.face(h), b = m.face(hedge::SurfaceMesh::twin(h));
+    if (!a.is_valid() || !b.is_valid()) return true;
+    const F3 p = load(fn, a.idx()), q = load(fn, b.idx());
+    return p.x * q.x + p.y * q.y + p.z * q.z < cos_crease;
+  };
+  double sum = 0;
+  std::vector<hedge::Halfedge> ring;  // the corners at v: prev(o) for each outgoing o, clockwise
+  for (hedge::Vertex v : m.vertices()) {
+    ring.clear();
+    for (hedge::Halfedge o : m.halfedges(v)) ring.push_back(m.prev(o));
+    const std::size_t k = ring.size();
+    // ring[i] is twin(o_{i-1}): its edge lies between face(ring[i - 1]) and face(ring[i]).
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < k; ++i)
+      if (crease(ring[i])) {
+        start = i;
+        break;
+      }
+    for (std::size_t s = 0; s < k;) {
+      std::size_t e = s;
+      F3 n{0, 0, 0};
+      do {
+        const hedge::Face f = m.face(ring[(start + e) % k]);
+        if (f.is_valid()) n += load(fn, f.idx());
+        ++e;
+      } while (e < k && !crease(ring[(start + e) % k]));
+      n = normalized(n);
+      for (std::size_t t = s; t < e; ++t) {
+        const hedge::Halfedge h = ring[(start + t) % k];
+        if (!m.face(h).is_valid()) continue;
+        store(out, h.idx(), n);
+        sum += abs_sum(n);
+      }
+      s = e;
+    }
+  }
+  return sum;
+}
+
+//! The library's own compute_corner_normals (uniform weighting, as OpenMesh's) into "h:normal" of a
+//! private copy that already has it.
+std::unique_ptr<MeshBox> copy_with_corner_normals(const MeshBox& reference) {
+  auto box = std::make_unique<HBox>(hedge::SurfaceMesh(static_cast<const HBox&>(reference).m));
+  hedge::compute_corner_normals(box->m, kCornerCreaseDegrees, hedge::NormalWeighting::uniform);
+  return box;
+}
+double builtin_corner_normals(Context& c) {
+  hedge::SurfaceMesh& m = edit_mesh(c);
+  const hedge::HalfedgeProperty<hedge::Vec3> n =
+      hedge::compute_corner_normals(m, kCornerCreaseDegrees, hedge::NormalWeighting::uniform);
+  double sum = 0;
+  for (hedge::Halfedge h : m.halfedges())
+    if (!m.is_boundary(h)) sum += abs_sum(f3(n[h]));
+  return sum;
+}
+
 //! Ten smoothing iterations (lambda 0.5, boundary fixed) of the private copy. Returns the sum of
 //! |x| + |y| + |z| over the vertices after.
 template <hedge::SmoothMethod method>
@@ -137,10 +235,11 @@ std::unique_ptr<MeshBox> quad_copy(const MeshBox& reference) {
   return box;
 }
 
-//! One step of Kobbelt's sqrt(3) scheme on the private copy. Returns #V + #F after.
+//! `steps` steps of Kobbelt's sqrt(3) scheme in one call on the private copy. Returns #V + #F after.
+template <int steps>
 double sqrt3_op(Context& c) {
   hedge::SurfaceMesh& m = static_cast<HBox*>(c.mesh)->m;
-  hedge::subdivide(m, hedge::Subdivision::sqrt3, 1);
+  hedge::subdivide(m, hedge::Subdivision::sqrt3, steps);
   return static_cast<double>(m.n_vertices() + m.n_faces());
 }
 
@@ -251,13 +350,18 @@ Backend hedge_backend() {
   b.ops["one_ring"] = {nullptr, one_ring};
   b.ops["vertex_normals"] = {nullptr, vertex_normals};
   b.ops["vertex_normals_builtin"] = {copy_with_normals, builtin_vertex_normals};
+  b.ops["face_normals"] = {copy_mesh, face_normals};
+  b.ops["face_normals_builtin"] = {copy_with_face_normals, builtin_face_normals};
+  b.ops["corner_normals"] = {copy_mesh, corner_normals};
+  b.ops["corner_normals_builtin"] = {copy_with_corner_normals, builtin_corner_normals};
   b.ops["collapse"] = {copy_mesh, collapse_op, check_edit<EditKind::collapse>};
   b.ops["split"] = {copy_mesh, split_op, check_edit<EditKind::split>};
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   b.ops["loop"] = {copy_mesh, loop_op};
   b.ops["catmull_clark"] = {copy_mesh, catmull_clark_op};
   b.ops["catmull_clark_quads"] = {quad_copy, catmull_clark_op};
-  b.ops["sqrt3"] = {copy_mesh, sqrt3_op};
+  b.ops["sqrt3"] = {copy_mesh, sqrt3_op<1>, nullptr, decimate_result};
+  b.ops["sqrt3_two"] = {copy_mesh, sqrt3_op<2>, nullptr, decimate_result};
   b.ops["smooth_uniform"] = {copy_mesh, smooth_op<hedge::SmoothMethod::uniform>};
   b.ops["smooth_cotan"] = {copy_mesh, smooth_op<hedge::SmoothMethod::cotangent>};
   b.ops["decimate"] = {copy_mesh, decimate_op, check_decimate, decimate_result};

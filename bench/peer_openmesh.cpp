@@ -228,12 +228,74 @@ double builtin_vertex_normals(Context& c) {
   return sum;
 }
 
-//! One step of OpenMesh's Subdivider::Uniform::Sqrt3T on the private copy. Returns #V + #F after.
+//! Face normals over OpenMesh's API (as hedge's face_normals): into the scratch array.
+double face_normals(Context& c) {
+  const OMesh& m = mesh_of(c);
+  float* fn = c.scratch.face_normal.data();
+  double sum = 0;
+  for (OMesh::FaceHandle f : m.faces()) {
+    auto it = m.cfv_iter(f);
+    F3 p0 = f3(m.point(*it));
+    ++it;
+    F3 p1 = f3(m.point(*it));
+    ++it;
+    F3 p2 = f3(m.point(*it));
+    const F3 n = normalized(area_normal(p0, p1, p2));
+    store(fn, static_cast<std::size_t>(f.idx()), n);
+    sum += abs_sum(n);
+  }
+  return sum;
+}
+
+//! OpenMesh's own update_face_normals() on a private copy whose face normals were requested
+//! before the timer.
+std::unique_ptr<MeshBox> copy_with_face_normals(const MeshBox& reference) {
+  auto box = copy_mesh(reference);
+  static_cast<OMBox*>(box.get())->m.request_face_normals();
+  return box;
+}
+double builtin_face_normals(Context& c) {
+  OMesh& m = mesh_of(c);
+  m.update_face_normals();
+  double sum = 0;
+  for (OMesh::FaceHandle f : m.faces()) {
+    const OMesh::Normal& n = m.normal(f);
+    sum += abs_sum(F3{n[0], n[1], n[2]});
+  }
+  return sum;
+}
+
+//! OpenMesh's own corner normals: update_face_normals(), which they are computed from, then
+//! update_halfedge_normals(the crease angle in radians), on a private copy whose face and
+//! half-edge normals were requested before the timer.
+std::unique_ptr<MeshBox> copy_with_corner_normals(const MeshBox& reference) {
+  auto box = copy_mesh(reference);
+  OMesh& m = static_cast<OMBox*>(box.get())->m;
+  m.request_face_normals();
+  m.request_halfedge_normals();
+  return box;
+}
+double builtin_corner_normals(Context& c) {
+  OMesh& m = mesh_of(c);
+  m.update_face_normals();
+  m.update_halfedge_normals(kCornerCreaseDegrees * M_PI / 180);
+  double sum = 0;
+  for (OMesh::HalfedgeHandle h : m.halfedges()) {
+    if (m.is_boundary(h)) continue;
+    const OMesh::Normal& n = m.normal(h);
+    sum += abs_sum(F3{n[0], n[1], n[2]});
+  }
+  return sum;
+}
+
+//! `steps` steps of OpenMesh's Subdivider::Uniform::Sqrt3T in one call on the private copy.
+//! Returns #V + #F after.
+template <int steps>
 double sqrt3_op(Context& c) {
   OMesh& m = mesh_of(c);
   OpenMesh::Subdivider::Uniform::Sqrt3T<OMesh> sqrt3;
   sqrt3.attach(m);
-  sqrt3(1);
+  sqrt3(steps);
   sqrt3.detach();
   return static_cast<double>(m.n_vertices() + m.n_faces());
 }
@@ -326,11 +388,15 @@ Backend openmesh_backend() {
   b.ops["one_ring"] = {nullptr, one_ring};
   b.ops["vertex_normals"] = {nullptr, vertex_normals};
   b.ops["vertex_normals_builtin"] = {copy_with_normals, builtin_vertex_normals};
+  b.ops["face_normals"] = {copy_mesh, face_normals};
+  b.ops["face_normals_builtin"] = {copy_with_face_normals, builtin_face_normals};
+  b.ops["corner_normals_builtin"] = {copy_with_corner_normals, builtin_corner_normals};
   b.ops["collapse"] = {copy_mesh, collapse_op, check_edit<EditKind::collapse>};
   b.ops["split"] = {copy_mesh, split_op, check_edit<EditKind::split>};
   b.ops["flip"] = {copy_mesh, flip_op, check_edit<EditKind::flip>};
   b.ops["loop"] = {copy_mesh, loop_op};
-  b.ops["sqrt3"] = {copy_mesh, sqrt3_op};
+  b.ops["sqrt3"] = {copy_mesh, sqrt3_op<1>, nullptr, decimate_result};
+  b.ops["sqrt3_two"] = {copy_mesh, sqrt3_op<2>, nullptr, decimate_result};
   b.ops["catmull_clark_quads"] = {quad_copy, catmull_clark_quads_op};
   b.ops["smooth_uniform"] = {copy_mesh, smooth_op<true>};
   b.ops["smooth_cotan"] = {copy_mesh, smooth_op<false>};

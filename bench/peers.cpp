@@ -69,6 +69,13 @@ struct OpSpec {
   //! If > 0: the result's distance to the input is measured (OpImpl::result), and hedge's Hausdorff
   //! distance must be at most this times the best of the mesh-structure peers'.
   double quality_factor = 0;
+  //! If set: the key of an earlier row timing the same work hand-written over hedge's public API;
+  //! hedge's time there over its time here is printed under the row, with the bar >= 1 (the
+  //! library call no slower than the loop a user could write).
+  const char* own_reference = nullptr;
+  //! If true: each peer's result (OpImpl::result) is compared with hedge's, vertex by nearest vertex
+  //! (max_vertex_distance: the vertex orders need not agree), and the distance printed under the row.
+  bool compare_result = false;
 };
 
 // The operations, in table order.
@@ -81,7 +88,24 @@ const OpSpec kOps[] = {
     // property requested before the timer. The peers weight their faces differently (OpenMesh sums
     // unit face normals, CGAL weights by angles), so the checksums differ a little. Bar: 2x the
     // faster peer; and hedge's call no slower than its hand-written gather in the row above.
-    {"vertex_normals_builtin", "vertex normals, each library's call", BarKind::faster, 2.0, 1e-2, false},
+    {"vertex_normals_builtin", "vertex normals, each library's call", BarKind::faster, 2.0, 1e-2, false,
+     nullptr, 0, "vertex_normals"},
+    // Unit face normals: a loop over each library's API (the cross product of two edges, normalised),
+    // then each library's call: hedge's compute_face_normals, OpenMesh's update_face_normals() and
+    // CGAL's PMP::compute_face_normals, into a property made before the timer. Bar: 2x the faster
+    // peer, and hedge's call no slower than its loop. Both rows (and the corner rows below) run on
+    // a private copy made before the timer, so that the loop and the call see memory alike.
+    {"face_normals", "face normals, hand-written", BarKind::none, 0, 1e-5, false},
+    {"face_normals_builtin", "face normals, each library's call", BarKind::faster, 2.0, 1e-4, false, nullptr,
+     0, "face_normals"},
+    // Corner normals with a 60-degree crease (kCornerCreaseDegrees), each corner the normalised sum
+    // of the unit normals of its wedge's faces: hedge's loop over its API (the reference for its
+    // call), then hedge's compute_corner_normals(uniform) against OpenMesh's update_face_normals()
+    // + update_halfedge_normals() (CGAL has no corner normals: n/a). The checksum is the sum of
+    // |x| + |y| + |z| over the corners; OpenMesh rounds its face normals a little differently.
+    {"corner_normals", "corner normals (60 deg), loop", BarKind::none, 0, 1e-5, false},
+    {"corner_normals_builtin", "corner normals, each library's call", BarKind::faster, 2.0, 1e-3, false,
+     nullptr, 0, "corner_normals"},
     // 10^5 seeded random attempts each (bench_common.h: kEditCount, EditRng). Collapses and flips
     // count attempts; each library's predicate refuses slightly different sets, so the number done
     // may differ by a little (kEditWorkTol) and is printed under the row.
@@ -98,8 +122,13 @@ const OpSpec kOps[] = {
     {"catmull_clark_quads", "Catmull-Clark of quads, one step", BarKind::faster, 2.0, 0.0, false,
      "#V + #F after"},
     // One step of Kobbelt's sqrt(3) scheme: V + F, 3F in every library, open meshes too (the first
-    // step of a call leaves boundary edges whole in all three).
-    {"sqrt3", "sqrt(3) subdivision, one step", BarKind::faster, 2.0, 0.0, false, "#V + #F after"},
+    // step of a call leaves boundary edges whole in all three). Then two steps in one call, whose
+    // second splits the boundary (in hedge, OpenMesh and CGAL alike). Under each: every peer's
+    // result against hedge's, the largest distance from a vertex of one to the nearest of the other.
+    {"sqrt3", "sqrt(3) subdivision, one step", BarKind::faster, 2.0, 0.0, false, "#V + #F after", 0, nullptr,
+     true},
+    {"sqrt3_two", "sqrt(3) subdivision, two steps", BarKind::faster, 2.0, 0.0, false, "#V + #F after", 0,
+     nullptr, true},
     // Ten smoothing iterations (CGAL has no explicit Laplacian smoother: n/a). Uniform: the same
     // umbrella step with damping 0.5 in both, so the results agree. Cotangent: both move along the
     // cotangent Laplacian, OpenMesh divided by the sum of the weights, hedge by the sum of their
@@ -183,6 +212,8 @@ struct Cell {
   std::optional<std::string> check_error;  //!< after the warm-up of an editing op: "" = valid
   std::optional<bench::Quality> quality;   //!< the result's distance to the input (OpSpec::quality_factor)
   std::string quality_error;
+  //! OpSpec::compare_result: the largest distance between this result's vertices and hedge's.
+  double vertex_distance = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct OpResult {
@@ -197,6 +228,9 @@ struct OpResult {
   double quality_ratio = std::numeric_limits<double>::quiet_NaN();
   int quality_peer = -1;
   std::optional<bool> quality_pass;
+  //! OpSpec::own_reference: hedge's hand-written time over its call's (>= 1: the call is no slower).
+  double own_ratio = std::numeric_limits<double>::quiet_NaN();
+  std::optional<bool> own_pass;
 };
 
 struct MemCell {
@@ -304,6 +338,7 @@ MeshResult run_mesh(const Input& in, std::vector<Backend>& backends, const Optio
     // a sample of a small mesh is long enough to time. Returns the checksum of the last run.
     std::size_t batch = 1;
     std::vector<double> warmup_ms(nb, std::numeric_limits<double>::infinity());
+    std::vector<std::optional<Input>> results(nb);  // OpSpec::compare_result
     auto sample = [&](std::size_t b, bool timed) {
       std::vector<std::unique_ptr<bench::MeshBox>> work(batch), out(batch);
       if (impl[b]->prepare)
@@ -323,6 +358,7 @@ MeshResult run_mesh(const Input& in, std::vector<Backend>& backends, const Optio
         warmup_ms[b] = ms;
       if (!timed && impl[b]->check && work[0])
         r.cells[b].check_error = impl[b]->check(*refs[b], *work[0], checksum);
+      if (!timed && spec.compare_result && impl[b]->result && work[0]) results[b] = impl[b]->result(*work[0]);
       if (!timed && spec.quality_factor > 0 && impl[b]->result && work[0]) {
         try {
           r.cells[b].quality = bench::surface_distance(in, impl[b]->result(*work[0]));
@@ -374,6 +410,10 @@ MeshResult run_mesh(const Input& in, std::vector<Backend>& backends, const Optio
                   << r.cells[b].max_output_diff << ")\n";
       }
     }
+    for (std::size_t b = 1; b < nb; ++b)
+      if (results[0] && results[b])
+        r.cells[b].vertex_distance = bench::max_vertex_distance(*results[0], *results[b]);
+    results.clear();
     // Samples of at least kMinSampleMs for the fastest backend (same batch size for all).
     const double fastest = *std::min_element(warmup_ms.begin(), warmup_ms.end());
     if (fastest < kMinSampleMs)
@@ -398,6 +438,13 @@ MeshResult run_mesh(const Input& in, std::vector<Backend>& backends, const Optio
       if (spec.bar == BarKind::faster) r.pass = r.ratio >= spec.factor;
       if (spec.bar == BarKind::slower_at_most) r.pass = r.ratio >= 1.0 / spec.factor;
     }
+    if (spec.own_reference)
+      for (const OpResult& ref : res.ops)
+        if (std::string(ref.spec->key) == spec.own_reference && !ref.skipped && ref.cells[0].available &&
+            r.cells[0].available) {
+          r.own_ratio = ref.cells[0].median_ms / r.cells[0].median_ms;
+          r.own_pass = r.own_ratio >= 1.0;
+        }
     if (spec.quality_factor > 0 && r.cells[0].quality) {
       for (std::size_t b = 1; b < nb; ++b)
         if (backends[b].mesh_structure && r.cells[b].quality &&
@@ -462,6 +509,17 @@ void print_table(const MeshResult& m, const std::vector<Backend>& backends) {
         std::printf("   %s",
                     valid ? "(all meshes valid after the sequence)" : "(INVALID mesh, see warnings)");
       std::printf("\n");
+    }
+    if (r.spec->compare_result) {
+      std::printf("  %-32s", "  max vertex distance to hedge");
+      for (std::size_t b = 0; b < r.cells.size(); ++b)
+        std::printf(" %10s", b == 0 ? "-" : fmt("%.2g", r.cells[b].vertex_distance).c_str());
+      std::printf("\n");
+    }
+    if (r.spec->own_reference && !std::isnan(r.own_ratio)) {
+      std::printf("  %-32s %10s", "  hedge: its loop / its call", fmt("%.2fx", r.own_ratio).c_str());
+      for (std::size_t b = 1; b < r.cells.size(); ++b) std::printf(" %10s", "");
+      std::printf(" %16s  %-14s %s\n", "", ">= 1x its loop", pass_text(r.own_pass).c_str());
     }
     if (r.spec->quality_factor > 0) {
       auto quality_row = [&](const char* title, auto text) {
@@ -557,6 +615,18 @@ json to_json(const MeshResult& m, const std::vector<Backend>& backends) {
     o["bar"] = bar_text(*r.spec);
     o["bar_factor"] = r.spec->factor;
     o["pass"] = r.pass ? json(*r.pass) : json(nullptr);
+    if (r.spec->own_reference) {
+      o["hedge_loop"] = r.spec->own_reference;
+      o["hedge_loop_over_call"] = std::isnan(r.own_ratio) ? json(nullptr) : json(r.own_ratio);
+      o["hedge_call_no_slower_than_loop"] = r.own_pass ? json(*r.own_pass) : json(nullptr);
+    }
+    if (r.spec->compare_result) {
+      json d = json::object();
+      for (std::size_t b = 1; b < nb; ++b)
+        d[backends[b].key] =
+            std::isnan(r.cells[b].vertex_distance) ? json(nullptr) : json(r.cells[b].vertex_distance);
+      o["max_vertex_distance_to_hedge"] = d;
+    }
     if (r.spec->quality_factor > 0) {
       json q = json::object(), hausdorff = json::object(), mean = json::object(), counts = json::object();
       for (std::size_t b = 0; b < nb; ++b) {
@@ -621,9 +691,10 @@ void usage() {
          "  --strict  exit with 1 when a bar fails\n"
          "  --only    run only these: comma-separated OP or LIB:OP (e.g. split or hedge:split,cgal:split);\n"
          "            LIB is hedge, openmesh, cgal or meshopt; OP is build, one_ring, vertex_normals,\n"
-         "            collapse, split, flip, loop, catmull_clark, catmull_clark_quads, smooth_uniform, "
-         "smooth_cotan or\n"
-         "            decimate; may be repeated\n"
+         "            vertex_normals_builtin, face_normals, face_normals_builtin, corner_normals,\n"
+         "            corner_normals_builtin, collapse, split, flip, loop, catmull_clark,\n"
+         "            catmull_clark_quads, sqrt3, sqrt3_two, smooth_uniform, smooth_cotan or decimate;\n"
+         "            may be repeated\n"
          "  --decimate-ratio R  decimate to this share of the vertices (default 0.1)\n"
          "  --root    repository root (default: found from the working directory)\n"
          "  mesh      a triangle mesh file; ':subN' appends N rounds of 1-to-4 subdivision\n";
@@ -773,6 +844,11 @@ int main(int argc, char** argv) {
     summarize(
         kOps[k].label, bar_text(kOps[k]), [k](const MeshResult& m) { return m.ops[k].ratio; },
         [k](const MeshResult& m) { return m.ops[k].pass; }, false);
+    if (kOps[k].own_reference)
+      summarize(
+          std::string(kOps[k].key) + ": its loop / call", ">= 1x",
+          [k](const MeshResult& m) { return m.ops[k].own_ratio; },
+          [k](const MeshResult& m) { return m.ops[k].own_pass; }, false, "worst_hedge_loop_over_call");
     if (kOps[k].quality_factor > 0)
       summarize(
           std::string(kOps[k].key) + ": Hausdorff", fmt("<= %gx best", kOps[k].quality_factor),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -34,8 +35,12 @@ struct Arrays {
   bool live(std::size_t f) const { return !garbage || !m.is_deleted(Face(Index(f))); }
 };
 
-Vec3 cross3(const Vec3& a, const Vec3& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+// (p1 - p0) x (p2 - p0), component by component from the corners in place: copying a corner into
+// a local Vec3 made the compiler reload it across two stores, a stalled store forward per face.
+inline Vec3 triangle_cross(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  const float ax = p1.x - p0.x, ay = p1.y - p0.y, az = p1.z - p0.z;
+  const float bx = p2.x - p0.x, by = p2.y - p0.y, bz = p2.z - p0.z;
+  return {ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx};
 }
 
 // Newell's vector of a polygon of four or more corners whose first half-edge is h0.
@@ -56,43 +61,58 @@ Vec3 cross3(const Vec3& a, const Vec3& b) {
 inline Vec3 area_vector_float(const Arrays& a, Index h0) {
   const Index h1 = a.next[h0].idx(), h2 = a.next[h1].idx();
   if (a.next[h2].idx() != h0) return polygon_area_vector(a, h0);
-  const Vec3 p0 = a.p[a.to[h0].idx()];
-  return cross3(a.p[a.to[h1].idx()] - p0, a.p[a.to[h2].idx()] - p0);
+  return triangle_cross(a.p[a.to[h0].idx()], a.p[a.to[h1].idx()], a.p[a.to[h2].idx()]);
 }
 
+// n divided by its length; zero if that is zero or not finite (one range test on the squared length).
 inline Vec3 unit_or_zero_float(const Vec3& n) {
-  const float l = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-  return l > 0 && std::isfinite(l) ? n * (1.f / l) : Vec3{0, 0, 0};
+  const float s = n.x * n.x + n.y * n.y + n.z * n.z;
+  return s > 0 && s <= std::numeric_limits<float>::max() ? n * (1.f / std::sqrt(s)) : Vec3{0, 0, 0};
+}
+
+// The angle at corner v between the edges to a and to b (zero if either is degenerate), in double.
+float corner_angle(const Vec3& v, const Vec3& a, const Vec3& b) {
+  const Vec3d o = to_double(v);
+  const Vec3d x = to_double(a) - o, y = to_double(b) - o;
+  const double s = norm(cross(x, y)), c = dot(x, y);
+  return float((s > 0 || c != 0) ? std::atan2(s, c) : 0.0);
 }
 
 // The angle of the face at the corner where half-edge `in` ends, between the edges back to
 // from(in) and on to to(next(in)).
 float corner_angle_at(const Arrays& a, Index in) {
-  const Vec3d v = to_double(a.p[a.to[in].idx()]);
-  const Vec3d x = to_double(a.p[a.m.from_vertex(Halfedge(in)).idx()]) - v;
-  const Vec3d y = to_double(a.p[a.to[a.next[in].idx()].idx()]) - v;
-  const double s = norm(cross(x, y)), c = dot(x, y);
-  return float((s > 0 || c != 0) ? std::atan2(s, c) : 0.0);
+  return corner_angle(a.p[a.to[in].idx()], a.p[a.to[in ^ 1u].idx()], a.p[a.to[a.next[in].idx()].idx()]);
 }
 
 // Adds to sum[to(h)], for every corner of every live face (h entering the corner), the face's
 // contribution: its Newell vector (area), its unit normal (uniform) or its unit normal times the
 // corner's angle (angle). One pass over the faces, in face order, so the sums are the same on
-// every run; triangles weighted by area, the common case, take a path of their own.
-void scatter_face_normals(const Arrays& a, NormalWeighting w, Vec3* sum) {
+// every run; triangles take a path of their own, which adds the same values as the general loop.
+// `unit`, if given, holds the faces' unit normals (unit_face_normals), which are then not computed
+// again.
+void scatter_face_normals(const Arrays& a, NormalWeighting w, Vec3* sum, const Vec3* unit = nullptr) {
   for (std::size_t f = 0; f < a.n_faces; ++f) {
     if (!a.live(f)) continue;
     const Index h0 = a.fhe[f].idx(), h1 = a.next[h0].idx(), h2 = a.next[h1].idx();
-    if (w == NormalWeighting::area && a.next[h2].idx() == h0) {
+    if (a.next[h2].idx() == h0) {
       const Index i0 = a.to[h0].idx(), i1 = a.to[h1].idx(), i2 = a.to[h2].idx();
-      const Vec3 p0 = a.p[i0], n = cross3(a.p[i1] - p0, a.p[i2] - p0);
+      const Vec3 &p0 = a.p[i0], &p1 = a.p[i1], &p2 = a.p[i2];
+      Vec3 n = unit && w != NormalWeighting::area ? unit[f] : triangle_cross(p0, p1, p2);
+      if (!unit && w != NormalWeighting::area) n = unit_or_zero_float(n);
+      if (w == NormalWeighting::angle) {
+        // The corner entered by h0 lies between from(h0) = to(h2) and to(next(h0)) = to(h1).
+        sum[i0] += n * corner_angle(p0, p2, p1);
+        sum[i1] += n * corner_angle(p1, p0, p2);
+        sum[i2] += n * corner_angle(p2, p1, p0);
+        continue;
+      }
       sum[i0] += n;
       sum[i1] += n;
       sum[i2] += n;
       continue;
     }
-    Vec3 n = area_vector_float(a, h0);
-    if (w != NormalWeighting::area) n = unit_or_zero_float(n);
+    Vec3 n = unit && w != NormalWeighting::area ? unit[f] : area_vector_float(a, h0);
+    if (!unit && w != NormalWeighting::area) n = unit_or_zero_float(n);
     Index h = h0;
     do {
       sum[a.to[h].idx()] += w == NormalWeighting::angle ? n * corner_angle_at(a, h) : n;
@@ -157,22 +177,39 @@ HalfedgeProperty<Vec3> compute_corner_normals(SurfaceMesh& mesh, double crease_d
   require_finite_positions(mesh, "compute_corner_normals");
   const Arrays a(mesh);
   const std::vector<Vec3> unit = unit_face_normals(a);
-  std::vector<Vec3> area;
-  if (weighting == NormalWeighting::area) {
-    area.assign(a.n_faces, Vec3{0, 0, 0});
-    for (std::size_t f = 0; f < a.n_faces; ++f)
-      if (a.live(f)) area[f] = area_vector_float(a, a.fhe[f].idx());
-  }
+  const std::size_t nv = mesh.vertex_slots(), nh = mesh.halfedge_slots();
+  const Face* face = mesh.halfedge_face_array().data();
   const float cos_crease = float(std::cos(crease_degrees * std::numbers::pi / 180));
+  // A vertex whose faces form one wedge all round (no boundary or crease edge at it), the common
+  // case, gets the normal compute_vertex_normals gives it: the sum over its faces in face order.
+  std::vector<Vec3> smooth(nv, Vec3{0, 0, 0});
+  scatter_face_normals(a, weighting, smooth.data(), unit.data());
+  for (Vec3& n : smooth) n = unit_or_zero_float(n);
+  // The other vertices: an end of a boundary edge, or of a crease edge, where the two faces'
+  // normals differ by more than the crease angle (180 degrees keeps every edge smooth, even
+  // between faces of opposite normals).
+  std::vector<char> split(nv, 0);
+  for (std::size_t h = 0; h < nh; h += 2) {
+    if (a.garbage && mesh.is_deleted(Halfedge(Index(h)))) continue;
+    const Face fa = face[h], fb = face[h + 1];
+    if (!fa.is_valid() || !fb.is_valid() ||
+        (crease_degrees < 180 && dot(unit[fa.idx()], unit[fb.idx()]) < cos_crease))
+      split[a.to[h].idx()] = split[a.to[h + 1].idx()] = 1;
+  }
   HalfedgeProperty<Vec3> prop = mesh.halfedge_property<Vec3>(name);
   Vec3* out = prop.vector().data();
-  const Face* face = mesh.halfedge_face_array().data();
+  for (std::size_t h = 0; h < nh; ++h) {
+    if (a.garbage && mesh.is_deleted(Halfedge(Index(h)))) continue;
+    const Index v = a.to[h].idx();
+    // Boundary half-edges (no face) get zero; the corners of split vertices are written below.
+    out[h] = face[h].is_valid() && !split[v] ? smooth[v] : Vec3{0, 0, 0};
+  }
   // What face(in) adds at the corner where `in` ends.
   auto contribution = [&](Index in) {
     const Index f = face[in].idx();
     switch (weighting) {
       case NormalWeighting::area:
-        return area[f];
+        return area_vector_float(a, a.fhe[f].idx());
       case NormalWeighting::uniform:
         return unit[f];
       case NormalWeighting::angle:
@@ -180,49 +217,52 @@ HalfedgeProperty<Vec3> compute_corner_normals(SurfaceMesh& mesh, double crease_d
     }
     return unit[f] * corner_angle_at(a, in);
   };
-  std::vector<Index> ins;  // the half-edges entering v, in rotation order
-  std::vector<char> cut;   // cut[i]: a wedge ends between face(ins[i - 1]) and face(ins[i])
-  for (Vertex v : mesh.vertices()) {
-    if (mesh.is_isolated(v)) continue;
-    ins.clear();
-    for (Halfedge o : mesh.halfedges(v)) ins.push_back(SurfaceMesh::twin(o).idx());
-    // With o_i the outgoing half-edges in rotation order, face(o_i) is entered by twin(o_{i-1}):
-    // rotated by one, ins[i] is the corner of face(o_i).
-    const std::size_t k = ins.size();
-    std::rotate(ins.begin(), ins.end() - 1, ins.end());
+  const Halfedge* vertex_halfedge = mesh.vertex_halfedge_array().data();
+  std::vector<Index> outs;  // the half-edges leaving v, in rotation order
+  std::vector<Index> ins;   // ins[i]: the half-edge entering v in face(outs[i]) (or its gap)
+  std::vector<char> cut;    // cut[i]: a wedge ends between face(ins[i - 1]) and face(ins[i])
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (!split[v]) continue;  // isolated and deleted vertices are never split
+    outs.clear();
+    const Index o0 = vertex_halfedge[v].idx();
+    Index o = o0;
+    do {
+      outs.push_back(o);
+      o = a.next[o ^ 1u].idx();  // rotate clockwise: next(twin(o))
+    } while (o != o0);
+    // next(twin(outs[i - 1])) is outs[i]: twin(outs[i - 1]) enters v in face(outs[i]).
+    const std::size_t k = outs.size();
+    ins.resize(k);
+    ins[0] = outs[k - 1] ^ 1u;
+    for (std::size_t i = 1; i < k; ++i) ins[i] = outs[i - 1] ^ 1u;
     cut.assign(k, 0);
-    bool any_cut = false;
+    std::size_t start = k;  // the first cut; split vertices have one
     for (std::size_t i = 0; i < k; ++i) {
-      const Face fa = face[ins[(i + k - 1) % k]], fb = face[ins[i]];
-      // 180 degrees keeps every edge smooth, even between faces of opposite normals.
+      const Face fa = face[ins[i == 0 ? k - 1 : i - 1]], fb = face[ins[i]];
       cut[i] = !fa.is_valid() || !fb.is_valid() ||
                (crease_degrees < 180 && dot(unit[fa.idx()], unit[fb.idx()]) < cos_crease);
-      any_cut = any_cut || cut[i];
+      if (cut[i] && start == k) start = i;
     }
-    // Walk the ring once from a cut (or anywhere, for a single wedge), closing a wedge at each cut.
-    std::size_t start = 0;
-    if (any_cut)
-      while (!cut[start]) ++start;
+    // Walk the ring once from the first cut, closing a wedge at each cut.
+    auto at = [&](std::size_t s) { return start + s < k ? start + s : start + s - k; };  // s steps on
     std::size_t wedge_begin = 0;  // in steps from start
     Vec3 sum{0, 0, 0};
     auto close_wedge = [&](std::size_t end) {
       const Vec3 normal = unit_or_zero_float(sum);
       for (std::size_t s = wedge_begin; s < end; ++s) {
-        const Index in = ins[(start + s) % k];
+        const Index in = ins[at(s)];
         if (face[in].is_valid()) out[in] = normal;
       }
       sum = Vec3{0, 0, 0};
       wedge_begin = end;
     };
     for (std::size_t s = 0; s < k; ++s) {
-      const std::size_t i = (start + s) % k;
+      const std::size_t i = at(s);
       if (s > 0 && cut[i]) close_wedge(s);
       if (face[ins[i]].is_valid()) sum += contribution(ins[i]);
     }
     close_wedge(k);
   }
-  for (Halfedge h : mesh.halfedges())
-    if (mesh.is_boundary(h)) out[h.idx()] = Vec3{0, 0, 0};
   mark_all_faces(mesh);
   return prop;
 }

@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "hedge/core/build.h"
 #include "hedge/core/export.h"
 #include "hedge/core/face_operations.h"
 #include "hedge/error.h"
+#include "hedge/io/io.h"
 #include "non_finite.h"
 #include "test_meshes.h"
 
@@ -128,6 +130,47 @@ TEST(Normals, ARidgeIsAWedgeBoundaryOnlyBelowItsAngle) {
   }
   for (Halfedge h : m.halfedges())
     if (m.is_boundary(h)) EXPECT_EQ(sharp[h], (Vec3{0, 0, 0}));
+}
+
+TEST(Normals, CornersOfASmoothVertexGetItsVertexNormalBitForBit) {
+  // An open scan: boundary vertices, and many creases under 20 degrees.
+  SurfaceMesh m = read_mesh(test::data_path("elephant-with-holes.off"));
+  ASSERT_GT(m.n_faces(), 1000u);
+  for (NormalWeighting w : {NormalWeighting::area, NormalWeighting::angle, NormalWeighting::uniform}) {
+    const auto vn = compute_vertex_normals(m, w);
+    const auto smooth = compute_corner_normals(m, 180, w);
+    const auto creased = compute_corner_normals(m, 20, w, "h:creased");
+    // A vertex with no boundary edge and no crease edge is one wedge: its corners get the vertex
+    // normal exactly, as if computed by compute_vertex_normals. (Edges within 1e-4 of the crease
+    // angle's cosine are left out: the call rounds its face normals to float.)
+    const float cos20 = float(std::cos(20 * std::numbers::pi / 180));
+    auto one_wedge = [&](Vertex v) {
+      for (Halfedge o : m.halfedges(v)) {
+        if (m.is_boundary(SurfaceMesh::edge(o))) return false;
+        const Vec3 a = face_normal(m, m.face(o)), b = face_normal(m, m.face(SurfaceMesh::twin(o)));
+        if (dot(a, b) < cos20 + 1e-4f) return false;
+      }
+      return true;
+    };
+    std::size_t exact = 0, wedges = 0;
+    for (Halfedge h : m.halfedges()) {
+      if (m.is_boundary(h)) continue;
+      const Vertex v = m.to_vertex(h);
+      if (!m.is_boundary(v)) {
+        EXPECT_EQ(smooth[h], vn[v]) << "corner " << h.idx();
+        ++exact;
+      } else {
+        expect_near(smooth[h], vn[v]);  // one wedge too, summed around from the boundary
+      }
+      if (one_wedge(v)) {
+        EXPECT_EQ(creased[h], vn[v]) << "corner " << h.idx();
+        ++wedges;
+      }
+    }
+    EXPECT_GT(exact, 1000u);
+    EXPECT_GT(wedges, 1000u);
+  }
+  EXPECT_TRUE(m.validate().empty());
 }
 
 TEST(Normals, WritesAreMarkedForTheChangeLog) {

@@ -134,6 +134,15 @@ TEST(RequireFinitePositions, NamesTheFirstBadVertex) {
   SurfaceMesh m = build(test::grid(3, true));
   require_finite_positions(m, "check");
   test::expect_refuses_non_finite(m, Vertex(5), "check", [&] { require_finite_positions(m, "check"); });
+  // An infinity is refused as a NaN is.
+  m.position(Vertex(3)).z = -std::numeric_limits<float>::infinity();
+  EXPECT_THROW(require_finite_positions(m, "check"), InvalidInputError);
+  m.position(Vertex(3)).z = 0;
+  // A deleted vertex's position is not looked at.
+  test::poison(m, Vertex(5));
+  ASSERT_TRUE(remove_vertex(m, Vertex(5)));
+  require_finite_positions(m, "check");
+  EXPECT_EQ(m.validate(), std::vector<std::string>{});
 }
 
 }  // namespace

@@ -45,6 +45,9 @@ VertexProperty<Vec3> compute_vertex_normals(SurfaceMesh& mesh,
 //! crease edges, where the two faces' normals differ by more than `crease_degrees`; every corner of
 //! a wedge gets the wedge's weighted normal. crease_degrees = 0 gives face normals at every corner
 //! (flat shading), 180 the vertex normal (smooth); about 30-60 is typical for hard-surface models.
+//! A vertex with neither a boundary edge nor a crease edge gets at every corner exactly what
+//! compute_vertex_normals(weighting) gives it, bit for bit (the faces are summed in face order);
+//! the wedges of the other vertices are summed around the vertex from a wedge end.
 //! Boundary half-edges (no face) get zero. O(V + F).
 //! \throw InvalidInputError if crease_degrees is not in [0, 180].
 //! \throw InvalidInputError naming the first vertex whose position is not finite,
