@@ -132,7 +132,8 @@ struct SolidFractureResult {
   double radius = 0;
   //! Wall-clock seconds per stage (steady clock): locating; the break points and cells; clipping
   //! the triangles by the cells; capping; assembling the pieces and editing the remaining object;
-  //! per-piece work (mass properties, hulls).
+  //! per-piece work (mass properties, hulls: the pieces split between threads, core/threads.h;
+  //! set_max_threads(1) keeps it on the calling thread, and the result does not depend on it).
   struct Timings {
     double locate = 0, cells = 0, clip = 0, cap = 0, assemble = 0, per_piece = 0;
   } seconds;
