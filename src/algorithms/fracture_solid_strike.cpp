@@ -268,11 +268,78 @@ bool cap_polytope(const StrikeInput& in, const Polytope& cell, std::span<const C
 
 }  // namespace
 
-void KeyedSurface::finish_points() {
-  std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  points.erase(std::unique(points.begin(), points.end(),
-                           [](const auto& a, const auto& b) { return a.first == b.first; }),
-               points.end());
+namespace {
+
+//! Key -> number, open addressing; only looked up, never iterated, so nothing depends on the
+//! order of its slots.
+class KeyTable {
+ public:
+  static constexpr std::uint32_t kAbsent = 0xffffffffu;
+  explicit KeyTable(std::size_t n) {
+    std::size_t size = 16;
+    while (size < 2 * n) size <<= 1;
+    slots_.assign(size, {Key{}, kAbsent});
+    mask_ = size - 1;
+  }
+  //! The number of k, or `value` (stored as k's) if k is new.
+  std::uint32_t find_or_add(const Key& k, std::uint32_t value) {
+    std::size_t at = start(k);
+    while (slots_[at].second != kAbsent) {
+      if (slots_[at].first == k) return slots_[at].second;
+      at = (at + 1) & mask_;
+    }
+    slots_[at] = {k, value};
+    return value;
+  }
+  //! The number of k, kAbsent if it has none.
+  std::uint32_t find(const Key& k) const {
+    for (std::size_t at = start(k);; at = (at + 1) & mask_) {
+      if (slots_[at].second == kAbsent || slots_[at].first == k) return slots_[at].second;
+    }
+  }
+
+ private:
+  std::size_t start(const Key& k) const {
+    std::uint64_t h = (std::uint64_t{k.kind} << 32 | k.a) * 0x9E3779B97F4A7C15ull;
+    h ^= (std::uint64_t{k.b} << 32 | k.c) * 0xBF58476D1CE4E5B9ull;
+    return static_cast<std::size_t>((h ^ (h >> 29)) * 0x94D049BB133111EBull >> 32) & mask_;
+  }
+  std::vector<std::pair<Key, std::uint32_t>> slots_;
+  std::size_t mask_ = 0;
+};
+
+}  // namespace
+
+void KeyedSurface::finish_points(std::vector<std::uint32_t>* corner) {
+  // Duplicates dropped through a table first (a point is listed once per polygon around it), so
+  // that only the distinct ones are sorted; of equal keys the first listed stays (they are one
+  // point, computed alike).
+  KeyTable table(points.size());
+  std::vector<std::pair<Key, std::uint32_t>> order;  // distinct keys, with their place in `points`
+  order.reserve(points.size() / 2);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::uint32_t n = static_cast<std::uint32_t>(kept);
+    if (table.find_or_add(points[i].first, n) != n) continue;
+    points[kept++] = points[i];
+    order.push_back({points[i].first, n});
+  }
+  points.resize(kept);
+  std::sort(order.begin(), order.end());
+  std::vector<std::pair<Key, Vec3d>> sorted(kept);
+  std::vector<std::uint32_t> rank(kept);
+  for (std::size_t r = 0; r < kept; ++r) {
+    sorted[r] = points[order[r].second];
+    rank[order[r].second] = static_cast<std::uint32_t>(r);
+  }
+  points = std::move(sorted);
+  if (!corner) return;
+  corner->resize(3 * tris.size());
+  for (std::size_t t = 0; t < tris.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t n = table.find(tris[t][k]);
+      (*corner)[3 * t + k] = n == KeyTable::kAbsent ? KeyTable::kAbsent : rank[n];
+    }
 }
 
 std::uint32_t KeyedSurface::index(const Key& k) const {
@@ -290,34 +357,107 @@ void region_faces(const StrikeInput& in, std::vector<Face>& faces) {
   in.tree.faces_in_box(to_float(c - Vec3d{r, r, r}), to_float(c + Vec3d{r, r, r}), faces);
 }
 
-namespace {
+namespace {}  // namespace
 
-//! Builds a keyed surface into a mesh; false if it is not a closed manifold.
-bool build_closed(KeyedSurface& s, SurfaceMesh& mesh, std::string& failure) {
-  s.finish_points();
-  std::vector<Vec3> positions;
-  positions.reserve(s.points.size());
-  for (const auto& [k, p] : s.points) positions.push_back(to_float(p));
-  std::vector<std::uint32_t> indices;
-  indices.reserve(3 * s.tris.size());
-  for (const auto& t : s.tris)
-    for (const Key& k : t) indices.push_back(s.index(k));
-  BuildOptions bo;
-  bo.corner_attributes = false;
-  try {
-    // Triangles only: build()'s path for them, without the general one's face sizes.
-    mesh = build_triangles(positions, indices, bo);
-  } catch (const Error& e) {
-    failure = std::string("a piece is not manifold: ") + e.what();
-    return false;
-  }
-  for (Halfedge h : mesh.halfedges())
-    if (mesh.is_boundary(h)) {
-      failure = "a piece is open";
+bool build_closed(KeyedSurface& s, SurfaceMesh& mesh, std::vector<std::uint32_t>& corner,
+                  std::string& failure) {
+  s.finish_points(&corner);
+  const std::size_t nv = s.points.size(), nf = s.tris.size(), nc = 3 * nf;
+  auto next_corner = [](std::size_t c) { return c % 3 == 2 ? c - 2 : c + 1; };
+  for (std::size_t t = 0; t < nf; ++t) {
+    const std::uint32_t* v = &corner[3 * t];
+    if (v[0] >= nv || v[1] >= nv || v[2] >= nv) {
+      failure = "a piece's triangle " + std::to_string(t) + " uses a point it does not list";
       return false;
     }
+    if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) {
+      failure = "a piece is not manifold: triangle " + std::to_string(t) + " repeats a point";
+      return false;
+    }
+  }
+  // The corners leaving each point, a row per point, each entry (the corner's next point << 32 |
+  // corner) and each row sorted: a row holds an edge to a point at most once, and an edge's twin
+  // is found by a binary search in the row of its end.
+  std::vector<std::uint32_t> first(nv + 1, 0);
+  std::vector<std::uint64_t> out(nc);
+  for (std::size_t c = 0; c < nc; ++c) ++first[corner[c] + 1];
+  for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
+  {
+    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    for (std::size_t c = 0; c < nc; ++c)
+      out[fill[corner[c]]++] = std::uint64_t{corner[next_corner(c)]} << 32 | c;
+  }
+  for (std::size_t v = 0; v < nv; ++v) {
+    std::sort(out.begin() + first[v], out.begin() + first[v + 1]);
+    for (std::uint32_t i = first[v] + 1; i < first[v + 1]; ++i)
+      if (out[i] >> 32 == out[i - 1] >> 32) {
+        failure = "a piece is not manifold: two of its triangles run along the edge of points " +
+                  std::to_string(v) + " and " + std::to_string(out[i] >> 32) + " the same way";
+        return false;
+      }
+  }
+  // Each corner's twin: the corner running the other way along its edge.
+  std::vector<std::uint32_t> twin(nc);
+  for (std::size_t c = 0; c < nc; ++c) {
+    const std::uint64_t a = corner[c], b = corner[next_corner(c)];
+    const auto row = out.begin() + first[b], row_end = out.begin() + first[b + 1];
+    const auto it = std::lower_bound(row, row_end, a << 32);
+    if (it == row_end || *it >> 32 != a) {
+      failure = "a piece is open: no triangle runs along the edge of points " + std::to_string(a) + " and " +
+                std::to_string(b) + " the other way";
+      return false;
+    }
+    twin[c] = static_cast<std::uint32_t>(*it);
+  }
+  // Edges numbered as their first corner comes up.
+  std::vector<Index> he(nc, kInvalidIndex);
+  Index n_edges = 0;
+  for (std::size_t c = 0; c < nc; ++c)
+    if (he[c] == kInvalidIndex) {
+      he[c] = 2 * n_edges;
+      he[twin[c]] = 2 * n_edges + 1;
+      ++n_edges;
+    }
+  mesh = SurfaceMesh();
+  mesh.resize(nv, n_edges, nf);
+  for (std::size_t v = 0; v < nv; ++v) {
+    const Vec3 p = to_float(s.points[v].second);
+    if (!is_finite(p)) {
+      failure = "a piece's point " + std::to_string(v) + " is not finite";
+      return false;
+    }
+    mesh.position(Vertex(static_cast<Index>(v))) = p;
+  }
+  for (std::size_t c = 0; c < nc; ++c) {
+    const std::size_t cn = next_corner(c);
+    const Halfedge h(he[c]);
+    mesh.set_vertex(h, Vertex(corner[cn]));
+    mesh.set_next(h, Halfedge(he[cn]));
+    mesh.set_face(h, Face(static_cast<Index>(c / 3)));
+    mesh.set_halfedge(Vertex(corner[c]), h);
+    if (c % 3 == 2) mesh.set_halfedge(Face(static_cast<Index>(c / 3)), h);
+  }
+  // One fan per point: turning about it from its half-edge visits all the corners leaving it.
+  for (std::size_t v = 0; v < nv; ++v) {
+    const std::uint32_t valence = first[v + 1] - first[v];
+    if (valence == 0) continue;  // a point no triangle uses stays an isolated vertex, as in build()
+    const Halfedge h0 = mesh.halfedge(Vertex(static_cast<Index>(v)));
+    Halfedge h = h0;
+    std::uint32_t seen = 0;
+    do {
+      h = mesh.next(SurfaceMesh::twin(h));
+      ++seen;
+    } while (h != h0 && seen <= valence);
+    if (seen != valence) {
+      failure =
+          "a piece is not manifold: its faces around point " + std::to_string(v) + " form more than one fan";
+      return false;
+    }
+  }
   return true;
 }
+
+namespace {
 
 //! Triangles of each clipped polygon (a fan: it is convex), with their soup triangle as source.
 void add_polygons(std::span<const ClipPolygon> polys, KeyedSurface& s) {
@@ -343,6 +483,7 @@ struct CellWork {
 struct CellScratch {
   PolygonList polys;
   FirstOut masks;
+  std::vector<std::uint32_t> corner;
 };
 
 void piece_of(const StrikeInput& in, const Geometry& g, const SoupIndex& index, const Polytope& cell,
@@ -360,13 +501,13 @@ void piece_of(const StrikeInput& in, const Geometry& g, const SoupIndex& index, 
       w.seconds_cap += seconds_since(t);
       return;
     }
-    if (!build_closed(d.surface, d.mesh, w.failure)) return;
+    std::vector<std::uint32_t>& corner = scratch.corner;  // the piece's corners, as its points
+    if (!build_closed(d.surface, d.mesh, corner, w.failure)) return;
     for (std::size_t k = 0; k < d.surface.tris.size(); ++k) {
       if (!(d.surface.source[k] & kCapBit)) continue;
-      const auto& tri = d.surface.tris[k];
-      const Vec3d a = d.surface.points[d.surface.index(tri[0])].second;
-      const Vec3d b = d.surface.points[d.surface.index(tri[1])].second;
-      const Vec3d c = d.surface.points[d.surface.index(tri[2])].second;
+      const Vec3d a = d.surface.points[corner[3 * k]].second;
+      const Vec3d b = d.surface.points[corner[3 * k + 1]].second;
+      const Vec3d c = d.surface.points[corner[3 * k + 2]].second;
       w.cap_area.emplace_back(d.surface.source[k] & ~kCapBit, triangle_area(a, b, c));
     }
     w.made = true;

@@ -32,7 +32,10 @@ struct KeyedSurface {
     tris.push_back(t);
     source.push_back(from);
   }
-  void finish_points();
+  //! Sorts `points` by key and drops repeated keys; with `corner`, also sets (*corner)[3 t + k] to
+  //! the index in `points` of tris[t][k] (0xffffffff if it is not there). O(n log n) in the
+  //! distinct points, O(1) expected per listed point and corner.
+  void finish_points(std::vector<std::uint32_t>* corner = nullptr);
   std::uint32_t index(const Key& k) const;
 };
 
@@ -55,6 +58,17 @@ struct Strike {
   std::string failure;
   double seconds_cells = 0, seconds_clip = 0, seconds_cap = 0;
 };
+
+//! Finishes the points of a keyed surface and links it into `mesh` directly, with the numbering
+//! build_triangles() would give (point i is vertex i, triangle i face i; an edge is made by the first
+//! corner that crosses it, its other half-edge taken by the second; a vertex holds its last corner's
+//! half-edge, a face the half-edge entering its first corner), and checks explicitly what build()
+//! would: false, with `failure` saying what, unless the surface is a closed manifold, that is, no
+//! triangle repeats a point, every directed edge is used once and its reverse once, the triangles
+//! around every point form one fan, and every point is finite in float. Sets corner[3 t + k] to the
+//! point of s.tris[t][k]. O(corners log valence) after the points' sort.
+bool build_closed(KeyedSurface& s, SurfaceMesh& mesh, std::vector<std::uint32_t>& corner,
+                  std::string& failure);
 
 //! The faces whose boxes meet the box of P (sorted).
 void region_faces(const StrikeInput& in, std::vector<Face>& faces);

@@ -13,6 +13,7 @@
 #include "hedge/algorithms/normals.h"
 #include "hedge/algorithms/subdivide.h"
 #include "hedge/core/build.h"
+#include "hedge/core/threads.h"
 #include "hedge/io/io.h"
 #include "test_meshes.h"
 
@@ -75,6 +76,38 @@ TEST(FractureSolidApply, PiecesKeepTheirSourceFacesPropertiesAndCapsAreMarked) {
   }
   EXPECT_GT(caps, 0u);
   EXPECT_GT(outer, 0u);
+}
+
+TEST(FractureSolidApply, PiecesAreMeasuredAlikeOnOneThreadOrSeveral) {
+  SurfaceMesh m = quad_sphere();
+  Setting s(m, to_double(m.position(Vertex(3))), 0.4);
+  s.options.hulls = true;
+  s.in.material = fracture_material_at_radius(fracture_material("glass"), 0.4);  // more pieces
+  s.in.region_radius = 0.4 + 0.5 * s.in.material.rings.back().spacing;
+  std::vector<Face> faces;
+  region_faces(s.in, faces);
+  Strike strike;
+  ASSERT_TRUE(compute_strike(s.in, faces, 0.0, 5, strike)) << strike.failure;
+  std::vector<SolidPiece> one = assemble_pieces(s.in, strike, 1);
+  ASSERT_GE(one.size(), 8u);  // enough for two threads of kPiecesPerThread
+  std::vector<SolidPiece> several = one;
+  set_max_threads(1);
+  measure_pieces(one, s.options);
+  set_max_threads(4);
+  measure_pieces(several, s.options);
+  set_max_threads(0);
+  for (std::size_t p = 0; p < one.size(); ++p) {
+    // Each piece's own: its volume and hull, the same bit for bit whatever the threads.
+    EXPECT_GT(one[p].volume, 0);
+    EXPECT_NEAR(one[p].volume, volume(one[p].mesh), 1e-9);
+    EXPECT_EQ(one[p].volume, several[p].volume);
+    EXPECT_EQ(one[p].mass.mass, several[p].mass.mass);
+    EXPECT_EQ(one[p].centroid, several[p].centroid);
+    EXPECT_EQ(one[p].hull.mesh.n_faces(), several[p].hull.mesh.n_faces());
+    EXPECT_GT(several[p].hull.mesh.n_faces(), 0u);
+    EXPECT_TRUE(several[p].hull.mesh.validate().empty());
+    EXPECT_TRUE(several[p].mesh.validate().empty());
+  }
 }
 
 TEST(FractureSolidApply, TheRemainingObjectGetsThePatchInPlaceOfTheTouchedFaces) {

@@ -143,6 +143,92 @@ TEST(FractureSolidStrike, BondsAreTheCapAreaTwoPiecesShare) {
   EXPECT_NEAR(to_remaining, on_region, 1e-9 * on_region);
 }
 
+//! A keyed surface of triangles over points 0..n-1 at `pos`, each point listed once per triangle
+//! that uses it, in reverse order (as a piece lists a point once per polygon around it).
+KeyedSurface keyed(const std::vector<Vec3d>& pos, const std::vector<std::array<std::uint32_t, 3>>& tris) {
+  KeyedSurface s;
+  auto key = [](std::uint32_t i) { return Key{Key::vertex, i, 0, 0}; };
+  for (const auto& t : tris) {
+    s.add({key(t[0]), key(t[1]), key(t[2])}, 0);
+    for (int k = 2; k >= 0; --k) s.points.emplace_back(key(t[k]), pos[t[k]]);
+  }
+  std::reverse(s.points.begin(), s.points.end());
+  return s;
+}
+
+const std::vector<Vec3d> kOctahedron{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+const std::vector<std::array<std::uint32_t, 3>> kOctahedronFaces{{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                                                 {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+
+TEST(FractureSolidStrike, BuildClosedLinksAPieceAsBuildTrianglesWould) {
+  // Points numbered 4..9 in key order, so that a corner's point differs from its input number.
+  std::vector<Vec3d> pos(10);
+  std::vector<std::array<std::uint32_t, 3>> tris;
+  for (std::size_t i = 0; i < 6; ++i) pos[i + 4] = kOctahedron[i];
+  for (const auto& t : kOctahedronFaces) tris.push_back({t[0] + 4, t[1] + 4, t[2] + 4});
+  KeyedSurface s = keyed(pos, tris);
+  SurfaceMesh mesh;
+  std::vector<std::uint32_t> corner;
+  std::string failure;
+  ASSERT_TRUE(build_closed(s, mesh, corner, failure)) << failure;
+  EXPECT_TRUE(mesh.validate().empty());
+  ASSERT_EQ(s.points.size(), 6u);
+  ASSERT_EQ(corner.size(), 3 * tris.size());
+  for (std::size_t c = 0; c < corner.size(); ++c) EXPECT_EQ(corner[c], tris[c / 3][c % 3] - 4);
+  std::vector<Vec3> positions;
+  for (const Vec3d& p : kOctahedron) positions.push_back(to_float(p));
+  std::vector<std::uint32_t> indices(corner.begin(), corner.end());
+  BuildOptions bo;
+  bo.corner_attributes = false;
+  const SurfaceMesh expected = build_triangles(positions, indices, bo);
+  ASSERT_EQ(mesh.halfedge_slots(), expected.halfedge_slots());
+  ASSERT_EQ(mesh.vertex_slots(), expected.vertex_slots());
+  ASSERT_EQ(mesh.face_slots(), expected.face_slots());
+  for (Index h = 0; h < mesh.halfedge_slots(); ++h) {
+    EXPECT_EQ(mesh.to_vertex(Halfedge(h)), expected.to_vertex(Halfedge(h)));
+    EXPECT_EQ(mesh.next(Halfedge(h)), expected.next(Halfedge(h)));
+    EXPECT_EQ(mesh.face(Halfedge(h)), expected.face(Halfedge(h)));
+  }
+  for (Index v = 0; v < mesh.vertex_slots(); ++v) {
+    EXPECT_EQ(mesh.halfedge(Vertex(v)), expected.halfedge(Vertex(v)));
+    EXPECT_EQ(mesh.position(Vertex(v)), expected.position(Vertex(v)));
+  }
+  for (Index f = 0; f < mesh.face_slots(); ++f) EXPECT_EQ(mesh.halfedge(Face(f)), expected.halfedge(Face(f)));
+}
+
+TEST(FractureSolidStrike, BuildClosedRefusesOpenNonManifoldAndPinchedPieces) {
+  auto refusal = [](const std::vector<Vec3d>& pos, std::vector<std::array<std::uint32_t, 3>> tris) {
+    KeyedSurface s = keyed(pos, tris);
+    SurfaceMesh mesh;
+    std::vector<std::uint32_t> corner;
+    std::string failure;
+    return build_closed(s, mesh, corner, failure) ? std::string() : failure;
+  };
+  auto faces = kOctahedronFaces;
+  EXPECT_EQ(refusal(kOctahedron, faces), "");
+  faces.pop_back();
+  EXPECT_NE(refusal(kOctahedron, faces).find("a piece is open"), std::string::npos);
+  faces = kOctahedronFaces;
+  faces.push_back(faces[0]);
+  EXPECT_NE(refusal(kOctahedron, faces).find("the same way"), std::string::npos);
+  faces = kOctahedronFaces;
+  faces[0] = {0, 2, 2};
+  EXPECT_NE(refusal(kOctahedron, faces).find("repeats a point"), std::string::npos);
+  // Two octahedra sharing point 0: every edge is used twice, but point 0 has two fans.
+  std::vector<Vec3d> pos = kOctahedron;
+  for (std::size_t i = 1; i < 6; ++i) pos.push_back(kOctahedron[i] + Vec3d{2, 0, 0});
+  faces = kOctahedronFaces;
+  for (const auto& t : kOctahedronFaces) {
+    std::array<std::uint32_t, 3> u;
+    for (int k = 0; k < 3; ++k) u[k] = t[k] == 1 ? 0 : t[k] == 0 ? 6 : t[k] + 5;
+    faces.push_back(u);
+  }
+  // The second one's point 1 (at x = 1) is renumbered to the first's point 0; its own point 0 (at
+  // x = 3) becomes 6.
+  pos[6] = Vec3d{3, 0, 0};
+  EXPECT_NE(refusal(pos, faces).find("more than one fan"), std::string::npos);
+}
+
 TEST(FractureSolidStrike, SameInputSameStrikeAndANudgeMovesIt) {
   SurfaceMesh m = sphere();
   Setting s(m, to_double(m.position(Vertex(3))), 0.3, "glass");

@@ -136,7 +136,9 @@ struct SolidFractureResult {
   //! Wall-clock seconds per stage (steady clock): locating; the break points and cells; clipping
   //! the triangles by the cells; capping; assembling the pieces and editing the remaining object;
   //! per-piece work (mass properties, hulls). The cells are clipped and capped in one loop over
-  //! worker threads: its wall time is split between clip and cap as their thread times are.
+  //! worker threads: its wall time is split between clip and cap as their thread times are. The
+  //! pieces are measured on worker threads too (core/threads.h); set_max_threads(1) keeps all of
+  //! it on the calling thread, and the result does not depend on it.
   struct Timings {
     double locate = 0, cells = 0, clip = 0, cap = 0, assemble = 0, per_piece = 0;
   } seconds;
