@@ -5,8 +5,9 @@
 // hausdorff_distance() (include/hedge/algorithms/distance.h), and fracture_solid()
 // (include/hedge/algorithms/fracture_solid.h: its cells and the measuring of its pieces). Each
 // says so in its header; their results do not depend on the number of threads. How many they may
-// use is one process-wide setting: set_max_threads(1) keeps every call on the calling thread (inside a game's frame, say),
-// set_max_threads(0) (the default) lets them use every core the process may run on.
+// use is one process-wide setting: set_max_threads(1) keeps every call on the calling thread
+// (inside a game's frame, say), set_max_threads(0) (the default) lets them use every core the
+// process may run on.
 //
 // The workers live only for the duration of the call that started them: nothing runs in the
 // background between calls, and a call returns only when its workers have finished.
