@@ -137,8 +137,7 @@ class Decimator {
   void gather_ring(Halfedge h);
   void interpolate_corners(Vertex v, const Vec3d& p);
   // The key of e's best collapse: (cost's float bits << 32) | half-edge, kOverError or kNoKey.
-  // Keeps the surviving point and its cost in place_ for the collapse.
-  std::uint64_t rank(Edge e);
+  std::uint64_t rank(Edge e) const;
   Check check(Halfedge h, const Vec3d& p, double cost, bool shapely) const;
   bool apply(Halfedge h, const Vec3d& p, double cost, DecimateResult& result, double& max_cost);
   // Collapses done and refused by the face checks in one pass or in the greedy tail.
@@ -175,13 +174,6 @@ class Decimator {
   static constexpr std::uint64_t kOverError = kNoKey - 1;
   std::vector<std::uint64_t> edge_key_, keys_, scratch_;
   std::vector<std::uint8_t> refused_;  // greedy tail: the edge's key was refused by a check
-  // The surviving point and cost of each edge's current key, as rank() found them: a collapse
-  // takes them from here instead of placing again (while the key is current, neither end changed).
-  struct Placed {
-    Vec3 p;
-    double cost;
-  };
-  std::vector<Placed> place_;
 
   // One collapse's ring: the triangles around both ends before it, their corners' positions and
   // texture coordinates, and which chart (faces joined across non-seam edges) each belongs to.
@@ -474,12 +466,11 @@ void Decimator::interpolate_corners(Vertex v, const Vec3d& p) {
   } while (o != start);
 }
 
-std::uint64_t Decimator::rank(Edge e) {
+std::uint64_t Decimator::rank(Edge e) const {
   Halfedge h;
   Vec3d p;
   double cost;
   if (!best_collapse(e, h, p, cost)) return kNoKey;
-  place_[e.idx()] = {to_float(p), cost};
   if (!(cost <= max_cost_)) return kOverError;
   return std::uint64_t(float_bits(static_cast<float>(cost))) << 32 | h.idx();
 }
@@ -526,7 +517,6 @@ Decimator::Tally Decimator::collapse_pass(std::uint32_t pass, std::size_t budget
       const std::uint32_t h16 = std::uint32_t(keys_[k + 16]);
       prefetch(to + h16);
       prefetch(m_.halfedge_next_array().data() + h16);
-      prefetch(place_.data() + (h16 >> 1));
     }
     if (k + 8 < n_keys) {
       const std::uint32_t h8 = std::uint32_t(keys_[k + 8]);
@@ -542,9 +532,9 @@ Decimator::Tally Decimator::collapse_pass(std::uint32_t pass, std::size_t budget
     if (m_.is_deleted(h)) continue;
     const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
     if (stamp_[a.idx()] == pass || stamp_[b.idx()] == pass) continue;
-    const Placed& placed = place_[Mesh::edge(h).idx()];
-    const Vec3d p = to_double(placed.p);
-    const double cost = placed.cost;
+    Vec3d p;
+    double cost;
+    placement(h, p, cost);
     if (!(cost <= max_cost_)) {
       over_error = true;
       continue;
@@ -587,8 +577,9 @@ Decimator::Tally Decimator::collapse_greedy(bool shapely, DecimateResult& result
     const Halfedge h(static_cast<Index>(key & 0xffffffffu));
     const Index e = Mesh::edge(h).idx();
     if (m_.is_deleted(h) || edge_key_[e] != key || refused_[e]) continue;
-    const Vec3d p = to_double(place_[e].p);
-    const double cost = place_[e].cost;
+    Vec3d p;
+    double cost;
+    placement(h, p, cost);
     if (const Check c = check(h, p, cost, shapely); c != Check::ok) {
       ++(c == Check::normal ? result.refused.normal : result.refused.shape);
       t.refused_shape += c == Check::shape;
@@ -639,7 +630,6 @@ DecimateResult Decimator::run() {
   gather_quadrics();
   stamp_.assign(m_.vertex_slots(), 0);
   edge_key_.assign(m_.edge_slots(), kNoKey);
-  place_.resize(m_.edge_slots());
   double max_cost = 0;
   bool over_error = false;  // a candidate of this pass exceeded max_error
   bool shapely = true;      // the shape check is on (see check_faces)
