@@ -109,6 +109,13 @@ class Decimator {
       n = std::max(n, (m_.n_faces() - o_.target_faces + 1) / 2);
     return n;
   }
+  // Reports the share of the initially needed collapses done (with a target only).
+  void report() const {
+    if (o_.target_vertices == 0 && o_.target_faces == 0) return;
+    report_progress(o_.progress, double(initial_ - std::min(initial_, needed())) / double(initial_));
+  }
+  // Passes and the greedy tail report after this many collapses (about 64 times in a run).
+  std::size_t report_every() const { return std::max<std::size_t>(1, initial_ / 64); }
   bool done() const {
     const bool any = o_.target_vertices > 0 || o_.target_faces > 0;
     return any && (o_.target_vertices == 0 || m_.n_vertices() <= o_.target_vertices) &&
@@ -154,6 +161,7 @@ class Decimator {
   EdgeProperty<std::uint8_t> crease_;
   bool seams_ = false;
   double min_cos_ = 0, max_cost_ = 0, tiny_area2_ = 0;
+  std::size_t initial_ = 0;  // collapses needed at the start
 
   std::vector<Quadric> q_;
   // Each face's unit normal in the input: small steps must not add up to a face turned over.
@@ -541,7 +549,7 @@ Decimator::Tally Decimator::collapse_pass(std::uint32_t pass, std::size_t budget
     }
     if (!apply(h, p, cost, result, max_cost)) continue;
     stamp_[b.idx()] = pass;
-    ++t.done;
+    if (++t.done % report_every() == 0) report();
     if (done() || t.done >= budget) break;
   }
   return t;
@@ -584,7 +592,7 @@ Decimator::Tally Decimator::collapse_greedy(bool shapely, DecimateResult& result
       refused_[e] = 1;
       continue;
     }
-    ++t.done;
+    if (++t.done % report_every() == 0) report();
     const Halfedge start = m_.halfedge(b);
     Halfedge o = start;
     do {
@@ -612,7 +620,7 @@ Decimator::Tally Decimator::collapse_greedy(bool shapely, DecimateResult& result
 DecimateResult Decimator::run() {
   DecimateResult result;
   report_progress(o_.progress, 0);
-  const std::size_t initial = needed();
+  const std::size_t initial = initial_ = needed();
   if (initial == 0 || m_.n_faces() == 0) {
     result.vertices = m_.n_vertices(), result.faces = m_.n_faces();
     result.stop = initial == 0 ? DecimateStop::target_reached : DecimateStop::no_legal_collapse;
@@ -662,8 +670,7 @@ DecimateResult Decimator::run() {
           endless ? keys_.size() : std::max<std::size_t>({1, (needed() + 1) / 2, initial / 32});
       t = collapse_pass(pass, budget, shapely, result, max_cost, over_error);
     }
-    if (!endless)
-      report_progress(o_.progress, double(initial - std::min(initial, needed())) / double(initial));
+    report();
     if (done()) break;
     if (t.done == 0 && t.refused_shape > 0 && shapely) {
       // The shape check alone may stop the decimation short of its target: lift it, and go on.

@@ -105,12 +105,19 @@ struct Quadric {
       p = mid - d;
       return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
     };
-    // Fast path: det >= kRankTolerance tr^3 / 4 implies the smallest eigenvalue is at least
-    // kRankTolerance times the largest (lambda_min >= 4 det / tr^2 and lambda_max <= tr).
+    // Fast path: full rank is certain without the eigenvalues when a lower bound of the smallest
+    // eigenvalue is at least kRankTolerance times an upper bound of the largest. The smallest is at
+    // least det / m (m, the sum of the principal 2x2 minors, is at least the product of the two
+    // largest) and at least 4 det / tr^2; the largest is at most tr / 3 + 2/3 sqrt(tr^2 - 3 m)
+    // (Samuelson's bound: the mean plus sqrt(2) standard deviations of the three) and at most tr.
+    // The margin keeps a rounding of the bounds from deciding a case the eigenvalues would not.
     const double det =
         a00 * (a11 * a22 - a12 * a12) - a01 * (a01 * a22 - a12 * a02) + a02 * (a01 * a12 - a11 * a02);
+    const double m = a00 * a11 - a01 * a01 + a00 * a22 - a02 * a02 + a11 * a22 - a12 * a12;
+    const double upper = tr / 3 + (2.0 / 3) * std::sqrt(std::max(0.0, tr * tr - 3 * m));
     Vec3d d;
-    const bool full = det >= 0.25 * kRankTolerance * tr * tr * tr;
+    const bool full = det >= 0.25 * kRankTolerance * tr * tr * tr ||
+                      (m > 0 && det >= (1 + 1e-9) * kRankTolerance * upper * std::min(m, 0.25 * tr * tr));
     if (full && solve({0, 0, 0}, 0, g, d) && accept(d)) return true;
     const std::array<double, 3> l = eigenvalues();
     int rank = 1;
