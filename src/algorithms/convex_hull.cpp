@@ -229,7 +229,9 @@ class Quickhull {
     auto [a, b, c, d] = s.v;
     if (dot(triangle_normal(p_[a], p_[b], p_[c]), p_[d] - p_[a]) > 0) std::swap(b, c);
     // Now d is below abc: abc, and the three faces through d, wind outward.
-    faces_.reserve(8 * p_.size() + 16);
+    // Room for the faces of a typical hull, bounded so that a large cloud (whose hull is usually
+    // far smaller) does not reserve memory in proportion to its points; beyond it, it grows.
+    faces_.reserve(std::min<std::size_t>(8 * p_.size() + 16, std::size_t(1) << 14));
     const std::array<std::uint32_t, 4> f{new_face(a, b, c), new_face(a, d, b), new_face(b, d, c),
                                          new_face(c, d, a)};
     for (std::uint32_t x : f)

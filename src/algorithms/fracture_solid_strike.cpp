@@ -357,8 +357,6 @@ void region_faces(const StrikeInput& in, std::vector<Face>& faces) {
   in.tree.faces_in_box(to_float(c - Vec3d{r, r, r}), to_float(c + Vec3d{r, r, r}), faces);
 }
 
-namespace {}  // namespace
-
 bool build_closed(KeyedSurface& s, SurfaceMesh& mesh, std::vector<std::uint32_t>& corner,
                   std::string& failure) {
   s.finish_points(&corner);
@@ -554,7 +552,7 @@ bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, doubl
         for (std::size_t k = begin; k < end; ++k)
           piece_of(in, g, index, cells[order[k]], margin, scratch, work[order[k]]);
       },
-      2);
+      2, parts);
   double clip_cpu = 0, cap_cpu = 0;
   for (std::size_t i = 0; i < cells.size(); ++i) {
     CellWork& w = work[i];

@@ -484,6 +484,9 @@ class Reader {
     if (prim.attributes.find("POSITION") == prim.attributes.end())
       fail(where + ": has no POSITION attribute");
 
+    if (prim.material >= 0 && static_cast<std::size_t>(prim.material) >= model_.materials.size())
+      fail(where + ": material " + std::to_string(prim.material) + " does not exist (the file has " +
+           str(model_.materials.size()) + ")");
     Primitive out;
     out.material = prim.material;
     const std::size_t vertices = read_vertices(prim, where, out);

@@ -284,6 +284,9 @@ TEST(GltfRead, MalformedFilesSayWhatAndWhere) {
     Triangle n;
     n.doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 7;
     expect_error(n.text(), "mesh 0 primitive 0 NORMAL: accessor 7 does not exist (the file has 2)");
+    Triangle m;  // a material the file does not have: named, not taken as a submesh number
+    m.doc["meshes"][0]["primitives"][0]["material"] = 5;
+    expect_error(m.text(), "mesh 0 primitive 0: material 5 does not exist (the file has 0)");
   }
   {
     Triangle t;
