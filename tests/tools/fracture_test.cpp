@@ -44,6 +44,14 @@ TEST_F(HedgeCli, FractureWritesShardsAndASummaryThatDescribesThem) {
     EXPECT_GE(s["hull"]["faces"].get<int>(), 4);
   }
   EXPECT_EQ(folder(out).size(), n + 2);
+  // The same strike as .glb into the same folder replaces the OBJ files instead of joining them.
+  run_json({"fracture", data("spot_triangulated.obj"), "--impact", "0.0,0.0,0.0", "--tolerance", "10",
+            "--material", "glass", "--seed", "4", "-o", out.string(), "--thickness", "0.01", "--json",
+            "--format", "glb"});
+  const auto files = folder(out);
+  EXPECT_EQ(files.size(), n + 2);
+  for (const auto& [name, text] : files)
+    EXPECT_TRUE(name == "summary.json" || name.ends_with(".glb")) << name;
 }
 
 // --break-radius puts the material into model units: twice the radius breaks about four times the

@@ -140,6 +140,11 @@ TEST_F(HedgeCli, SolidFracturePiecesAsGlbCarryTheInnerMaterial) {
     EXPECT_TRUE(info["is_closed"].get<bool>()) << file;
     EXPECT_EQ(info["faces"], p["faces"]);
   }
+  // An OBJ run into the same folder leaves no .glb of this run behind, and the other way round.
+  ASSERT_EQ(run(strike(out, "stone", "7")).code, 0);
+  EXPECT_EQ(folder(out).size(), summary["pieces"].size() + 2);
+  ASSERT_EQ(run(args).code, 0);
+  EXPECT_EQ(folder(out).size(), summary["pieces"].size() + 2);
   expect_usage_error({"fracture", data("spot_triangulated.obj"), "--impact", "0,0,0", "-o", tmp("x").string(),
                       "--format", "stl"});
 }

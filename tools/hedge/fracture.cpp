@@ -175,10 +175,13 @@ int run_surface_fracture(const FractureCommandOptions& o, const std::string& sol
                       {"hull", {{"vertices", s.hull.mesh.n_vertices()}, {"faces", s.hull.mesh.n_faces()}}}});
   }
   summary["shards"] = shards;
-  // Shard files of an earlier run with more shards would not belong to this summary.
-  for (std::size_t i = r.shards.size();; ++i) {
+  // Shard files of an earlier run with more shards, or in the other format, would not belong to
+  // this summary.
+  for (const std::string format : {"obj", "glb"}) {
     std::error_code ec;
-    if (!fs::remove(dir / shard_name(i, o.format), ec)) break;
+    if (format != o.format) fs::remove(dir / ("remaining." + format), ec);
+    for (std::size_t i = format == o.format ? r.shards.size() : 0;; ++i)
+      if (!fs::remove(dir / shard_name(i, format), ec)) break;
   }
   write_atomically(dir / "summary.json", summary.dump(2) + "\n");
 

@@ -155,10 +155,13 @@ int run_solid_fracture(const SolidFractureCliOptions& s, const SolidFractureCliI
   }
   summary["pieces"] = pieces;
   summary["bonds"] = bonds_json(r.bonds);
-  // Piece files of an earlier run with more pieces would not belong to this summary.
-  for (std::size_t i = r.pieces.size();; ++i) {
+  // Piece files of an earlier run with more pieces, or in the other format, would not belong to
+  // this summary.
+  for (const std::string format : {"obj", "glb"}) {
     std::error_code ec;
-    if (!fs::remove(dir / piece_name(i, in.format), ec)) break;
+    if (format != in.format) fs::remove(dir / ("remaining." + format), ec);
+    for (std::size_t i = format == in.format ? r.pieces.size() : 0;; ++i)
+      if (!fs::remove(dir / piece_name(i, format), ec)) break;
   }
   write_atomically(dir / "summary.json", summary.dump(2) + "\n");
 
