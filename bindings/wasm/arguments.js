@@ -199,6 +199,20 @@ const ARGUMENTS = {
         }),
       ],
     ],
+    solidFractureRefusalCode: [
+      ['impact', VEC3],
+      [
+        'options',
+        options({
+          seed: NUMBER,
+          radius: NUMBER,
+          radiusFraction: NUMBER,
+          innerSubmesh: NUMBER,
+          density: NUMBER,
+          tolerance: NUMBER,
+        }),
+      ],
+    ],
     computeCornerNormals: [['creaseDegrees', optional(NUMBER)]],
     toArrays: [['options', options({})]],
     toFile: [['name', STRING]],

@@ -343,11 +343,26 @@ export interface SolidFractureResult {
   };
 }
 
-/** What fractureSolid() with kind 'auto' returns for a mesh solid fracture refuses. */
+/** Why a strike cannot be a solid fracture (solidFractureRefusalCode()): 'open' and 'non_manifold'
+ *  are the input's shape, which fractureSolid() with kind 'auto' breaks by surface fracture; the
+ *  others are errors with either kind. */
+export type SolidRefusal =
+  | 'none'
+  | 'open'
+  | 'non_manifold'
+  | 'bad_option'
+  | 'bad_impact'
+  | 'off_surface'
+  | 'no_face'
+  | 'bad_radius';
+
+/** What fractureSolid() with kind 'auto' returns for a mesh solid fracture refuses for its shape. */
 export interface SurfaceFallbackResult extends FractureResult {
   kind: 'surface';
   /** Why solid fracture was refused. */
   refusal: string;
+  /** The refusal's code: 'open' or 'non_manifold'. */
+  refusalCode: 'open' | 'non_manifold';
 }
 
 export class Hedge {
@@ -468,6 +483,11 @@ export class Mesh {
   ): SolidFractureResult | SurfaceFallbackResult;
   /** Why fractureSolid() would be refused, or null. */
   solidFractureRefusal(impact: Vec3, options?: Omit<SolidFractureOptions, 'kind'>): string | null;
+  /** solidFractureRefusal()'s answer as a code ('none' when the strike can be made). */
+  solidFractureRefusalCode(
+    impact: Vec3,
+    options?: Omit<SolidFractureOptions, 'kind' | 'surface'>,
+  ): SolidRefusal;
   toArrays(options?: { triangulate?: boolean }): Arrays;
   toFile(name: string): Uint8Array;
   memoryBytes(): number;

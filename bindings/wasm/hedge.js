@@ -547,9 +547,10 @@ export class Mesh extends NativeOwner {
    *  the mesh's bounding box). seed: a whole number (the same seed, mesh and impact give the same
    *  pieces). innerSubmesh: the caps' submesh (-1: one more than the largest). density: for the
    *  pieces' mass. hulls: compute each piece's convex hull. kind: 'solid', or 'auto' to break an
-   *  open or non-manifold mesh by surface fracture instead (the result then is fracture()'s, with
-   *  kind 'surface' and the refusal that sent it there; `surface`: more options for that fracture,
-   *  e.g. {thickness}; a bad option or impact throws as with 'solid'). Uses the picking tree, so a strike costs
+   *  open or non-manifold mesh by surface fracture instead (solidFractureRefusalCode() 'open' or
+   *  'non_manifold'; the result then is fracture()'s, with kind 'surface', the refusal that sent it
+   *  there and its refusalCode; `surface`: more options for that fracture, e.g. {thickness}; any
+   *  other refusal, a bad option or impact, throws as with 'solid'). Uses the picking tree, so a strike costs
    *  the broken region. Returns {kind: 'solid', pieces: [Piece], bonds: [{a, b, area}] (pieces a
    *  and b share `area` of cap; b null: the remaining object), impactFace, impactPoint, radius,
    *  seconds: {locate, cells, clip, cap, assemble, perPiece, fracture, pack}}. A refused strike (an
@@ -565,10 +566,10 @@ export class Mesh extends NativeOwner {
     const [preset, custom] = materialArguments('fractureSolid', material);
     const o = solidOptions(options);
     if (kind === 'auto') {
-      // Only an open or non-manifold mesh goes to surface fracture; a bad option or impact is an
-      // error, as it is with kind 'solid'.
-      const refusal = this._call('solidFractureRefusal', at, preset, custom, o);
-      if (/^the mesh is (open|not manifold)/.test(refusal)) {
+      // Only the input's shape (open or non-manifold) goes to surface fracture, the rule of every
+      // binding (solid_refusal_falls_back()); any other refusal throws below, as with kind 'solid'.
+      const { code, message: refusal } = this._call('solidFractureCheck', at, preset, custom, o);
+      if (code === 'open' || code === 'non_manifold') {
         const { seed, radius, density, tolerance, hulls } = o;
         const shards = this.fracture(impact, {
           material,
@@ -579,7 +580,7 @@ export class Mesh extends NativeOwner {
           hulls,
           ...surface,
         });
-        return { kind: 'surface', refusal, ...shards };
+        return { kind: 'surface', refusal, refusalCode: code, ...shards };
       }
     }
     const result = this._call('fractureSolid', at, preset, custom, o);
@@ -591,14 +592,24 @@ export class Mesh extends NativeOwner {
    *  would not. Whether the mesh is closed is kept by the picking tree until the mesh changes. */
   solidFractureRefusal(impact, { material = 'stone', ...options } = {}) {
     const [preset, custom] = materialArguments('solidFractureRefusal', material);
-    const why = this._call(
-      'solidFractureRefusal',
+    const { message } = this._call(
+      'solidFractureCheck',
       point3(impact),
       preset,
       custom,
       solidOptions(options),
     );
-    return why === '' ? null : why;
+    return message === '' ? null : message;
+  }
+
+  /** solidFractureRefusal()'s answer as a code, the same in every binding: 'none' (no refusal),
+   *  'open' or 'non_manifold' (the input's shape: fractureSolid() with kind 'auto' breaks these by
+   *  surface fracture), or 'bad_option', 'bad_impact', 'off_surface', 'no_face', 'bad_radius'
+   *  (errors with either kind). */
+  solidFractureRefusalCode(impact, { material = 'stone', ...options } = {}) {
+    const [preset, custom] = materialArguments('solidFractureRefusalCode', material);
+    return this._call('solidFractureCheck', point3(impact), preset, custom, solidOptions(options))
+      .code;
   }
 
   /** The mesh as index buffers (copies): {positions, indices, faceSizes (null for triangles)};

@@ -4,7 +4,7 @@
 //   wasm_mesh.*      NativeMesh: construction, queries, picking
 //   wasm_edits.cpp   NativeMesh: local edits and whole-mesh algorithms
 //   wasm_fracture.cpp NativeMesh: fracture
-//   wasm_fracture_solid.cpp NativeMesh: fractureSolid, solidFractureRefusal
+//   wasm_fracture_solid.cpp NativeMesh: fractureSolid, solidFractureCheck
 //   wasm_render.cpp  NativeRenderBuffers
 //   wasm_engine.cpp  meshFromEngineStreams (engine arrays with their attributes and submeshes)
 //   hedge_wasm.cpp   module-level functions and NativeMesh's registration
@@ -82,7 +82,7 @@ EMSCRIPTEN_BINDINGS(hedge) {
       .function("computeCornerNormals", &WasmMesh::compute_corner_normals)
       .function("fracture", &WasmMesh::fracture)
       .function("fractureSolid", &WasmMesh::fracture_solid)
-      .function("solidFractureRefusal", &WasmMesh::solid_fracture_refusal)
+      .function("solidFractureCheck", &WasmMesh::solid_fracture_check)
       .function("toArrays", &WasmMesh::to_arrays)
       .function("toFile", &WasmMesh::to_file)
       .function("memoryBytes", &WasmMesh::memory_bytes);

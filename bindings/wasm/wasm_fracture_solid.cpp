@@ -1,5 +1,6 @@
-// NativeMesh::fracture_solid and solid_fracture_refusal (the JS API's Mesh.fractureSolid and
-// Mesh.solidFractureRefusal, see wasm_mesh.h), through the mesh's picking tree.
+// NativeMesh::fracture_solid and solid_fracture_check (the JS API's Mesh.fractureSolid,
+// Mesh.solidFractureRefusal and Mesh.solidFractureRefusalCode, see wasm_mesh.h), through the mesh's
+// picking tree.
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "binding/names.h"
 #include "hedge/algorithms/fracture_solid.h"
 #include "hedge/core/export.h"
 #include "hedge/error.h"
@@ -117,11 +119,15 @@ val WasmMesh::fracture_solid(val impact, const std::string& preset, val custom, 
   });
 }
 
-std::string WasmMesh::solid_fracture_refusal(val impact, const std::string& preset, val custom, val options) {
+val WasmMesh::solid_fracture_check(val impact, const std::string& preset, val custom, val options) {
   return guarded([&] {
     const Vec3 at = point_from_js(impact, "solidFractureRefusal: the impact");
     const SolidFractureOptions o = solid_options("solidFractureRefusal", preset, custom, options);
-    return hedge::solid_fracture_refusal(s_->mesh, at, o, &binding::picking_tree(*s_));
+    const SolidFractureCheck why = hedge::solid_fracture_check(s_->mesh, at, o, &binding::picking_tree(*s_));
+    val out = val::object();
+    out.set("code", std::string(binding::name(why.code)));
+    out.set("message", why.message);
+    return out;
   });
 }
 

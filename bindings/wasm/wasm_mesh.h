@@ -130,9 +130,11 @@ class WasmMesh {
   //! object), area), impactFace, impactPoint, radius, seconds: {locate, cells, clip, cap, assemble,
   //! perPiece, fracture (the whole call), pack}}. A refused strike leaves the mesh as it was.
   val fracture_solid(val impact, const std::string& preset, val custom, val options);
-  //! Why the mesh cannot be solid-fractured at `impact` with these options (as fracture_solid()),
-  //! or "" if it can; checks the broken region only, through the picking tree.
-  std::string solid_fracture_refusal(val impact, const std::string& preset, val custom, val options);
+  //! Why the mesh cannot be solid-fractured at `impact` with these options (as fracture_solid()):
+  //! {code, message}, code the refusal's name (binding::name(SolidRefusal): "none", "open",
+  //! "non_manifold", ...) and message "" when it can; checks the broken region only, through the
+  //! picking tree.
+  val solid_fracture_check(val impact, const std::string& preset, val custom, val options);
 
  private:
   std::shared_ptr<MeshState> s_;

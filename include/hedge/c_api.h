@@ -882,16 +882,46 @@ typedef struct hedge_solid_fracture_summary {
  *  hulls on and inner_submesh -1 (automatic). An unknown preset: HEDGE_ERROR_INVALID_ARGUMENT. */
 HEDGE_API hedge_status hedge_solid_fracture_options_default(int32_t preset,
                                                             hedge_solid_fracture_options* out_options);
+/** Why a strike cannot be a solid fracture, as a code to check without comparing text
+ *  (hedge_solid_fracture_refusal_code(); hedge::SolidRefusal in order). A code keeps its value in
+ *  every later release; new refusals take new values. The C# binding names them SolidRefusal, the
+ *  JS and Python APIs by the lower-case names ("open", "non_manifold", ...).
+ *
+ *  "auto", one rule in every binding and the CLI: a strike refused for the shape of the input,
+ *  HEDGE_SOLID_REFUSAL_OPEN or HEDGE_SOLID_REFUSAL_NON_MANIFOLD, falls back to surface fracture
+ *  (hedge_mesh_fracture(), which breaks such meshes); any other refusal is reported as an error. */
+typedef int32_t hedge_solid_refusal;
+
+enum {
+  HEDGE_SOLID_REFUSAL_NONE = 0,         /**< not refused */
+  HEDGE_SOLID_REFUSAL_OPEN = 1,         /**< the mesh is open (anywhere, or near the impact) */
+  HEDGE_SOLID_REFUSAL_NON_MANIFOLD = 2, /**< a vertex near the impact joins several fans of faces */
+  HEDGE_SOLID_REFUSAL_BAD_OPTION = 3,   /**< an illegal option or material */
+  HEDGE_SOLID_REFUSAL_BAD_IMPACT = 4,   /**< the impact is not finite */
+  HEDGE_SOLID_REFUSAL_OFF_SURFACE = 5,  /**< no face within the tolerance of the impact */
+  HEDGE_SOLID_REFUSAL_NO_FACE = 6,      /**< the mesh has no face */
+  HEDGE_SOLID_REFUSAL_BAD_RADIUS = 7,   /**< the break radius is not positive (a mesh of zero size) */
+  HEDGE_SOLID_REFUSAL_FOREIGN_TREE = 8, /**< (C++ only: a FaceBvh of another mesh) */
+  /** How many codes there are (one past the largest). */
+  HEDGE_SOLID_REFUSAL_COUNT = 9
+};
+
 /** Why the mesh cannot be solid-fractured at the impact (x, y, z) with these options (NULL: the
  *  stone preset), as a text with its NUL, or "" when it can: a non-finite impact, no face within
  *  the tolerance, a mesh open anywhere or non-manifold near the impact, or an illegal option. It
  *  checks through the mesh's picking tree, which keeps whether the mesh is closed until the mesh
- *  changes, and changes nothing: a caller that wants
- *  "auto" strikes with hedge_mesh_fracture() where this answers. *out_size receives the bytes
- *  needed; a smaller buffer: HEDGE_ERROR_BUFFER_TOO_SMALL. */
+ *  changes, and changes nothing. hedge_solid_fracture_refusal_code() gives the same refusal as a
+ *  code, for "auto" (see hedge_solid_refusal). *out_size receives the bytes needed; a smaller
+ *  buffer: HEDGE_ERROR_BUFFER_TOO_SMALL. */
 HEDGE_API hedge_status hedge_solid_fracture_refusal(hedge_mesh* mesh, float x, float y, float z,
                                                     const hedge_solid_fracture_options* options, char* buffer,
                                                     uint32_t capacity, uint32_t* out_size);
+/** The code of hedge_solid_fracture_refusal()'s answer for the same arguments:
+ *  HEDGE_SOLID_REFUSAL_NONE when the strike can be made. "auto" strikes with hedge_mesh_fracture()
+ *  for HEDGE_SOLID_REFUSAL_OPEN and _NON_MANIFOLD, and reports any other code as an error. */
+HEDGE_API hedge_status hedge_solid_fracture_refusal_code(hedge_mesh* mesh, float x, float y, float z,
+                                                         const hedge_solid_fracture_options* options,
+                                                         hedge_solid_refusal* out_code);
 /** Breaks the closed mesh at the impact (x, y, z) into closed pieces (see
  *  hedge/algorithms/fracture_solid.h): the mesh becomes the remaining object, closed, its new cap
  *  faces marked inner. The pieces, their mass properties, hulls and bonds are in *out_result, even

@@ -68,29 +68,28 @@ struct Setup {
   double region_radius = 0;  // P's inscribed sphere
   FractureMaterial material;
   std::string refusal;
+  SolidRefusal code = SolidRefusal::none;
+
+  //! Refuses the strike: returns false, to be returned by setup().
+  bool refuse(SolidRefusal c, std::string why) {
+    code = c;
+    refusal = std::move(why);
+    return false;
+  }
 };
 
 std::string point_text(const Vec3& p) {
   return "(" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + ")";
 }
 
-void setup(SurfaceMesh& mesh, const Vec3& impact, const SolidFractureOptions& o, FaceBvh* bvh, Setup& s) {
-  if (std::string e = check_options(o); !e.empty()) {
-    s.refusal = e;
-    return;
-  }
-  if (!is_finite(impact)) {
-    s.refusal = "the impact " + point_text(impact) + " is not finite";
-    return;
-  }
-  if (mesh.n_faces() == 0) {
-    s.refusal = "the mesh has no face";
-    return;
-  }
-  if (bvh && bvh->mesh() != &mesh) {
-    s.refusal = "the FaceBvh was built over another mesh";
-    return;
-  }
+//! Fills `s`; false (s.code and s.refusal say why) if the strike cannot be made.
+bool setup(SurfaceMesh& mesh, const Vec3& impact, const SolidFractureOptions& o, FaceBvh* bvh, Setup& s) {
+  if (std::string e = check_options(o); !e.empty()) return s.refuse(SolidRefusal::bad_option, e);
+  if (!is_finite(impact))
+    return s.refuse(SolidRefusal::bad_impact, "the impact " + point_text(impact) + " is not finite");
+  if (mesh.n_faces() == 0) return s.refuse(SolidRefusal::no_face, "the mesh has no face");
+  if (bvh && bvh->mesh() != &mesh)
+    return s.refuse(SolidRefusal::foreign_tree, "the FaceBvh was built over another mesh");
   if (bvh) {
     bvh->update();
     s.tree = bvh;
@@ -99,29 +98,25 @@ void setup(SurfaceMesh& mesh, const Vec3& impact, const SolidFractureOptions& o,
     s.tree = &*s.own;
   }
   const std::optional<LocateResult> hit = s.tree->closest_point(impact);
-  if (!hit) {
-    s.refusal = "no face found near the impact";
-    return;
-  }
+  if (!hit) return s.refuse(SolidRefusal::off_surface, "no face found near the impact");
   s.hit = *hit;
   const double tolerance = o.tolerance > 0 ? o.tolerance : 1e-3 * longest_edge(mesh, hit->face);
   const double distance = std::sqrt(hit->squared_distance);
-  if (!(distance <= tolerance)) {
-    s.refusal = "the impact " + point_text(impact) + " is " + number(distance) + " from the nearest face (" +
-                std::to_string(hit->face.idx()) + "), beyond the tolerance " + number(tolerance) +
-                "; the nearest point of the surface is " + point_text(hit->point);
-    return;
-  }
+  if (!(distance <= tolerance))
+    return s.refuse(SolidRefusal::off_surface,
+                    "the impact " + point_text(impact) + " is " + number(distance) +
+                        " from the nearest face (" + std::to_string(hit->face.idx()) +
+                        "), beyond the tolerance " + number(tolerance) +
+                        "; the nearest point of the surface is " + point_text(hit->point));
   double radius = o.radius;
   if (radius == 0) {
     Vec3 lo, hi;
     s.tree->bounds(lo, hi);
     radius = o.radius_fraction * norm(to_double(hi) - to_double(lo));
   }
-  if (!(radius > 0) || !std::isfinite(radius)) {
-    s.refusal = "the break radius is " + number(radius) + ", not positive (a mesh of zero size?)";
-    return;
-  }
+  if (!(radius > 0) || !std::isfinite(radius))
+    return s.refuse(SolidRefusal::bad_radius,
+                    "the break radius is " + number(radius) + ", not positive (a mesh of zero size?)");
   s.radius = radius;
   s.material = fracture_material_at_radius(o.material, radius);
   s.region_radius = radius + 0.5 * s.material.rings.back().spacing;
@@ -129,43 +124,55 @@ void setup(SurfaceMesh& mesh, const Vec3& impact, const SolidFractureOptions& o,
   // pass over the half-edges, kept by the tree until the mesh changes (a strike keeps it closed).
   Halfedge open;
   if (!s.tree->mesh_closed(&open))
-    s.refusal = "the mesh is open: edge " + std::to_string(SurfaceMesh::edge(open).idx()) + " (vertices " +
-                std::to_string(mesh.from_vertex(open).idx()) + " and " +
-                std::to_string(mesh.to_vertex(open).idx()) +
-                ") has a face on one side only, and only a closed mesh encloses a solid";
+    return s.refuse(SolidRefusal::open,
+                    "the mesh is open: edge " + std::to_string(SurfaceMesh::edge(open).idx()) +
+                        " (vertices " + std::to_string(mesh.from_vertex(open).idx()) + " and " +
+                        std::to_string(mesh.to_vertex(open).idx()) +
+                        ") has a face on one side only, and only a closed mesh encloses a solid");
+  return true;
 }
 
 //! Why the faces about the region cannot be broken as a solid: a boundary edge or a non-manifold
-//! vertex among them, or empty. O(region).
-std::string check_closed(const SurfaceMesh& mesh, const std::vector<Face>& faces) {
+//! vertex among them, or none. O(region).
+SolidFractureCheck check_closed(const SurfaceMesh& mesh, const std::vector<Face>& faces) {
   for (Face f : faces)
     for (Halfedge h : mesh.halfedges(f)) {
       if (mesh.is_boundary(SurfaceMesh::twin(h)))
-        return "the mesh is open near the impact: edge " + std::to_string(SurfaceMesh::edge(h).idx()) +
-               " (vertices " + std::to_string(mesh.from_vertex(h).idx()) + " and " +
-               std::to_string(mesh.to_vertex(h).idx()) + ") has a face on one side only";
+        return {SolidRefusal::open,
+                "the mesh is open near the impact: edge " + std::to_string(SurfaceMesh::edge(h).idx()) +
+                    " (vertices " + std::to_string(mesh.from_vertex(h).idx()) + " and " +
+                    std::to_string(mesh.to_vertex(h).idx()) + ") has a face on one side only"};
       if (!mesh.is_manifold(mesh.to_vertex(h)))
-        return "the mesh is not manifold near the impact: vertex " + std::to_string(mesh.to_vertex(h).idx()) +
-               " joins several fans of faces";
+        return {SolidRefusal::non_manifold, "the mesh is not manifold near the impact: vertex " +
+                                                std::to_string(mesh.to_vertex(h).idx()) +
+                                                " joins several fans of faces"};
     }
   return {};
 }
 
 }  // namespace
 
-std::string solid_fracture_refusal(SurfaceMesh& mesh, const Vec3& impact, const SolidFractureOptions& options,
-                                   FaceBvh* bvh) {
+bool solid_refusal_falls_back(SolidRefusal code) noexcept {
+  return code == SolidRefusal::open || code == SolidRefusal::non_manifold;
+}
+
+SolidFractureCheck solid_fracture_check(SurfaceMesh& mesh, const Vec3& impact,
+                                        const SolidFractureOptions& options, FaceBvh* bvh) {
   Setup s;
   try {
-    setup(mesh, impact, options, bvh, s);
+    if (!setup(mesh, impact, options, bvh, s)) return {s.code, s.refusal};
   } catch (const InvalidInputError& e) {
-    return e.what();
+    return {SolidRefusal::bad_option, e.what()};
   }
-  if (!s.refusal.empty()) return s.refusal;
   std::vector<Face> faces;
   const StrikeInput in{mesh, *s.tree, to_double(s.hit.point), s.region_radius, s.material, options};
   region_faces(in, faces);
   return check_closed(mesh, faces);
+}
+
+std::string solid_fracture_refusal(SurfaceMesh& mesh, const Vec3& impact, const SolidFractureOptions& options,
+                                   FaceBvh* bvh) {
+  return solid_fracture_check(mesh, impact, options, bvh).message;
 }
 
 SolidFractureResult fracture_solid(SurfaceMesh& mesh, const Vec3& impact, const SolidFractureOptions& o,
@@ -173,8 +180,7 @@ SolidFractureResult fracture_solid(SurfaceMesh& mesh, const Vec3& impact, const 
   SolidFractureResult result;
   Clock::time_point t = Clock::now();
   Setup s;
-  setup(mesh, impact, o, bvh, s);
-  if (!s.refusal.empty()) throw InvalidInputError("fracture_solid: " + s.refusal);
+  if (!setup(mesh, impact, o, bvh, s)) throw InvalidInputError("fracture_solid: " + s.refusal);
   if (mesh.face_properties().find_base(kSubmeshProperty) &&
       !mesh.get_face_property<std::int32_t>(kSubmeshProperty))
     throw InvalidInputError(std::string("fracture_solid: the face property \"") + kSubmeshProperty +
@@ -192,8 +198,8 @@ SolidFractureResult fracture_solid(SurfaceMesh& mesh, const Vec3& impact, const 
   // The region's faces, checked closed before anything else.
   std::vector<Face> faces;
   region_faces(in, faces);
-  if (std::string why = check_closed(mesh, faces); !why.empty())
-    throw InvalidInputError("fracture_solid: " + why);
+  if (SolidFractureCheck why = check_closed(mesh, faces); why.code != SolidRefusal::none)
+    throw InvalidInputError("fracture_solid: " + why.message);
 
   Strike strike;
   bool made = false;

@@ -142,4 +142,30 @@ const char* name(DecimateStop value) {
 
 std::int32_t constant(DecimateStop value) { return static_cast<std::int32_t>(value); }
 
+const char* name(SolidRefusal value) {
+  switch (value) {
+    case SolidRefusal::none:
+      return "none";
+    case SolidRefusal::open:
+      return "open";
+    case SolidRefusal::non_manifold:
+      return "non_manifold";
+    case SolidRefusal::bad_option:
+      return "bad_option";
+    case SolidRefusal::bad_impact:
+      return "bad_impact";
+    case SolidRefusal::off_surface:
+      return "off_surface";
+    case SolidRefusal::no_face:
+      return "no_face";
+    case SolidRefusal::bad_radius:
+      return "bad_radius";
+    case SolidRefusal::foreign_tree:
+      return "foreign_tree";
+  }
+  return "unknown";
+}
+
+std::int32_t constant(SolidRefusal value) { return static_cast<std::int32_t>(value); }
+
 }  // namespace hedge::binding

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "hedge/algorithms/decimate.h"
+#include "hedge/algorithms/fracture_solid.h"
 #include "hedge/algorithms/normals.h"
 #include "hedge/algorithms/reorder.h"
 #include "hedge/algorithms/smooth.h"
@@ -46,6 +47,13 @@ const char* name(Ordering value);
 const char* name(DecimateStop value);
 //! The C ABI's HEDGE_DECIMATE_STOP_* constant of the value (its position in DecimateStop).
 std::int32_t constant(DecimateStop value);
+
+//! Why a strike cannot be a solid fracture, as every binding says it: "none", "open",
+//! "non_manifold", "bad_option", "bad_impact", "off_surface", "no_face", "bad_radius",
+//! "foreign_tree" (the enumerators' names). A switch without a default, as name(DecimateStop).
+const char* name(SolidRefusal value);
+//! The C ABI's HEDGE_SOLID_REFUSAL_* constant of the value (its position in SolidRefusal).
+std::int32_t constant(SolidRefusal value);
 
 //! Every accepted spelling (names first, then aliases), for a command line's list of choices.
 std::vector<std::string> subdivision_spellings();

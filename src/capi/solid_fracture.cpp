@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "binding/names.h"
 #include "capi_internal.h"
 #include "hedge/algorithms/fracture_solid.h"
 
@@ -14,6 +15,17 @@ using namespace hedge;
 using namespace hedge::capi;
 
 namespace {
+
+// The C ABI's refusal codes are SolidRefusal's positions (binding::constant()).
+static_assert(HEDGE_SOLID_REFUSAL_OPEN == static_cast<int>(SolidRefusal::open) &&
+                  HEDGE_SOLID_REFUSAL_NON_MANIFOLD == static_cast<int>(SolidRefusal::non_manifold) &&
+                  HEDGE_SOLID_REFUSAL_BAD_OPTION == static_cast<int>(SolidRefusal::bad_option) &&
+                  HEDGE_SOLID_REFUSAL_BAD_IMPACT == static_cast<int>(SolidRefusal::bad_impact) &&
+                  HEDGE_SOLID_REFUSAL_OFF_SURFACE == static_cast<int>(SolidRefusal::off_surface) &&
+                  HEDGE_SOLID_REFUSAL_NO_FACE == static_cast<int>(SolidRefusal::no_face) &&
+                  HEDGE_SOLID_REFUSAL_BAD_RADIUS == static_cast<int>(SolidRefusal::bad_radius) &&
+                  HEDGE_SOLID_REFUSAL_COUNT == static_cast<int>(SolidRefusal::foreign_tree) + 1,
+              "c_api.h's HEDGE_SOLID_REFUSAL_* and SolidRefusal differ");
 
 SolidFractureOptions to_solid_options(const hedge_solid_fracture_options& o) {
   if (o.ring_count > HEDGE_FRACTURE_MAX_RINGS)
@@ -106,6 +118,23 @@ hedge_status hedge_solid_fracture_refusal(hedge_mesh* mesh, float x, float y, fl
       why = e.message;  // an option out of range is a reason too
     }
     copy_string(why, buffer, capacity, out_size);
+  });
+}
+
+hedge_status hedge_solid_fracture_refusal_code(hedge_mesh* mesh, float x, float y, float z,
+                                               const hedge_solid_fracture_options* options,
+                                               hedge_solid_refusal* out_code) {
+  return guard([&] {
+    auto object = find_mesh(mesh);
+    hedge_solid_refusal& code = need(out_code, "out_code");
+    const hedge_solid_fracture_options o = options_or_stone(options);
+    SolidRefusal why = SolidRefusal::bad_option;  // an option out of range is a reason too
+    try {
+      const SolidFractureOptions s = to_solid_options(o);
+      why = solid_fracture_check(object->mesh, {x, y, z}, s, &picking_tree(*object)).code;
+    } catch (const binding::BindingError&) {
+    }
+    code = binding::constant(why);
   });
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -131,6 +132,37 @@ TEST(FractureSolid, OpenMeshNearTheImpactIsRefusedNamingAnEdge) {
   EXPECT_NE(solid_fracture_refusal(m, {0.5f, 0.5f, 1.0f}, {.density = -1}).find("density"),
             std::string::npos);
   EXPECT_NE(solid_fracture_refusal(m, {0.5f, 0.5f, 9.0f}).find("beyond the tolerance"), std::string::npos);
+}
+
+// Each refusal has its code, and "auto" falls back for the input's shape only.
+TEST(FractureSolid, RefusalsHaveCodesAndOnlyShapeFallsBack) {
+  IndexedMesh open = test::cube();
+  open.indices.resize(open.indices.size() - 4);  // no face on x = 0
+  open.face_sizes.pop_back();
+  SurfaceMesh m = build(open);
+  const SolidFractureCheck c = solid_fracture_check(m, {0.5f, 0.5f, 1.0f}, {.radius = 0.4});
+  EXPECT_EQ(c.code, SolidRefusal::open);
+  EXPECT_EQ(c.message, solid_fracture_refusal(m, {0.5f, 0.5f, 1.0f}, {.radius = 0.4}));
+  EXPECT_TRUE(solid_refusal_falls_back(c.code));
+  EXPECT_EQ(solid_fracture_check(m, {0.5f, 0.5f, 1.0f}, {.density = -1}).code, SolidRefusal::bad_option);
+  EXPECT_EQ(solid_fracture_check(m, {0.5f, 0.5f, 9.0f}).code, SolidRefusal::off_surface);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_EQ(solid_fracture_check(m, {nan, 0.5f, 1.0f}).code, SolidRefusal::bad_impact);
+  SurfaceMesh empty;
+  EXPECT_EQ(solid_fracture_check(empty, {0, 0, 0}).code, SolidRefusal::no_face);
+  SurfaceMesh other = build(test::cube());
+  FaceBvh tree(other);
+  EXPECT_EQ(solid_fracture_check(m, {0.5f, 0.5f, 1.0f}, {}, &tree).code, SolidRefusal::foreign_tree);
+  const SolidFractureCheck closed = solid_fracture_check(other, {0.5f, 0.5f, 1.0f}, {.radius = 0.4}, &tree);
+  EXPECT_EQ(closed.code, SolidRefusal::none);
+  EXPECT_EQ(closed.message, "");
+  for (const SolidRefusal r :
+       {SolidRefusal::none, SolidRefusal::bad_option, SolidRefusal::bad_impact, SolidRefusal::off_surface,
+        SolidRefusal::no_face, SolidRefusal::bad_radius, SolidRefusal::foreign_tree})
+    EXPECT_FALSE(solid_refusal_falls_back(r)) << static_cast<int>(r);
+  EXPECT_TRUE(solid_refusal_falls_back(SolidRefusal::non_manifold));
+  EXPECT_TRUE(m.validate().empty());
+  EXPECT_TRUE(other.validate().empty());
 }
 
 TEST(FractureSolid, AHoleFarFromTheRegionRefusesToo) {

@@ -70,6 +70,25 @@ TEST(BindingNames, DecimateStopsAllHaveNamesAndConstants) {
   EXPECT_EQ(constant(DecimateStop::no_legal_collapse), HEDGE_DECIMATE_NO_LEGAL_COLLAPSE);
 }
 
+// Every SolidRefusal has a name and its C ABI constant, as DecimateStop's.
+TEST(BindingNames, SolidRefusalsAllHaveNamesAndConstants) {
+  const SolidRefusal all[] = {SolidRefusal::none,       SolidRefusal::open,       SolidRefusal::non_manifold,
+                              SolidRefusal::bad_option, SolidRefusal::bad_impact, SolidRefusal::off_surface,
+                              SolidRefusal::no_face,    SolidRefusal::bad_radius, SolidRefusal::foreign_tree};
+  EXPECT_STREQ(name(SolidRefusal::open), "open");
+  EXPECT_STREQ(name(SolidRefusal::non_manifold), "non_manifold");
+  EXPECT_STREQ(name(SolidRefusal::off_surface), "off_surface");
+  for (const SolidRefusal a : all) {
+    EXPECT_STRNE(name(a), "unknown");
+    for (const SolidRefusal b : all)
+      if (a != b) EXPECT_STRNE(name(a), name(b));
+  }
+  EXPECT_EQ(constant(SolidRefusal::none), HEDGE_SOLID_REFUSAL_NONE);
+  EXPECT_EQ(constant(SolidRefusal::open), HEDGE_SOLID_REFUSAL_OPEN);
+  EXPECT_EQ(constant(SolidRefusal::non_manifold), HEDGE_SOLID_REFUSAL_NON_MANIFOLD);
+  EXPECT_EQ(constant(SolidRefusal::foreign_tree) + 1, HEDGE_SOLID_REFUSAL_COUNT);
+}
+
 TEST(BindingNames, ThreadCounts) {
   EXPECT_EQ(thread_count(0, "threads"), max_threads());  // 0: every core
   EXPECT_EQ(thread_count(3, "threads"), 3u);

@@ -167,7 +167,8 @@ static void test_spot(void) {
 }
 
 /* A refused strike leaves the mesh as it was: same counts, same positions. */
-static void check_refused(hedge_mesh* mesh, float x, float y, float z, double radius, const char* reason) {
+static void check_refused(hedge_mesh* mesh, float x, float y, float z, double radius, const char* reason,
+                          hedge_solid_refusal code) {
   const hedge_counts before = counts_of(mesh);
   const uint64_t n = 3 * (uint64_t)before.vertex_slots;
   float* p0 = malloc(sizeof(float) * n);
@@ -180,6 +181,9 @@ static void check_refused(hedge_mesh* mesh, float x, float y, float z, double ra
   uint32_t size = 0;
   CHECK_OK(hedge_solid_fracture_refusal(mesh, x, y, z, &o, why, sizeof why, &size));
   CHECK(size > 1 && strstr(why, reason) != NULL);
+  hedge_solid_refusal got = -1;
+  CHECK_OK(hedge_solid_fracture_refusal_code(mesh, x, y, z, &o, &got));
+  CHECK(got == code);
   hedge_solid_fracture* result = (hedge_solid_fracture*)1;
   CHECK_STATUS(hedge_mesh_fracture_solid(mesh, x, y, z, &o, &result), HEDGE_ERROR_INVALID_ARGUMENT);
   CHECK(result == NULL);
@@ -195,12 +199,17 @@ static void check_refused(hedge_mesh* mesh, float x, float y, float z, double ra
 static void test_refusals(void) {
   /* The plate's boundary lies within the broken region (the check looks no farther). */
   hedge_mesh* plate = make_plate(4);
-  check_refused(plate, 2, 2, 0, 3, "the mesh is open: edge");
+  check_refused(plate, 2, 2, 0, 3, "the mesh is open: edge", HEDGE_SOLID_REFUSAL_OPEN);
+  /* Off the surface: a refusal "auto" reports, whatever the mesh's shape. */
+  check_refused(plate, 2, 2, 5, 3, "beyond the tolerance", HEDGE_SOLID_REFUSAL_OFF_SURFACE);
   CHECK_OK(hedge_mesh_destroy(plate));
   hedge_mesh* spot = read_spot();
   float at[3];
   spot_top(spot, at);
-  check_refused(spot, NAN, at[1], at[2], 0.3, "finite");
+  check_refused(spot, NAN, at[1], at[2], 0.3, "finite", HEDGE_SOLID_REFUSAL_BAD_IMPACT);
+  hedge_solid_refusal code = -1;
+  CHECK_OK(hedge_solid_fracture_refusal_code(spot, at[0], at[1], at[2], NULL, &code));
+  CHECK(code == HEDGE_SOLID_REFUSAL_NONE); /* closed: no fallback */
   /* An option out of range is a reason too, naming the field. */
   hedge_solid_fracture_options o = stone();
   o.density = -1;
@@ -208,6 +217,15 @@ static void test_refusals(void) {
   uint32_t size = 0;
   CHECK_OK(hedge_solid_fracture_refusal(spot, at[0], at[1], at[2], &o, why, sizeof why, &size));
   CHECK(strstr(why, "density") != NULL);
+  CHECK_OK(hedge_solid_fracture_refusal_code(spot, at[0], at[1], at[2], &o, &code));
+  CHECK(code == HEDGE_SOLID_REFUSAL_BAD_OPTION);
+  o.ring_count = HEDGE_FRACTURE_MAX_RINGS + 1; /* the C ABI's own check of the options */
+  CHECK_OK(hedge_solid_fracture_refusal_code(spot, at[0], at[1], at[2], &o, &code));
+  CHECK(code == HEDGE_SOLID_REFUSAL_BAD_OPTION);
+  CHECK_STATUS(hedge_solid_fracture_refusal_code(spot, at[0], at[1], at[2], NULL, NULL),
+               HEDGE_ERROR_INVALID_ARGUMENT);
+  CHECK_STATUS(hedge_solid_fracture_refusal_code(NULL, at[0], at[1], at[2], NULL, &code),
+               HEDGE_ERROR_BAD_HANDLE);
   CHECK_STATUS(hedge_solid_fracture_refusal(spot, at[0], at[1], at[2], &o, why, 1, &size),
                HEDGE_ERROR_BUFFER_TOO_SMALL);
   o = stone();

@@ -175,6 +175,19 @@ TEST_F(HedgeCli, SolidFractureOfAnOpenMeshIsRefusedOrFallsBack) {
   EXPECT_EQ(json::parse(read_text(tmp("spot") / "summary.json"))["kind"], "solid");
 }
 
+// "auto" falls back for the input's shape only: an impact off the surface of the open three_peaks is
+// an error of the solid fracture, not a surface fracture that fails in turn.
+TEST_F(HedgeCli, SolidFractureAutoReportsARefusalThatIsNotAboutShape) {
+  const std::vector<std::string> args = {
+      "fracture", data("three_peaks.off"), "--impact", "0.1,0.2,50", "--kind", "auto",
+      "-o",       tmp("out").string()};
+  expect_data_error(args, "three_peaks.off");
+  const Result r = run(args);
+  EXPECT_NE(r.err.find("cannot be broken as a solid: the impact"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("surface fracture instead"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(tmp("out")));
+}
+
 TEST_F(HedgeCli, SolidFractureOptionsAreChecked) {
   std::vector<std::string> a = strike(tmp("x"), "stone", "1");
   a.insert(a.end(), {"--kind", "auto"});  // --solid and --kind together

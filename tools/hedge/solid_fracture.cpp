@@ -3,7 +3,8 @@
 // -o DIR [--format obj|glb]: break a closed mesh into closed pieces and write the remaining object,
 // one file per piece (OBJ with usemtl runs, or glTF binary with a primitive and material per submesh:
 // the caps' inner material) and summary.json (with the bond graph) into DIR. "auto" falls back to surface
-// fracture where solid_fracture_refusal() refuses.
+// fracture where solid fracture is refused for the input's shape (solid_refusal_falls_back(): open or
+// non-manifold); any other refusal is an error.
 #include "solid_fracture.h"
 
 #include <chrono>
@@ -115,12 +116,15 @@ int run_solid_fracture(const SolidFractureCliOptions& s, const SolidFractureCliI
   const json input_volume = volume_or_null(mesh);
   const auto start = std::chrono::steady_clock::now();  // the tree's build included, as surface fracture's
   FaceBvh bvh(mesh);
-  const std::string why = solid_fracture_refusal(mesh, impact, f, &bvh);
-  if (!why.empty()) {
-    if (s.kind != "auto" || s.solid)
-      throw InvalidInputError(in.input + ": cannot be broken as a solid: " + why);
-    std::fprintf(stderr, "hedge: solid fracture refused (%s); surface fracture instead\n", why.c_str());
-    return surface(why);
+  const SolidFractureCheck why = solid_fracture_check(mesh, impact, f, &bvh);
+  if (why.code != SolidRefusal::none) {
+    // "auto" falls back for the input's shape only (solid_refusal_falls_back()); a bad impact or
+    // option is an error, as with --kind solid.
+    if (s.kind != "auto" || s.solid || !solid_refusal_falls_back(why.code))
+      throw InvalidInputError(in.input + ": cannot be broken as a solid: " + why.message);
+    std::fprintf(stderr, "hedge: solid fracture refused (%s); surface fracture instead\n",
+                 why.message.c_str());
+    return surface(why.message);
   }
   SolidFractureResult r = fracture_solid(mesh, impact, f, &bvh);
   const double ms = ms_since(start);
@@ -183,10 +187,12 @@ int run_solid_fracture(const SolidFractureCliOptions& s, const SolidFractureCliI
 
 void add_solid_fracture_arguments(CLI::App& app, SolidFractureCliOptions& o) {
   CLI::Option* kind =
-      app.add_option("--kind", o.kind,
-                     "surface: shards of the surface; solid: closed pieces of a closed mesh, their cut faces "
-                     "capped (f:inner, f:submesh), and the bond graph in summary.json; auto: solid where "
-                     "the mesh allows it (closed), else surface, saying why on stderr")
+      app.add_option(
+             "--kind", o.kind,
+             "surface: shards of the surface; solid: closed pieces of a closed mesh, their cut faces "
+             "capped (f:inner, f:submesh), and the bond graph in summary.json; auto: solid where "
+             "the mesh allows it, else surface where it is open or non-manifold, saying why on stderr (a "
+             "bad impact or option is an error)")
           ->check(CLI::IsMember({"surface", "solid", "auto"}))
           ->capture_default_str();
   app.add_flag("--solid", o.solid, "The same as --kind solid")->excludes(kind);

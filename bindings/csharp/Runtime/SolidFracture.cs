@@ -206,8 +206,8 @@ namespace Hedge
         /// <summary>Why this mesh cannot be broken as a solid at the impact with these options, or "" when it can: a
         /// non-finite impact, no face within the tolerance, a mesh that is open (anywhere) or non-manifold near the impact, or an option
         /// out of range. Checks through the picking tree, which keeps whether the mesh is closed until it changes;
-        /// changes nothing. For "auto": break
-        /// with <see cref="Fracture"/> where this answers.</summary>
+        /// changes nothing. <see cref="SolidFractureRefusalCode"/> gives it as a code, and
+        /// <see cref="FractureSolidOrSurface"/> is "auto".</summary>
         public string SolidFractureRefusal(Vec3 impact, SolidFractureOptions options)
         {
             CheckRings(options);

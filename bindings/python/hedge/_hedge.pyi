@@ -196,6 +196,18 @@ class Mesh:
         density: float = 1.0,
         tolerance: float = 0.0,
     ) -> Optional[str]: ...
+    def solid_fracture_refusal_code(
+        self,
+        point: Sequence[float],
+        material: Union[str, dict[str, Any]] = "stone",
+        *,
+        seed: int = 0,
+        radius: float = 0.0,
+        radius_fraction: float = 0.25,
+        inner_submesh: int = -1,
+        density: float = 1.0,
+        tolerance: float = 0.0,
+    ) -> str: ...
 
 def render(
     mesh: Mesh,

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "binding/names.h"
 #include "hedge/algorithms/fracture_solid.h"
 #include "hedge/error.h"
 #include "py_args.h"
@@ -62,10 +63,12 @@ std::shared_ptr<State> state_of(SurfaceMesh&& mesh) {
   return state;
 }
 
-//! Whether a refusal is one "auto" breaks by surface fracture instead: the mesh open or
-//! non-manifold, not a bad impact or option.
-bool surface_fracture_breaks(const std::string& why) {
-  return why.rfind("the mesh is open", 0) == 0 || why.rfind("the mesh is not manifold", 0) == 0;
+//! solid_fracture_check() through the mesh's picking tree, without the GIL. Building or updating
+//! the tree changes no element: numpy views may stay.
+SolidFractureCheck check(const Mesh& self, const Vec3& impact, const SolidFractureOptions& options) {
+  const auto use = self.use();
+  py::gil_scoped_release unlocked;
+  return hedge::solid_fracture_check(use->mesh, impact, options, &binding::picking_tree(*use));
 }
 
 py::tuple fracture_solid(const Mesh& self, const py::object& point, const py::object& material,
@@ -80,15 +83,10 @@ py::tuple fracture_solid(const Mesh& self, const py::object& point, const py::ob
   const SolidFractureOptions options = solid_options(
       "fracture_solid", material, seed, radius, radius_fraction, inner_submesh, density, tolerance, hulls);
   if (kind == "auto") {
-    // Only an open or non-manifold mesh goes to surface fracture; a bad option or impact is an
-    // error, as it is with kind 'solid'.
-    std::string why;
-    {
-      const auto use = self.use();
-      py::gil_scoped_release unlocked;
-      why = hedge::solid_fracture_refusal(use->mesh, impact, options, &binding::picking_tree(*use));
-    }
-    if (surface_fracture_breaks(why)) {
+    // Only the input's shape (open or non-manifold) sends a strike to surface fracture
+    // (solid_refusal_falls_back()); a bad option or impact is an error, as it is with kind 'solid'.
+    const SolidFractureCheck why = check(self, impact, options);
+    if (solid_refusal_falls_back(why.code)) {
       py::dict kwargs;
       kwargs["seed"] = seed;
       kwargs["break_radius"] = radius;
@@ -98,7 +96,7 @@ py::tuple fracture_solid(const Mesh& self, const py::object& point, const py::ob
       if (!surface.is_none())
         for (const auto item : surface.cast<py::dict>()) kwargs[item.first] = item.second;
       const py::object shards = py::cast(self).attr("fracture")(point, material, **kwargs);
-      return py::make_tuple(shards, py::str(why));
+      return py::make_tuple(shards, py::str(why.message));
     }
   }
   SolidFractureResult result;
@@ -131,15 +129,19 @@ py::object solid_fracture_refusal(const Mesh& self, const py::object& point, con
   const SolidFractureOptions options =
       solid_options("solid_fracture_refusal", material, seed, radius, radius_fraction, inner_submesh, density,
                     tolerance, false);
-  std::string why;
-  {
-    const auto use = self.use();
-    // Building or updating the picking tree changes no element: numpy views may stay.
-    py::gil_scoped_release unlocked;
-    why = hedge::solid_fracture_refusal(use->mesh, impact, options, &binding::picking_tree(*use));
-  }
-  if (why.empty()) return py::none();
-  return py::str(why);
+  const SolidFractureCheck why = check(self, impact, options);
+  if (why.code == SolidRefusal::none) return py::none();
+  return py::str(why.message);
+}
+
+std::string solid_fracture_refusal_code(const Mesh& self, const py::object& point, const py::object& material,
+                                        const py::object& seed, double radius, double radius_fraction,
+                                        std::int32_t inner_submesh, double density, double tolerance) {
+  const Vec3 impact = point3(point, "solid_fracture_refusal_code", "point");
+  const SolidFractureOptions options =
+      solid_options("solid_fracture_refusal_code", material, seed, radius, radius_fraction, inner_submesh,
+                    density, tolerance, false);
+  return binding::name(check(self, impact, options).code);
 }
 
 }  // namespace
@@ -189,7 +191,8 @@ void bind_fracture_solid(py::module_& m, py::class_<Mesh>& mesh) {
            "and seed give the same pieces. The caps get inner_submesh in 'f:submesh' (-1: one more "
            "than the largest) and UVs by planar projection in model units. density: for the mass "
            "properties. hulls: compute each piece's convex hull. kind: 'solid', or 'auto' to break an "
-           "open or non-manifold mesh by surface fracture instead: the result then is (shards, why), "
+           "open or non-manifold mesh by surface fracture instead (solid_fracture_refusal_code() "
+           "'open' or 'non_manifold'; any other refusal raises): the result then is (shards, why), "
            "fracture()'s list of Shard and the refusal (a str) that sent it there in place of the "
            "bonds; surface: a dict of more fracture() options for that case, e.g. {'thickness': 0.1} "
            "(a bad option or point raises as with 'solid'). Located through the mesh's picking "
@@ -207,6 +210,14 @@ void bind_fracture_solid(py::module_& m, py::class_<Mesh>& mesh) {
            "tolerance of point, an illegal option. Checks only the faces of the broken region, so it "
            "costs the region. Use it to choose between fracture_solid() and fracture() (surface "
            "fracture, which breaks open meshes). Releases the GIL.");
+  mesh.def("solid_fracture_refusal_code", &solid_fracture_refusal_code, py::arg("point"),
+           py::arg("material") = "stone", py::kw_only(), py::arg("seed") = 0, py::arg("radius") = 0.0,
+           py::arg("radius_fraction") = 0.25, py::arg("inner_submesh") = -1, py::arg("density") = 1.0,
+           py::arg("tolerance") = 0.0,
+           "solid_fracture_refusal()'s answer as a code, the same in every binding: 'none' (no "
+           "refusal), 'open', 'non_manifold' (the input's shape: fracture_solid(kind='auto') breaks "
+           "these by surface fracture), or 'bad_option', 'bad_impact', 'off_surface', 'no_face', "
+           "'bad_radius' (errors with either kind). Releases the GIL.");
 }
 
 }  // namespace hedge::python

@@ -163,6 +163,22 @@ def test_kind_auto_breaks_an_open_mesh_by_surface_fracture_and_a_closed_one_as_a
     assert np.array_equal(before[0], after[0]) and np.array_equal(before[1], after[1])
 
 
+def test_kind_auto_falls_back_by_the_refusal_code_alone():
+    V, F = grid_arrays(10)
+    plate = hedge.Mesh.from_arrays(V, F)
+    assert plate.solid_fracture_refusal_code((5.2, 4.7, 0)) == "open"
+    # Off the surface of the open plate: not about its shape, so 'auto' raises the solid
+    # fracture's error instead of trying surface fracture.
+    assert plate.solid_fracture_refusal_code((5.2, 4.7, 3)) == "off_surface"
+    with pytest.raises(hedge.InvalidArgumentError, match="^fracture_solid: the impact"):
+        plate.fracture_solid((5.2, 4.7, 3), kind="auto")
+    assert plate.solid_fracture_refusal_code((5.2, 4.7, 0), density=0) == "bad_option"
+    mesh = spot()
+    assert mesh.solid_fracture_refusal_code(impact_on(mesh)) == "none"
+    assert_valid(plate)
+    assert_valid(mesh)
+
+
 @pytest.mark.parametrize(
     "point, options, message",
     [

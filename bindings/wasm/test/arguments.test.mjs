@@ -91,6 +91,8 @@ const meshCases = [
   ['solidFractureRefusal', [[0.5, 0.5, 0]], 0, 'impact', NOT_POINT.concat([undefined])],
   ['solidFractureRefusal', [[0.5, 0.5, 0], {}], 1, 'options', NOT_OPTIONS],
   ['solidFractureRefusal', [[0.5, 0.5, 0], {}], 1, 'options.seed', [{ seed: '4' }]],
+  ['solidFractureRefusalCode', [[0.5, 0.5, 0]], 0, 'impact', NOT_POINT.concat([undefined])],
+  ['solidFractureRefusalCode', [[0.5, 0.5, 0], {}], 1, 'options.seed', [{ seed: '4' }]],
   ['toArrays', [{}], 0, 'options', NOT_OPTIONS],
   ['toFile', ['m.obj'], 0, 'name', NOT_STRING],
   ['createRenderBuffers', [{}], 0, 'options', NOT_OPTIONS],

@@ -169,6 +169,7 @@ test('an open mesh is refused with a reason, unchanged; kind auto breaks it by s
   const before = plate.toArrays();
   const why = plate.solidFractureRefusal([1.2, 1.7, 0]);
   assert.match(why, /open|boundary/);
+  assert.equal(plate.solidFractureRefusalCode([1.2, 1.7, 0]), 'open');
   assert.throws(
     () => plate.fractureSolid([1.2, 1.7, 0]),
     (e) =>
@@ -188,10 +189,22 @@ test('an open mesh is refused with a reason, unchanged; kind auto breaks it by s
       e instanceof HedgeError && e.kind === 'invalid-argument' && /radius_fraction/.test(e.message),
   );
   assert.equal(plate.counts().faces, faces);
+  // So is any refusal that is not about the mesh's shape: the impact off the surface.
+  assert.equal(auto.refusalCode, 'open');
+  assert.equal(plate.solidFractureRefusalCode([1.2, 1.7, 3]), 'off_surface');
+  assert.throws(
+    () => plate.fractureSolid([1.2, 1.7, 3], { kind: 'auto' }),
+    (e) =>
+      e instanceof HedgeError &&
+      e.kind === 'invalid-argument' &&
+      /fracture_solid: the impact/.test(e.message),
+  );
+  assert.equal(plate.counts().faces, faces);
   auto.shards.forEach((s) => s.dispose());
   plate.dispose();
   // A closed mesh with 'auto' breaks solid.
   const mesh = spot();
+  assert.equal(mesh.solidFractureRefusalCode(impactOn(mesh)), 'none');
   const solid = mesh.fractureSolid(impactOn(mesh), { kind: 'auto', seed: 1 });
   assert.equal(solid.kind, 'solid');
   disposeAll(solid);
@@ -227,6 +240,8 @@ test('bad arguments throw invalid-argument naming the call, the mesh unchanged',
   invalid(() => mesh.fractureSolid([50, 50, 50]), /./);
   invalid(() => mesh.solidFractureRefusal(undefined), /solidFractureRefusal: impact/);
   assert.match(mesh.solidFractureRefusal(at, { density: -1 }), /density/);
+  assert.equal(mesh.solidFractureRefusalCode(at, { density: -1 }), 'bad_option');
+  invalid(() => mesh.solidFractureRefusalCode(undefined), /solidFractureRefusalCode: impact/);
   assert.deepEqual(mesh.toArrays(), before);
   mesh.dispose();
 });

@@ -144,16 +144,48 @@ struct SolidFractureResult {
   } seconds;
 };
 
-//! Why `mesh` cannot be solid-fractured at `impact`, or empty if it can: the impact is not finite,
-//! the mesh has no face, no face lies within the tolerance of the impact, the mesh is open
-//! anywhere (only a closed mesh encloses a solid: naming a boundary edge by its vertices), or it is
-//! non-manifold near the impact. Whether the mesh is closed is FaceBvh::mesh_closed(): one pass over
-//! the half-edges after the tree is built or the mesh changed, then kept (a solid strike keeps it
-//! closed, so repeated strikes cost the broken region only); the rest checks the faces whose boxes
-//! meet the box of the broken region (as fracture_solid() would with the same options). The
-//! bindings use it for "auto" (surface fracture where solid fracture is refused). With `bvh`
-//! (built over `mesh`, brought up to date) no tree is built. Options are checked as
-//! fracture_solid() does (an illegal one is named in the answer).
+//! Why a strike cannot be a solid fracture, as a code (solid_fracture_check()). The values are
+//! the C ABI's HEDGE_SOLID_REFUSAL_* constants, in order; a value keeps its number in later
+//! releases and new refusals take new values.
+enum class SolidRefusal : std::int32_t {
+  none,          //!< not refused
+  open,          //!< the mesh is open (a boundary edge anywhere, or near the impact)
+  non_manifold,  //!< a vertex near the impact joins several fans of faces
+  bad_option,    //!< an illegal option or material (the message names it)
+  bad_impact,    //!< the impact is not finite
+  off_surface,   //!< no face lies within the tolerance of the impact
+  no_face,       //!< the mesh has no face
+  bad_radius,    //!< the break radius came out not positive or not finite (a mesh of zero size)
+  foreign_tree,  //!< the FaceBvh passed was built over another mesh
+};
+
+//! The "auto" rule of every binding and the CLI: a strike refused for the shape of the input
+//! (SolidRefusal::open or non_manifold: a mesh that does not enclose a solid where it is struck)
+//! falls back to surface fracture (fracture.h), which breaks such meshes; any other refusal (a bad
+//! option or impact, an empty mesh) is reported as an error, as with solid fracture alone.
+bool solid_refusal_falls_back(SolidRefusal code) noexcept;
+
+//! A refusal: its code and the message naming what and where ("the mesh is open: edge 7 (vertices
+//! 3 and 4) has a face on one side only, ..."); none and "" when the strike can be made.
+struct SolidFractureCheck {
+  SolidRefusal code = SolidRefusal::none;
+  std::string message;
+};
+
+//! Why `mesh` cannot be solid-fractured at `impact`, or none if it can: the options are illegal,
+//! the impact is not finite, the mesh has no face, no face lies within the tolerance of the impact,
+//! the mesh is open anywhere (only a closed mesh encloses a solid: naming a boundary edge by its
+//! vertices), or it is non-manifold near the impact. Whether the mesh is closed is
+//! FaceBvh::mesh_closed(): one pass over the half-edges after the tree is built or the mesh
+//! changed, then kept (a solid strike keeps it closed, so repeated strikes cost the broken region
+//! only); the rest checks the faces whose boxes meet the box of the broken region (as
+//! fracture_solid() would with the same options). The bindings use it for "auto" (see
+//! solid_refusal_falls_back()). With `bvh` (built over `mesh`, brought up to date) no tree is
+//! built.
+SolidFractureCheck solid_fracture_check(SurfaceMesh& mesh, const Vec3& impact,
+                                        const SolidFractureOptions& options = {}, FaceBvh* bvh = nullptr);
+
+//! solid_fracture_check()'s message: empty if the strike can be made.
 std::string solid_fracture_refusal(SurfaceMesh& mesh, const Vec3& impact,
                                    const SolidFractureOptions& options = {}, FaceBvh* bvh = nullptr);
 

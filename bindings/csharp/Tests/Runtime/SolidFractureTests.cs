@@ -1,6 +1,7 @@
 // Solid fracture from C# (Runtime/SolidFracture.cs): spot struck breaks into closed pieces whose
 // volumes add up, their caps in the inner submesh, with the bond graph; the same strike gives the
-// same pieces; an open mesh and a NaN impact are refused with the mesh unchanged.
+// same pieces; an open mesh and a NaN impact are refused with the mesh unchanged, with their codes; "auto"
+// falls back to surface fracture for an open mesh only.
 using System;
 
 namespace Hedge.Tests
@@ -112,7 +113,50 @@ namespace Hedge.Tests
                 SolidFractureOptions bad = Stone(1);
                 bad.Density = -1;
                 Check.Contains(spot.SolidFractureRefusal(new Vec3(0, 0, 0), bad), "density");
+                Check.Equal(SolidRefusal.BadOption, spot.SolidFractureRefusalCode(new Vec3(0, 0, 0), bad));
+                Check.Equal(SolidRefusal.BadImpact, spot.SolidFractureRefusalCode(new Vec3(float.NaN, 0, 0), Stone(1)));
                 Check.Equal(before, spot.Geometry.Volume);
+                Check.Valid(spot);
+            }
+        }
+
+        // "auto" falls back to surface fracture for the mesh's shape only: the open plate breaks into shards, the
+        // closed spot into pieces, and an impact off the plate's surface is the solid fracture's error.
+        [Test]
+        static void AutoFallsBackForAnOpenMeshOnly()
+        {
+            FractureOptions surface = FractureOptions.Preset(FracturePreset.Glass).WithBreakRadius(1.5);
+            using (HalfEdgeMesh plate = Meshes.Plate(4))
+            {
+                SolidFractureOptions o = Stone(1).WithRadius(3);
+                Check.Equal(SolidRefusal.Open, plate.SolidFractureRefusalCode(new Vec3(2, 2, 0), o));
+                Check.True(SolidRefusals.FallsBackToSurface(SolidRefusal.Open), "open falls back");
+                Check.True(SolidRefusals.FallsBackToSurface(SolidRefusal.NonManifold), "non-manifold falls back");
+                Check.True(!SolidRefusals.FallsBackToSurface(SolidRefusal.OffSurface), "off the surface does not");
+                Check.True(!SolidRefusals.FallsBackToSurface(SolidRefusal.None), "none does not");
+                MeshCounts c = plate.Counts;
+                Check.Equal(SolidRefusal.OffSurface, plate.SolidFractureRefusalCode(new Vec3(2, 2, 50), o));
+                HedgeException e = Check.Throws(HedgeStatus.InvalidArgument,
+                                                () => plate.FractureSolidOrSurface(new Vec3(2, 2, 50), o, surface));
+                Check.Contains(e.Message, "fracture_solid: the impact");
+                Check.Equal(c.Faces, plate.Counts.Faces);
+                using (AutoFracture a = plate.FractureSolidOrSurface(new Vec3(2, 2, 0), o, surface))
+                {
+                    Check.Equal(SolidRefusal.Open, a.Refusal);
+                    Check.Contains(a.Why, "the mesh is open: edge");
+                    Check.True(a.Solid == null && a.Shards != null && a.Shards.Length > 0, "shards");
+                }
+                Check.Valid(plate);
+            }
+            using (HalfEdgeMesh spot = Spot())
+            {
+                Check.Equal(SolidRefusal.None, spot.SolidFractureRefusalCode(new Vec3(0, 0, 0), Stone(2)));
+                using (AutoFracture a = spot.FractureSolidOrSurface(new Vec3(0, 0, 0), Stone(2), surface))
+                {
+                    Check.Equal(SolidRefusal.None, a.Refusal);
+                    Check.Equal("", a.Why);
+                    Check.True(a.Shards == null && a.Solid != null && a.Solid.Pieces.Length > 0, "pieces");
+                }
                 Check.Valid(spot);
             }
         }
