@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "core_private/link_closed.h"
 #include "hedge/error.h"
 
 namespace hedge {
@@ -375,11 +376,10 @@ class Quickhull {
   std::vector<HorizonEdge> horizon_;
 };
 
-// The live faces are linked into a mesh directly, as their neighbours are known. The numbering is
-// the one build() gives the same triangles (faces in creation order; an edge made by the first
-// corner that crosses it, its other half-edge taken by the second; a vertex holds its last corner's
-// half-edge, a face the half-edge entering its first corner), without build()'s pairing and checks:
-// the hull is closed and manifold by construction (every horizon is one loop).
+// The live faces are linked into a mesh by the closed-set linker, given each corner's twin from
+// the faces' known neighbours, so that nothing searches for them: the numbering is the one build()
+// gives the same triangles (faces in creation order). The hull is closed and manifold by
+// construction (every horizon is one loop); the linker checks the twins and fans all the same.
 SurfaceMesh Quickhull::mesh(std::span<const Vec3> points, std::vector<std::uint32_t>& input_index) const {
   std::vector<std::uint32_t> rank(faces_.size(), kNone), index(points.size(), kNone);
   std::uint32_t n_faces = 0;
@@ -394,36 +394,31 @@ SurfaceMesh Quickhull::mesh(std::span<const Vec3> points, std::vector<std::uint3
       index[i] = static_cast<std::uint32_t>(input_index.size());
       input_index.push_back(i);
     }
-  SurfaceMesh m;
-  m.resize(input_index.size(), 3 * std::size_t(n_faces) / 2, n_faces);
-  for (std::uint32_t v = 0; v < input_index.size(); ++v) m.position(Vertex(v)) = points[input_index[v]];
-  std::vector<Index> he(3 * std::size_t(n_faces));  // face rank k's corner i -> its half-edge
-  Index n_edges = 0;
+  // Face rank k's corner i is corner 3 k + i; its twin is found from the side of the face made
+  // first, and set for both.
+  std::vector<std::uint32_t> corners(3 * std::size_t(n_faces)), twins(3 * std::size_t(n_faces), kNone);
   for (std::uint32_t f = 0; f < faces_.size(); ++f) {
     const std::uint32_t k = rank[f];
     if (k == kNone) continue;
     const Face_& face = faces_[f];
     for (std::size_t i = 0; i < 3; ++i) {
+      corners[3 * k + i] = index[face.v[i]];
       const std::uint32_t g = face.nb[i];
-      if (rank[g] > k) {  // the edge is new
-        he[3 * k + i] = 2 * n_edges++;
-        continue;
-      }
-      const Face_& other = faces_[g];  // it made the edge: it runs the other way there
+      if (rank[g] > k) continue;       // the later face sets it
+      const Face_& other = faces_[g];  // it runs the other way along the edge
       std::size_t j = 0;
       while (j < 3 && (other.v[j] != face.v[(i + 1) % 3] || other.v[(j + 1) % 3] != face.v[i])) ++j;
       if (j == 3) throw std::logic_error("convex_hull: neighbouring faces do not share their edge");
-      he[3 * k + i] = he[3 * rank[g] + j] + 1;
+      twins[3 * k + i] = static_cast<std::uint32_t>(3 * rank[g] + j);
+      twins[3 * rank[g] + j] = static_cast<std::uint32_t>(3 * k + i);
     }
-    for (std::size_t i = 0; i < 3; ++i) {
-      const Halfedge h(he[3 * k + i]);
-      m.set_vertex(h, Vertex(index[face.v[(i + 1) % 3]]));
-      m.set_next(h, Halfedge(he[3 * k + (i + 1) % 3]));
-      m.set_face(h, Face(k));
-      m.set_halfedge(Vertex(index[face.v[i]]), h);
-    }
-    m.set_halfedge(Face(k), Halfedge(he[3 * k + 2]));
   }
+  SurfaceMesh m;
+  if (const link_detail::ClosedLinkDefect d =
+          link_detail::link_closed_triangles(corners, twins, input_index.size(), m))
+    throw std::logic_error("convex_hull: the hull's faces are not closed and manifold: " +
+                           link_detail::describe(d));
+  for (std::uint32_t v = 0; v < input_index.size(); ++v) m.position(Vertex(v)) = points[input_index[v]];
   return m;
 }
 

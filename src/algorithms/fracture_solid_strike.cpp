@@ -8,6 +8,7 @@
 #include <exception>
 #include <span>
 
+#include "core_private/link_closed.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/core/threads.h"
 #include "hedge/core/triangulate.h"
@@ -359,98 +360,44 @@ void region_faces(const StrikeInput& in, std::vector<Face>& faces) {
 
 bool build_closed(KeyedSurface& s, SurfaceMesh& mesh, std::vector<std::uint32_t>& corner,
                   std::string& failure) {
+  using link_detail::ClosedLinkDefect;
+  using Kind = ClosedLinkDefect::Kind;
   s.finish_points(&corner);
-  const std::size_t nv = s.points.size(), nf = s.tris.size(), nc = 3 * nf;
-  auto next_corner = [](std::size_t c) { return c % 3 == 2 ? c - 2 : c + 1; };
-  for (std::size_t t = 0; t < nf; ++t) {
-    const std::uint32_t* v = &corner[3 * t];
-    if (v[0] >= nv || v[1] >= nv || v[2] >= nv) {
-      failure = "a piece's triangle " + std::to_string(t) + " uses a point it does not list";
+  const std::size_t nv = s.points.size();
+  const ClosedLinkDefect d = link_detail::link_closed_triangles(corner, nv, mesh);
+  auto edge = [&d] { return "the edge of points " + std::to_string(d.a) + " and " + std::to_string(d.b); };
+  switch (d.kind) {
+    case Kind::none:
+    case Kind::several_fans:  // a point that is not finite is named first
+      break;
+    case Kind::vertex_out_of_range:
+      failure = "a piece's triangle " + std::to_string(d.triangle) + " uses a point it does not list";
       return false;
-    }
-    if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) {
-      failure = "a piece is not manifold: triangle " + std::to_string(t) + " repeats a point";
+    case Kind::repeated_vertex:
+      failure = "a piece is not manifold: triangle " + std::to_string(d.triangle) + " repeats a point";
       return false;
-    }
-  }
-  // The corners leaving each point, a row per point, each entry (the corner's next point << 32 |
-  // corner) and each row sorted: a row holds an edge to a point at most once, and an edge's twin
-  // is found by a binary search in the row of its end.
-  std::vector<std::uint32_t> first(nv + 1, 0);
-  std::vector<std::uint64_t> out(nc);
-  for (std::size_t c = 0; c < nc; ++c) ++first[corner[c] + 1];
-  for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
-  {
-    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-    for (std::size_t c = 0; c < nc; ++c)
-      out[fill[corner[c]]++] = std::uint64_t{corner[next_corner(c)]} << 32 | c;
-  }
-  for (std::size_t v = 0; v < nv; ++v) {
-    std::sort(out.begin() + first[v], out.begin() + first[v + 1]);
-    for (std::uint32_t i = first[v] + 1; i < first[v + 1]; ++i)
-      if (out[i] >> 32 == out[i - 1] >> 32) {
-        failure = "a piece is not manifold: two of its triangles run along the edge of points " +
-                  std::to_string(v) + " and " + std::to_string(out[i] >> 32) + " the same way";
-        return false;
-      }
-  }
-  // Each corner's twin: the corner running the other way along its edge.
-  std::vector<std::uint32_t> twin(nc);
-  for (std::size_t c = 0; c < nc; ++c) {
-    const std::uint64_t a = corner[c], b = corner[next_corner(c)];
-    const auto row = out.begin() + first[b], row_end = out.begin() + first[b + 1];
-    const auto it = std::lower_bound(row, row_end, a << 32);
-    if (it == row_end || *it >> 32 != a) {
-      failure = "a piece is open: no triangle runs along the edge of points " + std::to_string(a) + " and " +
-                std::to_string(b) + " the other way";
+    case Kind::edge_used_twice:
+      failure = "a piece is not manifold: two of its triangles run along " + edge() + " the same way";
       return false;
-    }
-    twin[c] = static_cast<std::uint32_t>(*it);
+    case Kind::open_edge:
+      failure = "a piece is open: no triangle runs along " + edge() + " the other way";
+      return false;
+    case Kind::wrong_twin:
+      failure = "a piece could not be linked: " + link_detail::describe(d);
+      return false;
   }
-  // Edges numbered as their first corner comes up.
-  std::vector<Index> he(nc, kInvalidIndex);
-  Index n_edges = 0;
-  for (std::size_t c = 0; c < nc; ++c)
-    if (he[c] == kInvalidIndex) {
-      he[c] = 2 * n_edges;
-      he[twin[c]] = 2 * n_edges + 1;
-      ++n_edges;
-    }
-  mesh = SurfaceMesh();
-  mesh.resize(nv, n_edges, nf);
   for (std::size_t v = 0; v < nv; ++v) {
     const Vec3 p = to_float(s.points[v].second);
     if (!is_finite(p)) {
       failure = "a piece's point " + std::to_string(v) + " is not finite";
       return false;
     }
-    mesh.position(Vertex(static_cast<Index>(v))) = p;
+    if (!d) mesh.position(Vertex(static_cast<Index>(v))) = p;
   }
-  for (std::size_t c = 0; c < nc; ++c) {
-    const std::size_t cn = next_corner(c);
-    const Halfedge h(he[c]);
-    mesh.set_vertex(h, Vertex(corner[cn]));
-    mesh.set_next(h, Halfedge(he[cn]));
-    mesh.set_face(h, Face(static_cast<Index>(c / 3)));
-    mesh.set_halfedge(Vertex(corner[c]), h);
-    if (c % 3 == 2) mesh.set_halfedge(Face(static_cast<Index>(c / 3)), h);
-  }
-  // One fan per point: turning about it from its half-edge visits all the corners leaving it.
-  for (std::size_t v = 0; v < nv; ++v) {
-    const std::uint32_t valence = first[v + 1] - first[v];
-    if (valence == 0) continue;  // a point no triangle uses stays an isolated vertex, as in build()
-    const Halfedge h0 = mesh.halfedge(Vertex(static_cast<Index>(v)));
-    Halfedge h = h0;
-    std::uint32_t seen = 0;
-    do {
-      h = mesh.next(SurfaceMesh::twin(h));
-      ++seen;
-    } while (h != h0 && seen <= valence);
-    if (seen != valence) {
-      failure =
-          "a piece is not manifold: its faces around point " + std::to_string(v) + " form more than one fan";
-      return false;
-    }
+  if (d) {
+    failure =
+        "a piece is not manifold: its faces around point " + std::to_string(d.a) + " form more than one fan";
+    return false;
   }
   return true;
 }

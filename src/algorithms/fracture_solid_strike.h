@@ -59,14 +59,13 @@ struct Strike {
   double seconds_cells = 0, seconds_clip = 0, seconds_cap = 0;
 };
 
-//! Finishes the points of a keyed surface and links it into `mesh` directly, with the numbering
-//! build_triangles() would give (point i is vertex i, triangle i face i; an edge is made by the first
-//! corner that crosses it, its other half-edge taken by the second; a vertex holds its last corner's
-//! half-edge, a face the half-edge entering its first corner), and checks explicitly what build()
-//! would: false, with `failure` saying what, unless the surface is a closed manifold, that is, no
-//! triangle repeats a point, every directed edge is used once and its reverse once, the triangles
-//! around every point form one fan, and every point is finite in float. Sets corner[3 t + k] to the
-//! point of s.tris[t][k]. O(corners log valence) after the points' sort.
+//! Finishes the points of a keyed surface and links it into `mesh` with link_closed_triangles()
+//! (core_private/link_closed.h), which numbers it as build_triangles() would (point i is vertex i,
+//! triangle i face i) and checks explicitly what build() would: false, with `failure` saying what,
+//! unless the surface is a closed manifold, that is, no triangle repeats a point, every directed
+//! edge is used once and its reverse once, the triangles around every point form one fan, and every
+//! point is finite in float. Sets corner[3 t + k] to the point of s.tris[t][k]. O(corners x
+//! valence) after the points' sort.
 bool build_closed(KeyedSurface& s, SurfaceMesh& mesh, std::vector<std::uint32_t>& corner,
                   std::string& failure);
 
