@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "decimate_corners.h"
 #include "decimate_internal.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/core/edge_operations.h"
@@ -134,8 +135,6 @@ class Decimator {
   bool placement(Halfedge h, Vec3d& p, double& cost) const;
   enum class Check { ok, normal, shape };
   Check check_faces(Halfedge h, const Vec3d& p, bool shape) const;
-  void gather_ring(Halfedge h);
-  void interpolate_corners(Vertex v, const Vec3d& p);
   // The key of e's best collapse: (cost's float bits << 32) | half-edge, kOverError or kNoKey.
   std::uint64_t rank(Edge e) const;
   Check check(Halfedge h, const Vec3d& p, double cost, bool shapely) const;
@@ -173,17 +172,8 @@ class Decimator {
   // An edge whose best collapse exceeds max_error (sorts last; never pushed as a candidate).
   static constexpr std::uint64_t kOverError = kNoKey - 1;
   std::vector<std::uint64_t> edge_key_, keys_, scratch_;
-  std::vector<std::uint8_t> refused_;  // greedy tail: the edge's key was refused by a check
-
-  // One collapse's ring: the triangles around both ends before it, their corners' positions and
-  // texture coordinates, and which chart (faces joined across non-seam edges) each belongs to.
-  struct RingFace {
-    Face f;
-    std::array<Vec3d, 3> x;
-    std::array<Vec2, 3> uv;
-    std::uint32_t chart;
-  };
-  std::vector<RingFace> ring_;
+  std::vector<std::uint8_t> refused_;    // greedy tail: the edge's key was refused by a check
+  detail::decimation::CornerRing ring_;  // one collapse's corners (decimate_corners.h)
 };
 
 void Decimator::gather_quadrics() {
@@ -262,14 +252,7 @@ void Decimator::gather_quadrics() {
   }
 }
 
-// A seam edge: an interior edge whose two faces give one of its ends different texture coordinates.
-// The corner of vertex x in face f is stored on the half-edge entering x in f.
-bool Decimator::seam(Edge e) const {
-  const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
-  if (m_.is_boundary(h) || m_.is_boundary(t)) return false;
-  const Halfedge hp = m_.next(m_.next(h)), tp = m_.next(m_.next(t));
-  return uv_[h] != uv_[tp] || uv_[hp] != uv_[t];
-}
+bool Decimator::seam(Edge e) const { return detail::decimation::is_seam(m_, uv_, e); }
 
 void Decimator::classify() {
   if (!seams_) return;
@@ -391,81 +374,6 @@ Decimator::Check Decimator::check_faces(Halfedge h, const Vec3d& p, bool shape) 
   return worst_new < worst_old ? Check::shape : Check::ok;
 }
 
-// Before collapsing h: the triangles around both ends, their corners, and their charts (faces
-// joined across spoke edges that are not seams, with union-find over the ring's slots).
-void Decimator::gather_ring(Halfedge h) {
-  ring_.clear();
-  for (const Halfedge start : {h, Mesh::twin(h)}) {
-    Halfedge o = start;
-    do {
-      const Face f = m_.face(o);
-      if (f.is_valid() && (start == h || (f != m_.face(h) && f != m_.face(Mesh::twin(h))))) {
-        const Halfedge o1 = m_.next(o), o2 = m_.next(o1);
-        RingFace r{f,
-                   {pos(m_.to_vertex(o2)), pos(m_.to_vertex(o)), pos(m_.to_vertex(o1))},
-                   {uv_[o2], uv_[o], uv_[o1]},
-                   std::uint32_t(ring_.size())};
-        ring_.push_back(r);
-      }
-      o = m_.rotate_cw(o);
-    } while (o != start);
-  }
-  auto find = [&](std::uint32_t i) {
-    while (ring_[i].chart != i) i = ring_[i].chart = ring_[ring_[i].chart].chart;
-    return i;
-  };
-  auto slot = [&](Face f) -> std::uint32_t {
-    for (std::uint32_t i = 0; i < ring_.size(); ++i)
-      if (ring_[i].f == f) return i;
-    return std::uint32_t(-1);
-  };
-  // Every spoke edge of both ends (h's edge included): join its faces unless it is a seam.
-  for (const Halfedge start : {h, Mesh::twin(h)}) {
-    Halfedge o = start;
-    do {
-      const Face f0 = m_.face(o), f1 = m_.face(Mesh::twin(o));
-      if (f0.is_valid() && f1.is_valid() && !seam(Mesh::edge(o))) {
-        const std::uint32_t i = slot(f0), j = slot(f1);
-        if (i != std::uint32_t(-1) && j != std::uint32_t(-1)) ring_[find(i)].chart = find(j);
-      }
-      o = m_.rotate_cw(o);
-    } while (o != start);
-  }
-  for (std::uint32_t i = 0; i < ring_.size(); ++i) ring_[i].chart = find(i);
-}
-
-// After the collapse: each corner at v gets the texture coordinates at p of the nearest old
-// triangle of its own chart (barycentric, clamped to the triangle).
-void Decimator::interpolate_corners(Vertex v, const Vec3d& p) {
-  const Halfedge start = m_.halfedge(v);
-  Halfedge o = start;
-  do {
-    const Halfedge in = Mesh::twin(o);
-    const Face f = m_.face(in);
-    if (f.is_valid()) {
-      std::uint32_t chart = std::uint32_t(-1);
-      for (const RingFace& r : ring_)
-        if (r.f == f) chart = r.chart;
-      double best = HUGE_VAL;
-      Vec2 value = uv_[in];
-      for (const RingFace& r : ring_) {
-        if (r.chart != chart) continue;
-        double b0, b1, b2;
-        if (!detail::decimation::clamped_barycentric(r.x, p, b0, b1, b2)) continue;
-        const Vec3d q = r.x[0] * b0 + r.x[1] * b1 + r.x[2] * b2 - p;
-        const double dist = dot(q, q);
-        if (dist < best) {
-          best = dist;
-          value = Vec2{float(b0 * r.uv[0].x + b1 * r.uv[1].x + b2 * r.uv[2].x),
-                       float(b0 * r.uv[0].y + b1 * r.uv[1].y + b2 * r.uv[2].y)};
-        }
-      }
-      uv_[in] = value;
-    }
-    o = m_.rotate_cw(o);
-  } while (o != start);
-}
-
 std::uint64_t Decimator::rank(Edge e) const {
   Halfedge h;
   Vec3d p;
@@ -483,14 +391,14 @@ Decimator::Check Decimator::check(Halfedge h, const Vec3d& p, double cost, bool 
 // Collapses h, moving the survivor to p; false (and nothing changed) if can_collapse() refuses.
 bool Decimator::apply(Halfedge h, const Vec3d& p, double cost, DecimateResult& result, double& max_cost) {
   const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
-  if (uv_) gather_ring(h);
+  if (uv_) ring_.gather(m_, uv_, h);
   if (!collapse(m_, h).is_valid()) {
     ++result.refused.topology;
     return false;
   }
   pos_[b.idx()] = to_float(p);
   q_[b.idx()].add(q_[a.idx()]);
-  if (uv_) interpolate_corners(b, p);
+  if (uv_) ring_.interpolate(m_, uv_, b, p);
   max_cost = std::max(max_cost, cost);
   ++result.collapses;
   return true;
