@@ -5,7 +5,8 @@
 // survived a collapse is locked until the next pass, because the costs of its edges are stale; the
 // costs of all other edges are still exact, since a collapse changes no other vertex's quadric, so
 // the next pass re-ranks only the survivors' edges. Within kGreedyFrom times the target, the sorted
-// keys become a lazy binary heap and the rest goes in true greedy order (collapse_greedy).
+// keys become a lazy binary heap and the rest goes in true greedy order (collapse_greedy). A
+// candidate is collapsed at the point its ranking found (kept per edge), not placed again.
 // No allocation happens per collapse.
 #include "hedge/algorithms/decimate.h"
 
@@ -130,13 +131,16 @@ class Decimator {
   bool removable(Vertex v, bool seam_edge) const;
   bool fixed(Vertex v) const;
   // The best collapse of e: the half-edge to collapse, the surviving point, its cost. False if e
-  // may not collapse either way.
-  bool best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost) const;
+  // may not collapse either way. `placed`: p is the point placement(h) gives.
+  bool best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost, bool& placed) const;
   bool placement(Halfedge h, Vec3d& p, double& cost) const;
+  // placement(h) for a candidate: the point its edge's last ranking kept, if any, with its cost.
+  void placed(Halfedge h, Vec3d& p, double& cost) const;
   enum class Check { ok, normal, shape };
   Check check_faces(Halfedge h, const Vec3d& p, bool shape) const;
   // The key of e's best collapse: (cost's float bits << 32) | half-edge, kOverError or kNoKey.
-  std::uint64_t rank(Edge e) const;
+  // Keeps the surviving point in point_ for placed().
+  std::uint64_t rank(Edge e);
   Check check(Halfedge h, const Vec3d& p, double cost, bool shapely) const;
   bool apply(Halfedge h, const Vec3d& p, double cost, DecimateResult& result, double& max_cost);
   // Collapses done and refused by the face checks in one pass or in the greedy tail.
@@ -172,6 +176,10 @@ class Decimator {
   // An edge whose best collapse exceeds max_error (sorts last; never pushed as a candidate).
   static constexpr std::uint64_t kOverError = kNoKey - 1;
   std::vector<std::uint64_t> edge_key_, keys_, scratch_;
+  // Per edge, the surviving point of its key's collapse as rank() found it (NaN: place again). Both
+  // ends are unchanged while the key is current, so placing again would give the same point. Kept
+  // in double: it is what placement() returned, whatever the compiler made of its rounding.
+  std::vector<Vec3d> point_;
   std::vector<std::uint8_t> refused_;    // greedy tail: the edge's key was refused by a check
   detail::decimation::CornerRing ring_;  // one collapse's corners (decimate_corners.h)
 };
@@ -306,7 +314,7 @@ bool Decimator::placement(Halfedge h, Vec3d& p, double& cost) const {
   return true;
 }
 
-bool Decimator::best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost) const {
+bool Decimator::best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost, bool& placed) const {
   const Halfedge h0 = Mesh::halfedge(e, 0), h1 = Mesh::twin(h0);
   const bool s = seams_ && seam(e);
   const bool go0 = removable(m_.from_vertex(h0), s), go1 = removable(m_.from_vertex(h1), s);
@@ -317,6 +325,7 @@ bool Decimator::best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost) const
     const bool f0 = fixed(m_.to_vertex(h0)), f1 = fixed(m_.to_vertex(h1));
     if (f0 != f1) {
       h = f0 ? h0 : h1;
+      placed = true;
       return placement(h, p, cost);
     }
     Vec3d p0, p1;
@@ -325,9 +334,12 @@ bool Decimator::best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost) const
     if (!f0) {
       h = p0 == pos(m_.to_vertex(h1)) ? h1 : h0;
       p = p0, cost = c0;
+      // Placing h1 need not give p0 back (the ends are tried in the other order).
+      placed = h == h0;
       return true;
     }
     placement(h1, p1, c1);
+    placed = true;
     if (c1 < c0)
       h = h1, p = p1, cost = c1;
     else
@@ -335,6 +347,7 @@ bool Decimator::best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost) const
     return true;
   }
   h = go0 ? h0 : h1;
+  placed = true;
   return placement(h, p, cost);
 }
 
@@ -374,13 +387,28 @@ Decimator::Check Decimator::check_faces(Halfedge h, const Vec3d& p, bool shape) 
   return worst_new < worst_old ? Check::shape : Check::ok;
 }
 
-std::uint64_t Decimator::rank(Edge e) const {
+std::uint64_t Decimator::rank(Edge e) {
   Halfedge h;
   Vec3d p;
   double cost;
-  if (!best_collapse(e, h, p, cost)) return kNoKey;
+  bool kept;
+  if (!best_collapse(e, h, p, cost, kept)) return kNoKey;
   if (!(cost <= max_cost_)) return kOverError;
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  point_[e.idx()] = kept ? p : Vec3d{nan, nan, nan};
   return std::uint64_t(float_bits(static_cast<float>(cost))) << 32 | h.idx();
+}
+
+// placement() takes the cost at the point it returns, so the kept point and the cost of the same
+// quadric at it are what placing again would give, bit for bit.
+void Decimator::placed(Halfedge h, Vec3d& p, double& cost) const {
+  const Vec3d kept = point_[Mesh::edge(h).idx()];
+  if (std::isnan(kept.x)) {
+    placement(h, p, cost);
+    return;
+  }
+  p = kept;
+  cost = error_at(sum(q_[m_.from_vertex(h).idx()], q_[m_.to_vertex(h).idx()]), p);
 }
 
 Decimator::Check Decimator::check(Halfedge h, const Vec3d& p, double cost, bool shapely) const {
@@ -428,6 +456,7 @@ Decimator::Tally Decimator::collapse_pass(std::uint32_t pass, std::size_t budget
     }
     if (k + 8 < n_keys) {
       const std::uint32_t h8 = std::uint32_t(keys_[k + 8]);
+      prefetch(point_.data() + (h8 >> 1));
       for (const Vertex v : {to[h8], to[h8 ^ 1u]}) {
         prefetch(pos_ + v.idx());
         prefetch(q_.data() + v.idx());
@@ -442,7 +471,7 @@ Decimator::Tally Decimator::collapse_pass(std::uint32_t pass, std::size_t budget
     if (stamp_[a.idx()] == pass || stamp_[b.idx()] == pass) continue;
     Vec3d p;
     double cost;
-    placement(h, p, cost);
+    placed(h, p, cost);
     if (!(cost <= max_cost_)) {
       over_error = true;
       continue;
@@ -487,7 +516,7 @@ Decimator::Tally Decimator::collapse_greedy(bool shapely, DecimateResult& result
     if (m_.is_deleted(h) || edge_key_[e] != key || refused_[e]) continue;
     Vec3d p;
     double cost;
-    placement(h, p, cost);
+    placed(h, p, cost);
     if (const Check c = check(h, p, cost, shapely); c != Check::ok) {
       ++(c == Check::normal ? result.refused.normal : result.refused.shape);
       t.refused_shape += c == Check::shape;
@@ -538,6 +567,7 @@ DecimateResult Decimator::run() {
   gather_quadrics();
   stamp_.assign(m_.vertex_slots(), 0);
   edge_key_.assign(m_.edge_slots(), kNoKey);
+  point_.resize(m_.edge_slots());
   double max_cost = 0;
   bool over_error = false;  // a candidate of this pass exceeded max_error
   bool shapely = true;      // the shape check is on (see check_faces)
