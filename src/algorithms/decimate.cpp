@@ -5,7 +5,8 @@
 // survived a collapse is locked until the next pass, because the costs of its edges are stale; the
 // costs of all other edges are still exact, since a collapse changes no other vertex's quadric, so
 // the next pass re-ranks only the survivors' edges. Within kGreedyFrom times the target, the sorted
-// keys become a lazy binary heap and the rest goes in true greedy order (collapse_greedy).
+// keys become a lazy binary heap and the rest goes in true greedy order (collapse_greedy). A
+// candidate is collapsed at the point its ranking found (kept per edge), not placed again.
 // No allocation happens per collapse.
 #include "hedge/algorithms/decimate.h"
 
@@ -21,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "decimate_corners.h"
 #include "decimate_internal.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/core/edge_operations.h"
@@ -129,15 +131,16 @@ class Decimator {
   bool removable(Vertex v, bool seam_edge) const;
   bool fixed(Vertex v) const;
   // The best collapse of e: the half-edge to collapse, the surviving point, its cost. False if e
-  // may not collapse either way.
-  bool best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost) const;
+  // may not collapse either way. `placed`: p is the point placement(h) gives.
+  bool best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost, bool& placed) const;
   bool placement(Halfedge h, Vec3d& p, double& cost) const;
+  // placement(h) for a candidate: the point its edge's last ranking kept, if any, with its cost.
+  void placed(Halfedge h, Vec3d& p, double& cost) const;
   enum class Check { ok, normal, shape };
   Check check_faces(Halfedge h, const Vec3d& p, bool shape) const;
-  void gather_ring(Halfedge h);
-  void interpolate_corners(Vertex v, const Vec3d& p);
   // The key of e's best collapse: (cost's float bits << 32) | half-edge, kOverError or kNoKey.
-  std::uint64_t rank(Edge e) const;
+  // Keeps the surviving point in point_ for placed().
+  std::uint64_t rank(Edge e);
   Check check(Halfedge h, const Vec3d& p, double cost, bool shapely) const;
   bool apply(Halfedge h, const Vec3d& p, double cost, DecimateResult& result, double& max_cost);
   // Collapses done and refused by the face checks in one pass or in the greedy tail.
@@ -173,17 +176,12 @@ class Decimator {
   // An edge whose best collapse exceeds max_error (sorts last; never pushed as a candidate).
   static constexpr std::uint64_t kOverError = kNoKey - 1;
   std::vector<std::uint64_t> edge_key_, keys_, scratch_;
-  std::vector<std::uint8_t> refused_;  // greedy tail: the edge's key was refused by a check
-
-  // One collapse's ring: the triangles around both ends before it, their corners' positions and
-  // texture coordinates, and which chart (faces joined across non-seam edges) each belongs to.
-  struct RingFace {
-    Face f;
-    std::array<Vec3d, 3> x;
-    std::array<Vec2, 3> uv;
-    std::uint32_t chart;
-  };
-  std::vector<RingFace> ring_;
+  // Per edge, the surviving point of its key's collapse as rank() found it (NaN: place again). Both
+  // ends are unchanged while the key is current, so placing again would give the same point. Kept
+  // in double: it is what placement() returned, whatever the compiler made of its rounding.
+  std::vector<Vec3d> point_;
+  std::vector<std::uint8_t> refused_;    // greedy tail: the edge's key was refused by a check
+  detail::decimation::CornerRing ring_;  // one collapse's corners (decimate_corners.h)
 };
 
 void Decimator::gather_quadrics() {
@@ -262,14 +260,7 @@ void Decimator::gather_quadrics() {
   }
 }
 
-// A seam edge: an interior edge whose two faces give one of its ends different texture coordinates.
-// The corner of vertex x in face f is stored on the half-edge entering x in f.
-bool Decimator::seam(Edge e) const {
-  const Halfedge h = Mesh::halfedge(e, 0), t = Mesh::twin(h);
-  if (m_.is_boundary(h) || m_.is_boundary(t)) return false;
-  const Halfedge hp = m_.next(m_.next(h)), tp = m_.next(m_.next(t));
-  return uv_[h] != uv_[tp] || uv_[hp] != uv_[t];
-}
+bool Decimator::seam(Edge e) const { return detail::decimation::is_seam(m_, uv_, e); }
 
 void Decimator::classify() {
   if (!seams_) return;
@@ -323,7 +314,7 @@ bool Decimator::placement(Halfedge h, Vec3d& p, double& cost) const {
   return true;
 }
 
-bool Decimator::best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost) const {
+bool Decimator::best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost, bool& placed) const {
   const Halfedge h0 = Mesh::halfedge(e, 0), h1 = Mesh::twin(h0);
   const bool s = seams_ && seam(e);
   const bool go0 = removable(m_.from_vertex(h0), s), go1 = removable(m_.from_vertex(h1), s);
@@ -334,6 +325,7 @@ bool Decimator::best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost) const
     const bool f0 = fixed(m_.to_vertex(h0)), f1 = fixed(m_.to_vertex(h1));
     if (f0 != f1) {
       h = f0 ? h0 : h1;
+      placed = true;
       return placement(h, p, cost);
     }
     Vec3d p0, p1;
@@ -342,9 +334,12 @@ bool Decimator::best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost) const
     if (!f0) {
       h = p0 == pos(m_.to_vertex(h1)) ? h1 : h0;
       p = p0, cost = c0;
+      // Placing h1 need not give p0 back (the ends are tried in the other order).
+      placed = h == h0;
       return true;
     }
     placement(h1, p1, c1);
+    placed = true;
     if (c1 < c0)
       h = h1, p = p1, cost = c1;
     else
@@ -352,6 +347,7 @@ bool Decimator::best_collapse(Edge e, Halfedge& h, Vec3d& p, double& cost) const
     return true;
   }
   h = go0 ? h0 : h1;
+  placed = true;
   return placement(h, p, cost);
 }
 
@@ -391,88 +387,28 @@ Decimator::Check Decimator::check_faces(Halfedge h, const Vec3d& p, bool shape) 
   return worst_new < worst_old ? Check::shape : Check::ok;
 }
 
-// Before collapsing h: the triangles around both ends, their corners, and their charts (faces
-// joined across spoke edges that are not seams, with union-find over the ring's slots).
-void Decimator::gather_ring(Halfedge h) {
-  ring_.clear();
-  for (const Halfedge start : {h, Mesh::twin(h)}) {
-    Halfedge o = start;
-    do {
-      const Face f = m_.face(o);
-      if (f.is_valid() && (start == h || (f != m_.face(h) && f != m_.face(Mesh::twin(h))))) {
-        const Halfedge o1 = m_.next(o), o2 = m_.next(o1);
-        RingFace r{f,
-                   {pos(m_.to_vertex(o2)), pos(m_.to_vertex(o)), pos(m_.to_vertex(o1))},
-                   {uv_[o2], uv_[o], uv_[o1]},
-                   std::uint32_t(ring_.size())};
-        ring_.push_back(r);
-      }
-      o = m_.rotate_cw(o);
-    } while (o != start);
-  }
-  auto find = [&](std::uint32_t i) {
-    while (ring_[i].chart != i) i = ring_[i].chart = ring_[ring_[i].chart].chart;
-    return i;
-  };
-  auto slot = [&](Face f) -> std::uint32_t {
-    for (std::uint32_t i = 0; i < ring_.size(); ++i)
-      if (ring_[i].f == f) return i;
-    return std::uint32_t(-1);
-  };
-  // Every spoke edge of both ends (h's edge included): join its faces unless it is a seam.
-  for (const Halfedge start : {h, Mesh::twin(h)}) {
-    Halfedge o = start;
-    do {
-      const Face f0 = m_.face(o), f1 = m_.face(Mesh::twin(o));
-      if (f0.is_valid() && f1.is_valid() && !seam(Mesh::edge(o))) {
-        const std::uint32_t i = slot(f0), j = slot(f1);
-        if (i != std::uint32_t(-1) && j != std::uint32_t(-1)) ring_[find(i)].chart = find(j);
-      }
-      o = m_.rotate_cw(o);
-    } while (o != start);
-  }
-  for (std::uint32_t i = 0; i < ring_.size(); ++i) ring_[i].chart = find(i);
-}
-
-// After the collapse: each corner at v gets the texture coordinates at p of the nearest old
-// triangle of its own chart (barycentric, clamped to the triangle).
-void Decimator::interpolate_corners(Vertex v, const Vec3d& p) {
-  const Halfedge start = m_.halfedge(v);
-  Halfedge o = start;
-  do {
-    const Halfedge in = Mesh::twin(o);
-    const Face f = m_.face(in);
-    if (f.is_valid()) {
-      std::uint32_t chart = std::uint32_t(-1);
-      for (const RingFace& r : ring_)
-        if (r.f == f) chart = r.chart;
-      double best = HUGE_VAL;
-      Vec2 value = uv_[in];
-      for (const RingFace& r : ring_) {
-        if (r.chart != chart) continue;
-        double b0, b1, b2;
-        if (!detail::decimation::clamped_barycentric(r.x, p, b0, b1, b2)) continue;
-        const Vec3d q = r.x[0] * b0 + r.x[1] * b1 + r.x[2] * b2 - p;
-        const double dist = dot(q, q);
-        if (dist < best) {
-          best = dist;
-          value = Vec2{float(b0 * r.uv[0].x + b1 * r.uv[1].x + b2 * r.uv[2].x),
-                       float(b0 * r.uv[0].y + b1 * r.uv[1].y + b2 * r.uv[2].y)};
-        }
-      }
-      uv_[in] = value;
-    }
-    o = m_.rotate_cw(o);
-  } while (o != start);
-}
-
-std::uint64_t Decimator::rank(Edge e) const {
+std::uint64_t Decimator::rank(Edge e) {
   Halfedge h;
   Vec3d p;
   double cost;
-  if (!best_collapse(e, h, p, cost)) return kNoKey;
+  bool kept;
+  if (!best_collapse(e, h, p, cost, kept)) return kNoKey;
   if (!(cost <= max_cost_)) return kOverError;
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  point_[e.idx()] = kept ? p : Vec3d{nan, nan, nan};
   return std::uint64_t(float_bits(static_cast<float>(cost))) << 32 | h.idx();
+}
+
+// placement() takes the cost at the point it returns, so the kept point and the cost of the same
+// quadric at it are what placing again would give, bit for bit.
+void Decimator::placed(Halfedge h, Vec3d& p, double& cost) const {
+  const Vec3d kept = point_[Mesh::edge(h).idx()];
+  if (std::isnan(kept.x)) {
+    placement(h, p, cost);
+    return;
+  }
+  p = kept;
+  cost = error_at(sum(q_[m_.from_vertex(h).idx()], q_[m_.to_vertex(h).idx()]), p);
 }
 
 Decimator::Check Decimator::check(Halfedge h, const Vec3d& p, double cost, bool shapely) const {
@@ -483,14 +419,14 @@ Decimator::Check Decimator::check(Halfedge h, const Vec3d& p, double cost, bool 
 // Collapses h, moving the survivor to p; false (and nothing changed) if can_collapse() refuses.
 bool Decimator::apply(Halfedge h, const Vec3d& p, double cost, DecimateResult& result, double& max_cost) {
   const Vertex a = m_.from_vertex(h), b = m_.to_vertex(h);
-  if (uv_) gather_ring(h);
+  if (uv_) ring_.gather(m_, uv_, h);
   if (!collapse(m_, h).is_valid()) {
     ++result.refused.topology;
     return false;
   }
   pos_[b.idx()] = to_float(p);
   q_[b.idx()].add(q_[a.idx()]);
-  if (uv_) interpolate_corners(b, p);
+  if (uv_) ring_.interpolate(m_, uv_, b, p);
   max_cost = std::max(max_cost, cost);
   ++result.collapses;
   return true;
@@ -520,6 +456,7 @@ Decimator::Tally Decimator::collapse_pass(std::uint32_t pass, std::size_t budget
     }
     if (k + 8 < n_keys) {
       const std::uint32_t h8 = std::uint32_t(keys_[k + 8]);
+      prefetch(point_.data() + (h8 >> 1));
       for (const Vertex v : {to[h8], to[h8 ^ 1u]}) {
         prefetch(pos_ + v.idx());
         prefetch(q_.data() + v.idx());
@@ -534,7 +471,7 @@ Decimator::Tally Decimator::collapse_pass(std::uint32_t pass, std::size_t budget
     if (stamp_[a.idx()] == pass || stamp_[b.idx()] == pass) continue;
     Vec3d p;
     double cost;
-    placement(h, p, cost);
+    placed(h, p, cost);
     if (!(cost <= max_cost_)) {
       over_error = true;
       continue;
@@ -579,7 +516,7 @@ Decimator::Tally Decimator::collapse_greedy(bool shapely, DecimateResult& result
     if (m_.is_deleted(h) || edge_key_[e] != key || refused_[e]) continue;
     Vec3d p;
     double cost;
-    placement(h, p, cost);
+    placed(h, p, cost);
     if (const Check c = check(h, p, cost, shapely); c != Check::ok) {
       ++(c == Check::normal ? result.refused.normal : result.refused.shape);
       t.refused_shape += c == Check::shape;
@@ -630,6 +567,7 @@ DecimateResult Decimator::run() {
   gather_quadrics();
   stamp_.assign(m_.vertex_slots(), 0);
   edge_key_.assign(m_.edge_slots(), kNoKey);
+  point_.resize(m_.edge_slots());
   double max_cost = 0;
   bool over_error = false;  // a candidate of this pass exceeded max_error
   bool shapely = true;      // the shape check is on (see check_faces)

@@ -155,19 +155,27 @@ inline void prefetch(const T* p) {
 }
 
 // LSD radix sort of the keys by their upper 32 bits (the costs' float bits, which order like the
-// non-negative floats), in three passes of 11 bits.
+// non-negative floats), in three passes of 11 bits. One read counts all three digits; a pass whose
+// digit is the same for every key (the float's top bits often are) moves nothing and is skipped.
 inline void radix_sort(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>& scratch) {
   scratch.resize(keys.size());
-  for (int shift = 32; shift < 64; shift += 11) {
-    std::array<std::uint32_t, 2048> count{};
-    for (const std::uint64_t k : keys) ++count[(k >> shift) & 2047];
+  std::array<std::array<std::uint32_t, 2048>, 3> count{};
+  for (const std::uint64_t k : keys) {
+    ++count[0][(k >> 32) & 2047];
+    ++count[1][(k >> 43) & 2047];
+    ++count[2][(k >> 54) & 2047];
+  }
+  for (int pass = 0; pass < 3; ++pass) {
+    std::array<std::uint32_t, 2048>& c = count[std::size_t(pass)];
+    const int shift = 32 + 11 * pass;
+    if (!keys.empty() && c[(keys[0] >> shift) & 2047] == keys.size()) continue;
     std::uint32_t total = 0;
-    for (std::uint32_t& c : count) {
-      const std::uint32_t n = c;
-      c = total;
-      total += n;
+    for (std::uint32_t& n : c) {
+      const std::uint32_t here = n;
+      n = total;
+      total += here;
     }
-    for (const std::uint64_t k : keys) scratch[count[(k >> shift) & 2047]++] = k;
+    for (const std::uint64_t k : keys) scratch[c[(k >> shift) & 2047]++] = k;
     keys.swap(scratch);
   }
 }
