@@ -309,7 +309,7 @@ bool Decimator::placement(Halfedge h, Vec3d& p, double& cost) const {
     if (q.minimiser(mid, dot(ab, ab), opt) && error_at(q, opt) < best - clearly) p = opt;
   }
   // The cost and the checks see the point as it will be stored.
-  p = to_double(to_float(p));
+  p = rounded_to_float(p);
   cost = error_at(q, p);
   return true;
 }

@@ -94,10 +94,7 @@ class FoldGuard {
   // The last check, on the positions as they will be stored (in float): rounding can still turn a
   // nearly degenerate triangle, whose corners then go back to where they started.
   void apply_rounded(const SurfaceMesh& m, std::vector<Vec3d>& p) {
-    // Through float storage (a direct to_double(to_float(x)) came back unrounded from GCC 12 at -O3).
-    std::vector<Vec3> stored(p.size());
-    for (Vertex v : m.vertices()) stored[v.idx()] = to_float(p[v.idx()]);
-    for (Vertex v : m.vertices()) p[v.idx()] = to_double(stored[v.idx()]);
+    for (Vertex v : m.vertices()) p[v.idx()] = rounded_to_float(p[v.idx()]);
     apply(positions_, p);
   }
   void apply(const std::vector<Vec3d>& previous, std::vector<Vec3d>& next) {

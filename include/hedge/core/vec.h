@@ -102,6 +102,19 @@ inline Vec3d to_double(const Vec3& v) { return {v.x, v.y, v.z}; }
 inline Vec3 to_float(const Vec3d& v) {
   return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
 }
+//! v with each coordinate rounded to float and back: the point as a float position stores it.
+//! Use this rather than to_double(to_float(v)), from which GCC 12's vectoriser (-O2 and above)
+//! drops the rounding of x and y; the empty asm makes each float a value it cannot see through.
+inline Vec3d rounded_to_float(const Vec3d& v) {
+  const auto round = [](double d) {
+    float f = static_cast<float>(d);
+#if defined(__GNUC__) && !defined(__clang__)
+    asm("" : "+m"(f));
+#endif
+    return static_cast<double>(f);
+  };
+  return {round(v.x), round(v.y), round(v.z)};
+}
 //! The bits of a float (memcpy rather than std::bit_cast, which older standard libraries such as
 //! emscripten's libc++ lack). For non-negative floats they order as the values do; -0 and +0
 //! differ.
