@@ -63,6 +63,9 @@ void FaceBvh::refit_internal(Index n) {
 }
 
 void FaceBvh::refit_dirty() {
+  // Each leaf once, however many of its entries went (a strike empties whole leaves).
+  std::sort(dirty_.begin(), dirty_.end());
+  dirty_.erase(std::unique(dirty_.begin(), dirty_.end()), dirty_.end());
   for (const Index leaf : dirty_) {
     refit_leaf(leaf);
     for (Index n = parent_[leaf]; n != kInvalidIndex; n = parent_[n]) {
