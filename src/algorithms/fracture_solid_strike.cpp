@@ -87,8 +87,9 @@ struct SoupGrid {
   std::vector<std::uint32_t> items;
 
   int cell(float x, int a) const {
-    const double c = std::floor((double(x) - origin[a]) * scale[a]);
-    return c < 0 ? 0 : (c >= n[a] ? n[a] - 1 : int(c));
+    // Clamped first, then truncated: for the values left (0 and up) that is the floor.
+    const double c = (double(x) - origin[a]) * scale[a];
+    return c <= 0 ? 0 : (c >= n[a] ? n[a] - 1 : int(c));
   }
   //! Calls fn(b) for the buckets (grid cells) the box [lo, hi] meets.
   template <typename Fn>
@@ -130,13 +131,19 @@ SoupGrid grid_soup(const std::vector<SoupTriangle>& soup) {
   }
   const std::size_t cells = std::size_t(grid.n[0]) * grid.n[1] * grid.n[2];
   grid.first.assign(cells + 1, 0);
-  for (const SoupTriangle& t : soup)
-    grid.for_buckets(t.lo, t.hi, [&](std::size_t b) { ++grid.first[b + 1]; });
-  for (std::size_t b = 0; b < cells; ++b) grid.first[b + 1] += grid.first[b];
-  grid.items.resize(grid.first[cells]);
-  std::vector<std::uint32_t> fill(grid.first.begin(), grid.first.end() - 1);
+  // Most triangles fall in one grid cell: (triangle, cell) pairs in soup order, counted per cell,
+  // then placed.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  pairs.reserve(soup.size() + soup.size() / 2);
   for (std::uint32_t i = 0; i < soup.size(); ++i)
-    grid.for_buckets(soup[i].lo, soup[i].hi, [&](std::size_t b) { grid.items[fill[b]++] = i; });
+    grid.for_buckets(soup[i].lo, soup[i].hi, [&](std::size_t b) {
+      pairs.emplace_back(i, static_cast<std::uint32_t>(b));
+      ++grid.first[b + 1];
+    });
+  for (std::size_t b = 0; b < cells; ++b) grid.first[b + 1] += grid.first[b];
+  grid.items.resize(pairs.size());
+  std::vector<std::uint32_t> fill(grid.first.begin(), grid.first.end() - 1);
+  for (const auto& [i, b] : pairs) grid.items[fill[b]++] = i;
   return grid;
 }
 
