@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <span>
 
 #include "fracture_solid_internal.h"
 
@@ -122,16 +123,49 @@ struct Stop {
   int role = 0;
 };
 
+//! A closed loop of a region's boundary, in the region's plane.
+struct Loop {
+  std::vector<std::uint32_t> ids;
+  std::vector<std::array<double, 2>> xy;
+  double area = 0;
+};
+
+//! fill_region()'s storage, kept from one call to the next on each thread: a strike fills
+//! thousands of regions (every cap, and the part of every cut triangle outside the broken region),
+//! and most are small. Each call clears what it uses first.
+struct FillScratch {
+  std::vector<std::pair<Key, Key>> edges;
+  std::vector<std::pair<Key, Vec3d>> where;
+  std::vector<std::pair<Key, int>> role;
+  std::vector<std::vector<Stop>> on_side;
+  std::vector<Stop> outline;
+  std::vector<char> used;
+  std::vector<Loop> loops;  // the first `loop_count` are in use
+  std::size_t loop_count = 0;
+  std::vector<Key> names;
+  std::vector<std::uint32_t> id_of;
+  std::vector<std::size_t> outer, holes;
+  std::vector<std::vector<std::size_t>> holes_of;
+  std::vector<std::vector<std::array<double, 2>>> hxy;
+  std::vector<std::vector<std::uint32_t>> hid;
+  std::vector<std::array<std::uint32_t, 3>> ids;
+};
+
 }  // namespace
 
 bool fill_region(const RegionInput& in, std::vector<std::array<Key, 3>>& tris,
                  std::vector<std::pair<Key, Vec3d>>& points) {
   const std::size_t n = in.corners.size();
+  thread_local FillScratch scratch;
   // The graph of boundary edges: chains, then the outline's pieces inside the region.
-  std::vector<std::pair<Key, Key>> edges;
+  std::vector<std::pair<Key, Key>>& edges = scratch.edges;
   // Flat maps, sorted by key: a point's position (the first one given wins) and its role.
-  std::vector<std::pair<Key, Vec3d>> where;
-  std::vector<std::pair<Key, int>> role;  // 1: has an outgoing chain edge only, 2: incoming only, 3: both
+  std::vector<std::pair<Key, Vec3d>>& where = scratch.where;
+  std::vector<std::pair<Key, int>>& role =
+      scratch.role;  // 1: outgoing chain edge only, 2: incoming only, 3: both
+  edges.clear();
+  where.clear();
+  role.clear();
   for (const ChainEdge& e : in.chain) {
     edges.emplace_back(e.a, e.b);
     where.emplace_back(e.a, e.pa);
@@ -160,14 +194,17 @@ bool fill_region(const RegionInput& in, std::vector<std::array<Key, 3>>& tris,
     else
       role[roles++] = role[i];
   role.resize(roles);
-  std::vector<std::vector<Stop>> on_side(n);
+  std::vector<std::vector<Stop>>& on_side = scratch.on_side;
+  if (on_side.size() < n) on_side.resize(n);
+  for (std::size_t s = 0; s < n; ++s) on_side[s].clear();
   for (const auto& [k, r] : role) {
     if (r == 3) continue;
     const int s = in.side(k);
     if (s < 0) return false;  // a chain end inside the outline, or on no side of it
     on_side[static_cast<std::size_t>(s)].push_back({k, where[slot(k)].second, r});
   }
-  std::vector<Stop> outline;
+  std::vector<Stop>& outline = scratch.outline;
+  outline.clear();
   for (std::size_t s = 0; s < n; ++s) {
     outline.push_back({in.corners[s], in.corner_pos[s], 0});
     std::vector<Stop>& stops = on_side[s];
@@ -217,17 +254,17 @@ bool fill_region(const RegionInput& in, std::vector<std::array<Key, 3>>& tris,
   std::sort(edges.begin(), edges.end());
   for (std::size_t i = 1; i < edges.size(); ++i)
     if (edges[i].first == edges[i - 1].first) return false;
-  std::vector<char> used(edges.size(), 0);
+  std::vector<char>& used = scratch.used;
+  used.assign(edges.size(), 0);
   Vec3d u, v;
   plane_frame(in.normal, u, v);
-  struct Loop {
-    std::vector<std::uint32_t> ids;
-    std::vector<std::array<double, 2>> xy;
-    double area = 0;
-  };
-  std::vector<Loop> loops;
-  std::vector<Key> names;                                    // id -> key, in the order of first use
-  std::vector<std::uint32_t> id_of(where.size(), kNoPlane);  // by slot in `where`
+  std::vector<Loop>& loop_store = scratch.loops;
+  std::size_t& loop_count = scratch.loop_count;
+  loop_count = 0;
+  std::vector<Key>& names = scratch.names;  // id -> key, in the order of first use
+  names.clear();
+  std::vector<std::uint32_t>& id_of = scratch.id_of;  // by slot in `where`
+  id_of.assign(where.size(), kNoPlane);
   auto id = [&](std::size_t at) {
     if (id_of[at] == kNoPlane) {
       id_of[at] = static_cast<std::uint32_t>(names.size());
@@ -238,7 +275,11 @@ bool fill_region(const RegionInput& in, std::vector<std::array<Key, 3>>& tris,
   const Vec3d origin = in.corner_pos.empty() ? Vec3d{} : in.corner_pos[0];
   for (std::size_t i = 0; i < edges.size(); ++i) {
     if (used[i]) continue;
-    Loop loop;
+    if (loop_count == loop_store.size()) loop_store.emplace_back();
+    Loop& loop = loop_store[loop_count];
+    loop.ids.clear();
+    loop.xy.clear();
+    loop.area = 0;
     std::size_t e = i;
     while (!used[e]) {
       used[e] = 1;
@@ -258,10 +299,11 @@ bool fill_region(const RegionInput& in, std::vector<std::array<Key, 3>>& tris,
       loop.area += p[0] * q[1] - q[0] * p[1];
     }
     if (loop.ids.size() >= 3 || loop.area != 0)
-      loops.push_back(std::move(loop));
+      ++loop_count;
     else if (loop.ids.size() < 3)
       return false;
   }
+  const std::span<const Loop> loops(loop_store.data(), loop_count);
   // Outer loops turn counter-clockwise; each hole goes to the smallest outer loop around it.
   auto contains = [](const Loop& l, const std::array<double, 2>& p) {
     bool odd = false;
@@ -274,9 +316,14 @@ bool fill_region(const RegionInput& in, std::vector<std::array<Key, 3>>& tris,
     }
     return odd;
   };
-  std::vector<std::size_t> outer, holes;
+  std::vector<std::size_t>& outer = scratch.outer;
+  std::vector<std::size_t>& holes = scratch.holes;
+  outer.clear();
+  holes.clear();
   for (std::size_t i = 0; i < loops.size(); ++i) (loops[i].area >= 0 ? outer : holes).push_back(i);
-  std::vector<std::vector<std::size_t>> holes_of(loops.size());
+  std::vector<std::vector<std::size_t>>& holes_of = scratch.holes_of;
+  if (holes_of.size() < loops.size()) holes_of.resize(loops.size());
+  for (std::size_t i = 0; i < loops.size(); ++i) holes_of[i].clear();
   for (std::size_t h : holes) {
     std::size_t best = loops.size();
     for (std::size_t o : outer) {
@@ -293,13 +340,16 @@ bool fill_region(const RegionInput& in, std::vector<std::array<Key, 3>>& tris,
     if (best == loops.size()) return false;
     holes_of[best].push_back(h);
   }
-  std::vector<std::array<std::uint32_t, 3>> ids;
+  std::vector<std::array<std::uint32_t, 3>>& ids = scratch.ids;
+  ids.clear();
+  std::vector<std::vector<std::array<double, 2>>>& hxy = scratch.hxy;
+  std::vector<std::vector<std::uint32_t>>& hid = scratch.hid;
   for (std::size_t o : outer) {
-    std::vector<std::vector<std::array<double, 2>>> hxy;
-    std::vector<std::vector<std::uint32_t>> hid;
-    for (std::size_t h : holes_of[o]) {
-      hxy.push_back(loops[h].xy);
-      hid.push_back(loops[h].ids);
+    hxy.resize(holes_of[o].size());
+    hid.resize(holes_of[o].size());
+    for (std::size_t k = 0; k < holes_of[o].size(); ++k) {
+      hxy[k].assign(loops[holes_of[o][k]].xy.begin(), loops[holes_of[o][k]].xy.end());
+      hid[k].assign(loops[holes_of[o][k]].ids.begin(), loops[holes_of[o][k]].ids.end());
     }
     if (!triangulate_with_holes(loops[o].xy, loops[o].ids, hxy, hid, ids)) return false;
   }

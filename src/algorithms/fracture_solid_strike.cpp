@@ -77,24 +77,86 @@ bool overlaps(const SoupTriangle& t, const float lo[3], const float hi[3]) {
   return true;
 }
 
-//! The soup's triangles of each face, in face order (the soup is made in that order), and the
-//! soup's vertices: each triangle's corners as indices into a list of its mesh vertices (in the
-//! order of first use; the numbering stays inside the strike).
+//! A uniform grid over the soup's box: each cell of the grid lists, in increasing order, the soup
+//! triangles whose boxes meet it. A box query visits the grid cells the box meets; every triangle
+//! whose box meets the query box is listed in one of them (the cell of a coordinate is a monotone
+//! function of it, so two boxes that meet share a cell).
+struct SoupGrid {
+  double origin[3] = {0, 0, 0}, scale[3] = {0, 0, 0};
+  int n[3] = {1, 1, 1};
+  std::vector<std::uint32_t> first;  // per grid cell (x fastest), then one past the last
+  std::vector<std::uint32_t> items;
+
+  int cell(float x, int a) const {
+    // Clamped first, then truncated: for the values left (0 and up) that is the floor.
+    const double c = (double(x) - origin[a]) * scale[a];
+    return c <= 0 ? 0 : (c >= n[a] ? n[a] - 1 : int(c));
+  }
+  //! Calls fn(b) for the buckets (grid cells) the box [lo, hi] meets.
+  template <typename Fn>
+  void for_buckets(const float lo[3], const float hi[3], Fn&& fn) const {
+    const int x0 = cell(lo[0], 0), x1 = cell(hi[0], 0), y0 = cell(lo[1], 1), y1 = cell(hi[1], 1);
+    const int z0 = cell(lo[2], 2), z1 = cell(hi[2], 2);
+    for (int z = z0; z <= z1; ++z)
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) fn(static_cast<std::size_t>((z * n[1] + y) * n[0] + x));
+  }
+};
+
+//! A grid of about sqrt(soup.size()) / 2 cells along the box's widest side (at most 32): a surface
+//! through the box meets a few triangles per grid cell.
+SoupGrid grid_soup(const std::vector<SoupTriangle>& soup) {
+  SoupGrid grid;
+  if (soup.empty()) {
+    grid.first.assign(2, 0);
+    return grid;
+  }
+  float lo[3], hi[3];
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = soup[0].lo[a];
+    hi[a] = soup[0].hi[a];
+  }
+  for (const SoupTriangle& t : soup)
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], t.lo[a]);
+      hi[a] = std::max(hi[a], t.hi[a]);
+    }
+  const double side = std::clamp(std::sqrt(double(soup.size())) / 2, 1.0, 32.0);
+  double widest = 0;
+  for (int a = 0; a < 3; ++a) widest = std::max(widest, double(hi[a]) - lo[a]);
+  for (int a = 0; a < 3; ++a) {
+    const double extent = double(hi[a]) - lo[a];
+    grid.origin[a] = lo[a];
+    grid.n[a] = widest > 0 ? std::max(1, int(std::ceil(side * extent / widest))) : 1;
+    grid.scale[a] = extent > 0 ? grid.n[a] / extent : 0;
+  }
+  const std::size_t cells = std::size_t(grid.n[0]) * grid.n[1] * grid.n[2];
+  grid.first.assign(cells + 1, 0);
+  // Most triangles fall in one grid cell: (triangle, cell) pairs in soup order, counted per cell,
+  // then placed.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  pairs.reserve(soup.size() + soup.size() / 2);
+  for (std::uint32_t i = 0; i < soup.size(); ++i)
+    grid.for_buckets(soup[i].lo, soup[i].hi, [&](std::size_t b) {
+      pairs.emplace_back(i, static_cast<std::uint32_t>(b));
+      ++grid.first[b + 1];
+    });
+  for (std::size_t b = 0; b < cells; ++b) grid.first[b + 1] += grid.first[b];
+  grid.items.resize(pairs.size());
+  std::vector<std::uint32_t> fill(grid.first.begin(), grid.first.end() - 1);
+  for (const auto& [i, b] : pairs) grid.items[fill[b]++] = i;
+  return grid;
+}
+
+//! The soup's vertices: each triangle's corners as indices into a list of its mesh vertices (in
+//! the order of first use; the numbering stays inside the strike).
 struct SoupIndex {
-  std::vector<Face> faces;           // sorted
-  std::vector<std::uint32_t> first;  // faces.size() + 1 entries
-  std::vector<Index> vertices;       // unique
+  std::vector<Index> vertices;  // unique
   std::vector<std::array<std::uint32_t, 3>> corner;
 };
 
 SoupIndex index_soup(const std::vector<SoupTriangle>& soup) {
   SoupIndex x;
-  for (std::uint32_t t = 0; t < soup.size(); ++t)
-    if (x.faces.empty() || x.faces.back() != soup[t].face) {
-      x.faces.push_back(soup[t].face);
-      x.first.push_back(t);
-    }
-  x.first.push_back(static_cast<std::uint32_t>(soup.size()));
   // An open-addressing table mesh vertex -> number, only looked up (never iterated), so the
   // numbering is the order of first use.
   std::size_t size = 16;
@@ -134,27 +196,31 @@ struct PolygonList {
 };
 
 //! Per soup vertex, the first half-space of the polytope at hand it lies outside of (the number of
-//! half-spaces if none), computed once per polytope (stamped) with the test clip_triangle() makes.
+//! half-spaces if none), computed once per polytope (stamped) with the test clip_triangle() makes;
+//! and the soup triangles listed for the polytope's box so far (stamped too).
 struct FirstOut {
   std::vector<std::uint32_t> first;
   std::vector<std::uint32_t> stamp;
+  std::vector<std::uint32_t> listed;
+  std::vector<std::uint32_t> triangles;
   std::uint32_t current = 0;
 };
 
-//! The clipped polygons of the soup triangles in a convex polytope: the triangles of the faces the
-//! picking tree finds in the polytope's box, so a cell costs its own triangles. Most of them lie
-//! wholly inside the polytope or outside one of its half-spaces: their corners' classification
-//! (shared by the triangles around a vertex) decides them as clip_triangle() would, and only the
-//! triangles a plane crosses are clipped.
-void clip_all(const StrikeInput& in, const Geometry& g, const SoupIndex& index, const Polytope& cell,
+//! The clipped polygons of the soup triangles in a convex polytope, in soup order: the triangles
+//! whose boxes meet the polytope's box, found through the soup's grid, so a cell costs its own
+//! triangles. Most of them lie wholly inside the polytope or outside one of its half-spaces: their
+//! corners' classification (shared by the triangles around a vertex) decides them as
+//! clip_triangle() would, and only the triangles a plane crosses are clipped.
+void clip_all(const Geometry& g, const SoupIndex& index, const SoupGrid& grid, const Polytope& cell,
               double margin, FirstOut& masks, PolygonList& out) {
   float lo[3], hi[3];
   cell.box(margin, lo, hi);
   std::vector<HalfSpace> planes;
   for (const Polytope::Side& s : cell.faces) planes.push_back(s.h);
-  if (masks.stamp.size() != index.vertices.size()) {
+  if (masks.stamp.size() != index.vertices.size() || masks.listed.size() != index.corner.size()) {
     masks.stamp.assign(index.vertices.size(), 0);
     masks.first.assign(index.vertices.size(), 0);
+    masks.listed.assign(index.corner.size(), 0);
     masks.current = 0;
   }
   ++masks.current;
@@ -169,40 +235,44 @@ void clip_all(const StrikeInput& in, const Geometry& g, const SoupIndex& index, 
     }
     return masks.first[v];
   };
-  std::vector<Face> faces;
-  in.tree.faces_in_box({lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}, faces);
-  for (Face f : faces) {
-    const auto it = std::lower_bound(index.faces.begin(), index.faces.end(), f);
-    if (it == index.faces.end() || *it != f) continue;
-    const std::size_t k = static_cast<std::size_t>(it - index.faces.begin());
-    for (std::uint32_t t = index.first[k]; t < index.first[k + 1]; ++t) {
-      const SoupTriangle& tri = (*g.soup)[t];
-      if (!overlaps(tri, lo, hi)) continue;
-      const auto& c = index.corner[t];
-      const std::uint32_t a = first_out(c[0]), b = first_out(c[1]), d = first_out(c[2]);
-      if (a == none && b == none && d == none) {
-        // Inside every half-space: clip_triangle() would return the triangle as it is.
-        ClipPolygon& p = out.next();
-        p.triangle = t;
-        p.keys.clear();
-        p.pos.clear();
-        p.support.clear();
-        for (int i = 0; i < 3; ++i) {
-          p.keys.push_back({Key::vertex, tri.v[i], 0, 0});
-          p.pos.push_back(g.vertex(tri.v[i]));
-          p.support.push_back(kNoPlane);
-        }
-        ++out.size;
-        continue;
-      }
-      // The first half-space a corner leaves is the first that changes the triangle (the corners
-      // lie inside the ones before); when every corner leaves it, clip_triangle() would return
-      // nothing.
-      if (a == b && b == d) continue;
-      ClipPolygon& poly = out.next();
-      clip_triangle(g, t, planes, poly);
-      if (!poly.keys.empty()) ++out.size;
+  // The triangles whose boxes meet the box, in soup order: the order the pieces' faces take.
+  std::vector<std::uint32_t>& list = masks.triangles;
+  list.clear();
+  grid.for_buckets(lo, hi, [&](std::size_t b) {
+    for (std::uint32_t i = grid.first[b]; i < grid.first[b + 1]; ++i) {
+      const std::uint32_t t = grid.items[i];
+      if (masks.listed[t] == masks.current || !overlaps((*g.soup)[t], lo, hi)) continue;
+      masks.listed[t] = masks.current;
+      list.push_back(t);
     }
+  });
+  std::sort(list.begin(), list.end());
+  for (const std::uint32_t t : list) {
+    const SoupTriangle& tri = (*g.soup)[t];
+    const auto& c = index.corner[t];
+    const std::uint32_t a = first_out(c[0]), b = first_out(c[1]), d = first_out(c[2]);
+    if (a == none && b == none && d == none) {
+      // Inside every half-space: clip_triangle() would return the triangle as it is.
+      ClipPolygon& p = out.next();
+      p.triangle = t;
+      p.keys.clear();
+      p.pos.clear();
+      p.support.clear();
+      for (int i = 0; i < 3; ++i) {
+        p.keys.push_back({Key::vertex, tri.v[i], 0, 0});
+        p.pos.push_back(g.vertex(tri.v[i]));
+        p.support.push_back(kNoPlane);
+      }
+      ++out.size;
+      continue;
+    }
+    // The first half-space a corner leaves is the first that changes the triangle (the corners
+    // lie inside the ones before); when every corner leaves it, clip_triangle() would return
+    // nothing.
+    if (a == b && b == d) continue;
+    ClipPolygon& poly = out.next();
+    clip_triangle(g, t, planes, poly);
+    if (!poly.keys.empty()) ++out.size;
   }
 }
 
@@ -431,13 +501,13 @@ struct CellScratch {
   std::vector<std::uint32_t> corner;
 };
 
-void piece_of(const StrikeInput& in, const Geometry& g, const SoupIndex& index, const Polytope& cell,
-              double margin, CellScratch& scratch, CellWork& w) {
+void piece_of(const StrikeInput& in, const Geometry& g, const SoupIndex& index, const SoupGrid& grid,
+              const Polytope& cell, double margin, CellScratch& scratch, CellWork& w) {
   if (cell.empty()) return;
   try {
     Clock::time_point t = Clock::now();
     scratch.polys.clear();
-    clip_all(in, g, index, cell, margin, scratch.masks, scratch.polys);
+    clip_all(g, index, grid, cell, margin, scratch.masks, scratch.polys);
     w.seconds_clip += seconds_since(t);
     PieceDraft& d = w.draft;
     add_polygons(scratch.polys.view(), d.surface);
@@ -477,6 +547,7 @@ bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, doubl
     }
   strike.soup = make_soup(in.mesh, faces);
   const SoupIndex index = index_soup(strike.soup);
+  const SoupGrid grid = grid_soup(strike.soup);
   Geometry g{&in.mesh, &strike.planes, &strike.soup, nullptr};
   const double margin = 1e-6 * in.region_radius;
   strike.seconds_cells += seconds_since(t);
@@ -497,7 +568,7 @@ bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, doubl
       [&](std::size_t begin, std::size_t end) {
         CellScratch scratch;
         for (std::size_t k = begin; k < end; ++k)
-          piece_of(in, g, index, cells[order[k]], margin, scratch, work[order[k]]);
+          piece_of(in, g, index, grid, cells[order[k]], margin, scratch, work[order[k]]);
       },
       2, parts);
   double clip_cpu = 0, cap_cpu = 0;
@@ -526,7 +597,7 @@ bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, doubl
 
   // The patch: the touched triangles' parts outside P, and P's caps turned inwards.
   polys.clear();
-  clip_all(in, g, index, region, margin, masks, polys);
+  clip_all(g, index, grid, region, margin, masks, polys);
   strike.seconds_clip += seconds_since(t);
   KeyedSurface caps;
   if (!cap_polytope(in, region, polys.view(), caps, strike.failure)) return false;

@@ -138,6 +138,8 @@ struct FaceBvh::Builder {
 
   void run(Index root) {
     const std::size_t first_new_node = t.nodes_.size();
+    t.leaf_of_.resize(t.entries_.size(), kInvalidIndex);
+    t.parent_.resize(t.nodes_.size(), kInvalidIndex);
     std::vector<Task> tasks{{root, 0, Index(items.size()), bounds(0, Index(items.size()))}};
     while (!tasks.empty()) {
       const Task task = tasks.back();
@@ -149,12 +151,15 @@ struct FaceBvh::Builder {
       if (s.mid == task.begin) {
         node.index = first + task.begin;
         node.count = task.end - task.begin;
+        std::fill(t.leaf_of_.begin() + node.index, t.leaf_of_.begin() + node.index + node.count, task.node);
         continue;
       }
       const Index children = static_cast<Index>(t.nodes_.size());
       node.index = children;
       node.count = 0;
       t.nodes_.resize(t.nodes_.size() + 2);  // invalidates `node`
+      t.parent_.resize(t.nodes_.size());
+      t.parent_[children] = t.parent_[children + 1] = task.node;
       tasks.push_back({children + 1, s.mid, task.end, s.right});
       tasks.push_back({children, task.begin, s.mid, s.left});
     }
@@ -238,6 +243,9 @@ void FaceBvh::build_tree(const SurfaceMesh& mesh, const BvhOptions& options) {
   entries_.clear();
   height_.clear();
   young_.clear();
+  parent_.clear();
+  leaf_of_.clear();
+  dirty_.clear();
   slot_of_face_.assign(mesh.face_slots(), kInvalidIndex);
   entries_.reserve(mesh.n_faces());
   for (Face f : mesh.faces()) entries_.push_back(make_entry(f));
@@ -249,13 +257,18 @@ void FaceBvh::build_tree(const SurfaceMesh& mesh, const BvhOptions& options) {
   if (live_ > 0) {
     nodes_.reserve(live_ + 1);  // enough for leaves of two faces on average; trimmed below
     nodes_.resize(1);
+    parent_.assign(1, kInvalidIndex);
     build_subtree(0, static_cast<Index>(entries_.size()), 0);
     nodes_.shrink_to_fit();
     height_.shrink_to_fit();
     young_.shrink_to_fit();
+    parent_.shrink_to_fit();
   }
   height_at_build_ = nodes_.empty() ? 0 : height_[0];
   closed_ = -1;
+  bounds_lo_[0] = 0;
+  bounds_hi_[0] = -1;  // empty until grown
+  grow_bounds();
   update_slack();
 }
 
@@ -287,21 +300,28 @@ void FaceBvh::update_slack() {
   // Absolute slack for distances near zero, where the double triangle code's error is absolute
   // (about 1e-16 of the squared extent); this is far larger and still negligible.
   slack_sq_ = 0;
+  if (nodes_.empty() || !(bounds_lo_[0] <= bounds_hi_[0])) return;
+  double diag2 = 0;
+  for (int a = 0; a < 3; ++a) diag2 += sq(double(bounds_hi_[a]) - bounds_lo_[a]);
+  slack_sq_ = diag2 * 1e-12;
+}
+
+void FaceBvh::grow_bounds() {
   if (nodes_.empty()) return;
   const Node& r = nodes_[0];
   if (!(r.lo[0] <= r.hi[0])) return;
-  double diag2 = 0;
-  for (int a = 0; a < 3; ++a) diag2 += sq(double(r.hi[a]) - r.lo[a]);
-  slack_sq_ = diag2 * 1e-12;
+  const bool was_empty = !(bounds_lo_[0] <= bounds_hi_[0]);
+  for (int a = 0; a < 3; ++a) {
+    bounds_lo_[a] = was_empty ? r.lo[a] : std::min(bounds_lo_[a], r.lo[a]);
+    bounds_hi_[a] = was_empty ? r.hi[a] : std::max(bounds_hi_[a], r.hi[a]);
+  }
 }
 
 BoundingBox FaceBvh::bounds() const {
   BoundingBox box;
-  if (empty()) return box;
-  const Node& r = nodes_[0];
-  if (!(r.lo[0] <= r.hi[0])) return box;
-  box.min = {r.lo[0], r.lo[1], r.lo[2]};
-  box.max = {r.hi[0], r.hi[1], r.hi[2]};
+  if (empty() || !(bounds_lo_[0] <= bounds_hi_[0])) return box;
+  box.min = {bounds_lo_[0], bounds_lo_[1], bounds_lo_[2]};
+  box.max = {bounds_hi_[0], bounds_hi_[1], bounds_hi_[2]};
   box.empty = false;
   return box;
 }

@@ -102,8 +102,9 @@ struct BvhOptions {
   BvhSplit split = BvhSplit::sah;
   //! Most faces in a leaf (1..255); a node with that many or fewer is a leaf.
   unsigned max_leaf_size = 4;
-  //! update() rebuilds the whole tree when the dead (removed or replaced) face slots exceed this
-  //! fraction of all slots. Smaller keeps queries at full speed, larger makes updates cheaper.
+  //! update() reclaims the dead (removed or replaced) face slots when they exceed this fraction of
+  //! all slots: it compacts the tree in one pass, without a build (see FaceBvh::update). Smaller
+  //! keeps the tree smaller, larger makes updates cheaper.
   double rebuild_fraction = 0.25;
 };
 
@@ -140,6 +141,7 @@ class FaceBvh {
     unsigned height = 0;                //!< edges on the longest root-to-leaf path
     unsigned height_at_build = 0;       //!< the same right after the last full build
     std::size_t builds = 0;             //!< full builds so far (the constructor's included)
+    std::size_t compactions = 0;        //!< update() reclaiming dead slots without a build, so far
     std::size_t inserted_subtrees = 0;  //!< update() placements next to a node, since construction
     std::size_t merged_subtrees = 0;    //!< update() merges into a young subtree, since construction
   };
@@ -184,12 +186,16 @@ class FaceBvh {
   //!   as removed; duplicates are allowed.
   //! \param removed faces deleted from the mesh (or no longer to be found). Unknown faces are ignored.
   //!
-  //! Removed and replaced entries are tombstoned (their boxes shrink at the next refit() or build);
-  //! the new ones go into a small subtree placed near where they belong, so repeated edits in one
-  //! spot stay cheap. Cost, for k faces: O(k log k + height), plus a rebuild of the whole tree,
-  //! O(n log n), when the tombstoned slots exceed options.rebuild_fraction of all slots or the height
-  //! exceeds 2 * stats().height_at_build + 16: amortised, a few microseconds per changed face (see
-  //! bench/locate). Batch the faces of many local operations into one call where you can.
+  //! Removed and replaced entries are tombstoned and the boxes of their leaves, and of the nodes
+  //! above them up to where a box stops changing, are refitted at once; the new ones go into a small
+  //! subtree placed near where they belong, so repeated edits in one spot stay cheap. Cost, for k
+  //! faces: O(k log k + k height). When the tombstoned slots exceed options.rebuild_fraction of all
+  //! slots they are reclaimed by a compaction, O(n) without sorting: the live entries close up in
+  //! their leaves, and leaves left without a face are cut out of the tree. The whole tree is rebuilt,
+  //! O(n log n), only when its quality has degraded: its height exceeds
+  //! 2 * stats().height_at_build + 16, or the node slots cut out or orphaned since the last build
+  //! outnumber the nodes in use. Batch the faces of many local operations into one call where you
+  //! can.
   //! \pre Faces not listed kept their corners and positions; moved vertices need refit() (or their
   //!   faces listed here).
   //! \throw InvalidInputError for a handle that is not a face slot of the mesh, or after a reset
@@ -231,14 +237,14 @@ class FaceBvh {
   //! sorted by index: the faces that may meet a region inside the box. O(log n + k) expected for
   //! k faces found. Nothing for an empty tree or a box that is empty or not finite.
   void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<Face>& out) const;
-  //! The root's box, which holds every face the tree answers for (after update() it may be
-  //! larger than their tight box): O(1). False, with lo and hi untouched, for an empty tree.
+  //! The same box as bounds() below, which holds every face the tree answers for (after update() it
+  //! may be larger than their tight box): O(1). False, with lo and hi untouched, for an empty tree.
   bool bounds(Vec3& lo, Vec3& hi) const;
   bool empty() const { return nodes_.empty() || live_ == 0; }
   //! The root's box: it covers every face the tree answers for. After update() it may still cover
-  //! faces removed since the last build or refit() (their boxes shrink then), so it never shrinks
-  //! between two builds as pieces are taken away. Empty for a tree without faces. O(1), so a caller
-  //! gets the size of the mesh without a pass over its vertices. (BoundingBox: algorithms/geometry.h.)
+  //! faces removed since the last build, refit() or compaction (it shrinks to the faces' box then),
+  //! so it never shrinks in between as pieces are taken away. Empty for a tree without faces. O(1), so a
+  //! caller gets the size of the mesh without a pass over its vertices. (BoundingBox: algorithms/geometry.h.)
   BoundingBox bounds() const;
   //! Whether every edge of the mesh has a face on both sides (no boundary half-edge): a pass over
   //! the half-edges, O(H), the first time it is asked after a build or after an update() that took
@@ -284,6 +290,13 @@ class FaceBvh {
   void insert_entries(Index first_entry, Index count);
   void refit_leaf(Index node);
   void refit_internal(Index node);
+  //! Refits the leaves in dirty_ and the nodes above them, up to where a box stops changing.
+  void refit_dirty();
+  //! Drops the tombstones, cuts leaves without a live face out of the tree, refits the internal
+  //! nodes and makes bounds() tight. O(nodes + entries).
+  void compact();
+  //! bounds() grown to the root's box.
+  void grow_bounds();
   void set_height(Index node);
   void update_slack();
   void check_fresh() const;
@@ -298,6 +311,14 @@ class FaceBvh {
   std::vector<Index> young_;
   //! Face index -> slot in entries_, kInvalidIndex when the face is not in the tree.
   std::vector<Index> slot_of_face_;
+  //! Each node's parent (kInvalidIndex for the root; stale for orphaned nodes).
+  std::vector<Index> parent_;
+  //! Each entry slot's leaf (stale for slots of orphaned leaves).
+  std::vector<Index> leaf_of_;
+  //! Leaves update() tombstoned entries of, to refit (scratch).
+  std::vector<Index> dirty_;
+  //! What bounds() reports: the root's box at the last build, refit() or compaction, grown since.
+  float bounds_lo_[3] = {0, 0, 0}, bounds_hi_[3] = {-1, -1, -1};
   std::size_t live_ = 0;
   std::size_t dead_ = 0;
   std::size_t orphan_nodes_ = 0;
@@ -314,6 +335,7 @@ class FaceBvh {
   int closed_ = -1;
   Halfedge first_boundary_{};
   std::size_t builds_ = 0;
+  std::size_t compactions_ = 0;
   std::size_t inserted_ = 0;
   std::size_t merged_ = 0;
   //! Absolute slack of the distance pruning, from the root box's size.
