@@ -1,7 +1,7 @@
 // Same-process comparison of hedge with OpenMesh and CGAL Surface_mesh on the same meshes, and with
 // meshoptimizer's simplifier for the decimation.
 //
-//   peers [--json] [--quick] [--reps N] [--strict] [--only SEL] [--root DIR] [mesh ...]
+//   peers [--json] [--quick] [--reps N] [--strict] [--cpu-time] [--only SEL] [--root DIR] [mesh ...]
 //
 // A mesh is a file path, optionally suffixed ":subN" for N rounds of 1-to-4 subdivision. Without
 // meshes: armadillo.obj, igea.ply and armadillo.obj:sub2 from ../shared/meshes (relative to the
@@ -24,6 +24,11 @@
 // --only runs a subset (e.g. `--only hedge:split` under a profiler): operations not selected are
 // left out of the table, the JSON and the bars; backends not selected for an operation read n/a
 // there, and a backend no selected operation uses is not built (its bytes per vertex read n/a).
+//
+// --cpu-time times the samples by the process's CPU time (user + system) instead of the wall clock.
+// On a machine busy with other work, a wall-clock sample also counts the time the other processes
+// ran; pinned to one core (taskset -c N, where hedge runs on one thread too) the CPU time is the
+// time the process itself ran. Without pinning it adds up the threads of a parallel step.
 //
 // Adding an operation: one entry in kOps (peers.h) plus one function per backend (bench_common.h).
 // The files: peers.h (the operations, their bars and the result types), peers_run.cpp (the timed
@@ -60,11 +65,14 @@ std::pair<double, long> machine_load() {
 
 void usage() {
   std::cerr
-      << "usage: peers [--json] [--quick] [--reps N] [--strict] [--only SEL] [--root DIR] [mesh[:subN] ...]\n"
+      << "usage: peers [--json] [--quick] [--reps N] [--strict] [--cpu-time] [--only SEL] [--root DIR]\n"
+         "             [mesh[:subN] ...]\n"
          "  --json    print the figures as one JSON object on stdout\n"
          "  --quick   3 rounds per operation (a smoke run)\n"
          "  --reps N  N rounds per operation\n"
          "  --strict  exit with 1 when a bar fails\n"
+         "  --cpu-time  time each sample by the process's CPU time (user + system) instead of the wall\n"
+         "            clock: on a loaded machine, pinned to one core (taskset -c N), the time it ran\n"
          "  --only    run only these: comma-separated OP or LIB:OP (e.g. split or hedge:split,cgal:split);\n"
          "            LIB is hedge, openmesh, cgal or meshopt; OP is build, one_ring, vertex_normals,\n"
          "            vertex_normals_builtin, face_normals, face_normals_builtin, corner_normals,\n"
@@ -88,6 +96,8 @@ int main(int argc, char** argv) {
       opt.quick = true;
     else if (a == "--strict")
       opt.strict = true;
+    else if (a == "--cpu-time")
+      opt.cpu_time = true;
     else if (a == "--reps" && i + 1 < argc)
       opt.reps = std::atoi(argv[++i]);
     else if (a == "--decimate-ratio" && i + 1 < argc) {
@@ -159,10 +169,12 @@ int main(int argc, char** argv) {
   }
 
   const auto [load, cpus] = machine_load();
-  if (!opt.json)
+  if (!opt.json) {
     std::printf(
         "load average %.2f on %ld processors%s\n", load, cpus,
         load > static_cast<double>(cpus) ? " (busy machine: expect noisy medians; ratios are same-run)" : "");
+    if (opt.cpu_time) std::printf("times are the process's CPU time (--cpu-time), not the wall clock\n");
+  }
 
   std::vector<MeshResult> results;
   for (const std::string& spec : opt.meshes) {
@@ -248,6 +260,7 @@ int main(int argc, char** argv) {
     json bj = json::array();
     for (const Backend& b : backends) bj.push_back({{"key", b.key}, {"label", b.label}, {"notes", b.notes}});
     j["backends"] = bj;
+    if (opt.cpu_time) j["clock"] = "process CPU time, user + system (--cpu-time)";
     j["load_average_at_start"] = std::isnan(load) ? json(nullptr) : json(load);
     j["processors"] = cpus;
     json mj = json::array();

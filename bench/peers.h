@@ -123,6 +123,8 @@ struct Options {
   bool json = false;
   bool quick = false;
   bool strict = false;
+  //! --cpu-time: samples timed by the process's CPU time (user + system), not the wall clock.
+  bool cpu_time = false;
   int reps = 0;
   std::string root;
   std::vector<std::string> meshes;
