@@ -4,7 +4,7 @@
 // it, and they must not be recompiled when hedge's headers change.
 //
 // A library taking part ("backend") is a build function plus a table of named operations. Adding an
-// operation to the comparison means: one entry in kOps (peers.cpp), and one function per backend,
+// operation to the comparison means: one entry in kOps (peers.h), and one function per backend,
 // registered in that backend's `ops` map (peer_hedge.cpp, peer_openmesh.cpp, peer_cgal.cpp). A
 // backend without the entry shows "n/a" for it.
 #pragma once
@@ -63,14 +63,14 @@ struct OpImpl {
   //! Untimed, before every repetition. May return a private working mesh (e.g. a copy for an
   //! editing operation); null means: run on the reference mesh.
   std::unique_ptr<MeshBox> (*prepare)(const MeshBox& reference) = nullptr;
-  //! Timed. Returns a checksum that must agree across backends (see OpSpec in peers.cpp).
+  //! Timed. Returns a checksum that must agree across backends (see OpSpec in peers.h).
   double (*run)(Context& ctx) = nullptr;
   //! Untimed, after the warm-up run of an editing operation: the library's own validity checks on
   //! the edited mesh, plus its element counts against the reference mesh and `checksum` (what run
   //! returned). Returns an empty string if all is well, else what is wrong.
   std::string (*check)(const MeshBox& reference, const MeshBox& edited, double checksum) = nullptr;
   //! Untimed, after the warm-up run: the edited mesh as arrays (live elements only, compacted), whose
-  //! distance to the input is the operation's quality (see OpSpec::quality_factor in peers.cpp).
+  //! distance to the input is the operation's quality (see OpSpec::quality_factor in peers.h).
   Input (*result)(const MeshBox& edited) = nullptr;
 };
 

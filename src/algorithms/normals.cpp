@@ -121,11 +121,35 @@ void scatter_face_normals(const Arrays& a, NormalWeighting w, Vec3* sum, const V
   }
 }
 
+// How many faces ahead write_unit_normals asks for the corners' positions.
+constexpr std::size_t kAhead = 12;
+
+// out[f] = the unit normal of every live face f, in float (zero if degenerate); deleted faces'
+// slots are left as they are. On a mesh larger than the cache the corners' positions come from
+// memory, and a face's own loads only start once its half-edges are read, so that few would be
+// under way at a time: the positions of face f + kAhead are asked for while face f is computed.
+void write_unit_normals(const Arrays& a, Vec3* out) {
+  const std::size_t n = a.n_faces;
+  const Vec3* p = a.p;
+  const Vertex* to = a.to;
+  const Halfedge* next = a.next;
+  const Halfedge* fhe = a.fhe;
+  for (std::size_t f = 0; f < n; ++f) {
+    const std::size_t g = f + kAhead;
+    if (g < n && a.live(g)) {
+      const Index h0 = fhe[g].idx(), h1 = next[h0].idx(), h2 = next[h1].idx();
+      __builtin_prefetch(p + to[h0].idx());
+      __builtin_prefetch(p + to[h1].idx());
+      __builtin_prefetch(p + to[h2].idx());
+    }
+    if (a.live(f)) out[f] = unit_or_zero_float(area_vector_float(a, fhe[f].idx()));
+  }
+}
+
 // Unit normals of every face slot, in float (zero for deleted and degenerate faces).
 std::vector<Vec3> unit_face_normals(const Arrays& a) {
   std::vector<Vec3> n(a.n_faces, Vec3{0, 0, 0});
-  for (std::size_t f = 0; f < a.n_faces; ++f)
-    if (a.live(f)) n[f] = unit_or_zero_float(area_vector_float(a, a.fhe[f].idx()));
+  write_unit_normals(a, n.data());
   return n;
 }
 
@@ -142,10 +166,7 @@ Vec3 face_normal(const SurfaceMesh& mesh, Face f) { return to_float(unit_or_zero
 FaceProperty<Vec3> compute_face_normals(SurfaceMesh& mesh, std::string_view name) {
   require_finite_positions(mesh, "compute_face_normals");
   FaceProperty<Vec3> prop = mesh.face_property<Vec3>(name);
-  const Arrays a(mesh);
-  Vec3* out = prop.vector().data();
-  for (std::size_t f = 0; f < a.n_faces; ++f)
-    if (a.live(f)) out[f] = unit_or_zero_float(area_vector_float(a, a.fhe[f].idx()));
+  write_unit_normals(Arrays(mesh), prop.vector().data());
   mark_all_faces(mesh);
   return prop;
 }

@@ -23,16 +23,23 @@ namespace {
 
 struct Split {
   std::size_t nv = 0, ne = 0, nf = 0;
-  std::vector<Index> first;  // per face, and the total at the end
-  std::vector<Index> ring;   // face half-edges in face order: ring[first[f] + k] = h_k
+  std::vector<Index> first;    // per face, and the total at the end
+  std::vector<Index> ring;     // face half-edges in face order: ring[first[f] + k] = h_k
+  std::vector<Vertex> corner;  // corner[c] = to(ring[c]), gathered with ring
+  std::vector<Index> q;        // per half-edge: its c (filled for sqrt(3) only)
 };
 
-Split face_rings(const SurfaceMesh& m) {
+// The rings of m's faces. With `triangles` (the caller checked that every face is one), first[f]
+// is 3f without walking the faces; with `with_q`, q[ring[c]] = c (boundary half-edges' entries
+// stay unset and are never read). One walk of each face gathers its half-edges and their targets,
+// so that the passes after it read them in order rather than through the half-edge arrays.
+Split face_rings(const SurfaceMesh& m, bool triangles, bool with_q) {
   Split s;
   s.nv = m.vertex_slots();
   s.ne = m.edge_slots();
   s.nf = m.face_slots();
-  const std::vector<Halfedge>& next = m.halfedge_next_array();
+  const Halfedge* next = m.halfedge_next_array().data();
+  const Vertex* to = m.halfedge_vertex_array().data();
   auto degree = [&](std::size_t f) {
     const Halfedge start = m.halfedge(Face(Index(f)));
     Index n = 0;
@@ -43,15 +50,21 @@ Split face_rings(const SurfaceMesh& m) {
   };
   s.first.resize(s.nf + 1);
   for_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t f = begin; f < end; ++f) s.first[f + 1] = degree(f);
+    for (std::size_t f = begin; f < end; ++f) s.first[f + 1] = triangles ? 3 : degree(f);
   });
   s.first[0] = 0;
   for (std::size_t f = 0; f < s.nf; ++f) s.first[f + 1] += s.first[f];
   s.ring.resize(s.first[s.nf]);
+  s.corner.resize(s.ring.size());
+  if (with_q) s.q.resize(2 * s.ne);
   for_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
       Halfedge h = m.halfedge(Face(Index(f)));
-      for (Index c = s.first[f]; c < s.first[f + 1]; ++c, h = next[h.idx()]) s.ring[c] = h.idx();
+      for (Index c = s.first[f]; c < s.first[f + 1]; ++c, h = next[h.idx()]) {
+        s.ring[c] = h.idx();
+        s.corner[c] = to[h.idx()];
+        if (with_q) s.q[h.idx()] = c;
+      }
     }
   });
   return s;
@@ -61,15 +74,15 @@ Split face_rings(const SurfaceMesh& m) {
 // A vertex on two or more sharp edges (boundary or "e:crease") stays, but for a boundary vertex
 // whose two boundary edges are both split in this step (`split`): it moves by the ternary cubic
 // B-spline rule (4 prev + 19 p + 4 next) / 27 along its boundary.
-std::vector<Vec3> sqrt3_positions(const SurfaceMesh& m, const std::vector<std::uint8_t>& sharp,
-                                  const std::vector<std::uint8_t>& split) {
-  std::vector<Vec3> out(m.vertex_slots());
+// Writes out[v] for every vertex slot v of m (out is the refined mesh's positions, not m's).
+void sqrt3_positions(const SurfaceMesh& m, const std::vector<std::uint8_t>& sharp,
+                     const std::vector<std::uint8_t>& split, Vec3* out) {
   const Vec3* p = m.positions().vector().data();
   const std::vector<Vertex>& to = m.halfedge_vertex_array();
   const std::vector<Halfedge>& next = m.halfedge_next_array();
   double alphas[32];
   for (std::size_t n = 1; n < 32; ++n) alphas[n] = (4 - 2 * std::cos(2 * std::numbers::pi / double(n))) / 9;
-  for_ranges(out.size(), [&](std::size_t begin, std::size_t end) {
+  for_ranges(m.vertex_slots(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v) {
       out[v] = p[v];
       const Halfedge start = m.halfedge(Vertex(Index(v)));
@@ -94,7 +107,6 @@ std::vector<Vec3> sqrt3_positions(const SurfaceMesh& m, const std::vector<std::u
       out[v] = to_float(to_double(p[v]) * (1 - a) + ring * (a / double(n)));
     }
   });
-  return out;
 }
 
 // The boundary split of an even sqrt(3) step (Kobbelt's boundary rule). After an odd step every
@@ -250,15 +262,15 @@ void apply_boundary_split(SurfaceMesh& m, const SurfaceMesh& src, const Split& s
 }  // namespace
 
 SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3, bool split_boundary) {
-  const Split s = face_rings(src);
+  // sqrt(3) is only called on triangle meshes (subdivide() checks).
+  const Split s = face_rings(src, sqrt3, sqrt3);
   const std::size_t nc = s.ring.size();
   const Index E = Index(s.ne), V = Index(s.nv);
   // Which edges are sharp and stay unflipped (boundary and crease edges), which boundary edges an
-  // even sqrt(3) step splits, and each half-edge's q.
+  // even sqrt(3) step splits.
   std::vector<std::uint8_t> sharp;
   BoundarySplit bsplit;
-  std::vector<Index> q;
-  std::vector<Vec3> smoothed;
+  const std::vector<Index>& q = s.q;
   if (sqrt3) {
     sharp.resize(s.ne);
     const auto crease = src.get_edge_property<std::uint8_t>("e:crease");
@@ -267,38 +279,51 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3, bool split_bou
         sharp[e] = src.is_boundary(Edge(Index(e))) || (crease && crease[Edge(Index(e))] != 0);
     });
     if (split_boundary) bsplit = find_boundary_split(src, s, sharp);
-    q.resize(2 * s.ne);  // boundary half-edges' entries are never read
-    for_ranges(nc, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) q[s.ring[i]] = Index(i);
-    });
-    smoothed = sqrt3_positions(src, sharp, bsplit.split);
   }
-  // Face centroids, summed in double as face_centroid() does.
-  std::vector<Vec3> centres(s.nf);
-  for_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
-    const Vec3* p = src.positions().vector().data();
-    const std::vector<Vertex>& to = src.halfedge_vertex_array();
-    for (std::size_t f = begin; f < end; ++f) {
-      Vec3d c{0, 0, 0};
-      for (Index i = s.first[f]; i < s.first[f + 1]; ++i) c += to_double(p[to[s.ring[i]].idx()]);
-      centres[f] = to_float(c / double(s.first[f + 1] - s.first[f]));
-    }
-  });
 
   // Old vertices, edges and half-edges keep their index, links and properties; the links of the
-  // old half-edges of faces and the old vertices' outgoing half-edges are rewritten below.
+  // old half-edges of faces are rewritten below. Positions go straight into the result: the old
+  // vertices' (smoothed by sqrt(3)), then the face centroids, summed in double as face_centroid()
+  // does.
   const std::size_t nb = bsplit.faces.size();
   SurfaceMesh m = refined_like(src, s.nv + s.nf + nb, s.ne + nc + nb, nc, s.nv);
-  for_ranges(2 * s.ne, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t h = begin; h < end; ++h) {
-      m.set_vertex(Halfedge(Index(h)), src.to_vertex(Halfedge(Index(h))));
-      m.set_next(Halfedge(Index(h)), src.next(Halfedge(Index(h))));
-      m.set_face(Halfedge(Index(h)), src.face(Halfedge(Index(h))));
+  Vec3* pos = m.positions().vector().data();
+  const Vec3* old_pos = src.positions().vector().data();
+  if (sqrt3)
+    sqrt3_positions(src, sharp, bsplit.split, pos);
+  else
+    std::copy(old_pos, old_pos + s.nv, pos);
+  const Vertex* old_to = src.halfedge_vertex_array().data();
+  const Halfedge* old_next = src.halfedge_next_array().data();
+  const Face* old_face = src.halfedge_face_array().data();
+  const Halfedge* old_out = src.vertex_halfedge_array().data();
+  for_ranges(s.nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      Vec3d c{0, 0, 0};
+      for (Index i = s.first[f]; i < s.first[f + 1]; ++i) c += to_double(old_pos[s.corner[i].idx()]);
+      pos[s.nv + f] = to_float(c / double(s.first[f + 1] - s.first[f]));
     }
   });
+  // By value: a store through the mesh's arrays could otherwise make E be read again each time.
+  auto in = [E](Index c) { return Halfedge(2 * (E + c)); };
+  auto out = [E](Index c) { return Halfedge(2 * (E + c) + 1); };
+  // Every old half-edge keeps its target unless sqrt(3) flips it below; the face loop links the
+  // half-edges of faces, so only boundary half-edges keep their old next here (and their face,
+  // invalid as the resize left it).
+  for_ranges(2 * s.ne, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t h = begin; h < end; ++h) {
+      m.set_vertex(Halfedge(Index(h)), old_to[h]);
+      if (!old_face[h].is_valid()) m.set_next(Halfedge(Index(h)), old_next[h]);
+    }
+  });
+  // An old vertex leaves by its old half-edge, or, if sqrt(3) flips that (an interior edge), by
+  // the spoke of the edge's twin.
   for_ranges(s.nv, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t v = begin; v < end; ++v)
-      m.set_halfedge(Vertex(Index(v)), src.halfedge(Vertex(Index(v))));
+    for (std::size_t v = begin; v < end; ++v) {
+      const Halfedge o = old_out[v];
+      const bool flipped = sqrt3 && o.is_valid() && old_face[o.idx()].is_valid() && !sharp[o.idx() >> 1];
+      m.set_halfedge(Vertex(Index(v)), flipped ? in(q[o.idx() ^ 1u]) : o);
+    }
   });
   {
     const PropertyContainer& hfrom = src.halfedge_properties();
@@ -310,50 +335,38 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3, bool split_bou
     if (!eto.empty())
       for (std::size_t e = 0; e < s.ne; ++e) eto.copy_element_from(efrom, e, e);
   }
-  auto in = [&](Index c) { return Halfedge(2 * (E + c)); };
-  auto out = [&](Index c) { return Halfedge(2 * (E + c) + 1); };
   for_ranges(s.nf, [&](std::size_t f_begin, std::size_t f_end) {
     for (std::size_t f = f_begin; f < f_end; ++f) {
       const Index b = s.first[f], n = s.first[f + 1] - b;
       const Vertex centre(V + Index(f));
-      // The corners first: sqrt(3) turns to(h_k) toward the centre below.
       for (Index k = 0; k < n; ++k) {
-        const Halfedge h(s.ring[b + k]);
-        m.set_vertex(in(b + k), centre);
-        m.set_vertex(out(b + k), m.to_vertex(h));
-      }
-      for (Index k = 0; k < n; ++k) {
-        const Index c = b + k, cp = b + (k + n - 1) % n;
-        const Halfedge h(s.ring[c]);
+        const Index c = b + k, cp = k == 0 ? b + n - 1 : c - 1;
+        const Index h = s.ring[c];
         const Face child(c);
-        Halfedge lead = in(c);  // the half-edge before h's successor: in(c) when split
-        if (sqrt3 && !sharp[h.idx() >> 1]) {
-          lead = in(q[h.idx() ^ 1u]);
-          m.set_vertex(h, centre);
-          m.set_next(lead, h);
-          m.set_next(h, out(cp));
+        m.set_vertex(in(c), centre);
+        m.set_vertex(out(c), s.corner[c]);
+        if (sqrt3 && !sharp[h >> 1]) {
+          // Flipped: h now runs from the far face's centre to this one's, after that face's spoke
+          // in(q(twin h)).
+          const Halfedge lead = in(q[h ^ 1u]);
+          m.set_vertex(Halfedge(h), centre);
+          m.set_next(lead, Halfedge(h));
+          m.set_next(Halfedge(h), out(cp));
+          m.set_next(out(cp), lead);
+          m.set_face(lead, child);
         } else {
-          m.set_next(h, lead);
-          m.set_next(lead, out(cp));
+          m.set_next(Halfedge(h), in(c));
+          m.set_next(in(c), out(cp));
+          m.set_next(out(cp), Halfedge(h));
+          m.set_face(in(c), child);
         }
-        m.set_next(out(cp), sqrt3 && !sharp[h.idx() >> 1] ? lead : h);
-        m.set_face(h, child);
-        m.set_face(lead, child);
+        m.set_face(Halfedge(h), child);
         m.set_face(out(cp), child);
-        m.set_halfedge(child, h);
+        m.set_halfedge(child, Halfedge(h));
       }
       m.set_halfedge(centre, out(b));
     }
   });
-  // An interior old vertex whose outgoing half-edge was flipped leaves by the spoke of that edge's twin.
-  if (sqrt3)
-    for_ranges(s.nv, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t v = begin; v < end; ++v) {
-        const Halfedge o = m.halfedge(Vertex(Index(v)));
-        if (o.is_valid() && !m.is_boundary(o) && !sharp[o.idx() >> 1])
-          m.set_halfedge(Vertex(Index(v)), in(q[o.idx() ^ 1u]));
-      }
-    });
 
   // Properties. Vertex: the centre averages its face's corners. Corner: in(q) enters the centre and
   // averages the face's own corners; out(q - 1) enters from(h_k) and takes the corner before h_k;
@@ -385,9 +398,6 @@ SurfaceMesh refine_at_centres(const SurfaceMesh& src, bool sqrt3, bool split_bou
     for (std::size_t f = 0; f < s.nf; ++f)
       for (Index c = s.first[f]; c < s.first[f + 1]; ++c)
         fprops.copy_element_from(src.face_properties(), f, c);
-  for (std::size_t f = 0; f < s.nf; ++f) m.position(Vertex(V + Index(f))) = centres[f];
-  for (std::size_t v = 0; v < s.nv; ++v)
-    m.position(Vertex(Index(v))) = sqrt3 ? smoothed[v] : src.position(Vertex(Index(v)));
   apply_boundary_split(m, src, s, bsplit, sharp);
   return m;
 }

@@ -86,6 +86,37 @@ TEST(Normals, PolygonsWeighByAreaAndRemovedFacesAddNothing) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+// More faces than the loop reads ahead, some removed: every live face gets face_normal's value
+// (the grid is bent over a paraboloid, so that the faces' normals differ), and the removed faces'
+// slots keep what they held.
+TEST(Normals, FaceNormalsOfAManyFacedMeshSkipRemovedFaces) {
+  IndexedMesh in = test::grid(8, true);
+  for (Vec3& p : in.positions) p.z = 0.05f * (p.x * p.x + 2 * p.y * p.y);
+  SurfaceMesh m = build(in);
+  ASSERT_EQ(m.n_faces(), 128u);
+  FaceProperty<Vec3> n = compute_face_normals(m);
+  const Vec3 mark{7, 7, 7};
+  int removed = 0;
+  for (Index f = 20; f < 128 && removed < 4; f += 17) {
+    if (!can_remove_face(m, Face(f))) continue;
+    remove_face(m, Face(f));
+    n[Face(f)] = mark;
+    ++removed;
+  }
+  ASSERT_EQ(removed, 4);
+  ASSERT_TRUE(m.has_garbage());
+  compute_face_normals(m);
+  for (std::size_t f = 0; f < m.face_slots(); ++f) {
+    if (m.is_deleted(Face(Index(f)))) {
+      EXPECT_EQ(n[Face(Index(f))], mark) << "face " << f;
+      continue;
+    }
+    expect_near(n[Face(Index(f))], face_normal(m, Face(Index(f))));
+    EXPECT_NEAR(double(norm(to_double(n[Face(Index(f))]))), 1.0, 1e-6);
+  }
+  EXPECT_TRUE(m.validate().empty());
+}
+
 TEST(Normals, CornerNormalsSplitAtCreases) {
   SurfaceMesh m = build(to_indexed(build(test::cube()), {.triangulation = Triangulation::fan}));
   // 30 degrees: every edge of the cube is a crease, so every corner gets its face's normal.
