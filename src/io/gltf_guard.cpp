@@ -250,6 +250,7 @@ class Scanner {
   // those outside an accessor's `sparse` object. It keeps every other checked value in 32 signed
   // bits, which would wrap a larger one into another, valid looking index.
   bool is_size() const {
+    if (frames_.empty()) return false;  // a bare number as the whole document
     const Frame& f = frames_.back();
     if (f.array ||
         !(f.key == "byteOffset" || f.key == "byteLength" || f.key == "byteStride" || f.key == "count"))

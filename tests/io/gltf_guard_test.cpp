@@ -267,6 +267,9 @@ TEST(GltfGuard, IndicesThatAreNotWholeOrTooLargeNameTheirElement) {
   doc["accessors"][1]["sparse"] = {{"count", std::uint64_t{1} << 32},
                                    {"indices", {{"bufferView", 1}, {"componentType", 5123}}}};
   EXPECT_HAS(message(doc.dump()), "accessor 1: sparse.count is 4294967296");
+  // A bare number as the whole document has no element to name: it is no glTF.
+  EXPECT_HAS(message("4294967295"), "m.gltf");
+  EXPECT_HAS(message("1.5"), "m.gltf");
   // Offsets and counts outside `sparse` are kept in 64 bits: the reader checks them against the data.
   doc = document();
   doc["accessors"][0]["byteOffset"] = std::uint64_t{1} << 32;
