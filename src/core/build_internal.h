@@ -187,6 +187,8 @@ class MeshBuilder {
   void link(SurfaceMesh& m);
   bool fans_are_simple(SurfaceMesh& m);
   void split_fans(SurfaceMesh& m);
+  //! The half-edge before interior half-edge h in its face: from prev_, or by walking the face.
+  Halfedge prev_interior(const SurfaceMesh& m, Halfedge h) const;
   void link_boundaries(SurfaceMesh& m);
   void attach_attributes(SurfaceMesh& m) const;
 
@@ -209,6 +211,7 @@ class MeshBuilder {
   build_detail::CornerArray corner_he_;
   std::vector<Halfedge> vh_;         // vertex -> half-edge of its last corner (moved into the mesh)
   std::vector<Index> boundary_hes_;  // boundary half-edges, found by fans_are_simple()
+  std::vector<Index> prev_;          // polygons: interior half-edge -> the one before it in its face
   bool fans_checked_ = false;        // link() walked the fans already ...
   bool fans_simple_ = false;         // ... and found one fan at every vertex
   Index n_edges_ = 0;

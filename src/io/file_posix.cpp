@@ -42,6 +42,12 @@ std::string read_file(const std::string& path) {
   struct stat st {};
   if (::fstat(fd.get(), &st) != 0) throw IoError(path, 0, -1, "cannot stat: " + errno_text(errno));
   if (S_ISDIR(st.st_mode)) throw IoError(path, 0, -1, "cannot read: it is a directory");
+  // A device never ends (/dev/zero, /dev/urandom) or is no mesh: reading one would take memory
+  // without bound. Regular files and pipes are read.
+  if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode))
+    throw IoError(path, 0, -1,
+                  std::string("cannot read: it is a ") + (S_ISCHR(st.st_mode) ? "character" : "block") +
+                      " device, not a file");
   std::string data;
   // The size is only a hint (pipes report 0, a file may grow): read until end of file. One byte
   // more than the size lets the first read() reach the end and the second one confirm it.

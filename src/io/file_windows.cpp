@@ -182,6 +182,9 @@ std::string read_file(const std::string& path) {
   WinHandle file(CreateFileW(w.c_str(), GENERIC_READ, kShareAll, nullptr, OPEN_EXISTING,
                              FILE_ATTRIBUTE_NORMAL, nullptr));
   if (!file.valid()) throw IoError(path, 0, -1, "cannot open: " + error_text(GetLastError()));
+  // A device (CON, a serial port) is no mesh and may never end: as on POSIX, only files and pipes.
+  if (GetFileType(file.get()) == FILE_TYPE_CHAR)
+    throw IoError(path, 0, -1, "cannot read: it is a character device, not a file");
   // The size is only a hint (a file may grow): read until end of file.
   LARGE_INTEGER size{};
   std::string data;

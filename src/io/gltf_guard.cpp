@@ -31,6 +31,9 @@ constexpr std::uint64_t kCostPerObject = 768;
 constexpr std::uint64_t kCostPerArray = 128;
 constexpr std::uint64_t kCostPerValue = 320;
 
+// The largest index, enum or sparse offset or count a glTF may hold: tinygltf keeps them as int.
+constexpr std::uint64_t kMaxGltfIndex = 2147483647;
+
 // glTF properties whose values are indices, offsets, counts or enums: none may be negative.
 bool is_unsigned_property(std::string_view key) {
   static constexpr std::string_view kKeys[] = {
@@ -101,15 +104,18 @@ class Scanner {
   bool null() { return value(); }
   bool boolean(bool) { return value(); }
   bool number_integer(std::int64_t v) {
-    if (v < 0) negative(std::to_string(v));
+    if (v < 0) refuse(std::to_string(v), "it must be 0 or more");
     return value();
   }
   bool number_unsigned(std::uint64_t v) {
     if (in_buffer() && key_is("byteLength")) buffer_.byte_length = v;
+    if (v > kMaxGltfIndex && !is_size())
+      refuse(std::to_string(v), "it must be at most " + str(kMaxGltfIndex));
     return value();
   }
   bool number_float(double v, const std::string& text) {
-    if (v < 0) negative(text);
+    refuse(text, v < 0 ? "it must be 0 or more"
+                       : "it must be a whole number, written without a point or an exponent");
     return value();
   }
   bool string(std::string& s) {
@@ -231,14 +237,33 @@ class Scanner {
     return "'" + head + ",...'";
   }
 
-  void negative(const std::string& text) {
-    if (frames_.empty() || frames_.back().opaque) return;
+  // True when the current value is an index, offset, count or enum (see is_unsigned_property).
+  bool is_checked() const {
+    if (frames_.empty() || frames_.back().opaque) return false;
     const Frame& f = frames_.back();
-    const bool checked = f.array
-                             ? frames_.size() >= 2 && is_index_array(frames_[frames_.size() - 2].key)
-                             : is_unsigned_property(f.key) ||
-                                   (frames_.size() >= 2 && frames_[frames_.size() - 2].key == "attributes");
-    if (checked) throw IoError(name_, 0, -1, where() + " is " + text + "; it must be 0 or more");
+    return f.array ? frames_.size() >= 2 && is_index_array(frames_[frames_.size() - 2].key)
+                   : is_unsigned_property(f.key) ||
+                         (frames_.size() >= 2 && frames_[frames_.size() - 2].key == "attributes");
+  }
+
+  // True for a byte offset, length or stride or an element count that tinygltf keeps in 64 bits:
+  // those outside an accessor's `sparse` object. It keeps every other checked value in 32 signed
+  // bits, which would wrap a larger one into another, valid looking index.
+  bool is_size() const {
+    if (frames_.empty()) return false;  // a bare number as the whole document
+    const Frame& f = frames_.back();
+    if (f.array ||
+        !(f.key == "byteOffset" || f.key == "byteLength" || f.key == "byteStride" || f.key == "count"))
+      return false;
+    for (const Frame& outer : frames_)
+      if (!outer.array && outer.key == "sparse") return false;
+    return true;
+  }
+
+  // Refuses a checked value: negative, not a whole number (tinygltf would take it for a missing
+  // property and silently use the default), or too large for tinygltf to keep.
+  void refuse(const std::string& text, const std::string& why) {
+    if (is_checked()) throw IoError(name_, 0, -1, where() + " is " + text + "; " + why);
   }
 
   // The index the current value (or container being opened) takes in array frame j.

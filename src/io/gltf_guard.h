@@ -1,8 +1,9 @@
 // What a glTF must pass before tinygltf sees it. tinygltf trusts its input: it recurses once per
 // level of JSON nesting, allocates a model whatever its size, and opens any path a buffer names.
 // So the JSON is scanned first, in one pass that allocates nothing per value (a SAX parse): its
-// depth, its negative indices and offsets, an estimate of what parsing it will allocate, and its
-// buffers; and the only files tinygltf may then open are the external buffers this guard approved.
+// depth, its indices and offsets that are negative, fractional or too large for tinygltf, an estimate of what
+// parsing it will allocate, and its buffers; and the only files tinygltf may then open are the external
+// buffers this guard approved.
 #pragma once
 
 #include <cstdint>
@@ -34,8 +35,10 @@ struct GltfScan {
 };
 
 //! Frames a GLB and scans the JSON. \throw IoError for malformed JSON or GLB framing, nesting
-//! deeper than kMaxJsonDepth, a negative index, offset, count or mode, or a data URI that is not
-//! base64 application/octet-stream or application/gltf-buffer or whose size is not its byteLength.
+//! deeper than kMaxJsonDepth, an index, offset, count or mode that is negative, not written as a
+//! whole number or (but for a byte offset, length or stride or a count) above 2^31 - 1, or a data
+//! URI that is not base64 application/octet-stream or application/gltf-buffer or whose size is not
+//! its byteLength.
 //! O(data size) time; allocates O(depth) plus the buffers' declarations.
 GltfScan scan_gltf(std::string_view data, const std::string& name);
 

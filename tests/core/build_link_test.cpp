@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -131,6 +132,47 @@ TEST(Build, RepairSplitsBowTie) {
   EXPECT_EQ(m.boundary_loops().size(), 2u);
   for (Vertex v : m.vertices()) EXPECT_TRUE(m.is_manifold(v));
   EXPECT_TRUE(m.validate().empty());
+}
+
+// Two polygons of `n` corners each on a circle, touching at vertex 0 (a bow tie of polygons), or
+// one polygon when `two` is false.
+IndexedMesh big_polygons(std::size_t n, bool two) {
+  IndexedMesh in;
+  in.positions.push_back({0, 0, 0});
+  for (int side : {1, -1}) {
+    if (side < 0 && !two) break;
+    const Index first = static_cast<Index>(in.positions.size());
+    in.indices.push_back(0);
+    for (std::size_t k = 1; k < n; ++k) {
+      const double a = 3.14159 * static_cast<double>(k) / static_cast<double>(n);
+      in.positions.push_back(
+          {static_cast<float>(side * (1 - std::cos(a))), static_cast<float>(std::sin(a)), 0});
+      in.indices.push_back(first + static_cast<Index>(k - 1));
+    }
+    in.face_sizes.push_back(static_cast<Index>(n));
+  }
+  return in;
+}
+
+// Every corner of a large polygon is on the boundary, and the walk about each one needs the
+// half-edge before it: found by walking the face, that was n^2 steps (minutes for this polygon).
+TEST(Build, LargePolygonsAreLinkedAndSplitWithoutWalkingTheirFaces) {
+  constexpr std::size_t kCorners = 200000;
+  SurfaceMesh m = build(big_polygons(kCorners, false));
+  EXPECT_EQ(m.n_faces(), 1u);
+  EXPECT_EQ(m.n_edges(), kCorners);
+  ASSERT_EQ(m.boundary_loops().size(), 1u);
+  EXPECT_TRUE(m.validate().empty());
+
+  // Two of them pinched at vertex 0: the second fan gets a copy of the vertex.
+  BuildReport rep;
+  SurfaceMesh pinched = build(big_polygons(kCorners, true), repair(), &rep);
+  EXPECT_EQ(rep.non_manifold_vertices, 1u);
+  EXPECT_EQ(rep.duplicated_vertices, 1u);
+  EXPECT_EQ(pinched.n_vertices(), 2 * kCorners);
+  EXPECT_EQ(pinched.boundary_loops().size(), 2u);
+  for (Vertex v : pinched.vertices()) EXPECT_TRUE(pinched.is_manifold(v));
+  EXPECT_TRUE(pinched.validate().empty());
 }
 
 }  // namespace

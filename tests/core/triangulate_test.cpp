@@ -105,6 +105,28 @@ TEST(Triangulate, FanApexIsTheFirstCornerUnlessThatFanFolds) {
             2u);
 }
 
+TEST(Triangulate, FanApexOfALargePolygonIsOneOfSixtyFourCorners) {
+  // The L hexagon with 1,000 corners on each side: only corners in its inner square see all of it,
+  // the notch (corner 2,000) first; trying all 6,000 would cost 36 million tilts.
+  const std::vector<Vec3d> hexagon{{2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}, {0, 0, 0}};
+  constexpr std::size_t kSide = 1000;
+  std::vector<Vec3d> p;
+  for (std::size_t e = 0; e < 6; ++e)
+    for (std::size_t i = 0; i < kSide; ++i) {
+      const double t = static_cast<double>(i) / kSide;
+      p.push_back(hexagon[e] * (1 - t) + hexagon[(e + 1) % 6] * t);
+    }
+  const std::size_t n = p.size(), k = fan_apex(p);
+  bool candidate = false;
+  for (std::size_t j = 0; j < 64; ++j) candidate |= k == j * n / 64;
+  EXPECT_TRUE(candidate) << k;
+  // The corner chosen is in the inner square, on the left or the bottom side: its fan does not fold.
+  EXPECT_EQ(k, 48 * n / 64);  // (0, 1), the first candidate there
+  const Vec3d up{0, 0, 1};
+  for (std::size_t i = 1; i + 1 < n; ++i)
+    EXPECT_GE(dot(cross(p[(k + i) % n] - p[k], p[(k + i + 1) % n] - p[k]), up), -1e-12) << i;
+}
+
 TEST(Triangulate, FanStartNamesTheApexOfAFace) {
   IndexedMesh in;
   in.positions = {{0, 0, 0}, {2, 1, 0}, {0, 2, 0}, {0.5f, 1, 0}, {5, 0, 0},

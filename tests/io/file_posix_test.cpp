@@ -211,6 +211,21 @@ TEST_F(FileTest, AtomicWriteRefusesAFifoAndADevice) {
   EXPECT_EQ(listing(), (std::vector<std::string>{"null.obj", "pipe.obj"}));
 }
 
+TEST_F(FileTest, ReadingRefusesADeviceThatWouldNeverEnd) {
+  // Through a link named like a mesh: /dev/zero would fill the memory before its end of file.
+  fs::create_symlink("/dev/zero", path("zero.obj"));
+  const IoError e = expect_io_error([&] { read_file(path("zero.obj")); }, "is a character device");
+  EXPECT_EQ(e.path(), path("zero.obj"));
+  expect_io_error([&] { read_indexed_file(path("zero.obj")); }, "cannot read: it is a character device");
+  // A pipe is read to its end.
+  int fds[2];
+  ASSERT_EQ(::pipe(fds), 0);
+  ASSERT_EQ(::write(fds[1], "v 0 0 0\n", 8), 8);
+  ::close(fds[1]);
+  EXPECT_EQ(read_file("/dev/fd/" + std::to_string(fds[0])), "v 0 0 0\n");
+  ::close(fds[0]);
+}
+
 TEST_F(FileTest, AtomicWriteThroughALinkReplacesTheFileItLeadsTo) {
   put(path("real.obj"), "old");
   fs::permissions(path("real.obj"), fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);

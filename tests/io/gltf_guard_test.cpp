@@ -244,6 +244,43 @@ TEST(GltfGuard, NegativeOffsetsIndicesAndModesNameTheirElement) {
   EXPECT_EQ(read_gltf(doc.dump(), "m.gltf").positions[0].x, -1.0f);
 }
 
+// tinygltf takes an index written with a point or an exponent for a missing one, and wraps one past
+// 2^31 - 1 into 32 bits: either would read another mesh than the file's without a word.
+TEST(GltfGuard, IndicesThatAreNotWholeOrTooLargeNameTheirElement) {
+  json doc = document();
+  doc["accessors"][0]["byteOffset"] = 1.5;
+  EXPECT_HAS(message(doc.dump()), "m.gltf: accessor 0: byteOffset is 1.5; it must be a whole number");
+  doc = document();
+  doc["meshes"][0]["primitives"][0]["indices"] = 1.0;
+  EXPECT_HAS(message(doc.dump()), "mesh 0 primitive 0: indices is 1.0; it must be a whole number");
+  doc = document();
+  doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = std::uint64_t{1} << 32;
+  EXPECT_HAS(message(doc.dump()),
+             "mesh 0 primitive 0: attributes.POSITION is 4294967296; it must be at most 2147483647");
+  doc = document();
+  doc["nodes"][0]["mesh"] = (std::uint64_t{1} << 32) + 0;
+  EXPECT_HAS(message(doc.dump()), "node 0: mesh is 4294967296");
+  doc = document();
+  doc["scenes"][0]["nodes"] = {std::uint64_t{1} << 31};
+  EXPECT_HAS(message(doc.dump()), "scene 0: nodes[0] is 2147483648");
+  doc = document();
+  doc["accessors"][1]["sparse"] = {{"count", std::uint64_t{1} << 32},
+                                   {"indices", {{"bufferView", 1}, {"componentType", 5123}}}};
+  EXPECT_HAS(message(doc.dump()), "accessor 1: sparse.count is 4294967296");
+  // A bare number as the whole document has no element to name: it is no glTF.
+  EXPECT_HAS(message("4294967295"), "m.gltf");
+  EXPECT_HAS(message("1.5"), "m.gltf");
+  // Offsets and counts outside `sparse` are kept in 64 bits: the reader checks them against the data.
+  doc = document();
+  doc["accessors"][0]["byteOffset"] = std::uint64_t{1} << 32;
+  EXPECT_HAS(message(doc.dump()), "accessor 0: 3 elements of 12 bytes (stride 12) from byte 4294967296");
+  // Numbers glTF allows to be fractional or large, and anything inside extras, are read.
+  doc = document();
+  doc["nodes"][0]["scale"] = {1.5, 1.0, 1e0};
+  doc["extras"] = {{"count", 0.5}, {"mesh", std::uint64_t{1} << 40}};
+  EXPECT_EQ(read_gltf(doc.dump(), "m.gltf").positions[1].x, 1.5f);
+}
+
 // --- data URIs -----------------------------------------------------------------------------------
 
 TEST(GltfGuard, DataUrisMustBeBase64BuffersOfTheirByteLength) {

@@ -32,7 +32,9 @@ void triangulate_polygon(std::span<const Vec3d> p, std::vector<std::array<Index,
 //! points against the polygon's Newell normal, as where a non-planar quad is split along the wrong
 //! diagonal); then the corner whose fan's most tilted triangle (smallest cosine of the angle
 //! between its normal and the Newell normal, a degenerate triangle counting 0) is least tilted,
-//! the smallest such k on ties. Planar convex polygons keep corner 0. O(n^2), O(1) for n = 3.
+//! the smallest such k on ties. Planar convex polygons keep corner 0. Polygons of more than 64
+//! corners choose among 64 corners spread evenly, k = j n / 64 for j = 0..63, so that the cost stays
+//! O(n), as the faces of a hostile file may be huge. O(n) for n <= 64, O(64 n) above; O(1) for n = 3.
 std::size_t fan_apex(std::span<const Vec3d> p);
 
 //! The half-edge of face f that points to its fan's apex (fan_apex() of its corners in the order
