@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "decimate_checks.h"
 #include "decimate_internal.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/core/edge_operations.h"
@@ -31,8 +32,11 @@ namespace hedge {
 namespace {
 
 using Mesh = SurfaceMesh;
+using detail::decimation::check_input;
+using detail::decimation::kRemovedWeight;
 using detail::decimation::prefetch;
 using detail::decimation::Quadric;
+using detail::decimation::removed_distance2;
 
 // A collapse in a flat region (its error at most kFlat times its edge's squared length, a
 // root-mean-square distance of 1/1000 of the edge) may not make a face whose quality,
@@ -47,37 +51,6 @@ constexpr double kMinQuality = 0.1, kFlat = 1e-6;
 // Passes run while the mesh has more than kGreedyFrom times the target's vertices (or faces); then
 // true greedy order (Decimator::collapse_greedy).
 constexpr std::size_t kGreedyFrom = 3;
-
-std::string vertex_name(Vertex v) { return "vertex " + std::to_string(v.idx()); }
-
-void check(const Mesh& m, const DecimateOptions& o) {
-  auto non_negative = [](double x, const char* name) {
-    if (!(x >= 0) || !std::isfinite(x))
-      throw InvalidInputError(std::string("decimate: ") + name + " must be finite and not negative, got " +
-                              std::to_string(x));
-  };
-  if (!(o.max_error >= 0))
-    throw InvalidInputError("decimate: max_error must not be negative or NaN, got " +
-                            std::to_string(o.max_error));
-  non_negative(o.boundary_weight, "boundary_weight");
-  non_negative(o.feature_weight, "feature_weight");
-  non_negative(o.feature_angle_degrees, "feature_angle_degrees");
-  non_negative(o.attribute_weight, "attribute_weight");
-  if (!(o.max_normal_change_degrees > 0 && o.max_normal_change_degrees <= 180))
-    throw InvalidInputError("decimate: max_normal_change_degrees must be in (0, 180], got " +
-                            std::to_string(o.max_normal_change_degrees));
-  for (Face f : m.faces())
-    if (m.valence(f) != 3)
-      throw InvalidInputError("decimate: face " + std::to_string(f.idx()) + " has " +
-                              std::to_string(m.valence(f)) +
-                              " corners; decimation needs triangles (triangulate first)");
-  require_finite_positions(m, "decimate");
-  for (Vertex v : m.vertices()) {
-    if (!m.is_manifold(v))
-      throw InvalidInputError("decimate: " + vertex_name(v) +
-                              " is not manifold (its faces form more than one fan)");
-  }
-}
 
 // The state of one decimation: per-vertex quadrics, pass stamps and flags, the candidates of the
 // pass, and the scratch lists of one collapse, all allocated once.
@@ -319,7 +292,7 @@ bool Decimator::placement(Halfedge h, Vec3d& p, double& cost) const {
   }
   // The cost and the checks see the point as it will be stored.
   p = to_double(to_float(p));
-  cost = error_at(q, p);
+  cost = std::max(error_at(q, p), kRemovedWeight * removed_distance2(m_, h, p));
   return true;
 }
 
@@ -698,7 +671,7 @@ DecimateResult Decimator::run() {
 }  // namespace
 
 DecimateResult decimate(SurfaceMesh& mesh, const DecimateOptions& options) {
-  check(mesh, options);
+  check_input(mesh, options);
   Decimator d(mesh, options);
   return d.run();
 }
