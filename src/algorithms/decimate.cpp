@@ -133,6 +133,7 @@ class Decimator {
   HalfedgeProperty<Vec2> uv_;
   EdgeProperty<std::uint8_t> crease_;
   bool seams_ = false;
+  bool tail_ = false;  // near the target: the removed positions' distance counts
   double min_cos_ = 0, max_cost_ = 0, tiny_area2_ = 0;
   std::size_t initial_ = 0;  // collapses needed at the start
 
@@ -292,7 +293,9 @@ bool Decimator::placement(Halfedge h, Vec3d& p, double& cost) const {
   }
   // The cost and the checks see the point as it will be stored.
   p = to_double(to_float(p));
-  cost = std::max(error_at(q, p), kRemovedWeight * removed_distance2(m_, h, p));
+  // The distance counts only where it exceeds the quadric's error: the search may stop below that.
+  const double e = error_at(q, p);
+  cost = !tail_ ? e : std::max(e, kRemovedWeight * removed_distance2(m_, h, p, e / kRemovedWeight));
   return true;
 }
 
@@ -610,6 +613,7 @@ DecimateResult Decimator::run() {
   const bool endless = o_.target_vertices == 0 && o_.target_faces == 0;
   for (std::uint32_t pass = 1;; ++pass) {
     classify();
+    if (!tail_ && near_target()) tail_ = rerank_all = true;
     // Rank: every live edge's best collapse within the error limit.
     // Only edges at a vertex that survived a collapse in the last pass need a new ranking: no
     // other vertex's quadric, position or class has changed.

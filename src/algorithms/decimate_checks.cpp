@@ -47,19 +47,23 @@ void check_input(const SurfaceMesh& m, const DecimateOptions& o) {
   }
 }
 
-double removed_distance2(const SurfaceMesh& m, Halfedge h, const Vec3d& p) {
+double removed_distance2(const SurfaceMesh& m, Halfedge h, const Vec3d& p, double limit) {
   const Face fl = m.face(h), fr = m.face(SurfaceMesh::twin(h));
   const Vec3 xa = m.position(m.from_vertex(h)), xb = m.position(m.to_vertex(h)), x = to_float(p);
   const bool moved = !(x == xb);
   double da = std::numeric_limits<double>::infinity(), db = moved ? da : 0.0;
+  const bool can_stop = std::isfinite(limit);
   for (const Halfedge start : {h, SurfaceMesh::twin(h)}) {
     Halfedge o = start;
     do {
       const Face f = m.face(o);
       if (f.is_valid() && f != fl && f != fr) {
         const Vec3 b = m.position(m.to_vertex(o)), c = m.position(m.to_vertex(m.next(o)));
-        da = std::min(da, closest_point_on_triangle(xa, x, b, c).squared_distance);
-        if (moved) db = std::min(db, closest_point_on_triangle(xb, x, b, c).squared_distance);
+        if (!can_stop || da > limit)
+          da = std::min(da, closest_point_on_triangle(xa, x, b, c).squared_distance);
+        if (!can_stop || db > limit)
+          db = std::min(db, closest_point_on_triangle(xb, x, b, c).squared_distance);
+        if (can_stop && da <= limit && db <= limit) return std::max(da, db);
       }
       o = m.rotate_cw(o);
     } while (o != start);

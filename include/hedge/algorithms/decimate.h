@@ -5,11 +5,12 @@
 //  - Each face contributes the quadric of its plane, weighted by its area; a vertex's quadric is the
 //    sum over its faces, and a collapse's is the sum of its two ends'. The error of a collapse is
 //    sqrt(Q(p) / W): the root-mean-square distance, in model units, of the surviving point p from
-//    the planes the two ends gathered (W: their total weight), or, if larger, sqrt(1/5) times the
-//    distance from each position the collapse removes (the merged-away end's, and the survivor's
-//    if it moves) to the nearest new face around the survivor. Plane quadrics underrate removing a
-//    thin feature (the planes of a horn run almost through its base) and bridging a notch; the
-//    second term measures both, and is 0 on a flat region.
+//    the planes the two ends gathered (W: their total weight), or, if larger and near the target
+//    (in the greedy order below), sqrt(1/5) times the distance from each position the collapse
+//    removes (the merged-away end's, and the survivor's if it moves) to the nearest new face
+//    around the survivor. Plane quadrics underrate removing a thin feature (the planes of a horn
+//    run almost through its base) and bridging a notch; the second term measures both, and is 0
+//    on a flat region.
 //  - The surviving point minimises the quadric in the directions it determines: from the edge's
 //    midpoint, along the eigenvectors of the quadric's 3x3 matrix whose eigenvalue is at least 1e-3
 //    of the largest (a truncated pseudo-inverse, as in Lindstrom and Turk's placement); along the
