@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "decimate_checks.h"
 #include "decimate_corners.h"
 #include "decimate_internal.h"
 #include "hedge/algorithms/geometry.h"
@@ -33,8 +34,11 @@ namespace hedge {
 namespace {
 
 using Mesh = SurfaceMesh;
+using detail::decimation::check_input;
+using detail::decimation::kRemovedWeight;
 using detail::decimation::prefetch;
 using detail::decimation::Quadric;
+using detail::decimation::removed_distance2;
 
 // A collapse in a flat region (its error at most kFlat times its edge's squared length, a
 // root-mean-square distance of 1/1000 of the edge) may not make a face whose quality,
@@ -49,37 +53,6 @@ constexpr double kMinQuality = 0.1, kFlat = 1e-6;
 // Passes run while the mesh has more than kGreedyFrom times the target's vertices (or faces); then
 // true greedy order (Decimator::collapse_greedy).
 constexpr std::size_t kGreedyFrom = 3;
-
-std::string vertex_name(Vertex v) { return "vertex " + std::to_string(v.idx()); }
-
-void check(const Mesh& m, const DecimateOptions& o) {
-  auto non_negative = [](double x, const char* name) {
-    if (!(x >= 0) || !std::isfinite(x))
-      throw InvalidInputError(std::string("decimate: ") + name + " must be finite and not negative, got " +
-                              std::to_string(x));
-  };
-  if (!(o.max_error >= 0))
-    throw InvalidInputError("decimate: max_error must not be negative or NaN, got " +
-                            std::to_string(o.max_error));
-  non_negative(o.boundary_weight, "boundary_weight");
-  non_negative(o.feature_weight, "feature_weight");
-  non_negative(o.feature_angle_degrees, "feature_angle_degrees");
-  non_negative(o.attribute_weight, "attribute_weight");
-  if (!(o.max_normal_change_degrees > 0 && o.max_normal_change_degrees <= 180))
-    throw InvalidInputError("decimate: max_normal_change_degrees must be in (0, 180], got " +
-                            std::to_string(o.max_normal_change_degrees));
-  for (Face f : m.faces())
-    if (m.valence(f) != 3)
-      throw InvalidInputError("decimate: face " + std::to_string(f.idx()) + " has " +
-                              std::to_string(m.valence(f)) +
-                              " corners; decimation needs triangles (triangulate first)");
-  require_finite_positions(m, "decimate");
-  for (Vertex v : m.vertices()) {
-    if (!m.is_manifold(v))
-      throw InvalidInputError("decimate: " + vertex_name(v) +
-                              " is not manifold (its faces form more than one fan)");
-  }
-}
 
 // The state of one decimation: per-vertex quadrics, pass stamps and flags, the candidates of the
 // pass, and the scratch lists of one collapse, all allocated once.
@@ -136,6 +109,7 @@ class Decimator {
   bool placement(Halfedge h, Vec3d& p, double& cost) const;
   // placement(h) for a candidate: the point its edge's last ranking kept, if any, with its cost.
   void placed(Halfedge h, Vec3d& p, double& cost) const;
+  double cost_at(Halfedge h, const Quadric& q, const Vec3d& p) const;
   enum class Check { ok, normal, shape };
   Check check_faces(Halfedge h, const Vec3d& p, bool shape) const;
   // The key of e's best collapse: (cost's float bits << 32) | half-edge, kOverError or kNoKey.
@@ -163,6 +137,7 @@ class Decimator {
   HalfedgeProperty<Vec2> uv_;
   EdgeProperty<std::uint8_t> crease_;
   bool seams_ = false;
+  bool tail_ = false;  // near the target: the removed positions' distance counts
   double min_cos_ = 0, max_cost_ = 0, tiny_area2_ = 0;
   std::size_t initial_ = 0;  // collapses needed at the start
 
@@ -310,7 +285,7 @@ bool Decimator::placement(Halfedge h, Vec3d& p, double& cost) const {
   }
   // The cost and the checks see the point as it will be stored.
   p = rounded_to_float(p);
-  cost = error_at(q, p);
+  cost = cost_at(h, q, p);
   return true;
 }
 
@@ -408,7 +383,15 @@ void Decimator::placed(Halfedge h, Vec3d& p, double& cost) const {
     return;
   }
   p = kept;
-  cost = error_at(sum(q_[m_.from_vertex(h).idx()], q_[m_.to_vertex(h).idx()]), p);
+  cost = cost_at(h, sum(q_[m_.from_vertex(h).idx()], q_[m_.to_vertex(h).idx()]), p);
+}
+
+// The cost of collapsing h to p with the ends' summed quadric q: its error at p, and near the target
+// at least the weighted squared distance of the removed positions to the new faces. The distance
+// counts only where it exceeds the quadric's error: the search may stop below that.
+double Decimator::cost_at(Halfedge h, const Quadric& q, const Vec3d& p) const {
+  const double e = error_at(q, p);
+  return !tail_ ? e : std::max(e, kRemovedWeight * removed_distance2(m_, h, p, e / kRemovedWeight));
 }
 
 Decimator::Check Decimator::check(Halfedge h, const Vec3d& p, double cost, bool shapely) const {
@@ -575,6 +558,7 @@ DecimateResult Decimator::run() {
   const bool endless = o_.target_vertices == 0 && o_.target_faces == 0;
   for (std::uint32_t pass = 1;; ++pass) {
     classify();
+    if (!tail_ && near_target()) tail_ = rerank_all = true;
     // Rank: every live edge's best collapse within the error limit.
     // Only edges at a vertex that survived a collapse in the last pass need a new ranking: no
     // other vertex's quadric, position or class has changed.
@@ -636,7 +620,7 @@ DecimateResult Decimator::run() {
 }  // namespace
 
 DecimateResult decimate(SurfaceMesh& mesh, const DecimateOptions& options) {
-  check(mesh, options);
+  check_input(mesh, options);
   Decimator d(mesh, options);
   return d.run();
 }

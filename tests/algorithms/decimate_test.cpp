@@ -146,6 +146,23 @@ TEST(Decimate, ReachesAVertexTargetWithoutFlippingFaces) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+// Plane quadrics underrate removing a thin feature (the planes of a horn or an ear run almost
+// through its base, so its tip collapses cheaply); the distance of each removed position to the
+// new faces bounds the cost from below near the target. Down to 1% of its vertices the cow keeps
+// more of its horns and ears: 0.159 from the input, against 0.179 without the bound.
+TEST(Decimate, KeepsThinFeaturesThePlanesUnderrate) {
+  // Geometry only: the texture seams would hold the decimation back.
+  const IndexedMesh file = read_indexed_file(test::data_path("spot_triangulated.obj"));
+  const SurfaceMesh input = build_triangles(file.positions, file.indices);
+  SurfaceMesh m = input;
+  decimate(m, {.target_vertices = input.n_vertices() / 100});
+  const HausdorffDistance d =
+      hausdorff_distance(input, m, {.samples = std::max<std::size_t>(100000, input.n_faces())});
+  EXPECT_LT(d.distance, 0.165);
+  EXPECT_EQ(flipped_faces(input, m), 0u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
 TEST(Decimate, AMeshRefinedWithoutMovingCollapsesBackExactly) {
   // Midpoint subdivision adds vertices on the old faces and edges only, so decimating back to the
   // old vertex count can give the old surface exactly: every collapse the cheapest passes need

@@ -5,7 +5,12 @@
 //  - Each face contributes the quadric of its plane, weighted by its area; a vertex's quadric is the
 //    sum over its faces, and a collapse's is the sum of its two ends'. The error of a collapse is
 //    sqrt(Q(p) / W): the root-mean-square distance, in model units, of the surviving point p from
-//    the planes the two ends gathered (W: their total weight).
+//    the planes the two ends gathered (W: their total weight), or, if larger and near the target
+//    (in the greedy order below), sqrt(1/5) times the distance from each position the collapse
+//    removes (the merged-away end's, and the survivor's if it moves) to the nearest new face
+//    around the survivor. Plane quadrics underrate removing a thin feature (the planes of a horn
+//    run almost through its base) and bridging a notch; the second term measures both, and is 0
+//    on a flat region.
 //  - The surviving point minimises the quadric in the directions it determines: from the edge's
 //    midpoint, along the eigenvectors of the quadric's 3x3 matrix whose eigenvalue is at least 1e-3
 //    of the largest (a truncated pseudo-inverse, as in Lindstrom and Turk's placement); along the
@@ -65,8 +70,8 @@ struct DecimateOptions {
   std::size_t target_vertices = 0;
   //! Stop when at most this many faces are left (0: no face target).
   std::size_t target_faces = 0;
-  //! Stop before a collapse whose error (a distance in model units, the square root of the quadric
-  //! error) exceeds this. Infinity: no limit.
+  //! Stop before a collapse whose error (a distance in model units, as the file comment defines it)
+  //! exceeds this. Infinity: no limit.
   double max_error = std::numeric_limits<double>::infinity();
   //! Weight of the boundary-keeping planes, relative to the faces' area weights (they are scaled by
   //! the squared edge length, so 1 makes a boundary edge as stiff as a face of its size). 0: none.

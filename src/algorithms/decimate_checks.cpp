@@ -1,0 +1,75 @@
+// Decimation's checks outside the collapse loop (decimate_checks.h).
+#include "decimate_checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "hedge/algorithms/geometry.h"
+#include "hedge/algorithms/locate.h"
+#include "hedge/error.h"
+
+namespace hedge::detail::decimation {
+
+namespace {
+
+std::string vertex_name(Vertex v) { return "vertex " + std::to_string(v.idx()); }
+
+}  // namespace
+
+void check_input(const SurfaceMesh& m, const DecimateOptions& o) {
+  auto non_negative = [](double x, const char* name) {
+    if (!(x >= 0) || !std::isfinite(x))
+      throw InvalidInputError(std::string("decimate: ") + name + " must be finite and not negative, got " +
+                              std::to_string(x));
+  };
+  if (!(o.max_error >= 0))
+    throw InvalidInputError("decimate: max_error must not be negative or NaN, got " +
+                            std::to_string(o.max_error));
+  non_negative(o.boundary_weight, "boundary_weight");
+  non_negative(o.feature_weight, "feature_weight");
+  non_negative(o.feature_angle_degrees, "feature_angle_degrees");
+  non_negative(o.attribute_weight, "attribute_weight");
+  if (!(o.max_normal_change_degrees > 0 && o.max_normal_change_degrees <= 180))
+    throw InvalidInputError("decimate: max_normal_change_degrees must be in (0, 180], got " +
+                            std::to_string(o.max_normal_change_degrees));
+  for (Face f : m.faces())
+    if (m.valence(f) != 3)
+      throw InvalidInputError("decimate: face " + std::to_string(f.idx()) + " has " +
+                              std::to_string(m.valence(f)) +
+                              " corners; decimation needs triangles (triangulate first)");
+  require_finite_positions(m, "decimate");
+  for (Vertex v : m.vertices()) {
+    if (!m.is_manifold(v))
+      throw InvalidInputError("decimate: " + vertex_name(v) +
+                              " is not manifold (its faces form more than one fan)");
+  }
+}
+
+double removed_distance2(const SurfaceMesh& m, Halfedge h, const Vec3d& p, double limit) {
+  const Face fl = m.face(h), fr = m.face(SurfaceMesh::twin(h));
+  const Vec3 xa = m.position(m.from_vertex(h)), xb = m.position(m.to_vertex(h)), x = to_float(p);
+  const bool moved = !(x == xb);
+  double da = std::numeric_limits<double>::infinity(), db = moved ? da : 0.0;
+  const bool can_stop = std::isfinite(limit);
+  for (const Halfedge start : {h, SurfaceMesh::twin(h)}) {
+    Halfedge o = start;
+    do {
+      const Face f = m.face(o);
+      if (f.is_valid() && f != fl && f != fr) {
+        const Vec3 b = m.position(m.to_vertex(o)), c = m.position(m.to_vertex(m.next(o)));
+        if (!can_stop || da > limit)
+          da = std::min(da, closest_point_on_triangle(xa, x, b, c).squared_distance);
+        if (!can_stop || db > limit)
+          db = std::min(db, closest_point_on_triangle(xb, x, b, c).squared_distance);
+        if (can_stop && da <= limit && db <= limit) return std::max(da, db);
+      }
+      o = m.rotate_cw(o);
+    } while (o != start);
+  }
+  const double d = std::max(da, db);
+  return std::isfinite(d) ? d : 0.0;
+}
+
+}  // namespace hedge::detail::decimation
