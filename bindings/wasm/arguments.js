@@ -58,6 +58,21 @@ const options = (fields) => ({
   fields: Object.fromEntries(Object.entries(fields).map(([n, k]) => [n, optional(k)])),
 });
 const e = (name) => [name, ELEMENT];
+// The arguments of the two questions asked before a solid strike (why not, and its code).
+const SOLID_CHECK = [
+  ['impact', VEC3],
+  [
+    'options',
+    options({
+      seed: NUMBER,
+      radius: NUMBER,
+      radiusFraction: NUMBER,
+      innerSubmesh: NUMBER,
+      density: NUMBER,
+      tolerance: NUMBER,
+    }),
+  ],
+];
 
 const ARGUMENTS = {
   Hedge: {
@@ -185,34 +200,8 @@ const ARGUMENTS = {
         }),
       ],
     ],
-    solidFractureRefusal: [
-      ['impact', VEC3],
-      [
-        'options',
-        options({
-          seed: NUMBER,
-          radius: NUMBER,
-          radiusFraction: NUMBER,
-          innerSubmesh: NUMBER,
-          density: NUMBER,
-          tolerance: NUMBER,
-        }),
-      ],
-    ],
-    solidFractureRefusalCode: [
-      ['impact', VEC3],
-      [
-        'options',
-        options({
-          seed: NUMBER,
-          radius: NUMBER,
-          radiusFraction: NUMBER,
-          innerSubmesh: NUMBER,
-          density: NUMBER,
-          tolerance: NUMBER,
-        }),
-      ],
-    ],
+    solidFractureRefusal: SOLID_CHECK,
+    solidFractureRefusalCode: SOLID_CHECK,
     computeCornerNormals: [['creaseDegrees', optional(NUMBER)]],
     toArrays: [['options', options({})]],
     toFile: [['name', STRING]],
