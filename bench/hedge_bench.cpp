@@ -13,6 +13,11 @@
 // ordering lowers for a GPU drawing the faces in index order.
 //
 // BM_convex_hull/<n>: the convex hull of n random points in a ball (200: a shard's size).
+// BM_triangulate_polygon/<shape>/<n>: ear clipping (core/triangulate.h) of one polygon of n corners:
+// a circle with each corner moved in or out at random (jitter, about half of the corners
+// reflex), a comb (every other corner reflex), and a zigzag strip numbered from the middle of one
+// side (ears only at its two ends, far from corner 0: the case a scan from corner 0 after every
+// clip made cubic).
 // BM_decimate/<mesh>: quadric decimation to 10% of the vertices (algorithms/decimate.h), the copy of
 // the mesh excluded from the time; the counters give the vertices reached and the largest error.
 // BM_fracture/<mesh>: one impact, glass preset (algorithms/fracture.h) with its break radius in edge
@@ -59,11 +64,13 @@
 #include "hedge/algorithms/decimate.h"
 #include "hedge/algorithms/fracture.h"
 #include "hedge/algorithms/fracture_solid.h"
+#include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/locate.h"
 #include "hedge/algorithms/reorder.h"
 #include "hedge/c_api.h"
 #include "hedge/core/build.h"
 #include "hedge/core/operations.h"
+#include "hedge/core/triangulate.h"
 #include "indexed_subdivide.h"
 
 namespace {
@@ -138,6 +145,47 @@ void BM_convex_hull(benchmark::State& state) {
   state.counters["hull_vertices"] = static_cast<double>(hull_vertices);
 }
 BENCHMARK(BM_convex_hull)->Arg(200)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMicrosecond);
+// ---- BM_triangulate_polygon: one polygon of 10^3 or 10^4 corners, three shapes. ----
+std::vector<hedge::Vec3d> bench_polygon(int shape, std::size_t n) {
+  std::vector<hedge::Vec3d> p;
+  if (shape == 0) {  // jittered circle
+    hedge::SplitMix64 random(7);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double t = 2 * 3.141592653589793 * static_cast<double>(i) / static_cast<double>(n);
+      const double r = 1 + 2.0 / static_cast<double>(n) * (random.uniform() - 0.5);
+      p.push_back({r * std::cos(t), r * std::sin(t), 0});
+    }
+  } else if (shape == 1) {  // comb: a base, then teeth up to y = 4 and notches down to y = 1
+    const std::size_t teeth = (n - 2) / 2;
+    p = {{0, 0, 0}, {static_cast<double>(teeth), 0, 0}};
+    for (std::size_t j = teeth; j >= 1; --j) {
+      p.push_back({static_cast<double>(j), 4, 0});
+      p.push_back({static_cast<double>(j) - 0.5, 1, 0});
+    }
+    p.back() = {0, 4, 0};
+  } else {  // zigzag strip, numbered from the middle of its lower side
+    const std::size_t m = n / 2;
+    for (std::size_t j = 0; j < m; ++j) p.push_back({static_cast<double>(j), (j % 2) - 0.3, 0});
+    for (std::size_t j = m; j-- > 0;) p.push_back({static_cast<double>(j), (j % 2) + 0.3, 0});
+    std::rotate(p.begin(), p.begin() + static_cast<std::ptrdiff_t>(m / 2), p.end());
+  }
+  return p;
+}
+
+void BM_triangulate_polygon(benchmark::State& state, int shape) {
+  const std::vector<hedge::Vec3d> p = bench_polygon(shape, static_cast<std::size_t>(state.range(0)));
+  std::vector<std::array<hedge::Index, 3>> tris;
+  for (auto _ : state) {
+    tris.clear();
+    hedge::triangulate_polygon(p, tris);
+    benchmark::DoNotOptimize(tris.data());
+  }
+  state.counters["corners"] = static_cast<double>(p.size());
+}
+BENCHMARK_CAPTURE(BM_triangulate_polygon, jitter, 0)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_triangulate_polygon, comb, 1)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_triangulate_polygon, strip, 2)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+
 void decimate_tenth(benchmark::State& state, const hedge::SurfaceMesh* input) {
   hedge::DecimateResult r;
   for (auto _ : state) {
