@@ -153,8 +153,8 @@ class Decimator {
   std::vector<std::uint64_t> edge_key_, keys_, scratch_;
   // Per edge, the surviving point of its key's collapse as rank() found it (NaN: place again). Both
   // ends are unchanged while the key is current, so placing again would give the same point. Kept
-  // in double: it is what placement() returned, whatever the compiler made of its rounding.
-  std::vector<Vec3d> point_;
+  // in float: placement() returns it rounded to float (rounded_to_float), so nothing is lost.
+  std::vector<Vec3> point_;
   std::vector<std::uint8_t> refused_;    // greedy tail: the edge's key was refused by a check
   detail::decimation::CornerRing ring_;  // one collapse's corners (decimate_corners.h)
 };
@@ -369,20 +369,20 @@ std::uint64_t Decimator::rank(Edge e) {
   bool kept;
   if (!best_collapse(e, h, p, cost, kept)) return kNoKey;
   if (!(cost <= max_cost_)) return kOverError;
-  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  point_[e.idx()] = kept ? p : Vec3d{nan, nan, nan};
+  constexpr float nan = std::numeric_limits<float>::quiet_NaN();
+  point_[e.idx()] = kept ? to_float(p) : Vec3{nan, nan, nan};
   return std::uint64_t(float_bits(static_cast<float>(cost))) << 32 | h.idx();
 }
 
 // placement() takes the cost at the point it returns, so the kept point and the cost of the same
 // quadric at it are what placing again would give, bit for bit.
 void Decimator::placed(Halfedge h, Vec3d& p, double& cost) const {
-  const Vec3d kept = point_[Mesh::edge(h).idx()];
+  const Vec3 kept = point_[Mesh::edge(h).idx()];
   if (std::isnan(kept.x)) {
     placement(h, p, cost);
     return;
   }
-  p = kept;
+  p = to_double(kept);
   cost = cost_at(h, sum(q_[m_.from_vertex(h).idx()], q_[m_.to_vertex(h).idx()]), p);
 }
 
