@@ -148,6 +148,53 @@ SoupGrid grid_soup(const std::vector<SoupTriangle>& soup) {
   return grid;
 }
 
+//! A value -> number table, open addressing with linear probing; only looked up, never iterated,
+//! so nothing depends on the order of its slots. Hash maps a value to 64 well-mixed bits.
+template <typename T, typename Hash>
+class NumberTable {
+ public:
+  static constexpr std::uint32_t kAbsent = 0xffffffffu;
+  //! Room for n values at a load of at most one half.
+  explicit NumberTable(std::size_t n) {
+    std::size_t size = 16;
+    while (size < 2 * n) size <<= 1;
+    slots_.assign(size, {T{}, kAbsent});
+    mask_ = size - 1;
+  }
+  //! The number of k, or `value` (stored as k's) if k is new.
+  std::uint32_t find_or_add(const T& k, std::uint32_t value) {
+    std::size_t at = Hash{}(k)&mask_;
+    while (slots_[at].second != kAbsent) {
+      if (slots_[at].first == k) return slots_[at].second;
+      at = (at + 1) & mask_;
+    }
+    slots_[at] = {k, value};
+    return value;
+  }
+  //! The number of k, kAbsent if it has none.
+  std::uint32_t find(const T& k) const {
+    for (std::size_t at = Hash{}(k)&mask_;; at = (at + 1) & mask_) {
+      if (slots_[at].second == kAbsent || slots_[at].first == k) return slots_[at].second;
+    }
+  }
+
+ private:
+  std::vector<std::pair<T, std::uint32_t>> slots_;
+  std::size_t mask_ = 0;
+};
+
+struct HashIndex {
+  std::size_t operator()(Index v) const { return std::uint64_t{v} * 0x9E3779B97F4A7C15ull >> 20; }
+};
+struct HashKey {
+  std::size_t operator()(const Key& k) const {
+    std::uint64_t h = (std::uint64_t{k.kind} << 32 | k.a) * 0x9E3779B97F4A7C15ull;
+    h ^= (std::uint64_t{k.b} << 32 | k.c) * 0xBF58476D1CE4E5B9ull;
+    return static_cast<std::size_t>((h ^ (h >> 29)) * 0x94D049BB133111EBull >> 32);
+  }
+};
+using KeyTable = NumberTable<Key, HashKey>;
+
 //! The soup's vertices: each triangle's corners as indices into a list of its mesh vertices (in
 //! the order of first use; the numbering stays inside the strike).
 struct SoupIndex {
@@ -157,23 +204,15 @@ struct SoupIndex {
 
 SoupIndex index_soup(const std::vector<SoupTriangle>& soup) {
   SoupIndex x;
-  // An open-addressing table mesh vertex -> number, only looked up (never iterated), so the
-  // numbering is the order of first use.
-  std::size_t size = 16;
-  while (size < 4 * soup.size()) size <<= 1;
-  constexpr std::uint32_t kEmpty = 0xffffffffu;
-  std::vector<std::pair<Index, std::uint32_t>> table(size, {0, kEmpty});
+  // Mesh vertex -> number, in the order of first use.
+  NumberTable<Index, HashIndex> table(2 * soup.size());
   x.corner.resize(soup.size());
   for (std::size_t t = 0; t < soup.size(); ++t)
     for (int k = 0; k < 3; ++k) {
-      const Index v = soup[t].v[k];
-      std::size_t at = (std::uint64_t{v} * 0x9E3779B97F4A7C15ull >> 20) & (size - 1);
-      while (table[at].second != kEmpty && table[at].first != v) at = (at + 1) & (size - 1);
-      if (table[at].second == kEmpty) {
-        table[at] = {v, static_cast<std::uint32_t>(x.vertices.size())};
-        x.vertices.push_back(v);
-      }
-      x.corner[t][k] = table[at].second;
+      const auto next = static_cast<std::uint32_t>(x.vertices.size());
+      const std::uint32_t n = table.find_or_add(soup[t].v[k], next);
+      if (n == next) x.vertices.push_back(soup[t].v[k]);
+      x.corner[t][k] = n;
     }
   return x;
 }
@@ -336,48 +375,6 @@ bool cap_polytope(const StrikeInput& in, const Polytope& cell, std::span<const C
   }
   return true;
 }
-
-}  // namespace
-
-namespace {
-
-//! Key -> number, open addressing; only looked up, never iterated, so nothing depends on the
-//! order of its slots.
-class KeyTable {
- public:
-  static constexpr std::uint32_t kAbsent = 0xffffffffu;
-  explicit KeyTable(std::size_t n) {
-    std::size_t size = 16;
-    while (size < 2 * n) size <<= 1;
-    slots_.assign(size, {Key{}, kAbsent});
-    mask_ = size - 1;
-  }
-  //! The number of k, or `value` (stored as k's) if k is new.
-  std::uint32_t find_or_add(const Key& k, std::uint32_t value) {
-    std::size_t at = start(k);
-    while (slots_[at].second != kAbsent) {
-      if (slots_[at].first == k) return slots_[at].second;
-      at = (at + 1) & mask_;
-    }
-    slots_[at] = {k, value};
-    return value;
-  }
-  //! The number of k, kAbsent if it has none.
-  std::uint32_t find(const Key& k) const {
-    for (std::size_t at = start(k);; at = (at + 1) & mask_) {
-      if (slots_[at].second == kAbsent || slots_[at].first == k) return slots_[at].second;
-    }
-  }
-
- private:
-  std::size_t start(const Key& k) const {
-    std::uint64_t h = (std::uint64_t{k.kind} << 32 | k.a) * 0x9E3779B97F4A7C15ull;
-    h ^= (std::uint64_t{k.b} << 32 | k.c) * 0xBF58476D1CE4E5B9ull;
-    return static_cast<std::size_t>((h ^ (h >> 29)) * 0x94D049BB133111EBull >> 32) & mask_;
-  }
-  std::vector<std::pair<Key, std::uint32_t>> slots_;
-  std::size_t mask_ = 0;
-};
 
 }  // namespace
 
