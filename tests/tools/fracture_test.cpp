@@ -238,6 +238,19 @@ TEST_F(HedgeCli, FractureWorkIsBoundedWhateverTheMaterialFile) {
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("more than the limit of 10000 in all rings"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(tmp("out")));
+  // 10^6 nested arrays (2 MB) were parsed whole, at 40 times the file's size; now the file is read
+  // to its limit only, and deep nesting is refused at level 8 while it is read.
+  write_text(tmp("deep.json"), std::string(1000000, '[') + std::string(1000000, ']'));
+  const Result d = run({"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--material",
+                        tmp("deep.json").string(), "-o", tmp("out").string()});
+  EXPECT_EQ(d.code, 1);
+  EXPECT_NE(d.err.find("a material file is at most 1048576 bytes"), std::string::npos) << d.err;
+  write_text(tmp("deep.json"), R"({"rings": [[[[[[[[[[]]]]]]]]]]})");
+  const Result n = run({"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--material",
+                        tmp("deep.json").string(), "-o", tmp("out").string()});
+  EXPECT_EQ(n.code, 1);
+  EXPECT_NE(n.err.find("nested deeper than 8 levels"), std::string::npos) << n.err;
+  EXPECT_FALSE(fs::exists(tmp("out")));
   // A thickness of 1e30 gave shards of volume 1e86; now bounded by the mesh's diagonal.
   const Result t = run({"fracture", data("three_peaks.off"), "--impact", "0.1,0.2,10", "--tolerance", "100",
                         "--thickness", "1e30", "-o", tmp("out").string()});

@@ -13,7 +13,6 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -68,9 +67,11 @@ Vec3 parse_impact(const std::string& text) {
 FractureMaterial read_material(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError(path, 0, -1, "cannot open the material file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_material_json(text.str(), path);
+  // One byte past the limit is enough to refuse: a file (or a link to a device) is never read whole.
+  std::string text(kMaterialMaxBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return parse_material_json(text, path);
 }
 
 FractureMaterial material_from(const std::string& text) {

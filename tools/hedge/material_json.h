@@ -3,6 +3,7 @@
 // (fuzz/fuzz_material.cpp).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -10,9 +11,13 @@
 
 namespace hedge::cli {
 
+//! The largest material text read: 1,000 rings (the most a material may have) take about 80 KB.
+inline constexpr std::size_t kMaterialMaxBytes = 1 << 20;
+
 //! Parses the text of a material file. `path` names the file in messages; its stem is the
 //! material's name when the file gives none.
-//! \throw IoError (path, byte offset) when the text is not JSON; InvalidInputError naming the file
+//! \throw IoError (path, byte offset) when the text is not JSON, is larger than kMaterialMaxBytes
+//!        or nests deeper than 8 levels; InvalidInputError naming the file
 //!        and the field for a field that is unknown, missing, of the wrong type or out of range.
 FractureMaterial parse_material_json(std::string_view text, const std::string& path);
 
