@@ -168,6 +168,16 @@ TEST_F(HedgeCli, SolidFractureOfAnOpenMeshIsRefusedOrFallsBack) {
   const json summary = json::parse(read_text(tmp("out") / "summary.json"));
   EXPECT_GE(summary["shards"].size(), 2u);
   EXPECT_NE(summary["solid_refusal"].get<std::string>().find("open"), std::string::npos);
+  // The refusal's code too, the enumerator's name as every binding gives it, so a script decides by
+  // it and not by the message's words.
+  EXPECT_EQ(summary["solid_refusal_code"], "open");
+  // A surface fracture asked for records no refusal.
+  std::vector<std::string> surface = base;
+  surface.back() = tmp("surface").string();
+  ASSERT_EQ(run(surface).code, 0);
+  const json plain = json::parse(read_text(tmp("surface") / "summary.json"));
+  EXPECT_FALSE(plain.contains("solid_refusal"));
+  EXPECT_FALSE(plain.contains("solid_refusal_code"));
   // On a closed mesh auto breaks it as a solid.
   std::vector<std::string> spot = strike(tmp("spot"), "stone", "1");
   spot[2] = "--kind=auto";
