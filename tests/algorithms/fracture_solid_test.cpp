@@ -17,6 +17,7 @@
 #include "hedge/algorithms/normals.h"
 #include "hedge/algorithms/subdivide.h"
 #include "hedge/core/build.h"
+#include "hedge/core/export.h"
 #include "hedge/core/face_operations.h"
 #include "hedge/core/threads.h"
 #include "hedge/error.h"
@@ -137,6 +138,37 @@ TEST(FractureSolid, OpenMeshNearTheImpactIsRefusedNamingAnEdge) {
   EXPECT_NE(solid_fracture_refusal(m, {0.5f, 0.5f, 1.0f}, {.density = -1}).find("density"),
             std::string::npos);
   EXPECT_NE(solid_fracture_refusal(m, {0.5f, 0.5f, 9.0f}).find("beyond the tolerance"), std::string::npos);
+}
+
+// Non-manifold input: two unit cubes sharing the edge x = y = 1 (four faces on it). A strict
+// build refuses it naming the edge; repaired, the edge is split into two open ones, and the strike
+// there is refused for the mesh's shape (a code "auto" falls back for), the mesh unchanged.
+TEST(FractureSolid, CubesSharingAnEdgeAreRefusedForTheirShape) {
+  IndexedMesh two = test::cube();
+  const IndexedMesh b = test::cube();
+  for (const Vec3& p : b.positions) two.positions.push_back({p.x + 1, p.y + 1, p.z});
+  for (Index i : b.indices) two.indices.push_back(i == 0 ? 2 : i == 4 ? 6 : i + 8);  // (1,1,0), (1,1,1)
+  two.face_sizes.insert(two.face_sizes.end(), b.face_sizes.begin(), b.face_sizes.end());
+  try {
+    build(two);
+    ADD_FAILURE() << "a strict build took an edge of four faces";
+  } catch (const TopologyError& e) {
+    EXPECT_NE(std::string(e.what()).find("edge 2-6: 4 faces share the edge"), std::string::npos) << e.what();
+  }
+  BuildReport report;
+  SurfaceMesh m = build(two, {.policy = TopologyPolicy::repair}, &report);
+  EXPECT_EQ(report.non_manifold_edges, 1u);
+  const Vec3 at{1.0f, 1.0f, 0.5f};
+  const SolidFractureCheck why = solid_fracture_check(m, at, {.radius = 0.3});
+  EXPECT_EQ(why.code, SolidRefusal::open);
+  EXPECT_TRUE(solid_refusal_falls_back(why.code));
+  EXPECT_NE(why.message.find("the mesh is open: edge"), std::string::npos) << why.message;
+  const IndexedMesh before = to_indexed(m);
+  EXPECT_THROW(fracture_solid(m, at, {.radius = 0.3}), InvalidInputError);
+  const IndexedMesh after = to_indexed(m);
+  EXPECT_EQ(after.positions, before.positions);
+  EXPECT_EQ(after.indices, before.indices);
+  EXPECT_TRUE(m.validate().empty());
 }
 
 // Each refusal has its code, and "auto" falls back for the input's shape only.
