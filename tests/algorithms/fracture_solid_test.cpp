@@ -8,7 +8,9 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fracture_solid_checks.h"
@@ -317,6 +319,16 @@ TEST(FractureSolid, CapsGetTheirMarksSubmeshAndPlanarUVs) {
   for (Face f : m.faces())
     if (inner[f]) remaining_cap_area += face_area(m, f);
   EXPECT_NEAR(to_remaining, remaining_cap_area, 1e-4 * remaining_cap_area);
+  // Each bond counts for both its pieces, once per pair: a piece's bonds add up to its caps' area.
+  std::vector<double> bonded(r.pieces.size(), 0.0);
+  std::set<std::pair<std::size_t, std::size_t>> pairs;
+  for (const SolidBond& b : r.bonds) {
+    EXPECT_TRUE(pairs.insert({b.a, b.b}).second) << b.a << " " << b.b;
+    bonded[b.a] += b.area;
+    if (b.b != kSolidRemaining) bonded[b.b] += b.area;
+  }
+  for (std::size_t i = 0; i < r.pieces.size(); ++i)
+    EXPECT_NEAR(bonded[i], r.pieces[i].cap_area, 1e-4 * r.pieces[i].cap_area) << "piece " << i;
   EXPECT_TRUE(m.validate().empty());
 }
 
