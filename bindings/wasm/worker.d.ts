@@ -13,6 +13,7 @@ import type {
   Piece,
   SolidFractureOptions,
   SolidFractureResult,
+  SolidRefusal,
   Shard,
   SmoothMethod,
   SubdivisionScheme,
@@ -38,9 +39,14 @@ export interface RemoteSolidFractureResult extends Omit<SolidFractureResult, 'pi
   pieces: RemotePiece[];
 }
 
+/** What fractureSolid() with kind 'auto' resolves to for a mesh solid fracture refuses for its
+ *  shape: the shards of fracture(), with the refusal and its code. */
 export interface RemoteSurfaceFallbackResult extends RemoteFractureResult {
   kind: 'surface';
+  /** Why solid fracture was refused. */
   refusal: string;
+  /** The refusal's code: 'open' or 'non_manifold'. */
+  refusalCode: 'open' | 'non_manifold';
 }
 
 export interface DrawBuffers {
@@ -100,6 +106,20 @@ export interface HedgeWorker {
     impact: Vec3,
     options?: SolidFractureOptions,
   ): Promise<RemoteSolidFractureResult | RemoteSurfaceFallbackResult>;
+  /** Mesh.solidFractureRefusal(): why fractureSolid() would be refused, or null. */
+  solidFractureRefusal(
+    id: number,
+    impact: Vec3,
+    options?: Omit<SolidFractureOptions, 'kind'>,
+  ): Promise<string | null>;
+  /** Mesh.solidFractureRefusalCode(): the refusal as a code ('none' when the strike can be made;
+   *  'open' and 'non_manifold' are what fractureSolid() with kind 'auto' breaks by surface
+   *  fracture, any other code rejects with either kind). */
+  solidFractureRefusalCode(
+    id: number,
+    impact: Vec3,
+    options?: Omit<SolidFractureOptions, 'kind' | 'surface'>,
+  ): Promise<SolidRefusal>;
   /** Draw buffers of the mesh as a RenderBuffers (not interleaved) makes them. normals as
    *  createRenderBuffers's; default 'auto'. */
   buffers(

@@ -66,8 +66,9 @@ const OPS = {
     return result;
   },
 
-  /** Mesh.fractureSolid(); each piece's (or, for kind 'auto' on an open mesh, each shard's) mesh
-   *  stays in the worker under a new id: {kind, pieces: [{id, volume, ..., hull}], bonds, ...}. */
+  /** Mesh.fractureSolid(); each piece's (or, for kind 'auto' on an open or non-manifold mesh, each
+   *  shard's, with the refusal and its refusalCode) mesh stays in the worker under a new id:
+   *  {kind, pieces: [{id, volume, ..., hull}], bonds, ...}. */
   fractureSolid(w, id, point, options) {
     const result = w.mesh(id).fractureSolid(point, options);
     const keep = ({ mesh, ...values }) => ({ id: w.keep(mesh), ...values });
@@ -75,6 +76,13 @@ const OPS = {
     else result.shards = result.shards.map(keep);
     return result;
   },
+
+  /** Mesh.solidFractureRefusal(): why a solid strike would be refused, or null. */
+  solidFractureRefusal: (w, id, point, options) => w.mesh(id).solidFractureRefusal(point, options),
+  /** Mesh.solidFractureRefusalCode(): 'none', 'open', 'non_manifold' (kind 'auto' breaks these by
+   *  surface fracture), 'off_surface', ... */
+  solidFractureRefusalCode: (w, id, point, options) =>
+    w.mesh(id).solidFractureRefusalCode(point, options),
 
   /** Draw buffers: {positions, indices, normals} (Float32Array, Uint32Array, Float32Array; normals
    *  empty for normals: 'none'), from a RenderBuffers made for the call. options.normals as

@@ -32,6 +32,8 @@ const CALLS = [
   'pickMany',
   'fracture',
   'fractureSolid',
+  'solidFractureRefusal',
+  'solidFractureRefusalCode',
   'buffers',
   'computeCornerNormals',
   'toArrays',

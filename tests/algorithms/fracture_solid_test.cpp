@@ -2,16 +2,24 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <optional>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fracture_solid_checks.h"
 #include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/locate.h"
+#include "hedge/algorithms/normals.h"
 #include "hedge/algorithms/subdivide.h"
 #include "hedge/core/build.h"
+#include "hedge/core/export.h"
 #include "hedge/core/face_operations.h"
 #include "hedge/core/threads.h"
 #include "hedge/error.h"
@@ -134,6 +142,37 @@ TEST(FractureSolid, OpenMeshNearTheImpactIsRefusedNamingAnEdge) {
   EXPECT_NE(solid_fracture_refusal(m, {0.5f, 0.5f, 9.0f}).find("beyond the tolerance"), std::string::npos);
 }
 
+// Non-manifold input: two unit cubes sharing the edge x = y = 1 (four faces on it). A strict
+// build refuses it naming the edge; repaired, the edge is split into two open ones, and the strike
+// there is refused for the mesh's shape (a code "auto" falls back for), the mesh unchanged.
+TEST(FractureSolid, CubesSharingAnEdgeAreRefusedForTheirShape) {
+  IndexedMesh two = test::cube();
+  const IndexedMesh b = test::cube();
+  for (const Vec3& p : b.positions) two.positions.push_back({p.x + 1, p.y + 1, p.z});
+  for (Index i : b.indices) two.indices.push_back(i == 0 ? 2 : i == 4 ? 6 : i + 8);  // (1,1,0), (1,1,1)
+  two.face_sizes.insert(two.face_sizes.end(), b.face_sizes.begin(), b.face_sizes.end());
+  try {
+    build(two);
+    ADD_FAILURE() << "a strict build took an edge of four faces";
+  } catch (const TopologyError& e) {
+    EXPECT_NE(std::string(e.what()).find("edge 2-6: 4 faces share the edge"), std::string::npos) << e.what();
+  }
+  BuildReport report;
+  SurfaceMesh m = build(two, {.policy = TopologyPolicy::repair}, &report);
+  EXPECT_EQ(report.non_manifold_edges, 1u);
+  const Vec3 at{1.0f, 1.0f, 0.5f};
+  const SolidFractureCheck why = solid_fracture_check(m, at, {.radius = 0.3});
+  EXPECT_EQ(why.code, SolidRefusal::open);
+  EXPECT_TRUE(solid_refusal_falls_back(why.code));
+  EXPECT_NE(why.message.find("the mesh is open: edge"), std::string::npos) << why.message;
+  const IndexedMesh before = to_indexed(m);
+  EXPECT_THROW(fracture_solid(m, at, {.radius = 0.3}), InvalidInputError);
+  const IndexedMesh after = to_indexed(m);
+  EXPECT_EQ(after.positions, before.positions);
+  EXPECT_EQ(after.indices, before.indices);
+  EXPECT_TRUE(m.validate().empty());
+}
+
 // Each refusal has its code, and "auto" falls back for the input's shape only.
 TEST(FractureSolid, RefusalsHaveCodesAndOnlyShapeFallsBack) {
   IndexedMesh open = test::cube();
@@ -201,9 +240,16 @@ TEST(FractureSolid, CapsGetTheirMarksSubmeshAndPlanarUVs) {
       hi = {std::max(hi.x, uv_in[h].x), std::max(hi.y, uv_in[h].y)};
     }
   for (Face f : m.faces()) sub[f] = 2;
+  // The UVs of the input's corners at each position (several where a seam passes).
+  std::map<std::array<float, 3>, std::vector<Vec2>> uvs_at;
+  for (Halfedge h : m.halfedges())
+    if (!m.is_boundary(h)) {
+      const Vec3 x = m.position(m.to_vertex(h));
+      uvs_at[{x.x, x.y, x.z}].push_back(uv_in[h]);
+    }
   const SolidFractureResult r = fracture_solid(m, m.position(Vertex(100)), {.seed = 7});
   ASSERT_GT(r.pieces.size(), 0u);
-  std::size_t caps = 0, outer = 0;
+  std::size_t caps = 0, outer = 0, kept = 0, planar = 0;
   for (const SolidPiece& p : r.pieces) {
     const auto inner = p.mesh.get_face_property<std::uint8_t>(kInnerProperty);
     const auto submesh = p.mesh.get_face_property<std::int32_t>(kSubmeshProperty);
@@ -219,18 +265,48 @@ TEST(FractureSolid, CapsGetTheirMarksSubmeshAndPlanarUVs) {
                                to_double(p.mesh.position(p.mesh.to_vertex(g))));
         const double d2 = std::hypot(uv[h].x - uv[g].x, uv[h].y - uv[g].y);
         EXPECT_NEAR(d2, d3, 1e-5);
+        // The documented rule (docs/fracture.md): u along n x the axis least aligned with the cap
+        // plane's normal n (x, then y, then z on ties), v = n x u, measured from the origin. The
+        // plane's normal is n or -n; either gives the same v and u up to its sign.
+        // A triangle's normal from float corners is the plane's to about 1e-7 over its size: slivers
+        // are left out.
+        if (face_area(p.mesh, f) < 1e-4) continue;
+        const Vec3d n = to_double(face_normal(p.mesh, f));
+        const double ax = std::abs(n.x), ay = std::abs(n.y), az = std::abs(n.z);
+        // Near a tie the float triangle's normal may pick the other axis than the plane's.
+        if (std::abs(ax - ay) < 1e-3 || std::abs(ax - az) < 1e-3 || std::abs(ay - az) < 1e-3) continue;
+        const Vec3d axis = ax <= ay && ax <= az ? Vec3d{1, 0, 0} : ay <= az ? Vec3d{0, 1, 0} : Vec3d{0, 0, 1};
+        const Vec3d u_dir = normalize(cross(n, axis)), v_dir = cross(n, u_dir);
+        const double sign =
+            dot(to_double(p.mesh.position(p.mesh.to_vertex(h))), u_dir) * uv[h].x < 0 ? -1 : 1;
+        for (Halfedge c : p.mesh.halfedges(f)) {
+          const Vec3d x = to_double(p.mesh.position(p.mesh.to_vertex(c)));
+          EXPECT_NEAR(uv[c].x, sign * dot(x, u_dir), 1e-4);
+          EXPECT_NEAR(uv[c].y, dot(x, v_dir), 1e-4);
+          ++planar;
+        }
       } else {
         ++outer;
         EXPECT_EQ(submesh[f], 2);
-        // Interpolated within the face's own corners: within the mesh's range of UVs.
-        for (Halfedge h : p.mesh.halfedges(f))
+        // Interpolated within the face's own corners: within the mesh's range of UVs; a corner on
+        // an input vertex has one of that vertex's UVs.
+        for (Halfedge h : p.mesh.halfedges(f)) {
           EXPECT_TRUE(uv[h].x >= lo.x && uv[h].x <= hi.x && uv[h].y >= lo.y && uv[h].y <= hi.y)
               << uv[h].x << " " << uv[h].y;
+          const Vec3 x = p.mesh.position(p.mesh.to_vertex(h));
+          const auto input = uvs_at.find({x.x, x.y, x.z});
+          if (input == uvs_at.end()) continue;  // a new point, where a plane cut the surface
+          ++kept;
+          EXPECT_NE(std::find(input->second.begin(), input->second.end(), uv[h]), input->second.end())
+              << uv[h].x << " " << uv[h].y;
+        }
       }
     }
   }
   EXPECT_GT(caps, 0u);
   EXPECT_GT(outer, 0u);
+  EXPECT_GT(kept, 0u);
+  EXPECT_GT(planar, 0u);
   std::size_t remaining_caps = 0;
   const auto inner = m.get_face_property<std::uint8_t>(kInnerProperty);
   ASSERT_TRUE(inner);
@@ -243,6 +319,16 @@ TEST(FractureSolid, CapsGetTheirMarksSubmeshAndPlanarUVs) {
   for (Face f : m.faces())
     if (inner[f]) remaining_cap_area += face_area(m, f);
   EXPECT_NEAR(to_remaining, remaining_cap_area, 1e-4 * remaining_cap_area);
+  // Each bond counts for both its pieces, once per pair: a piece's bonds add up to its caps' area.
+  std::vector<double> bonded(r.pieces.size(), 0.0);
+  std::set<std::pair<std::size_t, std::size_t>> pairs;
+  for (const SolidBond& b : r.bonds) {
+    EXPECT_TRUE(pairs.insert({b.a, b.b}).second) << b.a << " " << b.b;
+    bonded[b.a] += b.area;
+    if (b.b != kSolidRemaining) bonded[b.b] += b.area;
+  }
+  for (std::size_t i = 0; i < r.pieces.size(); ++i)
+    EXPECT_NEAR(bonded[i], r.pieces[i].cap_area, 1e-4 * r.pieces[i].cap_area) << "piece " << i;
   EXPECT_TRUE(m.validate().empty());
 }
 
@@ -305,6 +391,40 @@ TEST(FractureSolid, OneThreadOrSeveralGiveTheSameResult) {
   for (Vertex v : a.vertices()) EXPECT_EQ(a.position(v), b.position(v));
   EXPECT_TRUE(a.validate().empty());
   EXPECT_TRUE(b.validate().empty());
+}
+
+// The share of spot's volume one solid strike on its flank breaks off, after `steps` Loop
+// subdivisions (`edge_radius` > 0: a break radius of that many of the impact face's mean edge lengths
+// instead).
+double spot_broken_share(int steps, const std::string& material, double edge_radius = 0) {
+  SurfaceMesh mesh = read_mesh(test::data_path("spot_triangulated.obj"));
+  if (steps > 0) subdivide(mesh, Subdivision::loop, steps);
+  const double before = volume(mesh);
+  FaceBvh bvh(mesh);
+  const std::optional<LocateResult> hit = bvh.closest_point({0.5f, 0.0f, 0.2f});
+  EXPECT_TRUE(hit.has_value());
+  SolidFractureOptions o{.material = fracture_material(material), .radius_fraction = 0.12, .seed = 7};
+  if (edge_radius > 0) o.radius = edge_radius * mean_edge_length(mesh, hit->face);
+  const SolidFractureResult r = fracture_solid(mesh, hit->point, o, &bvh);
+  EXPECT_GE(r.pieces.size(), 2u) << material;
+  expect_solid_strike(mesh, r, before);
+  double broken = 0;
+  for (const SolidPiece& p : r.pieces) broken += p.volume;
+  return broken / before;
+}
+
+// The solid break radius is a fraction of the object's diagonal (or model units): one strike breaks
+// off the same share of spot's volume at its native resolution and with 16 times the faces (two
+// Loop steps), within 10%. A radius in edge lengths would break off far less of the finer mesh.
+TEST(FractureSolid, EveryPresetBreaksTheSameVolumeOfSpotAtEveryResolution) {
+  for (const std::string& name : fracture_material_names()) {
+    const double x0 = spot_broken_share(0, name), x2 = spot_broken_share(2, name);
+    EXPECT_GT(x0, 0.005) << name;
+    EXPECT_LT(x0, 0.5) << name;
+    EXPECT_LT(std::abs(x2 - x0), 0.1 * x0) << name << ": " << x0 << " at Loop x0, " << x2 << " at x2";
+  }
+  // The control: sized in edge lengths, the share falls with the resolution.
+  EXPECT_LT(spot_broken_share(2, "stone", 3), spot_broken_share(0, "stone", 3) / 4);
 }
 
 }  // namespace

@@ -102,6 +102,16 @@ TEST_F(HedgeCli, SolidFractureTwoRunsGiveByteIdenticalFolders) {
   ASSERT_EQ(run(strike(tmp("a"), "stone", "3")).code, 0);
   const json summary = json::parse(read_text(tmp("a") / "summary.json"));
   EXPECT_EQ(folder(tmp("a")).size(), summary["pieces"].size() + 2);
+  // The same with --format glb: the binary files hold nothing of the run either.
+  std::vector<std::string> glb_a = strike(tmp("ga"), "glass", "3"), glb_b = strike(tmp("gb"), "glass", "3");
+  glb_a.insert(glb_a.end(), {"--format", "glb"});
+  glb_b.insert(glb_b.end(), {"--format", "glb"});
+  ASSERT_EQ(run(glb_a).code, 0);
+  ASSERT_EQ(run(glb_b).code, 0);
+  const auto ga = folder(tmp("ga")), gb = folder(tmp("gb"));
+  ASSERT_EQ(ga.size(), a.size());
+  EXPECT_EQ(ga.front().first.substr(ga.front().first.size() - 4), ".glb");
+  EXPECT_TRUE(ga == gb);
 }
 
 // The JSON chunk of a .glb file (after the 12-byte header and the chunk's length and type).
@@ -168,6 +178,16 @@ TEST_F(HedgeCli, SolidFractureOfAnOpenMeshIsRefusedOrFallsBack) {
   const json summary = json::parse(read_text(tmp("out") / "summary.json"));
   EXPECT_GE(summary["shards"].size(), 2u);
   EXPECT_NE(summary["solid_refusal"].get<std::string>().find("open"), std::string::npos);
+  // The refusal's code too, the enumerator's name as every binding gives it, so a script decides by
+  // it and not by the message's words.
+  EXPECT_EQ(summary["solid_refusal_code"], "open");
+  // A surface fracture asked for records no refusal.
+  std::vector<std::string> surface = base;
+  surface.back() = tmp("surface").string();
+  ASSERT_EQ(run(surface).code, 0);
+  const json plain = json::parse(read_text(tmp("surface") / "summary.json"));
+  EXPECT_FALSE(plain.contains("solid_refusal"));
+  EXPECT_FALSE(plain.contains("solid_refusal_code"));
   // On a closed mesh auto breaks it as a solid.
   std::vector<std::string> spot = strike(tmp("spot"), "stone", "1");
   spot[2] = "--kind=auto";

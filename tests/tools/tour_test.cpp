@@ -1,4 +1,6 @@
 // hedge tour, run as ./run runs it: the contact sheet, the edited meshes, the table.
+#include <set>
+#include <sstream>
 #include <string>
 
 #include "cli_fixture.h"
@@ -31,6 +33,27 @@ TEST_F(HedgeCli, TourWritesTheContactSheetAndEveryEditedMesh) {
   EXPECT_EQ(r.out.find(" NO "), std::string::npos) << r.out;
   // The split stage: 180 faces of 4.4 corners on average become 732 triangles.
   EXPECT_NE(r.out.find("732"), std::string::npos) << r.out;
+  // The solid stage: closed pieces pushed apart from the remaining object. Unpushed, each cap corner
+  // of a piece would lie on one of the remaining object's or a neighbour's; pushed, no position of
+  // the view repeats.
+  const std::size_t at = r.out.find("solid fracture: ");
+  ASSERT_NE(at, std::string::npos);
+  const int pieces = std::stoi(r.out.substr(at + 16));
+  EXPECT_GE(pieces, 2);
+  const fs::path view = out / "spot_control_mesh_solid_fractured.obj";
+  const json info = run_json({"info", view.string(), "--json"});
+  EXPECT_TRUE(info["is_closed"].get<bool>());
+  EXPECT_GE(info["components"].get<int>(), pieces + 1);  // the remaining object may fall apart too
+  std::istringstream obj(read_text(view));
+  std::set<std::string> positions;
+  std::size_t vertices = 0, repeated = 0;
+  for (std::string line; std::getline(obj, line);)
+    if (line.rfind("v ", 0) == 0) {
+      ++vertices;
+      repeated += !positions.insert(line).second;
+    }
+  EXPECT_EQ(vertices, info["vertices"].get<std::size_t>());
+  EXPECT_EQ(repeated, 0u);
 }
 
 TEST_F(HedgeCli, TourSkipsTheSubdivisionsALargeMeshCannotAfford) {

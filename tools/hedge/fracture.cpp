@@ -17,7 +17,9 @@
 #include <system_error>
 #include <vector>
 
+#include "binding/names.h"
 #include "commands.h"
+#include "hedge/algorithms/fracture_solid.h"
 #include "hedge/error.h"
 #include "load.h"
 #include "material_json.h"
@@ -117,7 +119,9 @@ std::string shard_name(std::size_t i, const std::string& format) {
   return buf + format;
 }
 
-int run_surface_fracture(const FractureCommandOptions& o, const std::string& solid_refusal) {
+//! `solid_refusal`: why solid fracture was refused when --kind auto fell back to this (none when
+//! surface fracture was asked for).
+int run_surface_fracture(const FractureCommandOptions& o, const SolidFractureCheck& solid_refusal) {
   const Vec3 impact = parse_impact(o.impact);
   FractureOptions f;
   f.material = material_from(o.material);
@@ -150,7 +154,10 @@ int run_surface_fracture(const FractureCommandOptions& o, const std::string& sol
   summary["break_radius"] = r.break_radius;
   summary["thickness"] = o.thickness;
   summary["density"] = o.density;
-  if (!solid_refusal.empty()) summary["solid_refusal"] = solid_refusal;
+  if (solid_refusal.code != SolidRefusal::none) {
+    summary["solid_refusal"] = solid_refusal.message;
+    summary["solid_refusal_code"] = binding::name(solid_refusal.code);
+  }
   const std::string remaining = "remaining." + o.format;
   summary["remaining"] = {{"file", remaining}, {"faces", mesh.n_faces()}, {"vertices", mesh.n_vertices()}};
   mesh.garbage_collection();
@@ -203,12 +210,12 @@ int run_surface_fracture(const FractureCommandOptions& o, const std::string& sol
 }
 
 int run_fracture(const FractureCommandOptions& o) {
-  if (o.solid.kind == "surface" && !o.solid.solid) return run_surface_fracture(o, "");
+  if (o.solid.kind == "surface" && !o.solid.solid) return run_surface_fracture(o, {});
   const SolidFractureCliInputs in{o.input, o.output, o.impact,       o.material, o.seed,
                                   o.units, o.radius, o.break_radius, o.density,  o.tolerance,
                                   o.json,  o.load,   o.format};
   return run_solid_fracture(o.solid, in,
-                            [&](const std::string& why) { return run_surface_fracture(o, why); });
+                            [&](const SolidFractureCheck& why) { return run_surface_fracture(o, why); });
 }
 
 void add_fracture_arguments(CLI::App* app, FractureCommandOptions* o) {

@@ -106,7 +106,7 @@ SolidFractureOptions solid_options(const SolidFractureCliOptions& s, const Solid
 }  // namespace
 
 int run_solid_fracture(const SolidFractureCliOptions& s, const SolidFractureCliInputs& in,
-                       const std::function<int(const std::string&)>& surface) {
+                       const std::function<int(const SolidFractureCheck&)>& surface) {
   const Vec3 impact = parse_impact(in.impact);
   const SolidFractureOptions f = solid_options(s, in);
   LoadedMesh loaded = load_mesh(in.input, in.load);
@@ -124,7 +124,7 @@ int run_solid_fracture(const SolidFractureCliOptions& s, const SolidFractureCliI
       throw InvalidInputError(in.input + ": cannot be broken as a solid: " + why.message);
     std::fprintf(stderr, "hedge: solid fracture refused (%s); surface fracture instead\n",
                  why.message.c_str());
-    return surface(why.message);
+    return surface(why);
   }
   SolidFractureResult r = fracture_solid(mesh, impact, f, &bvh);
   const double ms = ms_since(start);
@@ -191,7 +191,8 @@ void add_solid_fracture_arguments(CLI::App& app, SolidFractureCliOptions& o) {
              "--kind", o.kind,
              "surface: shards of the surface; solid: closed pieces of a closed mesh, their cut faces "
              "capped (f:inner, f:submesh), and the bond graph in summary.json; auto: solid where "
-             "the mesh allows it, else surface where it is open or non-manifold, saying why on stderr (a "
+             "the mesh allows it, else surface where it is open or non-manifold, saying why on stderr and "
+             "in summary.json (solid_refusal, and solid_refusal_code \"open\" or \"non_manifold\"; a "
              "bad impact or option is an error)")
           ->check(CLI::IsMember({"surface", "solid", "auto"}))
           ->capture_default_str();

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "hedge/algorithms/fracture.h"
+#include "hedge/algorithms/fracture_solid.h"
 #include "hedge/core/vec.h"
 #include "load.h"
 
@@ -54,8 +55,8 @@ void add_solid_fracture_arguments(CLI::App& app, SolidFractureCliOptions& option
 
 //! Breaks IN into closed pieces and writes them, the remaining object and summary.json to the
 //! output folder. With kind "auto", where solid fracture is refused, says why on stderr and calls
-//! `surface` with the reason instead.
+//! `surface` with the refusal (its code and message, for summary.json) instead.
 int run_solid_fracture(const SolidFractureCliOptions& options, const SolidFractureCliInputs& in,
-                       const std::function<int(const std::string&)>& surface);
+                       const std::function<int(const SolidFractureCheck&)>& surface);
 
 }  // namespace hedge::cli

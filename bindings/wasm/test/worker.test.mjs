@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { MessageChannel } from 'node:worker_threads';
-import { dist, hedge, HedgeError, sample, gridArrays } from './support.mjs';
+import { dist, hedge, HedgeError, sample, grid, gridArrays } from './support.mjs';
 
 const { createHedgeWorker, HedgeWorker } = await import(new URL('worker_client.js', dist).href);
 const { serveHedge } = await import(new URL('worker.js', dist).href);
@@ -63,6 +63,69 @@ test('solid fracture in a worker gives what it gives here, the pieces kept there
     assert.deepEqual(await remote.counts(id), local.counts());
     assert.deepEqual(await remote.validate(id), []);
     await assert.rejects(remote.fractureSolid(id, [NaN, 0, 0]), { kind: 'invalid-argument' });
+    local.dispose();
+  } finally {
+    await remote.terminate();
+  }
+});
+
+test('the worker answers the solid refusal as here, and kind auto falls back by its code', async () => {
+  const remote = await createHedgeWorker();
+  try {
+    // A plate is open: struck near its border, solid fracture is refused for its shape.
+    const plate = grid(20);
+    const { id } = await remote.fromBuffers(gridArrays(20));
+    const near = [1.2, 1.7, 0];
+    const off = [1.2, 1.7, 3];
+    const why = plate.solidFractureRefusal(near);
+    assert.match(why, /open/);
+    assert.equal(await remote.solidFractureRefusal(id, near), why);
+    assert.equal(await remote.solidFractureRefusalCode(id, near), 'open');
+    assert.equal(await remote.solidFractureRefusalCode(id, off), 'off_surface');
+    assert.equal(
+      await remote.solidFractureRefusalCode(id, near, { density: -1 }),
+      plate.solidFractureRefusalCode(near, { density: -1 }),
+    );
+    // 'auto': the shape's refusal breaks the surface, its code and text in the result.
+    const options = { kind: 'auto', material: 'glass', seed: 1 };
+    const here = plate.fractureSolid(near, options);
+    const there = await remote.fractureSolid(id, near, options);
+    assert.equal(there.kind, 'surface');
+    assert.equal(there.refusalCode, 'open');
+    assert.equal(there.refusal, why);
+    assert.equal(there.shards.length, here.shards.length);
+    assert.ok(there.shards.length > 0);
+    for (const shard of there.shards) {
+      assert.deepEqual(await remote.validate(shard.id), []);
+      await remote.dispose(shard.id);
+    }
+    assert.deepEqual(await remote.counts(id), plate.counts());
+    assert.deepEqual(await remote.validate(id), []);
+    // Any other refusal rejects with 'auto' too, the mesh unchanged.
+    await assert.rejects(remote.fractureSolid(id, off, { kind: 'auto' }), {
+      kind: 'invalid-argument',
+      message: /fracture_solid: the impact/,
+    });
+    assert.deepEqual(await remote.counts(id), plate.counts());
+    here.shards.forEach((s) => s.dispose());
+    plate.dispose();
+    await remote.dispose(id);
+    // A closed mesh: no refusal.
+    const local = hedge.fromFile(sample(SPOT), SPOT);
+    const loaded = await remote.load(sample(SPOT), SPOT);
+    const at = local.pick([0, 2, 0.1], [0, -1, 0]).point;
+    assert.equal(await remote.solidFractureRefusalCode(loaded.id, at), 'none');
+    assert.equal(await remote.solidFractureRefusal(loaded.id, at), null);
+    // A point that is not one rejects, as the call throws here.
+    assert.throws(() => local.solidFractureRefusalCode([NaN, 0, 0]), { kind: 'invalid-argument' });
+    await assert.rejects(remote.solidFractureRefusalCode(loaded.id, [NaN, 0, 0]), {
+      kind: 'invalid-argument',
+      message: /not finite/,
+    });
+    await assert.rejects(remote.solidFractureRefusalCode(loaded.id, undefined), {
+      kind: 'invalid-argument',
+      message: /solidFractureRefusalCode: impact/,
+    });
     local.dispose();
   } finally {
     await remote.terminate();

@@ -37,3 +37,10 @@ export const remotePieceIds: number[] =
   remoteSolid.kind === 'solid'
     ? remoteSolid.pieces.map((p) => p.id)
     : remoteSolid.shards.map((s) => s.id);
+// The refusal in the worker, as a code: the same names as on the page.
+import type { SolidRefusal } from 'hedge-mesh';
+const remoteCode: SolidRefusal = await remote.solidFractureRefusalCode(loaded.id, [0, 0, 0]);
+export const remoteRefusal: (string | null)[] = [
+  await remote.solidFractureRefusal(loaded.id, [0, 0, 0], { material: 'stone' }),
+  remoteSolid.kind === 'surface' ? remoteSolid.refusalCode : remoteCode,
+];
