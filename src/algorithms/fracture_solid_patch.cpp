@@ -130,7 +130,7 @@ bool patch_outside(const StrikeInput& in, const Geometry& g, const std::vector<C
   faces.clear();
   for (std::size_t t = 0; t < touched.size(); ++t)
     if (touched[t]) faces.push_back(strike.soup[t].face);
-  std::sort(faces.begin(), faces.end());
+  if (!std::is_sorted(faces.begin(), faces.end())) std::sort(faces.begin(), faces.end());  // as a rule
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
   FaceMarks in_faces(mesh.face_slots());
   for (Face f : faces) in_faces.mark(f);

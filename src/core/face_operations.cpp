@@ -95,12 +95,28 @@ bool relink_vertex(Mesh& m, Vertex v, std::span<const Halfedge> out, std::vector
 
 // Removes a set of faces (sorted, unique, live). Vertices left pinched get one copy per fan.
 void remove_faces_impl(Mesh& m, const std::vector<Face>& faces) {
+  // The faces' vertices, sorted: each listed once (a flag per vertex slot, kept by the thread and
+  // cleared after), so that only the distinct ones are sorted.
   std::vector<Vertex> verts;
   verts.reserve(3 * faces.size());
-  for (Face f : faces)
-    for (Vertex v : m.vertices(f)) verts.push_back(v);
+  {
+    thread_local std::vector<char> listed;
+    if (listed.size() < m.vertex_slots()) listed.resize(m.vertex_slots(), 0);
+    struct Unlist {  // clears the flags set, also if push_back() throws
+      std::vector<char>& flags;
+      const std::vector<Vertex>& set;
+      ~Unlist() {
+        for (Vertex v : set) flags[v.idx()] = 0;
+      }
+    } unlist{listed, verts};
+    for (Face f : faces)
+      for (Vertex v : m.vertices(f))
+        if (!listed[v.idx()]) {
+          verts.push_back(v);
+          listed[v.idx()] = 1;
+        }
+  }
   std::sort(verts.begin(), verts.end());
-  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
   // The vertices' outgoing lists, one after another: vertex i's are out[first[i], first[i + 1]).
   std::vector<Halfedge> out;
   out.reserve(6 * verts.size());
