@@ -10,37 +10,77 @@ namespace hedge::solid_detail {
 
 namespace {
 
-bool in_sorted(const std::vector<Face>& v, Face f) { return std::binary_search(v.begin(), v.end(), f); }
+//! A set of the mesh's faces or vertices (H): one flag per slot, in an array each thread keeps
+//! from one strike to the next (it grows with the largest mesh seen), so a test is O(1) and a
+//! strike costs no pass over the mesh. The flags it set are cleared when it goes. Sets of one kind
+//! share the thread's array: one of each kind at a time.
+template <typename H>
+class Marks {
+ public:
+  explicit Marks(std::size_t slots) : flags_(storage()) {
+    if (flags_.size() < slots) flags_.resize(slots, 0);
+  }
+  Marks(const Marks&) = delete;
+  Marks& operator=(const Marks&) = delete;
+  ~Marks() { clear(); }
+  bool operator()(H h) const { return flags_[h.idx()] != 0; }
+  //! Adds h; false if it was there.
+  bool mark(H h) {
+    if (flags_[h.idx()]) return false;
+    marked_.push_back(h);
+    flags_[h.idx()] = 1;
+    return true;
+  }
+  void clear() {
+    for (H h : marked_) flags_[h.idx()] = 0;
+    marked_.clear();
+  }
+
+ private:
+  static std::vector<char>& storage() {
+    thread_local std::vector<char> flags;
+    return flags;
+  }
+  std::vector<char>& flags_;
+  std::vector<H> marked_;
+};
+using FaceMarks = Marks<Face>;
 
 //! Adds the faces around each vertex of `faces` whose other faces would form several fans once
 //! `faces` left (remove_faces() would split such a vertex): all its faces join. Until none is left.
-void close_pinches(const SurfaceMesh& mesh, std::vector<Face>& faces) {
+//! `in` marks `faces` (sorted), and then the faces added.
+void close_pinches(const SurfaceMesh& mesh, std::vector<Face>& faces, FaceMarks& in) {
+  // The vertices to check, each once per round (in any order: a round's faces are added together).
   std::vector<Vertex> check;
+  Marks<Vertex> listed(mesh.vertex_slots());
   for (Face f : faces)
-    for (Vertex v : mesh.vertices(f)) check.push_back(v);
+    for (Vertex v : mesh.vertices(f))
+      if (listed.mark(v)) check.push_back(v);
   while (!check.empty()) {
-    std::sort(check.begin(), check.end());
-    check.erase(std::unique(check.begin(), check.end()), check.end());
+    listed.clear();
     std::vector<Face> added;
     for (Vertex v : check) {
       int changes = 0;
       bool any_kept = false;
       for (Halfedge h : mesh.halfedges(v)) {
         const Face a = mesh.face(h), b = mesh.face(SurfaceMesh::twin(h));
-        const bool ta = !a.is_valid() || in_sorted(faces, a), tb = !b.is_valid() || in_sorted(faces, b);
+        const bool ta = !a.is_valid() || in(a), tb = !b.is_valid() || in(b);
         changes += ta != tb;
         any_kept = any_kept || !ta;
       }
       if (any_kept && changes > 2)
         for (Face f : mesh.faces(v))
-          if (!in_sorted(faces, f)) added.push_back(f);
+          if (!in(f)) added.push_back(f);
     }
     check.clear();
     if (added.empty()) break;
     std::sort(added.begin(), added.end());
     added.erase(std::unique(added.begin(), added.end()), added.end());
-    for (Face f : added)
-      for (Vertex v : mesh.vertices(f)) check.push_back(v);
+    for (Face f : added) {
+      in.mark(f);
+      for (Vertex v : mesh.vertices(f))
+        if (listed.mark(v)) check.push_back(v);
+    }
     faces.insert(faces.end(), added.begin(), added.end());
     std::sort(faces.begin(), faces.end());
   }
@@ -90,20 +130,23 @@ bool patch_outside(const StrikeInput& in, const Geometry& g, const std::vector<C
   faces.clear();
   for (std::size_t t = 0; t < touched.size(); ++t)
     if (touched[t]) faces.push_back(strike.soup[t].face);
-  std::sort(faces.begin(), faces.end());
+  if (!std::is_sorted(faces.begin(), faces.end())) std::sort(faces.begin(), faces.end());  // as a rule
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-  close_pinches(mesh, faces);
+  FaceMarks in_faces(mesh.face_slots());
+  for (Face f : faces) in_faces.mark(f);
+  close_pinches(mesh, faces, in_faces);
   // Soup triangles of each touched face, as (face, triangle) sorted; faces beyond the soup (joined
   // to close a pinch) get theirs.
   std::vector<std::pair<Face, std::uint32_t>> tris_of;
   for (std::uint32_t t = 0; t < strike.soup.size(); ++t)
-    if (in_sorted(faces, strike.soup[t].face)) tris_of.emplace_back(strike.soup[t].face, t);
-  std::sort(tris_of.begin(), tris_of.end());
+    if (in_faces(strike.soup[t].face)) tris_of.emplace_back(strike.soup[t].face, t);
+  // The soup lists a face's triangles together and the faces in order: sorted already, as a rule.
+  if (!std::is_sorted(tris_of.begin(), tris_of.end())) std::sort(tris_of.begin(), tris_of.end());
   const std::size_t in_soup = tris_of.size();
+  std::size_t next = 0;  // faces and tris_of[0, in_soup) are both sorted: walk them together
   for (Face f : faces) {
-    const auto first = tris_of.begin() + std::ptrdiff_t(in_soup);
-    const auto it = std::lower_bound(tris_of.begin(), first, std::make_pair(f, std::uint32_t{0}));
-    if (it != first && it->first == f) continue;
+    while (next < in_soup && tris_of[next].first < f) ++next;
+    if (next < in_soup && tris_of[next].first == f) continue;
     const std::size_t before = strike.soup.size();
     // make the triangles of f as the soup does, by appending them.
     std::vector<Halfedge> hs;
@@ -123,7 +166,8 @@ bool patch_outside(const StrikeInput& in, const Geometry& g, const std::vector<C
       tris_of.emplace_back(f, static_cast<std::uint32_t>(t));
     touched.resize(strike.soup.size(), 0);
   }
-  std::sort(tris_of.begin(), tris_of.end());
+  // The faces added come in order, with their triangles: the two sorted runs are merged.
+  std::inplace_merge(tris_of.begin(), tris_of.begin() + std::ptrdiff_t(in_soup), tris_of.end());
   for (const auto& [f, t] : tris_of) {
     if (t < inside_p.size() && touched[t]) {
       const std::vector<std::uint32_t>& support = inside_p[t].support;
@@ -161,7 +205,7 @@ bool patch_outside(const StrikeInput& in, const Geometry& g, const std::vector<C
       return false;
     }
     const Halfedge h = mesh.find_halfedge(Vertex(b.a), Vertex(a.a));
-    if (!h.is_valid() || mesh.is_boundary(h) || in_sorted(faces, mesh.face(h))) {
+    if (!h.is_valid() || mesh.is_boundary(h) || in_faces(mesh.face(h))) {
       strike.failure = "the patch does not fit the hole";
       return false;
     }
@@ -171,7 +215,7 @@ bool patch_outside(const StrikeInput& in, const Geometry& g, const std::vector<C
   for (Face f : faces)
     for (Halfedge h : mesh.halfedges(f)) {
       const Face o = mesh.face(SurfaceMesh::twin(h));
-      hole += o.is_valid() && !in_sorted(faces, o);
+      hole += o.is_valid() && !in_faces(o);
     }
   if (rim != hole) {
     strike.failure = "the patch does not fill the hole";
@@ -188,7 +232,7 @@ bool patch_outside(const StrikeInput& in, const Geometry& g, const std::vector<C
     if (k.kind == Key::vertex)
       for (Halfedge h : mesh.halfedges(Vertex(k.a))) {
         const Face f = mesh.face(h);
-        if (!f.is_valid() || in_sorted(faces, f)) continue;
+        if (!f.is_valid() || in_faces(f)) continue;
         // h leaves v in f: the corner at v runs from the point before v to to_vertex(h).
         const Vertex before = mesh.from_vertex(mesh.prev(h));
         corners.push_back(

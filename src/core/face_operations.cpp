@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 #include <type_traits>
 #include <vector>
 
@@ -47,10 +48,10 @@ std::size_t gaps_after(const Mesh& m, Vertex v, Pred&& removed) {
 
 // After faces around v were removed (their half-edges made boundary, edges with no face left
 // deleted), relinks the boundary loops through v, gives each further fan a copy of v, and points
-// v at a boundary half-edge. `out` is v's clockwise outgoing list from before the removal.
-// Returns false if v was left with no edge.
-bool relink_vertex(Mesh& m, Vertex v, const std::vector<Halfedge>& out) {
-  std::vector<Halfedge> alive;
+// v at a boundary half-edge. `out` is v's clockwise outgoing list from before the removal; `alive`
+// is scratch. Returns false if v was left with no edge.
+bool relink_vertex(Mesh& m, Vertex v, std::span<const Halfedge> out, std::vector<Halfedge>& alive) {
+  alive.clear();
   for (Halfedge o : out)
     if (!m.is_deleted(o)) alive.push_back(o);
   if (alive.empty()) {
@@ -94,16 +95,41 @@ bool relink_vertex(Mesh& m, Vertex v, const std::vector<Halfedge>& out) {
 
 // Removes a set of faces (sorted, unique, live). Vertices left pinched get one copy per fan.
 void remove_faces_impl(Mesh& m, const std::vector<Face>& faces) {
+  // The faces' vertices, sorted: each listed once (a flag per vertex slot, kept by the thread and
+  // cleared after), so that only the distinct ones are sorted.
   std::vector<Vertex> verts;
-  for (Face f : faces)
-    for (Vertex v : m.vertices(f)) verts.push_back(v);
+  verts.reserve(3 * faces.size());
+  {
+    thread_local std::vector<char> listed;
+    if (listed.size() < m.vertex_slots()) listed.resize(m.vertex_slots(), 0);
+    struct Unlist {  // clears the flags set, also if push_back() throws
+      std::vector<char>& flags;
+      const std::vector<Vertex>& set;
+      ~Unlist() {
+        for (Vertex v : set) flags[v.idx()] = 0;
+      }
+    } unlist{listed, verts};
+    for (Face f : faces)
+      for (Vertex v : m.vertices(f))
+        if (!listed[v.idx()]) {
+          verts.push_back(v);
+          listed[v.idx()] = 1;
+        }
+  }
   std::sort(verts.begin(), verts.end());
-  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-  std::vector<std::vector<Halfedge>> outs;
-  outs.reserve(verts.size());
-  for (Vertex v : verts) outs.push_back(outgoing(m, v));
+  // The vertices' outgoing lists, one after another: vertex i's are out[first[i], first[i + 1]).
+  std::vector<Halfedge> out;
+  out.reserve(6 * verts.size());
+  std::vector<std::size_t> first;
+  first.reserve(verts.size() + 1);
+  for (Vertex v : verts) {
+    first.push_back(out.size());
+    for (Halfedge h : m.halfedges(v)) out.push_back(h);
+  }
+  first.push_back(out.size());
 
   std::vector<Halfedge> hs;
+  hs.reserve(3 * faces.size());
   for (Face f : faces) {
     for (Halfedge h : m.halfedges(f)) hs.push_back(h);
     m.mark_deleted(f);
@@ -112,8 +138,10 @@ void remove_faces_impl(Mesh& m, const std::vector<Face>& faces) {
   for (Halfedge h : hs)
     if (m.is_boundary(Mesh::twin(h))) m.mark_deleted(Mesh::edge(h));
   for (Face f : faces) m.mark_changed(f, ChangeEvent::faces_removed);
+  std::vector<Halfedge> alive;
   for (std::size_t i = 0; i < verts.size(); ++i) {
-    if (!relink_vertex(m, verts[i], outs[i])) {
+    const std::span<const Halfedge> around(out.data() + first[i], first[i + 1] - first[i]);
+    if (!relink_vertex(m, verts[i], around, alive)) {
       m.mark_deleted(verts[i]);
       m.mark_changed(verts[i], ChangeEvent::vertices_removed);
     }
