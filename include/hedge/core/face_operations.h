@@ -78,7 +78,8 @@ bool remove_vertex(SurfaceMesh& mesh, Vertex v);
 //! left with no face are removed, and so are vertices left with no edge. Never refused: unlike
 //! remove_face(), it splits a vertex that the removal leaves pinched (two or more fans meeting at
 //! it alone), giving each fan but the first a copy of the vertex with its properties, so the mesh
-//! stays manifold. O(n log n + the one-rings of their corners) for n faces.
+//! stays manifold. O(n log n + the one-rings of their corners) for n faces. Keeps, for the
+//! calling thread's life, a byte of scratch per vertex slot of the largest mesh it was given.
 void remove_faces(SurfaceMesh& mesh, std::span<const Face> faces);
 
 }  // namespace hedge
