@@ -31,8 +31,8 @@ Vec3d Geometry::position(const Key& k) const {
 
 // Sutherland-Hodgman, one half-space after the other. A point made on an edge of the triangle's
 // own sides is (edge, plane); on a line of an earlier plane p it is (triangle, p, plane).
-void clip_triangle(const Geometry& g, std::uint32_t t, const std::vector<HalfSpace>& planes,
-                   ClipPolygon& out) {
+void clip_triangle(const Geometry& g, std::uint32_t t, const std::vector<HalfSpace>& planes, ClipPolygon& out,
+                   std::size_t first) {
   const SoupTriangle& tri = (*g.soup)[t];
   out.triangle = t;
   out.keys.clear();
@@ -48,7 +48,8 @@ void clip_triangle(const Geometry& g, std::uint32_t t, const std::vector<HalfSpa
   thread_local std::vector<Vec3d> pos;
   thread_local std::vector<std::uint32_t> support;
   thread_local std::vector<char> in;
-  for (const HalfSpace& h : planes) {
+  for (std::size_t hi = first; hi < planes.size(); ++hi) {
+    const HalfSpace& h = planes[hi];
     const Plane& pl = g.planes->planes[h.plane];
     const std::size_t n = out.keys.size();
     in.resize(n);
