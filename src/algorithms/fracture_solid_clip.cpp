@@ -31,8 +31,8 @@ Vec3d Geometry::position(const Key& k) const {
 
 // Sutherland-Hodgman, one half-space after the other. A point made on an edge of the triangle's
 // own sides is (edge, plane); on a line of an earlier plane p it is (triangle, p, plane).
-void clip_triangle(const Geometry& g, std::uint32_t t, const std::vector<HalfSpace>& planes,
-                   ClipPolygon& out) {
+void clip_triangle(const Geometry& g, std::uint32_t t, const std::vector<HalfSpace>& planes, ClipPolygon& out,
+                   std::size_t first) {
   const SoupTriangle& tri = (*g.soup)[t];
   out.triangle = t;
   out.keys.clear();
@@ -48,7 +48,8 @@ void clip_triangle(const Geometry& g, std::uint32_t t, const std::vector<HalfSpa
   thread_local std::vector<Vec3d> pos;
   thread_local std::vector<std::uint32_t> support;
   thread_local std::vector<char> in;
-  for (const HalfSpace& h : planes) {
+  for (std::size_t hi = first; hi < planes.size(); ++hi) {
+    const HalfSpace& h = planes[hi];
     const Plane& pl = g.planes->planes[h.plane];
     const std::size_t n = out.keys.size();
     in.resize(n);
@@ -135,7 +136,7 @@ struct Loop {
 //! and most are small. Each call clears what it uses first.
 struct FillScratch {
   std::vector<std::pair<Key, Key>> edges;
-  std::vector<std::pair<Key, Vec3d>> where;
+  std::vector<std::pair<Key, Vec3d>> where, merged;
   std::vector<std::pair<Key, int>> role;
   std::vector<std::vector<Stop>> on_side;
   std::vector<Stop> outline;
@@ -175,11 +176,9 @@ bool fill_region(const RegionInput& in, std::vector<std::array<Key, 3>>& tris,
   }
   const auto by_key = [](const auto& x, const auto& y) { return x.first < y.first; };
   const auto same_key = [](const auto& x, const auto& y) { return x.first == y.first; };
-  const auto keep_first = [&]() {
-    std::stable_sort(where.begin(), where.end(), by_key);
-    where.erase(std::unique(where.begin(), where.end(), same_key), where.end());
-  };
-  keep_first();
+  // Sorted by key, the first position given for a key kept.
+  std::stable_sort(where.begin(), where.end(), by_key);
+  where.erase(std::unique(where.begin(), where.end(), same_key), where.end());
   const auto slot = [&](const Key& k) {
     return static_cast<std::size_t>(
         std::lower_bound(where.begin(), where.end(), k,
@@ -228,8 +227,29 @@ bool fill_region(const RegionInput& in, std::vector<std::array<Key, 3>>& tris,
       first = i;
       break;
     }
-  for (const Stop& s : outline) where.emplace_back(s.key, s.pos);
-  keep_first();
+  {
+    // The outline's points join `where` (sorted, unique): sorted among themselves (stably: the
+    // first given wins), then merged in, a key already there keeping its position.
+    const std::size_t old = where.size();
+    for (const Stop& s : outline) where.emplace_back(s.key, s.pos);
+    const auto tail = where.begin() + static_cast<std::ptrdiff_t>(old);
+    if (outline.size() > 64) {
+      std::stable_sort(tail, where.end(), by_key);
+    } else {
+      for (auto it = tail + 1; it < where.end(); ++it)  // insertion sort: the outline is short
+        for (auto at = it; at != tail && at->first < (at - 1)->first; --at) std::iter_swap(at, at - 1);
+    }
+    std::vector<std::pair<Key, Vec3d>>& merged = scratch.merged;
+    merged.clear();
+    auto a = where.begin();
+    for (auto b = tail; b != where.end(); ++b) {
+      if (b != tail && b->first == (b - 1)->first) continue;
+      while (a != tail && a->first < b->first) merged.push_back(*a++);
+      if (a == tail || b->first < a->first) merged.push_back(*b);
+    }
+    merged.insert(merged.end(), a, tail);
+    where.swap(merged);
+  }
   if (first == outline.size()) {
     if (in.inside())
       for (std::size_t i = 0; i < n; ++i) edges.emplace_back(in.corners[i], in.corners[(i + 1) % n]);
@@ -392,8 +412,12 @@ bool triangulate_with_holes(const std::vector<P2>& outer_xy, const std::vector<s
                             const std::vector<std::vector<P2>>& holes_xy,
                             const std::vector<std::vector<std::uint32_t>>& holes_id,
                             std::vector<std::array<std::uint32_t, 3>>& tris) {
-  std::vector<P2> xy = outer_xy;
-  std::vector<std::uint32_t> id = outer_id;
+  // Storage kept from one call to the next on each thread (most calls have no hole).
+  thread_local std::vector<P2> xy;
+  thread_local std::vector<std::uint32_t> id;
+  thread_local std::vector<std::size_t> ring;
+  xy.assign(outer_xy.begin(), outer_xy.end());
+  id.assign(outer_id.begin(), outer_id.end());
   std::vector<std::size_t> order(holes_xy.size());
   std::vector<std::size_t> right(holes_xy.size());
   for (std::size_t h = 0; h < holes_xy.size(); ++h) {
@@ -452,7 +476,7 @@ bool triangulate_with_holes(const std::vector<P2>& outer_xy, const std::vector<s
     done[h] = 1;
   }
   // Ear clipping over a ring of positions in xy.
-  std::vector<std::size_t> ring(xy.size());
+  ring.resize(xy.size());
   std::iota(ring.begin(), ring.end(), std::size_t{0});
   while (ring.size() > 3) {
     const std::size_t n = ring.size();

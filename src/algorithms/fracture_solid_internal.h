@@ -114,9 +114,11 @@ struct ClipPolygon {
 };
 
 //! Soup triangle t clipped by every half-space of `planes` (Sutherland-Hodgman); empty keys when
-//! nothing is inside.
-void clip_triangle(const Geometry& g, std::uint32_t t, const std::vector<HalfSpace>& planes,
-                   ClipPolygon& out);
+//! nothing is inside. The caller may pass `first` when every corner of the triangle lies inside
+//! planes[0..first) by the test clipping makes: those half-spaces leave the triangle as it is, so
+//! clipping starts at planes[first], with the same result.
+void clip_triangle(const Geometry& g, std::uint32_t t, const std::vector<HalfSpace>& planes, ClipPolygon& out,
+                   std::size_t first = 0);
 
 //! A directed edge of a region's boundary inside its convex outline (the region on its left).
 struct ChainEdge {

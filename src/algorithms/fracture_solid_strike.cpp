@@ -238,6 +238,9 @@ struct PolygonList {
 //! half-spaces if none), computed once per polytope (stamped) with the test clip_triangle() makes;
 //! and the soup triangles listed for the polytope's box so far (stamped too).
 struct FirstOut {
+  //! The polytope's half-spaces, and a copy of each one's plane (read without an indirection).
+  std::vector<HalfSpace> planes;
+  std::vector<Plane> plane;
   std::vector<std::uint32_t> first;
   std::vector<std::uint32_t> stamp;
   std::vector<std::uint32_t> listed;
@@ -254,8 +257,13 @@ void clip_all(const Geometry& g, const SoupIndex& index, const SoupGrid& grid, c
               double margin, FirstOut& masks, PolygonList& out) {
   float lo[3], hi[3];
   cell.box(margin, lo, hi);
-  std::vector<HalfSpace> planes;
-  for (const Polytope::Side& s : cell.faces) planes.push_back(s.h);
+  std::vector<HalfSpace>& planes = masks.planes;
+  planes.clear();
+  masks.plane.clear();
+  for (const Polytope::Side& s : cell.faces) {
+    planes.push_back(s.h);
+    masks.plane.push_back(g.planes->planes[s.h.plane]);
+  }
   if (masks.stamp.size() != index.vertices.size() || masks.listed.size() != index.corner.size()) {
     masks.stamp.assign(index.vertices.size(), 0);
     masks.first.assign(index.vertices.size(), 0);
@@ -269,7 +277,7 @@ void clip_all(const Geometry& g, const SoupIndex& index, const SoupGrid& grid, c
       masks.stamp[v] = masks.current;
       const Vec3d p = g.vertex(index.vertices[v]);
       std::uint32_t k = 0;
-      while (k < none && g.planes->planes[planes[k].plane].below(p) != planes[k].flip) ++k;
+      while (k < none && masks.plane[k].below(p) != planes[k].flip) ++k;
       masks.first[v] = k;
     }
     return masks.first[v];
@@ -285,7 +293,14 @@ void clip_all(const Geometry& g, const SoupIndex& index, const SoupGrid& grid, c
       list.push_back(t);
     }
   });
-  std::sort(list.begin(), list.end());
+  if (list.size() * 8 >= index.corner.size()) {
+    // Most of the soup (P's own box holds all of it): its listed triangles in order, by one pass.
+    list.clear();
+    for (std::uint32_t t = 0; t < index.corner.size(); ++t)
+      if (masks.listed[t] == masks.current) list.push_back(t);
+  } else {
+    std::sort(list.begin(), list.end());
+  }
   for (const std::uint32_t t : list) {
     const SoupTriangle& tri = (*g.soup)[t];
     const auto& c = index.corner[t];
@@ -309,8 +324,9 @@ void clip_all(const Geometry& g, const SoupIndex& index, const SoupGrid& grid, c
     // lie inside the ones before); when every corner leaves it, clip_triangle() would return
     // nothing.
     if (a == b && b == d) continue;
+    // The half-spaces before the first one a corner leaves hold the whole triangle.
     ClipPolygon& poly = out.next();
-    clip_triangle(g, t, planes, poly);
+    clip_triangle(g, t, planes, poly, std::min({a, b, d}));
     if (!poly.keys.empty()) ++out.size;
   }
 }

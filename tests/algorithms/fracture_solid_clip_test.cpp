@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "algorithms/fracture_solid_internal.h"
+#include "hedge/core/build.h"
 
 namespace hedge::solid_detail {
 namespace {
@@ -108,6 +109,38 @@ TEST(FractureSolidClip, RegionCutByAChainKeepsItsLeftSide) {
   r.chain.push_back({bottom, Key{Key::triangle, 0, 1, 2}, {0.25, 0, 0}, {0.25, 0.5, 0}});
   r.side = [&](const Key& k) { return k == bottom ? 0 : -1; };
   EXPECT_FALSE(fill_region(r, tris, points));
+}
+
+TEST(FractureSolidClip, ClippingFromTheFirstHalfSpaceATriangleLeavesGivesTheSamePolygon) {
+  // A triangle in z = 0 and four half-spaces: the first two hold it whole, the third cuts a corner
+  // off, the fourth cuts the polygon left.
+  IndexedMesh im;
+  im.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  im.indices = {0, 1, 2};
+  im.face_sizes = {3};
+  const SurfaceMesh m = build(im);
+  SoupTriangle t;
+  t.face = Face(0);
+  int k = 0;
+  for (Halfedge h : m.halfedges(t.face)) {
+    t.corner[k] = h;
+    t.v[k++] = m.to_vertex(h).idx();
+  }
+  const std::vector<SoupTriangle> soup{t};
+  PlaneSet planes;
+  planes.planes = {{{1, 0, 0}, -2}, {{0, 0, 1}, -1}, {{1, 0, 0}, -0.5}, {{0, 1, 0}, -0.25}};
+  const Geometry g{&m, &planes, &soup, nullptr};
+  std::vector<HalfSpace> hs;
+  for (std::uint32_t p = 0; p < 4; ++p) hs.push_back({p, false});
+  ClipPolygon all, from_third;
+  clip_triangle(g, 0, hs, all);
+  clip_triangle(g, 0, hs, from_third, 2);
+  EXPECT_EQ(all.keys.size(), 4u);  // x < 0.5 and y < 0.25: a quadrilateral
+  EXPECT_EQ(from_third.keys, all.keys);
+  EXPECT_EQ(from_third.support, all.support);
+  ASSERT_EQ(from_third.pos.size(), all.pos.size());
+  for (std::size_t i = 0; i < all.pos.size(); ++i) EXPECT_EQ(from_third.pos[i], all.pos[i]);
+  for (const Vec3d& p : all.pos) EXPECT_TRUE(p.x <= 0.5 && p.y <= 0.25);
 }
 
 }  // namespace
