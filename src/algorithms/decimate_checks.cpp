@@ -9,6 +9,7 @@
 #include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/locate.h"
 #include "hedge/error.h"
+#include "locate_internal.h"
 
 namespace hedge::detail::decimation {
 
@@ -48,9 +49,13 @@ void check_input(const SurfaceMesh& m, const DecimateOptions& o) {
 }
 
 double removed_distance2(const SurfaceMesh& m, Halfedge h, const Vec3d& p, double limit) {
+  // The triangle code of point location, called in double on the float positions converted once
+  // (closest_point_on_triangle() converts them per call, out of line): the same answers, bit for bit.
+  using locate_detail::closest_on_triangle;
   const Face fl = m.face(h), fr = m.face(SurfaceMesh::twin(h));
-  const Vec3 xa = m.position(m.from_vertex(h)), xb = m.position(m.to_vertex(h)), x = to_float(p);
-  const bool moved = !(x == xb);
+  const Vec3 xb_f = m.position(m.to_vertex(h)), x_f = to_float(p);
+  const Vec3d xa = to_double(m.position(m.from_vertex(h))), xb = to_double(xb_f), x = to_double(x_f);
+  const bool moved = !(x_f == xb_f);
   double da = std::numeric_limits<double>::infinity(), db = moved ? da : 0.0;
   const bool can_stop = std::isfinite(limit);
   for (const Halfedge start : {h, SurfaceMesh::twin(h)}) {
@@ -58,11 +63,10 @@ double removed_distance2(const SurfaceMesh& m, Halfedge h, const Vec3d& p, doubl
     do {
       const Face f = m.face(o);
       if (f.is_valid() && f != fl && f != fr) {
-        const Vec3 b = m.position(m.to_vertex(o)), c = m.position(m.to_vertex(m.next(o)));
-        if (!can_stop || da > limit)
-          da = std::min(da, closest_point_on_triangle(xa, x, b, c).squared_distance);
-        if (!can_stop || db > limit)
-          db = std::min(db, closest_point_on_triangle(xb, x, b, c).squared_distance);
+        const Vec3d b = to_double(m.position(m.to_vertex(o))),
+                    c = to_double(m.position(m.to_vertex(m.next(o))));
+        if (!can_stop || da > limit) da = std::min(da, closest_on_triangle(xa, x, b, c).squared_distance);
+        if (!can_stop || db > limit) db = std::min(db, closest_on_triangle(xb, x, b, c).squared_distance);
         if (can_stop && da <= limit && db <= limit) return std::max(da, db);
       }
       o = m.rotate_cw(o);
