@@ -22,8 +22,9 @@
 //     gets a cap, the part of it inside the object: its loops (several, holes included) are
 //     triangulated in the face's plane. A piece is the clipped surface and its caps. The cells are
 //     independent: they are clipped and capped on worker threads (core/threads.h:
-//     set_max_threads(1) keeps the strike on the calling thread), and the pieces are taken in cell
-//     order, so the result does not depend on the number of threads.
+//     set_max_threads(1) keeps the strike on the calling thread), beside the remaining object's
+//     patch (step 5), and the pieces are taken in cell order, so the result does not depend on the
+//     number of threads.
 //  5. remaining object: the faces that meet P leave the mesh, and their parts outside P come back
 //     with P's caps turned inwards, so the mesh stays closed. Only the faces that meet P are
 //     touched: the cost follows the broken region, not the mesh.
