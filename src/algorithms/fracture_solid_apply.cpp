@@ -303,22 +303,30 @@ constexpr std::size_t kPiecesPerThread = 4;
 
 }  // namespace
 
-void measure_pieces(std::vector<SolidPiece>& pieces, const SolidFractureOptions& o) {
-  // Each piece is measured on its own, so consecutive runs of pieces go to threads
-  // (core/threads.h), each writing only its own pieces: the result does not depend on the number
-  // of threads. What a piece throws (the hull's allocation failing) is thrown once every thread has
-  // finished, the first piece's.
-  std::vector<std::exception_ptr> error(pieces.size());
-  detail::parallel_ranges(
-      pieces.size(),
-      [&](std::size_t first, std::size_t last) {
-        for (std::size_t i = first; i < last; ++i) try {
-            measure_piece(pieces[i], o);
-          } catch (...) {
-            error[i] = std::current_exception();
-          }
+void measure_pieces(std::vector<SolidPiece>& pieces, const SolidFractureOptions& o,
+                    const std::function<void()>& beside) {
+  // Each piece is measured on its own, so the pieces are tasks on the workers (core/threads.h),
+  // `beside` the first of them, each task writing only its own piece: the result does not depend
+  // on the number of threads. What a task throws is thrown once every thread has finished:
+  // beside's, else the first piece's.
+  const std::size_t first = beside ? 1 : 0;
+  std::vector<std::exception_ptr> error(pieces.size() + first);
+  // Some pieces are worth a thread; beside counts as that many.
+  const std::size_t threads =
+      detail::parallel_parts(pieces.size() + first * kPiecesPerThread, kPiecesPerThread);
+  detail::parallel_tasks(
+      error.size(),
+      [&](std::size_t task, std::size_t) {
+        try {
+          if (task < first)
+            beside();
+          else
+            measure_piece(pieces[task - first], o);
+        } catch (...) {
+          error[task] = std::current_exception();
+        }
       },
-      kPiecesPerThread);
+      threads);
   for (const std::exception_ptr& e : error)
     if (e) std::rethrow_exception(e);
 }

@@ -545,46 +545,112 @@ void piece_of(const StrikeInput& in, const Geometry& g, const SoupIndex& index, 
   }
 }
 
+//! The region's side of a strike, made on a worker beside the cells: whether the patch was made,
+//! or the exception to pass on, and its thread time spent clipping and capping.
+struct RegionWork {
+  bool made = false;
+  std::exception_ptr error;
+  double seconds_clip = 0, seconds_cap = 0;
+};
+
+//! The patch of the remaining object: the touched triangles' parts outside P, and P's caps turned
+//! inwards (patch_outside()). Writes strike.soup (patch_outside() may extend it), patch, touched and,
+//! if the patch cannot be made, failure.
+void region_patch(const StrikeInput& in, const Geometry& g, const SoupIndex& index, const SoupGrid& grid,
+                  const Polytope& region, double margin, Strike& strike, RegionWork& w) {
+  try {
+    Clock::time_point t = Clock::now();
+    PolygonList polys;
+    FirstOut masks;
+    clip_all(g, index, grid, region, margin, masks, polys);
+    w.seconds_clip += seconds_since(t);
+    KeyedSurface caps;
+    if (!cap_polytope(in, region, polys.view(), caps, strike.failure)) return;
+    for (std::size_t k = 0; k < caps.tris.size(); ++k) {
+      const auto& tri = caps.tris[k];
+      strike.patch.add({tri[0], tri[2], tri[1]}, caps.source[k]);
+    }
+    strike.patch.points = std::move(caps.points);
+    // The caps are made: each polygon moves to its triangle's slot.
+    std::vector<ClipPolygon> inside_p(strike.soup.size());
+    std::vector<char> touched_tri(strike.soup.size(), 0);
+    for (std::size_t i = 0; i < polys.size; ++i) {
+      const std::uint32_t tri = polys.store[i].triangle;
+      touched_tri[tri] = 1;
+      inside_p[tri] = std::move(polys.store[i]);
+    }
+    if (!patch_outside(in, g, inside_p, touched_tri, strike)) return;
+    strike.patch.finish_points();
+    w.made = true;
+    w.seconds_cap += seconds_since(t);
+  } catch (...) {
+    w.error = std::current_exception();
+  }
+}
+
 }  // namespace
 
 bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, double nudge, std::uint64_t seed,
                     Strike& strike) {
   Clock::time_point t = Clock::now();
-  const Polytope region = region_polytope(in.centre, in.region_radius, strike.planes, seed, nudge);
-  const std::vector<Vec3d> points = break_points(in.material, in.centre, seed, nudge);
-  std::vector<Polytope> cells(points.size());
-  for (std::uint32_t i = 0; i < points.size(); ++i)
-    if (!voronoi_cell(region, points, i, strike.planes, cells[i])) {
-      strike.failure = "a cell is degenerate";
-      return false;
+  // Two independent tasks (core/threads.h): the cells, which add their bisectors to strike.planes
+  // in cell order, and the soup with its index and grid.
+  Polytope region;
+  std::vector<Polytope> cells;
+  bool cells_made = true;
+  SoupIndex index;
+  SoupGrid grid;
+  std::exception_ptr error[2];
+  detail::parallel_tasks(2, [&](std::size_t task, std::size_t) {
+    try {
+      if (task == 1) {
+        strike.soup = make_soup(in.mesh, faces);
+        index = index_soup(strike.soup);
+        grid = grid_soup(strike.soup);
+        return;
+      }
+      region = region_polytope(in.centre, in.region_radius, strike.planes, seed, nudge);
+      const std::vector<Vec3d> points = break_points(in.material, in.centre, seed, nudge);
+      cells.resize(points.size());
+      for (std::uint32_t i = 0; i < points.size() && cells_made; ++i)
+        cells_made = voronoi_cell(region, points, i, strike.planes, cells[i]);
+    } catch (...) {
+      error[task] = std::current_exception();
     }
-  strike.soup = make_soup(in.mesh, faces);
-  const SoupIndex index = index_soup(strike.soup);
-  const SoupGrid grid = grid_soup(strike.soup);
-  Geometry g{&in.mesh, &strike.planes, &strike.soup, nullptr};
+  });
+  if (error[0]) std::rethrow_exception(error[0]);
+  if (!cells_made) {
+    strike.failure = "a cell is degenerate";
+    return false;
+  }
+  if (error[1]) std::rethrow_exception(error[1]);
   const double margin = 1e-6 * in.region_radius;
+  // The region's patch may add triangles to strike.soup (patch_outside()) while the cells read it:
+  // they read a copy.
+  const std::vector<SoupTriangle> cell_soup = strike.soup;
+  const Geometry g{&in.mesh, &strike.planes, &strike.soup, nullptr};
+  const Geometry cell_g{&in.mesh, &strike.planes, &cell_soup, nullptr};
   strike.seconds_cells += seconds_since(t);
 
+  // The region's patch and the cells are independent: each is clipped, capped and built as a task
+  // on the workers (core/threads.h), the patch, the longest, first; each writes only its own
+  // slot (the patch: strike's soup, patch, touched and failure), and the results are then taken in
+  // cell order, so they do not depend on the number of threads.
+  RegionWork region_work;
+  std::vector<CellWork> work(cells.size());
+  std::vector<CellScratch> scratch(detail::parallel_parts(cells.size() + 1, 1));
+  detail::parallel_tasks(
+      cells.size() + 1,
+      [&](std::size_t task, std::size_t worker) {
+        if (task == 0)
+          region_patch(in, g, index, grid, region, margin, strike, region_work);
+        else
+          piece_of(in, cell_g, index, grid, cells[task - 1], margin, scratch[worker], work[task - 1]);
+      },
+      scratch.size());
   // Per plane and piece, the cap area, for the bonds.
   std::vector<std::pair<std::pair<std::size_t, std::uint32_t>, double>> cap_areas;
-  // The cells are independent: each is clipped, capped and built on a worker (core/threads.h),
-  // into its own slot; the results are then taken in cell order, so they do not depend on the
-  // number of threads.
-  std::vector<CellWork> work(cells.size());
-  const std::size_t parts = detail::parallel_parts(cells.size(), 2);
-  std::vector<std::size_t> order;  // cells dealt out in turn, so each part gets both rings' cells
-  order.reserve(cells.size());
-  for (std::size_t p = 0; p < parts; ++p)
-    for (std::size_t i = p; i < cells.size(); i += parts) order.push_back(i);
-  detail::parallel_ranges(
-      order.size(),
-      [&](std::size_t begin, std::size_t end) {
-        CellScratch scratch;
-        for (std::size_t k = begin; k < end; ++k)
-          piece_of(in, g, index, grid, cells[order[k]], margin, scratch, work[order[k]]);
-      },
-      2, parts);
-  double clip_cpu = 0, cap_cpu = 0;
+  double clip_cpu = region_work.seconds_clip, cap_cpu = region_work.seconds_cap;
   for (std::size_t i = 0; i < cells.size(); ++i) {
     CellWork& w = work[i];
     if (w.error) std::rethrow_exception(w.error);
@@ -604,32 +670,13 @@ bool compute_strike(const StrikeInput& in, const std::vector<Face>& faces, doubl
   const double share = clip_cpu + cap_cpu > 0 ? clip_cpu / (clip_cpu + cap_cpu) : 0.5;
   strike.seconds_clip += loop * share;
   strike.seconds_cap += loop * (1 - share);
-  PolygonList polys;
-  FirstOut masks;
-  if (strike.pieces.empty()) return true;
-
-  // The patch: the touched triangles' parts outside P, and P's caps turned inwards.
-  polys.clear();
-  clip_all(g, index, grid, region, margin, masks, polys);
-  strike.seconds_clip += seconds_since(t);
-  KeyedSurface caps;
-  if (!cap_polytope(in, region, polys.view(), caps, strike.failure)) return false;
-  for (std::size_t k = 0; k < caps.tris.size(); ++k) {
-    const auto& tri = caps.tris[k];
-    strike.patch.add({tri[0], tri[2], tri[1]}, caps.source[k]);
+  if (strike.pieces.empty()) {
+    // No piece: nothing is broken, and the patch is not needed (nor its failure).
+    strike.failure.clear();
+    return true;
   }
-  strike.patch.points = std::move(caps.points);
-  // The caps are made: each polygon moves to its triangle's slot.
-  std::vector<ClipPolygon> inside_p(strike.soup.size());
-  std::vector<char> touched_tri(strike.soup.size(), 0);
-  for (std::size_t i = 0; i < polys.size; ++i) {
-    const std::uint32_t tri = polys.store[i].triangle;
-    touched_tri[tri] = 1;
-    inside_p[tri] = std::move(polys.store[i]);
-  }
-  if (!patch_outside(in, g, inside_p, touched_tri, strike)) return false;
-  strike.patch.finish_points();
-  strike.seconds_cap += seconds_since(t);
+  if (region_work.error) std::rethrow_exception(region_work.error);
+  if (!region_work.made) return false;
 
   // Bonds: cap area on a bisector joins its two cells' pieces, on a plane of P the remaining object.
   std::sort(cap_areas.begin(), cap_areas.end());

@@ -2,6 +2,7 @@
 // (fracture_solid_strike.cpp), then applied (fracture_solid_apply.cpp).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -89,7 +90,9 @@ std::int32_t inner_submesh_of(const SurfaceMesh& mesh, std::int32_t option);
 std::vector<SolidPiece> assemble_pieces(const StrikeInput& in, Strike& strike, std::int32_t inner);
 //! Replaces the touched faces of the mesh by the patch.
 void apply_remaining(const StrikeInput& in, Strike& strike, std::int32_t inner);
-//! Volume, mass properties and hull of every piece.
-void measure_pieces(std::vector<SolidPiece>& pieces, const SolidFractureOptions& o);
+//! Volume, mass properties and hull of every piece; `beside` (if any) runs on the workers at the
+//! same time (it must not touch the pieces).
+void measure_pieces(std::vector<SolidPiece>& pieces, const SolidFractureOptions& o,
+                    const std::function<void()>& beside = {});
 
 }  // namespace hedge::solid_detail

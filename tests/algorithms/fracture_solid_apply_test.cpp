@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "algorithms/fracture_solid_strike.h"
@@ -107,6 +108,45 @@ TEST(FractureSolidApply, PiecesAreMeasuredAlikeOnOneThreadOrSeveral) {
     EXPECT_GT(several[p].hull.mesh.n_faces(), 0u);
     EXPECT_TRUE(several[p].hull.mesh.validate().empty());
     EXPECT_TRUE(several[p].mesh.validate().empty());
+  }
+}
+
+// The remaining object is edited beside the measuring of the pieces: the edit runs once, the
+// pieces come out as measured alone, on one thread or two, and what the edit throws is passed on.
+TEST(FractureSolidApply, PiecesAreMeasuredBesideTheEdit) {
+  for (const unsigned threads : {1u, 2u}) {
+    SCOPED_TRACE(testing::Message() << threads << " thread(s)");
+    SurfaceMesh m = quad_sphere();
+    Setting s(m, to_double(m.position(Vertex(3))), 0.4);
+    s.options.hulls = true;
+    std::vector<Face> faces;
+    region_faces(s.in, faces);
+    Strike strike;
+    ASSERT_TRUE(compute_strike(s.in, faces, 0.0, 5, strike)) << strike.failure;
+    std::vector<SolidPiece> pieces = assemble_pieces(s.in, strike, 1);
+    ASSERT_GE(pieces.size(), 4u);
+    std::vector<SolidPiece> alone = pieces;
+    set_max_threads(1);
+    measure_pieces(alone, s.options);
+    set_max_threads(threads);
+    int edits = 0;
+    measure_pieces(pieces, s.options, [&] {
+      ++edits;
+      apply_remaining(s.in, strike, 1);
+    });
+    std::vector<SolidPiece> failed = alone;
+    EXPECT_THROW(measure_pieces(failed, s.options, [] { throw std::runtime_error("edit failed"); }),
+                 std::runtime_error);
+    set_max_threads(0);
+    EXPECT_EQ(edits, 1);
+    EXPECT_EQ(solid_test::solid_problem(m), "");
+    EXPECT_TRUE(m.validate().empty());
+    for (std::size_t p = 0; p < pieces.size(); ++p) {
+      EXPECT_EQ(pieces[p].volume, alone[p].volume);
+      EXPECT_EQ(pieces[p].centroid, alone[p].centroid);
+      EXPECT_EQ(pieces[p].hull.mesh.n_faces(), alone[p].hull.mesh.n_faces());
+      EXPECT_TRUE(pieces[p].mesh.validate().empty());
+    }
   }
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstring>
 #include <mutex>
 #include <set>
@@ -87,6 +88,37 @@ TEST_F(ThreadsTest, ThePartIndexNamesEachRangeOnce) {
   detail::parallel_ranges(
       40, [&](std::size_t begin, std::size_t, std::size_t part) { begin_of[part] = begin; }, 10);
   EXPECT_EQ(begin_of, (std::vector<std::size_t>{0, 10, 20, 30}));
+}
+
+// Tasks are taken in turn by whichever thread is free: each runs once, on a worker named in
+// [0, threads), and while a long first task holds one thread the others run on the other.
+TEST_F(ThreadsTest, TasksRunOnceAndBesideALongFirstTask) {
+  for (const unsigned threads : {1u, 2u}) {
+    SCOPED_TRACE(testing::Message() << threads << " thread(s)");
+    set_max_threads(threads);
+    constexpr std::size_t n = 50;
+    std::vector<std::atomic<int>> hits(n);
+    std::vector<std::size_t> worker_of(n, ~std::size_t(0));
+    std::atomic<std::size_t> done{0};
+    bool waited = true;
+    detail::parallel_tasks(n, [&](std::size_t task, std::size_t worker) {
+      hits[task].fetch_add(1);
+      worker_of[task] = worker;
+      if (task == 0 && threads > 1) {
+        // Holds its thread until the other tasks are done (bounded, so wrong code fails, not hangs).
+        for (int i = 0; i < 20'000 && done.load() < n - 1; ++i)
+          std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        waited = done.load() == n - 1;
+      }
+      if (task != 0) done.fetch_add(1);
+    });
+    for (std::size_t t = 0; t < n; ++t) {
+      EXPECT_EQ(hits[t].load(), 1) << "task " << t;
+      EXPECT_LT(worker_of[t], threads) << "task " << t;
+      if (threads > 1 && t > 0) EXPECT_NE(worker_of[t], worker_of[0]) << "task " << t;
+    }
+    EXPECT_TRUE(waited);
+  }
 }
 
 // A wavy grid, big enough that each subdivision pass splits between two threads.

@@ -22,8 +22,9 @@
 //     gets a cap, the part of it inside the object: its loops (several, holes included) are
 //     triangulated in the face's plane. A piece is the clipped surface and its caps. The cells are
 //     independent: they are clipped and capped on worker threads (core/threads.h:
-//     set_max_threads(1) keeps the strike on the calling thread), and the pieces are taken in cell
-//     order, so the result does not depend on the number of threads.
+//     set_max_threads(1) keeps the strike on the calling thread), beside the remaining object's
+//     patch (step 5), and the pieces are taken in cell order, so the result does not depend on the
+//     number of threads.
 //  5. remaining object: the faces that meet P leave the mesh, and their parts outside P come back
 //     with P's caps turned inwards, so the mesh stays closed. Only the faces that meet P are
 //     touched: the cost follows the broken region, not the mesh.
@@ -133,12 +134,15 @@ struct SolidFractureResult {
   Vec3 impact_point;
   //! The break radius used, in model units.
   double radius = 0;
-  //! Wall-clock seconds per stage (steady clock): locating; the break points and cells; clipping
-  //! the triangles by the cells; capping; assembling the pieces and editing the remaining object;
-  //! per-piece work (mass properties, hulls). The cells are clipped and capped in one loop over
-  //! worker threads: its wall time is split between clip and cap as their thread times are. The
-  //! pieces are measured on worker threads too (core/threads.h); set_max_threads(1) keeps all of
-  //! it on the calling thread, and the result does not depend on it.
+  //! Wall-clock seconds per stage (steady clock), one after the other: locate; cells: the break
+  //! points and cells (the region's triangles are gathered beside them);
+  //! clip and cap: the cells' pieces and the remaining object's patch are clipped and capped as
+  //! tasks on worker threads, and that loop's wall time is split between clip and cap as their
+  //! thread times are; assemble: assembling the pieces, then the wall time of editing the
+  //! remaining object (and updating the picking tree); per_piece: the rest of the wall time until
+  //! every piece is measured (mass properties, hulls), on worker threads beside that edit.
+  //! set_max_threads(1) (core/threads.h) keeps all of it on the calling thread, one stage after
+  //! the other, and the result does not depend on it.
   struct Timings {
     double locate = 0, cells = 0, clip = 0, cap = 0, assemble = 0, per_piece = 0;
   } seconds;

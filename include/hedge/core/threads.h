@@ -3,17 +3,18 @@
 // Most functions run on the calling thread only. A few split a long loop between worker threads:
 // subdivide() (include/hedge/algorithms/subdivide.h), one_sided_distance() and
 // hausdorff_distance() (include/hedge/algorithms/distance.h), and fracture_solid()
-// (include/hedge/algorithms/fracture_solid.h: its cells and the measuring of its pieces). Each
-// says so in its header; their results do not depend on the number of threads. How many they may
-// use is one process-wide setting: set_max_threads(1) keeps every call on the calling thread
-// (inside a game's frame, say), set_max_threads(0) (the default) lets them use every core the
-// process may run on.
+// (include/hedge/algorithms/fracture_solid.h: its cells, its patch and the measuring of its
+// pieces). Each says so in its header; their results do not depend on the number of threads. How
+// many they may use is one process-wide setting: set_max_threads(1) keeps every call on the
+// calling thread (inside a game's frame, say), set_max_threads(0) (the default) lets them use
+// every core the process may run on.
 //
 // The workers live only for the duration of the call that started them: nothing runs in the
 // background between calls, and a call returns only when its workers have finished.
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <thread>
 #include <type_traits>
@@ -69,6 +70,27 @@ void parallel_ranges(std::size_t n, Body&& body, std::size_t grain = std::size_t
   run(0);
   for (std::size_t q = p; q < parts; ++q) run(q);
   for (std::thread& t : threads) t.join();
+}
+
+//! Calls body(task, worker) for every task in [0, n), on up to parallel_parts(n, 1, cap) threads,
+//! the calling thread one of them, with worker in [0, threads) naming the thread (for per-thread
+//! scratch). Each thread takes the lowest task not yet taken, so tasks start in increasing order:
+//! put a long task first and the others run beside it. Which thread runs a task varies from call
+//! to call, so the body must write only what its task (or its worker's scratch) owns and must not
+//! throw; results then do not depend on the number of threads. A thread costs some tens of
+//! microseconds: tasks should be longer than that.
+template <typename Body>
+void parallel_tasks(std::size_t n, Body&& body, std::size_t cap = 0) {
+  const std::size_t threads = parallel_parts(n, 1, cap);
+  std::atomic<std::size_t> next{0};
+  parallel_ranges(
+      threads,
+      [&body, &next, n](std::size_t, std::size_t, std::size_t worker) {
+        for (std::size_t task = next.fetch_add(1, std::memory_order_relaxed); task < n;
+             task = next.fetch_add(1, std::memory_order_relaxed))
+          body(task, worker);
+      },
+      1, threads);
 }
 
 }  // namespace detail
