@@ -65,7 +65,7 @@ Centred centre(std::span<const Vec3> points) {
 
 // The unit normal of triangle abc from its two shorter edges (the better-conditioned cross
 // product); zero for a triangle without area.
-Vec3d triangle_normal(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+inline Vec3d triangle_normal(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
   const Vec3d ab = b - a, bc = c - b, ca = a - c;
   const double lab = dot(ab, ab), lbc = dot(bc, bc), lca = dot(ca, ca);
   Vec3d n;
