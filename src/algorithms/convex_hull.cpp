@@ -289,8 +289,8 @@ class Quickhull {
           faces_[g].seen = stamp_;
           visible_.push_back(g);
         } else {
-          const std::size_t slot = std::size_t(
-              std::find(faces_[g].nb.begin(), faces_[g].nb.end(), visible_[k]) - faces_[g].nb.begin());
+          const std::array<std::uint32_t, 3>& back = faces_[g].nb;  // one of them is this face
+          const std::size_t slot = back[0] == visible_[k] ? 0 : back[1] == visible_[k] ? 1 : 2;
           horizon_.push_back({f.v[i], f.v[(i + 1) % 3], g, slot});
         }
       }
