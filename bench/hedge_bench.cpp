@@ -13,6 +13,10 @@
 // ordering lowers for a GPU drawing the faces in index order.
 //
 // BM_convex_hull/<n>: the convex hull of n random points in a ball (200: a shard's size).
+// BM_convex_hull_pieces/<points>: the hulls of the pieces of one solid strike on sphere_100k (as
+// BM_fracture_solid's first strike, 64 or 200 break points), each of its vertex set, all pieces per
+// iteration (the time is for all of them); counters: the pieces and their mean vertex count. A
+// piece's points are nearly all on its hull (a convex mesh cut by convex cells), unlike a ball's.
 // BM_triangulate_polygon/<shape>/<n>: ear clipping (core/triangulate.h) of one polygon of n corners:
 // a circle with each corner moved in or out at random (jitter, about half of the corners
 // reflex), a comb (every other corner reflex), and a zigzag strip numbered from the middle of one
@@ -502,6 +506,37 @@ void fracture_solid_impacts(benchmark::State& state, int n, float radius, unsign
     state.counters["per_piece_us"] = total.per_piece * k;
   }
 }
+
+void BM_convex_hull_pieces(benchmark::State& state) {
+  const auto points = static_cast<unsigned>(state.range(0));
+  hedge::SurfaceMesh mesh = grid_sphere(91);
+  hedge::FaceBvh bvh(mesh);
+  std::mt19937_64 rng(1);
+  std::normal_distribution<double> g;
+  const hedge::Vec3 dir = {float(g(rng)), float(g(rng)), float(g(rng))};
+  hedge::SolidFractureOptions options;
+  options.material.name = "bench";
+  options.material.rings = {{points / 4, 1, 0.5}, {points - points / 4, 1, 0.5}};
+  options.radius = 0.5;
+  options.seed = rng();
+  const hedge::SolidFractureResult r =
+      hedge::fracture_solid(mesh, bvh.closest_point(dir)->point, options, &bvh);
+  std::vector<std::vector<hedge::Vec3>> sets;
+  std::size_t n_points = 0;
+  for (const hedge::SolidPiece& piece : r.pieces) {
+    std::vector<hedge::Vec3>& set = sets.emplace_back();
+    for (hedge::Vertex v : piece.mesh.vertices()) set.push_back(piece.mesh.position(v));
+    n_points += set.size();
+  }
+  for (auto _ : state)
+    for (const std::vector<hedge::Vec3>& set : sets) {
+      hedge::ConvexHull h = hedge::convex_hull(set);
+      benchmark::DoNotOptimize(h);
+    }
+  state.counters["pieces"] = double(sets.size());
+  state.counters["points"] = double(n_points) / double(sets.size());
+}
+BENCHMARK(BM_convex_hull_pieces)->Arg(64)->Arg(200)->Unit(benchmark::kMicrosecond);
 
 void register_fracture(const std::string& root) {
   struct Sphere {

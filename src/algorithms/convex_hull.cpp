@@ -65,7 +65,7 @@ Centred centre(std::span<const Vec3> points) {
 
 // The unit normal of triangle abc from its two shorter edges (the better-conditioned cross
 // product); zero for a triangle without area.
-Vec3d triangle_normal(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+inline Vec3d triangle_normal(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
   const Vec3d ab = b - a, bc = c - b, ca = a - c;
   const double lab = dot(ab, ab), lbc = dot(bc, bc), lca = dot(ca, ca);
   Vec3d n;
@@ -176,8 +176,6 @@ class Quickhull {
   struct Face_ {
     std::array<std::uint32_t, 3> v{};   // counter-clockwise seen from outside
     std::array<std::uint32_t, 3> nb{};  // nb[i]: the face across edge v[i] -> v[i + 1]
-    Vec3d normal;
-    double offset = 0;
     List outside;
     // Points within eps of the plane, neither outside nor clearly inside. They are sorted again
     // when the face is replaced or a face is built next to it: a nearly coplanar new face, tilted
@@ -185,6 +183,7 @@ class Quickhull {
     List near;
     std::uint32_t farthest = kNone;
     double farthest_distance = 0;
+    std::uint32_t seen = 0;  // the stamp of the last point that saw the face
     bool alive = true;
   };
   struct HorizonEdge {
@@ -192,25 +191,45 @@ class Quickhull {
     std::size_t outer_slot;         // the edge's slot in the outer face
   };
 
-  double distance(const Face_& f, std::uint32_t i) const { return dot(f.normal, p_[i]) - f.offset; }
+  // A face's plane: the points x with dot(normal, x) == offset. Kept apart from the faces, so that
+  // the loops over the faces a point may go to read them in one run.
+  struct Plane {
+    Vec3d normal;
+    double offset = 0;
+  };
+
+  double distance(std::uint32_t f, std::uint32_t i) const {
+    return dot(planes_[f].normal, p_[i]) - planes_[f].offset;
+  }
 
   std::uint32_t new_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    Face_& f = faces_.emplace_back();
-    f.v = {a, b, c};
-    f.normal = triangle_normal(p_[a], p_[b], p_[c]);
-    f.offset = dot(f.normal, (p_[a] + p_[b] + p_[c]) * (1.0 / 3.0));
+    faces_.emplace_back().v = {a, b, c};
+    Plane& pl = planes_.emplace_back();
+    pl.normal = triangle_normal(p_[a], p_[b], p_[c]);
+    pl.offset = dot(pl.normal, (p_[a] + p_[b] + p_[c]) * (1.0 / 3.0));
     return static_cast<std::uint32_t>(faces_.size() - 1);
   }
 
-  // Gives point i to the face among `candidates` it lies farthest beyond: as an outside point if
-  // that is beyond eps, as a near point if within eps; a point inside by more is dropped.
-  void assign(std::uint32_t i, std::span<const std::uint32_t> candidates) {
+  // The faces made together (the four of the simplex, a fan) are numbered in one run.
+  struct Run {
+    std::uint32_t first = 0, count = 0;
+  };
+
+  // The face of `run` that point i lies farthest beyond (the first of equals), and how far.
+  std::pair<std::uint32_t, double> farthest_face(std::uint32_t i, Run run) const {
+    const Vec3d q = p_[i];
+    const Plane* pl = planes_.data() + run.first;
     std::uint32_t best = kNone;
     double best_d = -std::numeric_limits<double>::infinity();
-    for (std::uint32_t f : candidates) {
-      const double d = distance(faces_[f], i);
-      if (d > best_d) best_d = d, best = f;
-    }
+    for (std::uint32_t k = 0; k < run.count; ++k)
+      if (const double d = dot(pl[k].normal, q) - pl[k].offset; d > best_d) best_d = d, best = run.first + k;
+    return {best, best_d};
+  }
+
+  // Gives point i to the face of `run` it lies farthest beyond: as an outside point if that is
+  // beyond eps, as a near point if within eps; a point inside by more is dropped.
+  void assign(std::uint32_t i, Run run) {
+    const auto [best, best_d] = farthest_face(i, run);
     if (best == kNone || best_d < -eps_) return;  // inside
     Face_& f = faces_[best];
     if (best_d <= eps_) {  // on the hull within the tolerance, for now
@@ -221,8 +240,8 @@ class Quickhull {
     if (best_d > f.farthest_distance) f.farthest_distance = best_d, f.farthest = i;
   }
 
-  void push_if_outside(std::span<const std::uint32_t> fs) {
-    for (std::uint32_t f : fs)
+  void push_if_outside(Run run) {
+    for (std::uint32_t f = run.first; f < run.first + run.count; ++f)
       if (!faces_[f].outside.empty()) heap_.push({faces_[f].farthest_distance, f});
   }
 
@@ -232,7 +251,9 @@ class Quickhull {
     // Now d is below abc: abc, and the three faces through d, wind outward.
     // Room for the faces of a typical hull, bounded so that a large cloud (whose hull is usually
     // far smaller) does not reserve memory in proportion to its points; beyond it, it grows.
-    faces_.reserve(std::min<std::size_t>(8 * p_.size() + 16, std::size_t(1) << 14));
+    const std::size_t room = std::min<std::size_t>(8 * p_.size() + 16, std::size_t(1) << 14);
+    faces_.reserve(room);
+    planes_.reserve(room);
     const std::array<std::uint32_t, 4> f{new_face(a, b, c), new_face(a, d, b), new_face(b, d, c),
                                          new_face(c, d, a)};
     for (std::uint32_t x : f)
@@ -242,13 +263,12 @@ class Quickhull {
           for (std::size_t j = 0; j < 3; ++j)
             if (faces_[y].v[j] == to && faces_[y].v[(j + 1) % 3] == from) faces_[x].nb[i] = y;
       }
-    visible_mark_.assign(faces_.size(), 0);
     point_mark_.assign(p_.size(), 0);
     start_face_.assign(p_.size(), kNone);
     end_face_.assign(p_.size(), kNone);
     for (std::uint32_t i = 0; i < p_.size(); ++i)
-      if (i != a && i != b && i != c && i != d) assign(i, f);
-    push_if_outside(f);
+      if (i != a && i != b && i != c && i != d) assign(i, {f[0], 4});
+    push_if_outside({f[0], 4});
     n_vertices_ = 4;
   }
 
@@ -258,20 +278,19 @@ class Quickhull {
     // The faces the apex sees, found by a walk from f0, and the horizon around them.
     visible_.clear();
     horizon_.clear();
-    visible_mark_.resize(faces_.size(), 0);
-    visible_mark_[f0] = stamp_;
+    faces_[f0].seen = stamp_;
     visible_.push_back(f0);
     for (std::size_t k = 0; k < visible_.size(); ++k) {
       const Face_& f = faces_[visible_[k]];
       for (std::size_t i = 0; i < 3; ++i) {
         const std::uint32_t g = f.nb[i];
-        if (visible_mark_[g] == stamp_) continue;
-        if (distance(faces_[g], apex) > visible_eps_) {
-          visible_mark_[g] = stamp_;
+        if (faces_[g].seen == stamp_) continue;
+        if (distance(g, apex) > visible_eps_) {
+          faces_[g].seen = stamp_;
           visible_.push_back(g);
         } else {
-          const std::size_t slot = std::size_t(
-              std::find(faces_[g].nb.begin(), faces_[g].nb.end(), visible_[k]) - faces_[g].nb.begin());
+          const std::array<std::uint32_t, 3>& back = faces_[g].nb;  // one of them is this face
+          const std::size_t slot = back[0] == visible_[k] ? 0 : back[1] == visible_[k] ? 1 : 2;
           horizon_.push_back({f.v[i], f.v[(i + 1) % 3], g, slot});
         }
       }
@@ -298,21 +317,19 @@ class Quickhull {
     n_vertices_ = n_vertices_ + 1 - removed;
 
     // A fan of new faces from the apex to the horizon, linked to the outer faces and each other.
-    new_faces_.clear();
+    const Run fan{static_cast<std::uint32_t>(faces_.size()), static_cast<std::uint32_t>(horizon_.size())};
     for (const HorizonEdge& e : horizon_) {
       const std::uint32_t nf = new_face(e.from, e.to, apex);
       faces_[nf].nb[0] = e.outer;
       faces_[e.outer].nb[e.outer_slot] = nf;
       start_face_[e.from] = nf;
       end_face_[e.to] = nf;
-      new_faces_.push_back(nf);
     }
-    for (std::uint32_t nf : new_faces_) {
+    for (std::uint32_t nf = fan.first; nf < fan.first + fan.count; ++nf) {
       Face_& f = faces_[nf];
       f.nb[1] = start_face_[f.v[1]];  // across to -> apex: the face whose horizon edge starts at `to`
       f.nb[2] = end_face_[f.v[0]];    // across apex -> from: the face whose horizon edge ends at `from`
     }
-    visible_mark_.resize(faces_.size(), 0);
 
     // The visible faces' outside points go to the new faces or, now inside, are dropped.
     for (std::uint32_t f : visible_) {
@@ -320,32 +337,24 @@ class Quickhull {
       const List outside = std::exchange(faces_[f].outside, {}), near = std::exchange(faces_[f].near, {});
       for (std::uint32_t i = outside.head, after; i != kNone; i = after) {
         after = next_[i];
-        if (i != apex) assign(i, new_faces_);
+        if (i != apex) assign(i, fan);
       }
       for (std::uint32_t i = near.head, after; i != kNone; i = after) {
         after = next_[i];
-        assign(i, new_faces_);
+        assign(i, fan);
       }
     }
     // The near points of the faces beyond the horizon, against their face and the new ones.
     for (const HorizonEdge& e : horizon_) {
       if (faces_[e.outer].near.empty()) continue;
       const List near = std::exchange(faces_[e.outer].near, {});
-      std::array<std::uint32_t, 1> self{e.outer};
       for (std::uint32_t i = near.head, after; i != kNone; i = after) {
         after = next_[i];
-        std::uint32_t best = kNone;
-        double best_d = -std::numeric_limits<double>::infinity();
-        for (std::uint32_t f : new_faces_)
-          if (const double d = distance(faces_[f], i); d > best_d) best_d = d, best = f;
-        if (best_d > eps_) {
-          assign(i, {&best, 1});
-        } else {
-          assign(i, self);
-        }
+        const auto [best, best_d] = farthest_face(i, fan);
+        assign(i, best_d > eps_ ? Run{best, 1} : Run{e.outer, 1});
       }
     }
-    push_if_outside(new_faces_);
+    push_if_outside(fan);
   }
 
   void drop(std::uint32_t f0) {
@@ -359,8 +368,8 @@ class Quickhull {
     f.farthest = kNone;
     f.farthest_distance = 0;
     for (std::uint32_t i = f.outside.head; i != kNone; i = next_[i])
-      if (const double d = distance(f, i); d > f.farthest_distance) f.farthest_distance = d, f.farthest = i;
-    push_if_outside({&f0, 1});
+      if (const double d = distance(f0, i); d > f.farthest_distance) f.farthest_distance = d, f.farthest = i;
+    push_if_outside({f0, 1});
   }
 
   const std::vector<Vec3d>& p_;
@@ -368,11 +377,22 @@ class Quickhull {
   double dropped_ = 0;               // the farthest a point left out by drop() was beyond its face
   std::vector<std::uint32_t> next_;  // the point after each in its face's outside or near list
   std::vector<Face_> faces_;
-  std::priority_queue<std::pair<double, std::uint32_t>> heap_;
+  std::vector<Plane> planes_;  // each face's
+  // The faces with outside points, by their farthest point's distance, then by index (the larger
+  // first). Distances are finite, so this is the order of the pairs themselves, compared directly.
+  struct ByDistance {
+    bool operator()(const std::pair<double, std::uint32_t>& a,
+                    const std::pair<double, std::uint32_t>& b) const {
+      return a.first < b.first || (a.first == b.first && a.second < b.second);
+    }
+  };
+  std::priority_queue<std::pair<double, std::uint32_t>, std::vector<std::pair<double, std::uint32_t>>,
+                      ByDistance>
+      heap_;
   std::size_t n_vertices_ = 0;
   std::uint32_t stamp_ = 0;
-  std::vector<std::uint32_t> visible_mark_, point_mark_, start_face_, end_face_;
-  std::vector<std::uint32_t> visible_, new_faces_;
+  std::vector<std::uint32_t> point_mark_, start_face_, end_face_;
+  std::vector<std::uint32_t> visible_;
   std::vector<HorizonEdge> horizon_;
 };
 
