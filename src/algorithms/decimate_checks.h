@@ -31,8 +31,9 @@ constexpr double kRemovedWeight = 0.2;
 // the greedy order, not when it is ranked (a lower bound is enough to order a lazy heap): counted
 // at every ranking it took bunny to 10% from 538M to 747M instructions, counted when taken from
 // 538M to 529M. Weight 1 passed 20 of the 26 cases of the README's table against 17 (turbine at
-// 10% 0.96 times CGAL's distance instead of 1.43, at 1% 1.10 instead of 1.48); 0.5 passed 19; 2
-// and 3 passed 21 and 22 counted at every ranking but made spot at 1% 1.26 and turbine at 1% 1.26.
+// 10% 0.96 times CGAL's distance instead of 1.43, at 1% 1.10 instead of 1.48); weight 2 passed 22
+// but made turbine at 1% 1.72 times, weight 3 passed 21 with turbine at 1% 1.89 times (and counted
+// at every ranking, weight 0.5 passed 19).
 constexpr double kBridgeWeight = 1.0;
 
 // Throws InvalidInputError, naming what and where, for a face that is not a triangle, a position
