@@ -34,7 +34,9 @@ namespace hedge {
 namespace {
 
 using Mesh = SurfaceMesh;
+using detail::decimation::bridge_distance2;
 using detail::decimation::check_input;
+using detail::decimation::kBridgeWeight;
 using detail::decimation::kRemovedWeight;
 using detail::decimation::prefetch;
 using detail::decimation::Quadric;
@@ -110,6 +112,7 @@ class Decimator {
   // placement(h) for a candidate: the point its edge's last ranking kept, if any, with its cost.
   void placed(Halfedge h, Vec3d& p, double& cost) const;
   double cost_at(Halfedge h, const Quadric& q, const Vec3d& p) const;
+  double bridged(Halfedge h, const Vec3d& p, double cost) const;
   enum class Check { ok, normal, shape };
   Check check_faces(Halfedge h, const Vec3d& p, bool shape) const;
   // The key of e's best collapse: (cost's float bits << 32) | half-edge, kOverError or kNoKey.
@@ -391,7 +394,14 @@ void Decimator::placed(Halfedge h, Vec3d& p, double& cost) const {
 // counts only where it exceeds the quadric's error: the search may stop below that.
 double Decimator::cost_at(Halfedge h, const Quadric& q, const Vec3d& p) const {
   const double e = error_at(q, p);
-  return !tail_ ? e : std::max(e, kRemovedWeight * removed_distance2(m_, h, p, e / kRemovedWeight));
+  if (!tail_) return e;
+  return std::max(e, kRemovedWeight * removed_distance2(m_, h, p, e / kRemovedWeight));
+}
+
+// The cost of collapsing h to p near the target once the candidate is taken: at least the weighted
+// squared distance of the new faces from the old ones (only where it exceeds `cost`).
+double Decimator::bridged(Halfedge h, const Vec3d& p, double cost) const {
+  return std::max(cost, kBridgeWeight * bridge_distance2(m_, h, p, cost / kBridgeWeight));
 }
 
 Decimator::Check Decimator::check(Halfedge h, const Vec3d& p, double cost, bool shapely) const {
@@ -500,6 +510,22 @@ Decimator::Tally Decimator::collapse_greedy(bool shapely, DecimateResult& result
     Vec3d p;
     double cost;
     placed(h, p, cost);
+    // The key ranked without the new faces' distance from the old ones (bridged()), a lower bound:
+    // if that distance raises the cost, the candidate goes back into the heap at its full cost.
+    if (const double full = bridged(h, p, cost); static_cast<float>(full) > static_cast<float>(cost)) {
+      const std::uint64_t k = full <= max_cost_
+                                  ? std::uint64_t(float_bits(static_cast<float>(full))) << 32 | h.idx()
+                                  : kOverError;
+      if (k != key) {
+        edge_key_[e] = k;
+        if (k == kOverError)
+          over_error = true;
+        else
+          offer(k);
+        continue;
+      }
+      cost = full;
+    }
     if (const Check c = check(h, p, cost, shapely); c != Check::ok) {
       ++(c == Check::normal ? result.refused.normal : result.refused.shape);
       t.refused_shape += c == Check::shape;

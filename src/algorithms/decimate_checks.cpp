@@ -76,4 +76,51 @@ double removed_distance2(const SurfaceMesh& m, Halfedge h, const Vec3d& p, doubl
   return std::isfinite(d) ? d : 0.0;
 }
 
+double bridge_distance2(const SurfaceMesh& m, Halfedge h, const Vec3d& p, double limit) {
+  const Vec3 x = to_float(p);
+  // No limit: every distance exact.
+  if (!std::isfinite(limit)) limit = -1;
+  // The squared distance of g to the nearest old face around either end, or some value at most
+  // `limit` once one is that near.
+  auto nearest_old = [&](const Vec3& g) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const Halfedge start : {h, SurfaceMesh::twin(h)}) {
+      Halfedge o = start;
+      do {
+        if (m.face(o).is_valid()) {
+          const Vec3 b = m.position(m.to_vertex(o)), c = m.position(m.to_vertex(m.next(o)));
+          best = std::min(best,
+                          closest_point_on_triangle(g, m.position(m.from_vertex(o)), b, c).squared_distance);
+          if (best <= limit) return best;
+        }
+        o = m.rotate_cw(o);
+      } while (o != start);
+    }
+    return best;
+  };
+  const Face fl = m.face(h), fr = m.face(SurfaceMesh::twin(h));
+  double worst = 0;
+  for (const Halfedge start : {h, SurfaceMesh::twin(h)}) {
+    // Each new face (x, b, c) of this end replaces (y, b, c), y the end's old position; their
+    // centroids are |x - y| / 3 apart, which bounds the distance to the old face for all of them.
+    const Vec3 y = m.position(m.from_vertex(start));
+    const Vec3d xy = to_double(x) - to_double(y);
+    if (dot(xy, xy) <= 9 * limit) continue;
+    Halfedge o = start;
+    do {
+      const Face f = m.face(o);
+      if (f.is_valid() && f != fl && f != fr) {
+        const Vec3 b = m.position(m.to_vertex(o)), c = m.position(m.to_vertex(m.next(o)));
+        const Vec3 g{(x.x + b.x + c.x) / 3, (x.y + b.y + c.y) / 3, (x.z + b.z + c.z) / 3};
+        // The face it replaces is nearly always the nearest: try it first.
+        double d = closest_point_on_triangle(g, y, b, c).squared_distance;
+        if (d > limit) d = std::min(d, nearest_old(g));
+        worst = std::max(worst, d);
+      }
+      o = m.rotate_cw(o);
+    } while (o != start);
+  }
+  return worst;
+}
+
 }  // namespace hedge::detail::decimation

@@ -12,6 +12,7 @@
 namespace hedge {
 namespace {
 
+using detail::decimation::bridge_distance2;
 using detail::decimation::removed_distance2;
 
 // A fan of six triangles around vertex 0 at height `apex` over the centre of a unit hexagon.
@@ -42,6 +43,20 @@ TEST(DecimateChecks, ASpikeCostsItsHeight) {
   // old corner is off the faces left.
   const Halfedge g = m.find_halfedge(Vertex(1), Vertex(0));
   EXPECT_GT(removed_distance2(m, g, to_double(m.position(Vertex(4)))), 0.0);
+}
+
+TEST(DecimateChecks, NewFacesOffTheOldSurfaceCostTheirCentroidsDistance) {
+  const SurfaceMesh m = fan(0);
+  const Halfedge h = m.find_halfedge(Vertex(0), Vertex(1));
+  const Vec3d corner = to_double(m.position(Vertex(1)));
+  // Merged into a rim corner that stays, the centre leaves faces on the old plane.
+  EXPECT_EQ(bridge_distance2(m, h, corner), 0.0);
+  // Lifted by 3, the survivor lifts each new face's centroid by 1 over the old faces, whose
+  // vertices all still lie on that plane: the vertices alone would not tell.
+  const Vec3d lifted = corner + Vec3d{0, 0, 3};
+  EXPECT_NEAR(bridge_distance2(m, h, lifted), 1.0, 1e-6);
+  // With a limit above it, the search may stop early, at some value within the limit.
+  EXPECT_LE(bridge_distance2(m, h, lifted, 4.0), 4.0);
 }
 
 TEST(DecimateChecks, RefusesATriangleLessMeshInputByName) {

@@ -163,6 +163,22 @@ TEST(Decimate, KeepsThinFeaturesThePlanesUnderrate) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+// A new face whose corners lie on the surface can still stand off it (bridging the fold under an
+// ear or a fillet), which no vertex-based measure sees; near the target the distance of the new
+// faces' centroids from the faces they replace bounds the cost from below. To 10% of its vertices
+// the cow comes within 0.0207 of the input, against 0.0223 without the bound.
+TEST(Decimate, NewFacesKeepCloseToTheSurfaceTheyReplace) {
+  const IndexedMesh file = read_indexed_file(test::data_path("spot_triangulated.obj"));
+  const SurfaceMesh input = build_triangles(file.positions, file.indices);
+  SurfaceMesh m = input;
+  decimate(m, {.target_vertices = input.n_vertices() / 10});
+  const HausdorffDistance d =
+      hausdorff_distance(input, m, {.samples = std::max<std::size_t>(100000, input.n_faces())});
+  EXPECT_LT(d.distance, 0.0216);
+  EXPECT_EQ(flipped_faces(input, m), 0u);
+  EXPECT_TRUE(m.validate().empty());
+}
+
 TEST(Decimate, AMeshRefinedWithoutMovingCollapsesBackExactly) {
   // Midpoint subdivision adds vertices on the old faces and edges only, so decimating back to the
   // old vertex count can give the old surface exactly: every collapse the cheapest passes need

@@ -8,9 +8,11 @@
 //    the planes the two ends gathered (W: their total weight), or, if larger and near the target
 //    (in the greedy order below), sqrt(1/5) times the distance from each position the collapse
 //    removes (the merged-away end's, and the survivor's if it moves) to the nearest new face
-//    around the survivor. Plane quadrics underrate removing a thin feature (the planes of a horn
-//    run almost through its base) and bridging a notch; the second term measures both, and is 0
-//    on a flat region.
+//    around the survivor, or the squared distance from the centroid of each new face to the
+//    nearest face it replaces (counted when the greedy order takes the candidate). Plane quadrics
+//    underrate removing a thin feature (the planes of a horn run almost through its base) and
+//    bridging a notch or a fillet with a face whose corners all lie on the surface; these terms
+//    measure both, and are 0 on a flat region.
 //  - The surviving point minimises the quadric in the directions it determines: from the edge's
 //    midpoint, along the eigenvectors of the quadric's 3x3 matrix whose eigenvalue is at least 1e-3
 //    of the largest (a truncated pseudo-inverse, as in Lindstrom and Turk's placement); along the
