@@ -117,6 +117,40 @@ TEST(Normals, FaceNormalsOfAManyFacedMeshSkipRemovedFaces) {
   EXPECT_TRUE(m.validate().empty());
 }
 
+// compute_face_normals takes its faces in blocks and normalises four at a time; each triangle's
+// normal is still, bit for bit, its two edges' cross product in float times 1 / sqrt of its
+// squared length, or zero for a degenerate triangle. On a bent grid of more faces than a block,
+// with faces removed and faces made degenerate.
+TEST(Normals, FaceNormalsAreTheFloatCrossProductNormalisedBitForBit) {
+  IndexedMesh in = test::grid(12, true);
+  for (Vec3& p : in.positions) p.z = 0.37f * std::sin(3 * p.x) + 0.11f * p.x * p.y;
+  in.positions[1] = in.positions[0];  // the faces at the edge 0-1 are degenerate
+  SurfaceMesh m = build(in);
+  ASSERT_GT(m.n_faces(), 200u);
+  for (Index f = 30; f < 200; f += 41)
+    if (can_remove_face(m, Face(f))) remove_face(m, Face(f));
+  ASSERT_TRUE(m.has_garbage());
+  const FaceProperty<Vec3> n = compute_face_normals(m);
+  int zero = 0;
+  for (Face f : m.faces()) {
+    const Halfedge h0 = m.halfedge(f), h1 = m.next(h0), h2 = m.next(h1);
+    const Vec3 &p0 = m.position(m.to_vertex(h0)), &p1 = m.position(m.to_vertex(h1)),
+               &p2 = m.position(m.to_vertex(h2));
+    const float ax = p1.x - p0.x, ay = p1.y - p0.y, az = p1.z - p0.z;
+    const float bx = p2.x - p0.x, by = p2.y - p0.y, bz = p2.z - p0.z;
+    const Vec3 c{ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx};
+    const float s = c.x * c.x + c.y * c.y + c.z * c.z;
+    const float inv = s > 0 ? 1.f / std::sqrt(s) : 0.f;
+    const Vec3 want = s > 0 ? Vec3{c.x * inv, c.y * inv, c.z * inv} : Vec3{0, 0, 0};
+    zero += s == 0;
+    EXPECT_EQ(n[f].x, want.x) << "face " << f.idx();
+    EXPECT_EQ(n[f].y, want.y) << "face " << f.idx();
+    EXPECT_EQ(n[f].z, want.z) << "face " << f.idx();
+  }
+  EXPECT_GT(zero, 0);
+  EXPECT_TRUE(m.validate().empty());
+}
+
 TEST(Normals, CornerNormalsSplitAtCreases) {
   SurfaceMesh m = build(to_indexed(build(test::cube()), {.triangulation = Triangulation::fan}));
   // 30 degrees: every edge of the cube is a crease, so every corner gets its face's normal.
