@@ -44,9 +44,9 @@
 // sphere of 100k (sphere_100k) or 1M (sphere_1m) triangles of radius 1, or of 1M triangles of
 // radius sqrt(10) (sphere_1m_r3: the triangles of sphere_100k's size, so the broken region holds
 // as many of them), break radius 0.5 (model units, the same on all), with a material of 64 or 200
-// break points in two shells (about half of the cells hold part of the sphere, so about 32 or 100
-// pieces). Impacts at the surface point
-// nearest to a random direction, the FaceBvh kept up to date by the strikes; the mesh and its
+// break points in two shells (about 40 or 110 pieces: not every cell holds part of the sphere),
+// and on sphere_100k 52 and 182 points, about the 32 and 100 pieces of the bars. Impacts at the
+// surface point nearest to a random direction, the FaceBvh kept up to date by the strikes; the mesh and its
 // tree are restored (timer paused) every 4 strikes. The CPU time is the process's: the cells'
 // worker threads (core/threads.h) included. Counters: pieces per strike, median and p99
 // microseconds, and the mean microseconds of each stage (locate, cells, clip, cap, assemble,
@@ -64,6 +64,7 @@
 #include <vector>
 
 #include "bench_common.h"
+#include "grid_sphere.h"
 #include "hedge/algorithms/convex_hull.h"
 #include "hedge/algorithms/decimate.h"
 #include "hedge/algorithms/fracture.h"
@@ -407,40 +408,7 @@ void capi_fracture_impacts(benchmark::State& state, std::string name, std::strin
   set_fracture_counters(state, seconds, double(input->n_faces()), broken, faces);
 }
 
-//! A closed sphere of radius 1: a cube's faces cut into n x n squares of two triangles each
-//! (12 n^2 triangles), welded and pushed onto the sphere.
-hedge::SurfaceMesh grid_sphere(int n, float radius = 1) {
-  hedge::IndexedMesh m;
-  for (int axis = 0; axis < 3; ++axis)
-    for (int side = -1; side <= 1; side += 2) {
-      const std::uint32_t base = static_cast<std::uint32_t>(m.positions.size());
-      for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i) {
-          float p[3];
-          p[axis] = float(side);
-          p[(axis + 1) % 3] = float(2 * i - n) / float(n);
-          p[(axis + 2) % 3] = float(2 * j - n) / float(n);
-          m.positions.push_back({p[0], p[1], p[2]});
-        }
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-          const std::uint32_t a = base + std::uint32_t(j * (n + 1) + i), b = a + 1,
-                              c = a + std::uint32_t(n + 1), d = c + 1;
-          if (side > 0)
-            m.indices.insert(m.indices.end(), {a, b, d, a, d, c});
-          else
-            m.indices.insert(m.indices.end(), {a, d, b, a, c, d});
-          m.face_sizes.insert(m.face_sizes.end(), {3, 3});
-        }
-    }
-  hedge::SurfaceMesh s = hedge::build(m, {.weld = hedge::Weld::exact});
-  for (hedge::Vertex v : s.vertices()) {
-    const hedge::Vec3 p = s.position(v);
-    const float l = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z) / radius;
-    s.position(v) = {p.x / l, p.y / l, p.z / l};
-  }
-  return s;
-}
+using bench::grid_sphere;
 
 void fracture_solid_impacts(benchmark::State& state, int n, float radius, unsigned points) {
   static std::vector<std::pair<std::pair<int, float>, std::unique_ptr<hedge::SurfaceMesh>>> cache;
@@ -553,6 +521,15 @@ void register_fracture(const std::string& root) {
           ->Unit(benchmark::kMillisecond)
           ->MeasureProcessCPUTime()
           ->Iterations(24);
+  // The bars are set at 32 and 100 pieces: the break point counts that give about as many
+  // on sphere_100k.
+  for (unsigned points : {52u, 182u})
+    benchmark::RegisterBenchmark(
+        (std::string("BM_fracture_solid/sphere_100k/") + std::to_string(points)).c_str(),
+        fracture_solid_impacts, 91, 1.0f, points)
+        ->Unit(benchmark::kMillisecond)
+        ->MeasureProcessCPUTime()
+        ->Iterations(24);
   for (const char* name : {"plate_100k", "plate_1m", "igea"}) {
     benchmark::RegisterBenchmark((std::string("BM_fracture/") + name).c_str(), fracture_impacts,
                                  std::string(name), root, true)

@@ -130,9 +130,10 @@ void scatter_face_normals(const Arrays& a, NormalWeighting w, Vec3* sum, const V
 constexpr std::size_t kBlock = 64;
 
 // n[k] = unit_or_zero_float(n[k]) for k < count, n given as three arrays of coordinates padded to
-// a multiple of 4. With SSE2, four at a time: the same IEEE operations in the same order (x * x +
-// y * y, then + z * z; 1 / sqrt(s); each coordinate times that), so the same bits; a face's own
-// square root and division no longer wait for its loads, and four share one instruction.
+// a multiple of 4 and aligned to 16 bytes (the aligned loads need both). With SSE2, four at a time: the same
+// IEEE operations in the same order (x * x + y * y, then + z * z; 1 / sqrt(s); each coordinate times that),
+// so the same bits; a face's own square root and division no longer wait for its loads, and four share one
+// instruction.
 void normalise_block(float* x, float* y, float* z, std::size_t count) {
 #if defined(__SSE2__) || defined(_M_X64)
   const __m128 one = _mm_set1_ps(1.f), zero = _mm_setzero_ps();

@@ -101,9 +101,12 @@ TEST_F(ThreadsTest, TasksRunOnceAndBesideALongFirstTask) {
     std::vector<std::size_t> worker_of(n, ~std::size_t(0));
     std::atomic<std::size_t> done{0};
     bool waited = true;
+    const std::thread::id caller = std::this_thread::get_id();
+    std::thread::id first_on;
     detail::parallel_tasks(n, [&](std::size_t task, std::size_t worker) {
       hits[task].fetch_add(1);
       worker_of[task] = worker;
+      if (task == 0) first_on = std::this_thread::get_id();
       if (task == 0 && threads > 1) {
         // Holds its thread until the other tasks are done (bounded, so wrong code fails, not hangs).
         for (int i = 0; i < 20'000 && done.load() < n - 1; ++i)
@@ -118,6 +121,9 @@ TEST_F(ThreadsTest, TasksRunOnceAndBesideALongFirstTask) {
       if (threads > 1 && t > 0) EXPECT_NE(worker_of[t], worker_of[0]) << "task " << t;
     }
     EXPECT_TRUE(waited);
+    // Task 0 on the calling thread, where its thread-local scratch outlives the call.
+    EXPECT_EQ(first_on, caller);
+    EXPECT_EQ(worker_of[0], 0u);
   }
 }
 

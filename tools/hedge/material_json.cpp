@@ -33,8 +33,8 @@ double number_field(const json& j, const std::string& path, const std::string& f
 FractureMaterial parse_material_json(std::string_view text, const std::string& path) {
   if (text.size() > kMaterialMaxBytes)
     throw IoError(path, 0, -1,
-                  "a material file is at most " + std::to_string(kMaterialMaxBytes) +
-                      " bytes; this text has " + std::to_string(text.size()));
+                  "a material is at most " + std::to_string(kMaterialMaxBytes) +
+                      " bytes of JSON; this one has " + std::to_string(text.size()));
   const auto depth_limit = [&path](int depth, json::parse_event_t event, json&) {
     if ((event == json::parse_event_t::object_start || event == json::parse_event_t::array_start) &&
         depth >= kMaxMaterialDepth)

@@ -74,18 +74,22 @@ void parallel_ranges(std::size_t n, Body&& body, std::size_t grain = std::size_t
 
 //! Calls body(task, worker) for every task in [0, n), on up to parallel_parts(n, 1, cap) threads,
 //! the calling thread one of them, with worker in [0, threads) naming the thread (for per-thread
-//! scratch). Each thread takes the lowest task not yet taken, so tasks start in increasing order:
-//! put a long task first and the others run beside it. Which thread runs a task varies from call
+//! scratch). Task 0 runs on the calling thread (worker 0), so what it keeps in thread-local storage
+//! is there again at the next call; then each thread takes the lowest task not yet taken, so tasks
+//! start in increasing order: put a long task first and the others run beside it. Which thread
+//! runs any other task varies from call
 //! to call, so the body must write only what its task (or its worker's scratch) owns and must not
 //! throw; results then do not depend on the number of threads. A thread costs some tens of
 //! microseconds: tasks should be longer than that.
 template <typename Body>
 void parallel_tasks(std::size_t n, Body&& body, std::size_t cap = 0) {
   const std::size_t threads = parallel_parts(n, 1, cap);
-  std::atomic<std::size_t> next{0};
+  if (n == 0) return;
+  std::atomic<std::size_t> next{1};
   parallel_ranges(
       threads,
       [&body, &next, n](std::size_t, std::size_t, std::size_t worker) {
+        if (worker == 0) body(0, 0);
         for (std::size_t task = next.fetch_add(1, std::memory_order_relaxed); task < n;
              task = next.fetch_add(1, std::memory_order_relaxed))
           body(task, worker);
