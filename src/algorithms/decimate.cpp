@@ -158,7 +158,10 @@ class Decimator {
   // ends are unchanged while the key is current, so placing again would give the same point. Kept
   // in float: placement() returns it rounded to float (rounded_to_float), so nothing is lost.
   std::vector<Vec3> point_;
-  std::vector<std::uint8_t> refused_;    // greedy tail: the edge's key was refused by a check
+  std::vector<std::uint8_t> refused_;  // greedy tail: the edge's key was refused by a check
+  // Greedy tail: the cost with bridged() of the edge's current key, when bridged() raised it (NaN:
+  // not known). Cleared wherever the faces around either end may have changed.
+  std::vector<double> full_;
   detail::decimation::CornerRing ring_;  // one collapse's corners (decimate_corners.h)
 };
 
@@ -494,6 +497,7 @@ Decimator::Tally Decimator::collapse_greedy(bool shapely, DecimateResult& result
                                             bool& over_error) {
   Tally t;
   refused_.assign(m_.edge_slots(), 0);
+  full_.assign(m_.edge_slots(), std::numeric_limits<double>::quiet_NaN());
   std::vector<std::uint64_t>& heap = keys_;  // sorted ascending, so already a min-heap
   const std::greater<std::uint64_t> later;
   auto offer = [&](std::uint64_t key) {
@@ -512,12 +516,16 @@ Decimator::Tally Decimator::collapse_greedy(bool shapely, DecimateResult& result
     placed(h, p, cost);
     // The key ranked without the new faces' distance from the old ones (bridged()), a lower bound:
     // if that distance raises the cost, the candidate goes back into the heap at its full cost.
-    if (const double full = bridged(h, p, cost); static_cast<float>(full) > static_cast<float>(cost)) {
+    // Taken again at that cost with nothing around it changed, it costs what bridged() gave.
+    if (!std::isnan(full_[e])) {
+      cost = full_[e];
+    } else if (const double full = bridged(h, p, cost); static_cast<float>(full) > static_cast<float>(cost)) {
       const std::uint64_t k = full <= max_cost_
                                   ? std::uint64_t(float_bits(static_cast<float>(full))) << 32 | h.idx()
                                   : kOverError;
       if (k != key) {
         edge_key_[e] = k;
+        full_[e] = full;
         if (k == kOverError)
           over_error = true;
         else
@@ -545,12 +553,14 @@ Decimator::Tally Decimator::collapse_greedy(bool shapely, DecimateResult& result
       const Index s = Mesh::edge(o).idx();
       const std::uint64_t k = rank(Mesh::edge(o));
       edge_key_[s] = k, refused_[s] = 0;
+      full_[s] = std::numeric_limits<double>::quiet_NaN();
       if (k == kOverError) over_error = true;
       if (k < kOverError) offer(k);
       const Halfedge first = m_.halfedge(m_.to_vertex(o));
       Halfedge r = first;
       do {
         const Index x = Mesh::edge(r).idx();
+        full_[x] = std::numeric_limits<double>::quiet_NaN();  // a face around its end has changed
         if (refused_[x]) {
           refused_[x] = 0;
           if (edge_key_[x] < kOverError) offer(edge_key_[x]);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "hedge/algorithms/geometry.h"
 #include "hedge/algorithms/locate.h"
@@ -77,25 +78,62 @@ double removed_distance2(const SurfaceMesh& m, Halfedge h, const Vec3d& p, doubl
 }
 
 double bridge_distance2(const SurfaceMesh& m, Halfedge h, const Vec3d& p, double limit) {
+  // As removed_distance2(): point location's triangle code in double, on float positions converted
+  // once (the answers of closest_point_on_triangle(), bit for bit).
+  using locate_detail::closest_on_triangle;
   const Vec3 x = to_float(p);
   // No limit: every distance exact.
   if (!std::isfinite(limit)) limit = -1;
-  // The squared distance of g to the nearest old face around either end, or some value at most
-  // `limit` once one is that near.
-  auto nearest_old = [&](const Vec3& g) {
-    double best = std::numeric_limits<double>::infinity();
+  // The old faces around either end, in the order they are searched, gathered when first needed
+  // into storage the thread keeps (nothing allocated or cleared per call once it has grown).
+  struct Old {
+    Vec3d a, b, c;
+    Vec3d lo, hi;  // box
+    bool far;
+  };
+  thread_local std::vector<Old> old;
+  bool gathered = false;
+  auto gather = [&] {
+    gathered = true;
+    old.clear();
     for (const Halfedge start : {h, SurfaceMesh::twin(h)}) {
       Halfedge o = start;
       do {
         if (m.face(o).is_valid()) {
-          const Vec3 b = m.position(m.to_vertex(o)), c = m.position(m.to_vertex(m.next(o)));
-          best = std::min(best,
-                          closest_point_on_triangle(g, m.position(m.from_vertex(o)), b, c).squared_distance);
-          if (best <= limit) return best;
+          Old& t = old.emplace_back();
+          t.a = to_double(m.position(m.from_vertex(o)));
+          t.b = to_double(m.position(m.to_vertex(o)));
+          t.c = to_double(m.position(m.to_vertex(m.next(o))));
+          for (int k = 0; k < 3; ++k) {
+            t.lo[k] = std::min({t.a[k], t.b[k], t.c[k]});
+            t.hi[k] = std::max({t.a[k], t.b[k], t.c[k]});
+          }
         }
         o = m.rotate_cw(o);
       } while (o != start);
     }
+  };
+  // The squared distance of g to the nearest old face around either end, or some value at most
+  // `limit` once one is that near. A face whose box is farther than the limit cannot be within it:
+  // its exact distance is needed only if no face is (then the nearest's, over all of them, which
+  // is what a walk of every face would give).
+  auto nearest_old = [&](const Vec3& g) {
+    if (!gathered) gather();
+    const Vec3d dg = to_double(g);
+    double best = std::numeric_limits<double>::infinity();
+    for (Old& t : old) {
+      double box2 = 0;
+      for (int k = 0; k < 3; ++k) {
+        const double out = std::max({t.lo[k] - dg[k], dg[k] - t.hi[k], 0.0});
+        box2 += out * out;
+      }
+      t.far = box2 > limit;
+      if (t.far) continue;
+      best = std::min(best, closest_on_triangle(dg, t.a, t.b, t.c).squared_distance);
+      if (best <= limit) return best;
+    }
+    for (const Old& t : old)
+      if (t.far) best = std::min(best, closest_on_triangle(dg, t.a, t.b, t.c).squared_distance);
     return best;
   };
   const Face fl = m.face(h), fr = m.face(SurfaceMesh::twin(h));
@@ -104,7 +142,7 @@ double bridge_distance2(const SurfaceMesh& m, Halfedge h, const Vec3d& p, double
     // Each new face (x, b, c) of this end replaces (y, b, c), y the end's old position; their
     // centroids are |x - y| / 3 apart, which bounds the distance to the old face for all of them.
     const Vec3 y = m.position(m.from_vertex(start));
-    const Vec3d xy = to_double(x) - to_double(y);
+    const Vec3d xy = to_double(x) - to_double(y), dy = to_double(y);
     if (dot(xy, xy) <= 9 * limit) continue;
     Halfedge o = start;
     do {
@@ -113,7 +151,7 @@ double bridge_distance2(const SurfaceMesh& m, Halfedge h, const Vec3d& p, double
         const Vec3 b = m.position(m.to_vertex(o)), c = m.position(m.to_vertex(m.next(o)));
         const Vec3 g{(x.x + b.x + c.x) / 3, (x.y + b.y + c.y) / 3, (x.z + b.z + c.z) / 3};
         // The face it replaces is nearly always the nearest: try it first.
-        double d = closest_point_on_triangle(g, y, b, c).squared_distance;
+        double d = closest_on_triangle(to_double(g), dy, to_double(b), to_double(c)).squared_distance;
         if (d > limit) d = std::min(d, nearest_old(g));
         worst = std::max(worst, d);
       }
