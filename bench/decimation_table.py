@@ -12,6 +12,11 @@ Run both shares side by side, each pinned to its own core, then print the table:
     wait
     bench/decimation_table.py ten.txt:10% one.txt:1%
 
+A share may name further runs for the times, `ten.txt,t1.txt,t2.txt,t3.txt:10%`, e.g. of
+`--only hedge:decimate,meshopt:decimate --reps 5` (OpenMesh and CGAL left out, so more rounds fit
+in the same minutes); the distances then come from the first file, and each time is the median of
+that mesh's times over the further runs.
+
 Meshes that only meshoptimizer takes (no Hausdorff row for the other peers) are left out. The
 summary line after the table gives, per bar, how many cases pass and the worst case.
 """
@@ -38,7 +43,7 @@ def cases(path):
             if m := HEAD.match(line):
                 mesh, times = m.group(1).rsplit(".", 1)[0], None
             elif m := TIME.match(line):
-                times = re.findall(r"\d+(?:\.\d+)? (?:ns|us|ms|s)\b", m.group(1))
+                times = re.split(r"\s{2,}", m.group(1).strip())  # a peer left out: n/a
             elif (m := DIST.match(line)) and mesh and times and len(times) == 4:
                 out.append((mesh, times, list(m.groups())))
     return out
@@ -52,8 +57,20 @@ def main(argv):
     print("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
     time_ratios, dist_ratios = [], []
     for arg in argv[1:]:
-        path, share = arg.rsplit(":", 1)
+        paths, share = arg.rsplit(":", 1)
+        path, *time_paths = paths.split(",")
+        # Several timing runs: per mesh, the median of their hedge and meshoptimizer times.
+        runs = {}
+        for time_path in time_paths:
+            for mesh, times, _ in cases(time_path):
+                runs.setdefault(mesh, []).append(times)
+        def median(texts):
+            return sorted(texts, key=millis)[(len(texts) - 1) // 2]
+
+        timed = {mesh: [median([r[i] for r in rs]) if i in (0, 3) else rs[0][i] for i in range(4)]
+                 for mesh, rs in runs.items()}
         for mesh, times, dist in cases(path):
+            times = timed.get(mesh, times)
             d = [float(x) for x in dist]
             if d[1] <= 0 or d[2] <= 0:
                 continue

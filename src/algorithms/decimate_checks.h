@@ -30,8 +30,11 @@ constexpr double kRemovedWeight = 0.2;
 // distance from the result back to the input measures. It is added when a candidate comes up in
 // the greedy order, not when it is ranked (a lower bound is enough to order a lazy heap): counted
 // at every ranking it took bunny to 10% from 538M to 747M instructions, counted when taken from
-// 538M to 529M. Weight 1 passed 20 of the 26 cases of the README's table against 17 (turbine at
-// 10% 0.96 times CGAL's distance instead of 1.43, at 1% 1.10 instead of 1.48); weight 2 passed 22
+// 538M to 529M; CAD parts pay more, their flat regions giving collapses a cost near zero that the
+// distance must confirm (fandisk to 10%: 292M before it, 352M with it). Weight 1 must stay exact
+// for bridge_distance2()'s early stop: a value at most the limit, times the weight, must not
+// exceed the cost the limit came from. Weight 1 passed 20 of the 26 cases of the README's table against 17
+// (turbine at 10% 0.96 times CGAL's distance instead of 1.43, at 1% 1.10 instead of 1.48); weight 2 passed 22
 // but made turbine at 1% 1.72 times, weight 3 passed 21 with turbine at 1% 1.89 times (and counted
 // at every ranking, weight 0.5 passed 19).
 constexpr double kBridgeWeight = 1.0;
