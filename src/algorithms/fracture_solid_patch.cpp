@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 
+#include "core_private/slot_marks.h"
 #include "fracture_solid_strike.h"
 #include "hedge/algorithms/geometry.h"
 
@@ -10,40 +11,10 @@ namespace hedge::solid_detail {
 
 namespace {
 
-//! A set of the mesh's faces or vertices (H): one flag per slot, in an array each thread keeps
-//! from one strike to the next (it grows with the largest mesh seen), so a test is O(1) and a
-//! strike costs no pass over the mesh. The flags it set are cleared when it goes. Sets of one kind
-//! share the thread's array: one of each kind at a time.
+// The patch's sets of faces and vertices (core_private/slot_marks.h): flags kept by the thread.
+struct PatchTag;
 template <typename H>
-class Marks {
- public:
-  explicit Marks(std::size_t slots) : flags_(storage()) {
-    if (flags_.size() < slots) flags_.resize(slots, 0);
-  }
-  Marks(const Marks&) = delete;
-  Marks& operator=(const Marks&) = delete;
-  ~Marks() { clear(); }
-  bool operator()(H h) const { return flags_[h.idx()] != 0; }
-  //! Adds h; false if it was there.
-  bool mark(H h) {
-    if (flags_[h.idx()]) return false;
-    marked_.push_back(h);
-    flags_[h.idx()] = 1;
-    return true;
-  }
-  void clear() {
-    for (H h : marked_) flags_[h.idx()] = 0;
-    marked_.clear();
-  }
-
- private:
-  static std::vector<char>& storage() {
-    thread_local std::vector<char> flags;
-    return flags;
-  }
-  std::vector<char>& flags_;
-  std::vector<H> marked_;
-};
+using Marks = detail::SlotMarks<H, PatchTag>;
 using FaceMarks = Marks<Face>;
 
 //! Adds the faces around each vertex of `faces` whose other faces would form several fans once

@@ -12,6 +12,7 @@
 
 #include "hedge/core/refusal.h"
 #include "operations_internal.h"
+#include "slot_marks.h"
 
 namespace hedge {
 
@@ -93,28 +94,19 @@ bool relink_vertex(Mesh& m, Vertex v, std::span<const Halfedge> out, std::vector
   return true;
 }
 
+// The vertices remove_faces_impl() lists, once each (core_private/slot_marks.h).
+struct RemoveFacesTag;
+
 // Removes a set of faces (sorted, unique, live). Vertices left pinched get one copy per fan.
 void remove_faces_impl(Mesh& m, const std::vector<Face>& faces) {
   // The faces' vertices, sorted: each listed once (a flag per vertex slot, kept by the thread and
   // cleared after), so that only the distinct ones are sorted.
   std::vector<Vertex> verts;
-  verts.reserve(3 * faces.size());
   {
-    thread_local std::vector<char> listed;
-    if (listed.size() < m.vertex_slots()) listed.resize(m.vertex_slots(), 0);
-    struct Unlist {  // clears the flags set, also if push_back() throws
-      std::vector<char>& flags;
-      const std::vector<Vertex>& set;
-      ~Unlist() {
-        for (Vertex v : set) flags[v.idx()] = 0;
-      }
-    } unlist{listed, verts};
+    detail::SlotMarks<Vertex, RemoveFacesTag> listed(m.vertex_slots());
     for (Face f : faces)
-      for (Vertex v : m.vertices(f))
-        if (!listed[v.idx()]) {
-          verts.push_back(v);
-          listed[v.idx()] = 1;
-        }
+      for (Vertex v : m.vertices(f)) listed.mark(v);
+    verts = listed.marked();
   }
   std::sort(verts.begin(), verts.end());
   // The vertices' outgoing lists, one after another: vertex i's are out[first[i], first[i + 1]).
